@@ -1,0 +1,8 @@
+//! Numerical integration of ordinary differential equations.
+//!
+//! Only the integrator sees state vectors as plain arrays; every model keeps its state
+//! in a named struct and converts to and from an array at this boundary.
+
+mod rk4;
+
+pub use rk4::{rk4_step, OdeSystem};
