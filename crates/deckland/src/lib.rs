@@ -29,4 +29,6 @@
 //! integrator loop → recorder → metrics. Beside it: trim, linearisation and modes
 //! ([`analysis`]).
 
+pub mod aircraft;
+pub mod analysis;
 pub mod integration;

@@ -1,0 +1,107 @@
+//! Polynomial F/A-18 aerodynamic coefficients (MODEL.md §2.2).
+//!
+//! Source: Chakraborty, Seiler & Balas, *Susceptibility of F/A-18 flight controllers to
+//! the falling-leaf mode*, JGCD 2011 (data from the NASA HARV model), the paper's
+//! references [8], [9], at sideslip β = 0.
+
+use super::configuration::AerodynamicConfiguration;
+
+/// Lowest angle of attack (rad) at which the polynomials are trusted: −5°.
+pub const ALPHA_MIN_RAD: f64 = -5.0 * std::f64::consts::PI / 180.0;
+/// Highest angle of attack (rad) at which the polynomials are trusted: 40°.
+pub const ALPHA_MAX_RAD: f64 = 40.0 * std::f64::consts::PI / 180.0;
+
+/// Lift, drag and pitching-moment coefficients (–); the moment is about the CG.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AerodynamicCoefficients {
+    /// Lift coefficient C_L.
+    pub lift: f64,
+    /// Drag coefficient C_D.
+    pub drag: f64,
+    /// Pitching-moment coefficient about the CG, C_m,cg (positive nose-up).
+    pub moment: f64,
+}
+
+/// Coefficients at angle of attack `alpha` (rad), elevator `elevator` (rad, positive
+/// trailing edge down) and normalised pitch rate `q_hat` = q·c̄/(2V_T) (–), including
+/// the configuration's increments and the moment transfer to the CG.
+#[inline]
+pub fn aerodynamic_coefficients(
+    alpha: f64,
+    elevator: f64,
+    q_hat: f64,
+    configuration: &AerodynamicConfiguration,
+) -> AerodynamicCoefficients {
+    let a = alpha;
+    let a2 = a * a;
+    let a3 = a2 * a;
+    let a4 = a3 * a;
+    let lift = -0.0204 + 5.677 * a - 5.4246 * a2
+        + 1.1645 * a3
+        + (0.5725 + 0.4055 * a - 2.6975 * a2 + 2.1852 * a3) * elevator
+        + configuration.lift_coefficient_increment;
+    let drag = -1.4994 - 0.1995 * a + 6.3971 * a2 - 5.7341 * a3
+        + 1.4610 * a4
+        + 1.5036
+        + (0.0366 - 0.2739 * a + 4.2360 * a2 - 3.8578 * a3) * elevator
+        + configuration.drag_coefficient_increment;
+    let moment_reference = -0.0866 + 0.5110 * a - 1.2897 * a2
+        + (-0.9051 - 0.3245 * a + 0.9338 * a2) * elevator
+        + (-4.1186 + 10.9921 * a - 68.5641 * a2 + 64.7190 * a3) * q_hat
+        + configuration.moment_coefficient_increment;
+    let (sin_a, cos_a) = a.sin_cos();
+    let normal = lift * cos_a + drag * sin_a;
+    AerodynamicCoefficients {
+        lift,
+        drag,
+        moment: moment_reference - configuration.cg_ahead_of_reference_chords * normal,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Values read off the polynomials by hand at α = 10° = 0.174533 rad, δe = q̂ = 0,
+    /// clean: C_L = −0.0204 + 5.677·0.174533 − 5.4246·0.030462 + 1.1645·0.005317.
+    #[test]
+    fn clean_coefficients_match_hand_evaluation() {
+        let a: f64 = 0.174_533;
+        let c = aerodynamic_coefficients(a, 0.0, 0.0, &AerodynamicConfiguration::CLEAN);
+        let lift = -0.0204 + 5.677 * 0.174_533 - 5.4246 * 0.030_461_77 + 1.1645 * 0.005_316_56;
+        assert!((c.lift - lift).abs() < 1e-6, "{} vs {lift}", c.lift);
+        // Evaluated independently with Python: 0.811372.
+        assert!((c.lift - 0.811_372).abs() < 1e-5);
+        let drag = 0.0042 - 0.1995 * 0.174_533 + 6.3971 * 0.030_461_77 - 5.7341 * 0.005_316_56
+            + 1.4610 * 0.000_927_9;
+        assert!((c.drag - drag).abs() < 1e-6);
+        let moment = -0.0866 + 0.5110 * 0.174_533 - 1.2897 * 0.030_461_77;
+        assert!((c.moment - moment).abs() < 1e-6);
+    }
+
+    #[test]
+    fn positive_elevator_gives_nose_down_moment() {
+        let config = AerodynamicConfiguration::LANDING;
+        let neutral = aerodynamic_coefficients(0.12, 0.0, 0.0, &config);
+        let trailing_edge_down = aerodynamic_coefficients(0.12, 0.05, 0.0, &config);
+        assert!(trailing_edge_down.moment < neutral.moment);
+    }
+
+    #[test]
+    fn pitch_rate_damps() {
+        let config = AerodynamicConfiguration::LANDING;
+        let still = aerodynamic_coefficients(0.12, 0.0, 0.0, &config);
+        let pitching_up = aerodynamic_coefficients(0.12, 0.0, 0.01, &config);
+        assert!(pitching_up.moment < still.moment);
+    }
+
+    #[test]
+    fn cg_ahead_of_reference_adds_nose_down_moment_with_positive_lift() {
+        let mut config = AerodynamicConfiguration::CLEAN;
+        let base = aerodynamic_coefficients(0.12, 0.0, 0.0, &config);
+        config.cg_ahead_of_reference_chords = 0.1;
+        let forward = aerodynamic_coefficients(0.12, 0.0, 0.0, &config);
+        let normal = base.lift * 0.12_f64.cos() + base.drag * 0.12_f64.sin();
+        assert!((base.moment - forward.moment - 0.1 * normal).abs() < 1e-12);
+    }
+}

@@ -1,0 +1,408 @@
+//! The 3-DOF longitudinal equations of motion over a flat earth (MODEL.md §2.4).
+//!
+//! Integrated in body axes on inertial velocities (Stevens & Lewis, *Aircraft Control
+//! and Simulation*, Eq. 2.5-32 family, with β = 0 and no lateral motion):
+//!
+//! ```text
+//! u̇ = (X_A + T)/m − g sin θ − q w        ẋ = u cos θ + w sin θ
+//! ẇ = Z_A/m + g cos θ + q u              ḣ = u sin θ − w cos θ
+//! q̇ = M/J_y                              θ̇ = q
+//! X_A = L sin α − D cos α,   Z_A = −L cos α − D sin α
+//! ```
+//!
+//! The aerodynamic forces use the air-relative velocity (u − W_xb, w − W_zb), which gives
+//! V_T and α. In still air these are exactly the paper's Eq. (1)–(4) with its misprints
+//! corrected (the `q` term and the `/V` on gravity in α̇); a test checks that.
+
+use super::actuator::{ElevatorActuator, ElevatorActuatorParameters};
+use super::aerodynamics::aerodynamic_coefficients;
+use super::configuration::AerodynamicConfiguration;
+use super::engine::{EngineParameters, Engines};
+use super::error::AircraftError;
+use super::parameters::AircraftParameters;
+use super::state::AircraftState;
+use crate::integration::OdeSystem;
+
+/// Velocity of the air mass in earth axes (m/s): `x_m_s` positive forward (a headwind is
+/// negative), `z_m_s` positive down.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Wind {
+    /// Horizontal component, positive in the direction of flight (m/s).
+    pub x_m_s: f64,
+    /// Vertical component, positive down (m/s).
+    pub z_m_s: f64,
+}
+
+/// Commands to the plant's actuators.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct AircraftCommands {
+    /// Elevator command to the actuator (rad), positive trailing edge down.
+    pub elevator_rad: f64,
+    /// Total thrust command of both engines (N), limited to [0, 2·T_max].
+    pub thrust_n: f64,
+}
+
+/// Inputs acting directly on the airframe, bypassing the actuator and engine dynamics
+/// (used by trim and linearisation).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct AirframeInputs {
+    /// Elevator deflection (rad).
+    pub elevator_rad: f64,
+    /// Total thrust (N).
+    pub thrust_n: f64,
+}
+
+/// Air data computed from the air-relative velocity.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AirData {
+    /// True airspeed V_T (m/s).
+    pub airspeed_m_s: f64,
+    /// Angle of attack α (rad).
+    pub alpha_rad: f64,
+    /// Dynamic pressure q̄ = ½ρV_T² (Pa).
+    pub dynamic_pressure_pa: f64,
+}
+
+/// The complete longitudinal F/A-18 plant.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Aircraft {
+    parameters: AircraftParameters,
+    configuration: AerodynamicConfiguration,
+    engines: Engines,
+    actuator: ElevatorActuator,
+}
+
+impl Default for Aircraft {
+    fn default() -> Self {
+        Self {
+            parameters: AircraftParameters::default(),
+            configuration: AerodynamicConfiguration::LANDING,
+            engines: Engines::default(),
+            actuator: ElevatorActuator::default(),
+        }
+    }
+}
+
+/// Rigid-body derivatives (u̇, ẇ, q̇) plus the air data they were computed from.
+struct BodyAccelerations {
+    u_dot: f64,
+    w_dot: f64,
+    q_dot: f64,
+}
+
+impl Aircraft {
+    /// Builds the plant from validated parameters.
+    pub fn new(
+        parameters: AircraftParameters,
+        configuration: AerodynamicConfiguration,
+        engines: EngineParameters,
+        actuator: ElevatorActuatorParameters,
+    ) -> Result<Self, AircraftError> {
+        parameters.validate()?;
+        configuration.validate()?;
+        Ok(Self {
+            parameters,
+            configuration,
+            engines: Engines::new(engines)?,
+            actuator: ElevatorActuator::new(actuator)?,
+        })
+    }
+
+    /// The default aircraft in a given aerodynamic configuration.
+    pub fn with_configuration(configuration: AerodynamicConfiguration) -> Self {
+        Self {
+            configuration,
+            ..Self::default()
+        }
+    }
+
+    /// Mass, geometry and atmosphere.
+    pub fn parameters(&self) -> &AircraftParameters {
+        &self.parameters
+    }
+
+    /// Aerodynamic configuration.
+    pub fn configuration(&self) -> &AerodynamicConfiguration {
+        &self.configuration
+    }
+
+    /// Engine model.
+    pub fn engines(&self) -> &Engines {
+        &self.engines
+    }
+
+    /// Elevator actuator model.
+    pub fn actuator(&self) -> &ElevatorActuator {
+        &self.actuator
+    }
+
+    /// Air data (V_T, α, q̄) for inertial body velocities `u`, `w` (m/s), pitch `theta`
+    /// (rad) and the wind.
+    #[inline]
+    pub fn air_data(&self, u: f64, w: f64, theta: f64, wind: &Wind) -> AirData {
+        let (sin_t, cos_t) = theta.sin_cos();
+        let wind_xb = wind.x_m_s * cos_t - wind.z_m_s * sin_t;
+        let wind_zb = wind.x_m_s * sin_t + wind.z_m_s * cos_t;
+        let ua = u - wind_xb;
+        let wa = w - wind_zb;
+        let airspeed = (ua * ua + wa * wa).sqrt();
+        AirData {
+            airspeed_m_s: airspeed,
+            alpha_rad: wa.atan2(ua),
+            dynamic_pressure_pa: 0.5 * self.parameters.air_density_kg_m3 * airspeed * airspeed,
+        }
+    }
+
+    /// Air data of a state.
+    #[inline]
+    pub fn state_air_data(&self, state: &AircraftState, wind: &Wind) -> AirData {
+        self.air_data(state.u_m_s, state.w_m_s, state.theta_rad, wind)
+    }
+
+    #[inline]
+    fn body_accelerations(
+        &self,
+        u: f64,
+        w: f64,
+        q: f64,
+        theta: f64,
+        inputs: &AirframeInputs,
+        wind: &Wind,
+    ) -> BodyAccelerations {
+        let p = &self.parameters;
+        let air = self.air_data(u, w, theta, wind);
+        let q_hat = q * p.mean_chord_m / (2.0 * air.airspeed_m_s);
+        let c = aerodynamic_coefficients(
+            air.alpha_rad,
+            inputs.elevator_rad,
+            q_hat,
+            &self.configuration,
+        );
+        let qs = air.dynamic_pressure_pa * p.wing_area_m2;
+        let lift = qs * c.lift;
+        let drag = qs * c.drag;
+        let (sin_a, cos_a) = air.alpha_rad.sin_cos();
+        let (sin_t, cos_t) = theta.sin_cos();
+        let force_x = lift * sin_a - drag * cos_a + inputs.thrust_n;
+        let force_z = -lift * cos_a - drag * sin_a;
+        BodyAccelerations {
+            u_dot: force_x / p.mass_kg - p.gravity_m_s2 * sin_t - q * w,
+            w_dot: force_z / p.mass_kg + p.gravity_m_s2 * cos_t + q * u,
+            q_dot: qs * p.mean_chord_m * c.moment / p.pitch_inertia_kg_m2,
+        }
+    }
+
+    /// Rigid-body derivatives (u̇, ẇ, q̇) in m/s², m/s², rad/s² for airframe inputs
+    /// applied directly (no actuator or engine dynamics).
+    #[inline]
+    pub fn airframe_accelerations(
+        &self,
+        u: f64,
+        w: f64,
+        q: f64,
+        theta: f64,
+        inputs: &AirframeInputs,
+        wind: &Wind,
+    ) -> (f64, f64, f64) {
+        let a = self.body_accelerations(u, w, q, theta, inputs, wind);
+        (a.u_dot, a.w_dot, a.q_dot)
+    }
+
+    /// Time derivative of the full plant state for actuator commands and wind.
+    #[inline]
+    pub fn derivative(
+        &self,
+        state: &AircraftState,
+        commands: &AircraftCommands,
+        wind: &Wind,
+    ) -> AircraftState {
+        let inputs = AirframeInputs {
+            elevator_rad: state.elevator_rad,
+            thrust_n: state.total_thrust_n(),
+        };
+        let body = self.body_accelerations(
+            state.u_m_s,
+            state.w_m_s,
+            state.q_rad_s,
+            state.theta_rad,
+            &inputs,
+            wind,
+        );
+        let (x_dot, h_dot) = state.earth_velocity_m_s();
+        let (elevator_rate, elevator_acceleration) = self.actuator.derivative(
+            state.elevator_rad,
+            state.elevator_rate_rad_s,
+            commands.elevator_rad,
+        );
+        AircraftState {
+            u_m_s: body.u_dot,
+            w_m_s: body.w_dot,
+            q_rad_s: body.q_dot,
+            theta_rad: state.q_rad_s,
+            x_m: x_dot,
+            h_m: h_dot,
+            engine_thrust_n: [
+                self.engines
+                    .thrust_rate(state.engine_thrust_n[0], commands.thrust_n),
+                self.engines
+                    .thrust_rate(state.engine_thrust_n[1], commands.thrust_n),
+            ],
+            elevator_rad: elevator_rate,
+            elevator_rate_rad_s: elevator_acceleration,
+        }
+    }
+
+    /// Applies the actuator's position limits after an integration step.
+    #[inline]
+    pub fn constrain(&self, state: &mut AircraftState) {
+        self.actuator
+            .constrain(&mut state.elevator_rad, &mut state.elevator_rate_rad_s);
+    }
+}
+
+/// The plant flown with fixed commands in a fixed wind: an [`OdeSystem`] for open-loop
+/// runs and tests.
+#[derive(Debug, Clone, Copy)]
+pub struct OpenLoopAircraft {
+    /// The plant.
+    pub aircraft: Aircraft,
+    /// Commands held constant.
+    pub commands: AircraftCommands,
+    /// Wind held constant.
+    pub wind: Wind,
+}
+
+impl OdeSystem<{ AircraftState::DIMENSION }> for OpenLoopAircraft {
+    fn derivative(
+        &self,
+        _t: f64,
+        x: &[f64; AircraftState::DIMENSION],
+    ) -> [f64; AircraftState::DIMENSION] {
+        let state = AircraftState::from_array(x);
+        self.aircraft
+            .derivative(&state, &self.commands, &self.wind)
+            .to_array()
+    }
+
+    fn constrain(&self, x: &mut [f64; AircraftState::DIMENSION]) {
+        let mut state = AircraftState::from_array(x);
+        self.aircraft.constrain(&mut state);
+        *x = state.to_array();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The wind-axis equations of MODEL.md §2.4 written out independently, still air:
+    /// V̇ = (T cos α − D)/m − g sin γ, α̇ = q − (T sin α + L)/(mV) + g cos γ / V.
+    fn wind_axis_rates(
+        aircraft: &Aircraft,
+        v: f64,
+        alpha: f64,
+        theta: f64,
+        q: f64,
+        de: f64,
+        t: f64,
+    ) -> (f64, f64, f64) {
+        let p = aircraft.parameters();
+        let q_hat = q * p.mean_chord_m / (2.0 * v);
+        let c = aerodynamic_coefficients(alpha, de, q_hat, aircraft.configuration());
+        let qbar_s = 0.5 * p.air_density_kg_m3 * v * v * p.wing_area_m2;
+        let (lift, drag) = (qbar_s * c.lift, qbar_s * c.drag);
+        let gamma = theta - alpha;
+        let m = p.mass_kg;
+        let g = p.gravity_m_s2;
+        let v_dot = (t * alpha.cos() - drag) / m - g * gamma.sin();
+        let alpha_dot = q - (t * alpha.sin() + lift) / (m * v) + g * gamma.cos() / v;
+        let q_dot = qbar_s * p.mean_chord_m * c.moment / p.pitch_inertia_kg_m2;
+        (v_dot, alpha_dot, q_dot)
+    }
+
+    #[test]
+    fn body_axis_equations_agree_with_wind_axis_form_in_still_air() {
+        let aircraft = Aircraft::default();
+        let cases = [
+            (69.1, 0.124, 0.124, 0.0, -0.14, 26_000.0),
+            (75.0, 0.05, -0.02, 0.1, 0.02, 60_000.0),
+            (55.0, 0.30, 0.20, -0.2, -0.3, 10_000.0),
+        ];
+        for (v, alpha, theta, q, de, t) in cases {
+            let (u, w) = (v * f64::cos(alpha), v * f64::sin(alpha));
+            let inputs = AirframeInputs {
+                elevator_rad: de,
+                thrust_n: t,
+            };
+            let (u_dot, w_dot, q_dot) =
+                aircraft.airframe_accelerations(u, w, q, theta, &inputs, &Wind::default());
+            let v_dot = (u * u_dot + w * w_dot) / v;
+            let alpha_dot = (u * w_dot - w * u_dot) / (v * v);
+            let (v_ref, a_ref, q_ref) = wind_axis_rates(&aircraft, v, alpha, theta, q, de, t);
+            assert!((v_dot - v_ref).abs() < 1e-10, "V̇ {v_dot} vs {v_ref}");
+            assert!(
+                (alpha_dot - a_ref).abs() < 1e-12,
+                "α̇ {alpha_dot} vs {a_ref}"
+            );
+            assert!((q_dot - q_ref).abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn steady_uniform_wind_acts_only_through_air_relative_velocity() {
+        let aircraft = Aircraft::default();
+        let inputs = AirframeInputs {
+            elevator_rad: -0.1,
+            thrust_n: 30_000.0,
+        };
+        let (theta, alpha, v) = (0.1_f64, 0.12_f64, 69.0);
+        let still = aircraft.airframe_accelerations(
+            v * alpha.cos(),
+            v * alpha.sin(),
+            0.0,
+            theta,
+            &inputs,
+            &Wind::default(),
+        );
+        // The same air-relative velocity, carried by a 12 m/s headwind and 3 m/s updraft.
+        let wind = Wind {
+            x_m_s: -12.0,
+            z_m_s: -3.0,
+        };
+        let wind_xb = wind.x_m_s * theta.cos() - wind.z_m_s * theta.sin();
+        let wind_zb = wind.x_m_s * theta.sin() + wind.z_m_s * theta.cos();
+        let windy = aircraft.airframe_accelerations(
+            v * alpha.cos() + wind_xb,
+            v * alpha.sin() + wind_zb,
+            0.0,
+            theta,
+            &inputs,
+            &wind,
+        );
+        assert!((still.0 - windy.0).abs() < 1e-12);
+        assert!((still.1 - windy.1).abs() < 1e-12);
+        assert!((still.2 - windy.2).abs() < 1e-12);
+    }
+
+    #[test]
+    fn engines_lag_towards_half_the_total_command_each() {
+        let aircraft = Aircraft::default();
+        let state = AircraftState {
+            u_m_s: 69.0,
+            engine_thrust_n: [10_000.0, 10_000.0],
+            ..Default::default()
+        };
+        let commands = AircraftCommands {
+            elevator_rad: 0.0,
+            thrust_n: 50_000.0,
+        };
+        let d = aircraft.derivative(&state, &commands, &Wind::default());
+        assert!((d.engine_thrust_n[0] - (25_000.0 - 10_000.0) / 0.625).abs() < 1e-9);
+        let over = AircraftCommands {
+            thrust_n: 1e9,
+            ..commands
+        };
+        let d = aircraft.derivative(&state, &over, &Wind::default());
+        assert!((d.engine_thrust_n[1] - (71_172.0 - 10_000.0) / 0.625).abs() < 1e-9);
+    }
+}

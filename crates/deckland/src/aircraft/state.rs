@@ -1,0 +1,115 @@
+//! The aircraft's state vector, as a named struct.
+
+/// State of the longitudinal plant: rigid body, engines and elevator actuator.
+///
+/// Velocities are *inertial* (earth-relative) components in body axes, so that wind
+/// enters the aerodynamics only through the air-relative velocity (MODEL.md §2.4).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct AircraftState {
+    /// Inertial velocity along body x, u (m/s).
+    pub u_m_s: f64,
+    /// Inertial velocity along body z (down), w (m/s).
+    pub w_m_s: f64,
+    /// Pitch rate q (rad/s), positive nose-up.
+    pub q_rad_s: f64,
+    /// Pitch angle θ (rad), positive nose-up.
+    pub theta_rad: f64,
+    /// Earth x position (m), positive in the direction of flight.
+    pub x_m: f64,
+    /// Altitude h (m), positive up.
+    pub h_m: f64,
+    /// Actual thrust of each engine (N).
+    pub engine_thrust_n: [f64; 2],
+    /// Elevator actuator position δe (rad), positive trailing edge down.
+    pub elevator_rad: f64,
+    /// Elevator actuator rate δ̇e (rad/s).
+    pub elevator_rate_rad_s: f64,
+}
+
+impl AircraftState {
+    /// Number of scalar states.
+    pub const DIMENSION: usize = 10;
+
+    /// The state as an array for the integrator (order: u, w, q, θ, x, h, T₁, T₂, δe, δ̇e).
+    #[inline]
+    pub fn to_array(&self) -> [f64; Self::DIMENSION] {
+        [
+            self.u_m_s,
+            self.w_m_s,
+            self.q_rad_s,
+            self.theta_rad,
+            self.x_m,
+            self.h_m,
+            self.engine_thrust_n[0],
+            self.engine_thrust_n[1],
+            self.elevator_rad,
+            self.elevator_rate_rad_s,
+        ]
+    }
+
+    /// The state from an integrator array (inverse of [`AircraftState::to_array`]).
+    #[inline]
+    pub fn from_array(x: &[f64; Self::DIMENSION]) -> Self {
+        Self {
+            u_m_s: x[0],
+            w_m_s: x[1],
+            q_rad_s: x[2],
+            theta_rad: x[3],
+            x_m: x[4],
+            h_m: x[5],
+            engine_thrust_n: [x[6], x[7]],
+            elevator_rad: x[8],
+            elevator_rate_rad_s: x[9],
+        }
+    }
+
+    /// Total actual thrust of both engines (N).
+    #[inline]
+    pub fn total_thrust_n(&self) -> f64 {
+        self.engine_thrust_n[0] + self.engine_thrust_n[1]
+    }
+
+    /// Earth-axis inertial velocity (ẋ, ḣ) in m/s.
+    #[inline]
+    pub fn earth_velocity_m_s(&self) -> (f64, f64) {
+        let (sin_t, cos_t) = self.theta_rad.sin_cos();
+        (
+            self.u_m_s * cos_t + self.w_m_s * sin_t,
+            self.u_m_s * sin_t - self.w_m_s * cos_t,
+        )
+    }
+
+    /// Inertial flight-path angle γ = atan2(ḣ, ẋ) (rad).
+    #[inline]
+    pub fn flight_path_angle_rad(&self) -> f64 {
+        let (x_dot, h_dot) = self.earth_velocity_m_s();
+        h_dot.atan2(x_dot)
+    }
+
+    /// True when every component is finite.
+    pub fn is_finite(&self) -> bool {
+        self.to_array().iter().all(|v| v.is_finite())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn array_round_trip_keeps_every_field() {
+        let state = AircraftState {
+            u_m_s: 1.0,
+            w_m_s: 2.0,
+            q_rad_s: 3.0,
+            theta_rad: 4.0,
+            x_m: 5.0,
+            h_m: 6.0,
+            engine_thrust_n: [7.0, 8.0],
+            elevator_rad: 9.0,
+            elevator_rate_rad_s: 10.0,
+        };
+        assert_eq!(AircraftState::from_array(&state.to_array()), state);
+        assert_eq!(state.to_array(), [1., 2., 3., 4., 5., 6., 7., 8., 9., 10.]);
+    }
+}

@@ -1,0 +1,199 @@
+//! Open-loop behaviour of the nonlinear plant: trim holds, the linear model predicts
+//! small steps, and a steady uniform wind changes only the ground speed.
+
+use deckland::aircraft::{
+    Aircraft, AircraftCommands, AircraftState, AirframeInputs, OpenLoopAircraft, Wind,
+};
+use deckland::analysis::{linearize, trim, TrimPoint, TrimRequest};
+use deckland::integration::{rk4_step, OdeSystem};
+use nalgebra::{SMatrix, SVector};
+
+const DT: f64 = 1e-3;
+
+fn level_trim(aircraft: &Aircraft) -> TrimPoint {
+    trim(aircraft, &TrimRequest::default()).unwrap()
+}
+
+fn fly(system: &OpenLoopAircraft, start: AircraftState, seconds: f64) -> AircraftState {
+    let mut x = start.to_array();
+    for k in 0..(seconds / DT).round() as usize {
+        x = rk4_step(system, k as f64 * DT, &x, DT);
+    }
+    AircraftState::from_array(&x)
+}
+
+#[test]
+fn trimmed_aircraft_flown_open_loop_stays_at_trim() {
+    let aircraft = Aircraft::default();
+    let point = level_trim(&aircraft);
+    let start = point.state(0.0, 100.0, &Wind::default());
+    let commands = AircraftCommands {
+        elevator_rad: point.elevator_rad,
+        thrust_n: point.thrust_n,
+    };
+    let derivative = aircraft.derivative(&start, &commands, &Wind::default());
+    for (name, value) in [
+        ("u̇", derivative.u_m_s),
+        ("ẇ", derivative.w_m_s),
+        ("q̇", derivative.q_rad_s),
+        ("ḣ", derivative.h_m),
+        ("Ṫ", derivative.engine_thrust_n[0]),
+        ("δ̇e", derivative.elevator_rad),
+        ("δ̈e", derivative.elevator_rate_rad_s),
+    ] {
+        assert!(value.abs() < 1e-9, "{name} = {value}");
+    }
+    let system = OpenLoopAircraft {
+        aircraft,
+        commands,
+        wind: Wind::default(),
+    };
+    let end = fly(&system, start, 20.0);
+    let air = aircraft.state_air_data(&end, &Wind::default());
+    assert!((air.airspeed_m_s - 69.1).abs() < 1e-6);
+    assert!((end.theta_rad - point.theta_rad).abs() < 1e-8);
+    assert!((end.h_m - 100.0).abs() < 1e-6);
+    assert!((end.x_m - 69.1 * 20.0).abs() < 1e-4);
+}
+
+/// The airframe alone (direct elevator and throttle, as linearised) in (V, θ, α, q).
+struct Airframe {
+    aircraft: Aircraft,
+    inputs: AirframeInputs,
+}
+
+impl OdeSystem<4> for Airframe {
+    fn derivative(&self, _t: f64, x: &[f64; 4]) -> [f64; 4] {
+        let [v, theta, alpha, q] = *x;
+        let (u, w) = (v * alpha.cos(), v * alpha.sin());
+        let (u_dot, w_dot, q_dot) =
+            self.aircraft
+                .airframe_accelerations(u, w, q, theta, &self.inputs, &Wind::default());
+        [
+            (u * u_dot + w * w_dot) / v,
+            q,
+            (u * w_dot - w * u_dot) / (v * v),
+            q_dot,
+        ]
+    }
+}
+
+struct Linear {
+    a: SMatrix<f64, 4, 4>,
+    bu: SVector<f64, 4>,
+}
+
+impl OdeSystem<4> for Linear {
+    fn derivative(&self, _t: f64, x: &[f64; 4]) -> [f64; 4] {
+        (self.a * SVector::<f64, 4>::from_column_slice(x) + self.bu).into()
+    }
+}
+
+/// Flies the nonlinear airframe and the linear model for `seconds` after an input step
+/// `delta` (elevator rad, throttle fraction) and returns the worst state error relative
+/// to that state's largest excursion.
+fn linear_prediction_error(delta: [f64; 2], seconds: f64) -> [f64; 4] {
+    let aircraft = Aircraft::default();
+    let point = level_trim(&aircraft);
+    let model = linearize(&aircraft, &point);
+    let nonlinear = Airframe {
+        aircraft,
+        inputs: AirframeInputs {
+            elevator_rad: point.elevator_rad + delta[0],
+            thrust_n: point.thrust_n + delta[1] * aircraft.engines().max_total_thrust_n(),
+        },
+    };
+    let linear = Linear {
+        a: model.a,
+        bu: model.b * SVector::<f64, 2>::new(delta[0], delta[1]),
+    };
+    let trim_x = [point.speed_m_s, point.theta_rad, point.alpha_rad, 0.0];
+    let mut x_nl = trim_x;
+    let mut x_lin = [0.0; 4];
+    let mut max_error = [0.0_f64; 4];
+    let mut max_excursion = [0.0_f64; 4];
+    for k in 0..(seconds / DT).round() as usize {
+        x_nl = rk4_step(&nonlinear, k as f64 * DT, &x_nl, DT);
+        x_lin = rk4_step(&linear, k as f64 * DT, &x_lin, DT);
+        for i in 0..4 {
+            let deviation = x_nl[i] - trim_x[i];
+            max_error[i] = max_error[i].max((deviation - x_lin[i]).abs());
+            max_excursion[i] = max_excursion[i].max(deviation.abs());
+        }
+    }
+    std::array::from_fn(|i| max_error[i] / max_excursion[i])
+}
+
+#[test]
+fn linear_model_predicts_small_elevator_step() {
+    // The pitch stiffness is low (∂q̇/∂α = −0.26 s⁻² against ∂q̇/∂δe ≈ −1.9 s⁻²), so even
+    // 0.1° of elevator moves α by about 0.7°: "small" must be small here.
+    let relative = linear_prediction_error([0.1f64.to_radians(), 0.0], 5.0);
+    for (i, e) in relative.iter().enumerate() {
+        assert!(*e < 0.08, "state {i}: relative error {e}");
+    }
+    // What remains is the nonlinearity, which is second order: halving the step halves
+    // the relative error. An error in the Jacobian would not shrink this way.
+    let half = linear_prediction_error([0.05f64.to_radians(), 0.0], 5.0);
+    for i in 0..4 {
+        assert!(
+            half[i] < 0.6 * relative[i],
+            "state {i}: {} vs {}",
+            half[i],
+            relative[i]
+        );
+    }
+}
+
+#[test]
+fn linear_model_predicts_small_throttle_step() {
+    // 1 % of the total maximum thrust, about 1.4 kN.
+    let relative = linear_prediction_error([0.0, 0.01], 5.0);
+    for (i, e) in relative.iter().enumerate() {
+        assert!(*e < 0.01, "state {i}: relative error {e}");
+    }
+}
+
+#[test]
+fn linear_model_fails_for_a_large_step_showing_the_test_can_fail() {
+    // A 1° elevator step drives α about 7° from trim: the linear prediction degrades.
+    let relative = linear_prediction_error([1f64.to_radians(), 0.0], 5.0);
+    assert!(relative.iter().any(|e| *e > 0.08), "{relative:?}");
+}
+
+#[test]
+fn steady_headwind_changes_only_ground_speed() {
+    let aircraft = Aircraft::default();
+    let point = level_trim(&aircraft);
+    let headwind = Wind {
+        x_m_s: -10.0,
+        z_m_s: 0.0,
+    };
+    let start = point.state(0.0, 100.0, &headwind);
+    let commands = AircraftCommands {
+        elevator_rad: point.elevator_rad,
+        thrust_n: point.thrust_n,
+    };
+    let system = OpenLoopAircraft {
+        aircraft,
+        commands,
+        wind: headwind,
+    };
+    let end = fly(&system, start, 20.0);
+    let air = aircraft.state_air_data(&end, &headwind);
+    assert!(
+        (air.airspeed_m_s - 69.1).abs() < 1e-6,
+        "airspeed {}",
+        air.airspeed_m_s
+    );
+    assert!((air.alpha_rad - point.alpha_rad).abs() < 1e-9);
+    assert!((end.theta_rad - point.theta_rad).abs() < 1e-8);
+    assert!((end.h_m - 100.0).abs() < 1e-6);
+    let (ground_speed, climb) = end.earth_velocity_m_s();
+    assert!(
+        (ground_speed - 59.1).abs() < 1e-6,
+        "ground speed {ground_speed}"
+    );
+    assert!(climb.abs() < 1e-6);
+    assert!((end.x_m - 59.1 * 20.0).abs() < 1e-4);
+}
