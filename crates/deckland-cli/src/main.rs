@@ -1,7 +1,10 @@
-//! The `deckland` command line.
+//! The `deckland` command line: trim, linearise, simulate and plot carrier landings.
+
+mod commands;
 
 use anyhow::Result;
 use clap::{Parser, Subcommand};
+use std::process::ExitCode;
 
 /// Simulate and control the automatic landing of an unmanned F/A-18 on a moving carrier.
 #[derive(Debug, Parser)]
@@ -12,9 +15,28 @@ struct Cli {
 }
 
 #[derive(Debug, Subcommand)]
-enum Command {}
+enum Command {
+    /// Trim the F/A-18 for steady straight flight at a given airspeed and flight-path angle.
+    Trim(commands::trim::TrimArgs),
+    /// Linearise about a trim point (paper Eq. 14 form): A, B, eigenvalues and modes.
+    Linearize(commands::trim::TrimArgs),
+}
 
-fn main() -> Result<()> {
+fn run(cli: &Cli) -> Result<()> {
+    match &cli.command {
+        Command::Trim(args) => commands::trim::run(args),
+        Command::Linearize(args) => commands::linearize::run(args),
+    }
+}
+
+fn main() -> ExitCode {
     let cli = Cli::parse();
-    match cli.command {}
+    match run(&cli) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(error) => {
+            // `{:#}` prints the whole chain of causes on one line, without a backtrace.
+            eprintln!("error: {error:#}");
+            ExitCode::FAILURE
+        }
+    }
 }

@@ -1,6 +1,8 @@
 //! Open-loop behaviour of the nonlinear plant: trim holds, the linear model predicts
 //! small steps, and a steady uniform wind changes only the ground speed.
 
+#![allow(clippy::unwrap_used)] // tests fail loudly by design
+
 use deckland::aircraft::{
     Aircraft, AircraftCommands, AircraftState, AirframeInputs, OpenLoopAircraft, Wind,
 };

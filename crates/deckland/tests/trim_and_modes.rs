@@ -2,6 +2,8 @@
 //! the values MODEL.md §2.3 records for this model, with eigenvalues cross-checked by an
 //! independent computation (characteristic polynomial + Durand–Kerner root finding).
 
+#![allow(clippy::unwrap_used)] // tests fail loudly by design
+
 use deckland::aircraft::{AerodynamicConfiguration, Aircraft};
 use deckland::analysis::{identify_modes, linearize, trim, ModeKind, TrimError, TrimRequest};
 use nalgebra::{Complex, SMatrix};

@@ -1,0 +1,164 @@
+//! `deckland linearize`: the paper's Eq. (14) linear model about a trim point, its
+//! eigenvalues and modes.
+
+use super::trim::{print_trim_table, TrimArgs, TrimReport};
+use anyhow::Result;
+use deckland::analysis::{
+    identify_modes, linearize, LinearModel, Mode, INPUT_NAMES, INPUT_UNITS, STATE_NAMES,
+    STATE_UNITS,
+};
+use serde::Serialize;
+
+#[derive(Debug, Serialize)]
+struct Eigenvalue {
+    re: f64,
+    im: f64,
+}
+
+#[derive(Debug, Serialize)]
+struct ModeReport {
+    name: &'static str,
+    eigenvalue: Eigenvalue,
+    natural_frequency_rad_s: f64,
+    damping_ratio: f64,
+    period_s: Option<f64>,
+    time_to_half_s: Option<f64>,
+    time_to_double_s: Option<f64>,
+}
+
+impl From<&Mode> for ModeReport {
+    fn from(mode: &Mode) -> Self {
+        Self {
+            name: mode.kind.name(),
+            eigenvalue: Eigenvalue {
+                re: mode.eigenvalue.re,
+                im: mode.eigenvalue.im,
+            },
+            natural_frequency_rad_s: mode.natural_frequency_rad_s,
+            damping_ratio: mode.damping_ratio,
+            period_s: mode.period_s,
+            time_to_half_s: mode.time_to_half_s,
+            time_to_double_s: mode.time_to_double_s,
+        }
+    }
+}
+
+#[derive(Debug, Serialize)]
+struct LinearizeReport {
+    trim: TrimReport,
+    state_names: [&'static str; 4],
+    state_units: [&'static str; 4],
+    input_names: [&'static str; 2],
+    input_units: [&'static str; 2],
+    a: Vec<Vec<f64>>,
+    b: Vec<Vec<f64>>,
+    eigenvalues: Vec<Eigenvalue>,
+    modes: Vec<ModeReport>,
+}
+
+fn rows<const R: usize, const C: usize>(m: &nalgebra::SMatrix<f64, R, C>) -> Vec<Vec<f64>> {
+    (0..R)
+        .map(|i| (0..C).map(|j| m[(i, j)]).collect())
+        .collect()
+}
+
+fn print_matrix<const R: usize, const C: usize>(
+    name: &str,
+    m: &nalgebra::SMatrix<f64, R, C>,
+    columns: &[&str],
+) {
+    print!("  {name:<16}");
+    for column in columns {
+        print!("{column:>23}");
+    }
+    println!();
+    for (i, state) in STATE_NAMES.iter().enumerate() {
+        print!("  d{state:<15}");
+        for j in 0..C {
+            print!("{:>23.6}", m[(i, j)]);
+        }
+        println!();
+    }
+}
+
+fn print_table(args: &TrimArgs, model: &LinearModel, modes: &[Mode], max_thrust_n: f64) {
+    print_trim_table(args.configuration, &model.trim, max_thrust_n);
+    println!();
+    println!("Linear model ẋ = A x + B u (paper Eq. 14 form)");
+    let states: Vec<String> = STATE_NAMES
+        .iter()
+        .zip(STATE_UNITS)
+        .map(|(n, u)| format!("{n} [{u}]"))
+        .collect();
+    let inputs: Vec<String> = INPUT_NAMES
+        .iter()
+        .zip(INPUT_UNITS)
+        .map(|(n, u)| format!("{n} [{u}]"))
+        .collect();
+    let states: Vec<&str> = states.iter().map(String::as_str).collect();
+    let inputs: Vec<&str> = inputs.iter().map(String::as_str).collect();
+    print_matrix("A", &model.a, &states);
+    print_matrix("B", &model.b, &inputs);
+    println!(
+        "  (throttle is a fraction of the total maximum thrust of both engines; ∂q̇/∂q = {:.4} 1/s, ∂q̇/∂δe = {:.4} 1/s²)",
+        model.pitch_damping_per_s(),
+        model.elevator_effectiveness_per_s2()
+    );
+    println!();
+    println!("Modes");
+    println!(
+        "  {:<14}{:>24}{:>12}{:>10}{:>12}{:>22}",
+        "mode", "eigenvalue [1/s]", "ω_n [rad/s]", "ζ [–]", "period [s]", "time to half/double"
+    );
+    for mode in modes {
+        let period = mode.period_s.map_or("—".to_string(), |p| format!("{p:.2}"));
+        let timing = match (mode.time_to_half_s, mode.time_to_double_s) {
+            (Some(t), _) => format!("half in {t:.2} s"),
+            (_, Some(t)) => format!("double in {t:.1} s"),
+            _ => "neutral".to_string(),
+        };
+        println!(
+            "  {:<14}{:>24}{:>12.4}{:>10.4}{:>12}{:>22}",
+            mode.kind.name(),
+            format!("{:.4} ± {:.4}i", mode.eigenvalue.re, mode.eigenvalue.im),
+            mode.natural_frequency_rad_s,
+            mode.damping_ratio,
+            period,
+            timing
+        );
+    }
+}
+
+/// Runs `deckland linearize`.
+pub fn run(args: &TrimArgs) -> Result<()> {
+    let aircraft = args.aircraft();
+    let point = args.trim(&aircraft)?;
+    let model = linearize(&aircraft, &point);
+    let eigenvalues = model.eigenvalues();
+    let modes = identify_modes(&eigenvalues);
+    if args.json {
+        let report = LinearizeReport {
+            trim: TrimReport::new(args.configuration, &point),
+            state_names: STATE_NAMES,
+            state_units: STATE_UNITS,
+            input_names: INPUT_NAMES,
+            input_units: INPUT_UNITS,
+            a: rows(&model.a),
+            b: rows(&model.b),
+            eigenvalues: eigenvalues
+                .iter()
+                .map(|l| Eigenvalue { re: l.re, im: l.im })
+                .collect(),
+            modes: modes.iter().map(ModeReport::from).collect(),
+        };
+        println!("{}", serde_json::to_string_pretty(&report)?);
+    } else {
+        print_table(
+            args,
+            &model,
+            &modes,
+            aircraft.engines().max_total_thrust_n(),
+        );
+    }
+    Ok(())
+}

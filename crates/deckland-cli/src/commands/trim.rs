@@ -1,0 +1,141 @@
+//! `deckland trim`: steady straight flight at a given airspeed and flight-path angle.
+
+use anyhow::{Context, Result};
+use clap::Args;
+use deckland::aircraft::{AerodynamicConfiguration, Aircraft, ConfigurationName};
+use deckland::analysis::{trim, TrimPoint, TrimRequest, TrimResiduals};
+use serde::Serialize;
+
+/// Options shared by `trim` and `linearize`.
+#[derive(Debug, Clone, Args)]
+pub struct TrimArgs {
+    /// True airspeed (m/s).
+    #[arg(
+        long = "speed",
+        value_name = "M_S",
+        default_value_t = 69.1,
+        allow_negative_numbers = true
+    )]
+    pub speed_m_s: f64,
+    /// Flight-path angle (deg), positive climbing; a 3.5° glide slope is -3.5.
+    #[arg(
+        long = "gamma",
+        value_name = "DEG",
+        default_value_t = 0.0,
+        allow_negative_numbers = true
+    )]
+    pub gamma_deg: f64,
+    /// Aerodynamic configuration.
+    #[arg(
+        long = "config",
+        value_name = "landing|clean",
+        default_value = "landing"
+    )]
+    pub configuration: ConfigurationName,
+    /// Print one JSON document on stdout instead of a table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+impl TrimArgs {
+    /// The aircraft in the requested configuration.
+    pub fn aircraft(&self) -> Aircraft {
+        Aircraft::with_configuration(AerodynamicConfiguration::named(self.configuration))
+    }
+
+    /// Trims the aircraft as requested.
+    pub fn trim(&self, aircraft: &Aircraft) -> Result<TrimPoint> {
+        let request = TrimRequest {
+            speed_m_s: self.speed_m_s,
+            flight_path_angle_rad: self.gamma_deg.to_radians(),
+        };
+        trim(aircraft, &request).with_context(|| {
+            format!(
+                "cannot trim the {} configuration at {} m/s and γ = {}°",
+                self.configuration, self.speed_m_s, self.gamma_deg
+            )
+        })
+    }
+}
+
+/// The trim as written to JSON (degrees at the edge, names carry units).
+#[derive(Debug, Serialize)]
+pub struct TrimReport {
+    configuration: String,
+    speed_mps: f64,
+    gamma_deg: f64,
+    alpha_deg: f64,
+    theta_deg: f64,
+    elevator_deg: f64,
+    thrust_n: f64,
+    throttle: f64,
+    residuals: TrimResiduals,
+    iterations: usize,
+}
+
+impl TrimReport {
+    /// Converts a trim point for output.
+    pub fn new(configuration: ConfigurationName, point: &TrimPoint) -> Self {
+        Self {
+            configuration: configuration.to_string(),
+            speed_mps: point.speed_m_s,
+            gamma_deg: point.flight_path_angle_rad.to_degrees(),
+            alpha_deg: point.alpha_rad.to_degrees(),
+            theta_deg: point.theta_rad.to_degrees(),
+            elevator_deg: point.elevator_rad.to_degrees(),
+            thrust_n: point.thrust_n,
+            throttle: point.throttle,
+            residuals: point.residuals,
+            iterations: point.iterations,
+        }
+    }
+}
+
+/// Prints a trim point as a readable table.
+pub fn print_trim_table(configuration: ConfigurationName, point: &TrimPoint, max_thrust_n: f64) {
+    println!(
+        "Trim — {configuration} configuration, V_T = {:.2} m/s, γ = {:.2}°",
+        point.speed_m_s,
+        point.flight_path_angle_rad.to_degrees()
+    );
+    println!(
+        "  angle of attack α   {:>10.3} °",
+        point.alpha_rad.to_degrees()
+    );
+    println!(
+        "  pitch angle θ       {:>10.3} °",
+        point.theta_rad.to_degrees()
+    );
+    println!(
+        "  elevator δe         {:>10.3} °   (positive trailing edge down)",
+        point.elevator_rad.to_degrees()
+    );
+    println!(
+        "  thrust T            {:>10.0} N   (throttle {:.3} of {:.0} N, both engines)",
+        point.thrust_n, point.throttle, max_thrust_n
+    );
+    let r = &point.residuals;
+    println!(
+        "  residuals           V̇ {:.1e} m/s², α̇ {:.1e} rad/s, q̇ {:.1e} rad/s²  ({} Newton iterations)",
+        r.airspeed_rate_m_s2, r.alpha_rate_rad_s, r.pitch_acceleration_rad_s2, point.iterations
+    );
+}
+
+/// Runs `deckland trim`.
+pub fn run(args: &TrimArgs) -> Result<()> {
+    let aircraft = args.aircraft();
+    let point = args.trim(&aircraft)?;
+    if args.json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&TrimReport::new(args.configuration, &point))?
+        );
+    } else {
+        print_trim_table(
+            args.configuration,
+            &point,
+            aircraft.engines().max_total_thrust_n(),
+        );
+    }
+    Ok(())
+}
