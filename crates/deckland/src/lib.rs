@@ -31,4 +31,5 @@
 
 pub mod aircraft;
 pub mod analysis;
+pub mod control;
 pub mod integration;

@@ -11,6 +11,7 @@ mod configuration;
 mod dynamics;
 mod engine;
 mod error;
+mod hook;
 mod parameters;
 mod state;
 
@@ -22,5 +23,6 @@ pub use configuration::{AerodynamicConfiguration, ConfigurationName};
 pub use dynamics::{AirData, Aircraft, AircraftCommands, AirframeInputs, OpenLoopAircraft, Wind};
 pub use engine::{EngineParameters, Engines};
 pub use error::AircraftError;
+pub use hook::HookGeometry;
 pub use parameters::AircraftParameters;
 pub use state::AircraftState;

@@ -1,0 +1,5 @@
+//! Controllers of the landing cascade (paper §4, MODEL.md §5).
+
+mod loop_controller;
+
+pub use loop_controller::{LoopController, LoopGains};
