@@ -29,4 +29,5 @@
 //! integrator loop → recorder → metrics. Beside it: trim, linearisation and modes
 //! ([`analysis`]).
 
+pub mod estimation;
 pub mod integration;
