@@ -29,5 +29,6 @@
 //! integrator loop → recorder → metrics. Beside it: trim, linearisation and modes
 //! ([`analysis`]).
 
+pub mod control;
 pub mod estimation;
 pub mod integration;

@@ -1,0 +1,6 @@
+//! Flight controllers of the landing cascade (MODEL.md §5; paper §4).
+//!
+//! Cascade: flight-path generator → guidance → sink-rate controller → [`pitch`]
+//! controller → elevator; in parallel the speed controller → thrust.
+
+pub mod pitch;
