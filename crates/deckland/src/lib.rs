@@ -32,3 +32,4 @@
 pub mod control;
 pub mod estimation;
 pub mod integration;
+pub mod metrics;
