@@ -281,6 +281,34 @@ mod tests {
     }
 
     #[test]
+    fn pitch_feedback_selects_measured_or_estimated_attitude() {
+        let inputs = PitchControlInputs {
+            theta_ref_rad: 0.2,
+            theta_measured_rad: 0.15,
+            theta_trim_rad: 0.1,
+            ..PitchControlInputs::default()
+        };
+        // Estimate θ* + x1 = 0.13 differs from the measurement 0.15.
+        let state = ObserverState {
+            x1: 0.03,
+            ..ObserverState::default()
+        };
+        let command = |pitch_feedback| {
+            let parameters = ObserverPdParameters {
+                pitch_feedback,
+                ..ObserverPdParameters::default()
+            };
+            let controller = ObserverPdController::new(&parameters, PAPER_PLANT).expect("ok");
+            let k_p = controller.gains().proportional_per_s2;
+            (controller.elevator_command_rad(&state, &inputs), k_p)
+        };
+        let (measured, k_p) = command(PitchFeedback::Measured);
+        assert!((measured - k_p * 0.05 / -1.93).abs() < 1e-12);
+        let (estimated, _) = command(PitchFeedback::ObserverEstimate);
+        assert!((estimated - k_p * 0.07 / -1.93).abs() < 1e-12);
+    }
+
+    #[test]
     fn zero_elevator_effectiveness_is_rejected() {
         let plant = PitchPlantDerivatives {
             dqdot_delevator_per_s2: 0.0,
