@@ -12,7 +12,7 @@ pub fn peak_abs(signal: &[f64]) -> Result<f64, MetricsError> {
     Ok(signal.iter().fold(0.0_f64, |peak, v| peak.max(v.abs())))
 }
 
-/// Total variation Σ|x[i+1] − x[i]| (signal's unit): the total travel, a measure of
+/// Total variation `Σ|x[i+1] − x[i]|` (signal's unit): the total travel, a measure of
 /// actuator activity that grows with chatter as well as with large moves.
 pub fn total_variation(signal: &[f64]) -> Result<f64, MetricsError> {
     check_signal(signal)?;
