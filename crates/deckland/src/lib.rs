@@ -32,4 +32,6 @@
 pub mod aircraft;
 pub mod analysis;
 pub mod control;
+pub mod estimation;
 pub mod integration;
+pub mod metrics;

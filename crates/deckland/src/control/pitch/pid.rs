@@ -1,0 +1,226 @@
+//! PID pitch controller for comparison (paper Eq. 37; MODEL.md §5).
+//!
+//! Same equivalent-control form as the O-PD but without the observer:
+//! U = K_P·e_θ + K_I·∫e_θ dt + K_D·ė_θ with e_θ = θ_ref − θ_m and ė_θ = −q_m
+//! (derivative on the measured pitch rate, so a step in θ_ref gives no derivative kick),
+//! and Δδe = U/(∂q̇/∂δe), δe = δe* + Δδe.
+//!
+//! **Anti-windup (conditional integration)**: when enabled, the integrator is frozen
+//! while the elevator actuator sits on a position limit *and* integrating the current
+//! error would push the command further into that limit; it keeps integrating when the
+//! error would pull the elevator back off the limit.
+
+use serde::{Deserialize, Serialize};
+
+use super::inputs::{
+    check_finite, ElevatorSaturation, PitchControlError, PitchControlInputs, PitchPlantDerivatives,
+};
+
+/// PID gains and options (paper Eq. 37; gains as printed in paper §4.2.3).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct PidParameters {
+    /// Proportional gain K_P (1/s²; paper: 57.01).
+    pub proportional_per_s2: f64,
+    /// Integral gain K_I (1/s³; paper: 50).
+    pub integral_per_s3: f64,
+    /// Derivative gain K_D (1/s; paper: 17.19).
+    pub derivative_per_s: f64,
+    /// Freeze the integrator while the elevator saturates and the error pushes further
+    /// into the limit (default true; MODEL.md §5).
+    pub anti_windup: bool,
+}
+
+impl Default for PidParameters {
+    /// The paper's gains K_P = 57.01, K_I = 50, K_D = 17.19 with anti-windup on.
+    fn default() -> Self {
+        Self {
+            proportional_per_s2: 57.01,
+            integral_per_s3: 50.0,
+            derivative_per_s: 17.19,
+            anti_windup: true,
+        }
+    }
+}
+
+impl PidParameters {
+    /// Checks that all gains are finite and non-negative.
+    pub fn validate(&self) -> Result<(), PitchControlError> {
+        for (field, value) in [
+            ("proportional_per_s2", self.proportional_per_s2),
+            ("integral_per_s3", self.integral_per_s3),
+            ("derivative_per_s", self.derivative_per_s),
+        ] {
+            check_finite(field, value)?;
+            if value < 0.0 {
+                return Err(PitchControlError::NegativeGain { field, value });
+            }
+        }
+        Ok(())
+    }
+}
+
+/// State of the PID pitch controller (paper Eq. 37).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct PidState {
+    /// Integral of the pitch error ∫e_θ dt (rad·s).
+    pub pitch_error_integral_rad_s: f64,
+}
+
+/// The PID pitch controller (paper Eq. 37; MODEL.md §5).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PidController {
+    parameters: PidParameters,
+    plant: PitchPlantDerivatives,
+}
+
+impl PidController {
+    /// Builds the controller after validating gains and plant derivatives.
+    pub fn new(
+        parameters: &PidParameters,
+        plant: PitchPlantDerivatives,
+    ) -> Result<Self, PitchControlError> {
+        parameters.validate()?;
+        plant.validate()?;
+        Ok(Self {
+            parameters: *parameters,
+            plant,
+        })
+    }
+
+    /// The gains and options in use.
+    pub fn parameters(&self) -> &PidParameters {
+        &self.parameters
+    }
+
+    /// The plant derivatives the controller was built for.
+    pub fn plant(&self) -> &PitchPlantDerivatives {
+        &self.plant
+    }
+
+    /// State for a start at trim: empty integrator.
+    pub fn initial_state(&self) -> PidState {
+        PidState::default()
+    }
+
+    /// Elevator command δe = δe* + U/(∂q̇/∂δe) (rad; paper Eq. 37 in the form of
+    /// Eq. 35–36), not limited: the actuator applies its position limits.
+    #[inline]
+    pub fn elevator_command_rad(&self, state: &PidState, inputs: &PitchControlInputs) -> f64 {
+        let pitch_error_rad = inputs.theta_ref_rad - inputs.theta_measured_rad;
+        let equivalent_control = self.parameters.proportional_per_s2 * pitch_error_rad
+            + self.parameters.integral_per_s3 * state.pitch_error_integral_rad_s
+            - self.parameters.derivative_per_s * inputs.pitch_rate_measured_radps;
+        inputs.elevator_trim_rad + equivalent_control / self.plant.dqdot_delevator_per_s2
+    }
+
+    /// Integrator derivative: e_θ (rad), or 0 while anti-windup freezes it.
+    #[inline]
+    pub fn derivative(&self, _state: &PidState, inputs: &PitchControlInputs) -> PidState {
+        let pitch_error_rad = inputs.theta_ref_rad - inputs.theta_measured_rad;
+        let frozen = self.parameters.anti_windup
+            && self.integration_pushes_into_limit(pitch_error_rad, inputs.elevator_saturation);
+        PidState {
+            pitch_error_integral_rad_s: if frozen { 0.0 } else { pitch_error_rad },
+        }
+    }
+
+    /// True when integrating `pitch_error_rad` would move the elevator command further
+    /// into the limit the actuator sits on.
+    #[inline]
+    fn integration_pushes_into_limit(
+        &self,
+        pitch_error_rad: f64,
+        saturation: ElevatorSaturation,
+    ) -> bool {
+        // Rate of change of the integral term's elevator contribution, up to a positive
+        // factor: K_I·e/(∂q̇/∂δe).
+        let command_drift =
+            self.parameters.integral_per_s3 * pitch_error_rad / self.plant.dqdot_delevator_per_s2;
+        match saturation {
+            ElevatorSaturation::NotSaturated => false,
+            ElevatorSaturation::AtLowerLimit => command_drift < 0.0,
+            ElevatorSaturation::AtUpperLimit => command_drift > 0.0,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const PLANT: PitchPlantDerivatives = PitchPlantDerivatives {
+        dqdot_dq_per_s: -0.15,
+        dqdot_delevator_per_s2: -1.93,
+    };
+
+    fn controller(anti_windup: bool) -> PidController {
+        let parameters = PidParameters {
+            anti_windup,
+            ..PidParameters::default()
+        };
+        PidController::new(&parameters, PLANT).expect("valid")
+    }
+
+    #[test]
+    fn integrator_freezes_only_when_pushing_into_the_limit() {
+        let pid = controller(true);
+        let state = pid.initial_state();
+        // Nose-up error: the command moves trailing edge up, towards the lower limit.
+        let nose_up = PitchControlInputs {
+            theta_ref_rad: 0.1,
+            ..PitchControlInputs::default()
+        };
+        let at = |elevator_saturation| PitchControlInputs {
+            elevator_saturation,
+            ..nose_up
+        };
+        let rate = |inputs| pid.derivative(&state, &inputs).pitch_error_integral_rad_s;
+        assert_eq!(rate(at(ElevatorSaturation::NotSaturated)), 0.1);
+        assert_eq!(rate(at(ElevatorSaturation::AtLowerLimit)), 0.0);
+        assert_eq!(rate(at(ElevatorSaturation::AtUpperLimit)), 0.1);
+        // Without anti-windup it always integrates.
+        let free = controller(false);
+        let inputs = at(ElevatorSaturation::AtLowerLimit);
+        assert_eq!(
+            free.derivative(&state, &inputs).pitch_error_integral_rad_s,
+            0.1
+        );
+    }
+
+    #[test]
+    fn derivative_acts_on_the_measured_rate_and_command_includes_trim() {
+        let pid = controller(true);
+        let inputs = PitchControlInputs {
+            pitch_rate_measured_radps: 0.1,
+            elevator_trim_rad: -0.143,
+            ..PitchControlInputs::default()
+        };
+        let command = pid.elevator_command_rad(&pid.initial_state(), &inputs);
+        // U = −17.19·0.1, Δδe = U/(−1.93) > 0: a nose-up rate is damped trailing edge down.
+        assert!(
+            (command - (-0.143 + 1.719 / 1.93)).abs() < 1e-12,
+            "{command}"
+        );
+    }
+
+    #[test]
+    fn negative_and_non_finite_gains_are_named() {
+        let bad = PidParameters {
+            integral_per_s3: -1.0,
+            ..PidParameters::default()
+        };
+        let message = PidController::new(&bad, PLANT)
+            .expect_err("neg")
+            .to_string();
+        assert!(message.contains("integral_per_s3"), "{message}");
+        let bad = PidParameters {
+            derivative_per_s: f64::INFINITY,
+            ..PidParameters::default()
+        };
+        let message = PidController::new(&bad, PLANT)
+            .expect_err("inf")
+            .to_string();
+        assert!(message.contains("derivative_per_s"), "{message}");
+    }
+}

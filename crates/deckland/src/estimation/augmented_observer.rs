@@ -1,0 +1,345 @@
+//! Augmented finite-time disturbance observer (MODEL.md §4, correcting paper Eq. 11–13).
+//!
+//! For a plant in the form (paper Eq. 7–10)
+//!
+//! ```text
+//! ẇ1 = w2,   ẇ2 = w3 + h(t),   ẇ3 = η(t),   y = w1 + n(t)
+//! ```
+//!
+//! with known input h and unknown bounded disturbance w3, the observer is
+//!
+//! ```text
+//! e   = x1 − y
+//! ẋ1 = x2 −      (k3/ε)·|e|^α3·sign(e)
+//! ẋ2 = x3 + h − (k2/ε²)·|e|^α2·sign(e)
+//! ẋ3 =         −(k1/ε³)·|e|^α1·sign(e)
+//! α2 = (2α1 + 1)/3,   α3 = (α1 + 2)/3
+//! ```
+//!
+//! so x1, x2, x3 estimate w1, w2, w3. The paper's Eq. 12 omits h and its Eq. 13 prints
+//! α3 for α1; MODEL.md §4 corrects both.
+
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+/// Tuning of the augmented observer (MODEL.md §4; paper §2.3).
+///
+/// `k1`, `k2`, `k3` place the observer's (normalised) poles; `alpha1` sets the
+/// finite-time exponents (closer to 1 is closer to a linear high-gain observer);
+/// `epsilon` scales the bandwidth: the observer is roughly 1/ε times faster than its
+/// normalised form, so a smaller ε tracks faster and amplifies measurement noise more.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct ObserverParameters {
+    /// Disturbance-channel gain k1 (dimensionless, > 0; MODEL.md §4).
+    pub k1: f64,
+    /// Rate-channel gain k2 (dimensionless, > (4/π)·k1/k3; MODEL.md §4).
+    pub k2: f64,
+    /// Output-channel gain k3 (dimensionless, > 0; MODEL.md §4).
+    pub k3: f64,
+    /// Exponent α1 of the disturbance channel, in (0, 1) (dimensionless; MODEL.md §4).
+    pub alpha1: f64,
+    /// Bandwidth parameter ε, in (0, 1) (s, in the sense that gains scale as ε⁻ⁱ;
+    /// MODEL.md §4). The default 0.03 is provisional, pending tuning on the full loop.
+    pub epsilon: f64,
+}
+
+impl Default for ObserverParameters {
+    /// The starting values of MODEL.md §4: k1 = 1, k2 = 3, k3 = 3, α1 = 0.8, ε = 0.03.
+    fn default() -> Self {
+        Self {
+            k1: 1.0,
+            k2: 3.0,
+            k3: 3.0,
+            alpha1: 0.8,
+            epsilon: 0.03,
+        }
+    }
+}
+
+/// Why a set of [`ObserverParameters`] was rejected (MODEL.md §4).
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum ObserverError {
+    /// A parameter is NaN or infinite.
+    #[error("observer parameter `{field}` must be finite, got {value}")]
+    NonFinite {
+        /// Name of the parameter.
+        field: &'static str,
+        /// The rejected value.
+        value: f64,
+    },
+    /// k1 or k3 is not strictly positive.
+    #[error("observer gain `{field}` must be > 0, got {value}")]
+    NonPositiveGain {
+        /// Name of the gain.
+        field: &'static str,
+        /// The rejected value.
+        value: f64,
+    },
+    /// k2 violates the stability bound k2 > (4/π)·k1/k3.
+    #[error("observer gain `k2` must exceed (4/π)·k1/k3 = {bound} for stability, got {value}")]
+    UnstableK2 {
+        /// The rejected value of k2.
+        value: f64,
+        /// The bound (4/π)·k1/k3 it must exceed.
+        bound: f64,
+    },
+    /// α1 or ε is outside the open interval (0, 1).
+    #[error("observer parameter `{field}` must lie in (0, 1), got {value}")]
+    OutsideUnitInterval {
+        /// Name of the parameter.
+        field: &'static str,
+        /// The rejected value.
+        value: f64,
+    },
+}
+
+impl ObserverParameters {
+    /// Checks the stability and range conditions of MODEL.md §4: all finite, k1 > 0,
+    /// k3 > 0, k2 > (4/π)·k1/k3, α1 ∈ (0, 1), ε ∈ (0, 1).
+    pub fn validate(&self) -> Result<(), ObserverError> {
+        let fields = [
+            ("k1", self.k1),
+            ("k2", self.k2),
+            ("k3", self.k3),
+            ("alpha1", self.alpha1),
+            ("epsilon", self.epsilon),
+        ];
+        for (field, value) in fields {
+            if !value.is_finite() {
+                return Err(ObserverError::NonFinite { field, value });
+            }
+        }
+        for (field, value) in [("k1", self.k1), ("k3", self.k3)] {
+            if value <= 0.0 {
+                return Err(ObserverError::NonPositiveGain { field, value });
+            }
+        }
+        let bound = 4.0 / std::f64::consts::PI * self.k1 / self.k3;
+        if self.k2 <= bound {
+            return Err(ObserverError::UnstableK2 {
+                value: self.k2,
+                bound,
+            });
+        }
+        for (field, value) in [("alpha1", self.alpha1), ("epsilon", self.epsilon)] {
+            if !(value > 0.0 && value < 1.0) {
+                return Err(ObserverError::OutsideUnitInterval { field, value });
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Observer state: estimates of w1, w2 and w3 (MODEL.md §4). For the pitch loop these
+/// are Δθ (rad), Δq (rad/s) and the lumped disturbance d_θ (rad/s²).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct ObserverState {
+    /// Estimate x1 of the measured variable w1 (pitch loop: Δθ, rad).
+    pub x1: f64,
+    /// Estimate x2 of its rate w2 (pitch loop: Δq, rad/s).
+    pub x2: f64,
+    /// Estimate x3 of the lumped disturbance w3 (pitch loop: d_θ, rad/s²).
+    pub x3: f64,
+}
+
+impl ObserverState {
+    /// The state as `[x1, x2, x3]` for the integrator (units as the fields).
+    #[inline]
+    pub fn to_array(&self) -> [f64; 3] {
+        [self.x1, self.x2, self.x3]
+    }
+
+    /// The state from `[x1, x2, x3]` as produced by [`ObserverState::to_array`].
+    #[inline]
+    pub fn from_array(x: &[f64; 3]) -> Self {
+        Self {
+            x1: x[0],
+            x2: x[1],
+            x3: x[2],
+        }
+    }
+}
+
+/// The augmented finite-time disturbance observer of MODEL.md §4 with validated
+/// parameters and its gains k3/ε, k2/ε², k1/ε³ precomputed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AugmentedObserver {
+    parameters: ObserverParameters,
+    /// k3/ε (1/s).
+    output_gain: f64,
+    /// k2/ε² (1/s²).
+    rate_gain: f64,
+    /// k1/ε³ (1/s³).
+    disturbance_gain: f64,
+    /// α1, α2 = (2α1 + 1)/3, α3 = (α1 + 2)/3.
+    alpha: [f64; 3],
+}
+
+impl AugmentedObserver {
+    /// Builds the observer after [`ObserverParameters::validate`] (MODEL.md §4).
+    pub fn new(parameters: ObserverParameters) -> Result<Self, ObserverError> {
+        parameters.validate()?;
+        let ObserverParameters {
+            k1,
+            k2,
+            k3,
+            alpha1,
+            epsilon,
+        } = parameters;
+        Ok(Self {
+            parameters,
+            output_gain: k3 / epsilon,
+            rate_gain: k2 / (epsilon * epsilon),
+            disturbance_gain: k1 / (epsilon * epsilon * epsilon),
+            alpha: [alpha1, (2.0 * alpha1 + 1.0) / 3.0, (alpha1 + 2.0) / 3.0],
+        })
+    }
+
+    /// The parameters the observer was built from.
+    pub fn parameters(&self) -> &ObserverParameters {
+        &self.parameters
+    }
+
+    /// The observer's time derivative (MODEL.md §4) for `measurement` y of w1 (pitch
+    /// loop: θ_m − θ*, rad) and `known_input` h (pitch loop: h_θ, rad/s²).
+    ///
+    /// Pure and allocation-free. The correction terms are written as
+    /// |e|^α·sign(e) = copysign(|e|^α, e), which is exactly zero at e = 0 (no NaN).
+    #[inline]
+    pub fn derivative(
+        &self,
+        state: &ObserverState,
+        measurement: f64,
+        known_input: f64,
+    ) -> ObserverState {
+        let e = state.x1 - measurement;
+        let magnitude = e.abs();
+        let signed_power = |alpha: f64| magnitude.powf(alpha).copysign(e);
+        ObserverState {
+            x1: state.x2 - self.output_gain * signed_power(self.alpha[2]),
+            x2: state.x3 + known_input - self.rate_gain * signed_power(self.alpha[1]),
+            x3: -self.disturbance_gain * signed_power(self.alpha[0]),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn default_parameters_are_valid() {
+        assert_eq!(ObserverParameters::default().validate(), Ok(()));
+    }
+
+    #[test]
+    fn k2_below_the_stability_bound_is_rejected_with_the_bound() {
+        let parameters = ObserverParameters {
+            k2: 0.4,
+            ..ObserverParameters::default()
+        };
+        let error = AugmentedObserver::new(parameters).expect_err("k2 = 0.4 < 0.424");
+        let ObserverError::UnstableK2 { value, bound } = error else {
+            panic!("wrong error {error:?}");
+        };
+        assert_eq!(value, 0.4);
+        // (4/π)·1/3 = 0.42441…
+        assert!((bound - 0.424_413_181_578_387_6).abs() < 1e-12);
+        assert!(error.to_string().contains("0.4244"), "{error}");
+    }
+
+    #[test]
+    fn each_invalid_field_is_named() {
+        let base = ObserverParameters::default();
+        let cases = [
+            (ObserverParameters { k1: 0.0, ..base }, "k1"),
+            (ObserverParameters { k3: -1.0, ..base }, "k3"),
+            (
+                ObserverParameters {
+                    k2: f64::NAN,
+                    ..base
+                },
+                "k2",
+            ),
+            (
+                ObserverParameters {
+                    alpha1: 1.0,
+                    ..base
+                },
+                "alpha1",
+            ),
+            (
+                ObserverParameters {
+                    alpha1: 0.0,
+                    ..base
+                },
+                "alpha1",
+            ),
+            (
+                ObserverParameters {
+                    epsilon: 1.5,
+                    ..base
+                },
+                "epsilon",
+            ),
+            (
+                ObserverParameters {
+                    epsilon: f64::INFINITY,
+                    ..base
+                },
+                "epsilon",
+            ),
+        ];
+        for (parameters, field) in cases {
+            let message = parameters
+                .validate()
+                .expect_err("invalid parameters")
+                .to_string();
+            assert!(message.contains(field), "{message} should name {field}");
+        }
+    }
+
+    #[test]
+    fn zero_output_error_gives_the_open_loop_model_without_nan() {
+        let observer = AugmentedObserver::new(ObserverParameters::default()).expect("valid");
+        let state = ObserverState {
+            x1: 0.1,
+            x2: 0.2,
+            x3: 0.3,
+        };
+        for y in [0.1, -0.0] {
+            let state = ObserverState { x1: y, ..state };
+            let derivative = observer.derivative(&state, y, 0.5);
+            assert_eq!(derivative.to_array(), [0.2, 0.8, 0.0]);
+        }
+    }
+
+    #[test]
+    fn corrections_oppose_the_output_error() {
+        let observer = AugmentedObserver::new(ObserverParameters::default()).expect("valid");
+        let state = ObserverState::default();
+        let above = observer.derivative(&state, -0.01, 0.0);
+        let below = observer.derivative(&state, 0.01, 0.0);
+        assert!(above.x1 < 0.0 && above.x2 < 0.0 && above.x3 < 0.0);
+        assert_eq!(above.to_array().map(|v| -v), below.to_array());
+    }
+
+    #[test]
+    fn array_round_trip() {
+        let state = ObserverState {
+            x1: 1.0,
+            x2: -2.0,
+            x3: 3.5,
+        };
+        assert_eq!(ObserverState::from_array(&state.to_array()), state);
+    }
+
+    #[test]
+    fn parameters_deserialise_with_defaults_for_missing_fields() {
+        let parameters: ObserverParameters =
+            serde_json::from_str(r#"{"epsilon": 0.02}"#).expect("valid JSON");
+        assert_eq!(parameters.epsilon, 0.02);
+        assert_eq!(parameters.k2, 3.0);
+    }
+}
