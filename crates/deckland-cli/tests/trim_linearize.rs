@@ -100,5 +100,5 @@ fn unreachable_trim_fails_with_the_limit_named() {
     assert!(!output.status.success());
     assert!(String::from_utf8(output.stderr)
         .unwrap()
-        .contains("speed_m_s"));
+        .contains("speed_mps"));
 }

@@ -12,8 +12,8 @@ fn plant(c: &mut Criterion) {
     let aircraft = Aircraft::default();
     let point = trim(&aircraft, &TrimRequest::default()).expect("default trim exists");
     let wind = Wind {
-        x_m_s: -10.0,
-        z_m_s: 0.3,
+        x_mps: -10.0,
+        z_mps: 0.3,
     };
     let state = point.state(0.0, 100.0, &wind);
     let commands = AircraftCommands {

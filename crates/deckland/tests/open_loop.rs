@@ -35,13 +35,13 @@ fn trimmed_aircraft_flown_open_loop_stays_at_trim() {
     };
     let derivative = aircraft.derivative(&start, &commands, &Wind::default());
     for (name, value) in [
-        ("u̇", derivative.u_m_s),
-        ("ẇ", derivative.w_m_s),
-        ("q̇", derivative.q_rad_s),
+        ("u̇", derivative.u_mps),
+        ("ẇ", derivative.w_mps),
+        ("q̇", derivative.q_radps),
         ("ḣ", derivative.h_m),
         ("Ṫ", derivative.engine_thrust_n[0]),
         ("δ̇e", derivative.elevator_rad),
-        ("δ̈e", derivative.elevator_rate_rad_s),
+        ("δ̈e", derivative.elevator_rate_radps),
     ] {
         assert!(value.abs() < 1e-9, "{name} = {value}");
     }
@@ -52,7 +52,7 @@ fn trimmed_aircraft_flown_open_loop_stays_at_trim() {
     };
     let end = fly(&system, start, 20.0);
     let air = aircraft.state_air_data(&end, &Wind::default());
-    assert!((air.airspeed_m_s - 69.1).abs() < 1e-6);
+    assert!((air.airspeed_mps - 69.1).abs() < 1e-6);
     assert!((end.theta_rad - point.theta_rad).abs() < 1e-8);
     assert!((end.h_m - 100.0).abs() < 1e-6);
     assert!((end.x_m - 69.1 * 20.0).abs() < 1e-4);
@@ -109,7 +109,7 @@ fn linear_prediction_error(delta: [f64; 2], seconds: f64) -> [f64; 4] {
         a: model.a,
         bu: model.b * SVector::<f64, 2>::new(delta[0], delta[1]),
     };
-    let trim_x = [point.speed_m_s, point.theta_rad, point.alpha_rad, 0.0];
+    let trim_x = [point.speed_mps, point.theta_rad, point.alpha_rad, 0.0];
     let mut x_nl = trim_x;
     let mut x_lin = [0.0; 4];
     let mut max_error = [0.0_f64; 4];
@@ -168,8 +168,8 @@ fn steady_headwind_changes_only_ground_speed() {
     let aircraft = Aircraft::default();
     let point = level_trim(&aircraft);
     let headwind = Wind {
-        x_m_s: -10.0,
-        z_m_s: 0.0,
+        x_mps: -10.0,
+        z_mps: 0.0,
     };
     let start = point.state(0.0, 100.0, &headwind);
     let commands = AircraftCommands {
@@ -184,14 +184,14 @@ fn steady_headwind_changes_only_ground_speed() {
     let end = fly(&system, start, 20.0);
     let air = aircraft.state_air_data(&end, &headwind);
     assert!(
-        (air.airspeed_m_s - 69.1).abs() < 1e-6,
+        (air.airspeed_mps - 69.1).abs() < 1e-6,
         "airspeed {}",
-        air.airspeed_m_s
+        air.airspeed_mps
     );
     assert!((air.alpha_rad - point.alpha_rad).abs() < 1e-9);
     assert!((end.theta_rad - point.theta_rad).abs() < 1e-8);
     assert!((end.h_m - 100.0).abs() < 1e-6);
-    let (ground_speed, climb) = end.earth_velocity_m_s();
+    let (ground_speed, climb) = end.earth_velocity_mps();
     assert!(
         (ground_speed - 59.1).abs() < 1e-6,
         "ground speed {ground_speed}"

@@ -10,7 +10,7 @@ use nalgebra::{Complex, SMatrix};
 
 fn level(speed: f64) -> TrimRequest {
     TrimRequest {
-        speed_m_s: speed,
+        speed_mps: speed,
         flight_path_angle_rad: 0.0,
     }
 }
@@ -76,7 +76,7 @@ fn glide_slope_trim_has_theta_equal_alpha_plus_gamma() {
     let point = trim(
         &Aircraft::default(),
         &TrimRequest {
-            speed_m_s: 69.1,
+            speed_mps: 69.1,
             flight_path_angle_rad: gamma,
         },
     )
@@ -103,7 +103,7 @@ fn unreachable_trims_name_the_limit() {
     let dive = trim(
         &aircraft,
         &TrimRequest {
-            speed_m_s: 69.1,
+            speed_mps: 69.1,
             flight_path_angle_rad: -20f64.to_radians(),
         },
     )
@@ -124,7 +124,7 @@ fn unreachable_trims_name_the_limit() {
     let climb = trim(
         &aircraft,
         &TrimRequest {
-            speed_m_s: 150.0,
+            speed_mps: 150.0,
             flight_path_angle_rad: 25f64.to_radians(),
         },
     )
@@ -142,7 +142,7 @@ fn unreachable_trims_name_the_limit() {
     assert!(climb.to_string().contains("thrust"));
     // Invalid requests name the field.
     let nan = trim(&aircraft, &level(f64::NAN)).unwrap_err();
-    assert!(nan.to_string().contains("speed_m_s"), "{nan}");
+    assert!(nan.to_string().contains("speed_mps"), "{nan}");
 }
 
 #[test]

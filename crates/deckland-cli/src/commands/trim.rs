@@ -16,7 +16,7 @@ pub struct TrimArgs {
         default_value_t = 69.1,
         allow_negative_numbers = true
     )]
-    pub speed_m_s: f64,
+    pub speed_mps: f64,
     /// Flight-path angle (deg), positive climbing; a 3.5° glide slope is -3.5.
     #[arg(
         long = "gamma",
@@ -46,13 +46,13 @@ impl TrimArgs {
     /// Trims the aircraft as requested.
     pub fn trim(&self, aircraft: &Aircraft) -> Result<TrimPoint> {
         let request = TrimRequest {
-            speed_m_s: self.speed_m_s,
+            speed_mps: self.speed_mps,
             flight_path_angle_rad: self.gamma_deg.to_radians(),
         };
         trim(aircraft, &request).with_context(|| {
             format!(
                 "cannot trim the {} configuration at {} m/s and γ = {}°",
-                self.configuration, self.speed_m_s, self.gamma_deg
+                self.configuration, self.speed_mps, self.gamma_deg
             )
         })
     }
@@ -78,7 +78,7 @@ impl TrimReport {
     pub fn new(configuration: ConfigurationName, point: &TrimPoint) -> Self {
         Self {
             configuration: configuration.to_string(),
-            speed_mps: point.speed_m_s,
+            speed_mps: point.speed_mps,
             gamma_deg: point.flight_path_angle_rad.to_degrees(),
             alpha_deg: point.alpha_rad.to_degrees(),
             theta_deg: point.theta_rad.to_degrees(),
@@ -95,7 +95,7 @@ impl TrimReport {
 pub fn print_trim_table(configuration: ConfigurationName, point: &TrimPoint, max_thrust_n: f64) {
     println!(
         "Trim — {configuration} configuration, V_T = {:.2} m/s, γ = {:.2}°",
-        point.speed_m_s,
+        point.speed_mps,
         point.flight_path_angle_rad.to_degrees()
     );
     println!(
@@ -117,7 +117,7 @@ pub fn print_trim_table(configuration: ConfigurationName, point: &TrimPoint, max
     let r = &point.residuals;
     println!(
         "  residuals           V̇ {:.1e} m/s², α̇ {:.1e} rad/s, q̇ {:.1e} rad/s²  ({} Newton iterations)",
-        r.airspeed_rate_m_s2, r.alpha_rate_rad_s, r.pitch_acceleration_rad_s2, point.iterations
+        r.airspeed_rate_mps2, r.alpha_rate_radps, r.pitch_acceleration_radps2, point.iterations
     );
 }
 

@@ -28,7 +28,7 @@ pub struct ElevatorActuatorParameters {
     /// Highest deflection (deg, trailing edge down); +10° (paper §2.2.1.2).
     pub max_deflection_deg: f64,
     /// Optional rate limit (deg/s); `None` (off) by default, as in the paper.
-    pub rate_limit_deg_s: Option<f64>,
+    pub rate_limit_degps: Option<f64>,
 }
 
 impl Default for ElevatorActuatorParameters {
@@ -38,7 +38,7 @@ impl Default for ElevatorActuatorParameters {
             damping_ratio: 0.509,
             min_deflection_deg: -25.0,
             max_deflection_deg: 10.0,
-            rate_limit_deg_s: None,
+            rate_limit_degps: None,
         }
     }
 }
@@ -62,8 +62,8 @@ impl ElevatorActuatorParameters {
                 expected: "a finite positive angle (trailing edge down)",
             });
         }
-        if let Some(rate) = self.rate_limit_deg_s {
-            require_positive("rate_limit_deg_s", rate)?;
+        if let Some(rate) = self.rate_limit_degps {
+            require_positive("rate_limit_degps", rate)?;
         }
         Ok(())
     }
@@ -88,7 +88,7 @@ pub struct ElevatorActuator {
     two_zeta_omega: f64,
     min_rad: f64,
     max_rad: f64,
-    rate_limit_rad_s: f64,
+    rate_limit_radps: f64,
 }
 
 impl ElevatorActuator {
@@ -102,8 +102,8 @@ impl ElevatorActuator {
             two_zeta_omega: 2.0 * parameters.damping_ratio * omega,
             min_rad: parameters.min_deflection_deg.to_radians(),
             max_rad: parameters.max_deflection_deg.to_radians(),
-            rate_limit_rad_s: parameters
-                .rate_limit_deg_s
+            rate_limit_radps: parameters
+                .rate_limit_degps
                 .map_or(f64::INFINITY, f64::to_radians),
         })
     }
@@ -140,13 +140,13 @@ impl ElevatorActuator {
 
     /// Derivatives (δ̇, δ̈) of position (rad) and rate (rad/s) for a command (rad).
     #[inline]
-    pub fn derivative(&self, position_rad: f64, rate_rad_s: f64, command_rad: f64) -> (f64, f64) {
+    pub fn derivative(&self, position_rad: f64, rate_radps: f64, command_rad: f64) -> (f64, f64) {
         let command = command_rad.clamp(self.min_rad, self.max_rad);
         let mut acceleration =
-            self.omega_squared * (command - position_rad) - self.two_zeta_omega * rate_rad_s;
-        let mut velocity = rate_rad_s.clamp(-self.rate_limit_rad_s, self.rate_limit_rad_s);
-        if (velocity >= self.rate_limit_rad_s && acceleration > 0.0)
-            || (velocity <= -self.rate_limit_rad_s && acceleration < 0.0)
+            self.omega_squared * (command - position_rad) - self.two_zeta_omega * rate_radps;
+        let mut velocity = rate_radps.clamp(-self.rate_limit_radps, self.rate_limit_radps);
+        if (velocity >= self.rate_limit_radps && acceleration > 0.0)
+            || (velocity <= -self.rate_limit_radps && acceleration < 0.0)
         {
             acceleration = 0.0;
         }
@@ -163,14 +163,14 @@ impl ElevatorActuator {
     /// Clamps a position (rad) and rate (rad/s) after a step: a position beyond a limit is
     /// put back on it and its outward rate removed; the rate is held within its limit.
     #[inline]
-    pub fn constrain(&self, position_rad: &mut f64, rate_rad_s: &mut f64) {
-        *rate_rad_s = rate_rad_s.clamp(-self.rate_limit_rad_s, self.rate_limit_rad_s);
+    pub fn constrain(&self, position_rad: &mut f64, rate_radps: &mut f64) {
+        *rate_radps = rate_radps.clamp(-self.rate_limit_radps, self.rate_limit_radps);
         if *position_rad > self.max_rad {
             *position_rad = self.max_rad;
-            *rate_rad_s = rate_rad_s.min(0.0);
+            *rate_radps = rate_radps.min(0.0);
         } else if *position_rad < self.min_rad {
             *position_rad = self.min_rad;
-            *rate_rad_s = rate_rad_s.max(0.0);
+            *rate_radps = rate_radps.max(0.0);
         }
     }
 }
@@ -268,7 +268,7 @@ mod tests {
     #[test]
     fn rate_limit_bounds_the_slew() {
         let actuator = ElevatorActuator::new(ElevatorActuatorParameters {
-            rate_limit_deg_s: Some(40.0),
+            rate_limit_degps: Some(40.0),
             ..Default::default()
         })
         .unwrap();

@@ -23,14 +23,14 @@ use super::parameters::AircraftParameters;
 use super::state::AircraftState;
 use crate::integration::OdeSystem;
 
-/// Velocity of the air mass in earth axes (m/s): `x_m_s` positive forward (a headwind is
-/// negative), `z_m_s` positive down.
+/// Velocity of the air mass in earth axes (m/s): `x_mps` positive forward (a headwind is
+/// negative), `z_mps` positive down.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Wind {
     /// Horizontal component, positive in the direction of flight (m/s).
-    pub x_m_s: f64,
+    pub x_mps: f64,
     /// Vertical component, positive down (m/s).
-    pub z_m_s: f64,
+    pub z_mps: f64,
 }
 
 /// Commands to the plant's actuators.
@@ -56,7 +56,7 @@ pub struct AirframeInputs {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct AirData {
     /// True airspeed V_T (m/s).
-    pub airspeed_m_s: f64,
+    pub airspeed_mps: f64,
     /// Angle of attack α (rad).
     pub alpha_rad: f64,
     /// Dynamic pressure q̄ = ½ρV_T² (Pa).
@@ -141,13 +141,13 @@ impl Aircraft {
     #[inline]
     pub fn air_data(&self, u: f64, w: f64, theta: f64, wind: &Wind) -> AirData {
         let (sin_t, cos_t) = theta.sin_cos();
-        let wind_xb = wind.x_m_s * cos_t - wind.z_m_s * sin_t;
-        let wind_zb = wind.x_m_s * sin_t + wind.z_m_s * cos_t;
+        let wind_xb = wind.x_mps * cos_t - wind.z_mps * sin_t;
+        let wind_zb = wind.x_mps * sin_t + wind.z_mps * cos_t;
         let ua = u - wind_xb;
         let wa = w - wind_zb;
         let airspeed = (ua * ua + wa * wa).sqrt();
         AirData {
-            airspeed_m_s: airspeed,
+            airspeed_mps: airspeed,
             alpha_rad: wa.atan2(ua),
             dynamic_pressure_pa: 0.5 * self.parameters.air_density_kg_m3 * airspeed * airspeed,
         }
@@ -156,7 +156,7 @@ impl Aircraft {
     /// Air data of a state.
     #[inline]
     pub fn state_air_data(&self, state: &AircraftState, wind: &Wind) -> AirData {
-        self.air_data(state.u_m_s, state.w_m_s, state.theta_rad, wind)
+        self.air_data(state.u_mps, state.w_mps, state.theta_rad, wind)
     }
 
     #[inline]
@@ -171,7 +171,7 @@ impl Aircraft {
     ) -> BodyAccelerations {
         let p = &self.parameters;
         let air = self.air_data(u, w, theta, wind);
-        let q_hat = q * p.mean_chord_m / (2.0 * air.airspeed_m_s);
+        let q_hat = q * p.mean_chord_m / (2.0 * air.airspeed_mps);
         let c = aerodynamic_coefficients(
             air.alpha_rad,
             inputs.elevator_rad,
@@ -186,8 +186,8 @@ impl Aircraft {
         let force_x = lift * sin_a - drag * cos_a + inputs.thrust_n;
         let force_z = -lift * cos_a - drag * sin_a;
         BodyAccelerations {
-            u_dot: force_x / p.mass_kg - p.gravity_m_s2 * sin_t - q * w,
-            w_dot: force_z / p.mass_kg + p.gravity_m_s2 * cos_t + q * u,
+            u_dot: force_x / p.mass_kg - p.gravity_mps2 * sin_t - q * w,
+            w_dot: force_z / p.mass_kg + p.gravity_mps2 * cos_t + q * u,
             q_dot: qs * p.mean_chord_m * c.moment / p.pitch_inertia_kg_m2,
         }
     }
@@ -221,24 +221,24 @@ impl Aircraft {
             thrust_n: state.total_thrust_n(),
         };
         let body = self.body_accelerations(
-            state.u_m_s,
-            state.w_m_s,
-            state.q_rad_s,
+            state.u_mps,
+            state.w_mps,
+            state.q_radps,
             state.theta_rad,
             &inputs,
             wind,
         );
-        let (x_dot, h_dot) = state.earth_velocity_m_s();
+        let (x_dot, h_dot) = state.earth_velocity_mps();
         let (elevator_rate, elevator_acceleration) = self.actuator.derivative(
             state.elevator_rad,
-            state.elevator_rate_rad_s,
+            state.elevator_rate_radps,
             commands.elevator_rad,
         );
         AircraftState {
-            u_m_s: body.u_dot,
-            w_m_s: body.w_dot,
-            q_rad_s: body.q_dot,
-            theta_rad: state.q_rad_s,
+            u_mps: body.u_dot,
+            w_mps: body.w_dot,
+            q_radps: body.q_dot,
+            theta_rad: state.q_radps,
             x_m: x_dot,
             h_m: h_dot,
             engine_thrust_n: [
@@ -248,7 +248,7 @@ impl Aircraft {
                     .thrust_rate(state.engine_thrust_n[1], commands.thrust_n),
             ],
             elevator_rad: elevator_rate,
-            elevator_rate_rad_s: elevator_acceleration,
+            elevator_rate_radps: elevator_acceleration,
         }
     }
 
@@ -256,7 +256,7 @@ impl Aircraft {
     #[inline]
     pub fn constrain(&self, state: &mut AircraftState) {
         self.actuator
-            .constrain(&mut state.elevator_rad, &mut state.elevator_rate_rad_s);
+            .constrain(&mut state.elevator_rad, &mut state.elevator_rate_radps);
     }
 }
 
@@ -313,7 +313,7 @@ mod tests {
         let (lift, drag) = (qbar_s * c.lift, qbar_s * c.drag);
         let gamma = theta - alpha;
         let m = p.mass_kg;
-        let g = p.gravity_m_s2;
+        let g = p.gravity_mps2;
         let v_dot = (t * alpha.cos() - drag) / m - g * gamma.sin();
         let alpha_dot = q - (t * alpha.sin() + lift) / (m * v) + g * gamma.cos() / v;
         let q_dot = qbar_s * p.mean_chord_m * c.moment / p.pitch_inertia_kg_m2;
@@ -366,11 +366,11 @@ mod tests {
         );
         // The same air-relative velocity, carried by a 12 m/s headwind and 3 m/s updraft.
         let wind = Wind {
-            x_m_s: -12.0,
-            z_m_s: -3.0,
+            x_mps: -12.0,
+            z_mps: -3.0,
         };
-        let wind_xb = wind.x_m_s * theta.cos() - wind.z_m_s * theta.sin();
-        let wind_zb = wind.x_m_s * theta.sin() + wind.z_m_s * theta.cos();
+        let wind_xb = wind.x_mps * theta.cos() - wind.z_mps * theta.sin();
+        let wind_zb = wind.x_mps * theta.sin() + wind.z_mps * theta.cos();
         let windy = aircraft.airframe_accelerations(
             v * alpha.cos() + wind_xb,
             v * alpha.sin() + wind_zb,
@@ -388,7 +388,7 @@ mod tests {
     fn engines_lag_towards_half_the_total_command_each() {
         let aircraft = Aircraft::default();
         let state = AircraftState {
-            u_m_s: 69.0,
+            u_mps: 69.0,
             engine_thrust_n: [10_000.0, 10_000.0],
             ..Default::default()
         };

@@ -44,8 +44,8 @@ impl HookGeometry {
     #[inline]
     pub fn velocity(&self, state: &AircraftState) -> (f64, f64) {
         let (sin_t, cos_t) = state.theta_rad.sin_cos();
-        let (x_dot, h_dot) = state.earth_velocity_m_s();
-        let q = state.q_rad_s;
+        let (x_dot, h_dot) = state.earth_velocity_mps();
+        let q = state.q_radps;
         (
             x_dot + q * (self.aft_of_cg_m * sin_t + self.below_cg_m * cos_t),
             h_dot + q * (-self.aft_of_cg_m * cos_t + self.below_cg_m * sin_t),
@@ -87,16 +87,16 @@ mod tests {
     fn velocity_is_the_derivative_of_position() {
         let hook = HookGeometry::default();
         let state = AircraftState {
-            u_m_s: 70.0,
-            w_m_s: 5.0,
-            q_rad_s: 0.2,
+            u_mps: 70.0,
+            w_mps: 5.0,
+            q_radps: 0.2,
             theta_rad: 0.1,
             ..Default::default()
         };
-        let (x_dot, h_dot) = state.earth_velocity_m_s();
+        let (x_dot, h_dot) = state.earth_velocity_mps();
         let dt = 1e-6;
         let later = AircraftState {
-            theta_rad: state.theta_rad + state.q_rad_s * dt,
+            theta_rad: state.theta_rad + state.q_radps * dt,
             x_m: x_dot * dt,
             h_m: h_dot * dt,
             ..state

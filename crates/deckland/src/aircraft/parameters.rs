@@ -15,7 +15,7 @@ pub struct AircraftParameters {
     /// Air density ρ (kg/m³), constant at low altitude; 1.33 kg/m³ (Table 2).
     pub air_density_kg_m3: f64,
     /// Gravitational acceleration g (m/s²); 9.75 m/s² (Table 2).
-    pub gravity_m_s2: f64,
+    pub gravity_mps2: f64,
     /// Wing reference area S (m²); 37.16 m² (Table 2).
     pub wing_area_m2: f64,
     /// Mean aerodynamic chord c̄ (m); 3.51 m (Table 2).
@@ -29,7 +29,7 @@ impl Default for AircraftParameters {
         Self {
             mass_kg: 15_000.0,
             air_density_kg_m3: 1.33,
-            gravity_m_s2: 9.75,
+            gravity_mps2: 9.75,
             wing_area_m2: 37.16,
             mean_chord_m: 3.51,
             pitch_inertia_kg_m2: 205_000.0,
@@ -42,7 +42,7 @@ impl AircraftParameters {
     pub fn validate(&self) -> Result<(), AircraftError> {
         require_positive("mass_kg", self.mass_kg)?;
         require_positive("air_density_kg_m3", self.air_density_kg_m3)?;
-        require_positive("gravity_m_s2", self.gravity_m_s2)?;
+        require_positive("gravity_mps2", self.gravity_mps2)?;
         require_positive("wing_area_m2", self.wing_area_m2)?;
         require_positive("mean_chord_m", self.mean_chord_m)?;
         require_positive("pitch_inertia_kg_m2", self.pitch_inertia_kg_m2)

@@ -7,11 +7,11 @@
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct AircraftState {
     /// Inertial velocity along body x, u (m/s).
-    pub u_m_s: f64,
+    pub u_mps: f64,
     /// Inertial velocity along body z (down), w (m/s).
-    pub w_m_s: f64,
+    pub w_mps: f64,
     /// Pitch rate q (rad/s), positive nose-up.
-    pub q_rad_s: f64,
+    pub q_radps: f64,
     /// Pitch angle θ (rad), positive nose-up.
     pub theta_rad: f64,
     /// Earth x position (m), positive in the direction of flight.
@@ -23,7 +23,7 @@ pub struct AircraftState {
     /// Elevator actuator position δe (rad), positive trailing edge down.
     pub elevator_rad: f64,
     /// Elevator actuator rate δ̇e (rad/s).
-    pub elevator_rate_rad_s: f64,
+    pub elevator_rate_radps: f64,
 }
 
 impl AircraftState {
@@ -34,16 +34,16 @@ impl AircraftState {
     #[inline]
     pub fn to_array(&self) -> [f64; Self::DIMENSION] {
         [
-            self.u_m_s,
-            self.w_m_s,
-            self.q_rad_s,
+            self.u_mps,
+            self.w_mps,
+            self.q_radps,
             self.theta_rad,
             self.x_m,
             self.h_m,
             self.engine_thrust_n[0],
             self.engine_thrust_n[1],
             self.elevator_rad,
-            self.elevator_rate_rad_s,
+            self.elevator_rate_radps,
         ]
     }
 
@@ -51,15 +51,15 @@ impl AircraftState {
     #[inline]
     pub fn from_array(x: &[f64; Self::DIMENSION]) -> Self {
         Self {
-            u_m_s: x[0],
-            w_m_s: x[1],
-            q_rad_s: x[2],
+            u_mps: x[0],
+            w_mps: x[1],
+            q_radps: x[2],
             theta_rad: x[3],
             x_m: x[4],
             h_m: x[5],
             engine_thrust_n: [x[6], x[7]],
             elevator_rad: x[8],
-            elevator_rate_rad_s: x[9],
+            elevator_rate_radps: x[9],
         }
     }
 
@@ -71,18 +71,18 @@ impl AircraftState {
 
     /// Earth-axis inertial velocity (ẋ, ḣ) in m/s.
     #[inline]
-    pub fn earth_velocity_m_s(&self) -> (f64, f64) {
+    pub fn earth_velocity_mps(&self) -> (f64, f64) {
         let (sin_t, cos_t) = self.theta_rad.sin_cos();
         (
-            self.u_m_s * cos_t + self.w_m_s * sin_t,
-            self.u_m_s * sin_t - self.w_m_s * cos_t,
+            self.u_mps * cos_t + self.w_mps * sin_t,
+            self.u_mps * sin_t - self.w_mps * cos_t,
         )
     }
 
     /// Inertial flight-path angle γ = atan2(ḣ, ẋ) (rad).
     #[inline]
     pub fn flight_path_angle_rad(&self) -> f64 {
-        let (x_dot, h_dot) = self.earth_velocity_m_s();
+        let (x_dot, h_dot) = self.earth_velocity_mps();
         h_dot.atan2(x_dot)
     }
 
@@ -99,15 +99,15 @@ mod tests {
     #[test]
     fn array_round_trip_keeps_every_field() {
         let state = AircraftState {
-            u_m_s: 1.0,
-            w_m_s: 2.0,
-            q_rad_s: 3.0,
+            u_mps: 1.0,
+            w_mps: 2.0,
+            q_radps: 3.0,
             theta_rad: 4.0,
             x_m: 5.0,
             h_m: 6.0,
             engine_thrust_n: [7.0, 8.0],
             elevator_rad: 9.0,
-            elevator_rate_rad_s: 10.0,
+            elevator_rate_radps: 10.0,
         };
         assert_eq!(AircraftState::from_array(&state.to_array()), state);
         assert_eq!(state.to_array(), [1., 2., 3., 4., 5., 6., 7., 8., 9., 10.]);

@@ -71,7 +71,7 @@ fn rates(aircraft: &Aircraft, x: &SVector<f64, 4>, u: &SVector<f64, 2>) -> SVect
 
 /// Linearises `aircraft` about `trim` by central differences.
 pub fn linearize(aircraft: &Aircraft, trim: &TrimPoint) -> LinearModel {
-    let x0 = SVector::<f64, 4>::new(trim.speed_m_s, trim.theta_rad, trim.alpha_rad, 0.0);
+    let x0 = SVector::<f64, 4>::new(trim.speed_mps, trim.theta_rad, trim.alpha_rad, 0.0);
     let u0 = SVector::<f64, 2>::new(trim.elevator_rad, trim.throttle);
     const STATE_STEPS: [f64; 4] = [1e-4, 1e-6, 1e-6, 1e-6];
     const INPUT_STEPS: [f64; 2] = [1e-6, 1e-6];

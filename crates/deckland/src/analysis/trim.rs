@@ -16,7 +16,7 @@ use serde::Serialize;
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TrimRequest {
     /// True airspeed V_T (m/s).
-    pub speed_m_s: f64,
+    pub speed_mps: f64,
     /// Flight-path angle γ (rad), positive climbing.
     pub flight_path_angle_rad: f64,
 }
@@ -25,7 +25,7 @@ impl Default for TrimRequest {
     /// The paper's Table 3: 69.1 m/s, level flight.
     fn default() -> Self {
         Self {
-            speed_m_s: 69.1,
+            speed_mps: 69.1,
             flight_path_angle_rad: 0.0,
         }
     }
@@ -35,20 +35,20 @@ impl Default for TrimRequest {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct TrimResiduals {
     /// Airspeed rate V̇_T (m/s²).
-    pub airspeed_rate_m_s2: f64,
+    pub airspeed_rate_mps2: f64,
     /// Angle-of-attack rate α̇ (rad/s).
-    pub alpha_rate_rad_s: f64,
+    pub alpha_rate_radps: f64,
     /// Pitch acceleration q̇ (rad/s²).
-    pub pitch_acceleration_rad_s2: f64,
+    pub pitch_acceleration_radps2: f64,
 }
 
 impl TrimResiduals {
     /// Largest absolute residual.
     pub fn max_abs(&self) -> f64 {
-        self.airspeed_rate_m_s2
+        self.airspeed_rate_mps2
             .abs()
-            .max(self.alpha_rate_rad_s.abs())
-            .max(self.pitch_acceleration_rad_s2.abs())
+            .max(self.alpha_rate_radps.abs())
+            .max(self.pitch_acceleration_radps2.abs())
     }
 }
 
@@ -56,7 +56,7 @@ impl TrimResiduals {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TrimPoint {
     /// True airspeed V_T (m/s).
-    pub speed_m_s: f64,
+    pub speed_mps: f64,
     /// Flight-path angle γ (rad).
     pub flight_path_angle_rad: f64,
     /// Angle of attack α (rad).
@@ -81,18 +81,18 @@ impl TrimPoint {
     /// that plus the wind; engines and actuator sit at their trim values.
     pub fn state(&self, x_m: f64, h_m: f64, wind: &Wind) -> AircraftState {
         let (sin_t, cos_t) = self.theta_rad.sin_cos();
-        let wind_xb = wind.x_m_s * cos_t - wind.z_m_s * sin_t;
-        let wind_zb = wind.x_m_s * sin_t + wind.z_m_s * cos_t;
+        let wind_xb = wind.x_mps * cos_t - wind.z_mps * sin_t;
+        let wind_zb = wind.x_mps * sin_t + wind.z_mps * cos_t;
         AircraftState {
-            u_m_s: self.speed_m_s * self.alpha_rad.cos() + wind_xb,
-            w_m_s: self.speed_m_s * self.alpha_rad.sin() + wind_zb,
-            q_rad_s: 0.0,
+            u_mps: self.speed_mps * self.alpha_rad.cos() + wind_xb,
+            w_mps: self.speed_mps * self.alpha_rad.sin() + wind_zb,
+            q_radps: 0.0,
             theta_rad: self.theta_rad,
             x_m,
             h_m,
             engine_thrust_n: [0.5 * self.thrust_n; 2],
             elevator_rad: self.elevator_rad,
-            elevator_rate_rad_s: 0.0,
+            elevator_rate_radps: 0.0,
         }
     }
 }
@@ -205,10 +205,10 @@ fn jacobian(aircraft: &Aircraft, v: f64, gamma: f64, unknowns: &Vector3<f64>) ->
 }
 
 fn validate_request(request: &TrimRequest) -> Result<(), TrimError> {
-    let v = request.speed_m_s;
+    let v = request.speed_mps;
     if !(v.is_finite() && (20.0..=250.0).contains(&v)) {
         return Err(TrimError::InvalidRequest {
-            field: "speed_m_s",
+            field: "speed_mps",
             value: v,
             expected: "an airspeed between 20 and 250 m/s",
         });
@@ -227,9 +227,9 @@ fn validate_request(request: &TrimRequest) -> Result<(), TrimError> {
 /// Trims `aircraft` for steady straight flight as `request` asks.
 pub fn trim(aircraft: &Aircraft, request: &TrimRequest) -> Result<TrimPoint, TrimError> {
     validate_request(request)?;
-    let v = request.speed_m_s;
+    let v = request.speed_mps;
     let gamma = request.flight_path_angle_rad;
-    let weight = aircraft.parameters().mass_kg * aircraft.parameters().gravity_m_s2;
+    let weight = aircraft.parameters().mass_kg * aircraft.parameters().gravity_mps2;
     let mut unknowns = Vector3::new(0.1, -0.1, 0.2 * weight);
     let mut r = residual(aircraft, v, gamma, &unknowns);
     let mut iterations = 0;
@@ -264,7 +264,7 @@ pub fn trim(aircraft: &Aircraft, request: &TrimRequest) -> Result<TrimPoint, Tri
         }
     }
     let point = TrimPoint {
-        speed_m_s: v,
+        speed_mps: v,
         flight_path_angle_rad: gamma,
         alpha_rad: unknowns[0],
         theta_rad: unknowns[0] + gamma,
@@ -272,9 +272,9 @@ pub fn trim(aircraft: &Aircraft, request: &TrimRequest) -> Result<TrimPoint, Tri
         thrust_n: unknowns[2],
         throttle: unknowns[2] / aircraft.engines().max_total_thrust_n(),
         residuals: TrimResiduals {
-            airspeed_rate_m_s2: r[0],
-            alpha_rate_rad_s: r[1],
-            pitch_acceleration_rad_s2: r[2],
+            airspeed_rate_mps2: r[0],
+            alpha_rate_radps: r[1],
+            pitch_acceleration_radps2: r[2],
         },
         iterations,
     };
