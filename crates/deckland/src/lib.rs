@@ -30,3 +30,4 @@
 //! ([`analysis`]).
 
 pub mod integration;
+pub mod random;
