@@ -29,5 +29,7 @@
 //! integrator loop → recorder → metrics. Beside it: trim, linearisation and modes
 //! ([`analysis`]).
 
+pub mod environment;
 pub mod integration;
 pub mod random;
+pub mod sensors;
