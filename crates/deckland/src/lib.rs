@@ -32,6 +32,9 @@
 pub mod aircraft;
 pub mod analysis;
 pub mod control;
+pub mod environment;
 pub mod estimation;
 pub mod integration;
 pub mod metrics;
+pub mod random;
+pub mod sensors;

@@ -21,17 +21,8 @@ use super::engine::{EngineParameters, Engines};
 use super::error::AircraftError;
 use super::parameters::AircraftParameters;
 use super::state::AircraftState;
+use crate::environment::Wind;
 use crate::integration::OdeSystem;
-
-/// Velocity of the air mass in earth axes (m/s): `x_mps` positive forward (a headwind is
-/// negative), `z_mps` positive down.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct Wind {
-    /// Horizontal component, positive in the direction of flight (m/s).
-    pub x_mps: f64,
-    /// Vertical component, positive down (m/s).
-    pub z_mps: f64,
-}
 
 /// Commands to the plant's actuators.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]

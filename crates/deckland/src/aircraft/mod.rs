@@ -15,12 +15,13 @@ mod hook;
 mod parameters;
 mod state;
 
+pub use crate::environment::Wind;
 pub use actuator::{ActuatorLimit, ElevatorActuator, ElevatorActuatorParameters};
 pub use aerodynamics::{
     aerodynamic_coefficients, AerodynamicCoefficients, ALPHA_MAX_RAD, ALPHA_MIN_RAD,
 };
 pub use configuration::{AerodynamicConfiguration, ConfigurationName};
-pub use dynamics::{AirData, Aircraft, AircraftCommands, AirframeInputs, OpenLoopAircraft, Wind};
+pub use dynamics::{AirData, Aircraft, AircraftCommands, AirframeInputs, OpenLoopAircraft};
 pub use engine::{EngineParameters, Engines};
 pub use error::AircraftError;
 pub use hook::HookGeometry;

@@ -1,0 +1,62 @@
+//! The aircraft's environment: ship deck motion, deck geometry, wind and carrier air
+//! wake (paper §3.3–3.4; MODEL.md §3).
+//!
+//! Signs at a glance: the ship sails in +x and the aircraft approaches from astern, also
+//! flying +x; heights and heave are positive up; ship pitch is positive bow-up; wind is
+//! the air mass's velocity in earth axes, x positive forward (a headwind is negative) and
+//! z positive down; X, the argument of the wake model, is the distance aft of the ship's
+//! pitch centre (positive aft).
+
+mod deck;
+mod error;
+pub mod lyapunov;
+mod ship;
+mod ship_simulator;
+mod turbulence;
+mod wind;
+
+pub use deck::{DeckGeometry, EarthPoint, EarthVelocity, ShipPose, ShipPoseRate};
+pub use error::{Bounds, EnvironmentError};
+pub use ship::{
+    heave_unit_intensity_variance, pitch_unit_intensity_variance, unit_intensity_state_covariance,
+    ShipMotion, ShipMotionOutputs, ShipMotionParameters, ShipMotionState, ShipNoise,
+    HEAVE_FILTER_GAIN, PITCH_FILTER_GAIN, SHAPING_FILTER_DENOMINATOR,
+};
+pub use ship_simulator::ShipMotionSimulator;
+pub use turbulence::Turbulence;
+pub use wind::{
+    mean_wind, periodic_wake, steady_wake, Wind, WindComponents, WindModel, WindParameters,
+    STEADY_WAKE_EXTENT_M,
+};
+
+use serde::{Deserialize, Serialize};
+
+use crate::sensors::PitchNoiseParameters;
+
+/// Every environment parameter of a scenario (MODEL.md §3; deck geometry §2.7).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct EnvironmentParameters {
+    /// Ship heave and pitch (MODEL.md §3.1).
+    pub ship: ShipMotionParameters,
+    /// Deck geometry (MODEL.md §2.7).
+    pub deck: DeckGeometry,
+    /// Wind and air wake (MODEL.md §3.2).
+    pub wind: WindParameters,
+    /// Pitch-attitude measurement noise (MODEL.md §3.3).
+    pub pitch_noise: PitchNoiseParameters,
+}
+
+impl EnvironmentParameters {
+    /// Checks every field of every part; the error names the first bad field.
+    pub fn validate(&self) -> Result<(), EnvironmentError> {
+        self.ship.validate()?;
+        self.deck.validate()?;
+        self.wind.validate()?;
+        self.pitch_noise.validate()?;
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests;

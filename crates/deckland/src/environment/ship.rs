@@ -1,0 +1,311 @@
+//! Ship heave and pitch (paper §3.3, Eq. 15–16; MODEL.md §3.1).
+//!
+//! Heave and pitch are the outputs of the shaping filters G_H(s) = 1.21/D(s) and
+//! G_θ(s) = 0.773·s²/D(s), D(s) = s⁴ + 2.08s³ + 1.32s² + 0.4s + 0.16
+//! = (s + 1)²(s² + 0.08s + 0.16), each driven by its own white noise. Each filter is
+//! realised in controllable canonical form: with the filter state z = (z₁, z₂, z₃, z₄),
+//! ż₁ = z₂, ż₂ = z₃, ż₃ = z₄, ż₄ = −0.16z₁ − 0.4z₂ − 1.32z₃ − 2.08z₄ + u, so z₁ = u/D(s)
+//! and zₖ = z₁^(k−1). Then heave = 1.21z₁, heave rate = 1.21z₂, pitch = 0.773z₃ and pitch
+//! rate = 0.773z₄ exactly, with no direct feed-through of the noise.
+//!
+//! The paper's noise powers are ambiguous (MODEL.md §3.1), so the configured output RMS
+//! sets the noise intensity q through the filter's stationary variance for unit
+//! intensity, σ²₁ (Lyapunov equation): q = RMS²/σ²₁. Heave is positive up; pitch θ_s is
+//! positive bow-up.
+
+use nalgebra::DMatrix;
+use serde::{Deserialize, Serialize};
+
+use super::deck::{ShipPose, ShipPoseRate};
+use super::error::{Bounds, EnvironmentError};
+use super::lyapunov::stationary_covariance;
+use crate::random::NoiseStream;
+
+/// Coefficients (d₀, d₁, d₂, d₃) of D(s) = s⁴ + d₃s³ + d₂s² + d₁s + d₀ (paper Eq. 15–16).
+pub const SHAPING_FILTER_DENOMINATOR: [f64; 4] = [0.16, 0.4, 1.32, 2.08];
+/// Numerator gain of the heave filter G_H(s) = 1.21/D(s) (paper Eq. 15), m per filter unit.
+pub const HEAVE_FILTER_GAIN: f64 = 1.21;
+/// Numerator gain of the pitch filter G_θ(s) = 0.773·s²/D(s) (paper Eq. 16), rad per unit.
+pub const PITCH_FILTER_GAIN: f64 = 0.773;
+
+/// Configuration of the ship motion (MODEL.md §3.1).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct ShipMotionParameters {
+    /// Whether the deck heaves and pitches at all; when false the ship is steady.
+    pub enabled: bool,
+    /// Stationary RMS of heave (m); MODEL.md §3.1 default 2.0.
+    pub heave_rms_m: f64,
+    /// Stationary RMS of pitch θ_s (deg); MODEL.md §3.1 default 1.5.
+    pub pitch_rms_deg: f64,
+    /// Ship forward speed along +x (m/s); MODEL.md §3.1 default 0 (paper).
+    pub forward_speed_mps: f64,
+}
+
+impl Default for ShipMotionParameters {
+    fn default() -> Self {
+        Self {
+            enabled: true,
+            heave_rms_m: 2.0,
+            pitch_rms_deg: 1.5,
+            forward_speed_mps: 0.0,
+        }
+    }
+}
+
+impl ShipMotionParameters {
+    /// Checks every field: RMS values in [0, 50] m and [0, 30]°, speed in [0, 30] m/s.
+    pub fn validate(&self) -> Result<(), EnvironmentError> {
+        Bounds::closed(0.0, 50.0).check("ship.heave_rms_m", self.heave_rms_m)?;
+        Bounds::closed(0.0, 30.0).check("ship.pitch_rms_deg", self.pitch_rms_deg)?;
+        Bounds::closed(0.0, 30.0).check("ship.forward_speed_mps", self.forward_speed_mps)?;
+        Ok(())
+    }
+}
+
+/// State of both shaping filters, each in controllable canonical form (module docs).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ShipMotionState {
+    /// Heave filter state z = (z₁, ż₁, z̈₁, z⃛₁), z₁ = u_H/D(s).
+    pub heave_filter: [f64; 4],
+    /// Pitch filter state z = (z₁, ż₁, z̈₁, z⃛₁), z₁ = u_θ/D(s).
+    pub pitch_filter: [f64; 4],
+}
+
+impl ShipMotionState {
+    /// Number of scalar states.
+    pub const DIMENSION: usize = 8;
+
+    /// The state as an array for the integrator: heave filter first, then pitch filter.
+    pub fn to_array(&self) -> [f64; 8] {
+        let mut array = [0.0; 8];
+        array[..4].copy_from_slice(&self.heave_filter);
+        array[4..].copy_from_slice(&self.pitch_filter);
+        array
+    }
+
+    /// The inverse of [`ShipMotionState::to_array`].
+    pub fn from_array(array: &[f64; 8]) -> Self {
+        let mut state = Self::default();
+        state.heave_filter.copy_from_slice(&array[..4]);
+        state.pitch_filter.copy_from_slice(&array[4..]);
+        state
+    }
+}
+
+/// White-noise inputs u_H, u_θ of the two filters, held constant over one step
+/// (filter input units; already scaled by √(q/dt)).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ShipNoise {
+    /// Input of the heave filter.
+    pub heave: f64,
+    /// Input of the pitch filter.
+    pub pitch: f64,
+}
+
+/// Heave and pitch of the ship read from a [`ShipMotionState`] (paper Eq. 15–16).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ShipMotionOutputs {
+    /// Heave of the pitch centre z_G (m, positive up, zero mean).
+    pub heave_m: f64,
+    /// Heave rate ż_G (m/s, positive up).
+    pub heave_rate_mps: f64,
+    /// Pitch θ_s (rad, positive bow-up, zero mean).
+    pub pitch_rad: f64,
+    /// Pitch rate θ̇_s (rad/s).
+    pub pitch_rate_radps: f64,
+}
+
+/// The ship motion model: the two shaping filters with noise intensities derived from
+/// the configured RMS (MODEL.md §3.1).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShipMotion {
+    parameters: ShipMotionParameters,
+    heave_intensity: f64,
+    pitch_intensity: f64,
+    /// Lower Cholesky factor L of the filter's unit-intensity stationary covariance P.
+    covariance_factor: [[f64; 4]; 4],
+}
+
+/// The companion matrix A and input B of one filter in controllable canonical form.
+fn canonical_form() -> (DMatrix<f64>, DMatrix<f64>) {
+    let [d0, d1, d2, d3] = SHAPING_FILTER_DENOMINATOR;
+    #[rustfmt::skip]
+    let a = DMatrix::from_row_slice(4, 4, &[
+        0.0, 1.0, 0.0, 0.0,
+        0.0, 0.0, 1.0, 0.0,
+        0.0, 0.0, 0.0, 1.0,
+        -d0, -d1, -d2, -d3,
+    ]);
+    let b = DMatrix::from_row_slice(4, 1, &[0.0, 0.0, 0.0, 1.0]);
+    (a, b)
+}
+
+/// The stationary covariance P of one canonical filter state for unit-intensity white
+/// noise, A P + P Aᵀ + B Bᵀ = 0 (MODEL.md §3.1).
+pub fn unit_intensity_state_covariance() -> Result<[[f64; 4]; 4], EnvironmentError> {
+    let (a, b) = canonical_form();
+    let p = stationary_covariance(&a, &b).ok_or(EnvironmentError::NoStationaryCovariance {
+        filter: "ship motion",
+    })?;
+    let mut out = [[0.0; 4]; 4];
+    for (i, row) in out.iter_mut().enumerate() {
+        for (j, value) in row.iter_mut().enumerate() {
+            *value = p[(i, j)];
+        }
+    }
+    Ok(out)
+}
+
+/// Stationary variance of heave for unit-intensity noise, 1.21²·P₁₁ (m²); MODEL.md §3.1
+/// gives 43.62.
+pub fn heave_unit_intensity_variance() -> Result<f64, EnvironmentError> {
+    Ok(HEAVE_FILTER_GAIN.powi(2) * unit_intensity_state_covariance()?[0][0])
+}
+
+/// Stationary variance of pitch for unit-intensity noise, 0.773²·P₃₃ (rad²); MODEL.md
+/// §3.1 gives 0.4858.
+pub fn pitch_unit_intensity_variance() -> Result<f64, EnvironmentError> {
+    Ok(PITCH_FILTER_GAIN.powi(2) * unit_intensity_state_covariance()?[2][2])
+}
+
+impl ShipMotion {
+    /// The model for these parameters; validates them and solves for the intensities.
+    pub fn new(parameters: ShipMotionParameters) -> Result<Self, EnvironmentError> {
+        parameters.validate()?;
+        let p = unit_intensity_state_covariance()?;
+        let heave_variance = HEAVE_FILTER_GAIN.powi(2) * p[0][0];
+        let pitch_variance = PITCH_FILTER_GAIN.powi(2) * p[2][2];
+        let matrix = DMatrix::from_fn(4, 4, |i, j| p[i][j]);
+        let cholesky = matrix
+            .cholesky()
+            .ok_or(EnvironmentError::NoStationaryCovariance {
+                filter: "ship motion",
+            })?;
+        let l = cholesky.l();
+        let covariance_factor = std::array::from_fn(|i| std::array::from_fn(|j| l[(i, j)]));
+        Ok(Self {
+            parameters,
+            heave_intensity: parameters.heave_rms_m.powi(2) / heave_variance,
+            pitch_intensity: parameters.pitch_rms_deg.to_radians().powi(2) / pitch_variance,
+            covariance_factor,
+        })
+    }
+
+    /// The parameters the model was built from.
+    pub fn parameters(&self) -> &ShipMotionParameters {
+        &self.parameters
+    }
+
+    /// Intensity q_H of the heave filter's white noise (filter units² · s).
+    pub fn heave_noise_intensity(&self) -> f64 {
+        self.heave_intensity
+    }
+
+    /// Intensity q_θ of the pitch filter's white noise (filter units² · s).
+    pub fn pitch_noise_intensity(&self) -> f64 {
+        self.pitch_intensity
+    }
+
+    /// Time derivative of the filter states under held noise inputs (paper Eq. 15–16).
+    pub fn derivative(&self, state: &ShipMotionState, noise: ShipNoise) -> ShipMotionState {
+        let filter = |z: &[f64; 4], u: f64| {
+            let [d0, d1, d2, d3] = SHAPING_FILTER_DENOMINATOR;
+            [
+                z[1],
+                z[2],
+                z[3],
+                u - d0 * z[0] - d1 * z[1] - d2 * z[2] - d3 * z[3],
+            ]
+        };
+        ShipMotionState {
+            heave_filter: filter(&state.heave_filter, noise.heave),
+            pitch_filter: filter(&state.pitch_filter, noise.pitch),
+        }
+    }
+
+    /// Draws the noise inputs for one step of `dt` seconds (dt > 0): n·√(q/dt), n ~ N(0, 1)
+    /// from each filter's own stream, so that the held sample has the white noise's
+    /// intensity. Draws nothing and returns zero when the ship motion is disabled.
+    pub fn draw_noise(
+        &self,
+        heave_stream: &mut NoiseStream,
+        pitch_stream: &mut NoiseStream,
+        dt: f64,
+    ) -> ShipNoise {
+        debug_assert!(dt > 0.0, "time step must be positive, got {dt}");
+        if !self.parameters.enabled {
+            return ShipNoise::default();
+        }
+        ShipNoise {
+            heave: heave_stream.standard_normal() * (self.heave_intensity / dt).sqrt(),
+            pitch: pitch_stream.standard_normal() * (self.pitch_intensity / dt).sqrt(),
+        }
+    }
+
+    /// A state drawn from the filters' stationary distribution, z = √q·L·n with P = L Lᵀ
+    /// and n ~ N(0, I₄), four samples from each filter's stream (MODEL.md §3.1). Zero,
+    /// with nothing drawn, when the ship motion is disabled.
+    pub fn stationary_initial_state(
+        &self,
+        heave_stream: &mut NoiseStream,
+        pitch_stream: &mut NoiseStream,
+    ) -> ShipMotionState {
+        if !self.parameters.enabled {
+            return ShipMotionState::default();
+        }
+        let draw = |stream: &mut NoiseStream, intensity: f64| {
+            let n: [f64; 4] = std::array::from_fn(|_| stream.standard_normal());
+            let scale = intensity.sqrt();
+            std::array::from_fn(|i| {
+                scale
+                    * (0..=i)
+                        .map(|j| self.covariance_factor[i][j] * n[j])
+                        .sum::<f64>()
+            })
+        };
+        ShipMotionState {
+            heave_filter: draw(heave_stream, self.heave_intensity),
+            pitch_filter: draw(pitch_stream, self.pitch_intensity),
+        }
+    }
+
+    /// Heave, pitch and their rates in `state` (zero when the ship motion is disabled).
+    pub fn outputs(&self, state: &ShipMotionState) -> ShipMotionOutputs {
+        if !self.parameters.enabled {
+            return ShipMotionOutputs::default();
+        }
+        ShipMotionOutputs {
+            heave_m: HEAVE_FILTER_GAIN * state.heave_filter[0],
+            heave_rate_mps: HEAVE_FILTER_GAIN * state.heave_filter[1],
+            pitch_rad: PITCH_FILTER_GAIN * state.pitch_filter[2],
+            pitch_rate_radps: PITCH_FILTER_GAIN * state.pitch_filter[3],
+        }
+    }
+
+    /// The ship's pose at time `time_s` (s) in `state`, its pitch centre having been at
+    /// earth x = `initial_pitch_centre_x_m` (m) at t = 0: x_G = x_G0 + V_ship·t.
+    pub fn pose(
+        &self,
+        state: &ShipMotionState,
+        initial_pitch_centre_x_m: f64,
+        time_s: f64,
+    ) -> ShipPose {
+        let outputs = self.outputs(state);
+        ShipPose {
+            pitch_centre_x_m: initial_pitch_centre_x_m + self.parameters.forward_speed_mps * time_s,
+            heave_m: outputs.heave_m,
+            pitch_rad: outputs.pitch_rad,
+        }
+    }
+
+    /// Rates of [`ShipMotion::pose`]: ship speed, heave rate and pitch rate.
+    pub fn pose_rate(&self, state: &ShipMotionState) -> ShipPoseRate {
+        let outputs = self.outputs(state);
+        ShipPoseRate {
+            pitch_centre_x_rate_mps: self.parameters.forward_speed_mps,
+            heave_rate_mps: outputs.heave_rate_mps,
+            pitch_rate_radps: outputs.pitch_rate_radps,
+        }
+    }
+}

@@ -1,0 +1,237 @@
+//! Wind and carrier air wake (paper §3.4, Eq. 19–25, after MIL-F-8785C §3.7.5;
+//! MODEL.md §3.2).
+//!
+//! Total wind = mean + free-air turbulence + steady wake + periodic wake; the random wake
+//! component is omitted, as in the paper. Signs, in earth axes: `x_mps` positive forward
+//! (+x, the direction of flight and of the ship's travel), so a headwind is negative;
+//! `z_mps` positive **down**. The wake's u components are positive forward and its w
+//! components positive down (MODEL.md §3.2). X is the distance of the aircraft aft of the
+//! ship's pitch centre along the approach path (m, positive aft); see
+//! [`super::ShipPose::distance_aft_of_pitch_centre_m`].
+
+use std::ops::Add;
+
+use serde::{Deserialize, Serialize};
+
+use super::error::{Bounds, EnvironmentError};
+use super::turbulence::Turbulence;
+use crate::random::RandomStreams;
+
+/// Distance aft of the pitch centre beyond which the steady wake vanishes (m); paper
+/// Eq. 21–22 (3000 ft).
+pub const STEADY_WAKE_EXTENT_M: f64 = 914.0;
+
+/// A wind velocity in earth axes (m/s): x positive forward (headwind negative), z
+/// positive down (MODEL.md §1).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Wind {
+    /// W_x (m/s, positive forward; a headwind is negative).
+    pub x_mps: f64,
+    /// W_z (m/s, positive down).
+    pub z_mps: f64,
+}
+
+impl Add for Wind {
+    type Output = Wind;
+    fn add(self, other: Wind) -> Wind {
+        Wind {
+            x_mps: self.x_mps + other.x_mps,
+            z_mps: self.z_mps + other.z_mps,
+        }
+    }
+}
+
+/// The wind's components at one time and place (paper §3.4), each zero when switched off.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct WindComponents {
+    /// Mean wind: a headwind of (wind over deck − ship speed), W_x = −(V_wd − V_ship).
+    pub mean: Wind,
+    /// Free-air turbulence (u1, w1), paper Eq. 19–20.
+    pub turbulence: Wind,
+    /// Steady wake (u2, w2), paper Eq. 21–22.
+    pub steady_wake: Wind,
+    /// Periodic wake (u3, w3), paper Eq. 23–25.
+    pub periodic_wake: Wind,
+}
+
+impl WindComponents {
+    /// The total wind, the sum of the components.
+    pub fn total(&self) -> Wind {
+        self.mean + self.turbulence + self.steady_wake + self.periodic_wake
+    }
+}
+
+/// Configuration of the wind (MODEL.md §3.2).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct WindParameters {
+    /// Wind over the deck V_wd along the landing axis (m/s); paper §3.4: 10.
+    pub wind_over_deck_mps: f64,
+    /// Whether the mean wind blows.
+    pub mean_wind: bool,
+    /// Whether free-air turbulence (Eq. 19–20) is on.
+    pub turbulence: bool,
+    /// Whether the steady wake (Eq. 21–22) is on.
+    pub steady_wake: bool,
+    /// Whether the periodic wake (Eq. 23–25) is on.
+    pub periodic_wake: bool,
+    /// RMS of longitudinal turbulence σ_u (m/s); MODEL.md §3.2: 0.540 (a = 200).
+    pub turbulence_sigma_u_mps: f64,
+    /// RMS of vertical turbulence σ_w (m/s); MODEL.md §3.2: 0.323 (a = 71.6).
+    pub turbulence_sigma_w_mps: f64,
+    /// Dryden scale length L of both components (m); Eq. 19–20: 100 ft = 30.48 m.
+    pub turbulence_scale_m: f64,
+    /// Ship pitch amplitude θ_s of the periodic wake (rad); paper §3.4: 0.05.
+    pub periodic_wake_ship_pitch_rad: f64,
+    /// Frequency ω_p of the periodic wake (rad/s); paper §3.4: 1.25.
+    pub periodic_wake_frequency_radps: f64,
+}
+
+impl Default for WindParameters {
+    fn default() -> Self {
+        Self {
+            wind_over_deck_mps: 10.0,
+            mean_wind: true,
+            turbulence: true,
+            steady_wake: true,
+            periodic_wake: true,
+            turbulence_sigma_u_mps: 0.540,
+            turbulence_sigma_w_mps: 0.323,
+            turbulence_scale_m: 30.48,
+            periodic_wake_ship_pitch_rad: 0.05,
+            periodic_wake_frequency_radps: 1.25,
+        }
+    }
+}
+
+impl WindParameters {
+    /// Checks every field: speeds in [0, 40] m/s, σ in [0, 10] m/s, scale in (0, 3000] m,
+    /// θ_s in [0, 0.5] rad, ω_p in [0, 20] rad/s.
+    pub fn validate(&self) -> Result<(), EnvironmentError> {
+        let sigma = Bounds::closed(0.0, 10.0);
+        Bounds::closed(0.0, 40.0).check("wind.wind_over_deck_mps", self.wind_over_deck_mps)?;
+        sigma.check("wind.turbulence_sigma_u_mps", self.turbulence_sigma_u_mps)?;
+        sigma.check("wind.turbulence_sigma_w_mps", self.turbulence_sigma_w_mps)?;
+        let scale = Bounds {
+            min_inclusive: false,
+            ..Bounds::closed(0.0, 3000.0)
+        };
+        scale.check("wind.turbulence_scale_m", self.turbulence_scale_m)?;
+        Bounds::closed(0.0, 0.5).check(
+            "wind.periodic_wake_ship_pitch_rad",
+            self.periodic_wake_ship_pitch_rad,
+        )?;
+        Bounds::closed(0.0, 20.0).check(
+            "wind.periodic_wake_frequency_radps",
+            self.periodic_wake_frequency_radps,
+        )?;
+        Ok(())
+    }
+}
+
+/// Mean wind, W_x = −(V_wd − V_ship), W_z = 0 (MODEL.md §3.2): a headwind when the wind
+/// over the deck exceeds the ship's speed.
+pub fn mean_wind(wind_over_deck_mps: f64, ship_forward_speed_mps: f64) -> Wind {
+    Wind {
+        x_mps: -(wind_over_deck_mps - ship_forward_speed_mps),
+        z_mps: 0.0,
+    }
+}
+
+/// Steady wake at X = `distance_aft_m` (m, positive aft), paper Eq. 21–22:
+/// u2 = 0.002·X for 0 < X < 914 m, else 0; w2 = −1 + 0.0013·X for X < 914 m, else 0 (m/s;
+/// u positive forward, w positive down). The paper's fit is for V_wd = 10 m/s and does
+/// not scale with it. As written, w2 also applies ahead of the pitch centre (X < 0).
+pub fn steady_wake(distance_aft_m: f64) -> Wind {
+    let x = distance_aft_m;
+    let within = x < STEADY_WAKE_EXTENT_M;
+    Wind {
+        x_mps: if x > 0.0 && within { 0.002 * x } else { 0.0 },
+        z_mps: if within { -1.0 + 0.0013 * x } else { 0.0 },
+    }
+}
+
+/// Periodic wake at time `time_s` (s) and X = `distance_aft_m` (m), paper Eq. 23–25:
+/// u3 = θ_s·V_wd·(2.22 + 0.000091·X)·C, w3 = θ_s·V_wd·(4.98 + 0.0018·X)·C,
+/// C = cos(ω_p·[2.28·t + X/(0.85·V_wd)] + 0.1) (m/s; u forward, w down). Applied at
+/// every X (the paper gives no range); zero when V_wd = 0.
+pub fn periodic_wake(time_s: f64, distance_aft_m: f64, parameters: &WindParameters) -> Wind {
+    let v_wd = parameters.wind_over_deck_mps;
+    if v_wd == 0.0 {
+        return Wind::default();
+    }
+    let x = distance_aft_m;
+    let phase = parameters.periodic_wake_frequency_radps * (2.28 * time_s + x / (0.85 * v_wd));
+    let c = (phase + 0.1).cos();
+    let amplitude = parameters.periodic_wake_ship_pitch_rad * v_wd;
+    Wind {
+        x_mps: amplitude * (2.22 + 0.000_091 * x) * c,
+        z_mps: amplitude * (4.98 + 0.0018 * x) * c,
+    }
+}
+
+/// The wind model: mean wind, turbulence with its state and streams, and the wake
+/// (MODEL.md §3.2).
+#[derive(Debug, Clone)]
+pub struct WindModel {
+    parameters: WindParameters,
+    ship_forward_speed_mps: f64,
+    turbulence: Turbulence,
+}
+
+impl WindModel {
+    /// The wind for these parameters and ship speed (m/s), turbulence started from its
+    /// stationary distribution with the `turbulence_u` and `turbulence_w` streams.
+    pub fn new(
+        parameters: WindParameters,
+        ship_forward_speed_mps: f64,
+        streams: &RandomStreams,
+    ) -> Result<Self, EnvironmentError> {
+        parameters.validate()?;
+        Bounds::closed(0.0, 30.0).check("ship.forward_speed_mps", ship_forward_speed_mps)?;
+        Ok(Self {
+            parameters,
+            ship_forward_speed_mps,
+            turbulence: Turbulence::new(&parameters, streams),
+        })
+    }
+
+    /// The parameters the model was built from.
+    pub fn parameters(&self) -> &WindParameters {
+        &self.parameters
+    }
+
+    /// Advances the turbulence by `dt` (s) for an aircraft flying at `airspeed_mps` (m/s):
+    /// its time constant is τ = L/V. Call once per step, outside the RK4 stages.
+    pub fn advance(&mut self, dt: f64, airspeed_mps: f64) {
+        self.turbulence.advance(dt, airspeed_mps);
+    }
+
+    /// Every component at time `time_s` (s) and X = `distance_aft_m` (m, positive aft).
+    pub fn components(&self, time_s: f64, distance_aft_m: f64) -> WindComponents {
+        let p = &self.parameters;
+        WindComponents {
+            mean: if p.mean_wind {
+                mean_wind(p.wind_over_deck_mps, self.ship_forward_speed_mps)
+            } else {
+                Wind::default()
+            },
+            turbulence: self.turbulence.wind(),
+            steady_wake: if p.steady_wake {
+                steady_wake(distance_aft_m)
+            } else {
+                Wind::default()
+            },
+            periodic_wake: if p.periodic_wake {
+                periodic_wake(time_s, distance_aft_m, p)
+            } else {
+                Wind::default()
+            },
+        }
+    }
+
+    /// The total wind at time `time_s` (s) and X = `distance_aft_m` (m, positive aft).
+    pub fn wind(&self, time_s: f64, distance_aft_m: f64) -> Wind {
+        self.components(time_s, distance_aft_m).total()
+    }
+}

@@ -1,0 +1,5 @@
+//! Sensors and their noise (paper §3.5; MODEL.md §3.3).
+
+mod pitch;
+
+pub use pitch::{PitchNoiseParameters, PitchSensor};
