@@ -3,7 +3,16 @@
 //! Cascade: flight-path generator → guidance → sink-rate controller → [`pitch`]
 //! controller → elevator; in parallel the speed controller → thrust.
 
+mod flight_path;
+mod guidance;
 mod loop_controller;
 pub mod pitch;
+mod sink_rate;
+mod speed;
 
+pub use flight_path::{DeckReference, FlightPathGenerator, FlightPathParameters, PathReference};
+pub use guidance::GuidanceParameters;
 pub use loop_controller::{LoopController, LoopGains};
+pub use pitch::ControlError;
+pub use sink_rate::SinkRateControllerParameters;
+pub use speed::{SpeedController, SpeedControllerParameters};

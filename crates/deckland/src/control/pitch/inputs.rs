@@ -20,11 +20,11 @@ pub struct PitchPlantDerivatives {
 
 impl PitchPlantDerivatives {
     /// Checks that both derivatives are finite and ∂q̇/∂δe ≠ 0.
-    pub fn validate(&self) -> Result<(), PitchControlError> {
+    pub fn validate(&self) -> Result<(), ControlError> {
         check_finite("dqdot_dq_per_s", self.dqdot_dq_per_s)?;
         check_finite("dqdot_delevator_per_s2", self.dqdot_delevator_per_s2)?;
         if self.dqdot_delevator_per_s2 == 0.0 {
-            return Err(PitchControlError::ZeroElevatorEffectiveness);
+            return Err(ControlError::ZeroElevatorEffectiveness);
         }
         Ok(())
     }
@@ -82,11 +82,11 @@ pub struct PitchControlInputs {
     pub elevator_saturation: ElevatorSaturation,
 }
 
-/// Why a pitch controller could not be built (MODEL.md §5).
+/// Why a controller could not be built from its parameters (MODEL.md §5).
 #[derive(Debug, Clone, PartialEq, Error)]
-pub enum PitchControlError {
+pub enum ControlError {
     /// A gain, derivative or design parameter is NaN or infinite.
-    #[error("pitch controller parameter `{field}` must be finite, got {value}")]
+    #[error("controller parameter `{field}` must be finite, got {value}")]
     NonFinite {
         /// Name of the parameter.
         field: &'static str,
@@ -94,15 +94,25 @@ pub enum PitchControlError {
         value: f64,
     },
     /// A design parameter (settling time, damping ratio) is zero or negative.
-    #[error("pitch controller parameter `{field}` must be > 0, got {value}")]
+    #[error("controller parameter `{field}` must be > 0, got {value}")]
     NonPositive {
         /// Name of the parameter.
         field: &'static str,
         /// The rejected value.
         value: f64,
     },
+    /// A parameter lies outside its allowed range.
+    #[error("controller parameter `{field}` = {value} is out of range: expected {expected}")]
+    OutOfRange {
+        /// Name of the parameter.
+        field: &'static str,
+        /// The rejected value.
+        value: f64,
+        /// The allowed range, in words.
+        expected: &'static str,
+    },
     /// A PID gain is negative.
-    #[error("pitch controller gain `{field}` must be >= 0, got {value}")]
+    #[error("controller gain `{field}` must be >= 0, got {value}")]
     NegativeGain {
         /// Name of the gain.
         field: &'static str,
@@ -118,11 +128,11 @@ pub enum PitchControlError {
 }
 
 /// Rejects a non-finite value, naming the field.
-pub(crate) fn check_finite(field: &'static str, value: f64) -> Result<(), PitchControlError> {
+pub(crate) fn check_finite(field: &'static str, value: f64) -> Result<(), ControlError> {
     if value.is_finite() {
         Ok(())
     } else {
-        Err(PitchControlError::NonFinite { field, value })
+        Err(ControlError::NonFinite { field, value })
     }
 }
 
@@ -138,7 +148,7 @@ mod tests {
         };
         assert_eq!(
             plant.validate(),
-            Err(PitchControlError::ZeroElevatorEffectiveness)
+            Err(ControlError::ZeroElevatorEffectiveness)
         );
     }
 

@@ -17,9 +17,7 @@ mod pid;
 
 use serde::{Deserialize, Serialize};
 
-pub use inputs::{
-    ElevatorSaturation, PitchControlError, PitchControlInputs, PitchPlantDerivatives,
-};
+pub use inputs::{ControlError, ElevatorSaturation, PitchControlInputs, PitchPlantDerivatives};
 pub use observer_pd::{ObserverPdController, ObserverPdGains, ObserverPdParameters, PitchFeedback};
 pub use pid::{PidController, PidParameters, PidState};
 
@@ -108,7 +106,7 @@ impl PitchController {
     pub fn new(
         parameters: &PitchControllerParameters,
         plant: PitchPlantDerivatives,
-    ) -> Result<Self, PitchControlError> {
+    ) -> Result<Self, ControlError> {
         Ok(match parameters {
             PitchControllerParameters::ObserverPd(p) => {
                 Self::ObserverPd(ObserverPdController::new(p, plant)?)

@@ -13,7 +13,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::inputs::{check_finite, PitchControlError, PitchControlInputs, PitchPlantDerivatives};
+use super::inputs::{check_finite, ControlError, PitchControlInputs, PitchPlantDerivatives};
 use crate::estimation::{AugmentedObserver, ObserverParameters, ObserverState};
 
 /// Which pitch attitude the O-PD proportional term compares with θ_ref.
@@ -85,7 +85,7 @@ impl ObserverPdGains {
         settling_time_s: f64,
         damping_ratio: f64,
         dqdot_dq_per_s: f64,
-    ) -> Result<Self, PitchControlError> {
+    ) -> Result<Self, ControlError> {
         check_finite("settling_time_s", settling_time_s)?;
         check_finite("damping_ratio", damping_ratio)?;
         check_finite("dqdot_dq_per_s", dqdot_dq_per_s)?;
@@ -94,7 +94,7 @@ impl ObserverPdGains {
             ("damping_ratio", damping_ratio),
         ] {
             if value <= 0.0 {
-                return Err(PitchControlError::NonPositive { field, value });
+                return Err(ControlError::NonPositive { field, value });
             }
         }
         let natural_frequency_radps = 4.0 / (settling_time_s * damping_ratio);
@@ -107,7 +107,7 @@ impl ObserverPdGains {
     }
 
     /// Checks that both gains are finite.
-    pub fn validate(&self) -> Result<(), PitchControlError> {
+    pub fn validate(&self) -> Result<(), ControlError> {
         check_finite("proportional_per_s2", self.proportional_per_s2)?;
         check_finite("derivative_per_s", self.derivative_per_s)
     }
@@ -129,7 +129,7 @@ impl ObserverPdController {
     pub fn new(
         parameters: &ObserverPdParameters,
         plant: PitchPlantDerivatives,
-    ) -> Result<Self, PitchControlError> {
+    ) -> Result<Self, ControlError> {
         plant.validate()?;
         let gains = ObserverPdGains::design(
             parameters.settling_time_s,
@@ -145,7 +145,7 @@ impl ObserverPdController {
         observer: ObserverParameters,
         pitch_feedback: PitchFeedback,
         plant: PitchPlantDerivatives,
-    ) -> Result<Self, PitchControlError> {
+    ) -> Result<Self, ControlError> {
         plant.validate()?;
         gains.validate()?;
         Ok(Self {
@@ -316,7 +316,7 @@ mod tests {
         };
         assert_eq!(
             ObserverPdController::new(&ObserverPdParameters::default(), plant),
-            Err(PitchControlError::ZeroElevatorEffectiveness)
+            Err(ControlError::ZeroElevatorEffectiveness)
         );
     }
 }

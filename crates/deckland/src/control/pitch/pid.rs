@@ -13,7 +13,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::inputs::{
-    check_finite, ElevatorSaturation, PitchControlError, PitchControlInputs, PitchPlantDerivatives,
+    check_finite, ControlError, ElevatorSaturation, PitchControlInputs, PitchPlantDerivatives,
 };
 
 /// PID gains and options (paper Eq. 37; gains as printed in paper §4.2.3).
@@ -45,7 +45,7 @@ impl Default for PidParameters {
 
 impl PidParameters {
     /// Checks that all gains are finite and non-negative.
-    pub fn validate(&self) -> Result<(), PitchControlError> {
+    pub fn validate(&self) -> Result<(), ControlError> {
         for (field, value) in [
             ("proportional_per_s2", self.proportional_per_s2),
             ("integral_per_s3", self.integral_per_s3),
@@ -53,7 +53,7 @@ impl PidParameters {
         ] {
             check_finite(field, value)?;
             if value < 0.0 {
-                return Err(PitchControlError::NegativeGain { field, value });
+                return Err(ControlError::NegativeGain { field, value });
             }
         }
         Ok(())
@@ -79,7 +79,7 @@ impl PidController {
     pub fn new(
         parameters: &PidParameters,
         plant: PitchPlantDerivatives,
-    ) -> Result<Self, PitchControlError> {
+    ) -> Result<Self, ControlError> {
         parameters.validate()?;
         plant.validate()?;
         Ok(Self {

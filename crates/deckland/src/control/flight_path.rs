@@ -1,0 +1,256 @@
+//! Flight-path generator: the glide path the hook follows down to the deck (paper §2.1,
+//! §4.1; MODEL.md §5).
+//!
+//! The glide path is a straight line at `glide_slope_deg` through an anchor on the deck:
+//! h_ref = h_anchor + (x_anchor − x_hook)·tan(glide slope), with climb rate
+//! ḣ_ref = ḣ_anchor + (ẋ_anchor − ẋ_hook)·tan(glide slope).
+//!
+//! Until the last `compensation_window_s` seconds before touchdown the anchor is the
+//! *mean* landing point (ship level, no heave). Then, with deck-motion compensation on,
+//! it moves over `compensation_blend_s` seconds to the *moving* landing point predicted
+//! `deck_motion_lead_s` seconds ahead by linear extrapolation, h_L + τ·ḣ_L, so that the
+//! aircraft's lag behind its reference is partly made up (the lead of the AN/SPN-42
+//! deck-motion compensation, paper §2.1). The blend avoids a step in the reference. The
+//! rate fed forward is ḣ_L (the prediction's own acceleration term is left out).
+
+use super::pitch::ControlError;
+use crate::environment::{EarthPoint, EarthVelocity};
+use serde::{Deserialize, Serialize};
+
+/// Parameters of the glide path and of deck-motion compensation.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct FlightPathParameters {
+    /// Glide slope (deg, positive descending); 3.5° by default.
+    pub glide_slope_deg: f64,
+    /// Follow the moving landing point in the last seconds (paper §2.1); on by default.
+    pub deck_motion_compensation: bool,
+    /// How long before touchdown compensation starts (s); 12 s (paper §2.1).
+    pub compensation_window_s: f64,
+    /// How long the anchor takes to move from the mean to the moving deck (s); 2 s.
+    pub compensation_blend_s: f64,
+    /// Prediction horizon of the deck-motion lead (s); 1 s.
+    pub deck_motion_lead_s: f64,
+}
+
+impl Default for FlightPathParameters {
+    fn default() -> Self {
+        Self {
+            glide_slope_deg: 3.5,
+            deck_motion_compensation: true,
+            compensation_window_s: 12.0,
+            compensation_blend_s: 2.0,
+            deck_motion_lead_s: 1.0,
+        }
+    }
+}
+
+impl FlightPathParameters {
+    /// Checks the glide slope is in (0°, 10°] and the times non-negative (blend positive).
+    pub fn validate(&self) -> Result<(), ControlError> {
+        if !(self.glide_slope_deg.is_finite()
+            && self.glide_slope_deg > 0.0
+            && self.glide_slope_deg <= 10.0)
+        {
+            return Err(ControlError::OutOfRange {
+                field: "flight_path.glide_slope_deg",
+                value: self.glide_slope_deg,
+                expected: "a glide slope in (0, 10] degrees",
+            });
+        }
+        for (field, value) in [
+            (
+                "flight_path.compensation_window_s",
+                self.compensation_window_s,
+            ),
+            ("flight_path.deck_motion_lead_s", self.deck_motion_lead_s),
+        ] {
+            if !(value.is_finite() && value >= 0.0) {
+                return Err(ControlError::OutOfRange {
+                    field,
+                    value,
+                    expected: "a finite time >= 0 s",
+                });
+            }
+        }
+        if !(self.compensation_blend_s.is_finite() && self.compensation_blend_s > 0.0) {
+            return Err(ControlError::NonPositive {
+                field: "flight_path.compensation_blend_s",
+                value: self.compensation_blend_s,
+            });
+        }
+        Ok(())
+    }
+}
+
+/// Where the deck is, for the generator: the mean and the actual landing point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DeckReference {
+    /// The landing point with the ship level and at its mean height.
+    pub mean_aim: EarthPoint,
+    /// Velocity of the mean landing point (the ship's speed).
+    pub mean_aim_velocity: EarthVelocity,
+    /// The actual, moving landing point.
+    pub aim: EarthPoint,
+    /// Its velocity.
+    pub aim_velocity: EarthVelocity,
+}
+
+/// The generator's output for the hook.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PathReference {
+    /// Reference height of the hook (m).
+    pub height_m: f64,
+    /// Reference climb rate of the hook (m/s, positive up).
+    pub climb_rate_mps: f64,
+    /// Estimated time to touchdown (s); infinite when not closing on the deck.
+    pub time_to_go_s: f64,
+    /// Weight of the moving landing point in the anchor, 0 (mean deck) to 1.
+    pub compensation_weight: f64,
+}
+
+/// The glide-path generator.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FlightPathGenerator {
+    parameters: FlightPathParameters,
+    tan_slope: f64,
+}
+
+impl FlightPathGenerator {
+    /// Builds the generator after validating its parameters.
+    pub fn new(parameters: FlightPathParameters) -> Result<Self, ControlError> {
+        parameters.validate()?;
+        Ok(Self {
+            parameters,
+            tan_slope: parameters.glide_slope_deg.to_radians().tan(),
+        })
+    }
+
+    /// The parameters.
+    pub fn parameters(&self) -> &FlightPathParameters {
+        &self.parameters
+    }
+
+    /// tan of the glide slope (–).
+    pub fn tan_slope(&self) -> f64 {
+        self.tan_slope
+    }
+
+    /// The reference for a hook at earth x `hook_x_m` moving at `hook_x_rate_mps`.
+    #[inline]
+    pub fn reference(
+        &self,
+        hook_x_m: f64,
+        hook_x_rate_mps: f64,
+        deck: &DeckReference,
+    ) -> PathReference {
+        let p = &self.parameters;
+        let closure = hook_x_rate_mps - deck.mean_aim_velocity.x_mps;
+        let range = deck.mean_aim.x_m - hook_x_m;
+        let time_to_go_s = if closure > 0.0 {
+            range / closure
+        } else {
+            f64::INFINITY
+        };
+        let (weight, weight_rate) = if p.deck_motion_compensation {
+            let w = (p.compensation_window_s - time_to_go_s) / p.compensation_blend_s;
+            if w <= 0.0 {
+                (0.0, 0.0)
+            } else if w >= 1.0 {
+                (1.0, 0.0)
+            } else {
+                // d(time to go)/dt = −1 at constant closure.
+                (w, 1.0 / p.compensation_blend_s)
+            }
+        } else {
+            (0.0, 0.0)
+        };
+        let predicted = deck.aim.h_m + p.deck_motion_lead_s * deck.aim_velocity.h_mps;
+        let offset = predicted - deck.mean_aim.h_m;
+        let anchor_h = deck.mean_aim.h_m + weight * offset;
+        let anchor_h_rate = deck.mean_aim_velocity.h_mps
+            + weight * (deck.aim_velocity.h_mps - deck.mean_aim_velocity.h_mps)
+            + weight_rate * offset;
+        PathReference {
+            height_m: anchor_h + range * self.tan_slope,
+            climb_rate_mps: anchor_h_rate
+                + (deck.mean_aim_velocity.x_mps - hook_x_rate_mps) * self.tan_slope,
+            time_to_go_s,
+            compensation_weight: weight,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn deck(aim_h: f64, aim_h_rate: f64) -> DeckReference {
+        DeckReference {
+            mean_aim: EarthPoint {
+                x_m: 0.0,
+                h_m: 20.0,
+            },
+            mean_aim_velocity: EarthVelocity {
+                x_mps: 0.0,
+                h_mps: 0.0,
+            },
+            aim: EarthPoint {
+                x_m: 0.0,
+                h_m: aim_h,
+            },
+            aim_velocity: EarthVelocity {
+                x_mps: 0.0,
+                h_mps: aim_h_rate,
+            },
+        }
+    }
+
+    #[test]
+    fn far_out_the_path_is_anchored_on_the_mean_deck() {
+        let generator = FlightPathGenerator::new(FlightPathParameters::default()).unwrap();
+        let r = generator.reference(-1000.0, 60.0, &deck(23.0, 1.0));
+        // By hand: 20 + 1000·tan 3.5° = 81.16 m; climb −60·tan 3.5° = −3.670 m/s.
+        assert!((r.height_m - (20.0 + 1000.0 * 3.5f64.to_radians().tan())).abs() < 1e-9);
+        assert!((r.climb_rate_mps + 60.0 * 3.5f64.to_radians().tan()).abs() < 1e-12);
+        assert_eq!(r.compensation_weight, 0.0);
+        assert!((r.time_to_go_s - 1000.0 / 60.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn close_in_the_path_follows_the_predicted_moving_deck() {
+        let generator = FlightPathGenerator::new(FlightPathParameters::default()).unwrap();
+        // 5 s to go: fully compensated. Anchor = 23 + 1.0 s · 1 m/s = 24 m.
+        let r = generator.reference(-300.0, 60.0, &deck(23.0, 1.0));
+        assert_eq!(r.compensation_weight, 1.0);
+        assert!((r.height_m - (24.0 + 300.0 * generator.tan_slope())).abs() < 1e-9);
+        assert!((r.climb_rate_mps - (1.0 - 60.0 * generator.tan_slope())).abs() < 1e-12);
+    }
+
+    #[test]
+    fn blend_is_continuous_and_compensation_can_be_switched_off() {
+        let generator = FlightPathGenerator::new(FlightPathParameters::default()).unwrap();
+        // 11 s to go: half way through the 2 s blend.
+        let r = generator.reference(-660.0, 60.0, &deck(24.0, 0.0));
+        assert!((r.compensation_weight - 0.5).abs() < 1e-12);
+        assert!((r.height_m - (22.0 + 660.0 * generator.tan_slope())).abs() < 1e-9);
+        let off = FlightPathGenerator::new(FlightPathParameters {
+            deck_motion_compensation: false,
+            ..Default::default()
+        })
+        .unwrap();
+        let r = off.reference(-100.0, 60.0, &deck(24.0, 1.0));
+        assert_eq!(r.compensation_weight, 0.0);
+        assert!((r.height_m - (20.0 + 100.0 * generator.tan_slope())).abs() < 1e-9);
+    }
+
+    #[test]
+    fn invalid_slope_is_named() {
+        let error = FlightPathGenerator::new(FlightPathParameters {
+            glide_slope_deg: -3.0,
+            ..Default::default()
+        })
+        .unwrap_err();
+        assert!(error.to_string().contains("glide_slope_deg"));
+    }
+}

@@ -1,0 +1,81 @@
+//! Sink-rate controller: pitch command from the climb-rate error (paper §4.4, Eq. 43).
+//!
+//! θ_ref = θ*_gs + K_Ps·e_s + K_Is·∫e_s, e_s = ḣ_cmd − ḣ (climb rates, positive up; the
+//! sink rate is −ḣ), where θ*_gs is the trim pitch on the glide path (MODEL.md §5). The
+//! correction is limited to ±`pitch_authority_deg` with conditional-integration
+//! anti-windup.
+
+use super::loop_controller::{LoopController, LoopGains};
+use super::pitch::ControlError;
+use serde::{Deserialize, Serialize};
+
+/// Gains and limits of the sink-rate loop.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct SinkRateControllerParameters {
+    /// Proportional gain K_Ps (rad of pitch per m/s of climb-rate error).
+    pub proportional_rad_per_mps: f64,
+    /// Integral gain K_Is (rad of pitch per m of integrated climb-rate error).
+    pub integral_rad_per_m: f64,
+    /// Largest pitch correction either side of θ*_gs (deg).
+    pub pitch_authority_deg: f64,
+}
+
+impl Default for SinkRateControllerParameters {
+    /// The project's design (MODEL.md §5): K_Ps = 0.05, K_Is = 0.02, ±10°.
+    fn default() -> Self {
+        Self {
+            proportional_rad_per_mps: 0.05,
+            integral_rad_per_m: 0.02,
+            pitch_authority_deg: 10.0,
+        }
+    }
+}
+
+impl SinkRateControllerParameters {
+    /// The paper's gains (§4.4): K_Ps = 0.0061, K_Is = 0.018. They do not fly this plant
+    /// together with the paper's guidance gains (MODEL.md §5).
+    pub fn paper() -> Self {
+        Self {
+            proportional_rad_per_mps: 0.0061,
+            integral_rad_per_m: 0.018,
+            ..Self::default()
+        }
+    }
+
+    /// Checks gains are finite and non-negative and the authority positive.
+    pub fn validate(&self) -> Result<(), ControlError> {
+        for (field, value) in [
+            (
+                "sink_rate.proportional_rad_per_mps",
+                self.proportional_rad_per_mps,
+            ),
+            ("sink_rate.integral_rad_per_m", self.integral_rad_per_m),
+        ] {
+            if !value.is_finite() {
+                return Err(ControlError::NonFinite { field, value });
+            }
+        }
+        if !(self.pitch_authority_deg.is_finite() && self.pitch_authority_deg > 0.0) {
+            return Err(ControlError::NonPositive {
+                field: "sink_rate.pitch_authority_deg",
+                value: self.pitch_authority_deg,
+            });
+        }
+        Ok(())
+    }
+
+    /// The loop as a limited PI controller (output: pitch correction in rad).
+    pub fn controller(&self) -> LoopController {
+        let authority = self.pitch_authority_deg.to_radians();
+        LoopController {
+            gains: LoopGains {
+                proportional: self.proportional_rad_per_mps,
+                integral: self.integral_rad_per_m,
+                derivative: 0.0,
+            },
+            output_min: -authority,
+            output_max: authority,
+        }
+    }
+}
