@@ -1,5 +1,9 @@
 //! The `deckland` command line.
 
+mod commands;
+mod output;
+mod plot;
+
 use anyhow::Result;
 use clap::{Parser, Subcommand};
 
@@ -12,9 +16,14 @@ struct Cli {
 }
 
 #[derive(Debug, Subcommand)]
-enum Command {}
+enum Command {
+    /// Simulate the ship motion and the wind alone; write a CSV and plots (paper Fig. 7, 8).
+    Environment(commands::environment::EnvironmentArgs),
+}
 
 fn main() -> Result<()> {
     let cli = Cli::parse();
-    match cli.command {}
+    match cli.command {
+        Command::Environment(args) => commands::environment::run(&args),
+    }
 }

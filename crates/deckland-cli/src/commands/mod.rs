@@ -1,0 +1,3 @@
+//! One module per `deckland` subcommand.
+
+pub mod environment;
