@@ -1,6 +1,8 @@
 //! The `deckland` command line: trim, linearise, simulate and plot carrier landings.
 
 mod commands;
+mod output;
+mod plot;
 
 use anyhow::Result;
 use clap::{Parser, Subcommand};
@@ -20,12 +22,15 @@ enum Command {
     Trim(commands::trim::TrimArgs),
     /// Linearise about a trim point (paper Eq. 14 form): A, B, eigenvalues and modes.
     Linearize(commands::trim::TrimArgs),
+    /// Simulate the ship motion and the wind alone; write a CSV and plots (paper Fig. 7, 8).
+    Environment(commands::environment::EnvironmentArgs),
 }
 
 fn run(cli: &Cli) -> Result<()> {
     match &cli.command {
         Command::Trim(args) => commands::trim::run(args),
         Command::Linearize(args) => commands::linearize::run(args),
+        Command::Environment(args) => commands::environment::run(args),
     }
 }
 

@@ -1,4 +1,5 @@
-//! One module per subcommand.
+//! One module per `deckland` subcommand.
 
+pub mod environment;
 pub mod linearize;
 pub mod trim;

@@ -1,0 +1,296 @@
+//! `deckland environment`: simulate the environment alone (ship motion and the wind at a
+//! fixed distance aft of the ship) and write a CSV, plots in the look of the paper's
+//! Fig. 7 and Fig. 8, and a summary.
+
+use std::path::PathBuf;
+
+use anyhow::{bail, Result};
+use deckland::environment::{
+    EnvironmentParameters, ShipMotionSimulator, WindComponents, WindModel,
+};
+use deckland::random::RandomStreams;
+use serde::Serialize;
+
+use crate::output::OutputDir;
+use crate::plot::{Figure, Panel};
+
+/// Integration step (s): MODEL.md §6.
+const TIME_STEP_S: f64 = 0.001;
+/// Steps between recorded rows: every 10 ms.
+const RECORD_EVERY_STEPS: usize = 10;
+
+/// Options of `deckland environment`.
+#[derive(Debug, clap::Args)]
+pub struct EnvironmentArgs {
+    /// Simulated time (s).
+    #[arg(long, default_value_t = 60.0)]
+    seconds: f64,
+    /// Scenario seed of the random streams.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// Where the wind is sampled: distance aft of the ship's pitch centre (m, positive aft),
+    /// the X of the paper's wake model (Fig. 8 uses 400).
+    #[arg(
+        long = "distance-aft",
+        default_value_t = 400.0,
+        allow_negative_numbers = true
+    )]
+    distance_aft_m: f64,
+    /// Airspeed that sets the turbulence time constant L/V (m/s); default the paper's trim
+    /// speed (Table 3).
+    #[arg(long = "airspeed", default_value_t = 69.1)]
+    airspeed_mps: f64,
+    /// Output folder (default: a new runs/environment-<UTC timestamp>).
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Overwrite results in an --out folder that already holds some.
+    #[arg(long)]
+    force: bool,
+}
+
+/// One recorded row of `environment.csv`.
+#[derive(Debug, Clone, Serialize)]
+struct Row {
+    time_s: f64,
+    heave_m: f64,
+    pitch_deg: f64,
+    landing_point_height_m: f64,
+    wind_x_mps: f64,
+    wind_z_mps: f64,
+    mean_wind_x_mps: f64,
+    turbulence_x_mps: f64,
+    turbulence_z_mps: f64,
+    steady_wake_x_mps: f64,
+    steady_wake_z_mps: f64,
+    periodic_wake_x_mps: f64,
+    periodic_wake_z_mps: f64,
+}
+
+impl Row {
+    fn new(
+        time_s: f64,
+        heave_m: f64,
+        pitch_rad: f64,
+        landing_point_height_m: f64,
+        wind: &WindComponents,
+    ) -> Self {
+        let total = wind.total();
+        Self {
+            time_s,
+            heave_m,
+            pitch_deg: pitch_rad.to_degrees(),
+            landing_point_height_m,
+            wind_x_mps: total.x_mps,
+            wind_z_mps: total.z_mps,
+            mean_wind_x_mps: wind.mean.x_mps,
+            turbulence_x_mps: wind.turbulence.x_mps,
+            turbulence_z_mps: wind.turbulence.z_mps,
+            steady_wake_x_mps: wind.steady_wake.x_mps,
+            steady_wake_z_mps: wind.steady_wake.z_mps,
+            periodic_wake_x_mps: wind.periodic_wake.x_mps,
+            periodic_wake_z_mps: wind.periodic_wake.z_mps,
+        }
+    }
+}
+
+fn check_arguments(args: &EnvironmentArgs) -> Result<()> {
+    if !(args.seconds.is_finite() && args.seconds > 0.0 && args.seconds <= 86_400.0) {
+        bail!("--seconds must lie in (0, 86400] s, got {}", args.seconds);
+    }
+    if !(args.distance_aft_m.is_finite() && args.distance_aft_m.abs() <= 10_000.0) {
+        bail!(
+            "--distance-aft must lie in [-10000, 10000] m, got {}",
+            args.distance_aft_m
+        );
+    }
+    if !(args.airspeed_mps.is_finite() && args.airspeed_mps > 0.0 && args.airspeed_mps <= 300.0) {
+        bail!(
+            "--airspeed must lie in (0, 300] m/s, got {}",
+            args.airspeed_mps
+        );
+    }
+    Ok(())
+}
+
+/// Simulates at dt = 1 ms, recording every 10 ms.
+fn simulate(args: &EnvironmentArgs, parameters: &EnvironmentParameters) -> Result<Vec<Row>> {
+    let streams = RandomStreams::new(args.seed);
+    let mut ship = ShipMotionSimulator::new(parameters.ship, &streams, 0.0)?;
+    let mut wind = WindModel::new(parameters.wind, parameters.ship.forward_speed_mps, &streams)?;
+    let deck = parameters.deck;
+    let steps = (args.seconds / TIME_STEP_S).round() as usize;
+    let mut rows = Vec::with_capacity(steps / RECORD_EVERY_STEPS + 1);
+    for step in 0..=steps {
+        if step % RECORD_EVERY_STEPS == 0 {
+            let time_s = step as f64 * TIME_STEP_S;
+            let outputs = ship.outputs();
+            // The deck's mean height is deck_height_m: heave and pitch have zero mean.
+            let aim_height_m = deck.aim_point(&ship.pose()).h_m - deck.deck_height_m;
+            let components = wind.components(time_s, args.distance_aft_m);
+            rows.push(Row::new(
+                time_s,
+                outputs.heave_m,
+                outputs.pitch_rad,
+                aim_height_m,
+                &components,
+            ));
+        }
+        if step < steps {
+            ship.step(TIME_STEP_S);
+            wind.advance(TIME_STEP_S, args.airspeed_mps);
+        }
+    }
+    Ok(rows)
+}
+
+/// RMS about zero, peak |value|, mean and standard deviation of a record.
+struct Statistics {
+    rms: f64,
+    peak: f64,
+    mean: f64,
+    standard_deviation: f64,
+}
+
+fn statistics(values: impl Iterator<Item = f64> + Clone) -> Statistics {
+    let n = values.clone().count().max(1) as f64;
+    let mean = values.clone().sum::<f64>() / n;
+    let mean_square = values.clone().map(|v| v * v).sum::<f64>() / n;
+    Statistics {
+        rms: mean_square.sqrt(),
+        peak: values.fold(0.0, |peak: f64, v| peak.max(v.abs())),
+        mean,
+        standard_deviation: (mean_square - mean * mean).max(0.0).sqrt(),
+    }
+}
+
+fn series(rows: &[Row], value: impl Fn(&Row) -> f64) -> Vec<(f64, f64)> {
+    rows.iter().map(|row| (row.time_s, value(row))).collect()
+}
+
+fn figures(
+    rows: &[Row],
+    args: &EnvironmentArgs,
+    parameters: &EnvironmentParameters,
+) -> Vec<(&'static str, Figure)> {
+    let where_ = format!("{} m aft of the ship's pitch centre", args.distance_aft_m);
+    let landing_point = Figure::new().panel(
+        Panel::new(
+            format!(
+                "Landing point vertical motion (cf. paper Fig. 7), seed {}",
+                args.seed
+            ),
+            "time (s)",
+            "landing point height − mean (m)",
+        )
+        .series("landing point", series(rows, |r| r.landing_point_height_m))
+        .reference_line("mean deck height", 0.0),
+    );
+    let mean_x = rows.first().map_or(0.0, |r| r.mean_wind_x_mps);
+    let wind_x = Figure::new().panel(
+        Panel::new(
+            format!("x-axis wind {where_} (cf. paper Fig. 8)"),
+            "time (s)",
+            "wind x (m/s, positive forward)",
+        )
+        .series("total wind x", series(rows, |r| r.wind_x_mps))
+        .reference_line("mean wind (headwind)", mean_x),
+    );
+    let ship = Figure::new()
+        .title(format!(
+            "Ship motion (configured RMS {} m heave, {}° pitch), seed {}",
+            parameters.ship.heave_rms_m, parameters.ship.pitch_rms_deg, args.seed
+        ))
+        .panel(
+            Panel::new("Heave of the pitch centre", "time (s)", "heave (m, up)")
+                .series("heave", series(rows, |r| r.heave_m)),
+        )
+        .panel(
+            Panel::new("Pitch", "time (s)", "pitch (deg, bow up)")
+                .series("pitch", series(rows, |r| r.pitch_deg)),
+        );
+    let components = Figure::new()
+        .title(format!("Wind components {where_}, seed {}", args.seed))
+        .panel(
+            Panel::new("Longitudinal", "time (s)", "wind x (m/s, positive forward)")
+                .series("turbulence u1", series(rows, |r| r.turbulence_x_mps))
+                .series("steady wake u2", series(rows, |r| r.steady_wake_x_mps))
+                .series("periodic wake u3", series(rows, |r| r.periodic_wake_x_mps))
+                .series(
+                    "total − mean",
+                    series(rows, |r| r.wind_x_mps - r.mean_wind_x_mps),
+                ),
+        )
+        .panel(
+            Panel::new("Vertical", "time (s)", "wind z (m/s, positive down)")
+                .series("turbulence w1", series(rows, |r| r.turbulence_z_mps))
+                .series("steady wake w2", series(rows, |r| r.steady_wake_z_mps))
+                .series("periodic wake w3", series(rows, |r| r.periodic_wake_z_mps))
+                .series("total", series(rows, |r| r.wind_z_mps)),
+        );
+    vec![
+        ("landing_point_motion", landing_point),
+        ("wind_x", wind_x),
+        ("ship_motion", ship),
+        ("wind_components", components),
+    ]
+}
+
+/// Runs the command.
+pub fn run(args: &EnvironmentArgs) -> Result<()> {
+    check_arguments(args)?;
+    let parameters = EnvironmentParameters::default();
+    parameters.validate()?;
+    let output = OutputDir::prepare("environment", args.out.as_deref(), args.force)?;
+    let rows = simulate(args, &parameters)?;
+
+    let mut csv = csv::Writer::from_writer(Vec::new());
+    for row in &rows {
+        csv.serialize(row)?;
+    }
+    let csv_bytes = csv.into_inner().map_err(|e| anyhow::anyhow!("{e}"))?;
+    let mut written = vec![output.write_bytes("environment.csv", &csv_bytes)?];
+    for (stem, figure) in figures(&rows, args, &parameters) {
+        written.extend(figure.save(&output, stem)?);
+    }
+
+    let heave = statistics(rows.iter().map(|r| r.heave_m));
+    let pitch = statistics(rows.iter().map(|r| r.pitch_deg));
+    let landing = statistics(rows.iter().map(|r| r.landing_point_height_m));
+    let wind_x = statistics(rows.iter().map(|r| r.wind_x_mps));
+    let wind_z = statistics(rows.iter().map(|r| r.wind_z_mps));
+    println!(
+        "Environment: {} s at dt = 1 ms, seed {}, wind sampled {} m aft of the pitch centre",
+        args.seconds, args.seed, args.distance_aft_m
+    );
+    println!(
+        "  heave          RMS {:6.2} m    peak {:6.2} m    (configured RMS {} m)",
+        heave.rms, heave.peak, parameters.ship.heave_rms_m
+    );
+    println!(
+        "  pitch          RMS {:6.2} deg  peak {:6.2} deg  (configured RMS {} deg)",
+        pitch.rms, pitch.peak, parameters.ship.pitch_rms_deg
+    );
+    println!(
+        "  landing point  RMS {:6.2} m    peak {:6.2} m    (height about its mean)",
+        landing.rms, landing.peak
+    );
+    println!(
+        "  wind x         mean {:6.2} m/s  RMS about mean {:5.2} m/s  (positive forward)",
+        wind_x.mean, wind_x.standard_deviation
+    );
+    println!(
+        "  wind z         mean {:6.2} m/s  RMS about mean {:5.2} m/s  (positive down)",
+        wind_z.mean, wind_z.standard_deviation
+    );
+    println!(
+        "Wrote {} files to {}:",
+        written.len(),
+        output.path().display()
+    );
+    for path in &written {
+        if let Some(name) = path.file_name() {
+            println!("  {}", name.to_string_lossy());
+        }
+    }
+    Ok(())
+}
