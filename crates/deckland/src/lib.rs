@@ -37,4 +37,7 @@ pub mod estimation;
 pub mod integration;
 pub mod metrics;
 pub mod random;
+pub mod recording;
+pub mod scenario;
 pub mod sensors;
+pub mod simulation;

@@ -170,16 +170,29 @@ impl DeckGeometry {
             .map(|s_m| self.point_along_deck(pose, s_m))
     }
 
+    /// Height of the deck plane (m, above mean sea level) at earth position `x_m`,
+    /// extended aft past the ramp: h_deck + z_G − (x_G − x)·tan θ_s.
+    pub fn deck_plane_height(&self, pose: &ShipPose, x_m: f64) -> f64 {
+        let distance_aft = pose.distance_aft_of_pitch_centre_m(x_m);
+        self.deck_height_m + pose.heave_m - distance_aft * pose.pitch_rad.tan()
+    }
+
     /// Height of the deck (m, above mean sea level) below earth position `x_m`:
-    /// h_deck + z_G − (x_G − x)·tan θ_s; `None` aft of the ramp (over the water). The
-    /// deck is taken to run on forward without end (the paper gives no bow).
+    /// [`DeckGeometry::deck_plane_height`], or `None` aft of the ramp (over the water).
+    /// The deck is taken to run on forward without end (the paper gives no bow).
     pub fn deck_height_below(&self, pose: &ShipPose, x_m: f64) -> Option<f64> {
-        let ramp = self.ramp(pose);
-        if x_m < ramp.x_m {
+        if x_m < self.ramp(pose).x_m {
             return None;
         }
-        let distance_aft = pose.distance_aft_of_pitch_centre_m(x_m);
-        Some(self.deck_height_m + pose.heave_m - distance_aft * pose.pitch_rad.tan())
+        Some(self.deck_plane_height(pose, x_m))
+    }
+
+    /// Distance along the deck from the aim point (m, positive forward) of the deck point
+    /// at earth position `x_m`: s = 81 − (x_G − x)/cos θ_s (inverse of
+    /// [`DeckGeometry::point_along_deck`]'s x).
+    pub fn distance_along_deck(&self, pose: &ShipPose, x_m: f64) -> f64 {
+        self.landing_point_aft_of_pitch_centre_m
+            - pose.distance_aft_of_pitch_centre_m(x_m) / pose.pitch_rad.cos()
     }
 }
 

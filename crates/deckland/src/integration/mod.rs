@@ -5,4 +5,4 @@
 
 mod rk4;
 
-pub use rk4::{rk4_step, OdeSystem};
+pub use rk4::{rk4_step, rk4_step_from, OdeSystem};

@@ -22,9 +22,22 @@ pub fn rk4_step<const N: usize, S: OdeSystem<N> + ?Sized>(
     x: &[f64; N],
     dt: f64,
 ) -> [f64; N] {
-    let half = 0.5 * dt;
     let k1 = system.derivative(t, x);
-    let k2 = system.derivative(t + half, &axpy(x, half, &k1));
+    rk4_step_from(system, t, x, &k1, dt)
+}
+
+/// As [`rk4_step`], with the first stage k1 = f(t, x) already evaluated by the caller
+/// (who may have computed it together with other outputs of the same evaluation).
+#[inline]
+pub fn rk4_step_from<const N: usize, S: OdeSystem<N> + ?Sized>(
+    system: &S,
+    t: f64,
+    x: &[f64; N],
+    k1: &[f64; N],
+    dt: f64,
+) -> [f64; N] {
+    let half = 0.5 * dt;
+    let k2 = system.derivative(t + half, &axpy(x, half, k1));
     let k3 = system.derivative(t + half, &axpy(x, half, &k2));
     let k4 = system.derivative(t + dt, &axpy(x, dt, &k3));
     let sixth = dt / 6.0;

@@ -1,0 +1,382 @@
+//! The closed loop as one system of ODEs: plant, ship filters, pitch controller (with its
+//! observer) and the integrators of the speed, sink-rate and guidance loops advance
+//! together in one RK4 step (MODEL.md §6).
+
+use crate::aircraft::{Aircraft, AircraftCommands, AircraftState, HookGeometry};
+use crate::analysis::TrimPoint;
+use crate::control::pitch::{ElevatorSaturation, PitchControlInputs, PitchController};
+use crate::control::{DeckReference, FlightPathGenerator, LoopController, SpeedController};
+use crate::environment::{
+    DeckGeometry, EarthPoint, EarthVelocity, ShipMotion, ShipMotionState, ShipNoise, ShipPose,
+    ShipPoseRate, Wind, WindModel,
+};
+use crate::integration::OdeSystem;
+use crate::sensors::PitchSensor;
+
+/// Number of scalar states of the closed loop.
+pub const LOOP_DIMENSION: usize = AircraftState::DIMENSION + ShipMotionState::DIMENSION + 3 + 3;
+
+/// The closed loop's state, as named parts.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct LoopState {
+    /// The aircraft plant.
+    pub aircraft: AircraftState,
+    /// The ship's heave and pitch shaping filters.
+    pub ship: ShipMotionState,
+    /// The pitch controller's state (observer x1, x2, x3, or the PID integral).
+    pub pitch_controller: [f64; 3],
+    /// ∫ airspeed error dt (m).
+    pub speed_integral_m: f64,
+    /// ∫ climb-rate error dt (m).
+    pub sink_rate_integral_m: f64,
+    /// ∫ hook height error dt (m·s).
+    pub guidance_integral_m_s: f64,
+}
+
+impl LoopState {
+    /// The state as an integrator array.
+    #[inline]
+    pub fn to_array(&self) -> [f64; LOOP_DIMENSION] {
+        let mut x = [0.0; LOOP_DIMENSION];
+        x[..10].copy_from_slice(&self.aircraft.to_array());
+        x[10..18].copy_from_slice(&self.ship.to_array());
+        x[18..21].copy_from_slice(&self.pitch_controller);
+        x[21] = self.speed_integral_m;
+        x[22] = self.sink_rate_integral_m;
+        x[23] = self.guidance_integral_m_s;
+        x
+    }
+
+    /// The state from an integrator array.
+    #[inline]
+    pub fn from_array(x: &[f64; LOOP_DIMENSION]) -> Self {
+        let mut aircraft = [0.0; 10];
+        aircraft.copy_from_slice(&x[..10]);
+        let mut ship = [0.0; 8];
+        ship.copy_from_slice(&x[10..18]);
+        Self {
+            aircraft: AircraftState::from_array(&aircraft),
+            ship: ShipMotionState::from_array(&ship),
+            pitch_controller: [x[18], x[19], x[20]],
+            speed_integral_m: x[21],
+            sink_rate_integral_m: x[22],
+            guidance_integral_m_s: x[23],
+        }
+    }
+}
+
+/// Random inputs drawn once per step and held over its four RK4 stages.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct HeldInputs {
+    /// White-noise inputs of the ship's shaping filters.
+    pub ship_noise: ShipNoise,
+    /// White part of the pitch-measurement error (rad).
+    pub pitch_noise_rad: f64,
+}
+
+/// Which loops run and what they track.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum LoopMode {
+    /// Pitch attitude steps by `step_rad` at `step_time_s`; outer loops off.
+    PitchStep {
+        /// Step size (rad).
+        step_rad: f64,
+        /// Time of the step (s).
+        step_time_s: f64,
+    },
+    /// Climb rate steps to `climb_rate_mps` at `step_time_s`, with the pitch feed-forward
+    /// moving to `theta_feedforward_rad`; guidance off.
+    ClimbRate {
+        /// Commanded climb rate after the step (m/s, negative descending).
+        climb_rate_mps: f64,
+        /// Time of the step (s).
+        step_time_s: f64,
+        /// Trim pitch of the commanded descent (rad).
+        theta_feedforward_rad: f64,
+    },
+    /// The full cascade following the glide path to the deck.
+    Approach,
+}
+
+/// Every signal of interest at one instant, for recorders and event detection.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Signals {
+    /// Time (s).
+    pub time_s: f64,
+    /// CG earth x (m).
+    pub x_m: f64,
+    /// CG altitude (m).
+    pub h_m: f64,
+    /// Hook earth x (m).
+    pub hook_x_m: f64,
+    /// Hook height (m).
+    pub hook_h_m: f64,
+    /// Hook climb rate (m/s).
+    pub hook_climb_rate_mps: f64,
+    /// Hook earth x rate (m/s).
+    pub hook_x_rate_mps: f64,
+    /// Reference height of the hook from the flight-path generator (m).
+    pub path_height_m: f64,
+    /// Glide-path error h_ref − h_hook (m), positive when below the path.
+    pub glide_path_error_m: f64,
+    /// Time to touchdown estimated by the generator (s).
+    pub time_to_go_s: f64,
+    /// Weight of the moving deck in the glide-path anchor (0–1).
+    pub compensation_weight: f64,
+    /// True airspeed (m/s).
+    pub airspeed_mps: f64,
+    /// Angle of attack (rad).
+    pub alpha_rad: f64,
+    /// Pitch angle (rad).
+    pub theta_rad: f64,
+    /// Measured pitch angle (rad).
+    pub theta_measured_rad: f64,
+    /// Pitch command from the sink-rate loop or the step (rad).
+    pub theta_ref_rad: f64,
+    /// Pitch rate (rad/s).
+    pub q_radps: f64,
+    /// CG climb rate ḣ (m/s).
+    pub climb_rate_mps: f64,
+    /// Climb-rate command (m/s).
+    pub climb_rate_command_mps: f64,
+    /// Elevator position (rad).
+    pub elevator_rad: f64,
+    /// Elevator command (rad).
+    pub elevator_command_rad: f64,
+    /// Total actual thrust (N).
+    pub thrust_n: f64,
+    /// Total thrust command (N).
+    pub thrust_command_n: f64,
+    /// Wind at the aircraft (earth axes).
+    pub wind: Wind,
+    /// Distance of the CG aft of the ship's pitch centre (m).
+    pub distance_aft_m: f64,
+    /// The ship's pose.
+    pub ship: ShipPose,
+    /// The rate of the ship's pose.
+    pub ship_rate: ShipPoseRate,
+    /// The moving landing point.
+    pub aim_point: EarthPoint,
+    /// The pitch controller's disturbance estimate (rad/s², O-PD only).
+    pub disturbance_estimate_radps2: Option<f64>,
+}
+
+/// The closed-loop system integrated by the simulation.
+#[derive(Debug, Clone)]
+pub struct ClosedLoop {
+    pub(crate) aircraft: Aircraft,
+    pub(crate) hook: HookGeometry,
+    pub(crate) ship: ShipMotion,
+    pub(crate) deck: DeckGeometry,
+    pub(crate) ship_initial_x_m: f64,
+    pub(crate) wind: WindModel,
+    pub(crate) sensor: PitchSensor,
+    pub(crate) pitch: PitchController,
+    pub(crate) speed: SpeedController,
+    pub(crate) sink_rate: LoopController,
+    pub(crate) guidance: LoopController,
+    pub(crate) flight_path: FlightPathGenerator,
+    pub(crate) trim: TrimPoint,
+    pub(crate) airspeed_reference_mps: f64,
+    pub(crate) mode: LoopMode,
+    pub(crate) held: HeldInputs,
+}
+
+impl ClosedLoop {
+    /// The ship's pose and its rate at time `t`.
+    #[inline]
+    pub fn ship_pose(&self, ship: &ShipMotionState, t: f64) -> (ShipPose, ShipPoseRate) {
+        (
+            self.ship.pose(ship, self.ship_initial_x_m, t),
+            self.ship.pose_rate(ship),
+        )
+    }
+
+    /// The deck reference (mean and moving landing point) for the flight-path generator.
+    #[inline]
+    pub fn deck_reference(&self, pose: &ShipPose, rate: &ShipPoseRate) -> DeckReference {
+        let mean_pose = ShipPose {
+            heave_m: 0.0,
+            pitch_rad: 0.0,
+            ..*pose
+        };
+        DeckReference {
+            mean_aim: self.deck.aim_point(&mean_pose),
+            mean_aim_velocity: EarthVelocity {
+                x_mps: rate.pitch_centre_x_rate_mps,
+                h_mps: 0.0,
+            },
+            aim: self.deck.aim_point(pose),
+            aim_velocity: self.deck.velocity_along_deck(pose, rate, 0.0),
+        }
+    }
+
+    /// The derivative of the closed loop and the signals at (t, x).
+    #[inline]
+    pub fn evaluate(&self, t: f64, x: &[f64; LOOP_DIMENSION]) -> ([f64; LOOP_DIMENSION], Signals) {
+        let s = LoopState::from_array(x);
+        let a = &s.aircraft;
+        let (pose, pose_rate) = self.ship_pose(&s.ship, t);
+        let distance_aft_m = pose.distance_aft_of_pitch_centre_m(a.x_m);
+        let wind = self.wind.wind(t, distance_aft_m);
+        let air = self.aircraft.state_air_data(a, &wind);
+        let (hook_x_m, hook_h_m) = self.hook.position(a);
+        let (hook_x_rate_mps, hook_climb_rate_mps) = self.hook.velocity(a);
+        let (_, climb_rate_mps) = a.earth_velocity_mps();
+        let trim = &self.trim;
+
+        // References: flight path → guidance → sink rate → pitch (MODEL.md §5).
+        let mut path_height_m = f64::NAN;
+        let mut time_to_go_s = f64::INFINITY;
+        let mut compensation_weight = 0.0;
+        let mut height_error = 0.0;
+        let mut climb_rate_command_mps = f64::NAN;
+        let mut sink_error = 0.0;
+        let theta_ref_rad = match self.mode {
+            LoopMode::PitchStep {
+                step_rad,
+                step_time_s,
+            } => trim.theta_rad + if t >= step_time_s { step_rad } else { 0.0 },
+            LoopMode::ClimbRate {
+                climb_rate_mps: command,
+                step_time_s,
+                theta_feedforward_rad,
+            } => {
+                let (command, base) = if t >= step_time_s {
+                    (command, theta_feedforward_rad)
+                } else {
+                    (0.0, trim.theta_rad)
+                };
+                climb_rate_command_mps = command;
+                sink_error = command - climb_rate_mps;
+                base + self
+                    .sink_rate
+                    .output(sink_error, s.sink_rate_integral_m, 0.0)
+            }
+            LoopMode::Approach => {
+                let deck = self.deck_reference(&pose, &pose_rate);
+                let path = self.flight_path.reference(hook_x_m, hook_x_rate_mps, &deck);
+                path_height_m = path.height_m;
+                time_to_go_s = path.time_to_go_s;
+                compensation_weight = path.compensation_weight;
+                height_error = path.height_m - hook_h_m;
+                let height_error_rate = path.climb_rate_mps - hook_climb_rate_mps;
+                climb_rate_command_mps = path.climb_rate_mps
+                    + self.guidance.output(
+                        height_error,
+                        s.guidance_integral_m_s,
+                        height_error_rate,
+                    );
+                sink_error = climb_rate_command_mps - climb_rate_mps;
+                trim.theta_rad
+                    + self
+                        .sink_rate
+                        .output(sink_error, s.sink_rate_integral_m, 0.0)
+            }
+        };
+
+        // Pitch controller on the measured attitude (MODEL.md §3.3, §4).
+        let theta_measured_rad = a.theta_rad + self.sensor.sinusoid(t) + self.held.pitch_noise_rad;
+        let actuator = self.aircraft.actuator();
+        let pitch_inputs = PitchControlInputs {
+            theta_ref_rad,
+            theta_measured_rad,
+            pitch_rate_measured_radps: a.q_radps,
+            elevator_actual_rad: a.elevator_rad,
+            theta_trim_rad: trim.theta_rad,
+            elevator_trim_rad: trim.elevator_rad,
+            elevator_saturation: ElevatorSaturation::from_position(
+                a.elevator_rad,
+                actuator.min_rad(),
+                actuator.max_rad(),
+                1e-9,
+            ),
+        };
+        let pitch_state = self.pitch.state_from_array(&s.pitch_controller);
+        let elevator_command_rad = self.pitch.elevator_command_rad(&pitch_state, &pitch_inputs);
+
+        // Speed loop (MODEL.md §5).
+        let speed_error = self.airspeed_reference_mps - air.airspeed_mps;
+        let thrust_command_n = self.speed.thrust_command_n(speed_error, s.speed_integral_m);
+
+        let commands = AircraftCommands {
+            elevator_rad: elevator_command_rad,
+            thrust_n: thrust_command_n,
+        };
+        let aircraft_rate = self.aircraft.derivative(a, &commands, &wind);
+        let ship_rate = self.ship.derivative(&s.ship, self.held.ship_noise);
+        let pitch_rate = self
+            .pitch
+            .derivative_array(&s.pitch_controller, &pitch_inputs);
+        let (sink_integral_rate, guidance_integral_rate) = match self.mode {
+            LoopMode::PitchStep { .. } => (0.0, 0.0),
+            LoopMode::ClimbRate { .. } => (
+                self.sink_rate
+                    .integral_rate(sink_error, s.sink_rate_integral_m, 0.0),
+                0.0,
+            ),
+            LoopMode::Approach => (
+                self.sink_rate
+                    .integral_rate(sink_error, s.sink_rate_integral_m, 0.0),
+                self.guidance
+                    .integral_rate(height_error, s.guidance_integral_m_s, 0.0),
+            ),
+        };
+        let derivative = LoopState {
+            aircraft: aircraft_rate,
+            ship: ship_rate,
+            pitch_controller: pitch_rate,
+            speed_integral_m: self.speed.integral_rate(speed_error, s.speed_integral_m),
+            sink_rate_integral_m: sink_integral_rate,
+            guidance_integral_m_s: guidance_integral_rate,
+        }
+        .to_array();
+        let signals = Signals {
+            time_s: t,
+            x_m: a.x_m,
+            h_m: a.h_m,
+            hook_x_m,
+            hook_h_m,
+            hook_climb_rate_mps,
+            hook_x_rate_mps,
+            path_height_m,
+            glide_path_error_m: height_error,
+            time_to_go_s,
+            compensation_weight,
+            airspeed_mps: air.airspeed_mps,
+            alpha_rad: air.alpha_rad,
+            theta_rad: a.theta_rad,
+            theta_measured_rad,
+            theta_ref_rad,
+            q_radps: a.q_radps,
+            climb_rate_mps,
+            climb_rate_command_mps,
+            elevator_rad: a.elevator_rad,
+            elevator_command_rad,
+            thrust_n: a.total_thrust_n(),
+            thrust_command_n,
+            wind,
+            distance_aft_m,
+            ship: pose,
+            ship_rate: pose_rate,
+            aim_point: self.deck.aim_point(&pose),
+            disturbance_estimate_radps2: pitch_state.disturbance_estimate_radps2(),
+        };
+        (derivative, signals)
+    }
+}
+
+impl OdeSystem<LOOP_DIMENSION> for ClosedLoop {
+    #[inline]
+    fn derivative(&self, t: f64, x: &[f64; LOOP_DIMENSION]) -> [f64; LOOP_DIMENSION] {
+        self.evaluate(t, x).0
+    }
+
+    fn constrain(&self, x: &mut [f64; LOOP_DIMENSION]) {
+        let mut elevator = x[8];
+        let mut rate = x[9];
+        self.aircraft.actuator().constrain(&mut elevator, &mut rate);
+        x[8] = elevator;
+        x[9] = rate;
+    }
+}
