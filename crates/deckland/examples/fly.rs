@@ -7,10 +7,16 @@ use deckland::scenario::{Mission, Scenario};
 use deckland::simulation::Simulation;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    for (conditions, base) in [("ideal", Scenario::default().ideal()), ("adverse", Scenario::default())] {
+    for (conditions, base) in [
+        ("ideal", Scenario::default().ideal()),
+        ("adverse", Scenario::default()),
+    ] {
         for (name, pitch) in [
             ("O-PD", PitchControllerParameters::default()),
-            ("PID", PitchControllerParameters::Pid(PidParameters::default())),
+            (
+                "PID",
+                PitchControllerParameters::Pid(PidParameters::default()),
+            ),
         ] {
             for mission in [Mission::Approach, Mission::pitch_step(2.0, 6.0)] {
                 let mut scenario = base;

@@ -8,14 +8,41 @@
 //! Until the last `compensation_window_s` seconds before touchdown the anchor is the
 //! *mean* landing point (ship level, no heave). Then, with deck-motion compensation on,
 //! it moves over `compensation_blend_s` seconds to the *moving* landing point predicted
-//! `deck_motion_lead_s` seconds ahead by linear extrapolation, h_L + τ·ḣ_L, so that the
-//! aircraft's lag behind its reference is partly made up (the lead of the AN/SPN-42
-//! deck-motion compensation, paper §2.1). The blend avoids a step in the reference. The
-//! rate fed forward is ḣ_L (the prediction's own acceleration term is left out).
+//! `deck_motion_lead_s` seconds ahead by linear extrapolation, ĥ_L + τ·ĥ̇_L, so that the
+//! lag of the deck filter and of the aircraft behind its reference is partly made up
+//! (the lead of the AN/SPN-42 deck-motion compensation, paper §2.1). The blend avoids a
+//! step in the reference. The rate fed forward is ĥ̇_L (the prediction's own
+//! acceleration term is left out).
+//!
+//! Two predictors of the landing point are offered ([`DeckMotionPredictor`]):
+//!
+//! - `model` (default): the minimum-variance prediction of the landing point's height at
+//!   the estimated touchdown time, from the ship-motion model
+//!   ([`crate::environment::ShipMotionPredictor`]); its expected rate of change is zero, so
+//!   nothing is fed forward and the lead is not used. Idealised: it assumes the deck
+//!   motion estimator knows the shaping filters' state.
+//! - `filter_lead`: the filtered landing point extrapolated by the lead, below.
+//!
+//! For `filter_lead`, ĥ_L and ĥ̇_L are not the raw deck signals but the states of a critically damped
+//! second-order low-pass filter ([`DeckMotionFilter`]) on the landing point's height. The
+//! raw rate contains 81 m × the ship's pitch rate, the output of the shaping filter's
+//! white-noise-driven state: continuous but rough. Fed forward unfiltered it reaches the
+//! pitch command as noise and drove the cascade into saturation and divergence.
 
 use super::pitch::ControlError;
 use crate::environment::{EarthPoint, EarthVelocity};
 use serde::{Deserialize, Serialize};
+
+/// How the landing point is predicted for deck-motion compensation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum DeckMotionPredictor {
+    /// Minimum-variance prediction at the touchdown time from the ship-motion model.
+    #[default]
+    Model,
+    /// Low-pass filtered landing point plus a linear lead of `deck_motion_lead_s`.
+    FilterLead,
+}
 
 /// Parameters of the glide path and of deck-motion compensation.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -25,12 +52,16 @@ pub struct FlightPathParameters {
     pub glide_slope_deg: f64,
     /// Follow the moving landing point in the last seconds (paper §2.1); on by default.
     pub deck_motion_compensation: bool,
+    /// How the landing point is predicted; `model` by default.
+    pub deck_motion_predictor: DeckMotionPredictor,
     /// How long before touchdown compensation starts (s); 12 s (paper §2.1).
     pub compensation_window_s: f64,
     /// How long the anchor takes to move from the mean to the moving deck (s); 2 s.
     pub compensation_blend_s: f64,
-    /// Prediction horizon of the deck-motion lead (s); 1 s.
+    /// Prediction horizon of the `filter_lead` deck-motion lead (s); 1 s.
     pub deck_motion_lead_s: f64,
+    /// Natural frequency of the critically damped deck-motion filter (rad/s); 1.0.
+    pub deck_filter_frequency_radps: f64,
 }
 
 impl Default for FlightPathParameters {
@@ -38,9 +69,11 @@ impl Default for FlightPathParameters {
         Self {
             glide_slope_deg: 3.5,
             deck_motion_compensation: true,
+            deck_motion_predictor: DeckMotionPredictor::Model,
             compensation_window_s: 12.0,
             compensation_blend_s: 2.0,
             deck_motion_lead_s: 1.0,
+            deck_filter_frequency_radps: 1.0,
         }
     }
 }
@@ -73,6 +106,16 @@ impl FlightPathParameters {
                 });
             }
         }
+        if !(self.deck_filter_frequency_radps.is_finite()
+            && self.deck_filter_frequency_radps > 0.0
+            && self.deck_filter_frequency_radps <= 100.0)
+        {
+            return Err(ControlError::OutOfRange {
+                field: "flight_path.deck_filter_frequency_radps",
+                value: self.deck_filter_frequency_radps,
+                expected: "a frequency in (0, 100] rad/s",
+            });
+        }
         if !(self.compensation_blend_s.is_finite() && self.compensation_blend_s > 0.0) {
             return Err(ControlError::NonPositive {
                 field: "flight_path.compensation_blend_s",
@@ -83,16 +126,42 @@ impl FlightPathParameters {
     }
 }
 
-/// Where the deck is, for the generator: the mean and the actual landing point.
+/// Critically damped second-order low-pass filter on the landing point's height:
+/// ĥ̈ = ω²(h_L − ĥ) − 2ω·ĥ̇. Its two states are the smooth height and rate estimates.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DeckMotionFilter {
+    omega: f64,
+}
+
+impl DeckMotionFilter {
+    /// A filter of natural frequency `frequency_radps` (rad/s).
+    pub fn new(frequency_radps: f64) -> Self {
+        Self {
+            omega: frequency_radps,
+        }
+    }
+
+    /// Derivatives of (ĥ, ĥ̇) given the measured landing-point height (m).
+    #[inline]
+    pub fn derivative(&self, estimate: [f64; 2], measured_height_m: f64) -> [f64; 2] {
+        [
+            estimate[1],
+            self.omega * self.omega * (measured_height_m - estimate[0])
+                - 2.0 * self.omega * estimate[1],
+        ]
+    }
+}
+
+/// Where the deck is, for the generator: the mean and the (filtered) landing point.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DeckReference {
     /// The landing point with the ship level and at its mean height.
     pub mean_aim: EarthPoint,
     /// Velocity of the mean landing point (the ship's speed).
     pub mean_aim_velocity: EarthVelocity,
-    /// The actual, moving landing point.
+    /// The moving landing point (its filtered estimate in the simulation).
     pub aim: EarthPoint,
-    /// Its velocity.
+    /// Its velocity (filtered estimate).
     pub aim_velocity: EarthVelocity,
 }
 
@@ -136,7 +205,27 @@ impl FlightPathGenerator {
         self.tan_slope
     }
 
-    /// The reference for a hook at earth x `hook_x_m` moving at `hook_x_rate_mps`.
+    /// Estimated time to touchdown (s) of a hook at `hook_x_m` moving at `hook_x_rate_mps`
+    /// towards the mean landing point `mean_aim_x_m` moving at `mean_aim_x_rate_mps`:
+    /// range over closure speed; infinite when not closing.
+    #[inline]
+    pub fn time_to_go_s(
+        &self,
+        hook_x_m: f64,
+        hook_x_rate_mps: f64,
+        mean_aim_x_m: f64,
+        mean_aim_x_rate_mps: f64,
+    ) -> f64 {
+        let closure = hook_x_rate_mps - mean_aim_x_rate_mps;
+        if closure > 0.0 {
+            (mean_aim_x_m - hook_x_m) / closure
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    /// The reference for a hook at earth x `hook_x_m` moving at `hook_x_rate_mps`, given
+    /// the (predicted) landing point in `deck`.
     #[inline]
     pub fn reference(
         &self,
@@ -145,13 +234,13 @@ impl FlightPathGenerator {
         deck: &DeckReference,
     ) -> PathReference {
         let p = &self.parameters;
-        let closure = hook_x_rate_mps - deck.mean_aim_velocity.x_mps;
         let range = deck.mean_aim.x_m - hook_x_m;
-        let time_to_go_s = if closure > 0.0 {
-            range / closure
-        } else {
-            f64::INFINITY
-        };
+        let time_to_go_s = self.time_to_go_s(
+            hook_x_m,
+            hook_x_rate_mps,
+            deck.mean_aim.x_m,
+            deck.mean_aim_velocity.x_mps,
+        );
         let (weight, weight_rate) = if p.deck_motion_compensation {
             let w = (p.compensation_window_s - time_to_go_s) / p.compensation_blend_s;
             if w <= 0.0 {
@@ -165,7 +254,11 @@ impl FlightPathGenerator {
         } else {
             (0.0, 0.0)
         };
-        let predicted = deck.aim.h_m + p.deck_motion_lead_s * deck.aim_velocity.h_mps;
+        let lead_s = match p.deck_motion_predictor {
+            DeckMotionPredictor::Model => 0.0,
+            DeckMotionPredictor::FilterLead => p.deck_motion_lead_s,
+        };
+        let predicted = deck.aim.h_m + lead_s * deck.aim_velocity.h_mps;
         let offset = predicted - deck.mean_aim.h_m;
         let anchor_h = deck.mean_aim.h_m + weight * offset;
         let anchor_h_rate = deck.mean_aim_velocity.h_mps
@@ -219,7 +312,11 @@ mod tests {
 
     #[test]
     fn close_in_the_path_follows_the_predicted_moving_deck() {
-        let generator = FlightPathGenerator::new(FlightPathParameters::default()).unwrap();
+        let generator = FlightPathGenerator::new(FlightPathParameters {
+            deck_motion_predictor: DeckMotionPredictor::FilterLead,
+            ..Default::default()
+        })
+        .unwrap();
         // 5 s to go: fully compensated. Anchor = 23 + 1.0 s · 1 m/s = 24 m.
         let r = generator.reference(-300.0, 60.0, &deck(23.0, 1.0));
         assert_eq!(r.compensation_weight, 1.0);
@@ -242,6 +339,29 @@ mod tests {
         let r = off.reference(-100.0, 60.0, &deck(24.0, 1.0));
         assert_eq!(r.compensation_weight, 0.0);
         assert!((r.height_m - (20.0 + 100.0 * generator.tan_slope())).abs() < 1e-9);
+    }
+
+    #[test]
+    fn deck_filter_passes_slow_motion_and_settles_on_a_constant() {
+        use crate::integration::{rk4_step, OdeSystem};
+        struct Alone(DeckMotionFilter, f64);
+        impl OdeSystem<2> for Alone {
+            fn derivative(&self, t: f64, x: &[f64; 2]) -> [f64; 2] {
+                self.0.derivative(*x, (self.1 * t).sin())
+            }
+        }
+        // Input sin(0.1 t): a critically damped filter at 1 rad/s has gain
+        // 1/(1 + 0.1²) = 0.990 there (|1/(1 + s)²| at s = 0.1i).
+        let system = Alone(DeckMotionFilter::new(1.0), 0.1);
+        let mut x = [0.0, 0.1];
+        let mut peak: f64 = 0.0;
+        for k in 0..200_000 {
+            x = rk4_step(&system, k as f64 * 1e-3, &x, 1e-3);
+            if k > 100_000 {
+                peak = peak.max(x[0].abs());
+            }
+        }
+        assert!((peak - 1.0 / 1.01).abs() < 2e-3, "{peak}");
     }
 
     #[test]

@@ -10,7 +10,10 @@ pub mod pitch;
 mod sink_rate;
 mod speed;
 
-pub use flight_path::{DeckReference, FlightPathGenerator, FlightPathParameters, PathReference};
+pub use flight_path::{
+    DeckMotionFilter, DeckMotionPredictor, DeckReference, FlightPathGenerator,
+    FlightPathParameters, PathReference,
+};
 pub use guidance::GuidanceParameters;
 pub use loop_controller::{LoopController, LoopGains};
 pub use pitch::ControlError;

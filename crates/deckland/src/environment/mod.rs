@@ -11,6 +11,7 @@ mod deck;
 mod error;
 pub mod lyapunov;
 mod ship;
+mod ship_prediction;
 mod ship_simulator;
 mod turbulence;
 mod wind;
@@ -22,6 +23,7 @@ pub use ship::{
     ShipMotion, ShipMotionOutputs, ShipMotionParameters, ShipMotionState, ShipNoise,
     HEAVE_FILTER_GAIN, PITCH_FILTER_GAIN, SHAPING_FILTER_DENOMINATOR,
 };
+pub use ship_prediction::{PredictedShipMotion, ShipMotionPredictor};
 pub use ship_simulator::ShipMotionSimulator;
 pub use turbulence::Turbulence;
 pub use wind::{

@@ -5,16 +5,19 @@
 use crate::aircraft::{Aircraft, AircraftCommands, AircraftState, HookGeometry};
 use crate::analysis::TrimPoint;
 use crate::control::pitch::{ElevatorSaturation, PitchControlInputs, PitchController};
-use crate::control::{DeckReference, FlightPathGenerator, LoopController, SpeedController};
+use crate::control::{
+    DeckMotionFilter, DeckMotionPredictor, DeckReference, FlightPathGenerator, LoopController,
+    SpeedController,
+};
 use crate::environment::{
-    DeckGeometry, EarthPoint, EarthVelocity, ShipMotion, ShipMotionState, ShipNoise, ShipPose,
-    ShipPoseRate, Wind, WindModel,
+    DeckGeometry, EarthPoint, EarthVelocity, ShipMotion, ShipMotionPredictor, ShipMotionState,
+    ShipNoise, ShipPose, ShipPoseRate, Wind, WindModel,
 };
 use crate::integration::OdeSystem;
 use crate::sensors::PitchSensor;
 
 /// Number of scalar states of the closed loop.
-pub const LOOP_DIMENSION: usize = AircraftState::DIMENSION + ShipMotionState::DIMENSION + 3 + 3;
+pub const LOOP_DIMENSION: usize = AircraftState::DIMENSION + ShipMotionState::DIMENSION + 3 + 3 + 2;
 
 /// The closed loop's state, as named parts.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -31,6 +34,8 @@ pub struct LoopState {
     pub sink_rate_integral_m: f64,
     /// ∫ hook height error dt (m·s).
     pub guidance_integral_m_s: f64,
+    /// Filtered landing-point height ĥ_L (m) and rate ĥ̇_L (m/s).
+    pub deck_estimate: [f64; 2],
 }
 
 impl LoopState {
@@ -44,6 +49,8 @@ impl LoopState {
         x[21] = self.speed_integral_m;
         x[22] = self.sink_rate_integral_m;
         x[23] = self.guidance_integral_m_s;
+        x[24] = self.deck_estimate[0];
+        x[25] = self.deck_estimate[1];
         x
     }
 
@@ -61,6 +68,7 @@ impl LoopState {
             speed_integral_m: x[21],
             sink_rate_integral_m: x[22],
             guidance_integral_m_s: x[23],
+            deck_estimate: [x[24], x[25]],
         }
     }
 }
@@ -176,6 +184,8 @@ pub struct ClosedLoop {
     pub(crate) sink_rate: LoopController,
     pub(crate) guidance: LoopController,
     pub(crate) flight_path: FlightPathGenerator,
+    pub(crate) deck_filter: DeckMotionFilter,
+    pub(crate) predictor: ShipMotionPredictor,
     pub(crate) trim: TrimPoint,
     pub(crate) airspeed_reference_mps: f64,
     pub(crate) mode: LoopMode,
@@ -192,22 +202,64 @@ impl ClosedLoop {
         )
     }
 
-    /// The deck reference (mean and moving landing point) for the flight-path generator.
+    /// The deck reference for the flight-path generator: the mean landing point and the
+    /// predicted moving one, by the configured [`DeckMotionPredictor`]: the model's
+    /// prediction at the touchdown time (rate zero), or the filtered estimate
+    /// `deck_estimate` (ĥ_L, ĥ̇_L).
     #[inline]
-    pub fn deck_reference(&self, pose: &ShipPose, rate: &ShipPoseRate) -> DeckReference {
+    pub fn deck_reference(
+        &self,
+        state: &LoopState,
+        pose: &ShipPose,
+        rate: &ShipPoseRate,
+        hook_x_m: f64,
+        hook_x_rate_mps: f64,
+    ) -> DeckReference {
         let mean_pose = ShipPose {
             heave_m: 0.0,
             pitch_rad: 0.0,
             ..*pose
         };
+        let mean_aim = self.deck.aim_point(&mean_pose);
+        let mean_aim_velocity = EarthVelocity {
+            x_mps: rate.pitch_centre_x_rate_mps,
+            h_mps: 0.0,
+        };
+        let (aim, aim_velocity) = match self.flight_path.parameters().deck_motion_predictor {
+            DeckMotionPredictor::Model => {
+                let horizon_s = self.flight_path.time_to_go_s(
+                    hook_x_m,
+                    hook_x_rate_mps,
+                    mean_aim.x_m,
+                    mean_aim_velocity.x_mps,
+                );
+                let predicted = self.predictor.predict(&self.ship, &state.ship, horizon_s);
+                let predicted_pose = ShipPose {
+                    heave_m: predicted.heave_m,
+                    pitch_rad: predicted.pitch_rad,
+                    ..*pose
+                };
+                (self.deck.aim_point(&predicted_pose), mean_aim_velocity)
+            }
+            DeckMotionPredictor::FilterLead => {
+                let aim = self.deck.aim_point(pose);
+                (
+                    EarthPoint {
+                        x_m: aim.x_m,
+                        h_m: state.deck_estimate[0],
+                    },
+                    EarthVelocity {
+                        x_mps: self.deck.velocity_along_deck(pose, rate, 0.0).x_mps,
+                        h_mps: state.deck_estimate[1],
+                    },
+                )
+            }
+        };
         DeckReference {
-            mean_aim: self.deck.aim_point(&mean_pose),
-            mean_aim_velocity: EarthVelocity {
-                x_mps: rate.pitch_centre_x_rate_mps,
-                h_mps: 0.0,
-            },
-            aim: self.deck.aim_point(pose),
-            aim_velocity: self.deck.velocity_along_deck(pose, rate, 0.0),
+            mean_aim,
+            mean_aim_velocity,
+            aim,
+            aim_velocity,
         }
     }
 
@@ -254,7 +306,7 @@ impl ClosedLoop {
                     .output(sink_error, s.sink_rate_integral_m, 0.0)
             }
             LoopMode::Approach => {
-                let deck = self.deck_reference(&pose, &pose_rate);
+                let deck = self.deck_reference(&s, &pose, &pose_rate, hook_x_m, hook_x_rate_mps);
                 let path = self.flight_path.reference(hook_x_m, hook_x_rate_mps, &deck);
                 path_height_m = path.height_m;
                 time_to_go_s = path.time_to_go_s;
@@ -305,6 +357,7 @@ impl ClosedLoop {
         };
         let aircraft_rate = self.aircraft.derivative(a, &commands, &wind);
         let ship_rate = self.ship.derivative(&s.ship, self.held.ship_noise);
+        let aim_point = self.deck.aim_point(&pose);
         let pitch_rate = self
             .pitch
             .derivative_array(&s.pitch_controller, &pitch_inputs);
@@ -329,6 +382,7 @@ impl ClosedLoop {
             speed_integral_m: self.speed.integral_rate(speed_error, s.speed_integral_m),
             sink_rate_integral_m: sink_integral_rate,
             guidance_integral_m_s: guidance_integral_rate,
+            deck_estimate: self.deck_filter.derivative(s.deck_estimate, aim_point.h_m),
         }
         .to_array();
         let signals = Signals {
@@ -359,7 +413,7 @@ impl ClosedLoop {
             distance_aft_m,
             ship: pose,
             ship_rate: pose_rate,
-            aim_point: self.deck.aim_point(&pose),
+            aim_point,
             disturbance_estimate_radps2: pitch_state.disturbance_estimate_radps2(),
         };
         (derivative, signals)

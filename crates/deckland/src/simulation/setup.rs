@@ -5,8 +5,10 @@ use super::closed_loop::{ClosedLoop, HeldInputs, LoopMode, LoopState};
 use crate::aircraft::{Aircraft, AircraftError, AircraftState};
 use crate::analysis::{linearize, trim, TrimError, TrimPoint, TrimRequest};
 use crate::control::pitch::{PitchController, PitchPlantDerivatives};
-use crate::control::{ControlError, FlightPathGenerator, SpeedController};
-use crate::environment::{mean_wind, EnvironmentError, ShipMotion, Wind, WindModel};
+use crate::control::{ControlError, DeckMotionFilter, FlightPathGenerator, SpeedController};
+use crate::environment::{
+    mean_wind, EnvironmentError, ShipMotion, ShipMotionPredictor, Wind, WindModel,
+};
 use crate::random::{stream_names, NoiseStream, RandomStreams};
 use crate::scenario::{Mission, Scenario};
 use crate::sensors::PitchSensor;
@@ -339,10 +341,18 @@ pub(crate) fn build(scenario: &Scenario) -> Result<Setup, SimulationError> {
     };
     let aircraft_state: AircraftState = trim_point.state(x_m, h_m, &steady_wind);
     let pitch_state = pitch.initial_state(trim_point.theta_rad, trim_point.theta_rad);
+    let (pose, pose_rate) = (
+        ship.pose(&ship_state, ship_initial_x_m, 0.0),
+        ship.pose_rate(&ship_state),
+    );
     let initial = LoopState {
         aircraft: aircraft_state,
         ship: ship_state,
         pitch_controller: pitch_state.to_array(),
+        deck_estimate: [
+            deck.aim_point(&pose).h_m,
+            deck.velocity_along_deck(&pose, &pose_rate, 0.0).h_mps,
+        ],
         ..Default::default()
     };
     let system = ClosedLoop {
@@ -358,6 +368,13 @@ pub(crate) fn build(scenario: &Scenario) -> Result<Setup, SimulationError> {
         sink_rate: scenario.control.sink_rate.controller(),
         guidance: scenario.control.guidance.controller(),
         flight_path,
+        deck_filter: DeckMotionFilter::new(
+            scenario.control.flight_path.deck_filter_frequency_radps,
+        ),
+        predictor: ShipMotionPredictor::new(
+            scenario.control.flight_path.compensation_window_s
+                + scenario.control.flight_path.compensation_blend_s,
+        ),
         trim: trim_point,
         airspeed_reference_mps: airspeed,
         mode,
