@@ -1,5 +1,6 @@
 //! One module per `deckland` subcommand.
 
+pub mod common;
 pub mod environment;
 pub mod linearize;
 pub mod trim;

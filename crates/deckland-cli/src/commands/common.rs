@@ -1,0 +1,63 @@
+//! Options shared by the simulation commands (`step`, `land`, `sink`).
+
+use clap::ValueEnum;
+use deckland::control::pitch::{PidParameters, PitchControllerParameters};
+use deckland::scenario::Scenario;
+
+/// Which pitch controller flies.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ControllerChoice {
+    /// Observer-based PD (paper Eq. 30–36).
+    Opd,
+    /// PID with the paper's gains (Eq. 37).
+    Pid,
+}
+
+impl ControllerChoice {
+    /// The controller's parameters with their defaults.
+    pub fn parameters(self) -> PitchControllerParameters {
+        match self {
+            Self::Opd => PitchControllerParameters::default(),
+            Self::Pid => PitchControllerParameters::Pid(PidParameters::default()),
+        }
+    }
+
+    /// Short label for tables, legends and file names.
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::Opd => "O-PD",
+            Self::Pid => "PID",
+        }
+    }
+}
+
+/// Which disturbances act.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Conditions {
+    /// No wind, no sensor noise, no deck motion.
+    Ideal,
+    /// Wind, air wake, turbulence, sensor noise and deck motion at their defaults.
+    Adverse,
+}
+
+impl Conditions {
+    /// The default scenario in these conditions, with `seed`.
+    pub fn scenario(self, seed: u64) -> Scenario {
+        let base = Scenario {
+            seed,
+            ..Scenario::default()
+        };
+        match self {
+            Self::Ideal => base.ideal(),
+            Self::Adverse => base,
+        }
+    }
+
+    /// The name as written in files.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Ideal => "ideal",
+            Self::Adverse => "adverse",
+        }
+    }
+}
