@@ -22,6 +22,10 @@ enum Command {
     Trim(commands::trim::TrimArgs),
     /// Linearise about a trim point (paper Eq. 14 form): A, B, eigenvalues and modes.
     Linearize(commands::trim::TrimArgs),
+    /// Fly one approach to the moving deck (the main job): CSV, summary and plots.
+    Land(commands::land::LandArgs),
+    /// Track a constant commanded sink rate from level flight (paper Fig. 13).
+    Sink(commands::sink::SinkArgs),
     /// Simulate the ship motion and the wind alone; write a CSV and plots (paper Fig. 7, 8).
     Environment(commands::environment::EnvironmentArgs),
 }
@@ -31,6 +35,8 @@ fn run(cli: &Cli) -> Result<()> {
         Command::Trim(args) => commands::trim::run(args),
         Command::Linearize(args) => commands::linearize::run(args),
         Command::Environment(args) => commands::environment::run(args),
+        Command::Land(args) => commands::land::run(args),
+        Command::Sink(args) => commands::sink::run(args),
     }
 }
 

@@ -2,5 +2,7 @@
 
 pub mod common;
 pub mod environment;
+pub mod land;
 pub mod linearize;
+pub mod sink;
 pub mod trim;

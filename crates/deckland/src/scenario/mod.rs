@@ -119,6 +119,9 @@ pub enum Mission {
         sink_rate_mps: f64,
         /// Time of the command after the start (s).
         step_time_s: f64,
+        /// Time over which the command (and its pitch feed-forward) ramps from zero to its
+        /// value (s); 0 is a step.
+        ramp_s: f64,
         /// Length of the run (s).
         duration_s: f64,
         /// Altitude at the start (m).
@@ -138,11 +141,13 @@ impl Mission {
         }
     }
 
-    /// A sink-rate command of `sink_rate_mps` lasting `duration_s`, with the other defaults.
-    pub fn sink_rate(sink_rate_mps: f64, duration_s: f64) -> Self {
+    /// A sink-rate command of `sink_rate_mps` ramped in over `ramp_s` and lasting
+    /// `duration_s`, with the other defaults.
+    pub fn sink_rate(sink_rate_mps: f64, ramp_s: f64, duration_s: f64) -> Self {
         Self::SinkRate {
             sink_rate_mps,
             step_time_s: 1.0,
+            ramp_s,
             duration_s,
             altitude_m: 600.0,
         }

@@ -92,13 +92,15 @@ pub enum LoopMode {
         /// Time of the step (s).
         step_time_s: f64,
     },
-    /// Climb rate steps to `climb_rate_mps` at `step_time_s`, with the pitch feed-forward
-    /// moving to `theta_feedforward_rad`; guidance off.
+    /// Climb rate ramps to `climb_rate_mps` over `ramp_s` from `step_time_s`, with the
+    /// pitch feed-forward moving to `theta_feedforward_rad` alike; guidance off.
     ClimbRate {
-        /// Commanded climb rate after the step (m/s, negative descending).
+        /// Commanded climb rate after the ramp (m/s, negative descending).
         climb_rate_mps: f64,
-        /// Time of the step (s).
+        /// Start of the command (s).
         step_time_s: f64,
+        /// Ramp time (s); 0 is a step.
+        ramp_s: f64,
         /// Trim pitch of the commanded descent (rad).
         theta_feedforward_rad: f64,
     },
@@ -292,13 +294,18 @@ impl ClosedLoop {
             LoopMode::ClimbRate {
                 climb_rate_mps: command,
                 step_time_s,
+                ramp_s,
                 theta_feedforward_rad,
             } => {
-                let (command, base) = if t >= step_time_s {
-                    (command, theta_feedforward_rad)
+                let fraction = if t < step_time_s {
+                    0.0
+                } else if ramp_s > 0.0 {
+                    ((t - step_time_s) / ramp_s).min(1.0)
                 } else {
-                    (0.0, trim.theta_rad)
+                    1.0
                 };
+                let command = fraction * command;
+                let base = trim.theta_rad + fraction * (theta_feedforward_rad - trim.theta_rad);
                 climb_rate_command_mps = command;
                 sink_error = command - climb_rate_mps;
                 base + self

@@ -151,9 +151,17 @@ impl Scenario {
             Mission::SinkRate {
                 sink_rate_mps,
                 step_time_s,
+                ramp_s,
                 duration_s,
                 altitude_m,
             } => {
+                check_range(
+                    "mission.ramp_s",
+                    ramp_s,
+                    0.0,
+                    duration_s,
+                    "a ramp time within the run",
+                )?;
                 check_range(
                     "mission.sink_rate_mps",
                     sink_rate_mps,
@@ -280,6 +288,7 @@ pub(crate) fn build(scenario: &Scenario) -> Result<Setup, SimulationError> {
         Mission::SinkRate {
             sink_rate_mps,
             step_time_s,
+            ramp_s,
             duration_s,
             ..
         } => {
@@ -295,6 +304,7 @@ pub(crate) fn build(scenario: &Scenario) -> Result<Setup, SimulationError> {
                 LoopMode::ClimbRate {
                     climb_rate_mps: -sink_rate_mps,
                     step_time_s,
+                    ramp_s,
                     theta_feedforward_rad: descent.theta_rad,
                 },
                 duration_s,
