@@ -62,6 +62,8 @@ pub struct ApproachParameters {
     pub start_range_m: f64,
     /// Approach airspeed, the speed loop's reference (m/s); 69.1 m/s (Table 3).
     pub airspeed_mps: f64,
+    /// Start height of the hook above the glide path (m); 0.
+    pub start_height_offset_m: f64,
 }
 
 impl Default for ApproachParameters {
@@ -69,6 +71,7 @@ impl Default for ApproachParameters {
         Self {
             start_range_m: 1500.0,
             airspeed_mps: 69.1,
+            start_height_offset_m: 0.0,
         }
     }
 }

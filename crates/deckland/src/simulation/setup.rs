@@ -90,6 +90,13 @@ impl Scenario {
             "an airspeed between 40 and 150 m/s",
         )?;
         check_range(
+            "approach.start_height_offset_m",
+            self.approach.start_height_offset_m,
+            -50.0,
+            50.0,
+            "an offset between -50 and 50 m",
+        )?;
+        check_range(
             "outcome.hard_landing_sink_rate_mps",
             self.outcome.hard_landing_sink_rate_mps,
             0.0,
@@ -339,7 +346,8 @@ pub(crate) fn build(scenario: &Scenario) -> Result<Setup, SimulationError> {
         Mission::Approach => {
             let range = scenario.approach.start_range_m;
             let hook_x = -range;
-            let hook_h = deck.deck_height_m + range * slope.tan();
+            let hook_h =
+                deck.deck_height_m + range * slope.tan() + scenario.approach.start_height_offset_m;
             (hook_x - hook_dx, hook_h - hook_dh)
         }
         Mission::PitchStep {

@@ -1,0 +1,165 @@
+//! `deckland land` and `deckland sink`: output files, JSON contract, refusal to overwrite.
+
+#![allow(clippy::unwrap_used)] // tests fail loudly by design
+
+use serde_json::Value;
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn deckland(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_deckland"))
+        .args(args)
+        .output()
+        .expect("the deckland binary runs")
+}
+
+fn temp_dir(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("deckland-test-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    dir
+}
+
+fn file_size(path: &Path) -> u64 {
+    std::fs::metadata(path).map(|m| m.len()).unwrap_or(0)
+}
+
+#[test]
+fn land_writes_every_result_and_prints_the_json_summary() {
+    let dir = temp_dir("land");
+    let out = dir.to_str().unwrap();
+    let output = deckland(&["land", "--conditions", "ideal", "--out", out, "--json"]);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let v: Value = serde_json::from_slice(&output.stdout).unwrap();
+    assert_eq!(v["outcome"], "trap");
+    assert_eq!(v["wire"], 3);
+    for field in [
+        "time_s",
+        "distance_from_aim_m",
+        "sink_rate_mps",
+        "pitch_deg",
+        "airspeed_mps",
+    ] {
+        assert!(v["touchdown"][field].is_number(), "touchdown.{field}");
+    }
+    for field in [
+        "ramp_clearance_m",
+        "glide_path_error_rms_m",
+        "glide_path_error_max_m",
+    ] {
+        assert!(v[field].is_number(), "{field}");
+    }
+    let summary: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary, v);
+    let csv = std::fs::read_to_string(dir.join("approach.csv")).unwrap();
+    let header = csv.lines().next().unwrap();
+    for column in [
+        "time_s",
+        "hook_height_m",
+        "glide_path_error_m",
+        "theta_deg",
+        "elevator_deg",
+    ] {
+        assert!(header.split(',').any(|c| c == column), "column {column}");
+    }
+    // About 21.8 s at one row per 10 ms.
+    let rows = csv.lines().count() - 1;
+    assert!((2000..2300).contains(&rows), "{rows} rows");
+    let scenario = std::fs::read_to_string(dir.join("scenario.toml")).unwrap();
+    assert!(scenario.contains("seed = 1") && scenario.contains("[control.guidance]"));
+    for stem in [
+        "altitude",
+        "glide_path_error",
+        "pitch",
+        "controls",
+        "airspeed",
+        "wind",
+    ] {
+        assert!(
+            file_size(&dir.join(format!("{stem}.png"))) > 10_000,
+            "{stem}.png"
+        );
+        assert!(
+            file_size(&dir.join(format!("{stem}.svg"))) > 10_000,
+            "{stem}.svg"
+        );
+    }
+    let leftovers: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .filter(|e| e.file_name().to_string_lossy().contains(".tmp"))
+        .collect();
+    assert!(leftovers.is_empty());
+
+    // A second run into the same folder is refused without --force, allowed with it.
+    let again = deckland(&["land", "--conditions", "ideal", "--out", out]);
+    assert!(!again.status.success());
+    assert!(String::from_utf8_lossy(&again.stderr).contains("--force"));
+    let forced = deckland(&["land", "--conditions", "ideal", "--out", out, "--force"]);
+    assert!(forced.status.success());
+    let text = String::from_utf8(forced.stdout).unwrap();
+    assert!(text.contains("trap (wire 3)"), "{text}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn land_adverse_pid_runs_and_reports_an_outcome() {
+    let dir = temp_dir("land-pid");
+    let output = deckland(&[
+        "land",
+        "--controller",
+        "pid",
+        "--seed",
+        "3",
+        "--out",
+        dir.to_str().unwrap(),
+        "--json",
+    ]);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let v: Value = serde_json::from_slice(&output.stdout).unwrap();
+    assert_eq!(v["controller"], "PID");
+    assert_eq!(v["seed"], 3);
+    assert!(v["outcome"].is_string());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn sink_tracks_a_ramped_command_and_reports_the_paper_step_as_diverged() {
+    let dir = temp_dir("sink");
+    let out = dir.to_str().unwrap();
+    let output = deckland(&[
+        "sink",
+        "--sink-rate",
+        "5",
+        "--seconds",
+        "25",
+        "--out",
+        out,
+        "--json",
+    ]);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let v: Value = serde_json::from_slice(&output.stdout).unwrap();
+    assert_eq!(v["outcome"], "completed");
+    assert_eq!(v["metrics"]["settled"], true);
+    assert!(v["metrics"]["steady_state_error"].as_f64().unwrap().abs() < 0.1);
+    assert!(file_size(&dir.join("sink_rate.png")) > 10_000);
+    // The paper's 10 m/s step without shaping drives α out of the model's range.
+    let step = deckland(&["sink", "--ramp-s", "0", "--out", out, "--force", "--json"]);
+    assert!(step.status.success());
+    let v: Value = serde_json::from_slice(&step.stdout).unwrap();
+    assert_eq!(v["outcome"], "diverged");
+    assert!(v["reason"].as_str().unwrap().contains("angle of attack"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
