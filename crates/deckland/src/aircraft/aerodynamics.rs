@@ -32,6 +32,20 @@ pub fn aerodynamic_coefficients(
     q_hat: f64,
     configuration: &AerodynamicConfiguration,
 ) -> AerodynamicCoefficients {
+    let (sin_a, cos_a) = alpha.sin_cos();
+    aerodynamic_coefficients_trig(alpha, sin_a, cos_a, elevator, q_hat, configuration)
+}
+
+/// As [`aerodynamic_coefficients`], with sin α and cos α already computed.
+#[inline]
+pub fn aerodynamic_coefficients_trig(
+    alpha: f64,
+    sin_a: f64,
+    cos_a: f64,
+    elevator: f64,
+    q_hat: f64,
+    configuration: &AerodynamicConfiguration,
+) -> AerodynamicCoefficients {
     let a = alpha;
     let a2 = a * a;
     let a3 = a2 * a;
@@ -49,7 +63,6 @@ pub fn aerodynamic_coefficients(
         + (-0.9051 - 0.3245 * a + 0.9338 * a2) * elevator
         + (-4.1186 + 10.9921 * a - 68.5641 * a2 + 64.7190 * a3) * q_hat
         + configuration.moment_coefficient_increment;
-    let (sin_a, cos_a) = a.sin_cos();
     let normal = lift * cos_a + drag * sin_a;
     AerodynamicCoefficients {
         lift,

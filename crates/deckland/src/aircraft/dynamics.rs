@@ -15,7 +15,9 @@
 //! corrected (the `q` term and the `/V` on gravity in α̇); a test checks that.
 
 use super::actuator::{ElevatorActuator, ElevatorActuatorParameters};
+#[cfg(test)]
 use super::aerodynamics::aerodynamic_coefficients;
+use super::aerodynamics::aerodynamic_coefficients_trig;
 use super::configuration::AerodynamicConfiguration;
 use super::engine::{EngineParameters, Engines};
 use super::error::AircraftError;
@@ -52,6 +54,10 @@ pub struct AirData {
     pub alpha_rad: f64,
     /// Dynamic pressure q̄ = ½ρV_T² (Pa).
     pub dynamic_pressure_pa: f64,
+    /// sin α = w_a/V_T (–).
+    pub sin_alpha: f64,
+    /// cos α = u_a/V_T (–).
+    pub cos_alpha: f64,
 }
 
 /// The complete longitudinal F/A-18 plant.
@@ -132,15 +138,28 @@ impl Aircraft {
     #[inline]
     pub fn air_data(&self, u: f64, w: f64, theta: f64, wind: &Wind) -> AirData {
         let (sin_t, cos_t) = theta.sin_cos();
+        self.air_data_trig(u, w, sin_t, cos_t, wind)
+    }
+
+    /// As [`Aircraft::air_data`], with sin θ and cos θ already computed.
+    #[inline]
+    pub fn air_data_trig(&self, u: f64, w: f64, sin_t: f64, cos_t: f64, wind: &Wind) -> AirData {
         let wind_xb = wind.x_mps * cos_t - wind.z_mps * sin_t;
         let wind_zb = wind.x_mps * sin_t + wind.z_mps * cos_t;
         let ua = u - wind_xb;
         let wa = w - wind_zb;
         let airspeed = (ua * ua + wa * wa).sqrt();
+        let (sin_alpha, cos_alpha) = if airspeed > 0.0 {
+            (wa / airspeed, ua / airspeed)
+        } else {
+            (0.0, 1.0)
+        };
         AirData {
             airspeed_mps: airspeed,
             alpha_rad: wa.atan2(ua),
             dynamic_pressure_pa: 0.5 * self.parameters.air_density_kg_m3 * airspeed * airspeed,
+            sin_alpha,
+            cos_alpha,
         }
     }
 
@@ -160,11 +179,30 @@ impl Aircraft {
         inputs: &AirframeInputs,
         wind: &Wind,
     ) -> BodyAccelerations {
+        let (sin_t, cos_t) = theta.sin_cos();
+        let air = self.air_data_trig(u, w, sin_t, cos_t, wind);
+        self.body_accelerations_from(u, w, q, sin_t, cos_t, inputs, &air)
+    }
+
+    #[inline]
+    #[allow(clippy::too_many_arguments)]
+    fn body_accelerations_from(
+        &self,
+        u: f64,
+        w: f64,
+        q: f64,
+        sin_t: f64,
+        cos_t: f64,
+        inputs: &AirframeInputs,
+        air: &AirData,
+    ) -> BodyAccelerations {
         let p = &self.parameters;
-        let air = self.air_data(u, w, theta, wind);
         let q_hat = q * p.mean_chord_m / (2.0 * air.airspeed_mps);
-        let c = aerodynamic_coefficients(
+        let (sin_a, cos_a) = (air.sin_alpha, air.cos_alpha);
+        let c = aerodynamic_coefficients_trig(
             air.alpha_rad,
+            sin_a,
+            cos_a,
             inputs.elevator_rad,
             q_hat,
             &self.configuration,
@@ -172,8 +210,6 @@ impl Aircraft {
         let qs = air.dynamic_pressure_pa * p.wing_area_m2;
         let lift = qs * c.lift;
         let drag = qs * c.drag;
-        let (sin_a, cos_a) = air.alpha_rad.sin_cos();
-        let (sin_t, cos_t) = theta.sin_cos();
         let force_x = lift * sin_a - drag * cos_a + inputs.thrust_n;
         let force_z = -lift * cos_a - drag * sin_a;
         BodyAccelerations {
@@ -207,19 +243,37 @@ impl Aircraft {
         commands: &AircraftCommands,
         wind: &Wind,
     ) -> AircraftState {
+        let (sin_t, cos_t) = state.theta_rad.sin_cos();
+        let air = self.air_data_trig(state.u_mps, state.w_mps, sin_t, cos_t, wind);
+        self.derivative_from(state, commands, &air, sin_t, cos_t)
+    }
+
+    /// As [`Aircraft::derivative`], with the air data (computed with the same wind) and
+    /// sin θ, cos θ already at hand: the closed loop needs them for its own signals too.
+    #[inline]
+    pub fn derivative_from(
+        &self,
+        state: &AircraftState,
+        commands: &AircraftCommands,
+        air: &AirData,
+        sin_t: f64,
+        cos_t: f64,
+    ) -> AircraftState {
         let inputs = AirframeInputs {
             elevator_rad: state.elevator_rad,
             thrust_n: state.total_thrust_n(),
         };
-        let body = self.body_accelerations(
+        let body = self.body_accelerations_from(
             state.u_mps,
             state.w_mps,
             state.q_radps,
-            state.theta_rad,
+            sin_t,
+            cos_t,
             &inputs,
-            wind,
+            air,
         );
-        let (x_dot, h_dot) = state.earth_velocity_mps();
+        let x_dot = state.u_mps * cos_t + state.w_mps * sin_t;
+        let h_dot = state.u_mps * sin_t - state.w_mps * cos_t;
         let (elevator_rate, elevator_acceleration) = self.actuator.derivative(
             state.elevator_rad,
             state.elevator_rate_radps,

@@ -34,6 +34,12 @@ impl HookGeometry {
     #[inline]
     pub fn position(&self, state: &AircraftState) -> (f64, f64) {
         let (sin_t, cos_t) = state.theta_rad.sin_cos();
+        self.position_trig(state, sin_t, cos_t)
+    }
+
+    /// As [`HookGeometry::position`], with sin θ and cos θ already computed.
+    #[inline]
+    pub fn position_trig(&self, state: &AircraftState, sin_t: f64, cos_t: f64) -> (f64, f64) {
         (
             state.x_m - self.aft_of_cg_m * cos_t + self.below_cg_m * sin_t,
             state.h_m - self.aft_of_cg_m * sin_t - self.below_cg_m * cos_t,
@@ -44,7 +50,14 @@ impl HookGeometry {
     #[inline]
     pub fn velocity(&self, state: &AircraftState) -> (f64, f64) {
         let (sin_t, cos_t) = state.theta_rad.sin_cos();
-        let (x_dot, h_dot) = state.earth_velocity_mps();
+        self.velocity_trig(state, sin_t, cos_t)
+    }
+
+    /// As [`HookGeometry::velocity`], with sin θ and cos θ already computed.
+    #[inline]
+    pub fn velocity_trig(&self, state: &AircraftState, sin_t: f64, cos_t: f64) -> (f64, f64) {
+        let x_dot = state.u_mps * cos_t + state.w_mps * sin_t;
+        let h_dot = state.u_mps * sin_t - state.w_mps * cos_t;
         let q = state.q_radps;
         (
             x_dot + q * (self.aft_of_cg_m * sin_t + self.below_cg_m * cos_t),

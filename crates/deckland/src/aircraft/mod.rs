@@ -18,7 +18,8 @@ mod state;
 pub use crate::environment::Wind;
 pub use actuator::{ActuatorLimit, ElevatorActuator, ElevatorActuatorParameters};
 pub use aerodynamics::{
-    aerodynamic_coefficients, AerodynamicCoefficients, ALPHA_MAX_RAD, ALPHA_MIN_RAD,
+    aerodynamic_coefficients, aerodynamic_coefficients_trig, AerodynamicCoefficients,
+    ALPHA_MAX_RAD, ALPHA_MIN_RAD,
 };
 pub use configuration::{AerodynamicConfiguration, ConfigurationName};
 pub use dynamics::{AirData, Aircraft, AircraftCommands, AirframeInputs, OpenLoopAircraft};

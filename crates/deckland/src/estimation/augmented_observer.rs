@@ -172,8 +172,9 @@ pub struct AugmentedObserver {
     rate_gain: f64,
     /// k1/ε³ (1/s³).
     disturbance_gain: f64,
-    /// α1, α2 = (2α1 + 1)/3, α3 = (α1 + 2)/3.
-    alpha: [f64; 3],
+    /// (α1 − 1)/3: then α3 = (α1 + 2)/3 = 1 + step, α2 = (2α1 + 1)/3 = 1 + 2·step and
+    /// α1 = 1 + 3·step.
+    alpha_step: f64,
 }
 
 impl AugmentedObserver {
@@ -192,7 +193,7 @@ impl AugmentedObserver {
             output_gain: k3 / epsilon,
             rate_gain: k2 / (epsilon * epsilon),
             disturbance_gain: k1 / (epsilon * epsilon * epsilon),
-            alpha: [alpha1, (2.0 * alpha1 + 1.0) / 3.0, (alpha1 + 2.0) / 3.0],
+            alpha_step: (alpha1 - 1.0) / 3.0,
         })
     }
 
@@ -215,11 +216,20 @@ impl AugmentedObserver {
     ) -> ObserverState {
         let e = state.x1 - measurement;
         let magnitude = e.abs();
-        let signed_power = |alpha: f64| magnitude.powf(alpha).copysign(e);
+        // With ρ = |e|^((α1 − 1)/3): |e|^α3 = |e|·ρ, |e|^α2 = |e|·ρ², |e|^α1 = |e|·ρ³, so
+        // one power serves all three (the hot loop calls this four times per step).
+        let (p3, p2, p1) = if magnitude > 0.0 {
+            let rho = magnitude.powf(self.alpha_step);
+            let p3 = magnitude * rho;
+            let p2 = p3 * rho;
+            (p3, p2, p2 * rho)
+        } else {
+            (0.0, 0.0, 0.0)
+        };
         ObserverState {
-            x1: state.x2 - self.output_gain * signed_power(self.alpha[2]),
-            x2: state.x3 + known_input - self.rate_gain * signed_power(self.alpha[1]),
-            x3: -self.disturbance_gain * signed_power(self.alpha[0]),
+            x1: state.x2 - self.output_gain * p3.copysign(e),
+            x2: state.x3 + known_input - self.rate_gain * p2.copysign(e),
+            x3: -self.disturbance_gain * p1.copysign(e),
         }
     }
 }
@@ -227,6 +237,30 @@ impl AugmentedObserver {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The single-power evaluation must equal MODEL.md §4's three powers written out.
+    #[test]
+    fn derivative_matches_the_three_fractional_powers_written_out() {
+        let parameters = ObserverParameters::default();
+        let observer = AugmentedObserver::new(parameters).unwrap();
+        let (a1, eps) = (parameters.alpha1, parameters.epsilon);
+        let (a2, a3) = ((2.0 * a1 + 1.0) / 3.0, (a1 + 2.0) / 3.0);
+        for e in [-0.3, -1e-4, 1e-7, 0.02, 1.5] {
+            let state = ObserverState {
+                x1: 0.1 + e,
+                x2: 0.2,
+                x3: -0.3,
+            };
+            let d = observer.derivative(&state, 0.1, 0.05);
+            let p = |a: f64| (e as f64).abs().powf(a) * (e as f64).signum();
+            let x1 = 0.2 - parameters.k3 / eps * p(a3);
+            let x2 = -0.3 + 0.05 - parameters.k2 / (eps * eps) * p(a2);
+            let x3 = -parameters.k1 / (eps * eps * eps) * p(a1);
+            assert!((d.x1 - x1).abs() <= 1e-9 * x1.abs().max(1.0), "{e}");
+            assert!((d.x2 - x2).abs() <= 1e-9 * x2.abs().max(1.0), "{e}");
+            assert!((d.x3 - x3).abs() <= 1e-9 * x3.abs().max(1.0), "{e}");
+        }
+    }
 
     #[test]
     fn default_parameters_are_valid() {

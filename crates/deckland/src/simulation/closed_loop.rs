@@ -78,8 +78,13 @@ impl LoopState {
 pub struct HeldInputs {
     /// White-noise inputs of the ship's shaping filters.
     pub ship_noise: ShipNoise,
-    /// White part of the pitch-measurement error (rad).
+    /// Pitch-measurement error (rad): white noise plus the sinusoid, sampled at the start
+    /// of the step (the sensor is read once per control step).
     pub pitch_noise_rad: f64,
+    /// The deck reference of the glide-path generator (mean and predicted landing point),
+    /// computed at the start of the step and held over it (the guidance computer updates
+    /// once per step); `None` outside the approach.
+    pub deck: Option<DeckReference>,
 }
 
 /// Which loops run and what they track.
@@ -204,6 +209,18 @@ impl ClosedLoop {
         )
     }
 
+    /// The deck reference at (t, x), as the runner holds it over a step.
+    pub fn deck_reference_at(&self, t: f64, x: &[f64; LOOP_DIMENSION]) -> Option<DeckReference> {
+        if !matches!(self.mode, LoopMode::Approach) {
+            return None;
+        }
+        let s = LoopState::from_array(x);
+        let (pose, pose_rate) = self.ship_pose(&s.ship, t);
+        let (hook_x_m, _) = self.hook.position(&s.aircraft);
+        let (hook_x_rate_mps, _) = self.hook.velocity(&s.aircraft);
+        Some(self.deck_reference(&s, &pose, &pose_rate, hook_x_m, hook_x_rate_mps))
+    }
+
     /// The deck reference for the flight-path generator: the mean landing point and the
     /// predicted moving one, by the configured [`DeckMotionPredictor`]: the model's
     /// prediction at the touchdown time (rate zero), or the filtered estimate
@@ -217,12 +234,12 @@ impl ClosedLoop {
         hook_x_m: f64,
         hook_x_rate_mps: f64,
     ) -> DeckReference {
-        let mean_pose = ShipPose {
-            heave_m: 0.0,
-            pitch_rad: 0.0,
-            ..*pose
+        // Ship level and at its mean height: the aim point sits 81 m aft of the pitch
+        // centre at deck height (no trigonometry needed).
+        let mean_aim = EarthPoint {
+            x_m: pose.pitch_centre_x_m - self.deck.landing_point_aft_of_pitch_centre_m,
+            h_m: self.deck.deck_height_m,
         };
-        let mean_aim = self.deck.aim_point(&mean_pose);
         let mean_aim_velocity = EarthVelocity {
             x_mps: rate.pitch_centre_x_rate_mps,
             h_mps: 0.0,
@@ -265,18 +282,23 @@ impl ClosedLoop {
         }
     }
 
-    /// The derivative of the closed loop and the signals at (t, x).
-    #[inline]
+    /// The derivative of the closed loop and the signals at (t, x). Always inlined, so
+    /// that in [`OdeSystem::derivative`], which drops the signals, the work done only for
+    /// them is optimised away.
+    #[inline(always)]
     pub fn evaluate(&self, t: f64, x: &[f64; LOOP_DIMENSION]) -> ([f64; LOOP_DIMENSION], Signals) {
         let s = LoopState::from_array(x);
         let a = &s.aircraft;
         let (pose, pose_rate) = self.ship_pose(&s.ship, t);
         let distance_aft_m = pose.distance_aft_of_pitch_centre_m(a.x_m);
         let wind = self.wind.wind(t, distance_aft_m);
-        let air = self.aircraft.state_air_data(a, &wind);
-        let (hook_x_m, hook_h_m) = self.hook.position(a);
-        let (hook_x_rate_mps, hook_climb_rate_mps) = self.hook.velocity(a);
-        let (_, climb_rate_mps) = a.earth_velocity_mps();
+        let (sin_t, cos_t) = a.theta_rad.sin_cos();
+        let air = self
+            .aircraft
+            .air_data_trig(a.u_mps, a.w_mps, sin_t, cos_t, &wind);
+        let (hook_x_m, hook_h_m) = self.hook.position_trig(a, sin_t, cos_t);
+        let (hook_x_rate_mps, hook_climb_rate_mps) = self.hook.velocity_trig(a, sin_t, cos_t);
+        let climb_rate_mps = a.u_mps * sin_t - a.w_mps * cos_t;
         let trim = &self.trim;
 
         // References: flight path → guidance → sink rate → pitch (MODEL.md §5).
@@ -362,7 +384,9 @@ impl ClosedLoop {
             elevator_rad: elevator_command_rad,
             thrust_n: thrust_command_n,
         };
-        let aircraft_rate = self.aircraft.derivative(a, &commands, &wind);
+        let aircraft_rate = self
+            .aircraft
+            .derivative_from(a, &commands, &air, sin_t, cos_t);
         let ship_rate = self.ship.derivative(&s.ship, self.held.ship_noise);
         let aim_point = self.deck.aim_point(&pose);
         let pitch_rate = self

@@ -203,7 +203,9 @@ impl Simulation {
                 &mut self.streams.ship_pitch,
                 self.dt,
             ),
-            pitch_noise_rad: self.system.sensor.draw_white_noise(),
+            pitch_noise_rad: self.system.sensor.draw_white_noise()
+                + self.system.sensor.sinusoid(self.time_s),
+            deck: self.system.deck_reference_at(self.time_s, &self.state),
         }
     }
 

@@ -1,0 +1,34 @@
+//! One full adverse approach: 1 ms RK4, every disturbance, O-PD, summary recording only.
+
+#![allow(missing_docs)] // criterion_group! generates undocumented items
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use deckland::recording::SummaryRecorder;
+use deckland::scenario::Scenario;
+use deckland::simulation::Simulation;
+use std::hint::black_box;
+
+fn approach(c: &mut Criterion) {
+    let scenario = Scenario::default();
+    let simulated_s = Simulation::new(&scenario)
+        .expect("default scenario is valid")
+        .run(&mut SummaryRecorder)
+        .end_time_s;
+    println!("simulated approach length: {simulated_s:.2} s");
+    let mut group = c.benchmark_group("approach");
+    group.sample_size(30);
+    group.bench_function("adverse O-PD, summary only", |b| {
+        b.iter(|| {
+            Simulation::new(black_box(&scenario))
+                .expect("valid")
+                .run(&mut SummaryRecorder)
+        })
+    });
+    group.bench_function("setup only (trim, linearise, build)", |b| {
+        b.iter(|| Simulation::new(black_box(&scenario)).expect("valid"))
+    });
+    group.finish();
+}
+
+criterion_group!(benches, approach);
+criterion_main!(benches);
