@@ -245,14 +245,14 @@ mod tests {
         let observer = AugmentedObserver::new(parameters).unwrap();
         let (a1, eps) = (parameters.alpha1, parameters.epsilon);
         let (a2, a3) = ((2.0 * a1 + 1.0) / 3.0, (a1 + 2.0) / 3.0);
-        for e in [-0.3, -1e-4, 1e-7, 0.02, 1.5] {
+        for e in [-0.3_f64, -1e-4, 1e-7, 0.02, 1.5] {
             let state = ObserverState {
                 x1: 0.1 + e,
                 x2: 0.2,
                 x3: -0.3,
             };
             let d = observer.derivative(&state, 0.1, 0.05);
-            let p = |a: f64| (e as f64).abs().powf(a) * (e as f64).signum();
+            let p = |a: f64| f64::abs(e).powf(a) * f64::signum(e);
             let x1 = 0.2 - parameters.k3 / eps * p(a3);
             let x2 = -0.3 + 0.05 - parameters.k2 / (eps * eps) * p(a2);
             let x3 = -parameters.k1 / (eps * eps * eps) * p(a1);
