@@ -146,8 +146,10 @@ fn touchdown_interpolation_is_consistent_when_the_step_is_halved() {
 
 #[test]
 fn invalid_scenarios_are_rejected_with_the_field_named() {
-    let mut scenario = Scenario::default();
-    scenario.time_step_s = 0.5;
+    let scenario = Scenario {
+        time_step_s: 0.5,
+        ..Scenario::default()
+    };
     assert!(Simulation::new(&scenario)
         .unwrap_err()
         .to_string()
