@@ -27,7 +27,8 @@
 //!
 //! scenario → environment → aircraft plant → sensors → observer → controllers →
 //! integrator loop → recorder → metrics. Beside it: trim, linearisation and modes
-//! ([`analysis`]).
+//! ([`analysis`]), and Monte Carlo campaigns over many seeds and dispersions
+//! ([`monte_carlo`]).
 
 pub mod aircraft;
 pub mod analysis;
@@ -36,6 +37,7 @@ pub mod environment;
 pub mod estimation;
 pub mod integration;
 pub mod metrics;
+pub mod monte_carlo;
 pub mod random;
 pub mod recording;
 pub mod scenario;

@@ -1,7 +1,9 @@
 //! A scenario: every parameter of one run, with the defaults of MODEL.md.
 //!
 //! The structure mirrors the scenario file (TOML) section by section; units are in the
-//! field names. [`Scenario::validate`] checks every field before a run starts.
+//! field names. [`Scenario::validate`] checks every field before a run starts;
+//! [`load_scenario`] reads a scenario file and reports a bad one by file, line and field;
+//! [`DEFAULT_SCENARIO_TOML`] is the commented default file.
 
 use crate::aircraft::{
     AerodynamicConfiguration, AircraftParameters, ConfigurationName, ElevatorActuatorParameters,
@@ -14,6 +16,14 @@ use crate::control::{
 };
 use crate::environment::EnvironmentParameters;
 use serde::{Deserialize, Serialize};
+
+mod dispersion;
+mod file;
+mod template;
+
+pub use dispersion::{DispersionParameters, DispersionSample, DISPERSION_STREAM};
+pub use file::{load_scenario, ScenarioError};
+pub use template::DEFAULT_SCENARIO_TOML;
 
 /// The aircraft section of a scenario.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
@@ -179,6 +189,9 @@ pub struct Scenario {
     pub approach: ApproachParameters,
     /// Landing classification limits.
     pub outcome: OutcomeLimits,
+    /// Per-run dispersions of a Monte Carlo campaign (none by default; a single run
+    /// ignores them).
+    pub dispersion: DispersionParameters,
 }
 
 impl Default for Scenario {
@@ -194,6 +207,7 @@ impl Default for Scenario {
             control: ControlSection::default(),
             approach: ApproachParameters::default(),
             outcome: OutcomeLimits::default(),
+            dispersion: DispersionParameters::default(),
         }
     }
 }

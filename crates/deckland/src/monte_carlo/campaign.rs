@@ -1,0 +1,281 @@
+//! The campaign: its specification, the parallel loop and its result.
+
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::sync::atomic::{AtomicBool, Ordering};
+
+use rayon::prelude::*;
+
+use super::seeds::run_seed;
+use super::statistics::CampaignStatistics;
+use crate::control::pitch::{ObserverPdParameters, PidParameters, PitchControllerParameters};
+use crate::random::RandomStreams;
+use crate::recording::SummaryRecorder;
+use crate::scenario::{DispersionSample, Mission, Scenario};
+use crate::simulation::{RunSummary, Simulation, SimulationError};
+
+/// A pitch controller a campaign flies, with its label for tables and files.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ControllerVariant {
+    /// Label, e.g. `O-PD`.
+    pub label: String,
+    /// The controller and its tuning.
+    pub pitch: PitchControllerParameters,
+}
+
+/// The label of a pitch controller: `O-PD` or `PID`.
+pub fn controller_label(pitch: &PitchControllerParameters) -> &'static str {
+    match pitch {
+        PitchControllerParameters::ObserverPd(_) => "O-PD",
+        PitchControllerParameters::Pid(_) => "PID",
+    }
+}
+
+/// What a campaign flies: `runs` approaches of `scenario` (with its dispersions), each
+/// under every controller of `controllers`, run `i` with seed [`run_seed`]`(seed, i)`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CampaignSpec {
+    /// The nominal scenario; its `seed` is replaced per run, its `dispersion` applied.
+    pub scenario: Scenario,
+    /// Number of approaches per controller.
+    pub runs: u64,
+    /// The campaign seed.
+    pub seed: u64,
+    /// The controllers; the same seeds and dispersions fly under each.
+    pub controllers: Vec<ControllerVariant>,
+}
+
+impl CampaignSpec {
+    /// `runs` approaches of `scenario` under its own pitch controller, campaign seed `seed`.
+    pub fn new(scenario: Scenario, runs: u64, seed: u64) -> Self {
+        let pitch = scenario.control.pitch;
+        Self {
+            scenario,
+            runs,
+            seed,
+            controllers: vec![ControllerVariant {
+                label: controller_label(&pitch).to_owned(),
+                pitch,
+            }],
+        }
+    }
+
+    /// The same campaign under O-PD and PID, in that order: the scenario's own controller
+    /// keeps its tuning, the other takes its defaults.
+    pub fn comparing_pitch_controllers(mut self) -> Self {
+        let (observer_pd, pid) = match self.scenario.control.pitch {
+            PitchControllerParameters::ObserverPd(p) => (p, PidParameters::default()),
+            PitchControllerParameters::Pid(p) => (ObserverPdParameters::default(), p),
+        };
+        self.controllers = [
+            PitchControllerParameters::ObserverPd(observer_pd),
+            PitchControllerParameters::Pid(pid),
+        ]
+        .into_iter()
+        .map(|pitch| ControllerVariant {
+            label: controller_label(&pitch).to_owned(),
+            pitch,
+        })
+        .collect();
+        self
+    }
+
+    /// The scenario run `run_index` flies under controller `controller` (before
+    /// validation), with its seed and dispersion draw.
+    pub fn run_scenario(&self, run_index: u64, controller: usize) -> (Scenario, DispersionSample) {
+        let seed = run_seed(self.seed, run_index);
+        let mut scenario = Scenario {
+            seed,
+            ..self.scenario
+        };
+        if let Some(variant) = self.controllers.get(controller) {
+            scenario.control.pitch = variant.pitch;
+        }
+        let draw = scenario.dispersion.sample(&RandomStreams::new(seed));
+        (draw.apply(&scenario), draw)
+    }
+}
+
+/// Why a run produced no flight.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum RunFailure {
+    /// The (dispersed) scenario could not be set up: a value out of range, or no trim.
+    #[error("invalid dispersed scenario: {0}")]
+    Invalid(#[from] SimulationError),
+    /// The simulation panicked (a bug); the message is the panic's.
+    #[error("the simulation panicked: {0}")]
+    Panicked(String),
+}
+
+/// One run of a campaign: one small row, kept for every run however it ended.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RunRecord {
+    /// Index of the run (from 0).
+    pub run_index: u64,
+    /// Index of the controller in [`CampaignSpec::controllers`].
+    pub controller: usize,
+    /// The run's seed.
+    pub seed: u64,
+    /// The dispersions drawn for the run.
+    pub dispersion: DispersionSample,
+    /// The run's summary, or why it could not fly.
+    pub result: Result<RunSummary, RunFailure>,
+}
+
+impl RunRecord {
+    /// The outcome's name: a [`crate::simulation::Outcome`] name, `invalid` or `panicked`.
+    pub fn outcome_name(&self) -> &'static str {
+        match &self.result {
+            Ok(summary) => summary.outcome.name(),
+            Err(RunFailure::Invalid(_)) => "invalid",
+            Err(RunFailure::Panicked(_)) => "panicked",
+        }
+    }
+
+    /// Why the run did not trap, in words (`None` for a trap).
+    pub fn failure_reason(&self) -> Option<String> {
+        match &self.result {
+            Ok(summary) => summary.reason.clone(),
+            Err(failure) => Some(failure.to_string()),
+        }
+    }
+}
+
+/// Why a campaign could not start.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum CampaignError {
+    /// Zero runs, or no controller.
+    #[error("a campaign needs at least one run and one controller (got {runs} runs, {controllers} controllers)")]
+    Empty {
+        /// Runs asked for.
+        runs: u64,
+        /// Controllers given.
+        controllers: usize,
+    },
+    /// The scenario's mission is not an approach.
+    #[error("a campaign flies approaches: set `mission.kind = \"approach\"`")]
+    NotAnApproach,
+    /// The nominal scenario itself is invalid.
+    #[error("the nominal scenario is invalid: {0}")]
+    InvalidScenario(#[from] SimulationError),
+    /// The thread pool could not be built (e.g. 0 threads).
+    #[error("cannot start {threads} worker threads: {message}")]
+    ThreadPool {
+        /// Threads asked for.
+        threads: usize,
+        /// The reason.
+        message: String,
+    },
+}
+
+/// What a campaign produced.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CampaignResult {
+    /// Every finished run, sorted by run index then controller.
+    pub records: Vec<RunRecord>,
+    /// Approaches asked for, per controller.
+    pub requested_runs: u64,
+    /// The controllers' labels, in [`RunRecord::controller`] order.
+    pub controller_labels: Vec<String>,
+    /// Whether the campaign was stopped before every run finished; the records then hold
+    /// exactly the runs that finished (not necessarily the first ones).
+    pub partial: bool,
+}
+
+impl CampaignResult {
+    /// The statistics of each controller, in order.
+    pub fn statistics(&self) -> Vec<CampaignStatistics> {
+        self.controller_labels
+            .iter()
+            .enumerate()
+            .map(|(index, label)| CampaignStatistics::of(&self.records, index, label))
+            .collect()
+    }
+}
+
+/// Flies one run; never panics (a panic inside the simulation becomes a record).
+fn fly(spec: &CampaignSpec, run_index: u64, controller: usize) -> RunRecord {
+    let (scenario, dispersion) = spec.run_scenario(run_index, controller);
+    let result = catch_unwind(AssertUnwindSafe(|| {
+        Simulation::new(&scenario).map(|simulation| simulation.run(&mut SummaryRecorder))
+    }))
+    .map_err(|payload| {
+        let message = payload
+            .downcast_ref::<&str>()
+            .map(|s| (*s).to_owned())
+            .or_else(|| payload.downcast_ref::<String>().cloned())
+            .unwrap_or_else(|| "unknown panic".to_owned());
+        RunFailure::Panicked(message)
+    })
+    .and_then(|flown| flown.map_err(RunFailure::from));
+    RunRecord {
+        run_index,
+        controller,
+        seed: scenario.seed,
+        dispersion,
+        result,
+    }
+}
+
+/// Flies the campaign on `threads` worker threads. `progress` is called (from the
+/// workers) after each run with its record; `stop`, when set, makes the workers start
+/// no further run, and the result is then [`CampaignResult::partial`].
+///
+/// The records are sorted by run index and controller, and each depends only on its
+/// seed, so the result is identical for any `threads`.
+pub fn run_campaign(
+    spec: &CampaignSpec,
+    threads: usize,
+    progress: &(dyn Fn(&RunRecord) + Sync),
+    stop: &AtomicBool,
+) -> Result<CampaignResult, CampaignError> {
+    let variants = spec.controllers.len();
+    if spec.runs == 0 || variants == 0 {
+        return Err(CampaignError::Empty {
+            runs: spec.runs,
+            controllers: variants,
+        });
+    }
+    if !matches!(spec.scenario.mission, Mission::Approach) {
+        return Err(CampaignError::NotAnApproach);
+    }
+    spec.scenario.validate()?;
+    spec.scenario.dispersion.validate()?;
+    let pool_error = |message: String| CampaignError::ThreadPool { threads, message };
+    if threads == 0 {
+        return Err(pool_error("at least one thread is needed".to_owned()));
+    }
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .thread_name(|index| format!("deckland-campaign-{index}"))
+        .build()
+        .map_err(|e| pool_error(e.to_string()))?;
+    let total = usize::try_from(spec.runs)
+        .ok()
+        .and_then(|runs| runs.checked_mul(variants))
+        .ok_or(CampaignError::Empty {
+            runs: spec.runs,
+            controllers: variants,
+        })?;
+    let mut records: Vec<RunRecord> = pool.install(|| {
+        (0..total)
+            .into_par_iter()
+            .with_max_len(1)
+            .filter_map(|item| {
+                if stop.load(Ordering::Relaxed) {
+                    return None;
+                }
+                let record = fly(spec, (item / variants) as u64, item % variants);
+                progress(&record);
+                Some(record)
+            })
+            .collect()
+    });
+    records.sort_by_key(|r| (r.run_index, r.controller));
+    let partial = records.len() < total;
+    Ok(CampaignResult {
+        records,
+        requested_runs: spec.runs,
+        controller_labels: spec.controllers.iter().map(|c| c.label.clone()).collect(),
+        partial,
+    })
+}

@@ -1,0 +1,400 @@
+//! Scenario files: TOML text to a checked [`Scenario`], with errors that name the file,
+//! the line and the field, and state what is allowed.
+//!
+//! Loading takes the text, not a path, so the library stays free of file-system access.
+//! Three kinds of problem are told apart ([`ScenarioError`]): text that is not TOML,
+//! keys or values that do not fit the scenario's structure (unknown keys, wrong types,
+//! unknown names), and values outside their allowed range (every check of
+//! [`Scenario::validate`], of the aircraft and pitch-controller parameters and of the
+//! dispersions). For the last kind the line is that of the key in the file; a value not
+//! set in the file has no line (its default was used).
+
+use std::ops::Range;
+
+use toml_edit::{ImDocument, InlineTable, Item, Table, Value};
+
+use super::Scenario;
+use crate::aircraft::AircraftError;
+use crate::control::pitch::{ObserverPdGains, PitchControllerParameters};
+use crate::control::ControlError;
+use crate::environment::EnvironmentError;
+use crate::estimation::ObserverError;
+use crate::simulation::SimulationError;
+
+/// Why a scenario file was rejected. Every variant names the file, the line (when the
+/// offending key is in the file) and the field, and says what is allowed.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ScenarioError {
+    /// The text is not valid TOML.
+    #[error("{file}, {}, near field `{field}`: malformed TOML: {message}", line_text(*.line))]
+    Syntax {
+        /// The file's name as given to [`load_scenario`].
+        file: String,
+        /// Line of the error (1-based).
+        line: Option<usize>,
+        /// The key on or before the error, as a dotted path (`?` if none).
+        field: String,
+        /// The parser's message.
+        message: String,
+    },
+    /// A key that the scenario does not have, a value of the wrong type, or an unknown
+    /// name (the message lists what is accepted).
+    #[error("{file}, {}, field `{field}`: {message}", line_text(*.line))]
+    Structure {
+        /// The file's name as given to [`load_scenario`].
+        file: String,
+        /// Line of the key or value (1-based).
+        line: Option<usize>,
+        /// The field's dotted path, e.g. `approach.start_range_m`.
+        field: String,
+        /// What was wrong and what is expected.
+        message: String,
+    },
+    /// A value outside its allowed range, or physically meaningless (negative mass, NaN).
+    #[error("{file}, {}, field `{field}`: {source}", line_text(*.line))]
+    OutOfRange {
+        /// The file's name as given to [`load_scenario`].
+        file: String,
+        /// Line of the key (1-based); `None` if the key is not in the file.
+        line: Option<usize>,
+        /// The field's dotted path, e.g. `environment.ship.heave_rms_m`.
+        field: String,
+        /// The check that failed, with the allowed range.
+        source: SimulationError,
+    },
+}
+
+impl ScenarioError {
+    /// The line of the problem in the file (1-based), if known.
+    pub fn line(&self) -> Option<usize> {
+        match self {
+            Self::Syntax { line, .. }
+            | Self::Structure { line, .. }
+            | Self::OutOfRange { line, .. } => *line,
+        }
+    }
+
+    /// The dotted path of the field at fault.
+    pub fn field(&self) -> &str {
+        match self {
+            Self::Syntax { field, .. }
+            | Self::Structure { field, .. }
+            | Self::OutOfRange { field, .. } => field,
+        }
+    }
+}
+
+fn line_text(line: Option<usize>) -> String {
+    match line {
+        Some(line) => format!("line {line}"),
+        None => "no line (not set in the file; its default was used)".to_owned(),
+    }
+}
+
+/// Parses the scenario file `file_name` whose content is `text` and checks every value.
+/// Keys left out take their defaults (MODEL.md); unknown keys are errors.
+pub fn load_scenario(text: &str, file_name: &str) -> Result<Scenario, ScenarioError> {
+    let document = ImDocument::parse(text).map_err(|error| {
+        let line = error.span().map(|span| line_of(text, span.start));
+        ScenarioError::Syntax {
+            file: file_name.to_owned(),
+            line,
+            field: line.map_or_else(|| "?".to_owned(), |l| key_near_line(text, l)),
+            message: first_line(error.message()),
+        }
+    })?;
+    let mut keys = Vec::new();
+    index_table("", document.as_table(), &mut keys);
+    let index = KeyIndex { keys };
+
+    let scenario: Scenario = toml::from_str(text).map_err(|error| {
+        let (line, field) = match error.span() {
+            Some(span) => (
+                Some(line_of(text, span.start)),
+                index
+                    .innermost(&span)
+                    .map_or_else(|| "?".to_owned(), |k| k.path.clone()),
+            ),
+            None => (None, "?".to_owned()),
+        };
+        let message = first_line(error.message());
+        // An unknown key is reported at the key itself: name it in the path.
+        let field = match unknown_field_name(&message) {
+            Some(name) if !field.ends_with(name) => join(&field, name),
+            _ => field,
+        };
+        ScenarioError::Structure {
+            file: file_name.to_owned(),
+            line,
+            field,
+            message,
+        }
+    })?;
+
+    check_values(&scenario).map_err(|(path, source)| {
+        let located = index.locate(&path);
+        ScenarioError::OutOfRange {
+            file: file_name.to_owned(),
+            line: located.map(|k| line_of(text, k.span.start)),
+            field: located.map_or(path, |k| k.path.clone()),
+            source,
+        }
+    })?;
+    Ok(scenario)
+}
+
+/// Runs every value check a run would meet, and the dispersions', returning the dotted
+/// path of the first bad field (possibly without its middle sections, see
+/// [`KeyIndex::locate`]) and the error.
+fn check_values(scenario: &Scenario) -> Result<(), (String, SimulationError)> {
+    scenario.validate().map_err(|error| {
+        let path = match &error {
+            SimulationError::OutOfRange { field, .. } => (*field).to_owned(),
+            SimulationError::Environment(e) => join("environment", environment_field(e)),
+            SimulationError::Control(e) => join("control", &control_field(e)),
+            SimulationError::Aircraft(e) => join("aircraft", aircraft_field(e)),
+            SimulationError::Trim(_) => "approach".to_owned(),
+        };
+        (path, error)
+    })?;
+    let aircraft = &scenario.aircraft;
+    let aircraft_checks = [
+        ("aircraft.parameters", aircraft.parameters.validate()),
+        ("aircraft.engines", aircraft.engines.validate()),
+        (
+            "aircraft.elevator_actuator",
+            aircraft.elevator_actuator.validate(),
+        ),
+    ];
+    for (section, result) in aircraft_checks {
+        result.map_err(|e| {
+            (
+                join(section, aircraft_field(&e)),
+                SimulationError::Aircraft(e),
+            )
+        })?;
+    }
+    let pitch = match scenario.control.pitch {
+        PitchControllerParameters::ObserverPd(p) => {
+            ObserverPdGains::design(p.settling_time_s, p.damping_ratio, 0.0)
+                .map(|_| ())
+                .and_then(|()| p.observer.validate().map_err(ControlError::Observer))
+        }
+        PitchControllerParameters::Pid(p) => p.validate(),
+    };
+    pitch.map_err(|e| {
+        (
+            join("control.pitch", &control_field(&e)),
+            SimulationError::Control(e),
+        )
+    })?;
+    scenario.dispersion.validate().map_err(|error| {
+        let path = match &error {
+            SimulationError::OutOfRange { field, .. } => (*field).to_owned(),
+            _ => "dispersion".to_owned(),
+        };
+        (path, error)
+    })
+}
+
+fn environment_field(error: &EnvironmentError) -> &'static str {
+    match error {
+        EnvironmentError::NotFinite { field, .. } | EnvironmentError::OutOfRange { field, .. } => {
+            field
+        }
+        EnvironmentError::WireOrder { .. } => "deck.wire_positions_m",
+        EnvironmentError::NoStationaryCovariance { .. } => "ship",
+    }
+}
+
+fn control_field(error: &ControlError) -> String {
+    match error {
+        ControlError::NonFinite { field, .. }
+        | ControlError::NonPositive { field, .. }
+        | ControlError::OutOfRange { field, .. }
+        | ControlError::NegativeGain { field, .. } => (*field).to_owned(),
+        ControlError::ZeroElevatorEffectiveness => "pitch".to_owned(),
+        ControlError::Observer(e) => join("observer", observer_field(e)),
+    }
+}
+
+fn observer_field(error: &ObserverError) -> &'static str {
+    match error {
+        ObserverError::NonFinite { field, .. }
+        | ObserverError::NonPositiveGain { field, .. }
+        | ObserverError::OutsideUnitInterval { field, .. } => field,
+        ObserverError::UnstableK2 { .. } => "k2",
+    }
+}
+
+fn aircraft_field(error: &AircraftError) -> &'static str {
+    match error {
+        AircraftError::InvalidParameter { field, .. } => field,
+    }
+}
+
+fn join(prefix: &str, name: &str) -> String {
+    if prefix.is_empty() {
+        name.to_owned()
+    } else {
+        format!("{prefix}.{name}")
+    }
+}
+
+fn first_line(message: &str) -> String {
+    message.lines().next().unwrap_or("").trim().to_owned()
+}
+
+/// The field named in serde's "unknown field `name`, expected …" message.
+fn unknown_field_name(message: &str) -> Option<&str> {
+    let rest = message.strip_prefix("unknown field `")?;
+    rest.split('`').next()
+}
+
+/// The line (1-based) of byte `offset` in `text`.
+fn line_of(text: &str, offset: usize) -> usize {
+    let end = offset.min(text.len());
+    text.as_bytes()[..end]
+        .iter()
+        .filter(|&&b| b == b'\n')
+        .count()
+        + 1
+}
+
+/// For text that does not parse: the dotted path of the key on `line`, read from the
+/// raw text (the table header above it and the word before `=`).
+fn key_near_line(text: &str, line: usize) -> String {
+    let lines: Vec<&str> = text.lines().collect();
+    let current = lines.get(line.saturating_sub(1)).copied().unwrap_or("");
+    let header = lines[..line.saturating_sub(1).min(lines.len())]
+        .iter()
+        .rev()
+        .map(|l| l.trim())
+        .find(|l| l.starts_with('[') && l.ends_with(']'))
+        .map(|l| l.trim_matches(|c| c == '[' || c == ']').trim().to_owned())
+        .unwrap_or_default();
+    match current.split_once('=') {
+        Some((key, _)) if !key.trim().is_empty() => join(&header, key.trim()),
+        _ if !header.is_empty() => header,
+        _ => "?".to_owned(),
+    }
+}
+
+/// Where one key (or table) of the file is: its dotted path and byte span.
+#[derive(Debug, Clone)]
+struct KeyLocation {
+    path: String,
+    span: Range<usize>,
+}
+
+/// Every key and table of a parsed file with its span.
+struct KeyIndex {
+    keys: Vec<KeyLocation>,
+}
+
+impl KeyIndex {
+    /// The smallest key or table whose span holds the start of `span`.
+    fn innermost(&self, span: &Range<usize>) -> Option<&KeyLocation> {
+        self.keys
+            .iter()
+            .filter(|k| k.span.start <= span.start && span.start < k.span.end.max(k.span.start + 1))
+            .min_by_key(|k| k.span.end - k.span.start)
+    }
+
+    /// The key of `path` in the file: an exact match, else a key under the same top-level
+    /// section whose path ends with the same last segment (checks that name a field
+    /// without its middle sections), else none.
+    fn locate(&self, path: &str) -> Option<&KeyLocation> {
+        if let Some(exact) = self.keys.iter().find(|k| k.path == path) {
+            return Some(exact);
+        }
+        let (section, _) = path.split_once('.')?;
+        let (_, leaf) = path.rsplit_once('.')?;
+        let tail = format!(".{leaf}");
+        self.keys
+            .iter()
+            .find(|k| k.path.starts_with(section) && k.path.ends_with(&tail))
+    }
+}
+
+fn index_table(prefix: &str, table: &Table, out: &mut Vec<KeyLocation>) {
+    let first = out.len();
+    for (key, item) in table.iter() {
+        let path = join(prefix, key);
+        let key_span = table.key(key).and_then(|k| k.span());
+        index_item(&path, key_span, item, out);
+    }
+    if let Some(header) = table.span() {
+        let end = out[first..]
+            .iter()
+            .map(|k| k.span.end)
+            .max()
+            .unwrap_or(header.end)
+            .max(header.end);
+        out.push(KeyLocation {
+            path: prefix.to_owned(),
+            span: header.start..end,
+        });
+    }
+}
+
+fn index_inline(prefix: &str, table: &InlineTable, out: &mut Vec<KeyLocation>) {
+    for (key, value) in table.iter() {
+        let path = join(prefix, key);
+        let key_span = table.key(key).and_then(|k| k.span());
+        index_value(&path, key_span, value, out);
+    }
+}
+
+fn index_item(path: &str, key_span: Option<Range<usize>>, item: &Item, out: &mut Vec<KeyLocation>) {
+    match item {
+        Item::Table(table) => index_table(path, table, out),
+        Item::Value(value) => index_value(path, key_span, value, out),
+        Item::None | Item::ArrayOfTables(_) => {}
+    }
+}
+
+fn index_value(
+    path: &str,
+    key_span: Option<Range<usize>>,
+    value: &Value,
+    out: &mut Vec<KeyLocation>,
+) {
+    let value_span = value.span();
+    let span = match (key_span, value_span.clone()) {
+        (Some(k), Some(v)) => k.start.min(v.start)..k.end.max(v.end),
+        (Some(s), None) | (None, Some(s)) => s,
+        (None, None) => return,
+    };
+    out.push(KeyLocation {
+        path: path.to_owned(),
+        span,
+    });
+    if let Value::InlineTable(table) = value {
+        index_inline(path, table, out);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_empty_file_is_the_default_scenario() {
+        assert_eq!(load_scenario("", "empty.toml"), Ok(Scenario::default()));
+    }
+
+    #[test]
+    fn keys_are_located_by_line() {
+        let text = "seed = 3\n\n[approach]\nstart_range_m = 1\n";
+        let error = load_scenario(text, "a.toml").expect_err("range too short");
+        assert_eq!(error.line(), Some(4));
+        assert_eq!(error.field(), "approach.start_range_m");
+    }
+
+    #[test]
+    fn the_key_near_a_syntax_error_is_read_from_the_text() {
+        let text = "[approach]\nstart_range_m = 1500 m\n";
+        assert_eq!(key_near_line(text, 2), "approach.start_range_m");
+    }
+}

@@ -1,0 +1,207 @@
+//! Scenario files: the shipped scenarios load and fly; every class of bad input is
+//! rejected with the file, the line and the field named.
+
+#![allow(clippy::unwrap_used)] // tests fail loudly by design
+
+use deckland::recording::SummaryRecorder;
+use deckland::scenario::{load_scenario, Scenario, ScenarioError, DEFAULT_SCENARIO_TOML};
+use deckland::simulation::{Outcome, Simulation};
+use std::path::PathBuf;
+
+fn scenarios_folder() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../scenarios")
+}
+
+fn load_shipped(name: &str) -> Scenario {
+    let path = scenarios_folder().join(name);
+    let text = std::fs::read_to_string(&path).unwrap();
+    load_scenario(&text, name).unwrap_or_else(|e| panic!("{e}"))
+}
+
+#[test]
+fn paper_adverse_is_the_commented_default() {
+    let text = std::fs::read_to_string(scenarios_folder().join("paper-adverse.toml")).unwrap();
+    assert_eq!(text, DEFAULT_SCENARIO_TOML);
+    assert_eq!(load_shipped("paper-adverse.toml"), Scenario::default());
+}
+
+#[test]
+fn every_shipped_scenario_loads_and_flies_one_approach() {
+    let mut names: Vec<String> = std::fs::read_dir(scenarios_folder())
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.ends_with(".toml"))
+        .collect();
+    names.sort();
+    assert_eq!(names, ["calm.toml", "heavy-sea.toml", "paper-adverse.toml"]);
+    for name in &names {
+        let scenario = load_shipped(name);
+        let summary = Simulation::new(&scenario)
+            .unwrap_or_else(|e| panic!("{name}: {e}"))
+            .run(&mut SummaryRecorder);
+        assert!(
+            summary.touchdown.is_some()
+                || matches!(summary.outcome, Outcome::Bolter | Outcome::RampStrike),
+            "{name}: {summary:?}"
+        );
+    }
+    let calm = load_shipped("calm.toml");
+    assert_eq!(calm, Scenario::default().ideal());
+    let heavy = load_shipped("heavy-sea.toml");
+    assert_eq!(heavy.environment.ship.heave_rms_m, 3.0);
+    assert!(!heavy.dispersion.is_none());
+}
+
+/// One bad input: its text, and the line, field and words of the allowed range or
+/// expected form the message must hold.
+struct Case {
+    what: &'static str,
+    text: &'static str,
+    line: usize,
+    field: &'static str,
+    allowed: &'static str,
+}
+
+#[test]
+fn each_class_of_bad_input_names_the_file_line_and_field() {
+    let cases = [
+        Case {
+            what: "unknown key",
+            text: "[approach]\nstart_range_m = 1500.0\nstart_rnage_m = 3.0\n",
+            line: 3,
+            field: "approach.start_rnage_m",
+            allowed: "expected one of `start_range_m`",
+        },
+        Case {
+            what: "unknown section",
+            text: "seed = 2\n\n[aproach]\nstart_range_m = 900.0\n",
+            line: 3,
+            field: "aproach",
+            allowed: "expected one of",
+        },
+        Case {
+            what: "wrong type (string for a number)",
+            text: "[environment.ship]\nheave_rms_m = \"high\"\n",
+            line: 2,
+            field: "environment.ship.heave_rms_m",
+            allowed: "expected f64",
+        },
+        Case {
+            what: "wrong type (negative seed)",
+            text: "# comment\nseed = -3\n",
+            line: 2,
+            field: "seed",
+            allowed: "u64",
+        },
+        Case {
+            what: "unknown name",
+            text: "[aircraft]\nconfiguration = \"cruise\"\n",
+            line: 2,
+            field: "aircraft.configuration",
+            allowed: "`landing` or `clean`",
+        },
+        Case {
+            what: "out of range",
+            text: "[approach]\nstart_range_m = 50.0\n",
+            line: 2,
+            field: "approach.start_range_m",
+            allowed: "between 200 and 10000 m",
+        },
+        Case {
+            what: "out of range in the environment",
+            text: "[environment.wind]\nmean_wind = true\nwind_over_deck_mps = 80.0\n",
+            line: 3,
+            field: "environment.wind.wind_over_deck_mps",
+            allowed: "[0, 40]",
+        },
+        Case {
+            what: "NaN",
+            text: "[environment.ship]\n\nheave_rms_m = nan\n",
+            line: 3,
+            field: "environment.ship.heave_rms_m",
+            allowed: "[0, 50]",
+        },
+        Case {
+            what: "infinity",
+            text: "max_time_s = inf\n",
+            line: 1,
+            field: "max_time_s",
+            allowed: "between 1 and 3600 s",
+        },
+        Case {
+            what: "negative mass",
+            text: "[aircraft.parameters]\nmass_kg = -15000.0\n",
+            line: 2,
+            field: "aircraft.parameters.mass_kg",
+            allowed: "greater than zero",
+        },
+        Case {
+            what: "negative controller design value",
+            text: "[control.speed]\ndamping_ratio = -1.0\n",
+            line: 2,
+            field: "control.speed.damping_ratio",
+            allowed: "> 0",
+        },
+        Case {
+            what: "unstable observer gain",
+            text: "[control.pitch]\ntype = \"observer_pd\"\n[control.pitch.observer]\nk2 = 0.1\n",
+            line: 4,
+            field: "control.pitch.observer.k2",
+            allowed: "k2",
+        },
+        Case {
+            what: "negative PID gain",
+            text: "[control.pitch]\ntype = \"pid\"\nintegral_per_s3 = -5.0\n",
+            line: 3,
+            field: "control.pitch.integral_per_s3",
+            allowed: ">= 0",
+        },
+        Case {
+            what: "negative dispersion",
+            text: "[dispersion]\nsea_state_log_sd = -0.1\n",
+            line: 2,
+            field: "dispersion.sea_state_log_sd",
+            allowed: "between 0 and 1",
+        },
+        Case {
+            what: "malformed TOML (a unit after a number)",
+            text: "seed = 1\n[approach]\nstart_range_m = 1500 m\n",
+            line: 3,
+            field: "approach.start_range_m",
+            allowed: "malformed TOML",
+        },
+        Case {
+            what: "malformed TOML (unclosed table header)",
+            text: "seed = 1\n[approach\n",
+            line: 2,
+            field: "",
+            allowed: "malformed TOML",
+        },
+    ];
+    for case in &cases {
+        let error: ScenarioError = load_scenario(case.text, "bad.toml")
+            .err()
+            .unwrap_or_else(|| panic!("{}: accepted", case.what));
+        let message = error.to_string();
+        assert!(
+            message.starts_with("bad.toml, "),
+            "{}: {message}",
+            case.what
+        );
+        assert!(
+            message.contains(&format!("line {}", case.line)),
+            "{}: {message}",
+            case.what
+        );
+        assert_eq!(error.line(), Some(case.line), "{}: {message}", case.what);
+        if !case.field.is_empty() {
+            assert_eq!(error.field(), case.field, "{}: {message}", case.what);
+            assert!(
+                message.contains(&format!("`{}`", case.field)),
+                "{}: {message}",
+                case.what
+            );
+        }
+        assert!(message.contains(case.allowed), "{}: {message}", case.what);
+    }
+}
