@@ -28,6 +28,13 @@ enum Command {
     Sink(commands::sink::SinkArgs),
     /// Simulate the ship motion and the wind alone; write a CSV and plots (paper Fig. 7, 8).
     Environment(commands::environment::EnvironmentArgs),
+    /// Print the commented default scenario file, or check a scenario file.
+    Scenario(commands::scenario::ScenarioArgs),
+    /// Fly one approach of a scenario file: CSV, summary and plots, as `land`.
+    Run(commands::run::RunArgs),
+    /// Fly N approaches of a scenario file in parallel (Monte Carlo): rates with
+    /// confidence intervals, touchdown statistics, runs.csv and plots.
+    Campaign(commands::campaign::CampaignArgs),
 }
 
 fn run(cli: &Cli) -> Result<()> {
@@ -37,6 +44,9 @@ fn run(cli: &Cli) -> Result<()> {
         Command::Environment(args) => commands::environment::run(args),
         Command::Land(args) => commands::land::run(args),
         Command::Sink(args) => commands::sink::run(args),
+        Command::Scenario(args) => commands::scenario::run(args),
+        Command::Run(args) => commands::run::run(args),
+        Command::Campaign(args) => commands::campaign::run(args),
     }
 }
 

@@ -1,4 +1,5 @@
-//! Options shared by the simulation commands (`step`, `land`, `sink`).
+//! Options shared by the simulation commands (`step`, `land`, `sink`) and the loading of
+//! scenario files (`run`, `campaign`).
 
 use clap::ValueEnum;
 use deckland::control::pitch::{PidParameters, PitchControllerParameters};
@@ -60,4 +61,16 @@ impl Conditions {
             Self::Adverse => "adverse",
         }
     }
+}
+
+/// Reads and checks the scenario file at `path`; a bad file's error names the file, the
+/// line and the field.
+pub fn load_scenario_file(path: &std::path::Path) -> anyhow::Result<Scenario> {
+    use anyhow::Context;
+    let text = std::fs::read_to_string(path)
+        .with_context(|| format!("cannot read the scenario file {}", path.display()))?;
+    Ok(deckland::scenario::load_scenario(
+        &text,
+        &path.display().to_string(),
+    )?)
 }

@@ -1,8 +1,11 @@
 //! One module per `deckland` subcommand.
 
+pub mod campaign;
 pub mod common;
 pub mod environment;
 pub mod land;
 pub mod linearize;
+pub mod run;
+pub mod scenario;
 pub mod sink;
 pub mod trim;

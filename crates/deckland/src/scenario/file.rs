@@ -51,7 +51,7 @@ pub enum ScenarioError {
         message: String,
     },
     /// A value outside its allowed range, or physically meaningless (negative mass, NaN).
-    #[error("{file}, {}, field `{field}`: {source}", line_text(*.line))]
+    #[error("{file}, {}, field `{field}`: {problem}", line_text(*.line))]
     OutOfRange {
         /// The file's name as given to [`load_scenario`].
         file: String,
@@ -60,7 +60,7 @@ pub enum ScenarioError {
         /// The field's dotted path, e.g. `environment.ship.heave_rms_m`.
         field: String,
         /// The check that failed, with the allowed range.
-        source: SimulationError,
+        problem: SimulationError,
     },
 }
 
@@ -131,13 +131,13 @@ pub fn load_scenario(text: &str, file_name: &str) -> Result<Scenario, ScenarioEr
         }
     })?;
 
-    check_values(&scenario).map_err(|(path, source)| {
+    check_values(&scenario).map_err(|(path, problem)| {
         let located = index.locate(&path);
         ScenarioError::OutOfRange {
             file: file_name.to_owned(),
             line: located.map(|k| line_of(text, k.span.start)),
             field: located.map_or(path, |k| k.path.clone()),
-            source,
+            problem,
         }
     })?;
     Ok(scenario)

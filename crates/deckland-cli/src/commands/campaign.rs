@@ -1,0 +1,432 @@
+//! `deckland campaign`: N approaches of a scenario file in parallel (Monte Carlo).
+//!
+//! Run `i` flies seed SplitMix64(S, i) (`deckland::monte_carlo::run_seed`) with the
+//! scenario's dispersions drawn from that seed, on a pool of `--threads` workers; the
+//! results are sorted by run index, so every file except the timing in `summary.json` is
+//! identical for any thread count. Writes into the output folder:
+//!
+//! - `scenario.toml`: the nominal scenario flown;
+//! - `runs.csv`: one row per run and controller (outcome, wire, touchdown, ramp
+//!   clearance, glide-path error, the dispersions drawn, the failure reason);
+//! - `summary.json`: outcome rates with 95 % Wilson score intervals, touchdown distance
+//!   and sink-rate mean, standard deviation and percentiles, per controller;
+//! - plots: `touchdown_dispersion` (touchdown point along the deck against sink rate,
+//!   with the wires and the ramp), `touchdown_histograms`, `outcomes`.
+//!
+//! Ctrl-C stops the workers before their next run; the finished runs are written, marked
+//! `"partial": true`, and the command exits with status 130.
+
+use super::common::load_scenario_file;
+use crate::output::OutputDir;
+use crate::plot::{Figure, Panel};
+use anyhow::{Context, Result};
+use clap::Args;
+use deckland::monte_carlo::{
+    run_campaign, CampaignResult, CampaignSpec, CampaignStatistics, Distribution, Proportion,
+    RunRecord,
+};
+use deckland::scenario::Scenario;
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use serde::Serialize;
+use std::io::IsTerminal;
+use std::path::PathBuf;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+use std::time::Instant;
+
+/// Options of `deckland campaign`.
+#[derive(Debug, Clone, Args)]
+pub struct CampaignArgs {
+    /// Scenario file (TOML); its `[dispersion]` section sets the per-run dispersions.
+    pub scenario: PathBuf,
+    /// Number of approaches (per controller with `--compare`).
+    #[arg(long)]
+    pub runs: u64,
+    /// Campaign seed S; run i flies seed SplitMix64(S, i) (default: the scenario's seed).
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// Worker threads (default: the number of CPUs). The results do not depend on it.
+    #[arg(long)]
+    pub threads: Option<usize>,
+    /// Output folder (default: a new `runs/campaign-<UTC time>`).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Overwrite results in an existing `--out` folder.
+    #[arg(long)]
+    pub force: bool,
+    /// Print the summary as one JSON document instead of a table (and no progress bar).
+    #[arg(long)]
+    pub json: bool,
+    /// Fly the same seeds and dispersions under O-PD and PID and report them side by side.
+    #[arg(long)]
+    pub compare: bool,
+}
+
+/// What `summary.json` and `--json` hold.
+#[derive(Debug, Serialize)]
+struct CampaignReport<'a> {
+    scenario_file: String,
+    campaign_seed: u64,
+    seed_derivation: &'static str,
+    requested_runs: u64,
+    finished_runs: u64,
+    partial: bool,
+    partial_note: Option<String>,
+    threads: usize,
+    elapsed_s: f64,
+    runs_per_s: f64,
+    confidence_interval: &'static str,
+    percentiles: &'static str,
+    controllers: &'a [CampaignStatistics],
+}
+
+/// One row of `runs.csv`.
+#[derive(Debug, Serialize)]
+struct Row<'a> {
+    run_index: u64,
+    controller: &'a str,
+    seed: u64,
+    outcome: &'static str,
+    wire: Option<u8>,
+    touchdown_distance_m: Option<f64>,
+    touchdown_sink_rate_mps: Option<f64>,
+    touchdown_pitch_deg: Option<f64>,
+    touchdown_airspeed_mps: Option<f64>,
+    ramp_clearance_m: Option<f64>,
+    glide_path_error_rms_m: Option<f64>,
+    glide_path_error_max_m: Option<f64>,
+    end_time_s: Option<f64>,
+    start_height_offset_dispersion_m: f64,
+    airspeed_dispersion_mps: f64,
+    sea_state_scale: f64,
+    wind_over_deck_dispersion_mps: f64,
+    reason: Option<String>,
+}
+
+impl<'a> Row<'a> {
+    fn new(record: &RunRecord, labels: &'a [String]) -> Self {
+        let summary = record.result.as_ref().ok();
+        let touchdown = summary.and_then(|s| s.touchdown);
+        Self {
+            run_index: record.run_index,
+            controller: labels.get(record.controller).map_or("?", String::as_str),
+            seed: record.seed,
+            outcome: record.outcome_name(),
+            wire: summary.and_then(|s| s.wire),
+            touchdown_distance_m: touchdown.map(|t| t.distance_from_aim_m),
+            touchdown_sink_rate_mps: touchdown.map(|t| t.sink_rate_mps),
+            touchdown_pitch_deg: touchdown.map(|t| t.pitch_deg),
+            touchdown_airspeed_mps: touchdown.map(|t| t.airspeed_mps),
+            ramp_clearance_m: summary.and_then(|s| s.ramp_clearance_m),
+            glide_path_error_rms_m: summary.and_then(|s| s.glide_path_error_rms_m),
+            glide_path_error_max_m: summary.and_then(|s| s.glide_path_error_max_m),
+            end_time_s: summary.map(|s| s.end_time_s),
+            start_height_offset_dispersion_m: record.dispersion.start_height_offset_m,
+            airspeed_dispersion_mps: record.dispersion.airspeed_error_mps,
+            sea_state_scale: record.dispersion.sea_state_scale,
+            wind_over_deck_dispersion_mps: record.dispersion.wind_over_deck_error_mps,
+            reason: record.failure_reason(),
+        }
+    }
+}
+
+/// `runs.csv` as bytes: one row per finished run and controller, sorted by run index.
+fn runs_csv(result: &CampaignResult) -> Result<Vec<u8>> {
+    let mut csv = csv::Writer::from_writer(Vec::new());
+    for record in &result.records {
+        csv.serialize(Row::new(record, &result.controller_labels))?;
+    }
+    csv.into_inner().map_err(|e| anyhow::anyhow!("{e}"))
+}
+
+/// The progress bar on stderr: hidden when stderr is not a terminal or with `--json`.
+fn progress_bar(total: u64, hidden: bool) -> ProgressBar {
+    if hidden || !std::io::stderr().is_terminal() {
+        return ProgressBar::with_draw_target(Some(total), ProgressDrawTarget::hidden());
+    }
+    let bar = ProgressBar::with_draw_target(Some(total), ProgressDrawTarget::stderr());
+    let style = ProgressStyle::with_template(
+        "{elapsed_precise} [{bar:40}] {pos}/{len} runs, {per_sec}, ETA {eta}",
+    )
+    .map(|s| s.progress_chars("=> "))
+    .unwrap_or_else(|_| ProgressStyle::default_bar());
+    bar.set_style(style);
+    bar
+}
+
+/// Sets the stop flag on Ctrl-C; a second Ctrl-C exits at once.
+fn install_interrupt_handler(stop: Arc<AtomicBool>) {
+    let result = ctrlc::set_handler(move || {
+        if stop.swap(true, Ordering::SeqCst) {
+            std::process::exit(130);
+        }
+    });
+    if let Err(error) = result {
+        eprintln!("warning: Ctrl-C will not stop the campaign cleanly: {error}");
+    }
+}
+
+/// The plots of a campaign, each with its file stem.
+fn figures(
+    result: &CampaignResult,
+    scenario: &Scenario,
+    title: &str,
+) -> Vec<(&'static str, Figure)> {
+    let deck = &scenario.environment.deck;
+    let labels = &result.controller_labels;
+    let touchdowns = |controller: usize| -> Vec<(f64, f64)> {
+        result
+            .records
+            .iter()
+            .filter(|r| r.controller == controller)
+            .filter_map(|r| r.result.as_ref().ok().and_then(|s| s.touchdown))
+            .map(|t| (t.distance_from_aim_m, t.sink_rate_mps))
+            .collect()
+    };
+    let mut dispersion = Panel::new(
+        "Touchdown point along the deck and sink rate relative to the deck",
+        "touchdown along the deck from the aim point (m, positive forward)",
+        "sink rate at touchdown (m/s)",
+    );
+    for (index, label) in labels.iter().enumerate() {
+        let points = touchdowns(index);
+        dispersion = dispersion.scatter(format!("{label} ({} touchdowns)", points.len()), points);
+    }
+    dispersion = dispersion.vertical_line("ramp", -deck.ramp_aft_of_aim_point_m);
+    for (index, wire) in deck.wire_positions_m.iter().enumerate() {
+        dispersion = dispersion.vertical_line(format!("wire {}", index + 1), *wire);
+    }
+    dispersion = dispersion.reference_line(
+        "hard-landing limit",
+        scenario.outcome.hard_landing_sink_rate_mps,
+    );
+
+    let bins = 30;
+    let mut sink = Panel::new(
+        "Touchdown sink rate relative to the deck",
+        "sink rate (m/s)",
+        "runs",
+    );
+    let mut distance = Panel::new(
+        "Touchdown point along the deck from the aim point",
+        "distance (m, positive forward)",
+        "runs",
+    );
+    for (index, label) in labels.iter().enumerate() {
+        let points = touchdowns(index);
+        sink = sink.histogram(label.clone(), points.iter().map(|p| p.1).collect(), bins);
+        distance = distance.histogram(label.clone(), points.iter().map(|p| p.0).collect(), bins);
+    }
+
+    let statistics = result.statistics();
+    let categories = [
+        "trap",
+        "bolter",
+        "ramp strike",
+        "hard landing",
+        "diverged",
+        "timeout",
+        "invalid",
+    ];
+    let mut outcomes = Panel::new("Outcomes", "outcome", "runs")
+        .categories(categories.iter().map(|c| (*c).to_owned()).collect());
+    for s in &statistics {
+        let counts = proportions(s).iter().map(|(_, p)| p.count as f64).collect();
+        outcomes = outcomes.bars(s.controller.clone(), counts);
+    }
+    vec![
+        (
+            "touchdown_dispersion",
+            Figure::new()
+                .title(format!("Touchdown dispersion — {title}"))
+                .panel(dispersion),
+        ),
+        (
+            "touchdown_histograms",
+            Figure::new()
+                .title(format!("Touchdown histograms — {title}"))
+                .panel(sink)
+                .panel(distance),
+        ),
+        (
+            "outcomes",
+            Figure::new()
+                .title(format!("Outcomes — {title}"))
+                .panel(outcomes),
+        ),
+    ]
+}
+
+/// The outcome classes with their names, in table order.
+fn proportions(s: &CampaignStatistics) -> [(&'static str, Proportion); 7] {
+    [
+        ("boarding (trap)", s.boarding),
+        ("bolter", s.bolter),
+        ("ramp strike", s.ramp_strike),
+        ("hard landing", s.hard_landing),
+        ("diverged", s.divergence),
+        ("timeout", s.timeout),
+        ("invalid scenario", s.invalid),
+    ]
+}
+
+/// Picks one distribution out of a controller's statistics.
+type DistributionOf = fn(&CampaignStatistics) -> Option<Distribution>;
+
+fn print_table(report: &CampaignReport, output: &OutputDir) {
+    let stats = report.controllers;
+    println!(
+        "Campaign — {}, {} runs{}, seed {}, {} threads, {:.1} s ({:.0} runs/s)",
+        report.scenario_file,
+        report.requested_runs,
+        if stats.len() > 1 {
+            " per controller"
+        } else {
+            ""
+        },
+        report.campaign_seed,
+        report.threads,
+        report.elapsed_s,
+        report.runs_per_s
+    );
+    if let Some(note) = &report.partial_note {
+        println!("  PARTIAL: {note}");
+    }
+    let width = 30;
+    let label_width = 36;
+    print!("  {:<label_width$}", "");
+    for s in stats {
+        print!("{:>width$}", format!("{} ({} runs)", s.controller, s.runs));
+    }
+    println!();
+    println!("  outcome: count, rate [95 % Wilson score interval]");
+    for row in 0..7 {
+        print!("  {:<label_width$}", proportions(&stats[0])[row].0);
+        for s in stats {
+            let (_, p) = proportions(s)[row];
+            print!(
+                "{:>width$}",
+                format!(
+                    "{:>5} {:5.1} % [{:5.1}, {:5.1}]",
+                    p.count,
+                    100.0 * p.rate,
+                    100.0 * p.ci95_low,
+                    100.0 * p.ci95_high
+                )
+            );
+        }
+        println!();
+    }
+    print!("  {:<label_width$}", "traps on wires 1/2/3/4");
+    for s in stats {
+        let w = s.traps_per_wire;
+        print!("{:>width$}", format!("{}/{}/{}/{}", w[0], w[1], w[2], w[3]));
+    }
+    println!();
+    let distribution_rows: [(&str, DistributionOf); 2] = [
+        ("touchdown from aim (m)", |s| s.touchdown_distance_m),
+        ("touchdown sink rate (m/s)", |s| s.touchdown_sink_rate_mps),
+    ];
+    for (name, get) in distribution_rows {
+        for (line, part) in [": mean ± sd", "  p5 / p50 / p95"].iter().enumerate() {
+            let label = if line == 0 {
+                format!("{name}{part}")
+            } else {
+                (*part).to_owned()
+            };
+            print!("  {label:<label_width$}");
+            for s in stats {
+                let text = match get(s) {
+                    None => "–".to_owned(),
+                    Some(d) if line == 0 => format!("{:+.2} ± {:.2}", d.mean, d.standard_deviation),
+                    Some(d) => format!("{:+.2} / {:+.2} / {:+.2}", d.p5, d.p50, d.p95),
+                };
+                print!("{text:>width$}");
+            }
+            println!();
+        }
+    }
+    println!("  results in {}", output.path().display());
+}
+
+/// Runs `deckland campaign`.
+pub fn run(args: &CampaignArgs) -> Result<()> {
+    let scenario = load_scenario_file(&args.scenario)?;
+    let seed = args.seed.unwrap_or(scenario.seed);
+    let mut spec = CampaignSpec::new(scenario, args.runs, seed);
+    if args.compare {
+        spec = spec.comparing_pitch_controllers();
+    }
+    let threads = args.threads.unwrap_or_else(|| {
+        std::thread::available_parallelism()
+            .map(|n| n.get())
+            .unwrap_or(1)
+    });
+    let output = OutputDir::prepare("campaign", args.out.as_deref(), args.force)?;
+    let total = args.runs.saturating_mul(spec.controllers.len() as u64);
+    let bar = progress_bar(total, args.json);
+    let stop = Arc::new(AtomicBool::new(false));
+    install_interrupt_handler(Arc::clone(&stop));
+    let started = Instant::now();
+    let result = run_campaign(&spec, threads, &|_: &RunRecord| bar.inc(1), &stop)
+        .context("cannot run the campaign")?;
+    let elapsed_s = started.elapsed().as_secs_f64();
+    bar.finish_and_clear();
+
+    let statistics = result.statistics();
+    let finished_runs = result.records.len() as u64;
+    let report = CampaignReport {
+        scenario_file: args.scenario.display().to_string(),
+        campaign_seed: seed,
+        seed_derivation: "run i (from 0) flies seed SplitMix64 output i of the campaign seed \
+                          (mix(S + (i + 1)·0x9e3779b97f4a7c15)); its dispersions come from \
+                          that seed's \"dispersion\" stream",
+        requested_runs: args.runs,
+        finished_runs,
+        partial: result.partial,
+        partial_note: result.partial.then(|| {
+            format!(
+                "stopped by Ctrl-C: {finished_runs} of {total} runs finished; the statistics \
+                 cover the finished runs only, listed by index in runs.csv"
+            )
+        }),
+        threads,
+        elapsed_s,
+        runs_per_s: finished_runs as f64 / elapsed_s.max(1e-9),
+        confidence_interval: "95 % Wilson score interval of each rate",
+        percentiles: "linear interpolation between closest ranks (Hyndman & Fan type 7)",
+        controllers: &statistics,
+    };
+    output.write_bytes(
+        "scenario.toml",
+        toml::to_string(&spec.scenario)
+            .context("cannot write the scenario as TOML")?
+            .as_bytes(),
+    )?;
+    output.write_bytes("runs.csv", &runs_csv(&result)?)?;
+    output.write_bytes(
+        "summary.json",
+        serde_json::to_string_pretty(&report)?.as_bytes(),
+    )?;
+    let name = args.scenario.file_name().map_or_else(
+        || args.scenario.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    );
+    let title = format!("{name}, {finished_runs} runs, seed {seed}");
+    for (stem, figure) in figures(&result, &spec.scenario, &title) {
+        figure.save(&output, stem)?;
+    }
+    if args.json {
+        println!("{}", serde_json::to_string_pretty(&report)?);
+    } else {
+        print_table(&report, &output);
+    }
+    if result.partial {
+        eprintln!(
+            "campaign stopped by Ctrl-C: partial results ({finished_runs} of {total} runs) in {}",
+            output.path().display()
+        );
+        std::process::exit(130);
+    }
+    Ok(())
+}

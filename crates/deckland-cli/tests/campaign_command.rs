@@ -1,0 +1,226 @@
+//! `deckland scenario`, `run` and `campaign`: files written, thread-count independence,
+//! bad scenario files reported by file, line and field.
+
+#![allow(clippy::unwrap_used)] // tests fail loudly by design
+
+use serde_json::Value;
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn deckland(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_deckland"))
+        .args(args)
+        .output()
+        .expect("the deckland binary runs")
+}
+
+fn temp_dir(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("deckland-test-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    dir
+}
+
+fn scenario(name: &str) -> String {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../../scenarios")
+        .join(name)
+        .display()
+        .to_string()
+}
+
+/// A short (500 m) adverse approach with every dispersion on, written to a temp file.
+fn short_dispersed_scenario(dir: &std::path::Path) -> String {
+    std::fs::create_dir_all(dir).unwrap();
+    let path = dir.join("short.toml");
+    std::fs::write(
+        &path,
+        "[approach]\nstart_range_m = 500.0\n\n[dispersion]\nstart_height_offset_sd_m = 1.0\n\
+         airspeed_error_sd_mps = 1.0\nsea_state_log_sd = 0.2\nwind_over_deck_sd_mps = 2.0\n",
+    )
+    .unwrap();
+    path.display().to_string()
+}
+
+fn assert_success(output: &Output) {
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+}
+
+#[test]
+fn one_and_two_threads_write_byte_identical_runs_csv() {
+    let dir = temp_dir("campaign-threads");
+    let file = short_dispersed_scenario(&dir);
+    let mut csv = Vec::new();
+    for threads in ["1", "2"] {
+        let out = dir.join(format!("threads-{threads}"));
+        let output = deckland(&[
+            "campaign",
+            &file,
+            "--runs",
+            "20",
+            "--seed",
+            "42",
+            "--threads",
+            threads,
+            "--out",
+            out.to_str().unwrap(),
+            "--json",
+        ]);
+        assert_success(&output);
+        csv.push(std::fs::read(out.join("runs.csv")).unwrap());
+        let summary: Value = serde_json::from_slice(&output.stdout).unwrap();
+        assert_eq!(summary["partial"], false);
+        assert_eq!(summary["finished_runs"], 20);
+        let opd = &summary["controllers"][0];
+        assert_eq!(opd["controller"], "O-PD");
+        assert_eq!(opd["runs"], 20);
+        for rate in [
+            "boarding",
+            "bolter",
+            "ramp_strike",
+            "hard_landing",
+            "divergence",
+            "timeout",
+        ] {
+            let low = opd[rate]["ci95_low"].as_f64().unwrap();
+            let high = opd[rate]["ci95_high"].as_f64().unwrap();
+            let value = opd[rate]["rate"].as_f64().unwrap();
+            assert!(low <= value && value <= high, "{rate}");
+        }
+        for field in ["mean", "standard_deviation", "p5", "p50", "p95"] {
+            assert!(opd["touchdown_sink_rate_mps"][field].is_number(), "{field}");
+            assert!(opd["touchdown_distance_m"][field].is_number(), "{field}");
+        }
+        for stem in ["touchdown_dispersion", "touchdown_histograms", "outcomes"] {
+            for extension in ["png", "svg"] {
+                assert!(
+                    out.join(format!("{stem}.{extension}")).exists(),
+                    "{stem}.{extension}"
+                );
+            }
+        }
+    }
+    assert_eq!(csv[0], csv[1], "runs.csv differs between 1 and 2 threads");
+    let text = String::from_utf8(csv[0].clone()).unwrap();
+    let header = text.lines().next().unwrap();
+    for column in [
+        "run_index",
+        "controller",
+        "seed",
+        "outcome",
+        "wire",
+        "touchdown_distance_m",
+        "touchdown_sink_rate_mps",
+        "touchdown_pitch_deg",
+        "touchdown_airspeed_mps",
+        "ramp_clearance_m",
+        "glide_path_error_rms_m",
+        "glide_path_error_max_m",
+        "reason",
+    ] {
+        assert!(header.split(',').any(|c| c == column), "column {column}");
+    }
+    assert_eq!(text.lines().count(), 21);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn compare_flies_both_controllers_on_the_same_seeds() {
+    let dir = temp_dir("campaign-compare");
+    let file = short_dispersed_scenario(&dir);
+    let out = dir.join("out");
+    let output = deckland(&[
+        "campaign",
+        &file,
+        "--runs",
+        "3",
+        "--compare",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_success(&output);
+    let table = String::from_utf8_lossy(&output.stdout);
+    assert!(
+        table.contains("O-PD (3 runs)") && table.contains("PID (3 runs)"),
+        "{table}"
+    );
+    let summary: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["controllers"][1]["controller"], "PID");
+    let csv = std::fs::read_to_string(out.join("runs.csv")).unwrap();
+    let rows: Vec<Vec<&str>> = csv
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect())
+        .collect();
+    assert_eq!(rows.len(), 6);
+    for pair in rows.chunks(2) {
+        assert_eq!((pair[0][1], pair[1][1]), ("O-PD", "PID"));
+        assert_eq!(pair[0][2], pair[1][2], "same seed");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn print_default_is_a_valid_scenario_file() {
+    let output = deckland(&["scenario", "--print-default"]);
+    assert_success(&output);
+    let text = String::from_utf8(output.stdout).unwrap();
+    assert_eq!(
+        text,
+        std::fs::read_to_string(scenario("paper-adverse.toml")).unwrap()
+    );
+    let checked = deckland(&["scenario", "--check", &scenario("heavy-sea.toml")]);
+    assert_success(&checked);
+}
+
+#[test]
+fn run_flies_a_scenario_file_like_land() {
+    let dir = temp_dir("run");
+    let output = deckland(&[
+        "run",
+        &scenario("calm.toml"),
+        "--out",
+        dir.to_str().unwrap(),
+        "--json",
+    ]);
+    assert_success(&output);
+    let v: Value = serde_json::from_slice(&output.stdout).unwrap();
+    assert_eq!(v["outcome"], "trap");
+    assert_eq!(v["conditions"], "calm.toml");
+    for file in [
+        "scenario.toml",
+        "approach.csv",
+        "summary.json",
+        "altitude.png",
+    ] {
+        assert!(dir.join(file).exists(), "{file}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_bad_scenario_file_is_refused_with_file_line_and_field() {
+    let dir = temp_dir("bad-scenario");
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("bad.toml");
+    std::fs::write(&path, "seed = 3\n[environment.ship]\nheave_rms_m = -2.0\n").unwrap();
+    for command in ["run", "campaign"] {
+        let mut args = vec![command, path.to_str().unwrap()];
+        if command == "campaign" {
+            args.extend(["--runs", "2"]);
+        }
+        let output = deckland(&args);
+        assert!(!output.status.success());
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(
+            stderr.contains("bad.toml, line 3, field `environment.ship.heave_rms_m`")
+                && stderr.contains("[0, 50]"),
+            "{stderr}"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
