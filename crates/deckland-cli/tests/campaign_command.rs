@@ -224,3 +224,59 @@ fn a_bad_scenario_file_is_refused_with_file_line_and_field() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Ctrl-C (SIGINT) stops the workers; the finished runs are written, sorted by index,
+/// marked partial, and the command exits with status 130.
+#[cfg(unix)]
+#[test]
+fn an_interrupted_campaign_keeps_a_consistent_partial_result() {
+    let dir = temp_dir("campaign-interrupt");
+    let out = dir.join("out");
+    let child = Command::new(env!("CARGO_BIN_EXE_deckland"))
+        .args([
+            "campaign",
+            &scenario("paper-adverse.toml"),
+            "--runs",
+            "100000",
+            "--threads",
+            "2",
+            "--out",
+            out.to_str().unwrap(),
+            "--json",
+        ])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    std::thread::sleep(std::time::Duration::from_millis(1500));
+    let killed = Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(killed.success());
+    let output = child.wait_with_output().unwrap();
+    assert_eq!(
+        output.status.code(),
+        Some(130),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let summary: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["partial"], true);
+    let finished = summary["finished_runs"].as_u64().unwrap();
+    assert!(finished < 100_000);
+    assert_eq!(summary["controllers"][0]["runs"].as_u64(), Some(finished));
+    let csv = std::fs::read_to_string(out.join("runs.csv")).unwrap();
+    let indices: Vec<u64> = csv
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').next().unwrap().parse().unwrap())
+        .collect();
+    assert_eq!(indices.len() as u64, finished);
+    assert!(
+        indices.windows(2).all(|w| w[0] < w[1]),
+        "sorted by run index"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -130,13 +130,18 @@ impl<'a> Row<'a> {
     }
 }
 
-/// `runs.csv` as bytes: one row per finished run and controller, sorted by run index.
-fn runs_csv(result: &CampaignResult) -> Result<Vec<u8>> {
-    let mut csv = csv::Writer::from_writer(Vec::new());
-    for record in &result.records {
-        csv.serialize(Row::new(record, &result.controller_labels))?;
-    }
-    csv.into_inner().map_err(|e| anyhow::anyhow!("{e}"))
+/// Writes `runs.csv` (atomically, streamed to the file): one row per finished run and
+/// controller, sorted by run index.
+fn write_runs_csv(result: &CampaignResult, output: &OutputDir) -> Result<()> {
+    output.write_with("runs.csv", |path| {
+        let mut csv = csv::Writer::from_path(path)?;
+        for record in &result.records {
+            csv.serialize(Row::new(record, &result.controller_labels))?;
+        }
+        csv.flush()?;
+        Ok(())
+    })?;
+    Ok(())
 }
 
 /// The progress bar on stderr: hidden when stderr is not a terminal or with `--json`.
@@ -403,7 +408,7 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
             .context("cannot write the scenario as TOML")?
             .as_bytes(),
     )?;
-    output.write_bytes("runs.csv", &runs_csv(&result)?)?;
+    write_runs_csv(&result, &output)?;
     output.write_bytes(
         "summary.json",
         serde_json::to_string_pretty(&report)?.as_bytes(),
