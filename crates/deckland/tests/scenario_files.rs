@@ -80,6 +80,27 @@ fn each_class_of_bad_input_names_the_file_line_and_field() {
             allowed: "expected one of",
         },
         Case {
+            what: "unknown key beside an approach mission's kind",
+            text: "[mission]\nkind = \"approach\"\nstep_deg = 2.0\n",
+            line: 3,
+            field: "mission.step_deg",
+            allowed: "takes only `kind`",
+        },
+        Case {
+            what: "unknown key in a tagged section",
+            text: "[control.pitch]\ntype = \"pid\"\nproportional = 50.0\n",
+            line: 3,
+            field: "control.pitch.proportional",
+            allowed: "expected one of `proportional_per_s2`",
+        },
+        Case {
+            what: "unknown controller type",
+            text: "[control.pitch]\ntype = \"lqr\"\n",
+            line: 2,
+            field: "control.pitch.type",
+            allowed: "`observer_pd` or `pid`",
+        },
+        Case {
             what: "wrong type (string for a number)",
             text: "[environment.ship]\nheave_rms_m = \"high\"\n",
             line: 2,

@@ -13,7 +13,7 @@ use std::ops::Range;
 
 use toml_edit::{ImDocument, InlineTable, Item, Table, Value};
 
-use super::Scenario;
+use super::{Mission, Scenario};
 use crate::aircraft::AircraftError;
 use crate::control::pitch::{ObserverPdGains, PitchControllerParameters};
 use crate::control::ControlError;
@@ -123,6 +123,13 @@ pub fn load_scenario(text: &str, file_name: &str) -> Result<Scenario, ScenarioEr
             Some(name) if !field.ends_with(name) => join(&field, name),
             _ => field,
         };
+        // Tagged sections (mission, control.pitch) lose the key's own span: find it.
+        let line = index
+            .keys
+            .iter()
+            .find(|k| k.path == field)
+            .map(|k| line_of(text, k.span.start))
+            .or(line);
         ScenarioError::Structure {
             file: file_name.to_owned(),
             line,
@@ -130,6 +137,21 @@ pub fn load_scenario(text: &str, file_name: &str) -> Result<Scenario, ScenarioEr
             message,
         }
     })?;
+    // serde ignores extra keys beside the tag of a unit variant: check them here.
+    if matches!(scenario.mission, Mission::Approach) {
+        if let Some(extra) = index
+            .keys
+            .iter()
+            .find(|k| k.path.starts_with("mission.") && k.path != "mission.kind")
+        {
+            return Err(ScenarioError::Structure {
+                file: file_name.to_owned(),
+                line: Some(line_of(text, extra.span.start)),
+                field: extra.path.clone(),
+                message: "unknown field: an `approach` mission takes only `kind`".to_owned(),
+            });
+        }
+    }
 
     check_values(&scenario).map_err(|(path, problem)| {
         let located = index.locate(&path);
