@@ -151,6 +151,14 @@ pub enum CampaignError {
         /// Controllers given.
         controllers: usize,
     },
+    /// More runs than this machine can count (runs × controllers overflows `usize`).
+    #[error("{runs} runs under {controllers} controllers are more than this machine can index")]
+    TooManyRuns {
+        /// Runs asked for.
+        runs: u64,
+        /// Controllers given.
+        controllers: usize,
+    },
     /// The scenario's mission is not an approach.
     #[error("a campaign flies approaches: set `mission.kind = \"approach\"`")]
     NotAnApproach,
@@ -252,7 +260,7 @@ pub fn run_campaign(
     let total = usize::try_from(spec.runs)
         .ok()
         .and_then(|runs| runs.checked_mul(variants))
-        .ok_or(CampaignError::Empty {
+        .ok_or(CampaignError::TooManyRuns {
             runs: spec.runs,
             controllers: variants,
         })?;
