@@ -264,11 +264,13 @@ pub fn run_campaign(
             runs: spec.runs,
             controllers: variants,
         })?;
-    let mut records: Vec<RunRecord> = pool.install(|| {
+    // An indexed collect writes each slot in place (no per-item lists); one run per task
+    // lets idle workers steal single runs, whose lengths differ.
+    let slots: Vec<Option<RunRecord>> = pool.install(|| {
         (0..total)
             .into_par_iter()
             .with_max_len(1)
-            .filter_map(|item| {
+            .map(|item| {
                 if stop.load(Ordering::Relaxed) {
                     return None;
                 }
@@ -278,6 +280,7 @@ pub fn run_campaign(
             })
             .collect()
     });
+    let mut records: Vec<RunRecord> = slots.into_iter().flatten().collect();
     records.sort_by_key(|r| (r.run_index, r.controller));
     let partial = records.len() < total;
     Ok(CampaignResult {
