@@ -24,6 +24,9 @@ enum Command {
     Linearize(commands::trim::TrimArgs),
     /// Simulate the ship motion and the wind alone; write a CSV and plots (paper Fig. 7, 8).
     Environment(commands::environment::EnvironmentArgs),
+    /// Pitch-attitude step with the O-PD and/or PID controller: metrics, CSV and plots
+    /// (paper Fig. 10–12).
+    Step(commands::step::StepArgs),
 }
 
 fn run(cli: &Cli) -> Result<()> {
@@ -31,6 +34,7 @@ fn run(cli: &Cli) -> Result<()> {
         Command::Trim(args) => commands::trim::run(args),
         Command::Linearize(args) => commands::linearize::run(args),
         Command::Environment(args) => commands::environment::run(args),
+        Command::Step(args) => commands::step::run(args),
     }
 }
 

@@ -3,4 +3,5 @@
 pub mod common;
 pub mod environment;
 pub mod linearize;
+pub mod step;
 pub mod trim;
