@@ -164,5 +164,6 @@ fn invalid_options_give_clear_errors() {
     assert_clear_error(&["--step-deg", "0"], "--step-deg");
     assert_clear_error(&["--seconds", "0"], "--seconds");
     assert_clear_error(&["--seconds", "NaN"], "--seconds");
+    assert_clear_error(&["--seconds", "-3"], "--seconds");
     assert_clear_error(&["--epsilon", "1.5"], "--epsilon");
 }

@@ -76,13 +76,13 @@ pub struct StepArgs {
     )]
     step_deg: f64,
     /// Simulated time (s), at least 2 (the step comes at 1 s), at most 600.
-    #[arg(long, default_value_t = 6.0)]
+    #[arg(long, default_value_t = 6.0, allow_negative_numbers = true)]
     seconds: f64,
     /// Scenario seed of the random streams (matters in adverse conditions).
     #[arg(long, default_value_t = 1)]
     seed: u64,
     /// O-PD observer bandwidth parameter ε in (0, 1) (default: the library's).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     epsilon: Option<f64>,
     /// Output folder (default: a new runs/step-<UTC timestamp>).
     #[arg(long)]
