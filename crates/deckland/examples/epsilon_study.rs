@@ -8,6 +8,9 @@
 //!    adverse conditions (median over seeds 1–5).
 //! 2. O-PD (library default ε) against the PID for steps of 1°, 2° and 5°, ideal and
 //!    adverse (median over seeds 1–5).
+//! 3. Which disturbance keeps the 2° step from settling: adverse with the sensor noise
+//!    off, or only its sinusoidal or its white part off; and the O-PD feeding back the
+//!    observer's θ estimate instead of the measurement.
 //!
 //! Every run is `Mission::pitch_step(step, 6 s)`: the step at t = 1 s from level trim at
 //! 69.1 m/s, recorded every 1 ms. Settling time: from the step to the last entry into
@@ -16,7 +19,9 @@
 //! any settled one; if the median run did not settle, the table says "—".
 
 use deckland::aircraft::ElevatorActuatorParameters;
-use deckland::control::pitch::{ObserverPdParameters, PidParameters, PitchControllerParameters};
+use deckland::control::pitch::{
+    ObserverPdParameters, PidParameters, PitchControllerParameters, PitchFeedback,
+};
 use deckland::metrics::{step_response_metrics, time_at_limits_s, StepResponseSpec};
 use deckland::recording::TimeSeriesRecorder;
 use deckland::scenario::{Mission, Scenario};
@@ -51,19 +56,46 @@ struct RunMetrics {
     residual_rms_deg: f64,
 }
 
+/// Which disturbances act.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Disturbances {
+    /// None (`Scenario::ideal`).
+    Ideal,
+    /// Every disturbance at its default (`Scenario::default`).
+    Adverse,
+    /// Adverse without the pitch-measurement noise (both terms).
+    AdverseWithoutSensorNoise,
+    /// Adverse without the sinusoidal pitch-measurement error.
+    AdverseWithoutSinusoid,
+    /// Adverse without the white pitch-measurement noise.
+    AdverseWithoutWhiteNoise,
+}
+
+impl Disturbances {
+    fn scenario(self, seed: u64) -> Scenario {
+        let mut scenario = Scenario {
+            seed,
+            ..Scenario::default()
+        };
+        let noise = &mut scenario.environment.pitch_noise;
+        match self {
+            Self::Ideal => return scenario.ideal(),
+            Self::Adverse => {}
+            Self::AdverseWithoutSensorNoise => noise.enabled = false,
+            Self::AdverseWithoutSinusoid => noise.sinusoid_amplitude_rad = 0.0,
+            Self::AdverseWithoutWhiteNoise => noise.white_noise_sigma_rad = 0.0,
+        }
+        scenario
+    }
+}
+
 fn fly(
     pitch: PitchControllerParameters,
-    adverse: bool,
+    disturbances: Disturbances,
     seed: u64,
     step_deg: f64,
 ) -> Result<RunMetrics, Box<dyn std::error::Error>> {
-    let mut scenario = Scenario {
-        seed,
-        ..Scenario::default()
-    };
-    if !adverse {
-        scenario = scenario.ideal();
-    }
+    let mut scenario = disturbances.scenario(seed);
     scenario.control.pitch = pitch;
     scenario.mission = Mission::pitch_step(step_deg, DURATION_S);
     let mut recorder = TimeSeriesRecorder::new(1);
@@ -143,13 +175,17 @@ fn median(runs: &[RunMetrics]) -> (RunMetrics, usize) {
 
 fn runs(
     pitch: PitchControllerParameters,
-    adverse: bool,
+    disturbances: Disturbances,
     step_deg: f64,
 ) -> Result<(RunMetrics, usize, usize), Box<dyn std::error::Error>> {
-    let seeds: Vec<u64> = if adverse { SEEDS.collect() } else { vec![1] };
+    let seeds: Vec<u64> = if disturbances == Disturbances::Ideal {
+        vec![1]
+    } else {
+        SEEDS.collect()
+    };
     let metrics = seeds
         .iter()
-        .map(|&seed| fly(pitch, adverse, seed, step_deg))
+        .map(|&seed| fly(pitch, disturbances, seed, step_deg))
         .collect::<Result<Vec<_>, _>>()?;
     let (median, settled) = median(&metrics);
     Ok((median, settled, seeds.len()))
@@ -186,14 +222,22 @@ const RULE: &str = "|---|---|---|---|---|---|---|---|";
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     println!("## O-PD observer bandwidth ε, 2° pitch step, {DURATION_S} s runs\n");
-    for (conditions, adverse) in [("ideal", false), ("adverse (median of seeds 1–5)", true)] {
+    let conditions = [
+        ("ideal", Disturbances::Ideal),
+        ("adverse (median of seeds 1–5)", Disturbances::Adverse),
+    ];
+    for (conditions, disturbances) in conditions {
         println!("### {conditions}\n");
         println!("| ε {HEADER}");
         println!("{RULE}");
         for epsilon in EPSILONS {
             let mut opd = ObserverPdParameters::default();
             opd.observer.epsilon = epsilon;
-            let (m, settled, of) = runs(PitchControllerParameters::ObserverPd(opd), adverse, 2.0)?;
+            let (m, settled, of) = runs(
+                PitchControllerParameters::ObserverPd(opd),
+                disturbances,
+                2.0,
+            )?;
             println!("{}", row(&format!("{epsilon}"), &m, settled, of));
         }
         println!();
@@ -201,7 +245,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 
     let default_epsilon = ObserverPdParameters::default().observer.epsilon;
     println!("## O-PD (ε = {default_epsilon}) against the PID, steps of 1°, 2°, 5°\n");
-    for (conditions, adverse) in [("ideal", false), ("adverse (median of seeds 1–5)", true)] {
+    for (conditions, disturbances) in conditions {
         println!("### {conditions}\n");
         println!("| controller, step {HEADER}");
         println!("{RULE}");
@@ -213,11 +257,51 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     PitchControllerParameters::Pid(PidParameters::default()),
                 ),
             ] {
-                let (m, settled, of) = runs(pitch, adverse, step_deg)?;
+                let (m, settled, of) = runs(pitch, disturbances, step_deg)?;
                 println!("{}", row(&format!("{name}, {step_deg}°"), &m, settled, of));
             }
         }
         println!();
     }
+
+    println!("## Which disturbance stops the 2° step settling (median of seeds 1–5)\n");
+    println!("| controller, disturbances {HEADER}");
+    println!("{RULE}");
+    let estimate_feedback = ObserverPdParameters {
+        pitch_feedback: PitchFeedback::ObserverEstimate,
+        ..ObserverPdParameters::default()
+    };
+    for (case, disturbances) in [
+        ("adverse", Disturbances::Adverse),
+        ("no sensor noise", Disturbances::AdverseWithoutSensorNoise),
+        (
+            "no sinusoidal sensor error",
+            Disturbances::AdverseWithoutSinusoid,
+        ),
+        (
+            "no white sensor noise",
+            Disturbances::AdverseWithoutWhiteNoise,
+        ),
+    ] {
+        for (name, pitch) in [
+            ("O-PD", PitchControllerParameters::default()),
+            (
+                "PID",
+                PitchControllerParameters::Pid(PidParameters::default()),
+            ),
+        ] {
+            let (m, settled, of) = runs(pitch, disturbances, 2.0)?;
+            println!("{}", row(&format!("{name}, {case}"), &m, settled, of));
+        }
+    }
+    let (m, settled, of) = runs(
+        PitchControllerParameters::ObserverPd(estimate_feedback),
+        Disturbances::Adverse,
+        2.0,
+    )?;
+    println!(
+        "{}",
+        row("O-PD, θ estimate fed back, adverse", &m, settled, of)
+    );
     Ok(())
 }
