@@ -120,6 +120,7 @@ struct StepReport {
     seed: u64,
     seconds: f64,
     step_time_s: f64,
+    airspeed_mps: f64,
     settling_band_pct: f64,
     epsilon: f64,
     controllers: Vec<ControllerResult>,
@@ -389,10 +390,11 @@ fn format_option(value: Option<f64>, digits: usize, unit: &str) -> String {
 
 fn print_table(report: &StepReport, written: &[PathBuf]) {
     println!(
-        "Pitch step {:+}° at t = {} s from level trim (69.1 m/s), {} conditions, seed {}, \
+        "Pitch step {:+}° at t = {} s from level trim ({} m/s), {} conditions, seed {}, \
          {} s, O-PD ε = {}",
         report.step_deg,
         report.step_time_s,
+        report.airspeed_mps,
         report.conditions,
         report.seed,
         report.seconds,
@@ -485,6 +487,7 @@ pub fn run(args: &StepArgs) -> Result<()> {
         seed: args.seed,
         seconds: args.seconds,
         step_time_s: STEP_TIME_S,
+        airspeed_mps: args.conditions.scenario(args.seed).approach.airspeed_mps,
         settling_band_pct: SETTLING_BAND_FRACTION * 100.0,
         epsilon,
         controllers: runs.into_iter().map(|r| r.result).collect(),
