@@ -28,6 +28,9 @@ enum Command {
     Sink(commands::sink::SinkArgs),
     /// Simulate the ship motion and the wind alone; write a CSV and plots (paper Fig. 7, 8).
     Environment(commands::environment::EnvironmentArgs),
+    /// Pitch-attitude step with the O-PD and/or PID controller: metrics, CSV and plots
+    /// (paper Fig. 10–12).
+    Step(commands::step::StepArgs),
 }
 
 fn run(cli: &Cli) -> Result<()> {
@@ -37,6 +40,7 @@ fn run(cli: &Cli) -> Result<()> {
         Command::Environment(args) => commands::environment::run(args),
         Command::Land(args) => commands::land::run(args),
         Command::Sink(args) => commands::sink::run(args),
+        Command::Step(args) => commands::step::run(args),
     }
 }
 

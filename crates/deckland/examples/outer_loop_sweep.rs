@@ -31,7 +31,8 @@ fn row(label: &str, results: &[RunSummary]) {
         .collect();
     let n = distances.len().max(1) as f64;
     let mean = distances.iter().sum::<f64>() / n;
-    let sd = (distances.iter().map(|d| (d - mean).powi(2)).sum::<f64>() / (n - 1.0).max(1.0)).sqrt();
+    let sd =
+        (distances.iter().map(|d| (d - mean).powi(2)).sum::<f64>() / (n - 1.0).max(1.0)).sqrt();
     println!(
         "| {label} | {:.0} % | {} | {} | {} | {} | {mean:+.1} ± {sd:.1} |",
         100.0 * count(Outcome::Trap) as f64 / results.len() as f64,
@@ -43,7 +44,10 @@ fn row(label: &str, results: &[RunSummary]) {
 }
 
 fn main() -> Result<(), SimulationError> {
-    let count: u64 = std::env::args().nth(1).and_then(|a| a.parse().ok()).unwrap_or(50);
+    let count: u64 = std::env::args()
+        .nth(1)
+        .and_then(|a| a.parse().ok())
+        .unwrap_or(50);
     let seeds: Vec<u64> = (1..=count).collect();
     println!("| configuration (adverse, O-PD, seeds 1–{count}) | trap | bolter | ramp strike | hard | diverged | touchdown from aim (m) |");
     println!("|---|---|---|---|---|---|---|");
@@ -62,7 +66,11 @@ fn main() -> Result<(), SimulationError> {
     }
     for (conditions, base, offset_m) in [
         ("ideal, on the path", Scenario::default().ideal(), 0.0),
-        ("ideal, 5 m above the path", Scenario::default().ideal(), 5.0),
+        (
+            "ideal, 5 m above the path",
+            Scenario::default().ideal(),
+            5.0,
+        ),
         ("adverse, seed 1", Scenario::default(), 0.0),
     ] {
         let mut paper = base;

@@ -5,4 +5,5 @@ pub mod environment;
 pub mod land;
 pub mod linearize;
 pub mod sink;
+pub mod step;
 pub mod trim;
