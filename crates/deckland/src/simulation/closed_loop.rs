@@ -335,7 +335,10 @@ impl ClosedLoop {
                     .output(sink_error, s.sink_rate_integral_m, 0.0)
             }
             LoopMode::Approach => {
-                let deck = self.deck_reference(&s, &pose, &pose_rate, hook_x_m, hook_x_rate_mps);
+                let deck = match self.held.deck {
+                    Some(deck) => deck,
+                    None => self.deck_reference(&s, &pose, &pose_rate, hook_x_m, hook_x_rate_mps),
+                };
                 let path = self.flight_path.reference(hook_x_m, hook_x_rate_mps, &deck);
                 path_height_m = path.height_m;
                 time_to_go_s = path.time_to_go_s;
@@ -357,7 +360,7 @@ impl ClosedLoop {
         };
 
         // Pitch controller on the measured attitude (MODEL.md §3.3, §4).
-        let theta_measured_rad = a.theta_rad + self.sensor.sinusoid(t) + self.held.pitch_noise_rad;
+        let theta_measured_rad = a.theta_rad + self.held.pitch_noise_rad;
         let actuator = self.aircraft.actuator();
         let pitch_inputs = PitchControlInputs {
             theta_ref_rad,
