@@ -113,6 +113,21 @@ pub enum LoopMode {
     Approach,
 }
 
+/// A point where a loop of the cascade can be cut for analysis: downstream of it the loop
+/// uses an injected value, and the value the loop computes there is reported in
+/// [`Signals::loop_break_output`] (MODEL.md §5: margins on the linearised cascade).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LoopBreak {
+    /// The elevator command (rad): the pitch loop.
+    ElevatorCommand,
+    /// The pitch command θ_ref (rad): the sink-rate loop.
+    PitchCommand,
+    /// The climb-rate command (m/s): the guidance loop.
+    ClimbRateCommand,
+    /// The thrust command (N): the speed loop.
+    ThrustCommand,
+}
+
 /// Every signal of interest at one instant, for recorders and event detection.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Signals {
@@ -174,6 +189,8 @@ pub struct Signals {
     pub aim_point: EarthPoint,
     /// The pitch controller's disturbance estimate (rad/s², O-PD only).
     pub disturbance_estimate_radps2: Option<f64>,
+    /// With a loop break set, the value the loop computed at the break (else NaN).
+    pub loop_break_output: f64,
 }
 
 /// The closed-loop system integrated by the simulation.
@@ -197,6 +214,8 @@ pub struct ClosedLoop {
     pub(crate) airspeed_reference_mps: f64,
     pub(crate) mode: LoopMode,
     pub(crate) held: HeldInputs,
+    /// Analysis only: the loop cut and the value injected there.
+    pub(crate) loop_break: Option<(LoopBreak, f64)>,
 }
 
 impl ClosedLoop {
@@ -308,7 +327,8 @@ impl ClosedLoop {
         let mut height_error = 0.0;
         let mut climb_rate_command_mps = f64::NAN;
         let mut sink_error = 0.0;
-        let theta_ref_rad = match self.mode {
+        let mut loop_break_output = f64::NAN;
+        let mut theta_ref_rad = match self.mode {
             LoopMode::PitchStep {
                 step_rad,
                 step_time_s,
@@ -351,6 +371,10 @@ impl ClosedLoop {
                         s.guidance_integral_m_s,
                         height_error_rate,
                     );
+                if let Some((LoopBreak::ClimbRateCommand, injected)) = self.loop_break {
+                    loop_break_output = climb_rate_command_mps;
+                    climb_rate_command_mps = injected;
+                }
                 sink_error = climb_rate_command_mps - climb_rate_mps;
                 trim.theta_rad
                     + self
@@ -358,6 +382,11 @@ impl ClosedLoop {
                         .output(sink_error, s.sink_rate_integral_m, 0.0)
             }
         };
+
+        if let Some((LoopBreak::PitchCommand, injected)) = self.loop_break {
+            loop_break_output = theta_ref_rad;
+            theta_ref_rad = injected;
+        }
 
         // Pitch controller on the measured attitude (MODEL.md §3.3, §4).
         let theta_measured_rad = a.theta_rad + self.held.pitch_noise_rad;
@@ -377,11 +406,19 @@ impl ClosedLoop {
             ),
         };
         let pitch_state = self.pitch.state_from_array(&s.pitch_controller);
-        let elevator_command_rad = self.pitch.elevator_command_rad(&pitch_state, &pitch_inputs);
+        let mut elevator_command_rad = self.pitch.elevator_command_rad(&pitch_state, &pitch_inputs);
+        if let Some((LoopBreak::ElevatorCommand, injected)) = self.loop_break {
+            loop_break_output = elevator_command_rad;
+            elevator_command_rad = injected;
+        }
 
         // Speed loop (MODEL.md §5).
         let speed_error = self.airspeed_reference_mps - air.airspeed_mps;
-        let thrust_command_n = self.speed.thrust_command_n(speed_error, s.speed_integral_m);
+        let mut thrust_command_n = self.speed.thrust_command_n(speed_error, s.speed_integral_m);
+        if let Some((LoopBreak::ThrustCommand, injected)) = self.loop_break {
+            loop_break_output = thrust_command_n;
+            thrust_command_n = injected;
+        }
 
         let commands = AircraftCommands {
             elevator_rad: elevator_command_rad,
@@ -449,6 +486,7 @@ impl ClosedLoop {
             ship_rate: pose_rate,
             aim_point,
             disturbance_estimate_radps2: pitch_state.disturbance_estimate_radps2(),
+            loop_break_output,
         };
         (derivative, signals)
     }

@@ -397,6 +397,7 @@ pub(crate) fn build(scenario: &Scenario) -> Result<Setup, SimulationError> {
         airspeed_reference_mps: airspeed,
         mode,
         held: HeldInputs::default(),
+        loop_break: None,
     };
     Ok(Setup {
         system,
