@@ -302,7 +302,7 @@ fn csv_bytes(runs: &[ControllerRun]) -> Result<Vec<u8>> {
                             .map_or(String::new(), |d| d.to_string()),
                     );
                 }
-                None => record.extend(std::iter::repeat(String::new()).take(6)),
+                None => record.extend(std::iter::repeat_n(String::new(), 6)),
             }
         }
         writer.write_record(&record)?;
