@@ -317,7 +317,7 @@ impl ClosedLoop {
             .air_data_trig(a.u_mps, a.w_mps, sin_t, cos_t, &wind);
         let (hook_x_m, hook_h_m) = self.hook.position_trig(a, sin_t, cos_t);
         let (hook_x_rate_mps, hook_climb_rate_mps) = self.hook.velocity_trig(a, sin_t, cos_t);
-        let climb_rate_mps = a.u_mps * sin_t - a.w_mps * cos_t;
+        let (_, climb_rate_mps) = a.earth_velocity_trig(sin_t, cos_t);
         let trim = &self.trim;
 
         // References: flight path → guidance → sink rate → pitch (MODEL.md §5).
