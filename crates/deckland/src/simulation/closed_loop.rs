@@ -81,6 +81,10 @@ pub struct HeldInputs {
     /// Pitch-measurement error (rad): white noise plus the sinusoid, sampled at the start
     /// of the step (the sensor is read once per control step).
     pub pitch_noise_rad: f64,
+    /// The wind at the aircraft (mean, turbulence, steady and periodic wake), sampled at
+    /// the start of the step and held over it, like the turbulence it contains;
+    /// `None` evaluates it at every stage.
+    pub wind: Option<Wind>,
     /// The deck reference of the glide-path generator (mean and predicted landing point),
     /// computed at the start of the step and held over it (the guidance computer updates
     /// once per step); `None` outside the approach.
@@ -228,6 +232,14 @@ impl ClosedLoop {
         )
     }
 
+    /// The wind at the aircraft at (t, x), as the runner holds it over a step.
+    pub fn wind_at(&self, t: f64, x: &[f64; LOOP_DIMENSION]) -> Wind {
+        let s = LoopState::from_array(x);
+        let (pose, _) = self.ship_pose(&s.ship, t);
+        self.wind
+            .wind(t, pose.distance_aft_of_pitch_centre_m(s.aircraft.x_m))
+    }
+
     /// The deck reference at (t, x), as the runner holds it over a step.
     pub fn deck_reference_at(&self, t: f64, x: &[f64; LOOP_DIMENSION]) -> Option<DeckReference> {
         if !matches!(self.mode, LoopMode::Approach) {
@@ -310,7 +322,10 @@ impl ClosedLoop {
         let a = &s.aircraft;
         let (pose, pose_rate) = self.ship_pose(&s.ship, t);
         let distance_aft_m = pose.distance_aft_of_pitch_centre_m(a.x_m);
-        let wind = self.wind.wind(t, distance_aft_m);
+        let wind = match self.held.wind {
+            Some(wind) => wind,
+            None => self.wind.wind(t, distance_aft_m),
+        };
         let (sin_t, cos_t) = a.theta_rad.sin_cos();
         let air = self
             .aircraft
