@@ -189,8 +189,9 @@ pub(crate) fn table(f: &Findings) -> Vec<Row> {
                            would need about 3.6 times that drag"
                     .to_string(),
                 (0, 1) => "ours is −g with the paper's own g = 9.75 (Table 2)".to_string(),
-                (0, 2) => "**large**: ours holds +g·cos γ* = +9.75 (γ = θ − α) less the drag \
-                           slope; the paper's value looks like the drag slope alone"
+                (0, 2) => "**large**: ours is (−T* sin α* − ∂D/∂α)/m + g cos γ* (γ = θ − α): \
+                           the gravity term +9.75 nearly cancels the drag slope; the paper's \
+                           −0.274 does not follow from the data"
                     .to_string(),
                 (1, 3) => "kinematic (θ̇ = q)".to_string(),
                 (2, 3) => "kinematic (α̇ contains q; the paper's Eq. 3 omits it)".to_string(),
