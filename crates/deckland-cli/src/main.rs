@@ -31,6 +31,8 @@ enum Command {
     /// Pitch-attitude step with the O-PD and/or PID controller: metrics, CSV and plots
     /// (paper Fig. 10–12).
     Step(commands::step::StepArgs),
+    /// Regenerate the paper's figures and a report of its numbers beside ours (REPORT.md).
+    Reproduce(commands::reproduce::ReproduceArgs),
 }
 
 fn run(cli: &Cli) -> Result<()> {
@@ -41,6 +43,7 @@ fn run(cli: &Cli) -> Result<()> {
         Command::Land(args) => commands::land::run(args),
         Command::Sink(args) => commands::sink::run(args),
         Command::Step(args) => commands::step::run(args),
+        Command::Reproduce(args) => commands::reproduce::run(args),
     }
 }
 

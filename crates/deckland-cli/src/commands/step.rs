@@ -63,53 +63,53 @@ impl StepControllers {
 pub struct StepArgs {
     /// Which pitch controller(s) fly the step.
     #[arg(long, value_enum, default_value_t = StepControllers::Both)]
-    controller: StepControllers,
+    pub(crate) controller: StepControllers,
     /// Ideal (no disturbance) or adverse (wind, air wake, turbulence, sensor noise, deck
     /// motion).
     #[arg(long, value_enum, default_value_t = Conditions::Ideal)]
-    conditions: Conditions,
+    pub(crate) conditions: Conditions,
     /// Pitch step (deg, positive nose-up), applied at t = 1 s; nonzero, |D| <= 10.
     #[arg(
         long = "step-deg",
         default_value_t = 2.0,
         allow_negative_numbers = true
     )]
-    step_deg: f64,
+    pub(crate) step_deg: f64,
     /// Simulated time (s), at least 2 (the step comes at 1 s), at most 600.
     #[arg(long, default_value_t = 6.0, allow_negative_numbers = true)]
-    seconds: f64,
+    pub(crate) seconds: f64,
     /// Scenario seed of the random streams (matters in adverse conditions).
     #[arg(long, default_value_t = 1)]
-    seed: u64,
+    pub(crate) seed: u64,
     /// O-PD observer bandwidth parameter ε in (0, 1) (default: the library's).
     #[arg(long, allow_negative_numbers = true)]
-    epsilon: Option<f64>,
+    pub(crate) epsilon: Option<f64>,
     /// Output folder (default: a new runs/step-<UTC timestamp>).
     #[arg(long)]
-    out: Option<PathBuf>,
+    pub(crate) out: Option<PathBuf>,
     /// Overwrite results in an --out folder that already holds some.
     #[arg(long)]
-    force: bool,
+    pub(crate) force: bool,
     /// Print one JSON document instead of the table.
     #[arg(long)]
-    json: bool,
+    pub(crate) json: bool,
 }
 
 /// The step response of one controller, as printed in the JSON document.
 #[derive(Debug, Clone, Serialize)]
-struct ControllerResult {
-    controller: &'static str,
-    settling_time_s: Option<f64>,
-    settled: bool,
-    not_settled_reason: Option<String>,
-    overshoot_pct: f64,
-    rise_time_s: Option<f64>,
-    steady_state_error_deg: Option<f64>,
-    max_elevator_deg: f64,
-    max_elevator_change_deg: f64,
-    elevator_saturation_s: f64,
-    elevator_total_variation_deg: f64,
-    outcome: &'static str,
+pub(crate) struct ControllerResult {
+    pub(crate) controller: &'static str,
+    pub(crate) settling_time_s: Option<f64>,
+    pub(crate) settled: bool,
+    pub(crate) not_settled_reason: Option<String>,
+    pub(crate) overshoot_pct: f64,
+    pub(crate) rise_time_s: Option<f64>,
+    pub(crate) steady_state_error_deg: Option<f64>,
+    pub(crate) max_elevator_deg: f64,
+    pub(crate) max_elevator_change_deg: f64,
+    pub(crate) elevator_saturation_s: f64,
+    pub(crate) elevator_total_variation_deg: f64,
+    pub(crate) outcome: &'static str,
 }
 
 /// The JSON document of `deckland step --json`.
@@ -128,10 +128,13 @@ struct StepReport {
 }
 
 /// One controller's run.
-struct ControllerRun {
-    choice: ControllerChoice,
-    samples: Vec<Signals>,
-    result: ControllerResult,
+pub(crate) struct ControllerRun {
+    /// Which controller flew.
+    pub(crate) choice: ControllerChoice,
+    /// The recorded samples (every 2 ms).
+    pub(crate) samples: Vec<Signals>,
+    /// The step-response metrics.
+    pub(crate) result: ControllerResult,
 }
 
 fn check_arguments(args: &StepArgs) -> Result<()> {
@@ -170,7 +173,7 @@ fn controller_parameters(
 }
 
 /// Flies the step with one controller and measures it.
-fn fly(args: &StepArgs, choice: ControllerChoice) -> Result<ControllerRun> {
+pub(crate) fn fly(args: &StepArgs, choice: ControllerChoice) -> Result<ControllerRun> {
     let mut scenario = args.conditions.scenario(args.seed);
     scenario.control.pitch = controller_parameters(choice, args.epsilon);
     scenario.mission = Mission::pitch_step(args.step_deg, args.seconds);
@@ -323,7 +326,7 @@ fn series(samples: &[Signals], value: impl Fn(&Signals) -> f64) -> Vec<(f64, f64
 }
 
 /// The pitch figure (paper Fig. 10/11) and the elevator figure (paper Fig. 12).
-fn figures(runs: &[ControllerRun], args: &StepArgs) -> Vec<(&'static str, Figure)> {
+pub(crate) fn figures(runs: &[ControllerRun], args: &StepArgs) -> Vec<(&'static str, Figure)> {
     let conditions = match args.conditions {
         Conditions::Ideal => "no noise or wind (cf. paper Fig. 10)".to_string(),
         Conditions::Adverse => format!("noise and wind, seed {} (cf. paper Fig. 11)", args.seed),
