@@ -28,6 +28,11 @@ enum Command {
     Sink(commands::sink::SinkArgs),
     /// Simulate the ship motion and the wind alone; write a CSV and plots (paper Fig. 7, 8).
     Environment(commands::environment::EnvironmentArgs),
+    /// Pitch-attitude step with the O-PD and/or PID controller: metrics, CSV and plots
+    /// (paper Fig. 10–12).
+    Step(commands::step::StepArgs),
+    /// Regenerate the paper's figures and a report of its numbers beside ours (REPORT.md).
+    Reproduce(commands::reproduce::ReproduceArgs),
     /// Print the commented default scenario file, or check a scenario file.
     Scenario(commands::scenario::ScenarioArgs),
     /// Fly one approach of a scenario file: CSV, summary and plots, as `land`.
@@ -44,6 +49,8 @@ fn run(cli: &Cli) -> Result<()> {
         Command::Environment(args) => commands::environment::run(args),
         Command::Land(args) => commands::land::run(args),
         Command::Sink(args) => commands::sink::run(args),
+        Command::Step(args) => commands::step::run(args),
+        Command::Reproduce(args) => commands::reproduce::run(args),
         Command::Scenario(args) => commands::scenario::run(args),
         Command::Run(args) => commands::run::run(args),
         Command::Campaign(args) => commands::campaign::run(args),

@@ -175,3 +175,26 @@ fn invalid_scenarios_are_rejected_with_the_field_named() {
         .to_string()
         .contains("k2"));
 }
+
+/// Regression: the sensor's sinusoid was once added twice (held per step and again per
+/// stage), doubling its amplitude. With only the sinusoid on, θ_m − θ must be
+/// 0.001·sin(7t) at every recorded step (MODEL.md §3.3).
+#[test]
+fn regression_sensor_sinusoid_is_added_once() {
+    let mut scenario = Scenario::default().ideal();
+    scenario.environment.pitch_noise.enabled = true;
+    scenario.environment.pitch_noise.white_noise_sigma_rad = 0.0;
+    scenario.mission = deckland::scenario::Mission::pitch_step(1.0, 2.0);
+    let mut recorder = TimeSeriesRecorder::new(1);
+    Simulation::new(&scenario).unwrap().run(&mut recorder);
+    assert!(recorder.samples.len() > 1000);
+    for s in &recorder.samples {
+        let expected = 0.001 * (7.0 * s.time_s).sin();
+        let error = s.theta_measured_rad - s.theta_rad;
+        assert!(
+            (error - expected).abs() < 1e-12,
+            "t {}: {error} vs {expected}",
+            s.time_s
+        );
+    }
+}

@@ -3,12 +3,9 @@
 
 #![allow(clippy::unwrap_used)] // tests fail loudly by design
 
-use deckland::aircraft::{
-    Aircraft, AircraftCommands, AircraftState, AirframeInputs, OpenLoopAircraft, Wind,
-};
-use deckland::analysis::{linearize, trim, TrimPoint, TrimRequest};
-use deckland::integration::{rk4_step, OdeSystem};
-use nalgebra::{SMatrix, SVector};
+use deckland::aircraft::{Aircraft, AircraftCommands, AircraftState, OpenLoopAircraft, Wind};
+use deckland::analysis::{open_loop_step_responses, trim, InputStep, TrimPoint, TrimRequest};
+use deckland::integration::rk4_step;
 
 const DT: f64 = 1e-3;
 
@@ -58,69 +55,23 @@ fn trimmed_aircraft_flown_open_loop_stays_at_trim() {
     assert!((end.x_m - 69.1 * 20.0).abs() < 1e-4);
 }
 
-/// The airframe alone (direct elevator and throttle, as linearised) in (V, θ, α, q).
-struct Airframe {
-    aircraft: Aircraft,
-    inputs: AirframeInputs,
-}
-
-impl OdeSystem<4> for Airframe {
-    fn derivative(&self, _t: f64, x: &[f64; 4]) -> [f64; 4] {
-        let [v, theta, alpha, q] = *x;
-        let (u, w) = (v * alpha.cos(), v * alpha.sin());
-        let (u_dot, w_dot, q_dot) =
-            self.aircraft
-                .airframe_accelerations(u, w, q, theta, &self.inputs, &Wind::default());
-        [
-            (u * u_dot + w * w_dot) / v,
-            q,
-            (u * w_dot - w * u_dot) / (v * v),
-            q_dot,
-        ]
-    }
-}
-
-struct Linear {
-    a: SMatrix<f64, 4, 4>,
-    bu: SVector<f64, 4>,
-}
-
-impl OdeSystem<4> for Linear {
-    fn derivative(&self, _t: f64, x: &[f64; 4]) -> [f64; 4] {
-        (self.a * SVector::<f64, 4>::from_column_slice(x) + self.bu).into()
-    }
-}
-
 /// Flies the nonlinear airframe and the linear model for `seconds` after an input step
 /// `delta` (elevator rad, throttle fraction) and returns the worst state error relative
 /// to that state's largest excursion.
 fn linear_prediction_error(delta: [f64; 2], seconds: f64) -> [f64; 4] {
     let aircraft = Aircraft::default();
     let point = level_trim(&aircraft);
-    let model = linearize(&aircraft, &point);
-    let nonlinear = Airframe {
-        aircraft,
-        inputs: AirframeInputs {
-            elevator_rad: point.elevator_rad + delta[0],
-            thrust_n: point.thrust_n + delta[1] * aircraft.engines().max_total_thrust_n(),
-        },
+    let step = InputStep {
+        elevator_rad: delta[0],
+        throttle: delta[1],
     };
-    let linear = Linear {
-        a: model.a,
-        bu: model.b * SVector::<f64, 2>::new(delta[0], delta[1]),
-    };
-    let trim_x = [point.speed_mps, point.theta_rad, point.alpha_rad, 0.0];
-    let mut x_nl = trim_x;
-    let mut x_lin = [0.0; 4];
+    let (_, samples) = open_loop_step_responses(&aircraft, &point, step, seconds, DT, DT).unwrap();
     let mut max_error = [0.0_f64; 4];
     let mut max_excursion = [0.0_f64; 4];
-    for k in 0..(seconds / DT).round() as usize {
-        x_nl = rk4_step(&nonlinear, k as f64 * DT, &x_nl, DT);
-        x_lin = rk4_step(&linear, k as f64 * DT, &x_lin, DT);
+    for sample in &samples {
         for i in 0..4 {
-            let deviation = x_nl[i] - trim_x[i];
-            max_error[i] = max_error[i].max((deviation - x_lin[i]).abs());
-            max_excursion[i] = max_excursion[i].max(deviation.abs());
+            max_error[i] = max_error[i].max((sample.nonlinear[i] - sample.linear[i]).abs());
+            max_excursion[i] = max_excursion[i].max(sample.nonlinear[i].abs());
         }
     }
     std::array::from_fn(|i| max_error[i] / max_excursion[i])

@@ -24,10 +24,10 @@ const RECORD_EVERY_STEPS: usize = 10;
 pub struct EnvironmentArgs {
     /// Simulated time (s).
     #[arg(long, default_value_t = 60.0)]
-    seconds: f64,
+    pub(crate) seconds: f64,
     /// Scenario seed of the random streams.
     #[arg(long, default_value_t = 1)]
-    seed: u64,
+    pub(crate) seed: u64,
     /// Where the wind is sampled: distance aft of the ship's pitch centre (m, positive aft),
     /// the X of the paper's wake model (Fig. 8 uses 400).
     #[arg(
@@ -35,35 +35,35 @@ pub struct EnvironmentArgs {
         default_value_t = 400.0,
         allow_negative_numbers = true
     )]
-    distance_aft_m: f64,
+    pub(crate) distance_aft_m: f64,
     /// Airspeed that sets the turbulence time constant L/V (m/s); default the paper's trim
     /// speed (Table 3).
     #[arg(long = "airspeed", default_value_t = 69.1)]
-    airspeed_mps: f64,
+    pub(crate) airspeed_mps: f64,
     /// Output folder (default: a new runs/environment-<UTC timestamp>).
     #[arg(long)]
-    out: Option<PathBuf>,
+    pub(crate) out: Option<PathBuf>,
     /// Overwrite results in an --out folder that already holds some.
     #[arg(long)]
-    force: bool,
+    pub(crate) force: bool,
 }
 
-/// One recorded row of `environment.csv`.
+/// One recorded row of `environment.csv` (heights in m, angles in deg, wind in m/s).
 #[derive(Debug, Clone, Serialize)]
-struct Row {
-    time_s: f64,
-    heave_m: f64,
-    pitch_deg: f64,
-    landing_point_height_m: f64,
-    wind_x_mps: f64,
-    wind_z_mps: f64,
-    mean_wind_x_mps: f64,
-    turbulence_x_mps: f64,
-    turbulence_z_mps: f64,
-    steady_wake_x_mps: f64,
-    steady_wake_z_mps: f64,
-    periodic_wake_x_mps: f64,
-    periodic_wake_z_mps: f64,
+pub(crate) struct Row {
+    pub(crate) time_s: f64,
+    pub(crate) heave_m: f64,
+    pub(crate) pitch_deg: f64,
+    pub(crate) landing_point_height_m: f64,
+    pub(crate) wind_x_mps: f64,
+    pub(crate) wind_z_mps: f64,
+    pub(crate) mean_wind_x_mps: f64,
+    pub(crate) turbulence_x_mps: f64,
+    pub(crate) turbulence_z_mps: f64,
+    pub(crate) steady_wake_x_mps: f64,
+    pub(crate) steady_wake_z_mps: f64,
+    pub(crate) periodic_wake_x_mps: f64,
+    pub(crate) periodic_wake_z_mps: f64,
 }
 
 impl Row {
@@ -113,7 +113,10 @@ fn check_arguments(args: &EnvironmentArgs) -> Result<()> {
 }
 
 /// Simulates at dt = 1 ms, recording every 10 ms.
-fn simulate(args: &EnvironmentArgs, parameters: &EnvironmentParameters) -> Result<Vec<Row>> {
+pub(crate) fn simulate(
+    args: &EnvironmentArgs,
+    parameters: &EnvironmentParameters,
+) -> Result<Vec<Row>> {
     let streams = RandomStreams::new(args.seed);
     let mut ship = ShipMotionSimulator::new(parameters.ship, &streams, 0.0)?;
     let mut wind = WindModel::new(parameters.wind, parameters.ship.forward_speed_mps, &streams)?;
@@ -167,7 +170,10 @@ fn series(rows: &[Row], value: impl Fn(&Row) -> f64) -> Vec<(f64, f64)> {
     rows.iter().map(|row| (row.time_s, value(row))).collect()
 }
 
-fn figures(
+/// The figures of the environment run, each with its file stem: the landing point's
+/// vertical motion (paper Fig. 7), the x-wind (Fig. 8), the ship motion and the wind
+/// components.
+pub(crate) fn figures(
     rows: &[Row],
     args: &EnvironmentArgs,
     parameters: &EnvironmentParameters,

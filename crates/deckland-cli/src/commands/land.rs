@@ -127,8 +127,9 @@ fn series(samples: &[Signals], value: impl Fn(&Signals) -> f64) -> Vec<(f64, f64
     samples.iter().map(|s| (s.time_s, value(s))).collect()
 }
 
-/// The approach's figures, each with its file stem.
-fn figures(samples: &[Signals], title: &str) -> Vec<(&'static str, Figure)> {
+/// The approach's figures, each with its file stem: `altitude`, `glide_path_error`
+/// (paper Fig. 14), `pitch` (Fig. 15), `controls`, `airspeed` and `wind`.
+pub(crate) fn figures(samples: &[Signals], title: &str) -> Vec<(&'static str, Figure)> {
     let time = "time (s)";
     let altitude = Figure::new().title(format!("Approach — {title}")).panel(
         Panel::new(

@@ -58,17 +58,18 @@ pub struct SinkArgs {
 /// Time of the sink-rate command after the start (s).
 const COMMAND_TIME_S: f64 = 1.0;
 
+/// The summary of a sink-rate run (`summary.json`).
 #[derive(Debug, Serialize)]
-struct SinkReport {
+pub(crate) struct SinkReport {
     controller: &'static str,
     conditions: &'static str,
     seed: u64,
     sink_rate_command_mps: f64,
     ramp_s: f64,
-    outcome: &'static str,
-    reason: Option<String>,
+    pub(crate) outcome: &'static str,
+    pub(crate) reason: Option<String>,
     /// Sink-rate response metrics (2 % band of the command).
-    metrics: Option<StepResponseMetrics>,
+    pub(crate) metrics: Option<StepResponseMetrics>,
     /// Largest pitch-attitude deviation from level trim (deg).
     max_pitch_change_deg: f64,
     altitude_lost_m: f64,
@@ -98,8 +99,16 @@ fn command_at(time_s: f64, args: &SinkArgs) -> f64 {
     }
 }
 
-/// Runs `deckland sink`.
-pub fn run(args: &SinkArgs) -> Result<()> {
+/// A flown sink-rate run: the rows recorded every 10 ms and the report.
+pub(crate) struct SinkRun {
+    /// The recorded rows.
+    rows: Vec<Row>,
+    /// The summary, as in `summary.json`.
+    pub(crate) report: SinkReport,
+}
+
+/// Checks `args`, flies the sink-rate command and measures its convergence.
+pub(crate) fn fly(args: &SinkArgs) -> Result<SinkRun> {
     if !(args.seconds.is_finite() && args.seconds > COMMAND_TIME_S + 1.0 && args.seconds <= 600.0) {
         bail!(
             "--seconds {} is out of range: expected more than {} s and at most 600 s",
@@ -117,7 +126,6 @@ pub fn run(args: &SinkArgs) -> Result<()> {
         altitude_m: 600.0,
     };
     let simulation = Simulation::new(&scenario).context("cannot set up the sink-rate run")?;
-    let output = OutputDir::prepare("sink", args.out.as_deref(), args.force)?;
     let mut recorder = TimeSeriesRecorder::new(10);
     let summary = simulation.run(&mut recorder);
     let samples = &recorder.samples;
@@ -166,19 +174,12 @@ pub fn run(args: &SinkArgs) -> Result<()> {
         altitude_lost_m: rows.first().map_or(0.0, |r| r.altitude_m)
             - rows.last().map_or(0.0, |r| r.altitude_m),
     };
+    Ok(SinkRun { rows, report })
+}
 
-    let mut csv = csv::Writer::from_writer(Vec::new());
-    for row in &rows {
-        csv.serialize(row)?;
-    }
-    output.write_bytes(
-        "sink.csv",
-        &csv.into_inner().map_err(|e| anyhow::anyhow!("{e}"))?,
-    )?;
-    output.write_bytes(
-        "summary.json",
-        serde_json::to_string_pretty(&report)?.as_bytes(),
-    )?;
+/// The sink-rate figure (paper Fig. 13): sink rate and command, error, altitude.
+pub(crate) fn figure(run: &SinkRun, args: &SinkArgs) -> Figure {
+    let rows = &run.rows;
     let points =
         |f: &dyn Fn(&Row) -> f64| rows.iter().map(|r| (r.time_s, f(r))).collect::<Vec<_>>();
     let title = format!(
@@ -203,7 +204,26 @@ pub fn run(args: &SinkArgs) -> Result<()> {
             Panel::new("Trajectory", "time (s)", "altitude (m)")
                 .series("altitude", points(&|r| r.altitude_m)),
         )
-        .save(&output, "sink_rate")?;
+}
+
+/// Runs `deckland sink`.
+pub fn run(args: &SinkArgs) -> Result<()> {
+    let flown = fly(args)?;
+    let output = OutputDir::prepare("sink", args.out.as_deref(), args.force)?;
+    let report = &flown.report;
+    let mut csv = csv::Writer::from_writer(Vec::new());
+    for row in &flown.rows {
+        csv.serialize(row)?;
+    }
+    output.write_bytes(
+        "sink.csv",
+        &csv.into_inner().map_err(|e| anyhow::anyhow!("{e}"))?,
+    )?;
+    output.write_bytes(
+        "summary.json",
+        serde_json::to_string_pretty(report)?.as_bytes(),
+    )?;
+    figure(&flown, args).save(&output, "sink_rate")?;
 
     if args.json {
         println!("{}", serde_json::to_string_pretty(&report)?);

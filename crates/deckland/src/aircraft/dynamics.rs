@@ -272,8 +272,7 @@ impl Aircraft {
             &inputs,
             air,
         );
-        let x_dot = state.u_mps * cos_t + state.w_mps * sin_t;
-        let h_dot = state.u_mps * sin_t - state.w_mps * cos_t;
+        let (x_dot, h_dot) = state.earth_velocity_trig(sin_t, cos_t);
         let (elevator_rate, elevator_acceleration) = self.actuator.derivative(
             state.elevator_rad,
             state.elevator_rate_radps,

@@ -56,8 +56,7 @@ impl HookGeometry {
     /// As [`HookGeometry::velocity`], with sin θ and cos θ already computed.
     #[inline]
     pub fn velocity_trig(&self, state: &AircraftState, sin_t: f64, cos_t: f64) -> (f64, f64) {
-        let x_dot = state.u_mps * cos_t + state.w_mps * sin_t;
-        let h_dot = state.u_mps * sin_t - state.w_mps * cos_t;
+        let (x_dot, h_dot) = state.earth_velocity_trig(sin_t, cos_t);
         let q = state.q_radps;
         (
             x_dot + q * (self.aft_of_cg_m * sin_t + self.below_cg_m * cos_t),

@@ -73,6 +73,12 @@ impl AircraftState {
     #[inline]
     pub fn earth_velocity_mps(&self) -> (f64, f64) {
         let (sin_t, cos_t) = self.theta_rad.sin_cos();
+        self.earth_velocity_trig(sin_t, cos_t)
+    }
+
+    /// As [`AircraftState::earth_velocity_mps`], with sin θ and cos θ already computed.
+    #[inline]
+    pub fn earth_velocity_trig(&self, sin_t: f64, cos_t: f64) -> (f64, f64) {
         (
             self.u_mps * cos_t + self.w_mps * sin_t,
             self.u_mps * sin_t - self.w_mps * cos_t,

@@ -25,11 +25,11 @@ impl Default for SinkRateControllerParameters {
     /// The project's design: K_Ps = 0.035, K_Is = 0.012, ±8°.
     ///
     /// Chosen below MODEL.md §5's starting point (0.05, 0.02): in adverse conditions that
-    /// gain let the wake's climb-rate swings (±3.5 m/s vertical gusts at 2.85 rad/s) into
-    /// the pitch command, saturated the elevator and ended in a pitch limit cycle
-    /// (4–5 divergences in 50 seeds); at 0.035/0.012 there were none, boarding rose from
-    /// 64 % to 76 %, and 0.025/0.008 bolted more (sweep over seeds 1–50, BENCHMARKS.md
-    /// records the command). The authority is a margin; these gains do not reach it.
+    /// gain lets the wake's climb-rate swings (vertical gusts of about ±3 m/s met at
+    /// 5.8 rad/s) into the pitch command and saturates the elevator; over seeds 1–50 it
+    /// boarded 68 % with 3 hard landings, against 76 % and none at 0.035/0.012, while
+    /// 0.025/0.008 bolted more (docs/landing-design.md; `cargo run --release -p deckland
+    /// --example outer_loop_sweep`). The authority is a margin; these gains do not reach it.
     fn default() -> Self {
         Self {
             proportional_rad_per_mps: 0.035,

@@ -81,6 +81,10 @@ pub struct HeldInputs {
     /// Pitch-measurement error (rad): white noise plus the sinusoid, sampled at the start
     /// of the step (the sensor is read once per control step).
     pub pitch_noise_rad: f64,
+    /// The wind at the aircraft (mean, turbulence, steady and periodic wake), sampled at
+    /// the start of the step and held over it, like the turbulence it contains;
+    /// `None` evaluates it at every stage.
+    pub wind: Option<Wind>,
     /// The deck reference of the glide-path generator (mean and predicted landing point),
     /// computed at the start of the step and held over it (the guidance computer updates
     /// once per step); `None` outside the approach.
@@ -111,6 +115,21 @@ pub enum LoopMode {
     },
     /// The full cascade following the glide path to the deck.
     Approach,
+}
+
+/// A point where a loop of the cascade can be cut for analysis: downstream of it the loop
+/// uses an injected value, and the value the loop computes there is reported in
+/// [`Signals::loop_break_output`] (MODEL.md §5: margins on the linearised cascade).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LoopBreak {
+    /// The elevator command (rad): the pitch loop.
+    ElevatorCommand,
+    /// The pitch command θ_ref (rad): the sink-rate loop.
+    PitchCommand,
+    /// The climb-rate command (m/s): the guidance loop.
+    ClimbRateCommand,
+    /// The thrust command (N): the speed loop.
+    ThrustCommand,
 }
 
 /// Every signal of interest at one instant, for recorders and event detection.
@@ -174,6 +193,8 @@ pub struct Signals {
     pub aim_point: EarthPoint,
     /// The pitch controller's disturbance estimate (rad/s², O-PD only).
     pub disturbance_estimate_radps2: Option<f64>,
+    /// With a loop break set, the value the loop computed at the break (else NaN).
+    pub loop_break_output: f64,
 }
 
 /// The closed-loop system integrated by the simulation.
@@ -197,6 +218,8 @@ pub struct ClosedLoop {
     pub(crate) airspeed_reference_mps: f64,
     pub(crate) mode: LoopMode,
     pub(crate) held: HeldInputs,
+    /// Analysis only: the loop cut and the value injected there.
+    pub(crate) loop_break: Option<(LoopBreak, f64)>,
 }
 
 impl ClosedLoop {
@@ -207,6 +230,14 @@ impl ClosedLoop {
             self.ship.pose(ship, self.ship_initial_x_m, t),
             self.ship.pose_rate(ship),
         )
+    }
+
+    /// The wind at the aircraft at (t, x), as the runner holds it over a step.
+    pub fn wind_at(&self, t: f64, x: &[f64; LOOP_DIMENSION]) -> Wind {
+        let s = LoopState::from_array(x);
+        let (pose, _) = self.ship_pose(&s.ship, t);
+        self.wind
+            .wind(t, pose.distance_aft_of_pitch_centre_m(s.aircraft.x_m))
     }
 
     /// The deck reference at (t, x), as the runner holds it over a step.
@@ -291,14 +322,17 @@ impl ClosedLoop {
         let a = &s.aircraft;
         let (pose, pose_rate) = self.ship_pose(&s.ship, t);
         let distance_aft_m = pose.distance_aft_of_pitch_centre_m(a.x_m);
-        let wind = self.wind.wind(t, distance_aft_m);
+        let wind = match self.held.wind {
+            Some(wind) => wind,
+            None => self.wind.wind(t, distance_aft_m),
+        };
         let (sin_t, cos_t) = a.theta_rad.sin_cos();
         let air = self
             .aircraft
             .air_data_trig(a.u_mps, a.w_mps, sin_t, cos_t, &wind);
         let (hook_x_m, hook_h_m) = self.hook.position_trig(a, sin_t, cos_t);
         let (hook_x_rate_mps, hook_climb_rate_mps) = self.hook.velocity_trig(a, sin_t, cos_t);
-        let climb_rate_mps = a.u_mps * sin_t - a.w_mps * cos_t;
+        let (_, climb_rate_mps) = a.earth_velocity_trig(sin_t, cos_t);
         let trim = &self.trim;
 
         // References: flight path → guidance → sink rate → pitch (MODEL.md §5).
@@ -308,7 +342,8 @@ impl ClosedLoop {
         let mut height_error = 0.0;
         let mut climb_rate_command_mps = f64::NAN;
         let mut sink_error = 0.0;
-        let theta_ref_rad = match self.mode {
+        let mut loop_break_output = f64::NAN;
+        let mut theta_ref_rad = match self.mode {
             LoopMode::PitchStep {
                 step_rad,
                 step_time_s,
@@ -335,7 +370,10 @@ impl ClosedLoop {
                     .output(sink_error, s.sink_rate_integral_m, 0.0)
             }
             LoopMode::Approach => {
-                let deck = self.deck_reference(&s, &pose, &pose_rate, hook_x_m, hook_x_rate_mps);
+                let deck = match self.held.deck {
+                    Some(deck) => deck,
+                    None => self.deck_reference(&s, &pose, &pose_rate, hook_x_m, hook_x_rate_mps),
+                };
                 let path = self.flight_path.reference(hook_x_m, hook_x_rate_mps, &deck);
                 path_height_m = path.height_m;
                 time_to_go_s = path.time_to_go_s;
@@ -348,6 +386,10 @@ impl ClosedLoop {
                         s.guidance_integral_m_s,
                         height_error_rate,
                     );
+                if let Some((LoopBreak::ClimbRateCommand, injected)) = self.loop_break {
+                    loop_break_output = climb_rate_command_mps;
+                    climb_rate_command_mps = injected;
+                }
                 sink_error = climb_rate_command_mps - climb_rate_mps;
                 trim.theta_rad
                     + self
@@ -356,8 +398,13 @@ impl ClosedLoop {
             }
         };
 
+        if let Some((LoopBreak::PitchCommand, injected)) = self.loop_break {
+            loop_break_output = theta_ref_rad;
+            theta_ref_rad = injected;
+        }
+
         // Pitch controller on the measured attitude (MODEL.md §3.3, §4).
-        let theta_measured_rad = a.theta_rad + self.sensor.sinusoid(t) + self.held.pitch_noise_rad;
+        let theta_measured_rad = a.theta_rad + self.held.pitch_noise_rad;
         let actuator = self.aircraft.actuator();
         let pitch_inputs = PitchControlInputs {
             theta_ref_rad,
@@ -374,11 +421,19 @@ impl ClosedLoop {
             ),
         };
         let pitch_state = self.pitch.state_from_array(&s.pitch_controller);
-        let elevator_command_rad = self.pitch.elevator_command_rad(&pitch_state, &pitch_inputs);
+        let mut elevator_command_rad = self.pitch.elevator_command_rad(&pitch_state, &pitch_inputs);
+        if let Some((LoopBreak::ElevatorCommand, injected)) = self.loop_break {
+            loop_break_output = elevator_command_rad;
+            elevator_command_rad = injected;
+        }
 
         // Speed loop (MODEL.md §5).
         let speed_error = self.airspeed_reference_mps - air.airspeed_mps;
-        let thrust_command_n = self.speed.thrust_command_n(speed_error, s.speed_integral_m);
+        let mut thrust_command_n = self.speed.thrust_command_n(speed_error, s.speed_integral_m);
+        if let Some((LoopBreak::ThrustCommand, injected)) = self.loop_break {
+            loop_break_output = thrust_command_n;
+            thrust_command_n = injected;
+        }
 
         let commands = AircraftCommands {
             elevator_rad: elevator_command_rad,
@@ -446,6 +501,7 @@ impl ClosedLoop {
             ship_rate: pose_rate,
             aim_point,
             disturbance_estimate_radps2: pitch_state.disturbance_estimate_radps2(),
+            loop_break_output,
         };
         (derivative, signals)
     }

@@ -5,9 +5,11 @@
 mod closed_loop;
 mod outcome;
 mod runner;
-mod setup;
+pub(crate) mod setup;
 
-pub use closed_loop::{ClosedLoop, HeldInputs, LoopMode, LoopState, Signals, LOOP_DIMENSION};
+pub use closed_loop::{
+    ClosedLoop, HeldInputs, LoopBreak, LoopMode, LoopState, Signals, LOOP_DIMENSION,
+};
 pub use outcome::{Event, Outcome, RunSummary, Touchdown};
 pub use runner::Simulation;
 pub use setup::{approach_flight_path_angle, SimulationError};

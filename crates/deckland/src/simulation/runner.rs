@@ -205,6 +205,7 @@ impl Simulation {
             ),
             pitch_noise_rad: self.system.sensor.draw_white_noise()
                 + self.system.sensor.sinusoid(self.time_s),
+            wind: Some(self.system.wind_at(self.time_s, &self.state)),
             deck: self.system.deck_reference_at(self.time_s, &self.state),
         }
     }

@@ -58,6 +58,35 @@ fn check_range(
     }
 }
 
+/// The checks shared by the fixed-length missions (pitch step, sink rate).
+fn check_timed_mission(
+    step_time_s: f64,
+    duration_s: f64,
+    altitude_m: f64,
+) -> Result<(), SimulationError> {
+    check_range(
+        "mission.duration_s",
+        duration_s,
+        0.1,
+        3600.0,
+        "a duration between 0.1 and 3600 s",
+    )?;
+    check_range(
+        "mission.step_time_s",
+        step_time_s,
+        0.0,
+        duration_s,
+        "a time within the run",
+    )?;
+    check_range(
+        "mission.altitude_m",
+        altitude_m,
+        30.0,
+        10_000.0,
+        "an altitude between 30 and 10000 m",
+    )
+}
+
 impl Scenario {
     /// Checks every field; the error names the first bad one.
     pub fn validate(&self) -> Result<(), SimulationError> {
@@ -127,33 +156,13 @@ impl Scenario {
                     "a step between -20 and 20 deg",
                 )?;
                 check_range(
-                    "mission.step_time_s",
-                    step_time_s,
-                    0.0,
-                    duration_s,
-                    "a time within the run",
-                )?;
-                check_range(
-                    "mission.duration_s",
-                    duration_s,
-                    0.1,
-                    3600.0,
-                    "a duration between 0.1 and 3600 s",
-                )?;
-                check_range(
                     "mission.start_distance_aft_m",
                     start_distance_aft_m,
                     -10_000.0,
                     20_000.0,
                     "a distance between -10000 and 20000 m",
                 )?;
-                check_range(
-                    "mission.altitude_m",
-                    altitude_m,
-                    30.0,
-                    10_000.0,
-                    "an altitude between 30 and 10000 m",
-                )?;
+                check_timed_mission(step_time_s, duration_s, altitude_m)?;
             }
             Mission::SinkRate {
                 sink_rate_mps,
@@ -163,13 +172,6 @@ impl Scenario {
                 altitude_m,
             } => {
                 check_range(
-                    "mission.ramp_s",
-                    ramp_s,
-                    0.0,
-                    duration_s,
-                    "a ramp time within the run",
-                )?;
-                check_range(
                     "mission.sink_rate_mps",
                     sink_rate_mps,
                     -20.0,
@@ -177,26 +179,13 @@ impl Scenario {
                     "a sink rate between -20 and 20 m/s",
                 )?;
                 check_range(
-                    "mission.step_time_s",
-                    step_time_s,
+                    "mission.ramp_s",
+                    ramp_s,
                     0.0,
                     duration_s,
-                    "a time within the run",
+                    "a ramp time within the run",
                 )?;
-                check_range(
-                    "mission.duration_s",
-                    duration_s,
-                    0.1,
-                    3600.0,
-                    "a duration between 0.1 and 3600 s",
-                )?;
-                check_range(
-                    "mission.altitude_m",
-                    altitude_m,
-                    30.0,
-                    10_000.0,
-                    "an altitude between 30 and 10000 m",
-                )?;
+                check_timed_mission(step_time_s, duration_s, altitude_m)?;
             }
         }
         self.aircraft.hook.validate()?;
@@ -397,6 +386,7 @@ pub(crate) fn build(scenario: &Scenario) -> Result<Setup, SimulationError> {
         airspeed_reference_mps: airspeed,
         mode,
         held: HeldInputs::default(),
+        loop_break: None,
     };
     Ok(Setup {
         system,

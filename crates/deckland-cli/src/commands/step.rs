@@ -1,0 +1,505 @@
+//! `deckland step`: a pitch-attitude step from level trim with the O-PD and/or the PID
+//! pitch controller (paper §5, Fig. 10–12): step-response metrics, elevator activity, a
+//! CSV of the time series and plots.
+
+use std::path::PathBuf;
+
+use anyhow::{anyhow, bail, Context, Result};
+use clap::ValueEnum;
+use deckland::aircraft::ElevatorActuatorParameters;
+use deckland::control::pitch::PitchControllerParameters;
+use deckland::metrics::{
+    actuator_activity, step_response_metrics, total_variation, StepResponseSpec,
+};
+use deckland::recording::TimeSeriesRecorder;
+use deckland::scenario::Mission;
+use deckland::simulation::{Outcome, Signals, Simulation};
+use serde::Serialize;
+
+use super::common::{Conditions, ControllerChoice};
+use crate::output::OutputDir;
+use crate::plot::{Figure, Panel};
+
+/// Time of the step after the start (s): `Mission::pitch_step`'s default.
+const STEP_TIME_S: f64 = 1.0;
+/// Steps between recorded samples: every 2 ms (the slowest-damped closed-loop mode, near
+/// 28.7 rad/s, has a 0.22 s period).
+const RECORD_EVERY_STEPS: usize = 2;
+/// Half-width of the settling band as a fraction of the step.
+const SETTLING_BAND_FRACTION: f64 = 0.02;
+/// Largest |--step-deg| accepted (deg): beyond it the elevator is saturated for most of
+/// the transient and the step says little about the controller.
+const MAX_STEP_DEG: f64 = 10.0;
+/// Longest run accepted (s).
+const MAX_SECONDS: f64 = 600.0;
+/// Shortest run accepted (s): the step at 1 s plus one second of response.
+const MIN_SECONDS: f64 = 2.0;
+/// Tolerance of "on the position limit" (deg).
+const LIMIT_TOLERANCE_DEG: f64 = 1e-6;
+
+/// Which pitch controllers fly the step.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum StepControllers {
+    /// Observer-based PD only.
+    Opd,
+    /// PID only.
+    Pid,
+    /// Both, one after the other, for comparison (paper Fig. 10–12).
+    Both,
+}
+
+impl StepControllers {
+    fn choices(self) -> Vec<ControllerChoice> {
+        match self {
+            Self::Opd => vec![ControllerChoice::Opd],
+            Self::Pid => vec![ControllerChoice::Pid],
+            Self::Both => vec![ControllerChoice::Opd, ControllerChoice::Pid],
+        }
+    }
+}
+
+/// Options of `deckland step`.
+#[derive(Debug, clap::Args)]
+pub struct StepArgs {
+    /// Which pitch controller(s) fly the step.
+    #[arg(long, value_enum, default_value_t = StepControllers::Both)]
+    pub(crate) controller: StepControllers,
+    /// Ideal (no disturbance) or adverse (wind, air wake, turbulence, sensor noise, deck
+    /// motion).
+    #[arg(long, value_enum, default_value_t = Conditions::Ideal)]
+    pub(crate) conditions: Conditions,
+    /// Pitch step (deg, positive nose-up), applied at t = 1 s; nonzero, |D| <= 10.
+    #[arg(
+        long = "step-deg",
+        default_value_t = 2.0,
+        allow_negative_numbers = true
+    )]
+    pub(crate) step_deg: f64,
+    /// Simulated time (s), at least 2 (the step comes at 1 s), at most 600.
+    #[arg(long, default_value_t = 6.0, allow_negative_numbers = true)]
+    pub(crate) seconds: f64,
+    /// Scenario seed of the random streams (matters in adverse conditions).
+    #[arg(long, default_value_t = 1)]
+    pub(crate) seed: u64,
+    /// O-PD observer bandwidth parameter ε in (0, 1) (default: the library's).
+    #[arg(long, allow_negative_numbers = true)]
+    pub(crate) epsilon: Option<f64>,
+    /// Output folder (default: a new runs/step-<UTC timestamp>).
+    #[arg(long)]
+    pub(crate) out: Option<PathBuf>,
+    /// Overwrite results in an --out folder that already holds some.
+    #[arg(long)]
+    pub(crate) force: bool,
+    /// Print one JSON document instead of the table.
+    #[arg(long)]
+    pub(crate) json: bool,
+}
+
+/// The step response of one controller, as printed in the JSON document.
+#[derive(Debug, Clone, Serialize)]
+pub(crate) struct ControllerResult {
+    pub(crate) controller: &'static str,
+    pub(crate) settling_time_s: Option<f64>,
+    pub(crate) settled: bool,
+    pub(crate) not_settled_reason: Option<String>,
+    pub(crate) overshoot_pct: f64,
+    pub(crate) rise_time_s: Option<f64>,
+    pub(crate) steady_state_error_deg: Option<f64>,
+    pub(crate) max_elevator_deg: f64,
+    pub(crate) max_elevator_change_deg: f64,
+    pub(crate) elevator_saturation_s: f64,
+    pub(crate) elevator_total_variation_deg: f64,
+    pub(crate) outcome: &'static str,
+}
+
+/// The JSON document of `deckland step --json`.
+#[derive(Debug, Serialize)]
+struct StepReport {
+    conditions: &'static str,
+    step_deg: f64,
+    seed: u64,
+    seconds: f64,
+    step_time_s: f64,
+    airspeed_mps: f64,
+    settling_band_pct: f64,
+    epsilon: f64,
+    controllers: Vec<ControllerResult>,
+    output_folder: String,
+}
+
+/// One controller's run.
+pub(crate) struct ControllerRun {
+    /// Which controller flew.
+    pub(crate) choice: ControllerChoice,
+    /// The recorded samples (every 2 ms).
+    pub(crate) samples: Vec<Signals>,
+    /// The step-response metrics.
+    pub(crate) result: ControllerResult,
+}
+
+fn check_arguments(args: &StepArgs) -> Result<()> {
+    if !(args.step_deg.is_finite() && args.step_deg != 0.0 && args.step_deg.abs() <= MAX_STEP_DEG) {
+        bail!(
+            "--step-deg must be nonzero and lie in [-{MAX_STEP_DEG}, {MAX_STEP_DEG}] deg, got {}",
+            args.step_deg
+        );
+    }
+    if !(args.seconds.is_finite() && (MIN_SECONDS..=MAX_SECONDS).contains(&args.seconds)) {
+        bail!(
+            "--seconds must lie in [{MIN_SECONDS}, {MAX_SECONDS}] s (the step comes at \
+             {STEP_TIME_S} s), got {}",
+            args.seconds
+        );
+    }
+    if let Some(epsilon) = args.epsilon {
+        if !(epsilon.is_finite() && epsilon > 0.0 && epsilon < 1.0) {
+            bail!("--epsilon must lie in (0, 1), got {epsilon}");
+        }
+    }
+    Ok(())
+}
+
+/// The controller's parameters, with `--epsilon` applied to the O-PD observer.
+fn controller_parameters(
+    choice: ControllerChoice,
+    epsilon: Option<f64>,
+) -> PitchControllerParameters {
+    let mut parameters = choice.parameters();
+    if let (PitchControllerParameters::ObserverPd(opd), Some(epsilon)) = (&mut parameters, epsilon)
+    {
+        opd.observer.epsilon = epsilon;
+    }
+    parameters
+}
+
+/// Flies the step with one controller and measures it.
+pub(crate) fn fly(args: &StepArgs, choice: ControllerChoice) -> Result<ControllerRun> {
+    let mut scenario = args.conditions.scenario(args.seed);
+    scenario.control.pitch = controller_parameters(choice, args.epsilon);
+    scenario.mission = Mission::pitch_step(args.step_deg, args.seconds);
+    let mut recorder = TimeSeriesRecorder::new(RECORD_EVERY_STEPS);
+    let summary = Simulation::new(&scenario)
+        .with_context(|| format!("cannot set up the {} step", choice.label()))?
+        .run(&mut recorder);
+    let samples = recorder.samples;
+    let first = samples
+        .first()
+        .ok_or_else(|| anyhow!("the {} run recorded no samples", choice.label()))?;
+    let trim_deg = first.theta_ref_rad.to_degrees();
+    let elevator_trim_deg = first.elevator_rad.to_degrees();
+
+    let time: Vec<f64> = samples.iter().map(|s| s.time_s).collect();
+    let theta_deg: Vec<f64> = samples.iter().map(|s| s.theta_rad.to_degrees()).collect();
+    let elevator_deg: Vec<f64> = samples
+        .iter()
+        .map(|s| s.elevator_rad.to_degrees())
+        .collect();
+
+    let mut spec = StepResponseSpec::new(STEP_TIME_S, trim_deg, trim_deg + args.step_deg);
+    spec.settling_band_fraction = SETTLING_BAND_FRACTION;
+    let metrics = step_response_metrics(&time, &theta_deg, &spec);
+    let actuator = ElevatorActuatorParameters::default();
+    let activity = actuator_activity(
+        &time,
+        &elevator_deg,
+        actuator.min_deflection_deg,
+        actuator.max_deflection_deg,
+        LIMIT_TOLERANCE_DEG,
+    )
+    .with_context(|| format!("cannot measure the {} elevator activity", choice.label()))?;
+    let max_elevator_change_deg = elevator_deg
+        .iter()
+        .fold(0.0_f64, |peak, e| peak.max((e - elevator_trim_deg).abs()));
+
+    let diverged = (summary.outcome == Outcome::Diverged).then(|| {
+        format!(
+            "the simulation diverged at t = {:.3} s: {}",
+            summary.end_time_s,
+            summary.reason.clone().unwrap_or_default()
+        )
+    });
+    let result = match metrics {
+        Ok(metrics) => {
+            let not_settled_reason = diverged.or(metrics.not_settled_reason);
+            ControllerResult {
+                controller: choice.label(),
+                settled: not_settled_reason.is_none(),
+                settling_time_s: if not_settled_reason.is_none() {
+                    metrics.settling_time_s
+                } else {
+                    None
+                },
+                not_settled_reason,
+                overshoot_pct: metrics.overshoot_pct,
+                rise_time_s: metrics.rise_time_s,
+                steady_state_error_deg: metrics.steady_state_error,
+                max_elevator_deg: activity.peak_abs,
+                max_elevator_change_deg,
+                elevator_saturation_s: activity.time_at_lower_limit_s
+                    + activity.time_at_upper_limit_s,
+                elevator_total_variation_deg: total_variation(&elevator_deg)?,
+                outcome: summary.outcome.name(),
+            }
+        }
+        // A record that cannot be measured (diverged before the step, non-finite values)
+        // is reported as not settled, with the reason.
+        Err(error) => ControllerResult {
+            controller: choice.label(),
+            settling_time_s: None,
+            settled: false,
+            not_settled_reason: Some(diverged.unwrap_or_else(|| error.to_string())),
+            overshoot_pct: f64::NAN,
+            rise_time_s: None,
+            steady_state_error_deg: None,
+            max_elevator_deg: activity.peak_abs,
+            max_elevator_change_deg,
+            elevator_saturation_s: activity.time_at_lower_limit_s + activity.time_at_upper_limit_s,
+            elevator_total_variation_deg: activity.total_variation,
+            outcome: summary.outcome.name(),
+        },
+    };
+    Ok(ControllerRun {
+        choice,
+        samples,
+        result,
+    })
+}
+
+/// The CSV header and rows: time, then per controller θ, θ_ref, θ_m, elevator, elevator
+/// command (deg) and the O-PD disturbance estimate (rad/s²; empty for the PID).
+fn csv_bytes(runs: &[ControllerRun]) -> Result<Vec<u8>> {
+    let mut writer = csv::Writer::from_writer(Vec::new());
+    let mut header = vec!["time_s".to_string()];
+    for run in runs {
+        let prefix = prefix(run.choice);
+        for column in [
+            "theta_deg",
+            "theta_ref_deg",
+            "theta_measured_deg",
+            "elevator_deg",
+            "elevator_command_deg",
+            "disturbance_estimate_radps2",
+        ] {
+            header.push(format!("{prefix}_{column}"));
+        }
+    }
+    writer.write_record(&header)?;
+    // Every run ends at the same time unless one diverged: rows run to the longest, with
+    // empty fields for a run that ended earlier.
+    let rows = runs.iter().map(|r| r.samples.len()).max().unwrap_or(0);
+    let longest = runs.iter().find(|r| r.samples.len() == rows);
+    for index in 0..rows {
+        let mut record = Vec::with_capacity(header.len());
+        let time_s = longest.map_or(f64::NAN, |r| r.samples[index].time_s);
+        record.push(time_s.to_string());
+        for run in runs {
+            match run.samples.get(index) {
+                Some(s) => {
+                    record.push(s.theta_rad.to_degrees().to_string());
+                    record.push(s.theta_ref_rad.to_degrees().to_string());
+                    record.push(s.theta_measured_rad.to_degrees().to_string());
+                    record.push(s.elevator_rad.to_degrees().to_string());
+                    record.push(s.elevator_command_rad.to_degrees().to_string());
+                    record.push(
+                        s.disturbance_estimate_radps2
+                            .map_or(String::new(), |d| d.to_string()),
+                    );
+                }
+                None => record.extend(std::iter::repeat_n(String::new(), 6)),
+            }
+        }
+        writer.write_record(&record)?;
+    }
+    writer.into_inner().map_err(|e| anyhow!("{e}"))
+}
+
+/// Column prefix of a controller: `opd` or `pid`.
+fn prefix(choice: ControllerChoice) -> &'static str {
+    match choice {
+        ControllerChoice::Opd => "opd",
+        ControllerChoice::Pid => "pid",
+    }
+}
+
+fn series(samples: &[Signals], value: impl Fn(&Signals) -> f64) -> Vec<(f64, f64)> {
+    samples.iter().map(|s| (s.time_s, value(s))).collect()
+}
+
+/// The pitch figure (paper Fig. 10/11) and the elevator figure (paper Fig. 12).
+pub(crate) fn figures(runs: &[ControllerRun], args: &StepArgs) -> Vec<(&'static str, Figure)> {
+    let conditions = match args.conditions {
+        Conditions::Ideal => "no noise or wind (cf. paper Fig. 10)".to_string(),
+        Conditions::Adverse => format!("noise and wind, seed {} (cf. paper Fig. 11)", args.seed),
+    };
+    let trim_deg = runs
+        .first()
+        .and_then(|r| r.samples.first())
+        .map_or(0.0, |s| s.theta_ref_rad.to_degrees());
+    let target_deg = trim_deg + args.step_deg;
+    let band_deg = SETTLING_BAND_FRACTION * args.step_deg.abs();
+    let mut pitch = Panel::new(
+        format!("Pitch step response of {:+}°, {conditions}", args.step_deg),
+        "time (s)",
+        "pitch angle θ (deg)",
+    );
+    for run in runs {
+        pitch = pitch.series(
+            format!("θ, {}", run.choice.label()),
+            series(&run.samples, |s| s.theta_rad.to_degrees()),
+        );
+    }
+    if let Some(run) = runs.first() {
+        pitch = pitch.series(
+            "reference θ_ref",
+            series(&run.samples, |s| s.theta_ref_rad.to_degrees()),
+        );
+    }
+    pitch = pitch
+        .reference_line("target + 2 % of the step", target_deg + band_deg)
+        .reference_line("target − 2 % of the step", target_deg - band_deg);
+
+    let actuator = ElevatorActuatorParameters::default();
+    let mut elevator = Panel::new(
+        format!(
+            "Elevator deflection during the {:+}° step, {}",
+            args.step_deg,
+            match args.conditions {
+                Conditions::Ideal => "no noise or wind".to_string(),
+                Conditions::Adverse =>
+                    format!("noise and wind, seed {} (cf. paper Fig. 12)", args.seed),
+            }
+        ),
+        "time (s)",
+        "elevator δe (deg, trailing edge down)",
+    );
+    for run in runs {
+        elevator = elevator.series(
+            format!("δe, {}", run.choice.label()),
+            series(&run.samples, |s| s.elevator_rad.to_degrees()),
+        );
+    }
+    elevator = elevator
+        .reference_line("lower limit", actuator.min_deflection_deg)
+        .reference_line("upper limit", actuator.max_deflection_deg);
+    vec![
+        ("step_pitch", Figure::new().panel(pitch)),
+        ("step_elevator", Figure::new().panel(elevator)),
+    ]
+}
+
+fn format_option(value: Option<f64>, digits: usize, unit: &str) -> String {
+    value.map_or_else(|| "—".to_string(), |v| format!("{v:.digits$} {unit}"))
+}
+
+fn print_table(report: &StepReport, written: &[PathBuf]) {
+    println!(
+        "Pitch step {:+}° at t = {} s from level trim ({} m/s), {} conditions, seed {}, \
+         {} s, O-PD ε = {}",
+        report.step_deg,
+        report.step_time_s,
+        report.airspeed_mps,
+        report.conditions,
+        report.seed,
+        report.seconds,
+        report.epsilon
+    );
+    println!(
+        "  {:<26}{}",
+        "",
+        report
+            .controllers
+            .iter()
+            .map(|c| format!("{:>18}", c.controller))
+            .collect::<String>()
+    );
+    let row = |name: &str, cell: &dyn Fn(&ControllerResult) -> String| {
+        println!(
+            "  {name:<26}{}",
+            report
+                .controllers
+                .iter()
+                .map(|c| format!("{:>18}", cell(c)))
+                .collect::<String>()
+        );
+    };
+    row("settling time (±2 %)", &|c| {
+        if c.settled {
+            format_option(c.settling_time_s, 3, "s")
+        } else {
+            "not settled".to_string()
+        }
+    });
+    row("overshoot", &|c| format!("{:.1} %", c.overshoot_pct));
+    row("rise time 10–90 %", &|c| {
+        format_option(c.rise_time_s, 3, "s")
+    });
+    row("steady-state error", &|c| {
+        format_option(c.steady_state_error_deg, 4, "°")
+    });
+    row("peak |elevator|", &|c| {
+        format!("{:.1} °", c.max_elevator_deg)
+    });
+    row("peak elevator − trim", &|c| {
+        format!("{:.1} °", c.max_elevator_change_deg)
+    });
+    row("time on elevator limit", &|c| {
+        format!("{:.3} s", c.elevator_saturation_s)
+    });
+    row("elevator total travel", &|c| {
+        format!("{:.0} °", c.elevator_total_variation_deg)
+    });
+    for c in &report.controllers {
+        if let Some(reason) = &c.not_settled_reason {
+            println!("  {} did not settle: {reason}", c.controller);
+        }
+    }
+    println!(
+        "Settling time: from the step to the last entry into the ±2 % band around the target \
+         (it must stay there to the end, at least 0.5 s)."
+    );
+    println!("Wrote {} files to {}:", written.len(), report.output_folder);
+    for path in written {
+        if let Some(name) = path.file_name() {
+            println!("  {}", name.to_string_lossy());
+        }
+    }
+}
+
+/// Runs the command.
+pub fn run(args: &StepArgs) -> Result<()> {
+    check_arguments(args)?;
+    let epsilon = match controller_parameters(ControllerChoice::Opd, args.epsilon) {
+        PitchControllerParameters::ObserverPd(opd) => opd.observer.epsilon,
+        PitchControllerParameters::Pid(_) => f64::NAN,
+    };
+    let output = OutputDir::prepare("step", args.out.as_deref(), args.force)?;
+    let runs = args
+        .controller
+        .choices()
+        .into_iter()
+        .map(|choice| fly(args, choice))
+        .collect::<Result<Vec<_>>>()?;
+
+    let mut written = vec![output.write_bytes("step.csv", &csv_bytes(&runs)?)?];
+    for (stem, figure) in figures(&runs, args) {
+        written.extend(figure.save(&output, stem)?);
+    }
+    let report = StepReport {
+        conditions: args.conditions.name(),
+        step_deg: args.step_deg,
+        seed: args.seed,
+        seconds: args.seconds,
+        step_time_s: STEP_TIME_S,
+        airspeed_mps: args.conditions.scenario(args.seed).approach.airspeed_mps,
+        settling_band_pct: SETTLING_BAND_FRACTION * 100.0,
+        epsilon,
+        controllers: runs.into_iter().map(|r| r.result).collect(),
+        output_folder: output.path().display().to_string(),
+    };
+    if args.json {
+        println!("{}", serde_json::to_string_pretty(&report)?);
+    } else {
+        print_table(&report, &written);
+    }
+    Ok(())
+}
