@@ -280,3 +280,43 @@ fn an_interrupted_campaign_keeps_a_consistent_partial_result() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `run --seed S --disperse` with a campaign row's seed re-flies exactly that run.
+#[test]
+fn run_with_a_campaign_seed_and_disperse_reproduces_the_campaign_row() {
+    let dir = temp_dir("campaign-reproduce");
+    let file = short_dispersed_scenario(&dir);
+    let out = dir.join("campaign");
+    assert_success(&deckland(&[
+        "campaign",
+        &file,
+        "--runs",
+        "3",
+        "--seed",
+        "9",
+        "--out",
+        out.to_str().unwrap(),
+        "--json",
+    ]));
+    let csv = std::fs::read_to_string(out.join("runs.csv")).unwrap();
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    let column = |name: &str| header.iter().position(|c| *c == name).unwrap();
+    let row: Vec<&str> = csv.lines().nth(2).unwrap().split(',').collect();
+    let single = dir.join("single");
+    let output = deckland(&[
+        "run",
+        &file,
+        "--seed",
+        row[column("seed")],
+        "--disperse",
+        "--out",
+        single.to_str().unwrap(),
+        "--json",
+    ]);
+    assert_success(&output);
+    let v: Value = serde_json::from_slice(&output.stdout).unwrap();
+    assert_eq!(v["outcome"], row[column("outcome")]);
+    let expected: f64 = row[column("glide_path_error_rms_m")].parse().unwrap();
+    assert_eq!(v["glide_path_error_rms_m"].as_f64(), Some(expected));
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -390,9 +390,10 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
     let report = CampaignReport {
         scenario_file: args.scenario.display().to_string(),
         campaign_seed: seed,
-        seed_derivation: "run i (from 0) flies seed SplitMix64 output i of the campaign seed \
-                          (mix(S + (i + 1)·0x9e3779b97f4a7c15)); its dispersions come from \
-                          that seed's \"dispersion\" stream",
+        seed_derivation: "run i (from 0) flies seed SplitMix64 output i of the campaign seed, \
+                          shifted right by one bit (mix(S + (i + 1)·0x9e3779b97f4a7c15) >> 1); \
+                          its dispersions come from that seed's \"dispersion\" stream; \
+                          `deckland run FILE --seed SEED --disperse` flies it again",
         requested_runs: args.runs,
         finished_runs,
         partial: result.partial,

@@ -1,8 +1,9 @@
 //! `deckland run`: one approach of a scenario file, with the outputs of `land`.
 //!
 //! Flies the file's scenario as it is (its `seed`; the `[dispersion]` section is for
-//! campaigns and is ignored) and writes `scenario.toml`, `approach.csv`, `summary.json`
-//! and the plots, like `deckland land`.
+//! campaigns and is ignored unless `--disperse`) and writes `scenario.toml`,
+//! `approach.csv`, `summary.json` and the plots, like `deckland land`. With a campaign
+//! row's seed, `--seed S --disperse` flies exactly that campaign run, with its time series.
 
 use super::common::load_scenario_file;
 use super::land::fly_and_write;
@@ -10,6 +11,7 @@ use crate::output::OutputDir;
 use anyhow::Result;
 use clap::Args;
 use deckland::monte_carlo::controller_label;
+use deckland::random::RandomStreams;
 use std::path::PathBuf;
 
 /// Options of `deckland run`.
@@ -17,6 +19,13 @@ use std::path::PathBuf;
 pub struct RunArgs {
     /// Scenario file (TOML; `deckland scenario --print-default` writes a template).
     pub scenario: PathBuf,
+    /// Seed of every random stream (default: the file's `seed`).
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// Apply the file's `[dispersion]` section, drawn from the seed as a campaign run
+    /// draws it: `--seed` with a `runs.csv` row's seed re-flies that run.
+    #[arg(long)]
+    pub disperse: bool,
     /// Output folder (default: a new `runs/run-<UTC time>`).
     #[arg(long)]
     pub out: Option<PathBuf>,
@@ -30,7 +39,16 @@ pub struct RunArgs {
 
 /// Runs `deckland run`.
 pub fn run(args: &RunArgs) -> Result<()> {
-    let scenario = load_scenario_file(&args.scenario)?;
+    let mut scenario = load_scenario_file(&args.scenario)?;
+    if let Some(seed) = args.seed {
+        scenario.seed = seed;
+    }
+    if args.disperse {
+        let draw = scenario
+            .dispersion
+            .sample(&RandomStreams::new(scenario.seed));
+        scenario = draw.apply(&scenario);
+    }
     let output = OutputDir::prepare("run", args.out.as_deref(), args.force)?;
     let name = args.scenario.file_name().map_or_else(
         || args.scenario.display().to_string(),

@@ -2,8 +2,9 @@
 //! dispersions, flown in parallel, summarised with confidence intervals.
 //!
 //! - Seeds: run `i` of a campaign with seed `S` flies seed [`run_seed`]`(S, i)`, the
-//!   `i`-th output of the SplitMix64 generator seeded with `S` (portable, specified bit
-//!   for bit). Its dispersions are drawn from that seed's `"dispersion"` stream
+//!   `i`-th output of the SplitMix64 generator seeded with `S`, shifted right by one bit
+//!   so that it fits a scenario file (portable, specified bit for bit). Its dispersions
+//!   are drawn from that seed's `"dispersion"` stream
 //!   ([`crate::scenario::DispersionParameters`]), so they never disturb the
 //!   environment's streams.
 //! - Parallelism: [`run_campaign`] flies the runs on a rayon pool of the requested size.

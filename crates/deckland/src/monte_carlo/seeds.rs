@@ -14,12 +14,14 @@ pub fn splitmix64_mix(mut z: u64) -> u64 {
 
 /// Seed of run `run_index` (from 0) of the campaign with seed `campaign_seed`: the
 /// `run_index`-th output (from 0) of SplitMix64 seeded with `campaign_seed`, that is
-/// mix(`campaign_seed` + (`run_index` + 1)·γ) with wrapping arithmetic. Portable and
-/// independent of the order in which runs are flown.
+/// mix(`campaign_seed` + (`run_index` + 1)·γ) with wrapping arithmetic, shifted right by
+/// one bit. Portable and independent of the order in which runs are flown. The shift
+/// keeps every seed below 2⁶³, so it can be written in a scenario file (TOML integers are
+/// signed 64-bit) and a campaign run can be flown again on its own.
 pub fn run_seed(campaign_seed: u64, run_index: u64) -> u64 {
     splitmix64_mix(
         campaign_seed.wrapping_add(run_index.wrapping_add(1).wrapping_mul(SPLITMIX64_GAMMA)),
-    )
+    ) >> 1
 }
 
 #[cfg(test)]
@@ -38,8 +40,13 @@ mod tests {
             16_408_922_859_458_223_821,
         ];
         for (index, value) in expected.iter().enumerate() {
-            assert_eq!(run_seed(1_234_567, index as u64), *value, "output {index}");
+            assert_eq!(
+                run_seed(1_234_567, index as u64),
+                value >> 1,
+                "output {index}"
+            );
         }
+        assert!((0..1000).all(|i| i64::try_from(run_seed(u64::MAX, i)).is_ok()));
     }
 
     #[test]
