@@ -156,7 +156,12 @@ impl Aircraft {
         };
         AirData {
             airspeed_mps: airspeed,
-            alpha_rad: wa.atan2(ua),
+            // atan(w/u) equals atan2(w, u) for u > 0 (always so in flight) and is cheaper.
+            alpha_rad: if ua > 0.0 {
+                (wa / ua).atan()
+            } else {
+                wa.atan2(ua)
+            },
             dynamic_pressure_pa: 0.5 * self.parameters.air_density_kg_m3 * airspeed * airspeed,
             sin_alpha,
             cos_alpha,

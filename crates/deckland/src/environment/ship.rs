@@ -77,6 +77,7 @@ impl ShipMotionState {
     pub const DIMENSION: usize = 8;
 
     /// The state as an array for the integrator: heave filter first, then pitch filter.
+    #[inline]
     pub fn to_array(&self) -> [f64; 8] {
         let mut array = [0.0; 8];
         array[..4].copy_from_slice(&self.heave_filter);
@@ -85,6 +86,7 @@ impl ShipMotionState {
     }
 
     /// The inverse of [`ShipMotionState::to_array`].
+    #[inline]
     pub fn from_array(array: &[f64; 8]) -> Self {
         let mut state = Self::default();
         state.heave_filter.copy_from_slice(&array[..4]);

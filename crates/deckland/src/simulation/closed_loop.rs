@@ -42,28 +42,51 @@ impl LoopState {
     /// The state as an integrator array.
     #[inline]
     pub fn to_array(&self) -> [f64; LOOP_DIMENSION] {
-        let mut x = [0.0; LOOP_DIMENSION];
-        x[..10].copy_from_slice(&self.aircraft.to_array());
-        x[10..18].copy_from_slice(&self.ship.to_array());
-        x[18..21].copy_from_slice(&self.pitch_controller);
-        x[21] = self.speed_integral_m;
-        x[22] = self.sink_rate_integral_m;
-        x[23] = self.guidance_integral_m_s;
-        x[24] = self.deck_estimate[0];
-        x[25] = self.deck_estimate[1];
-        x
+        let a = self.aircraft.to_array();
+        let h = &self.ship.heave_filter;
+        let p = &self.ship.pitch_filter;
+        let c = &self.pitch_controller;
+        [
+            a[0],
+            a[1],
+            a[2],
+            a[3],
+            a[4],
+            a[5],
+            a[6],
+            a[7],
+            a[8],
+            a[9], //
+            h[0],
+            h[1],
+            h[2],
+            h[3],
+            p[0],
+            p[1],
+            p[2],
+            p[3], //
+            c[0],
+            c[1],
+            c[2], //
+            self.speed_integral_m,
+            self.sink_rate_integral_m,
+            self.guidance_integral_m_s,
+            self.deck_estimate[0],
+            self.deck_estimate[1],
+        ]
     }
 
     /// The state from an integrator array.
     #[inline]
     pub fn from_array(x: &[f64; LOOP_DIMENSION]) -> Self {
-        let mut aircraft = [0.0; 10];
-        aircraft.copy_from_slice(&x[..10]);
-        let mut ship = [0.0; 8];
-        ship.copy_from_slice(&x[10..18]);
         Self {
-            aircraft: AircraftState::from_array(&aircraft),
-            ship: ShipMotionState::from_array(&ship),
+            aircraft: AircraftState::from_array(&[
+                x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7], x[8], x[9],
+            ]),
+            ship: ShipMotionState {
+                heave_filter: [x[10], x[11], x[12], x[13]],
+                pitch_filter: [x[14], x[15], x[16], x[17]],
+            },
             pitch_controller: [x[18], x[19], x[20]],
             speed_integral_m: x[21],
             sink_rate_integral_m: x[22],
@@ -232,24 +255,21 @@ impl ClosedLoop {
         )
     }
 
-    /// The wind at the aircraft at (t, x), as the runner holds it over a step.
-    pub fn wind_at(&self, t: f64, x: &[f64; LOOP_DIMENSION]) -> Wind {
-        let s = LoopState::from_array(x);
-        let (pose, _) = self.ship_pose(&s.ship, t);
-        self.wind
-            .wind(t, pose.distance_aft_of_pitch_centre_m(s.aircraft.x_m))
-    }
-
-    /// The deck reference at (t, x), as the runner holds it over a step.
-    pub fn deck_reference_at(&self, t: f64, x: &[f64; LOOP_DIMENSION]) -> Option<DeckReference> {
-        if !matches!(self.mode, LoopMode::Approach) {
-            return None;
-        }
+    /// The wind at the aircraft and (in an approach) the deck reference at (t, x): what
+    /// the runner samples at the start of a step and holds over it.
+    pub fn step_samples(&self, t: f64, x: &[f64; LOOP_DIMENSION]) -> (Wind, Option<DeckReference>) {
         let s = LoopState::from_array(x);
         let (pose, pose_rate) = self.ship_pose(&s.ship, t);
-        let (hook_x_m, _) = self.hook.position(&s.aircraft);
-        let (hook_x_rate_mps, _) = self.hook.velocity(&s.aircraft);
-        Some(self.deck_reference(&s, &pose, &pose_rate, hook_x_m, hook_x_rate_mps))
+        let wind = self
+            .wind
+            .wind(t, pose.distance_aft_of_pitch_centre_m(s.aircraft.x_m));
+        let deck = matches!(self.mode, LoopMode::Approach).then(|| {
+            let (sin_t, cos_t) = s.aircraft.theta_rad.sin_cos();
+            let (hook_x_m, _) = self.hook.position_trig(&s.aircraft, sin_t, cos_t);
+            let (hook_x_rate_mps, _) = self.hook.velocity_trig(&s.aircraft, sin_t, cos_t);
+            self.deck_reference(&s, &pose, &pose_rate, hook_x_m, hook_x_rate_mps)
+        });
+        (wind, deck)
     }
 
     /// The deck reference for the flight-path generator: the mean landing point and the

@@ -140,11 +140,16 @@ impl Simulation {
             let mut verdict = self.check_state(&signals);
             if approach && matches!(verdict, Verdict::Continue) {
                 statistics.add(signals.glide_path_error_m);
-                let probe = HookProbe::new(&self.system, &signals);
-                if let Some(before) = previous {
-                    verdict = self.check_events(&before, &probe, &mut ramp_clearance_m, recorder);
+                // Events can only happen near the ship: probe the hook against the deck
+                // geometry (several trigonometric calls) only within reach of the ramp.
+                if self.near_the_ship(&signals) {
+                    let probe = HookProbe::new(&self.system, &signals);
+                    if let Some(before) = previous {
+                        verdict =
+                            self.check_events(&before, &probe, &mut ramp_clearance_m, recorder);
+                    }
+                    previous = Some(probe);
                 }
-                previous = Some(probe);
             }
             if matches!(verdict, Verdict::Continue)
                 && self.time_s >= self.end_time_s - 0.5 * self.dt
@@ -195,8 +200,18 @@ impl Simulation {
         }
     }
 
+    /// Whether the hook is within 200 m of the ramp's mean position (or past it), where a
+    /// ramp crossing or touchdown could follow within a step or two.
+    fn near_the_ship(&self, s: &Signals) -> bool {
+        let deck = &self.system.deck;
+        let ramp_aft_of_pitch_centre_m =
+            deck.landing_point_aft_of_pitch_centre_m + deck.ramp_aft_of_aim_point_m;
+        s.ship.pitch_centre_x_m - ramp_aft_of_pitch_centre_m - s.hook_x_m < 200.0
+    }
+
     /// Random inputs for the coming step, each from its own stream (MODEL.md §3.4).
     fn draw_held_inputs(&mut self) -> HeldInputs {
+        let (wind, deck) = self.system.step_samples(self.time_s, &self.state);
         HeldInputs {
             ship_noise: self.system.ship.draw_noise(
                 &mut self.streams.ship_heave,
@@ -205,8 +220,8 @@ impl Simulation {
             ),
             pitch_noise_rad: self.system.sensor.draw_white_noise()
                 + self.system.sensor.sinusoid(self.time_s),
-            wind: Some(self.system.wind_at(self.time_s, &self.state)),
-            deck: self.system.deck_reference_at(self.time_s, &self.state),
+            wind: Some(wind),
+            deck,
         }
     }
 
