@@ -16,7 +16,7 @@
 //! Ctrl-C stops the workers before their next run; the finished runs are written, marked
 //! `"partial": true`, and the command exits with status 130.
 
-use super::common::load_scenario_file;
+use super::common::{load_scenario_file, OutputArgs};
 use crate::output::OutputDir;
 use crate::plot::{Figure, Panel};
 use anyhow::{Context, Result};
@@ -48,15 +48,9 @@ pub struct CampaignArgs {
     /// Worker threads (default: the number of CPUs). The results do not depend on it.
     #[arg(long)]
     pub threads: Option<usize>,
-    /// Output folder (default: a new `runs/campaign-<UTC time>`).
-    #[arg(long)]
-    pub out: Option<PathBuf>,
-    /// Overwrite results in an existing `--out` folder.
-    #[arg(long)]
-    pub force: bool,
-    /// Print the summary as one JSON document instead of a table (and no progress bar).
-    #[arg(long)]
-    pub json: bool,
+    /// Output folder, overwriting and JSON printing.
+    #[command(flatten)]
+    pub output: OutputArgs,
     /// Fly the same seeds and dispersions under O-PD and PID and report them side by side.
     #[arg(long)]
     pub compare: bool,
@@ -374,9 +368,9 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
             .map(|n| n.get())
             .unwrap_or(1)
     });
-    let output = OutputDir::prepare("campaign", args.out.as_deref(), args.force)?;
+    let output = OutputDir::prepare("campaign", args.output.out.as_deref(), args.output.force)?;
     let total = args.runs.saturating_mul(spec.controllers.len() as u64);
-    let bar = progress_bar(total, args.json);
+    let bar = progress_bar(total, args.output.json);
     let stop = Arc::new(AtomicBool::new(false));
     install_interrupt_handler(Arc::clone(&stop));
     let started = Instant::now();
@@ -429,7 +423,7 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
     for (stem, figure) in figures(&result, &spec.scenario, &title) {
         figure.save(&output, stem)?;
     }
-    if args.json {
+    if args.output.json {
         println!("{}", serde_json::to_string_pretty(&report)?);
     } else {
         print_table(&report, &output);

@@ -74,3 +74,17 @@ pub fn load_scenario_file(path: &std::path::Path) -> anyhow::Result<Scenario> {
         &path.display().to_string(),
     )?)
 }
+
+/// Where a command writes its results and how it prints them.
+#[derive(Debug, Clone, clap::Args)]
+pub struct OutputArgs {
+    /// Output folder (default: a new `runs/<command>-<UTC time>`).
+    #[arg(long)]
+    pub out: Option<std::path::PathBuf>,
+    /// Overwrite results in an existing `--out` folder.
+    #[arg(long)]
+    pub force: bool,
+    /// Print the result as one JSON document instead of text.
+    #[arg(long)]
+    pub json: bool,
+}

@@ -5,7 +5,7 @@
 //! altitude against the glide path and the deck, the glide-path error (paper Fig. 14),
 //! pitch and pitch command (Fig. 15), elevator and thrust, airspeed, and the wind seen.
 
-use super::common::{Conditions, ControllerChoice};
+use super::common::{Conditions, ControllerChoice, OutputArgs};
 use crate::output::OutputDir;
 use crate::plot::{Figure, Panel};
 use anyhow::{Context, Result};
@@ -14,7 +14,6 @@ use deckland::recording::TimeSeriesRecorder;
 use deckland::scenario::Scenario;
 use deckland::simulation::{RunSummary, Signals, Simulation};
 use serde::Serialize;
-use std::path::PathBuf;
 
 /// Options of `deckland land`.
 #[derive(Debug, Clone, Args)]
@@ -32,15 +31,9 @@ pub struct LandArgs {
     /// Fly without deck-motion compensation (track the mean deck to the end).
     #[arg(long)]
     pub no_deck_compensation: bool,
-    /// Output folder (default: a new `runs/land-<UTC time>`).
-    #[arg(long)]
-    pub out: Option<PathBuf>,
-    /// Overwrite results in an existing `--out` folder.
-    #[arg(long)]
-    pub force: bool,
-    /// Print the summary as one JSON document instead of text.
-    #[arg(long)]
-    pub json: bool,
+    /// Output folder, overwriting and JSON printing.
+    #[command(flatten)]
+    pub output: OutputArgs,
 }
 
 /// Steps between recorded samples (10 ms at the default 1 ms step).
@@ -309,13 +302,13 @@ pub fn run(args: &LandArgs) -> Result<()> {
     if args.no_deck_compensation {
         scenario.control.flight_path.deck_motion_compensation = false;
     }
-    let output = OutputDir::prepare("land", args.out.as_deref(), args.force)?;
+    let output = OutputDir::prepare("land", args.output.out.as_deref(), args.output.force)?;
     fly_and_write(
         &scenario,
         &output,
         args.controller.label(),
         args.conditions.name(),
-        args.json,
+        args.output.json,
     )?;
     Ok(())
 }

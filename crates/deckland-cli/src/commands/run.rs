@@ -5,7 +5,7 @@
 //! `approach.csv`, `summary.json` and the plots, like `deckland land`. With a campaign
 //! row's seed, `--seed S --disperse` flies exactly that campaign run, with its time series.
 
-use super::common::load_scenario_file;
+use super::common::{load_scenario_file, OutputArgs};
 use super::land::fly_and_write;
 use crate::output::OutputDir;
 use anyhow::Result;
@@ -26,15 +26,9 @@ pub struct RunArgs {
     /// draws it: `--seed` with a `runs.csv` row's seed re-flies that run.
     #[arg(long)]
     pub disperse: bool,
-    /// Output folder (default: a new `runs/run-<UTC time>`).
-    #[arg(long)]
-    pub out: Option<PathBuf>,
-    /// Overwrite results in an existing `--out` folder.
-    #[arg(long)]
-    pub force: bool,
-    /// Print the summary as one JSON document instead of text.
-    #[arg(long)]
-    pub json: bool,
+    /// Output folder, overwriting and JSON printing.
+    #[command(flatten)]
+    pub output: OutputArgs,
 }
 
 /// Runs `deckland run`.
@@ -49,7 +43,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
             .sample(&RandomStreams::new(scenario.seed));
         scenario = draw.apply(&scenario);
     }
-    let output = OutputDir::prepare("run", args.out.as_deref(), args.force)?;
+    let output = OutputDir::prepare("run", args.output.out.as_deref(), args.output.force)?;
     let name = args.scenario.file_name().map_or_else(
         || args.scenario.display().to_string(),
         |n| n.to_string_lossy().into_owned(),
@@ -59,7 +53,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
         &output,
         controller_label(&scenario.control.pitch),
         &name,
-        args.json,
+        args.output.json,
     )?;
     Ok(())
 }

@@ -5,7 +5,7 @@
 //! convergence time is the 2 % settling time of the sink rate towards the command,
 //! measured from the command (definitions in `deckland::metrics`).
 
-use super::common::{Conditions, ControllerChoice};
+use super::common::{Conditions, ControllerChoice, OutputArgs};
 use crate::output::OutputDir;
 use crate::plot::{Figure, Panel};
 use anyhow::{bail, Context, Result};
@@ -15,7 +15,6 @@ use deckland::recording::TimeSeriesRecorder;
 use deckland::scenario::Mission;
 use deckland::simulation::{Outcome, Simulation};
 use serde::Serialize;
-use std::path::PathBuf;
 
 /// Options of `deckland sink`.
 #[derive(Debug, Clone, Args)]
@@ -44,15 +43,9 @@ pub struct SinkArgs {
     /// Seed of every random stream.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
-    /// Output folder (default: a new `runs/sink-<UTC time>`).
-    #[arg(long)]
-    pub out: Option<PathBuf>,
-    /// Overwrite results in an existing `--out` folder.
-    #[arg(long)]
-    pub force: bool,
-    /// Print the result as one JSON document instead of text.
-    #[arg(long)]
-    pub json: bool,
+    /// Output folder, overwriting and JSON printing.
+    #[command(flatten)]
+    pub output: OutputArgs,
 }
 
 /// Time of the sink-rate command after the start (s).
@@ -209,7 +202,7 @@ pub(crate) fn figure(run: &SinkRun, args: &SinkArgs) -> Figure {
 /// Runs `deckland sink`.
 pub fn run(args: &SinkArgs) -> Result<()> {
     let flown = fly(args)?;
-    let output = OutputDir::prepare("sink", args.out.as_deref(), args.force)?;
+    let output = OutputDir::prepare("sink", args.output.out.as_deref(), args.output.force)?;
     let report = &flown.report;
     let mut csv = csv::Writer::from_writer(Vec::new());
     for row in &flown.rows {
@@ -225,7 +218,7 @@ pub fn run(args: &SinkArgs) -> Result<()> {
     )?;
     figure(&flown, args).save(&output, "sink_rate")?;
 
-    if args.json {
+    if args.output.json {
         println!("{}", serde_json::to_string_pretty(&report)?);
         return Ok(());
     }

@@ -16,7 +16,7 @@ use deckland::scenario::Mission;
 use deckland::simulation::{Outcome, Signals, Simulation};
 use serde::Serialize;
 
-use super::common::{Conditions, ControllerChoice};
+use super::common::{Conditions, ControllerChoice, OutputArgs};
 use crate::output::OutputDir;
 use crate::plot::{Figure, Panel};
 
@@ -84,15 +84,9 @@ pub struct StepArgs {
     /// O-PD observer bandwidth parameter ε in (0, 1) (default: the library's).
     #[arg(long, allow_negative_numbers = true)]
     pub(crate) epsilon: Option<f64>,
-    /// Output folder (default: a new runs/step-<UTC timestamp>).
-    #[arg(long)]
-    pub(crate) out: Option<PathBuf>,
-    /// Overwrite results in an --out folder that already holds some.
-    #[arg(long)]
-    pub(crate) force: bool,
-    /// Print one JSON document instead of the table.
-    #[arg(long)]
-    pub(crate) json: bool,
+    /// Output folder, overwriting and JSON printing.
+    #[command(flatten)]
+    pub output: OutputArgs,
 }
 
 /// The step response of one controller, as printed in the JSON document.
@@ -472,7 +466,7 @@ pub fn run(args: &StepArgs) -> Result<()> {
         PitchControllerParameters::ObserverPd(opd) => opd.observer.epsilon,
         PitchControllerParameters::Pid(_) => f64::NAN,
     };
-    let output = OutputDir::prepare("step", args.out.as_deref(), args.force)?;
+    let output = OutputDir::prepare("step", args.output.out.as_deref(), args.output.force)?;
     let runs = args
         .controller
         .choices()
@@ -496,7 +490,7 @@ pub fn run(args: &StepArgs) -> Result<()> {
         controllers: runs.into_iter().map(|r| r.result).collect(),
         output_folder: output.path().display().to_string(),
     };
-    if args.json {
+    if args.output.json {
         println!("{}", serde_json::to_string_pretty(&report)?);
     } else {
         print_table(&report, &written);

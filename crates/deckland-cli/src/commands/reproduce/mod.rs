@@ -28,6 +28,7 @@ use deckland::simulation::{Outcome, RunSummary, Simulation};
 use indicatif::{ProgressBar, ProgressStyle};
 use nalgebra::SMatrix;
 
+use super::common::OutputArgs;
 use super::common::{Conditions, ControllerChoice};
 use super::environment::{self, EnvironmentArgs};
 use super::land;
@@ -242,9 +243,11 @@ fn step_args(conditions: Conditions) -> StepArgs {
         seconds: PITCH_STEP_SECONDS,
         seed: SEED,
         epsilon: None,
-        out: None,
-        force: false,
-        json: false,
+        output: OutputArgs {
+            out: None,
+            force: false,
+            json: false,
+        },
     }
 }
 
@@ -256,9 +259,11 @@ fn sink_args(ramp_s: f64, seconds: f64) -> SinkArgs {
         conditions: Conditions::Ideal,
         seconds,
         seed: SEED,
-        out: None,
-        force: false,
-        json: false,
+        output: OutputArgs {
+            out: None,
+            force: false,
+            json: false,
+        },
     }
 }
 
