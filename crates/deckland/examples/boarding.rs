@@ -5,25 +5,13 @@
 //! Prints a markdown table; each seed's run is independent and deterministic, so the
 //! table is the same however the work is split between threads.
 
-use deckland::control::pitch::{PidParameters, PitchControllerParameters};
-use deckland::recording::SummaryRecorder;
-use deckland::scenario::Scenario;
-use deckland::simulation::{Outcome, RunSummary, Simulation, SimulationError};
+mod support;
 
-fn fly_seeds(base: &Scenario, seeds: &[u64]) -> Result<Vec<RunSummary>, SimulationError> {
-    let fly = |seed: u64| -> Result<RunSummary, SimulationError> {
-        let scenario = Scenario { seed, ..*base };
-        Ok(Simulation::new(&scenario)?.run(&mut SummaryRecorder))
-    };
-    let (first, second) = seeds.split_at(seeds.len() / 2);
-    std::thread::scope(|scope| {
-        let handle = scope.spawn(|| first.iter().map(|&s| fly(s)).collect::<Vec<_>>());
-        let mut results: Vec<_> = second.iter().map(|&s| fly(s)).collect();
-        let mut all = handle.join().expect("worker thread does not panic");
-        all.append(&mut results);
-        all.into_iter().collect()
-    })
-}
+use support::fly_seeds;
+
+use deckland::control::pitch::{PidParameters, PitchControllerParameters};
+use deckland::scenario::Scenario;
+use deckland::simulation::{Outcome, SimulationError};
 
 fn mean_and_sd(values: &[f64]) -> (f64, f64) {
     let n = values.len() as f64;

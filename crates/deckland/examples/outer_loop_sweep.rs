@@ -3,25 +3,14 @@
 //! gains and deck-motion predictors, plus the paper's gain set in ideal conditions.
 //! `cargo run --release -p deckland --example outer_loop_sweep [N]` (default 50).
 
+mod support;
+
+use support::fly_seeds;
+
 use deckland::control::{DeckMotionPredictor, GuidanceParameters, SinkRateControllerParameters};
 use deckland::recording::SummaryRecorder;
 use deckland::scenario::Scenario;
 use deckland::simulation::{Outcome, RunSummary, Simulation, SimulationError};
-
-fn fly_seeds(base: &Scenario, seeds: &[u64]) -> Result<Vec<RunSummary>, SimulationError> {
-    let fly = |seed: u64| -> Result<RunSummary, SimulationError> {
-        let scenario = Scenario { seed, ..*base };
-        Ok(Simulation::new(&scenario)?.run(&mut SummaryRecorder))
-    };
-    let (first, second) = seeds.split_at(seeds.len() / 2);
-    std::thread::scope(|scope| {
-        let handle = scope.spawn(|| first.iter().map(|&s| fly(s)).collect::<Vec<_>>());
-        let mut rest: Vec<_> = second.iter().map(|&s| fly(s)).collect();
-        let mut all = handle.join().expect("worker thread does not panic");
-        all.append(&mut rest);
-        all.into_iter().collect()
-    })
-}
 
 fn row(label: &str, results: &[RunSummary]) {
     let count = |o: Outcome| results.iter().filter(|r| r.outcome == o).count();
