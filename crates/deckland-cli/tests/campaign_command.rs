@@ -3,22 +3,12 @@
 
 #![allow(clippy::unwrap_used)] // tests fail loudly by design
 
+mod common;
+
+use common::{deckland, scratch};
 use serde_json::Value;
 use std::path::PathBuf;
 use std::process::{Command, Output};
-
-fn deckland(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_deckland"))
-        .args(args)
-        .output()
-        .expect("the deckland binary runs")
-}
-
-fn temp_dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("deckland-test-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    dir
-}
 
 fn scenario(name: &str) -> String {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -51,12 +41,12 @@ fn assert_success(output: &Output) {
 
 #[test]
 fn one_and_two_threads_write_byte_identical_runs_csv() {
-    let dir = temp_dir("campaign-threads");
+    let dir = scratch("campaign-threads");
     let file = short_dispersed_scenario(&dir);
     let mut csv = Vec::new();
     for threads in ["1", "2"] {
         let out = dir.join(format!("threads-{threads}"));
-        let output = deckland(&[
+        let output = deckland([
             "campaign",
             &file,
             "--runs",
@@ -129,10 +119,10 @@ fn one_and_two_threads_write_byte_identical_runs_csv() {
 
 #[test]
 fn compare_flies_both_controllers_on_the_same_seeds() {
-    let dir = temp_dir("campaign-compare");
+    let dir = scratch("campaign-compare");
     let file = short_dispersed_scenario(&dir);
     let out = dir.join("out");
-    let output = deckland(&[
+    let output = deckland([
         "campaign",
         &file,
         "--runs",
@@ -166,21 +156,21 @@ fn compare_flies_both_controllers_on_the_same_seeds() {
 
 #[test]
 fn print_default_is_a_valid_scenario_file() {
-    let output = deckland(&["scenario", "--print-default"]);
+    let output = deckland(["scenario", "--print-default"]);
     assert_success(&output);
     let text = String::from_utf8(output.stdout).unwrap();
     assert_eq!(
         text,
         std::fs::read_to_string(scenario("paper-adverse.toml")).unwrap()
     );
-    let checked = deckland(&["scenario", "--check", &scenario("heavy-sea.toml")]);
+    let checked = deckland(["scenario", "--check", &scenario("heavy-sea.toml")]);
     assert_success(&checked);
 }
 
 #[test]
 fn run_flies_a_scenario_file_like_land() {
-    let dir = temp_dir("run");
-    let output = deckland(&[
+    let dir = scratch("run");
+    let output = deckland([
         "run",
         &scenario("calm.toml"),
         "--out",
@@ -204,7 +194,7 @@ fn run_flies_a_scenario_file_like_land() {
 
 #[test]
 fn a_bad_scenario_file_is_refused_with_file_line_and_field() {
-    let dir = temp_dir("bad-scenario");
+    let dir = scratch("bad-scenario");
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("bad.toml");
     std::fs::write(&path, "seed = 3\n[environment.ship]\nheave_rms_m = -2.0\n").unwrap();
@@ -230,7 +220,7 @@ fn a_bad_scenario_file_is_refused_with_file_line_and_field() {
 #[cfg(unix)]
 #[test]
 fn an_interrupted_campaign_keeps_a_consistent_partial_result() {
-    let dir = temp_dir("campaign-interrupt");
+    let dir = scratch("campaign-interrupt");
     let out = dir.join("out");
     let child = Command::new(env!("CARGO_BIN_EXE_deckland"))
         .args([
@@ -284,10 +274,10 @@ fn an_interrupted_campaign_keeps_a_consistent_partial_result() {
 /// `run --seed S --disperse` with a campaign row's seed re-flies exactly that run.
 #[test]
 fn run_with_a_campaign_seed_and_disperse_reproduces_the_campaign_row() {
-    let dir = temp_dir("campaign-reproduce");
+    let dir = scratch("campaign-reproduce");
     let file = short_dispersed_scenario(&dir);
     let out = dir.join("campaign");
-    assert_success(&deckland(&[
+    assert_success(&deckland([
         "campaign",
         &file,
         "--runs",
@@ -303,7 +293,7 @@ fn run_with_a_campaign_seed_and_disperse_reproduces_the_campaign_row() {
     let column = |name: &str| header.iter().position(|c| *c == name).unwrap();
     let row: Vec<&str> = csv.lines().nth(2).unwrap().split(',').collect();
     let single = dir.join("single");
-    let output = deckland(&[
+    let output = deckland([
         "run",
         &file,
         "--seed",

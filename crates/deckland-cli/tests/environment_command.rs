@@ -1,24 +1,12 @@
 //! Runs `deckland environment` end to end and checks what it writes.
 
+mod common;
+
+use common::{deckland, scratch};
+use std::ffi::OsStr;
 use std::fs;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output};
-
-/// A fresh, empty scratch folder name for this test process.
-fn scratch(name: &str) -> PathBuf {
-    let path = std::env::temp_dir().join(format!("deckland-cli-{}-{name}", std::process::id()));
-    let _ = fs::remove_dir_all(&path);
-    path
-}
-
-fn run_environment(out: &Path, extra: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_deckland"))
-        .args(["environment", "--seconds", "5", "--out"])
-        .arg(out)
-        .args(extra)
-        .output()
-        .expect("the deckland binary runs")
-}
 
 #[test]
 fn environment_command_writes_csv_and_plots() {
@@ -121,4 +109,14 @@ fn environment_command_rejects_bad_arguments() {
     assert!(!result.status.success());
     assert!(String::from_utf8_lossy(&result.stderr).contains("--seconds"));
     let _ = fs::remove_dir_all(&out);
+}
+
+fn run_environment(out: &Path, extra: &[&str]) -> Output {
+    let mut args: Vec<&OsStr> = ["environment", "--seconds", "5", "--out"]
+        .iter()
+        .map(OsStr::new)
+        .collect();
+    args.push(out.as_os_str());
+    args.extend(extra.iter().map(OsStr::new));
+    deckland(args)
 }

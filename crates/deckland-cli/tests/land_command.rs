@@ -2,32 +2,16 @@
 
 #![allow(clippy::unwrap_used)] // tests fail loudly by design
 
+mod common;
+
+use common::{deckland, file_size, scratch};
 use serde_json::Value;
-use std::path::Path;
-use std::process::{Command, Output};
-
-fn deckland(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_deckland"))
-        .args(args)
-        .output()
-        .expect("the deckland binary runs")
-}
-
-fn temp_dir(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("deckland-test-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    dir
-}
-
-fn file_size(path: &Path) -> u64 {
-    std::fs::metadata(path).map(|m| m.len()).unwrap_or(0)
-}
 
 #[test]
 fn land_writes_every_result_and_prints_the_json_summary() {
-    let dir = temp_dir("land");
+    let dir = scratch("land");
     let out = dir.to_str().unwrap();
-    let output = deckland(&["land", "--conditions", "ideal", "--out", out, "--json"]);
+    let output = deckland(["land", "--conditions", "ideal", "--out", out, "--json"]);
     assert!(
         output.status.success(),
         "{}",
@@ -96,10 +80,10 @@ fn land_writes_every_result_and_prints_the_json_summary() {
     assert!(leftovers.is_empty());
 
     // A second run into the same folder is refused without --force, allowed with it.
-    let again = deckland(&["land", "--conditions", "ideal", "--out", out]);
+    let again = deckland(["land", "--conditions", "ideal", "--out", out]);
     assert!(!again.status.success());
     assert!(String::from_utf8_lossy(&again.stderr).contains("--force"));
-    let forced = deckland(&["land", "--conditions", "ideal", "--out", out, "--force"]);
+    let forced = deckland(["land", "--conditions", "ideal", "--out", out, "--force"]);
     assert!(forced.status.success());
     let text = String::from_utf8(forced.stdout).unwrap();
     assert!(text.contains("trap (wire 3)"), "{text}");
@@ -108,8 +92,8 @@ fn land_writes_every_result_and_prints_the_json_summary() {
 
 #[test]
 fn land_adverse_pid_runs_and_reports_an_outcome() {
-    let dir = temp_dir("land-pid");
-    let output = deckland(&[
+    let dir = scratch("land-pid");
+    let output = deckland([
         "land",
         "--controller",
         "pid",
@@ -133,9 +117,9 @@ fn land_adverse_pid_runs_and_reports_an_outcome() {
 
 #[test]
 fn sink_tracks_a_ramped_command_and_reports_the_paper_step_as_diverged() {
-    let dir = temp_dir("sink");
+    let dir = scratch("sink");
     let out = dir.to_str().unwrap();
-    let output = deckland(&[
+    let output = deckland([
         "sink",
         "--sink-rate",
         "5",
@@ -156,7 +140,7 @@ fn sink_tracks_a_ramped_command_and_reports_the_paper_step_as_diverged() {
     assert!(v["metrics"]["steady_state_error"].as_f64().unwrap().abs() < 0.1);
     assert!(file_size(&dir.join("sink_rate.png")) > 10_000);
     // The paper's 10 m/s step without shaping drives α out of the model's range.
-    let step = deckland(&["sink", "--ramp-s", "0", "--out", out, "--force", "--json"]);
+    let step = deckland(["sink", "--ramp-s", "0", "--out", out, "--force", "--json"]);
     assert!(step.status.success());
     let v: Value = serde_json::from_slice(&step.stdout).unwrap();
     assert_eq!(v["outcome"], "diverged");

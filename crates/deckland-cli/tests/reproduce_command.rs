@@ -2,8 +2,10 @@
 //! with real content, and REPORT.md holds the comparison table and links every figure.
 #![allow(clippy::unwrap_used)]
 
+mod common;
+
+use common::scratch;
 use std::fs;
-use std::path::PathBuf;
 use std::process::Command;
 
 /// The figures the report must produce (paper Fig. 4, 6, 7, 8, 10–15 and the approach).
@@ -21,14 +23,6 @@ const FIGURES: [&str; 12] = [
     "fig15_pitch_approach",
     "approach_altitude",
 ];
-
-/// A fresh, empty scratch folder name for this test process.
-fn scratch(name: &str) -> PathBuf {
-    let path =
-        std::env::temp_dir().join(format!("deckland-reproduce-{}-{name}", std::process::id()));
-    let _ = fs::remove_dir_all(&path);
-    path
-}
 
 /// Table rows of a Markdown document: lines starting with `|` that are neither a header
 /// (`| quantity |`) nor a separator (`|---`).

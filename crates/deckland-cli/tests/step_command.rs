@@ -2,26 +2,13 @@
 //! the O-PD in ideal conditions, and the errors for bad options.
 #![allow(clippy::unwrap_used)]
 
+mod common;
+
+use common::{deckland, scratch};
+use std::ffi::OsStr;
 use std::fs;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-/// A fresh, empty scratch folder name for this test process.
-fn scratch(name: &str) -> PathBuf {
-    let path = std::env::temp_dir().join(format!("deckland-step-{}-{name}", std::process::id()));
-    let _ = fs::remove_dir_all(&path);
-    path
-}
-
-fn run_step(out: &Path, extra: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_deckland"))
-        .arg("step")
-        .arg("--out")
-        .arg(out)
-        .args(extra)
-        .output()
-        .unwrap()
-}
+use std::path::Path;
+use std::process::Output;
 
 fn controller<'a>(report: &'a serde_json::Value, name: &str) -> &'a serde_json::Value {
     report["controllers"]
@@ -166,4 +153,10 @@ fn invalid_options_give_clear_errors() {
     assert_clear_error(&["--seconds", "NaN"], "--seconds");
     assert_clear_error(&["--seconds", "-3"], "--seconds");
     assert_clear_error(&["--epsilon", "1.5"], "--epsilon");
+}
+
+fn run_step(out: &Path, extra: &[&str]) -> Output {
+    let mut args: Vec<&OsStr> = vec![OsStr::new("step"), OsStr::new("--out"), out.as_os_str()];
+    args.extend(extra.iter().map(OsStr::new));
+    deckland(args)
 }

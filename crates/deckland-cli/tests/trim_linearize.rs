@@ -2,15 +2,10 @@
 
 #![allow(clippy::unwrap_used)] // tests fail loudly by design
 
-use serde_json::Value;
-use std::process::Command;
+mod common;
 
-fn deckland(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_deckland"))
-        .args(args)
-        .output()
-        .expect("the deckland binary runs")
-}
+use common::deckland;
+use serde_json::Value;
 
 fn json(args: &[&str]) -> Value {
     let output = deckland(args);
@@ -79,7 +74,7 @@ fn linearize_json_has_matrices_eigenvalues_and_modes() {
 
 #[test]
 fn tables_are_readable() {
-    let output = deckland(&["linearize"]);
+    let output = deckland(["linearize"]);
     assert!(output.status.success());
     let text = String::from_utf8(output.stdout).unwrap();
     assert!(text.contains("short_period") && text.contains("phugoid"));
@@ -88,7 +83,7 @@ fn tables_are_readable() {
 
 #[test]
 fn unreachable_trim_fails_with_the_limit_named() {
-    let output = deckland(&["trim", "--gamma", "-20"]);
+    let output = deckland(["trim", "--gamma", "-20"]);
     assert!(!output.status.success());
     let stderr = String::from_utf8(output.stderr).unwrap();
     assert!(
@@ -96,7 +91,7 @@ fn unreachable_trim_fails_with_the_limit_named() {
         "{stderr}"
     );
     assert!(!stderr.contains("panicked"));
-    let output = deckland(&["trim", "--speed", "-5"]);
+    let output = deckland(["trim", "--speed", "-5"]);
     assert!(!output.status.success());
     assert!(String::from_utf8(output.stderr)
         .unwrap()
