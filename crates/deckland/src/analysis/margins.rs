@@ -234,13 +234,18 @@ pub fn cascade_margins(scenario: &Scenario) -> Result<Vec<LoopMargins>, Simulati
 mod tests {
     use super::*;
 
+    /// 2001 frequencies from 0.01 to 100 rad/s, logarithmically spaced.
+    fn log_grid() -> Vec<f64> {
+        (0..=2000)
+            .map(|k| 10f64.powf(-2.0 + 4.0 * k as f64 / 2000.0))
+            .collect()
+    }
+
     /// L(s) = K/(s(s + 1)) with K = 2: |L(jω)| = 1 at ω² = (−1 + √17)/2, ω = 1.2496;
     /// phase −90° − atan ω = −141.3°, so PM = 38.7°; the phase never reaches −180°.
     #[test]
     fn margins_of_a_textbook_loop() {
-        let omegas: Vec<f64> = (0..=2000)
-            .map(|k| 10f64.powf(-2.0 + 4.0 * k as f64 / 2000.0))
-            .collect();
+        let omegas = log_grid();
         let gains: Vec<Complex<f64>> = omegas
             .iter()
             .map(|&w| {
@@ -263,9 +268,7 @@ mod tests {
     /// L(s) = 4/(s + 1)³: phase −180° at ω = √3 where |L| = 4/8, GM = 6.02 dB.
     #[test]
     fn gain_margin_of_a_third_order_loop() {
-        let omegas: Vec<f64> = (0..=2000)
-            .map(|k| 10f64.powf(-2.0 + 4.0 * k as f64 / 2000.0))
-            .collect();
+        let omegas = log_grid();
         let gains: Vec<Complex<f64>> = omegas
             .iter()
             .map(|&w| {
