@@ -11,7 +11,7 @@ use support::fly_seeds;
 
 use deckland::control::pitch::{PidParameters, PitchControllerParameters};
 use deckland::scenario::Scenario;
-use deckland::simulation::{Outcome, SimulationError};
+use deckland::simulation::{Outcome, SetupError};
 
 fn mean_and_sd(values: &[f64]) -> (f64, f64) {
     let n = values.len() as f64;
@@ -20,7 +20,7 @@ fn mean_and_sd(values: &[f64]) -> (f64, f64) {
     (mean, variance.sqrt())
 }
 
-fn main() -> Result<(), SimulationError> {
+fn main() -> Result<(), SetupError> {
     let count: u64 = std::env::args()
         .nth(1)
         .and_then(|a| a.parse().ok())

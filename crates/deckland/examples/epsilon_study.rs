@@ -98,7 +98,7 @@ fn fly(
     let mut scenario = disturbances.scenario(seed);
     scenario.control.pitch = pitch;
     scenario.mission = Mission::pitch_step(step_deg, DURATION_S);
-    let mut recorder = TimeSeriesRecorder::new(1);
+    let mut recorder = TimeSeriesRecorder::every(0.0);
     Simulation::new(&scenario)?.run(&mut recorder);
     let samples = &recorder.samples;
     let first = samples.first().ok_or("no samples recorded")?;

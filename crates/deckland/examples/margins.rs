@@ -6,13 +6,13 @@ use deckland::analysis::cascade_margins;
 use deckland::control::pitch::{PidParameters, PitchControllerParameters};
 use deckland::control::{GuidanceParameters, SinkRateControllerParameters};
 use deckland::scenario::Scenario;
-use deckland::simulation::SimulationError;
+use deckland::simulation::SetupError;
 
 fn show(value: Option<f64>, unit: &str) -> String {
     value.map_or("—".to_string(), |v| format!("{v:.2} {unit}"))
 }
 
-fn main() -> Result<(), SimulationError> {
+fn main() -> Result<(), SetupError> {
     println!("| pitch control | outer-loop gains | loop (cut at) | bandwidth (first crossover) | phase margin there | gain margin | modulus margin (at ω) | closed loop max Re λ |");
     println!("|---|---|---|---|---|---|---|---|");
     for (pitch_name, pitch) in [

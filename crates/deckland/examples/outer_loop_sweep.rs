@@ -10,7 +10,7 @@ use support::fly_seeds;
 use deckland::control::{DeckMotionPredictor, GuidanceParameters, SinkRateControllerParameters};
 use deckland::recording::SummaryRecorder;
 use deckland::scenario::Scenario;
-use deckland::simulation::{Outcome, RunSummary, Simulation, SimulationError};
+use deckland::simulation::{Outcome, RunSummary, SetupError, Simulation};
 
 fn row(label: &str, results: &[RunSummary]) {
     let count = |o: Outcome| results.iter().filter(|r| r.outcome == o).count();
@@ -32,7 +32,7 @@ fn row(label: &str, results: &[RunSummary]) {
     );
 }
 
-fn main() -> Result<(), SimulationError> {
+fn main() -> Result<(), SetupError> {
     let count: u64 = std::env::args()
         .nth(1)
         .and_then(|a| a.parse().ok())

@@ -38,6 +38,7 @@ pub mod estimation;
 pub mod integration;
 pub mod metrics;
 pub mod monte_carlo;
+pub mod parameters;
 pub mod random;
 pub mod recording;
 pub mod scenario;

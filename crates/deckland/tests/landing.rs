@@ -104,8 +104,8 @@ fn the_same_seed_reproduces_the_run_bit_for_bit() {
         seed: 7,
         ..Scenario::default()
     };
-    let mut first = TimeSeriesRecorder::new(7);
-    let mut second = TimeSeriesRecorder::new(7);
+    let mut first = TimeSeriesRecorder::every(0.007);
+    let mut second = TimeSeriesRecorder::every(0.007);
     let a = Simulation::new(&scenario).unwrap().run(&mut first);
     let b = Simulation::new(&scenario).unwrap().run(&mut second);
     assert_eq!(a, b);
@@ -185,7 +185,7 @@ fn regression_sensor_sinusoid_is_added_once() {
     scenario.environment.pitch_noise.enabled = true;
     scenario.environment.pitch_noise.white_noise_sigma_rad = 0.0;
     scenario.mission = deckland::scenario::Mission::pitch_step(1.0, 2.0);
-    let mut recorder = TimeSeriesRecorder::new(1);
+    let mut recorder = TimeSeriesRecorder::every(0.0);
     Simulation::new(&scenario).unwrap().run(&mut recorder);
     assert!(recorder.samples.len() > 1000);
     for s in &recorder.samples {

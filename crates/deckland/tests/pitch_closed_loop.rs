@@ -10,8 +10,8 @@
 //! metric; the paper reports 1.11 s for the O-PD (Fig. 10).
 
 use deckland::control::pitch::{
-    ElevatorSaturation, ObserverPdParameters, PidParameters, PitchControlInputs, PitchController,
-    PitchControllerParameters, PitchPlantDerivatives,
+    BuiltPitchLaw, ElevatorSaturation, ObserverPdParameters, PidParameters,
+    PitchControllerParameters, PitchDesignContext, PitchLaw, PitchLawInputs, PitchPlantDerivatives,
 };
 use deckland::integration::{rk4_step, OdeSystem};
 use deckland::metrics::{step_response_metrics, StepResponseMetrics, StepResponseSpec};
@@ -54,7 +54,7 @@ enum Actuator {
 
 /// State: [θ, q, δe, δė, controller state ×3]; δe, δė unused with an ideal actuator.
 struct PitchLoop {
-    controller: PitchController,
+    controller: BuiltPitchLaw,
     actuator: Actuator,
     limits: Limits,
     step_rad: f64,
@@ -63,8 +63,8 @@ struct PitchLoop {
 
 impl PitchLoop {
     /// Controller inputs at time `t` with the elevator at `elevator` (rad).
-    fn inputs(&self, t: f64, x: &[f64; 7], elevator: f64) -> PitchControlInputs {
-        PitchControlInputs {
+    fn inputs(&self, t: f64, x: &[f64; 7], elevator: f64) -> PitchLawInputs {
+        PitchLawInputs {
             theta_ref_rad: THETA_TRIM + if t >= STEP_TIME { self.step_rad } else { 0.0 },
             theta_measured_rad: x[0],
             pitch_rate_measured_radps: x[1],
@@ -81,7 +81,7 @@ impl PitchLoop {
     }
 
     /// Elevator position (rad) and the controller inputs that go with it.
-    fn elevator_and_inputs(&self, t: f64, x: &[f64; 7]) -> (f64, PitchControlInputs) {
+    fn elevator_and_inputs(&self, t: f64, x: &[f64; 7]) -> (f64, PitchLawInputs) {
         let elevator = match self.actuator {
             Actuator::Paper => x[2],
             // Neither controller's command depends on the actual elevator position.
@@ -91,13 +91,18 @@ impl PitchLoop {
         (inputs.elevator_actual_rad, inputs)
     }
 
-    fn command(&self, inputs: &PitchControlInputs, x: &[f64; 7]) -> f64 {
-        let state = self.controller.state_from_array(&[x[4], x[5], x[6]]);
-        self.controller.elevator_command_rad(&state, inputs)
+    /// The controller's states in `x` (slots 4–6; the PID uses one).
+    fn controller_state<'a>(&self, x: &'a [f64; 7]) -> &'a [f64] {
+        &x[4..4 + self.controller.state_names().len()]
+    }
+
+    fn command(&self, inputs: &PitchLawInputs, x: &[f64; 7]) -> f64 {
+        self.controller
+            .elevator_command_rad(self.controller_state(x), inputs)
     }
 
     /// Actuator position rate and acceleration, held at a limit it pushes into.
-    fn actuator_derivative(&self, x: &[f64; 7], inputs: &PitchControlInputs) -> [f64; 2] {
+    fn actuator_derivative(&self, x: &[f64; 7], inputs: &PitchLawInputs) -> [f64; 2] {
         if let Actuator::Ideal = self.actuator {
             return [0.0, 0.0];
         }
@@ -128,9 +133,10 @@ impl OdeSystem<7> for PitchLoop {
         let pitch_acceleration = PLANT.dqdot_dq_per_s * x[1]
             + PLANT.dqdot_delevator_per_s2 * (elevator - ELEVATOR_TRIM)
             + (self.disturbance)(t);
-        let controller = self
-            .controller
-            .derivative_array(&[x[4], x[5], x[6]], &inputs);
+        let mut controller = [0.0; 3];
+        let state = self.controller_state(x);
+        self.controller
+            .derivative(state, &inputs, &mut controller[..state.len()]);
         [
             x[1],
             pitch_acceleration,
@@ -163,8 +169,16 @@ struct Run {
 
 fn simulate(system: &PitchLoop, end_s: f64) -> Run {
     let mut x = [THETA_TRIM, 0.0, ELEVATOR_TRIM, 0.0, 0.0, 0.0, 0.0];
-    let initial = system.controller.initial_state(THETA_TRIM, THETA_TRIM);
-    x[4..].copy_from_slice(&initial.to_array());
+    let trim = PitchLawInputs {
+        theta_ref_rad: THETA_TRIM,
+        theta_measured_rad: THETA_TRIM,
+        theta_trim_rad: THETA_TRIM,
+        elevator_trim_rad: ELEVATOR_TRIM,
+        elevator_actual_rad: ELEVATOR_TRIM,
+        ..PitchLawInputs::default()
+    };
+    let n = system.controller.state_names().len();
+    system.controller.initial_state(&trim, &mut x[4..4 + n]);
     let steps = (end_s / DT).round() as usize;
     let mut run = Run {
         time: Vec::with_capacity(steps + 1),
@@ -177,9 +191,11 @@ fn simulate(system: &PitchLoop, end_s: f64) -> Run {
         run.time.push(t);
         run.theta.push(x[0]);
         run.elevator.push(system.elevator_and_inputs(t, &x).0);
-        let state = system.controller.state_from_array(&[x[4], x[5], x[6]]);
-        run.disturbance_estimate
-            .push(state.disturbance_estimate_radps2());
+        run.disturbance_estimate.push(
+            system
+                .controller
+                .disturbance_estimate_radps2(system.controller_state(&x)),
+        );
         x = rk4_step(system, t, &x, DT);
         assert!(x.iter().all(|v| v.is_finite()), "diverged at {t} s");
     }
@@ -191,16 +207,27 @@ fn metrics(run: &Run, step_rad: f64) -> StepResponseMetrics {
     step_response_metrics(&run.time, &run.theta, &spec).expect("valid record")
 }
 
-fn observer_pd() -> PitchController {
-    PitchController::new(&PitchControllerParameters::default(), PLANT).expect("valid")
+/// Builds a pitch law for the linear pitch model.
+fn build(parameters: PitchControllerParameters) -> BuiltPitchLaw {
+    let context = PitchDesignContext {
+        plant: PLANT,
+        actuator: Default::default(),
+        pitch_noise: Default::default(),
+        time_step_s: DT,
+    };
+    parameters.build(&context).expect("valid")
 }
 
-fn pid(anti_windup: bool) -> PitchController {
+fn observer_pd() -> BuiltPitchLaw {
+    build(PitchControllerParameters::default())
+}
+
+fn pid(anti_windup: bool) -> BuiltPitchLaw {
     let parameters = PidParameters {
         anti_windup,
         ..PidParameters::default()
     };
-    PitchController::new(&PitchControllerParameters::Pid(parameters), PLANT).expect("valid")
+    build(PitchControllerParameters::Pid(parameters))
 }
 
 /// 2 % settling time of the ideal O-PD error dynamics (poles p1, p2), from the
@@ -256,9 +283,7 @@ fn observer_pd_settles_at_the_design_settling_time_with_an_ideal_actuator() {
 fn paper_gains_ring_with_the_paper_actuator_and_a_slower_design_does_not() {
     let step = 0.2_f64.to_radians();
     let settle = |parameters: ObserverPdParameters| {
-        let controller =
-            PitchController::new(&PitchControllerParameters::ObserverPd(parameters), PLANT)
-                .expect("valid");
+        let controller = build(PitchControllerParameters::ObserverPd(parameters));
         let system = PitchLoop {
             controller,
             actuator: Actuator::Paper,

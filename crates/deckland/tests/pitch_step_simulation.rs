@@ -14,7 +14,7 @@ use deckland::simulation::{Outcome, Simulation};
 fn step_metrics(mut scenario: Scenario, pitch: PitchControllerParameters) -> StepResponseMetrics {
     scenario.control.pitch = pitch;
     scenario.mission = Mission::pitch_step(2.0, 6.0);
-    let mut recorder = TimeSeriesRecorder::new(1);
+    let mut recorder = TimeSeriesRecorder::every(0.0);
     let summary = Simulation::new(&scenario).unwrap().run(&mut recorder);
     assert_eq!(summary.outcome, Outcome::Completed, "{summary:?}");
     let time: Vec<f64> = recorder.samples.iter().map(|s| s.time_s).collect();

@@ -5,10 +5,9 @@
 use std::path::PathBuf;
 
 use anyhow::{bail, Result};
-use deckland::environment::{
-    EnvironmentParameters, ShipMotionSimulator, WindComponents, WindModel,
-};
+use deckland::environment::{ShipMotionSimulator, WindComponents, WindModel};
 use deckland::random::RandomStreams;
+use deckland::scenario::EnvironmentSection;
 use serde::Serialize;
 
 use crate::output::OutputDir;
@@ -115,7 +114,7 @@ fn check_arguments(args: &EnvironmentArgs) -> Result<()> {
 /// Simulates at dt = 1 ms, recording every 10 ms.
 pub(crate) fn simulate(
     args: &EnvironmentArgs,
-    parameters: &EnvironmentParameters,
+    parameters: &EnvironmentSection,
 ) -> Result<Vec<Row>> {
     let streams = RandomStreams::new(args.seed);
     let mut ship = ShipMotionSimulator::new(parameters.ship, &streams, 0.0)?;
@@ -176,7 +175,7 @@ fn series(rows: &[Row], value: impl Fn(&Row) -> f64) -> Vec<(f64, f64)> {
 pub(crate) fn figures(
     rows: &[Row],
     args: &EnvironmentArgs,
-    parameters: &EnvironmentParameters,
+    parameters: &EnvironmentSection,
 ) -> Vec<(&'static str, Figure)> {
     let where_ = format!("{} m aft of the ship's pitch centre", args.distance_aft_m);
     let landing_point = Figure::new().panel(
@@ -244,7 +243,7 @@ pub(crate) fn figures(
 /// Runs the command.
 pub fn run(args: &EnvironmentArgs) -> Result<()> {
     check_arguments(args)?;
-    let parameters = EnvironmentParameters::default();
+    let parameters = EnvironmentSection::default();
     parameters.validate()?;
     let output = OutputDir::prepare("environment", args.out.as_deref(), args.force)?;
     let rows = simulate(args, &parameters)?;

@@ -37,7 +37,7 @@ pub struct LandArgs {
 }
 
 /// Steps between recorded samples (10 ms at the default 1 ms step).
-const RECORD_INTERVAL_STEPS: usize = 10;
+const RECORD_INTERVAL_S: f64 = 0.01;
 
 /// What `summary.json` and `--json` hold: the run's summary with what was flown.
 #[derive(Debug, Serialize)]
@@ -225,7 +225,7 @@ pub fn fly_and_write(
     json: bool,
 ) -> Result<RunSummary> {
     let simulation = Simulation::new(scenario).context("cannot set up the approach")?;
-    let mut recorder = TimeSeriesRecorder::new(RECORD_INTERVAL_STEPS);
+    let mut recorder = TimeSeriesRecorder::every(RECORD_INTERVAL_S);
     let summary = simulation.run(&mut recorder);
     let report = LandingReport {
         controller,

@@ -119,7 +119,7 @@ pub(crate) fn fly(args: &SinkArgs) -> Result<SinkRun> {
         altitude_m: 600.0,
     };
     let simulation = Simulation::new(&scenario).context("cannot set up the sink-rate run")?;
-    let mut recorder = TimeSeriesRecorder::new(10);
+    let mut recorder = TimeSeriesRecorder::every(0.01);
     let summary = simulation.run(&mut recorder);
     let samples = &recorder.samples;
     let rows: Vec<Row> = samples

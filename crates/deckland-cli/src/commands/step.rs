@@ -24,7 +24,7 @@ use crate::plot::{Figure, Panel};
 const STEP_TIME_S: f64 = 1.0;
 /// Steps between recorded samples: every 2 ms (the slowest-damped closed-loop mode, near
 /// 28.7 rad/s, has a 0.22 s period).
-const RECORD_EVERY_STEPS: usize = 2;
+const RECORD_INTERVAL_S: f64 = 0.002;
 /// Half-width of the settling band as a fraction of the step.
 const SETTLING_BAND_FRACTION: f64 = 0.02;
 /// Largest |--step-deg| accepted (deg): beyond it the elevator is saturated for most of
@@ -171,7 +171,7 @@ pub(crate) fn fly(args: &StepArgs, choice: ControllerChoice) -> Result<Controlle
     let mut scenario = args.conditions.scenario(args.seed);
     scenario.control.pitch = controller_parameters(choice, args.epsilon);
     scenario.mission = Mission::pitch_step(args.step_deg, args.seconds);
-    let mut recorder = TimeSeriesRecorder::new(RECORD_EVERY_STEPS);
+    let mut recorder = TimeSeriesRecorder::every(RECORD_INTERVAL_S);
     let summary = Simulation::new(&scenario)
         .with_context(|| format!("cannot set up the {} step", choice.label()))?
         .run(&mut recorder);

@@ -2,12 +2,12 @@
 
 use deckland::recording::SummaryRecorder;
 use deckland::scenario::Scenario;
-use deckland::simulation::{RunSummary, Simulation, SimulationError};
+use deckland::simulation::{RunSummary, SetupError, Simulation};
 
 /// Flies `base` once per seed, split over two threads; results in seed order, identical
 /// however the work is split (each run is independent and deterministic).
-pub fn fly_seeds(base: &Scenario, seeds: &[u64]) -> Result<Vec<RunSummary>, SimulationError> {
-    let fly = |seed: u64| -> Result<RunSummary, SimulationError> {
+pub fn fly_seeds(base: &Scenario, seeds: &[u64]) -> Result<Vec<RunSummary>, SetupError> {
+    let fly = |seed: u64| -> Result<RunSummary, SetupError> {
         let scenario = Scenario { seed, ..*base };
         Ok(Simulation::new(&scenario)?.run(&mut SummaryRecorder))
     };

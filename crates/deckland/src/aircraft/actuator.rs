@@ -12,7 +12,7 @@
 //!    out is stopped (rate and acceleration outward set to zero), and after each step
 //!    the position is clamped ([`ElevatorActuator::constrain`]).
 
-use super::error::{require_positive, AircraftError};
+use crate::parameters::{Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
 
 /// Elevator actuator parameters, in the units a user reads from a data sheet.
@@ -44,26 +44,29 @@ impl Default for ElevatorActuatorParameters {
 }
 
 impl ElevatorActuatorParameters {
-    /// Checks the dynamics are positive and the limits ordered and finite.
-    pub fn validate(&self) -> Result<(), AircraftError> {
-        require_positive("natural_frequency_rad_s", self.natural_frequency_rad_s)?;
-        require_positive("damping_ratio", self.damping_ratio)?;
-        if !(self.min_deflection_deg.is_finite() && self.min_deflection_deg < 0.0) {
-            return Err(AircraftError::InvalidParameter {
-                field: "min_deflection_deg",
-                value: self.min_deflection_deg,
-                expected: "a finite negative angle (trailing edge up)",
-            });
-        }
-        if !(self.max_deflection_deg.is_finite() && self.max_deflection_deg > 0.0) {
-            return Err(AircraftError::InvalidParameter {
-                field: "max_deflection_deg",
-                value: self.max_deflection_deg,
-                expected: "a finite positive angle (trailing edge down)",
-            });
-        }
+    /// Checks the dynamics and the limits against their physical ranges: natural
+    /// frequency 1–300 rad/s, damping 0.05–5, lower limit in [−60°, 0°), upper limit in
+    /// (0°, 60°], rate limit in (0, 500] °/s.
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        const SECTION: &str = "aircraft.elevator_actuator";
+        Bounds::closed(1.0, 300.0).check(
+            SECTION,
+            "natural_frequency_rad_s",
+            self.natural_frequency_rad_s,
+        )?;
+        Bounds::closed(0.05, 5.0).check(SECTION, "damping_ratio", self.damping_ratio)?;
+        Bounds::closed(-60.0, 0.0).exclusive_max().check(
+            SECTION,
+            "min_deflection_deg",
+            self.min_deflection_deg,
+        )?;
+        Bounds::positive_up_to(60.0).check(
+            SECTION,
+            "max_deflection_deg",
+            self.max_deflection_deg,
+        )?;
         if let Some(rate) = self.rate_limit_degps {
-            require_positive("rate_limit_degps", rate)?;
+            Bounds::positive_up_to(500.0).check(SECTION, "rate_limit_degps", rate)?;
         }
         Ok(())
     }
@@ -93,7 +96,7 @@ pub struct ElevatorActuator {
 
 impl ElevatorActuator {
     /// Builds the actuator after validating its parameters.
-    pub fn new(parameters: ElevatorActuatorParameters) -> Result<Self, AircraftError> {
+    pub fn new(parameters: ElevatorActuatorParameters) -> Result<Self, ParameterError> {
         parameters.validate()?;
         let omega = parameters.natural_frequency_rad_s;
         Ok(Self {

@@ -1,7 +1,7 @@
 //! Aerodynamic configurations: `landing` (flaps and gear down, default) and `clean`
 //! (MODEL.md §2.3).
 
-use super::error::{require_finite, AircraftError};
+use crate::parameters::{Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
 use std::fmt;
 use std::str::FromStr;
@@ -86,29 +86,31 @@ impl AerodynamicConfiguration {
         }
     }
 
-    /// Checks that every increment is finite and the CG shift is within ±0.5 chord.
-    pub fn validate(&self) -> Result<(), AircraftError> {
-        require_finite(
+    /// Checks that every increment is within ±2 (coefficients) and the CG shift within
+    /// ±0.5 chord.
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        const SECTION: &str = "aircraft.configuration";
+        let coefficient = Bounds::closed(-2.0, 2.0);
+        coefficient.check(
+            SECTION,
             "lift_coefficient_increment",
             self.lift_coefficient_increment,
         )?;
-        require_finite(
+        coefficient.check(
+            SECTION,
             "drag_coefficient_increment",
             self.drag_coefficient_increment,
         )?;
-        require_finite(
+        coefficient.check(
+            SECTION,
             "moment_coefficient_increment",
             self.moment_coefficient_increment,
         )?;
-        let d = self.cg_ahead_of_reference_chords;
-        if !(d.is_finite() && d.abs() <= 0.5) {
-            return Err(AircraftError::InvalidParameter {
-                field: "cg_ahead_of_reference_chords",
-                value: d,
-                expected: "a value between -0.5 and 0.5 mean chords",
-            });
-        }
-        Ok(())
+        Bounds::closed(-0.5, 0.5).check(
+            SECTION,
+            "cg_ahead_of_reference_chords",
+            self.cg_ahead_of_reference_chords,
+        )
     }
 }
 

@@ -20,11 +20,11 @@ use super::aerodynamics::aerodynamic_coefficients;
 use super::aerodynamics::aerodynamic_coefficients_trig;
 use super::configuration::AerodynamicConfiguration;
 use super::engine::{EngineParameters, Engines};
-use super::error::AircraftError;
 use super::parameters::AircraftParameters;
 use super::state::AircraftState;
 use crate::environment::Wind;
 use crate::integration::OdeSystem;
+use crate::parameters::ParameterError;
 
 /// Commands to the plant's actuators.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -94,7 +94,7 @@ impl Aircraft {
         configuration: AerodynamicConfiguration,
         engines: EngineParameters,
         actuator: ElevatorActuatorParameters,
-    ) -> Result<Self, AircraftError> {
+    ) -> Result<Self, ParameterError> {
         parameters.validate()?;
         configuration.validate()?;
         Ok(Self {

@@ -1,6 +1,6 @@
 //! Twin F404-GE-400 engines with first-order thrust lag (MODEL.md §2.5, paper §3.6).
 
-use super::error::{require_positive, AircraftError};
+use crate::parameters::{Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
 
 /// Engine parameters; thrust acts along body x through the CG.
@@ -26,9 +26,14 @@ impl Default for EngineParameters {
 
 impl EngineParameters {
     /// Checks that the thrust and the time constant are finite and positive.
-    pub fn validate(&self) -> Result<(), AircraftError> {
-        require_positive("max_thrust_per_engine_n", self.max_thrust_per_engine_n)?;
-        require_positive("time_constant_s", self.time_constant_s)
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        const SECTION: &str = "aircraft.engines";
+        Bounds::positive_up_to(1e6).check(
+            SECTION,
+            "max_thrust_per_engine_n",
+            self.max_thrust_per_engine_n,
+        )?;
+        Bounds::closed(0.05, 30.0).check(SECTION, "time_constant_s", self.time_constant_s)
     }
 }
 
@@ -44,7 +49,7 @@ impl Engines {
     pub const COUNT: usize = 2;
 
     /// Builds the engine model after validating its parameters.
-    pub fn new(parameters: EngineParameters) -> Result<Self, AircraftError> {
+    pub fn new(parameters: EngineParameters) -> Result<Self, ParameterError> {
         parameters.validate()?;
         Ok(Self {
             parameters,

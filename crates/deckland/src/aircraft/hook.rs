@@ -1,7 +1,7 @@
 //! The arresting hook's position (MODEL.md §2.7).
 
-use super::error::{require_finite, AircraftError};
 use super::state::AircraftState;
+use crate::parameters::{Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
 
 /// Where the hook point sits relative to the CG, in body axes.
@@ -25,9 +25,10 @@ impl Default for HookGeometry {
 
 impl HookGeometry {
     /// Checks that both offsets are finite.
-    pub fn validate(&self) -> Result<(), AircraftError> {
-        require_finite("aft_of_cg_m", self.aft_of_cg_m)?;
-        require_finite("below_cg_m", self.below_cg_m)
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        const SECTION: &str = "aircraft.hook";
+        Bounds::closed(-20.0, 20.0).check(SECTION, "aft_of_cg_m", self.aft_of_cg_m)?;
+        Bounds::closed(-5.0, 5.0).check(SECTION, "below_cg_m", self.below_cg_m)
     }
 
     /// Earth position (x, h) of the hook point (m): body offset (−aft, +below) rotated by θ.

@@ -10,10 +10,11 @@ mod aerodynamics;
 mod configuration;
 mod dynamics;
 mod engine;
-mod error;
 mod hook;
+mod linearize;
 mod parameters;
 mod state;
+mod trim;
 
 pub use crate::environment::Wind;
 pub use actuator::{ActuatorLimit, ElevatorActuator, ElevatorActuatorParameters};
@@ -24,7 +25,8 @@ pub use aerodynamics::{
 pub use configuration::{AerodynamicConfiguration, ConfigurationName};
 pub use dynamics::{AirData, Aircraft, AircraftCommands, AirframeInputs, OpenLoopAircraft};
 pub use engine::{EngineParameters, Engines};
-pub use error::AircraftError;
 pub use hook::HookGeometry;
+pub use linearize::{linearize, LinearModel, INPUT_NAMES, INPUT_UNITS, STATE_NAMES, STATE_UNITS};
 pub use parameters::AircraftParameters;
 pub use state::AircraftState;
+pub use trim::{trim, TrimError, TrimPoint, TrimRequest, TrimResiduals};

@@ -1,6 +1,6 @@
 //! Mass, inertia, geometry and atmosphere constants (paper Table 2, MODEL.md §2.1).
 
-use super::error::{require_positive, AircraftError};
+use crate::parameters::{Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
 
 /// Mass properties, reference geometry and the (constant) atmosphere of the F/A-18.
@@ -39,12 +39,13 @@ impl Default for AircraftParameters {
 
 impl AircraftParameters {
     /// Checks that every constant is finite and positive.
-    pub fn validate(&self) -> Result<(), AircraftError> {
-        require_positive("mass_kg", self.mass_kg)?;
-        require_positive("air_density_kg_m3", self.air_density_kg_m3)?;
-        require_positive("gravity_mps2", self.gravity_mps2)?;
-        require_positive("wing_area_m2", self.wing_area_m2)?;
-        require_positive("mean_chord_m", self.mean_chord_m)?;
-        require_positive("pitch_inertia_kg_m2", self.pitch_inertia_kg_m2)
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        const SECTION: &str = "aircraft.parameters";
+        Bounds::closed(1000.0, 100_000.0).check(SECTION, "mass_kg", self.mass_kg)?;
+        Bounds::closed(0.01, 2.0).check(SECTION, "air_density_kg_m3", self.air_density_kg_m3)?;
+        Bounds::closed(1.0, 30.0).check(SECTION, "gravity_mps2", self.gravity_mps2)?;
+        Bounds::closed(1.0, 1000.0).check(SECTION, "wing_area_m2", self.wing_area_m2)?;
+        Bounds::closed(0.1, 50.0).check(SECTION, "mean_chord_m", self.mean_chord_m)?;
+        Bounds::closed(1000.0, 1e8).check(SECTION, "pitch_inertia_kg_m2", self.pitch_inertia_kg_m2)
     }
 }

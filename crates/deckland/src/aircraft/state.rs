@@ -30,6 +30,41 @@ impl AircraftState {
     /// Number of scalar states.
     pub const DIMENSION: usize = 10;
 
+    /// Names of the states, in the order of [`AircraftState::to_array`].
+    pub const NAMES: [&'static str; 10] = [
+        "u_mps",
+        "w_mps",
+        "q_radps",
+        "theta_rad",
+        "x_m",
+        "h_m",
+        "engine_1_thrust_n",
+        "engine_2_thrust_n",
+        "elevator_rad",
+        "elevator_rate_radps",
+    ];
+
+    /// Position of the elevator's position δe in [`AircraftState::to_array`].
+    pub const ELEVATOR_INDEX: usize = 8;
+    /// Position of the elevator's rate δ̇e in [`AircraftState::to_array`].
+    pub const ELEVATOR_RATE_INDEX: usize = 9;
+
+    /// The state from a slice of at least 10 numbers (as [`AircraftState::from_array`]).
+    #[inline(always)]
+    pub fn from_slice(x: &[f64]) -> Self {
+        Self {
+            u_mps: x[0],
+            w_mps: x[1],
+            q_radps: x[2],
+            theta_rad: x[3],
+            x_m: x[4],
+            h_m: x[5],
+            engine_thrust_n: [x[6], x[7]],
+            elevator_rad: x[8],
+            elevator_rate_radps: x[9],
+        }
+    }
+
     /// The state as an array for the integrator (order: u, w, q, θ, x, h, T₁, T₂, δe, δ̇e).
     #[inline]
     pub fn to_array(&self) -> [f64; Self::DIMENSION] {

@@ -24,8 +24,7 @@
 
 use crate::control::pitch::PitchControllerParameters;
 use crate::scenario::Scenario;
-use crate::simulation::setup::build;
-use crate::simulation::{ClosedLoop, LoopBreak, SimulationError, LOOP_DIMENSION};
+use crate::simulation::{ClosedLoop, HeldInputs, LoopBreak, LoopCut, SetupError, Simulation};
 use nalgebra::{Complex, DMatrix, DVector};
 
 /// Margins of one loop of the cascade.
@@ -59,19 +58,25 @@ struct CutLoop {
     d: f64,
 }
 
-fn linearise(system: &ClosedLoop, x0: &[f64; LOOP_DIMENSION], cut: LoopBreak, u0: f64) -> CutLoop {
-    let evaluate = |x: &[f64; LOOP_DIMENSION], u: f64| {
-        let mut cut_system = system.clone();
-        cut_system.loop_break = Some((cut, u));
-        let (derivative, signals) = cut_system.evaluate(0.0, x);
-        (derivative, signals.loop_break_output)
+fn linearise(
+    system: &ClosedLoop,
+    held: &HeldInputs,
+    x0: &[f64],
+    cut: LoopBreak,
+    u0: f64,
+) -> CutLoop {
+    let n = x0.len();
+    let mut rate = vec![0.0; n];
+    let mut evaluate = |x: &[f64], u: f64| {
+        let taps = LoopCut::new(cut, u);
+        system.evaluate(0.0, x, held, &taps, &mut rate);
+        (rate.clone(), taps.computed())
     };
-    let n = LOOP_DIMENSION;
     let mut a = DMatrix::zeros(n, n);
     let mut c = DVector::zeros(n);
     for j in 0..n {
         let h = 1e-6 * x0[j].abs().max(1.0);
-        let (mut plus, mut minus) = (*x0, *x0);
+        let (mut plus, mut minus) = (x0.to_vec(), x0.to_vec());
         plus[j] += h;
         minus[j] -= h;
         let (fp, yp) = evaluate(&plus, u0);
@@ -202,15 +207,17 @@ fn margins_from_response(cut: LoopBreak, omegas: &[f64], gains: &[Complex<f64>])
 
 /// The margins of the pitch, sink-rate, guidance and speed loops of `scenario`'s cascade,
 /// linearised at the start of an approach in ideal conditions.
-pub fn cascade_margins(scenario: &Scenario) -> Result<Vec<LoopMargins>, SimulationError> {
+pub fn cascade_margins(scenario: &Scenario) -> Result<Vec<LoopMargins>, SetupError> {
     let mut linear = scenario.ideal();
     linear.mission = crate::scenario::Mission::Approach;
     if let PitchControllerParameters::ObserverPd(p) = &mut linear.control.pitch {
         p.observer.alpha1 = 1.0 - 1e-9;
     }
-    let setup = build(&linear)?;
-    let x0 = setup.initial.to_array();
-    let (_, nominal) = setup.system.evaluate(0.0, &x0);
+    let mut simulation = Simulation::new(&linear)?;
+    let held = simulation.hold_inputs_now();
+    let system = simulation.system();
+    let x0 = simulation.state();
+    let nominal = simulation.signals();
     let omegas: Vec<f64> = (0..=1200)
         .map(|k| 10f64.powf(-3.0 + 5.0 * k as f64 / 1200.0))
         .collect();
@@ -221,7 +228,7 @@ pub fn cascade_margins(scenario: &Scenario) -> Result<Vec<LoopMargins>, Simulati
         (LoopBreak::ClimbRateCommand, nominal.climb_rate_command_mps),
         (LoopBreak::ThrustCommand, nominal.thrust_command_n),
     ] {
-        let model = linearise(&setup.system, &x0, cut, u0);
+        let model = linearise(system, &held, x0, cut, u0);
         let gains: Vec<Complex<f64>> = omegas.iter().map(|&w| model.loop_gain(w)).collect();
         let mut margins = margins_from_response(cut, &omegas, &gains);
         margins.closed_loop_max_real_part = model.closed_loop_max_real_part();

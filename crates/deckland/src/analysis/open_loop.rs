@@ -5,9 +5,7 @@
 //! (no actuator or engine lag), still air, states (V_T, θ, α, q). Both are integrated by
 //! the same fixed-step RK4 from the trim point, with the input step applied at t = 0.
 
-use super::linearize::{linearize, LinearModel};
-use super::trim::TrimPoint;
-use crate::aircraft::{Aircraft, AirframeInputs, Wind};
+use crate::aircraft::{linearize, Aircraft, AirframeInputs, LinearModel, TrimPoint, Wind};
 use crate::integration::{rk4_step, OdeSystem};
 use nalgebra::{SMatrix, SVector};
 use thiserror::Error;

@@ -29,8 +29,8 @@
 //! white-noise-driven state: continuous but rough. Fed forward unfiltered it reaches the
 //! pitch command as noise and drove the cascade into saturation and divergence.
 
-use super::pitch::ControlError;
 use crate::environment::{EarthPoint, EarthVelocity};
+use crate::parameters::{Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
 
 /// How the landing point is predicted for deck-motion compensation.
@@ -79,50 +79,27 @@ impl Default for FlightPathParameters {
 }
 
 impl FlightPathParameters {
-    /// Checks the glide slope is in (0°, 10°] and the times non-negative (blend positive).
-    pub fn validate(&self) -> Result<(), ControlError> {
-        if !(self.glide_slope_deg.is_finite()
-            && self.glide_slope_deg > 0.0
-            && self.glide_slope_deg <= 10.0)
-        {
-            return Err(ControlError::OutOfRange {
-                field: "flight_path.glide_slope_deg",
-                value: self.glide_slope_deg,
-                expected: "a glide slope in (0, 10] degrees",
-            });
-        }
-        for (field, value) in [
-            (
-                "flight_path.compensation_window_s",
-                self.compensation_window_s,
-            ),
-            ("flight_path.deck_motion_lead_s", self.deck_motion_lead_s),
-        ] {
-            if !(value.is_finite() && value >= 0.0) {
-                return Err(ControlError::OutOfRange {
-                    field,
-                    value,
-                    expected: "a finite time >= 0 s",
-                });
-            }
-        }
-        if !(self.deck_filter_frequency_radps.is_finite()
-            && self.deck_filter_frequency_radps > 0.0
-            && self.deck_filter_frequency_radps <= 100.0)
-        {
-            return Err(ControlError::OutOfRange {
-                field: "flight_path.deck_filter_frequency_radps",
-                value: self.deck_filter_frequency_radps,
-                expected: "a frequency in (0, 100] rad/s",
-            });
-        }
-        if !(self.compensation_blend_s.is_finite() && self.compensation_blend_s > 0.0) {
-            return Err(ControlError::NonPositive {
-                field: "flight_path.compensation_blend_s",
-                value: self.compensation_blend_s,
-            });
-        }
-        Ok(())
+    /// Checks the glide slope is in (0°, 10°], the compensation window in [0, 60] s, the
+    /// blend in (0, 30] s, the lead in [0, 10] s and the filter in (0, 100] rad/s.
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        const SECTION: &str = "control.flight_path";
+        Bounds::positive_up_to(10.0).check(SECTION, "glide_slope_deg", self.glide_slope_deg)?;
+        Bounds::closed(0.0, 60.0).check(
+            SECTION,
+            "compensation_window_s",
+            self.compensation_window_s,
+        )?;
+        Bounds::positive_up_to(30.0).check(
+            SECTION,
+            "compensation_blend_s",
+            self.compensation_blend_s,
+        )?;
+        Bounds::closed(0.0, 10.0).check(SECTION, "deck_motion_lead_s", self.deck_motion_lead_s)?;
+        Bounds::positive_up_to(100.0).check(
+            SECTION,
+            "deck_filter_frequency_radps",
+            self.deck_filter_frequency_radps,
+        )
     }
 }
 
@@ -187,7 +164,7 @@ pub struct FlightPathGenerator {
 
 impl FlightPathGenerator {
     /// Builds the generator after validating its parameters.
-    pub fn new(parameters: FlightPathParameters) -> Result<Self, ControlError> {
+    pub fn new(parameters: FlightPathParameters) -> Result<Self, ParameterError> {
         parameters.validate()?;
         Ok(Self {
             parameters,

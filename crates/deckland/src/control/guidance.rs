@@ -6,7 +6,7 @@
 //! ±`climb_rate_authority_mps` with conditional-integration anti-windup.
 
 use super::loop_controller::{LoopController, LoopGains};
-use super::pitch::ControlError;
+use crate::parameters::{Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
 
 /// Gains and limits of the guidance loop.
@@ -48,23 +48,17 @@ impl GuidanceParameters {
     }
 
     /// Checks gains are finite and the authority positive.
-    pub fn validate(&self) -> Result<(), ControlError> {
-        for (field, value) in [
-            ("guidance.proportional_per_s", self.proportional_per_s),
-            ("guidance.integral_per_s2", self.integral_per_s2),
-            ("guidance.derivative", self.derivative),
-        ] {
-            if !value.is_finite() {
-                return Err(ControlError::NonFinite { field, value });
-            }
-        }
-        if !(self.climb_rate_authority_mps.is_finite() && self.climb_rate_authority_mps > 0.0) {
-            return Err(ControlError::NonPositive {
-                field: "guidance.climb_rate_authority_mps",
-                value: self.climb_rate_authority_mps,
-            });
-        }
-        Ok(())
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        const SECTION: &str = "control.guidance";
+        let gain = Bounds::closed(-10.0, 10.0);
+        gain.check(SECTION, "proportional_per_s", self.proportional_per_s)?;
+        gain.check(SECTION, "integral_per_s2", self.integral_per_s2)?;
+        gain.check(SECTION, "derivative", self.derivative)?;
+        Bounds::positive_up_to(30.0).check(
+            SECTION,
+            "climb_rate_authority_mps",
+            self.climb_rate_authority_mps,
+        )
     }
 
     /// The loop as a limited PID controller (output: climb-rate correction in m/s).

@@ -3,6 +3,7 @@
 //! Cascade: flight-path generator → guidance → sink-rate controller → [`pitch`]
 //! controller → elevator; in parallel the speed controller → thrust.
 
+mod command_ramp;
 mod flight_path;
 mod guidance;
 mod loop_controller;
@@ -10,12 +11,12 @@ pub mod pitch;
 mod sink_rate;
 mod speed;
 
+pub use command_ramp::CommandRamp;
 pub use flight_path::{
     DeckMotionFilter, DeckMotionPredictor, DeckReference, FlightPathGenerator,
     FlightPathParameters, PathReference,
 };
 pub use guidance::GuidanceParameters;
 pub use loop_controller::{LoopController, LoopGains};
-pub use pitch::ControlError;
 pub use sink_rate::SinkRateControllerParameters;
 pub use speed::{SpeedController, SpeedControllerParameters};

@@ -6,7 +6,7 @@
 //! anti-windup.
 
 use super::loop_controller::{LoopController, LoopGains};
-use super::pitch::ControlError;
+use crate::parameters::{Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
 
 /// Gains and limits of the sink-rate loop.
@@ -51,25 +51,16 @@ impl SinkRateControllerParameters {
     }
 
     /// Checks gains are finite and non-negative and the authority positive.
-    pub fn validate(&self) -> Result<(), ControlError> {
-        for (field, value) in [
-            (
-                "sink_rate.proportional_rad_per_mps",
-                self.proportional_rad_per_mps,
-            ),
-            ("sink_rate.integral_rad_per_m", self.integral_rad_per_m),
-        ] {
-            if !value.is_finite() {
-                return Err(ControlError::NonFinite { field, value });
-            }
-        }
-        if !(self.pitch_authority_deg.is_finite() && self.pitch_authority_deg > 0.0) {
-            return Err(ControlError::NonPositive {
-                field: "sink_rate.pitch_authority_deg",
-                value: self.pitch_authority_deg,
-            });
-        }
-        Ok(())
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        const SECTION: &str = "control.sink_rate";
+        let gain = Bounds::closed(-10.0, 10.0);
+        gain.check(
+            SECTION,
+            "proportional_rad_per_mps",
+            self.proportional_rad_per_mps,
+        )?;
+        gain.check(SECTION, "integral_rad_per_m", self.integral_rad_per_m)?;
+        Bounds::positive_up_to(30.0).check(SECTION, "pitch_authority_deg", self.pitch_authority_deg)
     }
 
     /// The loop as a limited PI controller (output: pitch correction in rad).

@@ -8,7 +8,7 @@
 //! below the engine's 1/0.625 = 1.6 rad/s, so the lag costs little phase (about 9°).
 
 use super::loop_controller::{LoopController, LoopGains};
-use super::pitch::ControlError;
+use crate::parameters::{Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
 
 /// What a user chooses for the speed loop.
@@ -32,19 +32,14 @@ impl Default for SpeedControllerParameters {
 
 impl SpeedControllerParameters {
     /// Checks both design values are finite and positive.
-    pub fn validate(&self) -> Result<(), ControlError> {
-        for (field, value) in [
-            (
-                "speed.natural_frequency_radps",
-                self.natural_frequency_radps,
-            ),
-            ("speed.damping_ratio", self.damping_ratio),
-        ] {
-            if !(value.is_finite() && value > 0.0) {
-                return Err(ControlError::NonPositive { field, value });
-            }
-        }
-        Ok(())
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        const SECTION: &str = "control.speed";
+        Bounds::positive_up_to(10.0).check(
+            SECTION,
+            "natural_frequency_radps",
+            self.natural_frequency_radps,
+        )?;
+        Bounds::closed(0.1, 5.0).check(SECTION, "damping_ratio", self.damping_ratio)
     }
 
     /// Proportional gain K_PV = 2ζω (1/s).

@@ -15,7 +15,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::error::{Bounds, EnvironmentError};
+use crate::parameters::{Bounds, ParameterError};
 
 /// Where the ship is: the inputs of Eq. 17–18 at one instant.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -97,27 +97,35 @@ impl Default for DeckGeometry {
 impl DeckGeometry {
     /// Checks every field: lengths in [0, 400] m (ramp distance > 0), deck height in
     /// [0, 100] m, wires finite, strictly increasing and forward of the ramp.
-    pub fn validate(&self) -> Result<(), EnvironmentError> {
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        const SECTION: &str = "environment.deck";
         Bounds::closed(0.0, 400.0).check(
-            "deck.landing_point_aft_of_pitch_centre_m",
+            SECTION,
+            "landing_point_aft_of_pitch_centre_m",
             self.landing_point_aft_of_pitch_centre_m,
         )?;
-        let ramp_bounds = Bounds {
-            min_inclusive: false,
-            ..Bounds::closed(0.0, 400.0)
-        };
-        ramp_bounds.check("deck.ramp_aft_of_aim_point_m", self.ramp_aft_of_aim_point_m)?;
-        Bounds::closed(0.0, 100.0).check("deck.deck_height_m", self.deck_height_m)?;
+        let ramp_bounds = Bounds::positive_up_to(400.0);
+        ramp_bounds.check(
+            SECTION,
+            "ramp_aft_of_aim_point_m",
+            self.ramp_aft_of_aim_point_m,
+        )?;
+        Bounds::closed(0.0, 100.0).check(SECTION, "deck_height_m", self.deck_height_m)?;
         for &position in &self.wire_positions_m {
-            Bounds::closed(-400.0, 400.0).check("deck.wire_positions_m", position)?;
+            Bounds::closed(-400.0, 400.0).check(SECTION, "wire_positions_m", position)?;
         }
         let ramp_m = -self.ramp_aft_of_aim_point_m;
         let ordered = self.wire_positions_m.windows(2).all(|w| w[0] < w[1]);
         if !ordered || self.wire_positions_m[0] <= ramp_m {
-            return Err(EnvironmentError::WireOrder {
-                positions_m: self.wire_positions_m.to_vec(),
-                ramp_m,
-            });
+            return Err(ParameterError::new(
+                SECTION,
+                "wire_positions_m",
+                self.wire_positions_m,
+                format_args!(
+                    "positions increasing strictly from aft to forward, every wire forward \
+                     of the ramp at {ramp_m} m"
+                ),
+            ));
         }
         Ok(())
     }
@@ -293,12 +301,12 @@ mod tests {
         deck.wire_positions_m = [-18.0, 6.0, -6.0, 18.0];
         assert!(matches!(
             deck.validate(),
-            Err(EnvironmentError::WireOrder { .. })
+            Err(ParameterError { ref path, .. }) if path == "environment.deck.wire_positions_m"
         ));
         deck.wire_positions_m = [-61.0, -6.0, 6.0, 18.0];
         assert!(matches!(
             deck.validate(),
-            Err(EnvironmentError::WireOrder { .. })
+            Err(ParameterError { ref path, .. }) if path == "environment.deck.wire_positions_m"
         ));
     }
 }

@@ -8,7 +8,6 @@
 //! pitch centre (positive aft).
 
 mod deck;
-mod error;
 pub mod lyapunov;
 mod ship;
 mod ship_prediction;
@@ -17,7 +16,6 @@ mod turbulence;
 mod wind;
 
 pub use deck::{DeckGeometry, EarthPoint, EarthVelocity, ShipPose, ShipPoseRate};
-pub use error::{Bounds, EnvironmentError};
 pub use ship::{
     heave_unit_intensity_variance, pitch_unit_intensity_variance, unit_intensity_state_covariance,
     ShipMotion, ShipMotionOutputs, ShipMotionParameters, ShipMotionState, ShipNoise,
@@ -30,35 +28,6 @@ pub use wind::{
     mean_wind, periodic_wake, steady_wake, Wind, WindComponents, WindModel, WindParameters,
     STEADY_WAKE_EXTENT_M,
 };
-
-use serde::{Deserialize, Serialize};
-
-use crate::sensors::PitchNoiseParameters;
-
-/// Every environment parameter of a scenario (MODEL.md §3; deck geometry §2.7).
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct EnvironmentParameters {
-    /// Ship heave and pitch (MODEL.md §3.1).
-    pub ship: ShipMotionParameters,
-    /// Deck geometry (MODEL.md §2.7).
-    pub deck: DeckGeometry,
-    /// Wind and air wake (MODEL.md §3.2).
-    pub wind: WindParameters,
-    /// Pitch-attitude measurement noise (MODEL.md §3.3).
-    pub pitch_noise: PitchNoiseParameters,
-}
-
-impl EnvironmentParameters {
-    /// Checks every field of every part; the error names the first bad field.
-    pub fn validate(&self) -> Result<(), EnvironmentError> {
-        self.ship.validate()?;
-        self.deck.validate()?;
-        self.wind.validate()?;
-        self.pitch_noise.validate()?;
-        Ok(())
-    }
-}
 
 #[cfg(test)]
 mod tests;

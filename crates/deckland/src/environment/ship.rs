@@ -17,8 +17,8 @@ use nalgebra::DMatrix;
 use serde::{Deserialize, Serialize};
 
 use super::deck::{ShipPose, ShipPoseRate};
-use super::error::{Bounds, EnvironmentError};
 use super::lyapunov::stationary_covariance;
+use crate::parameters::{Bounds, ParameterError};
 use crate::random::NoiseStream;
 
 /// Coefficients (d₀, d₁, d₂, d₃) of D(s) = s⁴ + d₃s³ + d₂s² + d₁s + d₀ (paper Eq. 15–16).
@@ -55,10 +55,11 @@ impl Default for ShipMotionParameters {
 
 impl ShipMotionParameters {
     /// Checks every field: RMS values in [0, 50] m and [0, 30]°, speed in [0, 30] m/s.
-    pub fn validate(&self) -> Result<(), EnvironmentError> {
-        Bounds::closed(0.0, 50.0).check("ship.heave_rms_m", self.heave_rms_m)?;
-        Bounds::closed(0.0, 30.0).check("ship.pitch_rms_deg", self.pitch_rms_deg)?;
-        Bounds::closed(0.0, 30.0).check("ship.forward_speed_mps", self.forward_speed_mps)?;
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        const SECTION: &str = "environment.ship";
+        Bounds::closed(0.0, 50.0).check(SECTION, "heave_rms_m", self.heave_rms_m)?;
+        Bounds::closed(0.0, 30.0).check(SECTION, "pitch_rms_deg", self.pitch_rms_deg)?;
+        Bounds::closed(0.0, 30.0).check(SECTION, "forward_speed_mps", self.forward_speed_mps)?;
         Ok(())
     }
 }
@@ -75,6 +76,27 @@ pub struct ShipMotionState {
 impl ShipMotionState {
     /// Number of scalar states.
     pub const DIMENSION: usize = 8;
+
+    /// Names of the states, in the order of [`ShipMotionState::to_array`].
+    pub const NAMES: [&'static str; 8] = [
+        "heave_filter_z",
+        "heave_filter_z_rate",
+        "heave_filter_z_acceleration",
+        "heave_filter_z_jerk",
+        "pitch_filter_z",
+        "pitch_filter_z_rate",
+        "pitch_filter_z_acceleration",
+        "pitch_filter_z_jerk",
+    ];
+
+    /// The state from a slice of at least 8 numbers (as [`ShipMotionState::from_array`]).
+    #[inline(always)]
+    pub fn from_slice(x: &[f64]) -> Self {
+        Self {
+            heave_filter: [x[0], x[1], x[2], x[3]],
+            pitch_filter: [x[4], x[5], x[6], x[7]],
+        }
+    }
 
     /// The state as an array for the integrator: heave filter first, then pitch filter.
     #[inline]
@@ -144,46 +166,44 @@ fn canonical_form() -> (DMatrix<f64>, DMatrix<f64>) {
 }
 
 /// The stationary covariance P of one canonical filter state for unit-intensity white
-/// noise, A P + P Aᵀ + B Bᵀ = 0 (MODEL.md §3.1).
-pub fn unit_intensity_state_covariance() -> Result<[[f64; 4]; 4], EnvironmentError> {
+/// noise, A P + P Aᵀ + B Bᵀ = 0 (MODEL.md §3.1). The filter is fixed and stable (its
+/// poles are −1, −1 and −0.04 ± 0.398i), so the solution always exists.
+pub fn unit_intensity_state_covariance() -> [[f64; 4]; 4] {
     let (a, b) = canonical_form();
-    let p = stationary_covariance(&a, &b).ok_or(EnvironmentError::NoStationaryCovariance {
-        filter: "ship motion",
-    })?;
+    let p = stationary_covariance(&a, &b)
+        .expect("the fixed shaping filter (s+1)²(s²+0.08s+0.16) is stable");
     let mut out = [[0.0; 4]; 4];
     for (i, row) in out.iter_mut().enumerate() {
         for (j, value) in row.iter_mut().enumerate() {
             *value = p[(i, j)];
         }
     }
-    Ok(out)
+    out
 }
 
 /// Stationary variance of heave for unit-intensity noise, 1.21²·P₁₁ (m²); MODEL.md §3.1
 /// gives 43.62.
-pub fn heave_unit_intensity_variance() -> Result<f64, EnvironmentError> {
-    Ok(HEAVE_FILTER_GAIN.powi(2) * unit_intensity_state_covariance()?[0][0])
+pub fn heave_unit_intensity_variance() -> f64 {
+    HEAVE_FILTER_GAIN.powi(2) * unit_intensity_state_covariance()[0][0]
 }
 
 /// Stationary variance of pitch for unit-intensity noise, 0.773²·P₃₃ (rad²); MODEL.md
 /// §3.1 gives 0.4858.
-pub fn pitch_unit_intensity_variance() -> Result<f64, EnvironmentError> {
-    Ok(PITCH_FILTER_GAIN.powi(2) * unit_intensity_state_covariance()?[2][2])
+pub fn pitch_unit_intensity_variance() -> f64 {
+    PITCH_FILTER_GAIN.powi(2) * unit_intensity_state_covariance()[2][2]
 }
 
 impl ShipMotion {
     /// The model for these parameters; validates them and solves for the intensities.
-    pub fn new(parameters: ShipMotionParameters) -> Result<Self, EnvironmentError> {
+    pub fn new(parameters: ShipMotionParameters) -> Result<Self, ParameterError> {
         parameters.validate()?;
-        let p = unit_intensity_state_covariance()?;
+        let p = unit_intensity_state_covariance();
         let heave_variance = HEAVE_FILTER_GAIN.powi(2) * p[0][0];
         let pitch_variance = PITCH_FILTER_GAIN.powi(2) * p[2][2];
         let matrix = DMatrix::from_fn(4, 4, |i, j| p[i][j]);
         let cholesky = matrix
             .cholesky()
-            .ok_or(EnvironmentError::NoStationaryCovariance {
-                filter: "ship motion",
-            })?;
+            .expect("the stationary covariance of a stable filter is positive definite");
         let l = cholesky.l();
         let covariance_factor = std::array::from_fn(|i| std::array::from_fn(|j| l[(i, j)]));
         Ok(Self {

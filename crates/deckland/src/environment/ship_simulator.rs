@@ -3,11 +3,11 @@
 //! its own larger system.
 
 use super::deck::{ShipPose, ShipPoseRate};
-use super::error::EnvironmentError;
 use super::ship::{
     ShipMotion, ShipMotionOutputs, ShipMotionParameters, ShipMotionState, ShipNoise,
 };
 use crate::integration::{rk4_step, OdeSystem};
+use crate::parameters::ParameterError;
 use crate::random::{stream_names, NoiseStream, RandomStreams};
 
 /// The shaping filters under one step's held noise, as the integrator sees them.
@@ -42,7 +42,7 @@ impl ShipMotionSimulator {
         parameters: ShipMotionParameters,
         streams: &RandomStreams,
         initial_pitch_centre_x_m: f64,
-    ) -> Result<Self, EnvironmentError> {
+    ) -> Result<Self, ParameterError> {
         let model = ShipMotion::new(parameters)?;
         let mut heave_stream = streams.stream(stream_names::SHIP_HEAVE);
         let mut pitch_stream = streams.stream(stream_names::SHIP_PITCH);

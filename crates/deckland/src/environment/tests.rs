@@ -3,14 +3,13 @@
 
 use super::*;
 use crate::random::RandomStreams;
-use crate::sensors::PitchSensor;
 
 #[test]
 fn lyapunov_variances_match_model_md() {
     // MODEL.md §3.1: 43.62 m² (heave) and 0.4858 (pitch) for unit-intensity noise;
     // numpy's solve of the vectorised equation gives 43.6226 and 0.485764.
-    let heave = heave_unit_intensity_variance().expect("stable filter");
-    let pitch = pitch_unit_intensity_variance().expect("stable filter");
+    let heave = heave_unit_intensity_variance();
+    let pitch = pitch_unit_intensity_variance();
     assert!((heave - 43.6226).abs() < 1e-3, "heave {heave}");
     assert!((pitch - 0.485_764).abs() < 1e-5, "pitch {pitch}");
 }
@@ -148,42 +147,6 @@ fn wind_model_sums_switched_components() {
     assert_eq!(still.wind(5.0, 400.0), Wind::default());
 }
 
-/// Ship heave and measured pitch from a short run, with turbulence on or off.
-fn ship_and_sensor_samples(seed: u64, turbulence: bool) -> (Vec<f64>, Vec<f64>) {
-    let streams = RandomStreams::new(seed);
-    let environment = EnvironmentParameters {
-        wind: WindParameters {
-            turbulence,
-            ..WindParameters::default()
-        },
-        ..EnvironmentParameters::default()
-    };
-    let mut ship = ShipMotionSimulator::new(environment.ship, &streams, 0.0).expect("valid");
-    let mut wind = WindModel::new(environment.wind, 0.0, &streams).expect("valid");
-    let mut sensor = PitchSensor::new(environment.pitch_noise, &streams).expect("valid");
-    let (mut heave, mut measured) = (Vec::new(), Vec::new());
-    for k in 0..500 {
-        let t = k as f64 * 0.01;
-        wind.advance(0.01, 69.1);
-        ship.step(0.01);
-        heave.push(ship.outputs().heave_m);
-        measured.push(sensor.measure(t, 0.0));
-    }
-    (heave, measured)
-}
-
-#[test]
-fn switching_turbulence_off_leaves_ship_and_sensor_samples_unchanged() {
-    assert_eq!(
-        ship_and_sensor_samples(17, true),
-        ship_and_sensor_samples(17, false)
-    );
-    assert_ne!(
-        ship_and_sensor_samples(17, true).0,
-        ship_and_sensor_samples(18, true).0
-    );
-}
-
 #[test]
 fn turbulence_is_reproducible_for_a_seed() {
     let run = |seed: u64| {
@@ -201,76 +164,6 @@ fn turbulence_is_reproducible_for_a_seed() {
 }
 
 #[test]
-fn bad_parameters_are_rejected_naming_the_field() {
-    type Edit = fn(&mut EnvironmentParameters);
-    let cases: &[(&str, Edit)] = &[
-        ("ship.heave_rms_m", |p| p.ship.heave_rms_m = -1.0),
-        ("ship.heave_rms_m", |p| p.ship.heave_rms_m = f64::NAN),
-        ("ship.pitch_rms_deg", |p| p.ship.pitch_rms_deg = -0.5),
-        ("ship.pitch_rms_deg", |p| {
-            p.ship.pitch_rms_deg = f64::INFINITY
-        }),
-        ("ship.forward_speed_mps", |p| {
-            p.ship.forward_speed_mps = f64::NAN
-        }),
-        ("deck.landing_point_aft_of_pitch_centre_m", |p| {
-            p.deck.landing_point_aft_of_pitch_centre_m = f64::NEG_INFINITY
-        }),
-        ("deck.ramp_aft_of_aim_point_m", |p| {
-            p.deck.ramp_aft_of_aim_point_m = 0.0
-        }),
-        ("deck.deck_height_m", |p| p.deck.deck_height_m = -3.0),
-        ("deck.wire_positions_m", |p| {
-            p.deck.wire_positions_m[2] = f64::NAN
-        }),
-        ("wind.wind_over_deck_mps", |p| {
-            p.wind.wind_over_deck_mps = -10.0
-        }),
-        ("wind.turbulence_sigma_u_mps", |p| {
-            p.wind.turbulence_sigma_u_mps = -0.1
-        }),
-        ("wind.turbulence_sigma_w_mps", |p| {
-            p.wind.turbulence_sigma_w_mps = f64::NAN
-        }),
-        ("wind.turbulence_scale_m", |p| {
-            p.wind.turbulence_scale_m = 0.0
-        }),
-        ("wind.turbulence_scale_m", |p| {
-            p.wind.turbulence_scale_m = -30.48
-        }),
-        ("wind.periodic_wake_ship_pitch_rad", |p| {
-            p.wind.periodic_wake_ship_pitch_rad = f64::NAN
-        }),
-        ("wind.periodic_wake_frequency_radps", |p| {
-            p.wind.periodic_wake_frequency_radps = -1.25
-        }),
-        ("pitch_noise.sinusoid_amplitude_rad", |p| {
-            p.pitch_noise.sinusoid_amplitude_rad = f64::INFINITY
-        }),
-        ("pitch_noise.sinusoid_frequency_radps", |p| {
-            p.pitch_noise.sinusoid_frequency_radps = -7.0
-        }),
-        ("pitch_noise.white_noise_sigma_rad", |p| {
-            p.pitch_noise.white_noise_sigma_rad = -0.001
-        }),
-    ];
-    assert!(EnvironmentParameters::default().validate().is_ok());
-    for (field, edit) in cases {
-        let mut parameters = EnvironmentParameters::default();
-        edit(&mut parameters);
-        let error = parameters
-            .validate()
-            .expect_err(&format!("{field} should be rejected"));
-        let message = error.to_string();
-        assert!(message.contains(field), "{field}: message {message:?}");
-        assert!(
-            message.contains("allowed range"),
-            "{field}: message {message:?}"
-        );
-    }
-}
-
-#[test]
 fn bad_parameters_are_rejected_by_the_constructors_too() {
     let ship = ShipMotionParameters {
         heave_rms_m: -2.0,
@@ -282,17 +175,4 @@ fn bad_parameters_are_rejected_by_the_constructors_too() {
         ..WindParameters::default()
     };
     assert!(WindModel::new(wind, 0.0, &RandomStreams::new(1)).is_err());
-}
-
-#[test]
-fn parameters_round_trip_through_json_and_fill_defaults() {
-    let parameters = EnvironmentParameters::default();
-    let json = serde_json::to_string(&parameters).expect("serialisable");
-    let back: EnvironmentParameters = serde_json::from_str(&json).expect("deserialisable");
-    assert_eq!(back, parameters);
-    let partial: EnvironmentParameters =
-        serde_json::from_str(r#"{"ship": {"heave_rms_m": 1.0}}"#).expect("partial");
-    assert_eq!(partial.ship.heave_rms_m, 1.0);
-    assert_eq!(partial.ship.pitch_rms_deg, 1.5);
-    assert!(serde_json::from_str::<EnvironmentParameters>(r#"{"ship": {"heave": 1.0}}"#).is_err());
 }

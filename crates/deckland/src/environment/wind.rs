@@ -13,8 +13,8 @@ use std::ops::Add;
 
 use serde::{Deserialize, Serialize};
 
-use super::error::{Bounds, EnvironmentError};
 use super::turbulence::Turbulence;
+use crate::parameters::{Bounds, ParameterError};
 use crate::random::RandomStreams;
 
 /// Distance aft of the pitch centre beyond which the steady wake vanishes (m); paper
@@ -107,22 +107,30 @@ impl Default for WindParameters {
 impl WindParameters {
     /// Checks every field: speeds in [0, 40] m/s, σ in [0, 10] m/s, scale in (0, 3000] m,
     /// θ_s in [0, 0.5] rad, ω_p in [0, 20] rad/s.
-    pub fn validate(&self) -> Result<(), EnvironmentError> {
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        const SECTION: &str = "environment.wind";
         let sigma = Bounds::closed(0.0, 10.0);
-        Bounds::closed(0.0, 40.0).check("wind.wind_over_deck_mps", self.wind_over_deck_mps)?;
-        sigma.check("wind.turbulence_sigma_u_mps", self.turbulence_sigma_u_mps)?;
-        sigma.check("wind.turbulence_sigma_w_mps", self.turbulence_sigma_w_mps)?;
-        let scale = Bounds {
-            min_inclusive: false,
-            ..Bounds::closed(0.0, 3000.0)
-        };
-        scale.check("wind.turbulence_scale_m", self.turbulence_scale_m)?;
+        Bounds::closed(0.0, 40.0).check(SECTION, "wind_over_deck_mps", self.wind_over_deck_mps)?;
+        sigma.check(
+            SECTION,
+            "turbulence_sigma_u_mps",
+            self.turbulence_sigma_u_mps,
+        )?;
+        sigma.check(
+            SECTION,
+            "turbulence_sigma_w_mps",
+            self.turbulence_sigma_w_mps,
+        )?;
+        let scale = Bounds::positive_up_to(3000.0);
+        scale.check(SECTION, "turbulence_scale_m", self.turbulence_scale_m)?;
         Bounds::closed(0.0, 0.5).check(
-            "wind.periodic_wake_ship_pitch_rad",
+            SECTION,
+            "periodic_wake_ship_pitch_rad",
             self.periodic_wake_ship_pitch_rad,
         )?;
         Bounds::closed(0.0, 20.0).check(
-            "wind.periodic_wake_frequency_radps",
+            SECTION,
+            "periodic_wake_frequency_radps",
             self.periodic_wake_frequency_radps,
         )?;
         Ok(())
@@ -186,9 +194,13 @@ impl WindModel {
         parameters: WindParameters,
         ship_forward_speed_mps: f64,
         streams: &RandomStreams,
-    ) -> Result<Self, EnvironmentError> {
+    ) -> Result<Self, ParameterError> {
         parameters.validate()?;
-        Bounds::closed(0.0, 30.0).check("ship.forward_speed_mps", ship_forward_speed_mps)?;
+        Bounds::closed(0.0, 30.0).check(
+            "environment.ship",
+            "forward_speed_mps",
+            ship_forward_speed_mps,
+        )?;
         Ok(Self {
             parameters,
             ship_forward_speed_mps,

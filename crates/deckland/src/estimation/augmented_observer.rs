@@ -19,8 +19,8 @@
 //! so x1, x2, x3 estimate w1, w2, w3. The paper's Eq. 12 omits h and its Eq. 13 prints
 //! α3 for α1; MODEL.md §4 corrects both.
 
+use crate::parameters::{Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
-use thiserror::Error;
 
 /// Tuning of the augmented observer (MODEL.md §4; paper §2.3).
 ///
@@ -57,77 +57,39 @@ impl Default for ObserverParameters {
     }
 }
 
-/// Why a set of [`ObserverParameters`] was rejected (MODEL.md §4).
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum ObserverError {
-    /// A parameter is NaN or infinite.
-    #[error("observer parameter `{field}` must be finite, got {value}")]
-    NonFinite {
-        /// Name of the parameter.
-        field: &'static str,
-        /// The rejected value.
-        value: f64,
-    },
-    /// k1 or k3 is not strictly positive.
-    #[error("observer gain `{field}` must be > 0, got {value}")]
-    NonPositiveGain {
-        /// Name of the gain.
-        field: &'static str,
-        /// The rejected value.
-        value: f64,
-    },
-    /// k2 violates the stability bound k2 > (4/π)·k1/k3.
-    #[error("observer gain `k2` must exceed (4/π)·k1/k3 = {bound} for stability, got {value}")]
-    UnstableK2 {
-        /// The rejected value of k2.
-        value: f64,
-        /// The bound (4/π)·k1/k3 it must exceed.
-        bound: f64,
-    },
-    /// α1 or ε is outside the open interval (0, 1).
-    #[error("observer parameter `{field}` must lie in (0, 1), got {value}")]
-    OutsideUnitInterval {
-        /// Name of the parameter.
-        field: &'static str,
-        /// The rejected value.
-        value: f64,
-    },
-}
-
 impl ObserverParameters {
-    /// Checks the stability and range conditions of MODEL.md §4: all finite, k1 > 0,
-    /// k3 > 0, k2 > (4/π)·k1/k3, α1 ∈ (0, 1), ε ∈ (0, 1).
-    pub fn validate(&self) -> Result<(), ObserverError> {
-        let fields = [
-            ("k1", self.k1),
-            ("k2", self.k2),
-            ("k3", self.k3),
-            ("alpha1", self.alpha1),
-            ("epsilon", self.epsilon),
-        ];
-        for (field, value) in fields {
-            if !value.is_finite() {
-                return Err(ObserverError::NonFinite { field, value });
-            }
-        }
-        for (field, value) in [("k1", self.k1), ("k3", self.k3)] {
-            if value <= 0.0 {
-                return Err(ObserverError::NonPositiveGain { field, value });
-            }
-        }
+    /// Where the O-PD's observer sits in a scenario file.
+    pub const SECTION: &'static str = "control.pitch.observer";
+
+    /// Checks the stability and range conditions of MODEL.md §4 (k1, k3 > 0,
+    /// k2 > (4/π)·k1/k3, α1 ∈ (0, 1), ε ∈ (0, 1)) and physical ranges (gains up to 1000,
+    /// ε at least 0.001), naming `section.key` in the error.
+    pub fn validate_in(&self, section: &str) -> Result<(), ParameterError> {
+        let gain = Bounds::positive_up_to(1000.0);
+        gain.check(section, "k1", self.k1)?;
+        gain.check(section, "k2", self.k2)?;
+        gain.check(section, "k3", self.k3)?;
         let bound = 4.0 / std::f64::consts::PI * self.k1 / self.k3;
         if self.k2 <= bound {
-            return Err(ObserverError::UnstableK2 {
-                value: self.k2,
-                bound,
-            });
+            return Err(ParameterError::new(
+                section,
+                "k2",
+                self.k2,
+                format_args!("a value above (4/π)·k1/k3 = {bound:.4} for stability"),
+            ));
         }
-        for (field, value) in [("alpha1", self.alpha1), ("epsilon", self.epsilon)] {
-            if !(value > 0.0 && value < 1.0) {
-                return Err(ObserverError::OutsideUnitInterval { field, value });
-            }
-        }
-        Ok(())
+        Bounds::closed(0.0, 1.0)
+            .exclusive_min()
+            .exclusive_max()
+            .check(section, "alpha1", self.alpha1)?;
+        Bounds::closed(0.001, 1.0)
+            .exclusive_max()
+            .check(section, "epsilon", self.epsilon)
+    }
+
+    /// [`ObserverParameters::validate_in`] at the O-PD's [`ObserverParameters::SECTION`].
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        self.validate_in(Self::SECTION)
     }
 }
 
@@ -179,7 +141,7 @@ pub struct AugmentedObserver {
 
 impl AugmentedObserver {
     /// Builds the observer after [`ObserverParameters::validate`] (MODEL.md §4).
-    pub fn new(parameters: ObserverParameters) -> Result<Self, ObserverError> {
+    pub fn new(parameters: ObserverParameters) -> Result<Self, ParameterError> {
         parameters.validate()?;
         let ObserverParameters {
             k1,
@@ -274,13 +236,10 @@ mod tests {
             ..ObserverParameters::default()
         };
         let error = AugmentedObserver::new(parameters).expect_err("k2 = 0.4 < 0.424");
-        let ObserverError::UnstableK2 { value, bound } = error else {
-            panic!("wrong error {error:?}");
-        };
-        assert_eq!(value, 0.4);
+        assert_eq!(error.path, "control.pitch.observer.k2");
+        assert_eq!(error.value, "0.4");
         // (4/π)·1/3 = 0.42441…
-        assert!((bound - 0.424_413_181_578_387_6).abs() < 1e-12);
-        assert!(error.to_string().contains("0.4244"), "{error}");
+        assert!(error.allowed.contains("0.4244"), "{error}");
     }
 
     #[test]

@@ -1,9 +1,9 @@
 //! State and disturbance estimation (MODEL.md §4; paper §2.3).
 //!
 //! The [`AugmentedObserver`] estimates a measured variable, its rate and a lumped
-//! disturbance acting on its second derivative. The pitch controller
-//! ([`crate::control::pitch`]) runs one on the pitch-attitude deviation from trim.
+//! disturbance acting on its second derivative. The O-PD pitch controller runs one on
+//! the pitch-attitude deviation from trim.
 
 mod augmented_observer;
 
-pub use augmented_observer::{AugmentedObserver, ObserverError, ObserverParameters, ObserverState};
+pub use augmented_observer::{AugmentedObserver, ObserverParameters, ObserverState};

@@ -4,5 +4,7 @@
 //! in a named struct and converts to and from an array at this boundary.
 
 mod rk4;
+mod vector;
 
 pub use rk4::{rk4_step, rk4_step_from, OdeSystem};
+pub use vector::{Rk4Workspace, VectorSystem};

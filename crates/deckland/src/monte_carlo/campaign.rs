@@ -11,7 +11,7 @@ use crate::control::pitch::{ObserverPdParameters, PidParameters, PitchController
 use crate::random::RandomStreams;
 use crate::recording::SummaryRecorder;
 use crate::scenario::{DispersionSample, Mission, Scenario};
-use crate::simulation::{RunSummary, Simulation, SimulationError};
+use crate::simulation::{RunSummary, SetupError, Simulation};
 
 /// A pitch controller a campaign flies, with its label for tables and files.
 #[derive(Debug, Clone, PartialEq)]
@@ -22,12 +22,9 @@ pub struct ControllerVariant {
     pub pitch: PitchControllerParameters,
 }
 
-/// The label of a pitch controller: `O-PD` or `PID`.
+/// The label of a pitch controller, e.g. `O-PD`.
 pub fn controller_label(pitch: &PitchControllerParameters) -> &'static str {
-    match pitch {
-        PitchControllerParameters::ObserverPd(_) => "O-PD",
-        PitchControllerParameters::Pid(_) => "PID",
-    }
+    pitch.label()
 }
 
 /// What a campaign flies: `runs` approaches of `scenario` (with its dispersions), each
@@ -100,7 +97,7 @@ impl CampaignSpec {
 pub enum RunFailure {
     /// The (dispersed) scenario could not be set up: a value out of range, or no trim.
     #[error("invalid dispersed scenario: {0}")]
-    Invalid(#[from] SimulationError),
+    Invalid(#[from] SetupError),
     /// The simulation panicked (a bug); the message is the panic's.
     #[error("the simulation panicked: {0}")]
     Panicked(String),
@@ -164,7 +161,7 @@ pub enum CampaignError {
     NotAnApproach,
     /// The nominal scenario itself is invalid.
     #[error("the nominal scenario is invalid: {0}")]
-    InvalidScenario(#[from] SimulationError),
+    InvalidScenario(#[from] crate::parameters::ParameterError),
     /// The thread pool could not be built (e.g. 0 threads).
     #[error("cannot start {threads} worker threads: {message}")]
     ThreadPool {

@@ -1,28 +1,12 @@
 //! Recorders: what a simulation hands out as it runs (argmin-style observers).
 //!
 //! [`crate::simulation::Simulation`] owns the loop and calls a [`Recorder`] with signals
-//! every `sample_interval_steps()` steps, with events as they happen, and once at the end.
+//! at the recorder's own interval, with events as they happen, and once at the end.
 //! Monte Carlo campaigns use [`SummaryRecorder`] (nothing kept); single runs a
 //! [`TimeSeriesRecorder`].
 
+pub use crate::simulation::Recorder;
 use crate::simulation::{Event, RunSummary, Signals};
-
-/// Receives what a running simulation produces. Every method has a no-op default.
-pub trait Recorder {
-    /// Record signals every this many steps; 0 records none.
-    fn sample_interval_steps(&self) -> usize {
-        0
-    }
-
-    /// Signals at one step.
-    fn sample(&mut self, _signals: &Signals) {}
-
-    /// An event (ramp crossing, touchdown).
-    fn event(&mut self, _event: &Event) {}
-
-    /// The run's summary, once, at the end.
-    fn finish(&mut self, _summary: &RunSummary) {}
-}
 
 /// Keeps nothing: for Monte Carlo runs, where the summary is all that is needed.
 #[derive(Debug, Clone, Copy, Default)]
@@ -30,30 +14,33 @@ pub struct SummaryRecorder;
 
 impl Recorder for SummaryRecorder {}
 
-/// Keeps a decimated time series of every signal, and the events.
+/// Keeps a time series of every signal at a fixed interval of simulated time, the
+/// events, and the summary.
 #[derive(Debug, Clone, Default)]
 pub struct TimeSeriesRecorder {
-    interval_steps: usize,
+    interval_s: f64,
     /// The recorded signals, in time order.
     pub samples: Vec<Signals>,
     /// The events, in time order.
     pub events: Vec<Event>,
+    /// The run's summary, once it has ended.
+    pub summary: Option<RunSummary>,
 }
 
 impl TimeSeriesRecorder {
-    /// Records every `interval_steps` steps (at least 1).
-    pub fn new(interval_steps: usize) -> Self {
+    /// Records every `interval_s` seconds of simulated time (rounded to whole
+    /// integration steps, at least one step).
+    pub fn every(interval_s: f64) -> Self {
         Self {
-            interval_steps: interval_steps.max(1),
-            samples: Vec::new(),
-            events: Vec::new(),
+            interval_s,
+            ..Self::default()
         }
     }
 }
 
 impl Recorder for TimeSeriesRecorder {
-    fn sample_interval_steps(&self) -> usize {
-        self.interval_steps
+    fn sample_interval_s(&self) -> Option<f64> {
+        Some(self.interval_s)
     }
 
     fn sample(&mut self, signals: &Signals) {
@@ -62,5 +49,9 @@ impl Recorder for TimeSeriesRecorder {
 
     fn event(&mut self, event: &Event) {
         self.events.push(*event);
+    }
+
+    fn finish(&mut self, summary: &RunSummary) {
+        self.summary = Some(summary.clone());
     }
 }

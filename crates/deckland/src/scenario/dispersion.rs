@@ -11,8 +11,8 @@
 use serde::{Deserialize, Serialize};
 
 use super::Scenario;
+use crate::parameters::{Bounds, ParameterError};
 use crate::random::RandomStreams;
-use crate::simulation::SimulationError;
 
 /// Name of the random stream the dispersions are drawn from.
 pub const DISPERSION_STREAM: &str = "dispersion";
@@ -61,23 +61,6 @@ impl Default for DispersionSample {
     }
 }
 
-fn check_sd(
-    field: &'static str,
-    value: f64,
-    max: f64,
-    expected: &'static str,
-) -> Result<(), SimulationError> {
-    if value.is_finite() && (0.0..=max).contains(&value) {
-        Ok(())
-    } else {
-        Err(SimulationError::OutOfRange {
-            field,
-            value,
-            expected,
-        })
-    }
-}
-
 impl DispersionParameters {
     /// Whether every standard deviation is zero, so every run flies the nominal scenario.
     pub fn is_none(&self) -> bool {
@@ -85,30 +68,23 @@ impl DispersionParameters {
     }
 
     /// Checks every standard deviation is finite, non-negative and below a sane limit.
-    pub fn validate(&self) -> Result<(), SimulationError> {
-        check_sd(
-            "dispersion.start_height_offset_sd_m",
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        const SECTION: &str = "dispersion";
+        Bounds::closed(0.0, 20.0).check(
+            SECTION,
+            "start_height_offset_sd_m",
             self.start_height_offset_sd_m,
-            20.0,
-            "a standard deviation between 0 and 20 m",
         )?;
-        check_sd(
-            "dispersion.airspeed_error_sd_mps",
+        Bounds::closed(0.0, 10.0).check(
+            SECTION,
+            "airspeed_error_sd_mps",
             self.airspeed_error_sd_mps,
-            10.0,
-            "a standard deviation between 0 and 10 m/s",
         )?;
-        check_sd(
-            "dispersion.sea_state_log_sd",
-            self.sea_state_log_sd,
-            1.0,
-            "a log-standard deviation between 0 and 1",
-        )?;
-        check_sd(
-            "dispersion.wind_over_deck_sd_mps",
+        Bounds::closed(0.0, 1.0).check(SECTION, "sea_state_log_sd", self.sea_state_log_sd)?;
+        Bounds::closed(0.0, 10.0).check(
+            SECTION,
+            "wind_over_deck_sd_mps",
             self.wind_over_deck_sd_mps,
-            10.0,
-            "a standard deviation between 0 and 10 m/s",
         )
     }
 
@@ -183,13 +159,8 @@ mod tests {
                 wind_over_deck_sd_mps: bad,
                 ..DispersionParameters::default()
             };
-            assert!(matches!(
-                p.validate(),
-                Err(SimulationError::OutOfRange {
-                    field: "dispersion.wind_over_deck_sd_mps",
-                    ..
-                })
-            ));
+            let error = p.validate().expect_err("out of range");
+            assert_eq!(error.path, "dispersion.wind_over_deck_sd_mps");
         }
     }
 }

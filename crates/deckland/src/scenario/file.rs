@@ -5,21 +5,15 @@
 //! Three kinds of problem are told apart ([`ScenarioError`]): text that is not TOML,
 //! keys or values that do not fit the scenario's structure (unknown keys, wrong types,
 //! unknown names), and values outside their allowed range (every check of
-//! [`Scenario::validate`], of the aircraft and pitch-controller parameters and of the
-//! dispersions). For the last kind the line is that of the key in the file; a value not
-//! set in the file has no line (its default was used).
+//! [`Scenario::validate`]). For the last kind the line is that of the key in the file; a
+//! value not set in the file has no line (its default was used).
 
 use std::ops::Range;
 
 use toml_edit::{ImDocument, InlineTable, Item, Table, Value};
 
 use super::{Mission, Scenario};
-use crate::aircraft::AircraftError;
-use crate::control::pitch::{ObserverPdGains, PitchControllerParameters};
-use crate::control::ControlError;
-use crate::environment::EnvironmentError;
-use crate::estimation::ObserverError;
-use crate::simulation::SimulationError;
+use crate::parameters::{join, ParameterError};
 
 /// Why a scenario file was rejected. Every variant names the file, the line (when the
 /// offending key is in the file) and the field, and says what is allowed.
@@ -51,16 +45,20 @@ pub enum ScenarioError {
         message: String,
     },
     /// A value outside its allowed range, or physically meaningless (negative mass, NaN).
-    #[error("{file}, {}, field `{field}`: {problem}", line_text(*.line))]
+    #[error(
+        "{file}, {}, field `{}`: {} is not allowed: expected {}",
+        line_text(*.line),
+        .problem.path,
+        .problem.value,
+        .problem.allowed
+    )]
     OutOfRange {
         /// The file's name as given to [`load_scenario`].
         file: String,
         /// Line of the key (1-based); `None` if the key is not in the file.
         line: Option<usize>,
-        /// The field's dotted path, e.g. `environment.ship.heave_rms_m`.
-        field: String,
-        /// The check that failed, with the allowed range.
-        problem: SimulationError,
+        /// The check that failed: the dotted path, the value and the allowed range.
+        problem: ParameterError,
     },
 }
 
@@ -77,9 +75,8 @@ impl ScenarioError {
     /// The dotted path of the field at fault.
     pub fn field(&self) -> &str {
         match self {
-            Self::Syntax { field, .. }
-            | Self::Structure { field, .. }
-            | Self::OutOfRange { field, .. } => field,
+            Self::Syntax { field, .. } | Self::Structure { field, .. } => field,
+            Self::OutOfRange { problem, .. } => &problem.path,
         }
     }
 }
@@ -153,114 +150,19 @@ pub fn load_scenario(text: &str, file_name: &str) -> Result<Scenario, ScenarioEr
         }
     }
 
-    check_values(&scenario).map_err(|(path, problem)| {
-        let located = index.locate(&path);
+    scenario.validate().map_err(|problem| {
+        let line = index
+            .keys
+            .iter()
+            .find(|k| k.path == problem.path)
+            .map(|k| line_of(text, k.span.start));
         ScenarioError::OutOfRange {
             file: file_name.to_owned(),
-            line: located.map(|k| line_of(text, k.span.start)),
-            field: located.map_or(path, |k| k.path.clone()),
+            line,
             problem,
         }
     })?;
     Ok(scenario)
-}
-
-/// Runs every value check a run would meet, and the dispersions', returning the dotted
-/// path of the first bad field (possibly without its middle sections, see
-/// [`KeyIndex::locate`]) and the error.
-fn check_values(scenario: &Scenario) -> Result<(), (String, SimulationError)> {
-    scenario.validate().map_err(|error| {
-        let path = match &error {
-            SimulationError::OutOfRange { field, .. } => (*field).to_owned(),
-            SimulationError::Environment(e) => join("environment", environment_field(e)),
-            SimulationError::Control(e) => join("control", &control_field(e)),
-            SimulationError::Aircraft(e) => join("aircraft", aircraft_field(e)),
-            SimulationError::Trim(_) => "approach".to_owned(),
-        };
-        (path, error)
-    })?;
-    let aircraft = &scenario.aircraft;
-    let aircraft_checks = [
-        ("aircraft.parameters", aircraft.parameters.validate()),
-        ("aircraft.engines", aircraft.engines.validate()),
-        (
-            "aircraft.elevator_actuator",
-            aircraft.elevator_actuator.validate(),
-        ),
-    ];
-    for (section, result) in aircraft_checks {
-        result.map_err(|e| {
-            (
-                join(section, aircraft_field(&e)),
-                SimulationError::Aircraft(e),
-            )
-        })?;
-    }
-    let pitch = match scenario.control.pitch {
-        PitchControllerParameters::ObserverPd(p) => {
-            ObserverPdGains::design(p.settling_time_s, p.damping_ratio, 0.0)
-                .map(|_| ())
-                .and_then(|()| p.observer.validate().map_err(ControlError::Observer))
-        }
-        PitchControllerParameters::Pid(p) => p.validate(),
-    };
-    pitch.map_err(|e| {
-        (
-            join("control.pitch", &control_field(&e)),
-            SimulationError::Control(e),
-        )
-    })?;
-    scenario.dispersion.validate().map_err(|error| {
-        let path = match &error {
-            SimulationError::OutOfRange { field, .. } => (*field).to_owned(),
-            _ => "dispersion".to_owned(),
-        };
-        (path, error)
-    })
-}
-
-fn environment_field(error: &EnvironmentError) -> &'static str {
-    match error {
-        EnvironmentError::NotFinite { field, .. } | EnvironmentError::OutOfRange { field, .. } => {
-            field
-        }
-        EnvironmentError::WireOrder { .. } => "deck.wire_positions_m",
-        EnvironmentError::NoStationaryCovariance { .. } => "ship",
-    }
-}
-
-fn control_field(error: &ControlError) -> String {
-    match error {
-        ControlError::NonFinite { field, .. }
-        | ControlError::NonPositive { field, .. }
-        | ControlError::OutOfRange { field, .. }
-        | ControlError::NegativeGain { field, .. } => (*field).to_owned(),
-        ControlError::ZeroElevatorEffectiveness => "pitch".to_owned(),
-        ControlError::Observer(e) => join("observer", observer_field(e)),
-    }
-}
-
-fn observer_field(error: &ObserverError) -> &'static str {
-    match error {
-        ObserverError::NonFinite { field, .. }
-        | ObserverError::NonPositiveGain { field, .. }
-        | ObserverError::OutsideUnitInterval { field, .. } => field,
-        ObserverError::UnstableK2 { .. } => "k2",
-    }
-}
-
-fn aircraft_field(error: &AircraftError) -> &'static str {
-    match error {
-        AircraftError::InvalidParameter { field, .. } => field,
-    }
-}
-
-fn join(prefix: &str, name: &str) -> String {
-    if prefix.is_empty() {
-        name.to_owned()
-    } else {
-        format!("{prefix}.{name}")
-    }
 }
 
 fn first_line(message: &str) -> String {
@@ -286,7 +188,11 @@ fn line_of(text: &str, offset: usize) -> usize {
 /// For text that does not parse: the dotted path of the key on `line`, read from the
 /// raw text (the table header above it and the word before `=`).
 fn key_near_line(text: &str, line: usize) -> String {
-    let lines: Vec<&str> = text.lines().collect();
+    // A table header may carry a comment after it: `[aircraft.hook]  # MODEL.md §2.7`.
+    let lines: Vec<&str> = text
+        .lines()
+        .map(|l| l.split('#').next().unwrap_or(""))
+        .collect();
     let current = lines.get(line.saturating_sub(1)).copied().unwrap_or("");
     let header = lines[..line.saturating_sub(1).min(lines.len())]
         .iter()
@@ -321,21 +227,6 @@ impl KeyIndex {
             .iter()
             .filter(|k| k.span.start <= span.start && span.start < k.span.end.max(k.span.start + 1))
             .min_by_key(|k| k.span.end - k.span.start)
-    }
-
-    /// The key of `path` in the file: an exact match, else a key under the same top-level
-    /// section whose path ends with the same last segment (checks that name a field
-    /// without its middle sections), else none.
-    fn locate(&self, path: &str) -> Option<&KeyLocation> {
-        if let Some(exact) = self.keys.iter().find(|k| k.path == path) {
-            return Some(exact);
-        }
-        let (section, _) = path.split_once('.')?;
-        let (_, leaf) = path.rsplit_once('.')?;
-        let tail = format!(".{leaf}");
-        self.keys
-            .iter()
-            .find(|k| k.path.starts_with(section) && k.path.ends_with(&tail))
     }
 }
 
@@ -418,5 +309,15 @@ mod tests {
     fn the_key_near_a_syntax_error_is_read_from_the_text() {
         let text = "[approach]\nstart_range_m = 1500 m\n";
         assert_eq!(key_near_line(text, 2), "approach.start_range_m");
+    }
+
+    /// Regression: a table header followed by a comment was skipped, so a syntax error
+    /// in `[aircraft.hook]  # …` was reported near `aircraft.<key>`.
+    #[test]
+    fn regression_commented_table_headers_name_the_syntax_error_section() {
+        let text = "[aircraft]\nconfiguration = \"landing\"\n\n[aircraft.hook]   # hook point\naft_of_cg_m = 7 m\n";
+        assert_eq!(key_near_line(text, 5), "aircraft.hook.aft_of_cg_m");
+        let error = load_scenario(text, "a.toml").expect_err("syntax");
+        assert_eq!(error.field(), "aircraft.hook.aft_of_cg_m");
     }
 }

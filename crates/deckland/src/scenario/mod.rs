@@ -1,7 +1,9 @@
 //! A scenario: every parameter of one run, with the defaults of MODEL.md.
 //!
 //! The structure mirrors the scenario file (TOML) section by section; units are in the
-//! field names. [`Scenario::validate`] checks every field before a run starts;
+//! field names. Each section checks its own fields ([`crate::parameters`]: one error
+//! shape, naming the dotted path, the value and the allowed range);
+//! [`Scenario::validate`] checks every section before a run starts;
 //! [`load_scenario`] reads a scenario file and reports a bad one by file, line and field;
 //! [`DEFAULT_SCENARIO_TOML`] is the commented default file.
 
@@ -14,12 +16,16 @@ use crate::control::{
     FlightPathParameters, GuidanceParameters, SinkRateControllerParameters,
     SpeedControllerParameters,
 };
-use crate::environment::EnvironmentParameters;
+use crate::environment::{DeckGeometry, ShipMotionParameters, WindParameters};
+use crate::parameters::{Bounds, ParameterError};
+use crate::sensors::PitchNoiseParameters;
 use serde::{Deserialize, Serialize};
 
 mod dispersion;
 mod file;
 mod template;
+#[cfg(test)]
+mod tests;
 
 pub use dispersion::{DispersionParameters, DispersionSample, DISPERSION_STREAM};
 pub use file::{load_scenario, ScenarioError};
@@ -46,6 +52,38 @@ impl AircraftSection {
     pub fn aerodynamics(&self) -> AerodynamicConfiguration {
         AerodynamicConfiguration::named(self.configuration)
     }
+
+    /// Checks every part of the aircraft.
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        self.parameters.validate()?;
+        self.engines.validate()?;
+        self.elevator_actuator.validate()?;
+        self.hook.validate()
+    }
+}
+
+/// The environment section of a scenario (MODEL.md §3; deck geometry §2.7).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct EnvironmentSection {
+    /// Ship heave and pitch (MODEL.md §3.1).
+    pub ship: ShipMotionParameters,
+    /// Deck geometry (MODEL.md §2.7).
+    pub deck: DeckGeometry,
+    /// Wind and air wake (MODEL.md §3.2).
+    pub wind: WindParameters,
+    /// Pitch-attitude measurement noise (MODEL.md §3.3).
+    pub pitch_noise: PitchNoiseParameters,
+}
+
+impl EnvironmentSection {
+    /// Checks every part of the environment.
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        self.ship.validate()?;
+        self.deck.validate()?;
+        self.wind.validate()?;
+        self.pitch_noise.validate()
+    }
 }
 
 /// The controllers of the cascade (MODEL.md §5).
@@ -64,6 +102,17 @@ pub struct ControlSection {
     pub flight_path: FlightPathParameters,
 }
 
+impl ControlSection {
+    /// Checks every controller.
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        self.pitch.validate()?;
+        self.speed.validate()?;
+        self.sink_rate.validate()?;
+        self.guidance.validate()?;
+        self.flight_path.validate()
+    }
+}
+
 /// The start of an approach (MODEL.md §6).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
@@ -74,6 +123,21 @@ pub struct ApproachParameters {
     pub airspeed_mps: f64,
     /// Start height of the hook above the glide path (m); 0.
     pub start_height_offset_m: f64,
+}
+
+impl ApproachParameters {
+    /// Checks the start range (200–10000 m), airspeed (40–150 m/s) and height offset
+    /// (±50 m).
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        const SECTION: &str = "approach";
+        Bounds::closed(200.0, 10_000.0).check(SECTION, "start_range_m", self.start_range_m)?;
+        Bounds::closed(40.0, 150.0).check(SECTION, "airspeed_mps", self.airspeed_mps)?;
+        Bounds::closed(-50.0, 50.0).check(
+            SECTION,
+            "start_height_offset_m",
+            self.start_height_offset_m,
+        )
+    }
 }
 
 impl Default for ApproachParameters {
@@ -94,6 +158,19 @@ pub struct OutcomeLimits {
     pub hard_landing_sink_rate_mps: f64,
     /// Airspeed below which the run is declared diverged (m/s).
     pub min_airspeed_mps: f64,
+}
+
+impl OutcomeLimits {
+    /// Checks the hard-landing limit ((0, 50] m/s) and the airspeed limit ([0, 100] m/s).
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        const SECTION: &str = "outcome";
+        Bounds::positive_up_to(50.0).check(
+            SECTION,
+            "hard_landing_sink_rate_mps",
+            self.hard_landing_sink_rate_mps,
+        )?;
+        Bounds::closed(0.0, 100.0).check(SECTION, "min_airspeed_mps", self.min_airspeed_mps)
+    }
 }
 
 impl Default for OutcomeLimits {
@@ -143,6 +220,47 @@ pub enum Mission {
 }
 
 impl Mission {
+    /// Checks the mission's fields: steps within ±20°, sink rates within ±20 m/s, run
+    /// lengths of 0.1–3600 s with the step and the ramp inside them, altitudes of
+    /// 30–10000 m, start distances of −10000–20000 m.
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        const SECTION: &str = "mission";
+        let timed = |step_time_s: f64, duration_s: f64, altitude_m: f64| {
+            Bounds::closed(0.1, 3600.0).check(SECTION, "duration_s", duration_s)?;
+            Bounds::closed(0.0, duration_s).check(SECTION, "step_time_s", step_time_s)?;
+            Bounds::closed(30.0, 10_000.0).check(SECTION, "altitude_m", altitude_m)
+        };
+        match *self {
+            Self::Approach => Ok(()),
+            Self::PitchStep {
+                step_deg,
+                step_time_s,
+                duration_s,
+                start_distance_aft_m,
+                altitude_m,
+            } => {
+                Bounds::closed(-20.0, 20.0).check(SECTION, "step_deg", step_deg)?;
+                Bounds::closed(-10_000.0, 20_000.0).check(
+                    SECTION,
+                    "start_distance_aft_m",
+                    start_distance_aft_m,
+                )?;
+                timed(step_time_s, duration_s, altitude_m)
+            }
+            Self::SinkRate {
+                sink_rate_mps,
+                step_time_s,
+                ramp_s,
+                duration_s,
+                altitude_m,
+            } => {
+                Bounds::closed(-20.0, 20.0).check(SECTION, "sink_rate_mps", sink_rate_mps)?;
+                timed(step_time_s, duration_s, altitude_m)?;
+                Bounds::closed(0.0, duration_s).check(SECTION, "ramp_s", ramp_s)
+            }
+        }
+    }
+
     /// A pitch step of `step_deg` lasting `duration_s`, with the other defaults.
     pub fn pitch_step(step_deg: f64, duration_s: f64) -> Self {
         Self::PitchStep {
@@ -182,7 +300,7 @@ pub struct Scenario {
     /// The aircraft.
     pub aircraft: AircraftSection,
     /// Ship motion, deck geometry, wind and sensor noise.
-    pub environment: EnvironmentParameters,
+    pub environment: EnvironmentSection,
     /// The controllers.
     pub control: ControlSection,
     /// The start of an approach.
@@ -203,7 +321,7 @@ impl Default for Scenario {
             max_time_s: 60.0,
             mission: Mission::Approach,
             aircraft: AircraftSection::default(),
-            environment: EnvironmentParameters::default(),
+            environment: EnvironmentSection::default(),
             control: ControlSection::default(),
             approach: ApproachParameters::default(),
             outcome: OutcomeLimits::default(),
@@ -212,7 +330,71 @@ impl Default for Scenario {
     }
 }
 
+/// The largest seed: seeds are TOML integers, which are signed 64-bit (2⁶³ − 1).
+pub const MAX_SEED: u64 = i64::MAX as u64;
+
 impl Scenario {
+    /// Checks every section; the error names the first bad field by its dotted path.
+    /// Besides each field's own range, the integration step must resolve the fastest
+    /// dynamics it integrates: ω·dt ≤ 0.5 for the elevator actuator and k3·dt/ε ≤ 0.5 for
+    /// the O-PD's observer (classical RK4 is stable up to about 2.8).
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        if self.seed > MAX_SEED {
+            return Err(ParameterError::new(
+                "",
+                "seed",
+                self.seed,
+                format_args!("an integer in [0, {MAX_SEED}] (2⁶³ − 1)"),
+            ));
+        }
+        Bounds::closed(1e-5, 0.01).check("", "time_step_s", self.time_step_s)?;
+        Bounds::closed(1.0, 3600.0).check("", "max_time_s", self.max_time_s)?;
+        self.mission.validate()?;
+        self.aircraft.validate()?;
+        self.environment.validate()?;
+        self.control.validate()?;
+        self.approach.validate()?;
+        self.outcome.validate()?;
+        self.dispersion.validate()?;
+        self.check_time_step_resolves_the_dynamics()
+    }
+
+    /// ω·dt ≤ 0.5 for the actuator and k3·dt/ε ≤ 0.5 for the observer.
+    fn check_time_step_resolves_the_dynamics(&self) -> Result<(), ParameterError> {
+        let dt = self.time_step_s;
+        let omega = self.aircraft.elevator_actuator.natural_frequency_rad_s;
+        if omega * dt > 0.5 {
+            return Err(ParameterError::new(
+                "",
+                "time_step_s",
+                dt,
+                format_args!(
+                    "at most {:?} s, so that the elevator actuator (ω = {omega} rad/s) is \
+                     resolved (ω·dt ≤ 0.5)",
+                    0.5 / omega
+                ),
+            ));
+        }
+        if let PitchControllerParameters::ObserverPd(opd) = &self.control.pitch {
+            let observer = &opd.observer;
+            let rate = observer.k3 / observer.epsilon;
+            if rate * dt > 0.5 {
+                return Err(ParameterError::new(
+                    crate::estimation::ObserverParameters::SECTION,
+                    "epsilon",
+                    observer.epsilon,
+                    format_args!(
+                        "at least {:?} with k3 = {} and time_step_s = {dt}, so that the \
+                         observer (k3/ε rad/s) is resolved by the integration step",
+                        observer.k3 * dt / 0.5,
+                        observer.k3
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+
     /// Switches off every disturbance: no wind, no sensor noise, no deck motion.
     pub fn ideal(mut self) -> Self {
         let env = &mut self.environment;

@@ -6,7 +6,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::environment::{Bounds, EnvironmentError};
+use crate::parameters::{Bounds, ParameterError};
 use crate::random::{stream_names, NoiseStream, RandomStreams};
 
 /// Configuration of the pitch-attitude measurement noise (MODEL.md §3.3).
@@ -36,17 +36,21 @@ impl Default for PitchNoiseParameters {
 
 impl PitchNoiseParameters {
     /// Checks every field: amplitude and σ in [0, 0.1] rad, frequency in [0, 1000] rad/s.
-    pub fn validate(&self) -> Result<(), EnvironmentError> {
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        const SECTION: &str = "environment.pitch_noise";
         Bounds::closed(0.0, 0.1).check(
-            "pitch_noise.sinusoid_amplitude_rad",
+            SECTION,
+            "sinusoid_amplitude_rad",
             self.sinusoid_amplitude_rad,
         )?;
         Bounds::closed(0.0, 1000.0).check(
-            "pitch_noise.sinusoid_frequency_radps",
+            SECTION,
+            "sinusoid_frequency_radps",
             self.sinusoid_frequency_radps,
         )?;
         Bounds::closed(0.0, 0.1).check(
-            "pitch_noise.white_noise_sigma_rad",
+            SECTION,
+            "white_noise_sigma_rad",
             self.white_noise_sigma_rad,
         )?;
         Ok(())
@@ -65,7 +69,7 @@ impl PitchSensor {
     pub fn new(
         parameters: PitchNoiseParameters,
         streams: &RandomStreams,
-    ) -> Result<Self, EnvironmentError> {
+    ) -> Result<Self, ParameterError> {
         parameters.validate()?;
         Ok(Self {
             parameters,

@@ -1,15 +1,36 @@
-//! The closed-loop simulation (MODEL.md §6): [`Simulation`] owns the loop, integrates the
-//! [`ClosedLoop`] with RK4 at a fixed step, finds events inside the step, and hands
-//! signals and events to a [`crate::recording::Recorder`].
+//! The closed-loop simulation (MODEL.md §6).
+//!
+//! - [`ClosedLoop`]: the loop as a composition of blocks (plant, ship motion, wind,
+//!   pitch sensor, deck-motion predictor, pitch law, speed loop, outer loops), each with
+//!   its own slot of the state vector ([`LoopLayout`]); the held inputs of a step are
+//!   passed explicitly ([`HeldInputs`]); commands can be tapped ([`Taps`]).
+//! - [`Simulation`]: owns the loop and integrates it with RK4 at a fixed step;
+//!   [`Simulation::step`] returns why it stopped ([`Stop`]): still running, an event
+//!   found and interpolated inside the step, or the end with its typed reason
+//!   ([`EndReason`]). Recorders watch through [`Recorder`].
+//! - [`LandingRules`]: turn events into an outcome (MODEL.md §7), outside the
+//!   integration loop.
 
 mod closed_loop;
+mod deck_prediction;
+mod events;
+mod layout;
 mod outcome;
+mod outer_loops;
+mod recorder;
 mod runner;
-pub(crate) mod setup;
+mod setup;
+mod signals;
+mod taps;
 
-pub use closed_loop::{
-    ClosedLoop, HeldInputs, LoopBreak, LoopMode, LoopState, Signals, LOOP_DIMENSION,
-};
-pub use outcome::{Event, Outcome, RunSummary, Touchdown};
-pub use runner::Simulation;
-pub use setup::{approach_flight_path_angle, SimulationError};
+pub use closed_loop::{ClosedLoop, HeldInputs, LoopLayout, StepStreams};
+pub use deck_prediction::DeckPredictor;
+pub use events::PROBE_RANGE_AFT_OF_RAMP_M;
+pub use layout::{BlockStates, Slot, StateLayout};
+pub use outcome::{Divergence, EndReason, Event, LandingRules, Outcome, RunSummary, Touchdown};
+pub use outer_loops::OuterLoops;
+pub use recorder::{GlidePathStatistics, Recorder};
+pub use runner::{Simulation, Stop};
+pub use setup::{approach_flight_path_angle, PitchLawFactory, SetupError};
+pub use signals::Signals;
+pub use taps::{LoopBreak, LoopCut, NoTaps, Overrides, Taps};

@@ -1,6 +1,11 @@
-//! How a run ended and what it measured (MODEL.md §7).
+//! How a run ended and what it measured (MODEL.md §7): the outcome, the typed reason,
+//! and the rules that turn events into an outcome.
+
+use std::fmt;
 
 use serde::Serialize;
+
+use crate::scenario::OutcomeLimits;
 
 /// How a run ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -52,7 +57,8 @@ pub struct Touchdown {
     pub airspeed_mps: f64,
 }
 
-/// Something that happened during a run.
+/// Something that happened during a run, found by a sign change between two steps and
+/// interpolated inside the step.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 #[serde(tag = "event", rename_all = "snake_case")]
 pub enum Event {
@@ -65,6 +71,252 @@ pub enum Event {
     },
     /// The hook touched the deck.
     Touchdown(Touchdown),
+    /// The hook passed the last wire still in the air.
+    PassedLastWire {
+        /// Time (s).
+        time_s: f64,
+        /// Hook height above the deck (m).
+        height_above_deck_m: f64,
+    },
+}
+
+/// Why a run left the model's validity.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Divergence {
+    /// A state became NaN or infinite.
+    NonFiniteState {
+        /// Time (s).
+        time_s: f64,
+        /// The state's dotted name (`block.state`).
+        state: String,
+    },
+    /// A signal became NaN or infinite.
+    NonFiniteSignal {
+        /// Time (s).
+        time_s: f64,
+        /// The signal's name.
+        signal: &'static str,
+    },
+    /// The angle of attack left the aerodynamic model's range.
+    AngleOfAttack {
+        /// Time (s).
+        time_s: f64,
+        /// The angle of attack (rad).
+        alpha_rad: f64,
+        /// The model's range (rad).
+        range_rad: (f64, f64),
+    },
+    /// The airspeed fell below the limit.
+    Airspeed {
+        /// Time (s).
+        time_s: f64,
+        /// The airspeed (m/s).
+        airspeed_mps: f64,
+        /// The limit (m/s).
+        limit_mps: f64,
+    },
+    /// The hook went below the sea surface.
+    HookBelowSea {
+        /// Time (s).
+        time_s: f64,
+    },
+}
+
+impl fmt::Display for Divergence {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::NonFiniteState { time_s, state } => {
+                write!(f, "non-finite state `{state}` at t = {time_s:.3} s")
+            }
+            Self::NonFiniteSignal { time_s, signal } => {
+                write!(f, "non-finite signal `{signal}` at t = {time_s:.3} s")
+            }
+            Self::AngleOfAttack {
+                time_s,
+                alpha_rad,
+                range_rad: (min, max),
+            } => write!(
+                f,
+                "angle of attack {:.1}° outside the aerodynamic model's range {:.0}°…{:.0}° at t = {time_s:.3} s",
+                alpha_rad.to_degrees(),
+                min.to_degrees(),
+                max.to_degrees(),
+            ),
+            Self::Airspeed {
+                time_s,
+                airspeed_mps,
+                limit_mps,
+            } => write!(
+                f,
+                "airspeed {airspeed_mps:.1} m/s below the limit {limit_mps:.1} m/s at t = {time_s:.3} s"
+            ),
+            Self::HookBelowSea { time_s } => write!(f, "hook below sea level at t = {time_s:.3} s"),
+        }
+    }
+}
+
+/// Why a run ended, as a value: the outcome follows from it ([`EndReason::outcome`]) and
+/// so does the reason in words ([`EndReason::description`]).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum EndReason {
+    /// The hook touched down at or before a wire and caught it.
+    Trap {
+        /// The wire caught (1 = aftmost).
+        wire: u8,
+    },
+    /// The touchdown sink rate relative to the deck was above the limit.
+    HardLanding {
+        /// The sink rate (m/s).
+        sink_rate_mps: f64,
+        /// The limit (m/s).
+        limit_mps: f64,
+        /// The wire caught, if the touchdown was at or before one.
+        wire: Option<u8>,
+    },
+    /// The hook touched down beyond the last wire.
+    TouchdownPastLastWire {
+        /// Touchdown point from the aim point (m, positive forward).
+        distance_from_aim_m: f64,
+    },
+    /// The hook passed over the last wire without touching down.
+    FlewOverLastWire {
+        /// Hook height above the deck there (m).
+        height_above_deck_m: f64,
+    },
+    /// The hook was below the ramp as it crossed it.
+    RampStrike {
+        /// Hook height above the ramp (m), negative.
+        clearance_m: f64,
+    },
+    /// An approach reached its time limit without touching down.
+    TimeLimit {
+        /// The limit (s).
+        limit_s: f64,
+    },
+    /// A fixed-length run (pitch step, sink-rate tracking) reached its end.
+    Completed,
+    /// The state left the model's validity.
+    Diverged(Divergence),
+}
+
+impl EndReason {
+    /// The outcome class.
+    pub fn outcome(&self) -> Outcome {
+        match self {
+            Self::Trap { .. } => Outcome::Trap,
+            Self::HardLanding { .. } => Outcome::HardLanding,
+            Self::TouchdownPastLastWire { .. } | Self::FlewOverLastWire { .. } => Outcome::Bolter,
+            Self::RampStrike { .. } => Outcome::RampStrike,
+            Self::TimeLimit { .. } => Outcome::Timeout,
+            Self::Completed => Outcome::Completed,
+            Self::Diverged(_) => Outcome::Diverged,
+        }
+    }
+
+    /// The wire caught, for a trap or a hard landing that caught one.
+    pub fn wire(&self) -> Option<u8> {
+        match self {
+            Self::Trap { wire } => Some(*wire),
+            Self::HardLanding { wire, .. } => *wire,
+            _ => None,
+        }
+    }
+
+    /// The reason in words, for every end but a trap and a completed run.
+    pub fn description(&self) -> Option<String> {
+        match self {
+            Self::Trap { .. } | Self::Completed => None,
+            Self::HardLanding {
+                sink_rate_mps,
+                limit_mps,
+                ..
+            } => Some(format!(
+                "touchdown sink rate {sink_rate_mps:.2} m/s above the limit {limit_mps:.2} m/s"
+            )),
+            Self::TouchdownPastLastWire {
+                distance_from_aim_m,
+            } => Some(format!(
+                "touchdown {distance_from_aim_m:.1} m beyond the aim point, past the last wire"
+            )),
+            Self::FlewOverLastWire {
+                height_above_deck_m,
+            } => Some(format!(
+                "flew over the last wire {height_above_deck_m:.1} m above the deck"
+            )),
+            Self::RampStrike { clearance_m } => {
+                Some(format!("hook {:.2} m below the ramp", -clearance_m))
+            }
+            Self::TimeLimit { limit_s } => Some(format!("no touchdown within {limit_s:.1} s")),
+            Self::Diverged(divergence) => Some(divergence.to_string()),
+        }
+    }
+}
+
+/// The rules that classify a landing from its events (MODEL.md §7): the hard-landing
+/// limit and the wires.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LandingRules {
+    /// Touchdown sink rate relative to the deck above which a landing is hard (m/s).
+    pub hard_landing_sink_rate_mps: f64,
+    /// The wires along the deck from the aim point (m, positive forward), increasing.
+    pub wire_positions_m: [f64; 4],
+}
+
+impl LandingRules {
+    /// The rules of a scenario's outcome limits and deck.
+    pub fn new(limits: &OutcomeLimits, wire_positions_m: [f64; 4]) -> Self {
+        Self {
+            hard_landing_sink_rate_mps: limits.hard_landing_sink_rate_mps,
+            wire_positions_m,
+        }
+    }
+
+    /// The last (most forward) wire (m from the aim point).
+    pub fn last_wire_m(&self) -> f64 {
+        self.wire_positions_m[self.wire_positions_m.len() - 1]
+    }
+
+    /// Whether `event` ends the run, and why: a ramp crossing below the ramp, any
+    /// touchdown (trap, hard landing or bolter), passing the last wire in the air.
+    pub fn judge(&self, event: &Event) -> Option<EndReason> {
+        match *event {
+            Event::RampCrossing { clearance_m, .. } => {
+                (clearance_m < 0.0).then_some(EndReason::RampStrike { clearance_m })
+            }
+            Event::Touchdown(touchdown) => Some(self.classify_touchdown(&touchdown)),
+            Event::PassedLastWire {
+                height_above_deck_m,
+                ..
+            } => Some(EndReason::FlewOverLastWire {
+                height_above_deck_m,
+            }),
+        }
+    }
+
+    /// A touchdown: hard above the sink-rate limit, else a trap on the first wire at or
+    /// beyond the touchdown point, else a bolter.
+    pub fn classify_touchdown(&self, touchdown: &Touchdown) -> EndReason {
+        let wire = self
+            .wire_positions_m
+            .iter()
+            .position(|&w| w >= touchdown.distance_from_aim_m)
+            .map(|i| i as u8 + 1);
+        if touchdown.sink_rate_mps > self.hard_landing_sink_rate_mps {
+            EndReason::HardLanding {
+                sink_rate_mps: touchdown.sink_rate_mps,
+                limit_mps: self.hard_landing_sink_rate_mps,
+                wire,
+            }
+        } else if let Some(wire) = wire {
+            EndReason::Trap { wire }
+        } else {
+            EndReason::TouchdownPastLastWire {
+                distance_from_aim_m: touchdown.distance_from_aim_m,
+            }
+        }
+    }
 }
 
 /// The result of one run.
@@ -88,4 +340,63 @@ pub struct RunSummary {
     pub glide_path_error_rms_m: Option<f64>,
     /// Largest absolute height error to the glide path over the approach (m).
     pub glide_path_error_max_m: Option<f64>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn touchdown(distance_from_aim_m: f64, sink_rate_mps: f64) -> Touchdown {
+        Touchdown {
+            time_s: 25.0,
+            distance_from_aim_m,
+            sink_rate_mps,
+            pitch_deg: 3.0,
+            airspeed_mps: 69.0,
+        }
+    }
+
+    #[test]
+    fn touchdowns_are_classified_by_wire_and_sink_rate() {
+        let rules = LandingRules::new(&OutcomeLimits::default(), [-18.0, -6.0, 6.0, 18.0]);
+        // Between wires 2 and 3 (MODEL.md §7: the first wire at or beyond the point).
+        assert_eq!(
+            rules.classify_touchdown(&touchdown(0.0, 4.0)),
+            EndReason::Trap { wire: 3 }
+        );
+        assert_eq!(
+            rules.classify_touchdown(&touchdown(-30.0, 4.0)),
+            EndReason::Trap { wire: 1 }
+        );
+        let past = rules.classify_touchdown(&touchdown(20.0, 4.0));
+        assert_eq!(past.outcome(), Outcome::Bolter);
+        assert_eq!(
+            past.description().as_deref(),
+            Some("touchdown 20.0 m beyond the aim point, past the last wire")
+        );
+        let hard = rules.classify_touchdown(&touchdown(0.0, 8.0));
+        assert_eq!(hard.outcome(), Outcome::HardLanding);
+        assert_eq!(hard.wire(), Some(3));
+    }
+
+    #[test]
+    fn only_a_crossing_below_the_ramp_ends_the_run() {
+        let rules = LandingRules::new(&OutcomeLimits::default(), [-18.0, -6.0, 6.0, 18.0]);
+        let above = Event::RampCrossing {
+            time_s: 1.0,
+            clearance_m: 0.5,
+        };
+        assert_eq!(rules.judge(&above), None);
+        let below = Event::RampCrossing {
+            time_s: 1.0,
+            clearance_m: -0.25,
+        };
+        let end = rules.judge(&below).expect("a strike");
+        assert_eq!(end.outcome(), Outcome::RampStrike);
+        assert_eq!(
+            end.description().as_deref(),
+            Some("hook 0.25 m below the ramp")
+        );
+        assert_eq!(rules.last_wire_m(), 18.0);
+    }
 }

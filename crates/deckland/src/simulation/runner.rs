@@ -1,118 +1,99 @@
-//! The simulation loop: one fixed RK4 step at a time, events found by the loop and
-//! interpolated inside the step, stop conditions checked after every step (MODEL.md §6–7).
+//! The run loop: one fixed RK4 step at a time (MODEL.md §6). [`Simulation::step`] says
+//! why it returned: still running, an event, or the end with its typed reason.
+//!
+//! Each step: the held inputs are drawn; the loop is evaluated at the step's start, with
+//! every signal; the state is checked (divergence), the hook probed for events since the
+//! last step, and the landing rules judge them; the recorders see the step; then RK4
+//! advances the state and the discrete parts (turbulence) follow.
 
-use super::closed_loop::{ClosedLoop, HeldInputs, LoopMode, LoopState, Signals, LOOP_DIMENSION};
-use super::outcome::{Event, Outcome, RunSummary, Touchdown};
-use super::setup::{build, SimulationError, StepStreams};
+use std::collections::VecDeque;
+
+use super::closed_loop::{ClosedLoop, HeldInputs, HeldLoop, StepStreams};
+use super::events::EventDetector;
+use super::outcome::{Divergence, EndReason, Event, LandingRules, RunSummary};
+use super::recorder::{GlidePathStatistics, Recorder};
+use super::setup::{build, SetupError};
+use super::signals::Signals;
+use super::taps::{NoTaps, Taps};
 use crate::aircraft::{ALPHA_MAX_RAD, ALPHA_MIN_RAD};
-use crate::integration::rk4_step_from;
-use crate::recording::Recorder;
-use crate::scenario::{OutcomeLimits, Scenario};
+use crate::integration::Rk4Workspace;
+use crate::scenario::Scenario;
 
-/// One run of a scenario. The simulation owns the loop; a [`Recorder`] watches it.
+/// Why [`Simulation::step`] returned.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Stop {
+    /// One step was taken; nothing happened.
+    Running,
+    /// An event was found inside the last step; the run goes on.
+    Event(Event),
+    /// The run has ended, for this reason; [`Simulation::summary`] holds the result.
+    Ended(EndReason),
+}
+
+/// One run of a scenario. The simulation owns the loop; recorders watch it.
 #[derive(Debug, Clone)]
 pub struct Simulation {
     system: ClosedLoop,
-    state: [f64; LOOP_DIMENSION],
+    state: Vec<f64>,
+    k1: Vec<f64>,
+    workspace: Rk4Workspace,
+    streams: StepStreams,
+    held: HeldInputs,
     time_s: f64,
+    step: u64,
     dt: f64,
     end_time_s: f64,
-    streams: StepStreams,
-    limits: OutcomeLimits,
-    airspeed_mps: f64,
-}
-
-/// Running sums of the glide-path error.
-#[derive(Debug, Clone, Copy, Default)]
-struct ErrorStatistics {
-    count: u64,
-    sum_squares: f64,
-    max_abs: f64,
-}
-
-impl ErrorStatistics {
-    fn add(&mut self, error: f64) {
-        self.count += 1;
-        self.sum_squares += error * error;
-        self.max_abs = self.max_abs.max(error.abs());
-    }
-
-    fn rms(&self) -> Option<f64> {
-        (self.count > 0).then(|| (self.sum_squares / self.count as f64).sqrt())
-    }
-
-    fn max(&self) -> Option<f64> {
-        (self.count > 0).then_some(self.max_abs)
-    }
-}
-
-/// The hook relative to the ship at one instant, for event detection.
-#[derive(Debug, Clone, Copy)]
-struct HookProbe {
-    time_s: f64,
-    /// Hook x minus ramp x (m): crosses zero at the ramp.
-    past_ramp_m: f64,
-    /// Hook height above the ramp (m).
-    above_ramp_m: f64,
-    /// Hook height above the deck plane under it (m).
-    above_deck_m: f64,
-    /// Hook position along the deck from the aim point (m).
-    along_deck_m: f64,
-    /// Hook sink rate relative to the deck point under it (m/s, positive down).
-    sink_rate_mps: f64,
-    theta_rad: f64,
-    airspeed_mps: f64,
-}
-
-impl HookProbe {
-    fn new(system: &ClosedLoop, s: &Signals) -> Self {
-        let deck = &system.deck;
-        let ramp = deck.ramp(&s.ship);
-        let along_deck_m = deck.distance_along_deck(&s.ship, s.hook_x_m);
-        let deck_velocity = deck.velocity_along_deck(&s.ship, &s.ship_rate, along_deck_m);
-        Self {
-            time_s: s.time_s,
-            past_ramp_m: s.hook_x_m - ramp.x_m,
-            above_ramp_m: s.hook_h_m - ramp.h_m,
-            above_deck_m: s.hook_h_m - deck.deck_plane_height(&s.ship, s.hook_x_m),
-            along_deck_m,
-            sink_rate_mps: deck_velocity.h_mps - s.hook_climb_rate_mps,
-            theta_rad: s.theta_rad,
-            airspeed_mps: s.airspeed_mps,
-        }
-    }
-}
-
-fn lerp(a: f64, b: f64, f: f64) -> f64 {
-    a + (b - a) * f
-}
-
-/// What the loop decided after looking at a step.
-enum Verdict {
-    Continue,
-    End {
-        outcome: Outcome,
-        reason: Option<String>,
-        touchdown: Option<Touchdown>,
-        wire: Option<u8>,
-        time_s: f64,
-    },
+    min_airspeed_mps: f64,
+    rules: LandingRules,
+    detector: EventDetector,
+    statistics: GlidePathStatistics,
+    ramp_clearance_m: Option<f64>,
+    pending: VecDeque<Stop>,
+    summary: Option<RunSummary>,
+    end: Option<EndReason>,
 }
 
 impl Simulation {
-    /// Sets up a run of `scenario`: validates it, trims, linearises, builds the controllers.
-    pub fn new(scenario: &Scenario) -> Result<Self, SimulationError> {
-        let setup = build(scenario)?;
-        Ok(Self {
+    /// Sets up a run of `scenario`: validates it, trims, linearises, builds the loop.
+    pub fn new(scenario: &Scenario) -> Result<Self, SetupError> {
+        Ok(Self::from_setup(build(scenario, None)?, scenario))
+    }
+
+    /// As [`Simulation::new`], with `pitch_law` flying instead of the scenario's
+    /// (a user's own law; see `examples/custom_pitch_law.rs`).
+    pub fn with_pitch_law(
+        scenario: &Scenario,
+        pitch_law: &super::PitchLawFactory,
+    ) -> Result<Self, SetupError> {
+        Ok(Self::from_setup(
+            build(scenario, Some(pitch_law))?,
+            scenario,
+        ))
+    }
+
+    fn from_setup(setup: super::setup::Setup, scenario: &Scenario) -> Self {
+        let dimension = setup.initial.len();
+        let deck = setup.system.deck;
+        Self {
             system: setup.system,
-            state: setup.initial.to_array(),
+            state: setup.initial,
+            k1: vec![0.0; dimension],
+            workspace: Rk4Workspace::new(dimension),
+            streams: setup.streams,
+            held: HeldInputs::default(),
             time_s: 0.0,
+            step: 0,
             dt: scenario.time_step_s,
             end_time_s: setup.end_time_s,
-            streams: setup.streams,
-            limits: scenario.outcome,
-            airspeed_mps: setup.initial_airspeed_mps,
-        })
+            min_airspeed_mps: scenario.outcome.min_airspeed_mps,
+            rules: LandingRules::new(&scenario.outcome, deck.wire_positions_m),
+            detector: EventDetector::new(deck),
+            statistics: GlidePathStatistics::default(),
+            ramp_clearance_m: None,
+            pending: VecDeque::with_capacity(4),
+            summary: None,
+            end: None,
+        }
     }
 
     /// The closed-loop system (models and controllers) the run integrates.
@@ -120,230 +101,200 @@ impl Simulation {
         &self.system
     }
 
-    /// The current state.
-    pub fn state(&self) -> LoopState {
-        LoopState::from_array(&self.state)
+    /// The current state vector (see [`ClosedLoop::layout`] for its blocks).
+    pub fn state(&self) -> &[f64] {
+        &self.state
+    }
+
+    /// The current simulated time (s).
+    pub fn time_s(&self) -> f64 {
+        self.time_s
+    }
+
+    /// The integration step (s).
+    pub fn time_step_s(&self) -> f64 {
+        self.dt
+    }
+
+    /// The signals at the current time and state, with the inputs held over the last
+    /// step (for an observation between steps; the run loop computes its own).
+    pub fn signals(&self) -> Signals {
+        let mut rate = vec![0.0; self.state.len()];
+        self.system
+            .evaluate(self.time_s, &self.state, &self.held, &NoTaps, &mut rate)
+    }
+
+    /// Draws the inputs held over the coming step and keeps them for
+    /// [`Simulation::signals`] (for analyses that evaluate the loop outside a run).
+    pub(crate) fn hold_inputs_now(&mut self) -> HeldInputs {
+        self.held = self
+            .system
+            .hold(self.time_s, &self.state, &mut self.streams, self.dt);
+        self.held
+    }
+
+    /// The result, once the run has ended.
+    pub fn summary(&self) -> Option<&RunSummary> {
+        self.summary.as_ref()
+    }
+
+    /// Why the run ended, once it has.
+    pub fn end_reason(&self) -> Option<&EndReason> {
+        self.end.as_ref()
     }
 
     /// Runs to the end, handing signals and events to `recorder`, and returns the summary.
     pub fn run<R: Recorder + ?Sized>(mut self, recorder: &mut R) -> RunSummary {
-        let interval = recorder.sample_interval_steps();
-        let approach = matches!(self.system.mode, LoopMode::Approach);
-        let mut statistics = ErrorStatistics::default();
-        let mut previous: Option<HookProbe> = None;
-        let mut ramp_clearance_m = None;
-        let mut step: u64 = 0;
         loop {
-            self.system.held = self.draw_held_inputs();
-            let (k1, signals) = self.system.evaluate(self.time_s, &self.state);
-            let due = interval > 0 && step % interval as u64 == 0;
-            let mut verdict = self.check_state(&signals);
-            if approach && matches!(verdict, Verdict::Continue) {
-                statistics.add(signals.glide_path_error_m);
-                // Events can only happen near the ship: probe the hook against the deck
-                // geometry (several trigonometric calls) only within reach of the ramp.
-                if self.near_the_ship(&signals) {
-                    let probe = HookProbe::new(&self.system, &signals);
-                    if let Some(before) = previous {
-                        verdict =
-                            self.check_events(&before, &probe, &mut ramp_clearance_m, recorder);
-                    }
-                    previous = Some(probe);
-                }
+            if let Stop::Ended(_) = self.step_with(recorder, &NoTaps) {
+                return self
+                    .summary
+                    .take()
+                    .expect("an ended run always has a summary");
             }
-            if matches!(verdict, Verdict::Continue)
-                && self.time_s >= self.end_time_s - 0.5 * self.dt
-            {
-                verdict = Verdict::End {
-                    outcome: if approach {
-                        Outcome::Timeout
-                    } else {
-                        Outcome::Completed
-                    },
-                    reason: approach
-                        .then(|| format!("no touchdown within {:.1} s", self.end_time_s)),
-                    touchdown: None,
-                    wire: None,
-                    time_s: self.time_s,
-                };
-            }
-            if due || !matches!(verdict, Verdict::Continue) {
-                recorder.sample(&signals);
-            }
-            if let Verdict::End {
-                outcome,
-                reason,
-                touchdown,
-                wire,
-                time_s,
-            } = verdict
-            {
-                let summary = RunSummary {
-                    outcome,
-                    wire,
-                    reason,
-                    end_time_s: time_s,
-                    steps: step,
-                    touchdown,
-                    ramp_clearance_m,
-                    glide_path_error_rms_m: statistics.rms(),
-                    glide_path_error_max_m: statistics.max(),
-                };
-                recorder.finish(&summary);
-                return summary;
-            }
-            self.state = rk4_step_from(&self.system, self.time_s, &self.state, &k1, self.dt);
-            step += 1;
-            self.time_s = step as f64 * self.dt;
-            self.airspeed_mps = signals.airspeed_mps;
-            self.system.wind.advance(self.dt, self.airspeed_mps);
         }
     }
 
-    /// Whether the hook is within 200 m of the ramp's mean position (or past it), where a
-    /// ramp crossing or touchdown could follow within a step or two.
-    fn near_the_ship(&self, s: &Signals) -> bool {
-        let deck = &self.system.deck;
-        let ramp_aft_of_pitch_centre_m =
-            deck.landing_point_aft_of_pitch_centre_m + deck.ramp_aft_of_aim_point_m;
-        s.ship.pitch_centre_x_m - ramp_aft_of_pitch_centre_m - s.hook_x_m < 200.0
+    /// Advances the run by one integration step with the loop as built.
+    pub fn step<R: Recorder + ?Sized>(&mut self, recorder: &mut R) -> Stop {
+        self.step_with(recorder, &NoTaps)
     }
 
-    /// Random inputs for the coming step, each from its own stream (MODEL.md §3.4).
-    fn draw_held_inputs(&mut self) -> HeldInputs {
-        let (wind, deck) = self.system.step_samples(self.time_s, &self.state);
-        HeldInputs {
-            ship_noise: self.system.ship.draw_noise(
-                &mut self.streams.ship_heave,
-                &mut self.streams.ship_pitch,
-                self.dt,
-            ),
-            pitch_noise_rad: self.system.sensor.draw_white_noise()
-                + self.system.sensor.sinusoid(self.time_s),
-            wind: Some(wind),
-            deck,
+    /// Advances the run by one integration step, the commands passed through `taps`
+    /// (for example replaced by [`super::Overrides`]). Events found in a step are
+    /// returned one per call, the run advancing only once they have all been returned;
+    /// after the end every call returns the end again.
+    pub fn step_with<R: Recorder + ?Sized, T: Taps>(&mut self, recorder: &mut R, taps: &T) -> Stop {
+        if let Some(stop) = self.pending.pop_front() {
+            return stop;
+        }
+        if let Some(end) = &self.end {
+            return Stop::Ended(end.clone());
+        }
+        let t = self.time_s;
+        self.held = self.system.hold(t, &self.state, &mut self.streams, self.dt);
+        let signals = self
+            .system
+            .evaluate(t, &self.state, &self.held, taps, &mut self.k1);
+        let approach = self.system.outer.is_approach();
+        let mut end = self.check_state(&signals);
+        if approach && end.is_none() {
+            self.statistics.sample(&signals);
+            for event in self.detector.detect(&signals).iter() {
+                if let Event::RampCrossing { clearance_m, .. } = event {
+                    self.ramp_clearance_m = Some(*clearance_m);
+                }
+                recorder.event(event);
+                self.pending.push_back(Stop::Event(*event));
+                if let Some(reason) = self.rules.judge(event) {
+                    end = Some((reason, event_time(event)));
+                    break;
+                }
+            }
+        }
+        if end.is_none() && t >= self.end_time_s - 0.5 * self.dt {
+            let reason = if approach {
+                EndReason::TimeLimit {
+                    limit_s: self.end_time_s,
+                }
+            } else {
+                EndReason::Completed
+            };
+            end = Some((reason, t));
+        }
+        if self.sample_due(recorder) || end.is_some() {
+            recorder.sample(&signals);
+        }
+        if let Some((reason, end_time_s)) = end {
+            let touchdown = self.pending.iter().find_map(|stop| match stop {
+                Stop::Event(Event::Touchdown(touchdown)) => Some(*touchdown),
+                _ => None,
+            });
+            let summary = RunSummary {
+                outcome: reason.outcome(),
+                wire: reason.wire(),
+                reason: reason.description(),
+                end_time_s,
+                steps: self.step,
+                touchdown,
+                ramp_clearance_m: self.ramp_clearance_m,
+                glide_path_error_rms_m: self.statistics.rms_m(),
+                glide_path_error_max_m: self.statistics.max_m(),
+            };
+            recorder.finish(&summary);
+            self.summary = Some(summary);
+            self.end = Some(reason.clone());
+            self.pending.push_back(Stop::Ended(reason));
+            return self.pending.pop_front().unwrap_or(Stop::Running);
+        }
+        let stage = HeldLoop {
+            system: &self.system,
+            held: &self.held,
+            taps,
+        };
+        self.workspace
+            .step_from(&stage, t, &mut self.state, &self.k1, self.dt);
+        self.step += 1;
+        self.time_s = self.step as f64 * self.dt;
+        self.system.advance_discrete(self.dt, signals.airspeed_mps);
+        self.pending.pop_front().unwrap_or(Stop::Running)
+    }
+
+    /// Whether `recorder` samples at this step.
+    fn sample_due<R: Recorder + ?Sized>(&self, recorder: &R) -> bool {
+        match recorder.sample_interval_s() {
+            None => false,
+            Some(interval_s) => {
+                let every = ((interval_s / self.dt).round() as u64).max(1);
+                self.step % every == 0
+            }
         }
     }
 
     /// Stop conditions on the state itself (MODEL.md §6).
-    fn check_state(&self, s: &Signals) -> Verdict {
-        let diverged = |reason: String| Verdict::End {
-            outcome: Outcome::Diverged,
-            reason: Some(reason),
-            touchdown: None,
-            wire: None,
-            time_s: s.time_s,
-        };
-        if self.state.iter().any(|v| !v.is_finite()) {
-            return diverged(format!("non-finite state at t = {:.3} s", s.time_s));
+    fn check_state(&self, s: &Signals) -> Option<(EndReason, f64)> {
+        let t = s.time_s;
+        let diverged = |divergence| Some((EndReason::Diverged(divergence), t));
+        // v·0 is NaN exactly when v is NaN or infinite: one pass, no branch per state.
+        let poisoned = self.state.iter().fold(0.0, |sum, v| sum + v * 0.0);
+        if let Some(index) = poisoned
+            .is_nan()
+            .then(|| self.state.iter().position(|v| !v.is_finite()))
+            .flatten()
+        {
+            let state = self
+                .system
+                .layout
+                .states
+                .state_name(index)
+                .unwrap_or_else(|| format!("#{index}"));
+            return diverged(Divergence::NonFiniteState { time_s: t, state });
         }
         if !(ALPHA_MIN_RAD..=ALPHA_MAX_RAD).contains(&s.alpha_rad) {
-            return diverged(format!(
-                "angle of attack {:.1}° outside the aerodynamic model's range {:.0}°…{:.0}° at t = {:.3} s",
-                s.alpha_rad.to_degrees(),
-                ALPHA_MIN_RAD.to_degrees(),
-                ALPHA_MAX_RAD.to_degrees(),
-                s.time_s
-            ));
+            return diverged(Divergence::AngleOfAttack {
+                time_s: t,
+                alpha_rad: s.alpha_rad,
+                range_rad: (ALPHA_MIN_RAD, ALPHA_MAX_RAD),
+            });
         }
-        if s.airspeed_mps < self.limits.min_airspeed_mps {
-            return diverged(format!(
-                "airspeed {:.1} m/s below the limit {:.1} m/s at t = {:.3} s",
-                s.airspeed_mps, self.limits.min_airspeed_mps, s.time_s
-            ));
+        if s.airspeed_mps < self.min_airspeed_mps {
+            return diverged(Divergence::Airspeed {
+                time_s: t,
+                airspeed_mps: s.airspeed_mps,
+                limit_mps: self.min_airspeed_mps,
+            });
         }
         if s.hook_h_m < 0.0 {
-            return diverged(format!("hook below sea level at t = {:.3} s", s.time_s));
+            return diverged(Divergence::HookBelowSea { time_s: t });
         }
-        Verdict::Continue
+        None
     }
+}
 
-    /// Ramp crossing, touchdown and fly-over between two probes (MODEL.md §7).
-    fn check_events<R: Recorder + ?Sized>(
-        &self,
-        before: &HookProbe,
-        now: &HookProbe,
-        ramp_clearance_m: &mut Option<f64>,
-        recorder: &mut R,
-    ) -> Verdict {
-        if before.past_ramp_m < 0.0 && now.past_ramp_m >= 0.0 {
-            let f = before.past_ramp_m / (before.past_ramp_m - now.past_ramp_m);
-            let clearance_m = lerp(before.above_ramp_m, now.above_ramp_m, f);
-            let time_s = lerp(before.time_s, now.time_s, f);
-            *ramp_clearance_m = Some(clearance_m);
-            recorder.event(&Event::RampCrossing {
-                time_s,
-                clearance_m,
-            });
-            if clearance_m < 0.0 {
-                return Verdict::End {
-                    outcome: Outcome::RampStrike,
-                    reason: Some(format!("hook {:.2} m below the ramp", -clearance_m)),
-                    touchdown: None,
-                    wire: None,
-                    time_s,
-                };
-            }
-        }
-        if now.past_ramp_m >= 0.0 && before.above_deck_m > 0.0 && now.above_deck_m <= 0.0 {
-            let f = before.above_deck_m / (before.above_deck_m - now.above_deck_m);
-            let touchdown = Touchdown {
-                time_s: lerp(before.time_s, now.time_s, f),
-                distance_from_aim_m: lerp(before.along_deck_m, now.along_deck_m, f),
-                sink_rate_mps: lerp(before.sink_rate_mps, now.sink_rate_mps, f),
-                pitch_deg: lerp(before.theta_rad, now.theta_rad, f).to_degrees(),
-                airspeed_mps: lerp(before.airspeed_mps, now.airspeed_mps, f),
-            };
-            recorder.event(&Event::Touchdown(touchdown));
-            let wires = &self.system.deck.wire_positions_m;
-            let wire = wires
-                .iter()
-                .position(|&w| w >= touchdown.distance_from_aim_m)
-                .map(|i| i as u8 + 1);
-            let (outcome, reason) =
-                if touchdown.sink_rate_mps > self.limits.hard_landing_sink_rate_mps {
-                    (
-                        Outcome::HardLanding,
-                        Some(format!(
-                            "touchdown sink rate {:.2} m/s above the limit {:.2} m/s",
-                            touchdown.sink_rate_mps, self.limits.hard_landing_sink_rate_mps
-                        )),
-                    )
-                } else if wire.is_some() {
-                    (Outcome::Trap, None)
-                } else {
-                    (
-                        Outcome::Bolter,
-                        Some(format!(
-                            "touchdown {:.1} m beyond the aim point, past the last wire",
-                            touchdown.distance_from_aim_m
-                        )),
-                    )
-                };
-            return Verdict::End {
-                outcome,
-                reason,
-                touchdown: Some(touchdown),
-                wire,
-                time_s: touchdown.time_s,
-            };
-        }
-        let last_wire = self.system.deck.wire_positions_m[3];
-        if before.along_deck_m <= last_wire
-            && now.along_deck_m > last_wire
-            && now.above_deck_m > 0.0
-        {
-            return Verdict::End {
-                outcome: Outcome::Bolter,
-                reason: Some(format!(
-                    "flew over the last wire {:.1} m above the deck",
-                    now.above_deck_m
-                )),
-                touchdown: None,
-                wire: None,
-                time_s: now.time_s,
-            };
-        }
-        Verdict::Continue
+/// The time of an event (s).
+fn event_time(event: &Event) -> f64 {
+    match event {
+        Event::RampCrossing { time_s, .. } | Event::PassedLastWire { time_s, .. } => *time_s,
+        Event::Touchdown(touchdown) => touchdown.time_s,
     }
 }

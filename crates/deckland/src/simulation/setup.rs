@@ -1,218 +1,46 @@
 //! Building the closed loop from a scenario: models, trim, linearisation, controllers and
 //! the initial state.
 
-use super::closed_loop::{ClosedLoop, HeldInputs, LoopMode, LoopState};
-use crate::aircraft::{Aircraft, AircraftError, AircraftState};
-use crate::analysis::{linearize, trim, TrimError, TrimPoint, TrimRequest};
-use crate::control::pitch::{PitchController, PitchPlantDerivatives};
-use crate::control::{ControlError, DeckMotionFilter, FlightPathGenerator, SpeedController};
-use crate::environment::{
-    mean_wind, EnvironmentError, ShipMotion, ShipMotionPredictor, Wind, WindModel,
+use super::closed_loop::{ClosedLoop, LoopLayout, StepStreams};
+use super::deck_prediction::{DeckPredictor, DeckView};
+use super::outer_loops::OuterLoops;
+use crate::aircraft::{linearize, trim, Aircraft, TrimError, TrimPoint, TrimRequest};
+use crate::control::pitch::{
+    BuiltPitchLaw, PitchDesignContext, PitchLaw, PitchLawInputs, PitchPlantDerivatives,
 };
-use crate::random::{stream_names, NoiseStream, RandomStreams};
+use crate::control::{
+    CommandRamp, DeckMotionFilter, DeckMotionPredictor, FlightPathGenerator, SpeedController,
+};
+use crate::environment::{
+    mean_wind, ShipMotion, ShipMotionPredictor, ShipMotionState, Wind, WindModel,
+};
+use crate::parameters::ParameterError;
+use crate::random::{stream_names, RandomStreams};
 use crate::scenario::{Mission, Scenario};
 use crate::sensors::PitchSensor;
 
+/// Builds a user's own pitch law for the plant and hardware of a run (called once per
+/// run, after trim, so that a campaign can fly it over dispersed scenarios).
+pub type PitchLawFactory =
+    dyn Fn(&PitchDesignContext) -> Result<Box<dyn PitchLaw>, ParameterError> + Send + Sync;
+
 /// Why a simulation could not be set up.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum SimulationError {
-    /// An aircraft parameter is invalid.
-    #[error("aircraft: {0}")]
-    Aircraft(#[from] AircraftError),
-    /// An environment parameter is invalid.
-    #[error("environment: {0}")]
-    Environment(#[from] EnvironmentError),
-    /// A controller parameter is invalid.
-    #[error("control: {0}")]
-    Control(#[from] ControlError),
+pub enum SetupError {
+    /// A scenario value is outside its allowed range, or a controller cannot be built.
+    #[error("{0}")]
+    Parameter(#[from] ParameterError),
     /// The start condition cannot be trimmed.
     #[error("cannot trim the start condition: {0}")]
     Trim(#[from] TrimError),
-    /// A scenario value outside its allowed range.
-    #[error("scenario field `{field}` = {value} is out of range: expected {expected}")]
-    OutOfRange {
-        /// The field's path in the scenario.
-        field: &'static str,
-        /// The offending value.
-        value: f64,
-        /// The allowed range, in words.
-        expected: &'static str,
-    },
-}
-
-fn check_range(
-    field: &'static str,
-    value: f64,
-    min: f64,
-    max: f64,
-    expected: &'static str,
-) -> Result<(), SimulationError> {
-    if value.is_finite() && value >= min && value <= max {
-        Ok(())
-    } else {
-        Err(SimulationError::OutOfRange {
-            field,
-            value,
-            expected,
-        })
-    }
-}
-
-/// The checks shared by the fixed-length missions (pitch step, sink rate).
-fn check_timed_mission(
-    step_time_s: f64,
-    duration_s: f64,
-    altitude_m: f64,
-) -> Result<(), SimulationError> {
-    check_range(
-        "mission.duration_s",
-        duration_s,
-        0.1,
-        3600.0,
-        "a duration between 0.1 and 3600 s",
-    )?;
-    check_range(
-        "mission.step_time_s",
-        step_time_s,
-        0.0,
-        duration_s,
-        "a time within the run",
-    )?;
-    check_range(
-        "mission.altitude_m",
-        altitude_m,
-        30.0,
-        10_000.0,
-        "an altitude between 30 and 10000 m",
-    )
-}
-
-impl Scenario {
-    /// Checks every field; the error names the first bad one.
-    pub fn validate(&self) -> Result<(), SimulationError> {
-        check_range(
-            "time_step_s",
-            self.time_step_s,
-            1e-5,
-            0.01,
-            "a step between 0.00001 and 0.01 s",
-        )?;
-        check_range(
-            "max_time_s",
-            self.max_time_s,
-            1.0,
-            3600.0,
-            "a limit between 1 and 3600 s",
-        )?;
-        check_range(
-            "approach.start_range_m",
-            self.approach.start_range_m,
-            200.0,
-            10_000.0,
-            "a range between 200 and 10000 m",
-        )?;
-        check_range(
-            "approach.airspeed_mps",
-            self.approach.airspeed_mps,
-            40.0,
-            150.0,
-            "an airspeed between 40 and 150 m/s",
-        )?;
-        check_range(
-            "approach.start_height_offset_m",
-            self.approach.start_height_offset_m,
-            -50.0,
-            50.0,
-            "an offset between -50 and 50 m",
-        )?;
-        check_range(
-            "outcome.hard_landing_sink_rate_mps",
-            self.outcome.hard_landing_sink_rate_mps,
-            0.0,
-            50.0,
-            "a sink rate between 0 and 50 m/s",
-        )?;
-        check_range(
-            "outcome.min_airspeed_mps",
-            self.outcome.min_airspeed_mps,
-            0.0,
-            100.0,
-            "an airspeed between 0 and 100 m/s",
-        )?;
-        match self.mission {
-            Mission::Approach => {}
-            Mission::PitchStep {
-                step_deg,
-                step_time_s,
-                duration_s,
-                start_distance_aft_m,
-                altitude_m,
-            } => {
-                check_range(
-                    "mission.step_deg",
-                    step_deg,
-                    -20.0,
-                    20.0,
-                    "a step between -20 and 20 deg",
-                )?;
-                check_range(
-                    "mission.start_distance_aft_m",
-                    start_distance_aft_m,
-                    -10_000.0,
-                    20_000.0,
-                    "a distance between -10000 and 20000 m",
-                )?;
-                check_timed_mission(step_time_s, duration_s, altitude_m)?;
-            }
-            Mission::SinkRate {
-                sink_rate_mps,
-                step_time_s,
-                ramp_s,
-                duration_s,
-                altitude_m,
-            } => {
-                check_range(
-                    "mission.sink_rate_mps",
-                    sink_rate_mps,
-                    -20.0,
-                    20.0,
-                    "a sink rate between -20 and 20 m/s",
-                )?;
-                check_range(
-                    "mission.ramp_s",
-                    ramp_s,
-                    0.0,
-                    duration_s,
-                    "a ramp time within the run",
-                )?;
-                check_timed_mission(step_time_s, duration_s, altitude_m)?;
-            }
-        }
-        self.aircraft.hook.validate()?;
-        self.environment.validate()?;
-        let control = &self.control;
-        control.speed.validate()?;
-        control.sink_rate.validate()?;
-        control.guidance.validate()?;
-        control.flight_path.validate()?;
-        Ok(())
-    }
-}
-
-/// The random streams a run draws from step by step.
-#[derive(Debug, Clone)]
-pub(crate) struct StepStreams {
-    pub ship_heave: NoiseStream,
-    pub ship_pitch: NoiseStream,
 }
 
 /// Everything [`super::Simulation`] needs to start.
 pub(crate) struct Setup {
     pub system: ClosedLoop,
-    pub initial: LoopState,
+    pub initial: Vec<f64>,
     pub streams: StepStreams,
     pub end_time_s: f64,
-    pub initial_airspeed_mps: f64,
 }
 
 /// The air-relative flight-path angle that gives an inertial glide slope `slope_rad`
@@ -234,7 +62,77 @@ pub fn approach_flight_path_angle(
     gamma
 }
 
-pub(crate) fn build(scenario: &Scenario) -> Result<Setup, SimulationError> {
+/// The outer loops of the scenario's mission, the flight-path angle to trim for and the
+/// run's length (s).
+fn outer_loops(
+    scenario: &Scenario,
+    aircraft: &Aircraft,
+    steady_wind: &Wind,
+) -> Result<(OuterLoops, f64, f64), SetupError> {
+    let control = &scenario.control;
+    let airspeed = scenario.approach.airspeed_mps;
+    Ok(match scenario.mission {
+        Mission::Approach => {
+            let slope = control.flight_path.glide_slope_deg.to_radians();
+            let gamma = approach_flight_path_angle(
+                airspeed,
+                slope,
+                steady_wind,
+                scenario.environment.ship.forward_speed_mps,
+            );
+            let loops = OuterLoops::Approach {
+                flight_path: FlightPathGenerator::new(control.flight_path)?,
+                guidance: control.guidance.controller(),
+                sink_rate: control.sink_rate.controller(),
+            };
+            (loops, gamma, scenario.max_time_s)
+        }
+        Mission::PitchStep {
+            step_deg,
+            step_time_s,
+            duration_s,
+            ..
+        } => {
+            let loops = OuterLoops::PitchStep {
+                step_rad: step_deg.to_radians(),
+                step_time_s,
+            };
+            (loops, 0.0, duration_s)
+        }
+        Mission::SinkRate {
+            sink_rate_mps,
+            step_time_s,
+            ramp_s,
+            duration_s,
+            ..
+        } => {
+            let descent = trim(
+                aircraft,
+                &TrimRequest {
+                    speed_mps: airspeed,
+                    flight_path_angle_rad: -(sink_rate_mps / airspeed).clamp(-1.0, 1.0).asin(),
+                },
+            )?;
+            let loops = OuterLoops::ClimbRate {
+                climb_rate_mps: -sink_rate_mps,
+                ramp: CommandRamp {
+                    start_s: step_time_s,
+                    ramp_s,
+                },
+                theta_feedforward_rad: descent.theta_rad,
+                sink_rate: control.sink_rate.controller(),
+            };
+            (loops, 0.0, duration_s)
+        }
+    })
+}
+
+/// Builds the loop for `scenario`, with `pitch_law` flying instead of the scenario's
+/// pitch law when given.
+pub(crate) fn build(
+    scenario: &Scenario,
+    pitch_law: Option<&PitchLawFactory>,
+) -> Result<Setup, SetupError> {
     scenario.validate()?;
     let section = &scenario.aircraft;
     let aircraft = Aircraft::new(
@@ -259,54 +157,8 @@ pub(crate) fn build(scenario: &Scenario) -> Result<Setup, SimulationError> {
     let airspeed = scenario.approach.airspeed_mps;
     let deck = env.deck;
     let ship_initial_x_m = deck.landing_point_aft_of_pitch_centre_m;
-    let flight_path = FlightPathGenerator::new(scenario.control.flight_path)?;
-    let slope = scenario.control.flight_path.glide_slope_deg.to_radians();
 
-    let (gamma, mode, end_time_s) = match scenario.mission {
-        Mission::Approach => (
-            approach_flight_path_angle(airspeed, slope, &steady_wind, env.ship.forward_speed_mps),
-            LoopMode::Approach,
-            scenario.max_time_s,
-        ),
-        Mission::PitchStep {
-            step_deg,
-            step_time_s,
-            duration_s,
-            ..
-        } => (
-            0.0,
-            LoopMode::PitchStep {
-                step_rad: step_deg.to_radians(),
-                step_time_s,
-            },
-            duration_s,
-        ),
-        Mission::SinkRate {
-            sink_rate_mps,
-            step_time_s,
-            ramp_s,
-            duration_s,
-            ..
-        } => {
-            let descent = trim(
-                &aircraft,
-                &TrimRequest {
-                    speed_mps: airspeed,
-                    flight_path_angle_rad: -(sink_rate_mps / airspeed).clamp(-1.0, 1.0).asin(),
-                },
-            )?;
-            (
-                0.0,
-                LoopMode::ClimbRate {
-                    climb_rate_mps: -sink_rate_mps,
-                    step_time_s,
-                    ramp_s,
-                    theta_feedforward_rad: descent.theta_rad,
-                },
-                duration_s,
-            )
-        }
-    };
+    let (outer, gamma, end_time_s) = outer_loops(scenario, &aircraft, &steady_wind)?;
     let trim_point: TrimPoint = trim(
         &aircraft,
         &TrimRequest {
@@ -315,17 +167,34 @@ pub(crate) fn build(scenario: &Scenario) -> Result<Setup, SimulationError> {
         },
     )?;
     let model = linearize(&aircraft, &trim_point);
-    let plant = PitchPlantDerivatives {
-        dqdot_dq_per_s: model.pitch_damping_per_s(),
-        dqdot_delevator_per_s2: model.elevator_effectiveness_per_s2(),
+    let context = PitchDesignContext {
+        plant: PitchPlantDerivatives {
+            dqdot_dq_per_s: model.pitch_damping_per_s(),
+            dqdot_delevator_per_s2: model.elevator_effectiveness_per_s2(),
+        },
+        actuator: section.elevator_actuator,
+        pitch_noise: env.pitch_noise,
+        time_step_s: scenario.time_step_s,
     };
-    let pitch = PitchController::new(&scenario.control.pitch, plant)?;
+    let pitch = match pitch_law {
+        None => scenario.control.pitch.build(&context)?,
+        Some(factory) => BuiltPitchLaw::Custom(factory(&context)?.into()),
+    };
     let speed = SpeedController::new(
         &scenario.control.speed,
         aircraft.parameters().mass_kg,
         trim_point.thrust_n,
         aircraft.engines().max_total_thrust_n(),
     );
+    let flight_path = &scenario.control.flight_path;
+    let deck_predictor = match flight_path.deck_motion_predictor {
+        DeckMotionPredictor::Model => DeckPredictor::Model(ShipMotionPredictor::new(
+            flight_path.compensation_window_s + flight_path.compensation_blend_s,
+        )),
+        DeckMotionPredictor::FilterLead => DeckPredictor::FilterLead(DeckMotionFilter::new(
+            flight_path.deck_filter_frequency_radps,
+        )),
+    };
 
     // Initial position.
     let hook = section.hook;
@@ -334,6 +203,7 @@ pub(crate) fn build(scenario: &Scenario) -> Result<Setup, SimulationError> {
     let (x_m, h_m) = match scenario.mission {
         Mission::Approach => {
             let range = scenario.approach.start_range_m;
+            let slope = flight_path.glide_slope_deg.to_radians();
             let hook_x = -range;
             let hook_h =
                 deck.deck_height_m + range * slope.tan() + scenario.approach.start_height_offset_m;
@@ -346,23 +216,39 @@ pub(crate) fn build(scenario: &Scenario) -> Result<Setup, SimulationError> {
         } => (ship_initial_x_m - start_distance_aft_m, altitude_m),
         Mission::SinkRate { altitude_m, .. } => (ship_initial_x_m - 20_000.0, altitude_m),
     };
-    let aircraft_state: AircraftState = trim_point.state(x_m, h_m, &steady_wind);
-    let pitch_state = pitch.initial_state(trim_point.theta_rad, trim_point.theta_rad);
-    let (pose, pose_rate) = (
-        ship.pose(&ship_state, ship_initial_x_m, 0.0),
-        ship.pose_rate(&ship_state),
-    );
-    let initial = LoopState {
-        aircraft: aircraft_state,
-        ship: ship_state,
-        pitch_controller: pitch_state.to_array(),
-        deck_estimate: [
-            deck.aim_point(&pose).h_m,
-            deck.velocity_along_deck(&pose, &pose_rate, 0.0).h_mps,
-        ],
-        ..Default::default()
+
+    let layout = LoopLayout::new(pitch.state_names(), deck_predictor.state_names());
+    let mut initial = vec![0.0; layout.dimension()];
+    layout
+        .aircraft
+        .of_mut(&mut initial)
+        .copy_from_slice(&trim_point.state(x_m, h_m, &steady_wind).to_array());
+    layout
+        .ship
+        .of_mut(&mut initial)
+        .copy_from_slice(&ship_state.to_array());
+    let trim_inputs = PitchLawInputs {
+        theta_ref_rad: trim_point.theta_rad,
+        theta_measured_rad: trim_point.theta_rad,
+        elevator_actual_rad: trim_point.elevator_rad,
+        theta_trim_rad: trim_point.theta_rad,
+        elevator_trim_rad: trim_point.elevator_rad,
+        ..PitchLawInputs::default()
     };
+    pitch.initial_state(&trim_inputs, layout.pitch_law.of_mut(&mut initial));
+    let pose = ship.pose(&ship_state, ship_initial_x_m, 0.0);
+    let pose_rate = ship.pose_rate(&ship_state);
+    let view = DeckView {
+        ship_model: &ship,
+        ship_state: &ShipMotionState::from_slice(layout.ship.of(&initial)),
+        deck: &deck,
+        pose: &pose,
+        rate: &pose_rate,
+    };
+    deck_predictor.initial_state(&view, layout.deck_predictor.of_mut(&mut initial));
+
     let system = ClosedLoop {
+        layout,
         aircraft,
         hook,
         ship,
@@ -370,23 +256,12 @@ pub(crate) fn build(scenario: &Scenario) -> Result<Setup, SimulationError> {
         ship_initial_x_m,
         wind,
         sensor,
+        deck_predictor,
         pitch,
         speed,
-        sink_rate: scenario.control.sink_rate.controller(),
-        guidance: scenario.control.guidance.controller(),
-        flight_path,
-        deck_filter: DeckMotionFilter::new(
-            scenario.control.flight_path.deck_filter_frequency_radps,
-        ),
-        predictor: ShipMotionPredictor::new(
-            scenario.control.flight_path.compensation_window_s
-                + scenario.control.flight_path.compensation_blend_s,
-        ),
+        outer,
         trim: trim_point,
         airspeed_reference_mps: airspeed,
-        mode,
-        held: HeldInputs::default(),
-        loop_break: None,
     };
     Ok(Setup {
         system,
@@ -396,6 +271,5 @@ pub(crate) fn build(scenario: &Scenario) -> Result<Setup, SimulationError> {
             ship_pitch,
         },
         end_time_s,
-        initial_airspeed_mps: airspeed,
     })
 }

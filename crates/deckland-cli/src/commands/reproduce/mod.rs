@@ -22,8 +22,8 @@ use deckland::analysis::{
     OpenLoopSample, TrimPoint, TrimRequest,
 };
 use deckland::control::pitch::ObserverPdGains;
-use deckland::environment::EnvironmentParameters;
 use deckland::recording::{SummaryRecorder, TimeSeriesRecorder};
+use deckland::scenario::EnvironmentSection;
 use deckland::simulation::{Outcome, RunSummary, Simulation};
 use indicatif::{ProgressBar, ProgressStyle};
 use nalgebra::SMatrix;
@@ -142,7 +142,7 @@ pub(crate) struct Findings {
     /// nonlinear excursion, per state.
     pub(crate) open_loop_relative_error: [f64; 4],
     pub(crate) open_loop_excursion: [f64; 4],
-    pub(crate) environment: EnvironmentParameters,
+    pub(crate) environment: EnvironmentSection,
     pub(crate) heave_peak_m: f64,
     pub(crate) ship_pitch_peak_deg: f64,
     pub(crate) landing_point_peak_m: f64,
@@ -366,7 +366,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
 
     // Fig. 7, 8.
     progress.start("Fig. 7, 8 ship motion and wind");
-    let environment_parameters = EnvironmentParameters::default();
+    let environment_parameters = EnvironmentSection::default();
     environment_parameters.validate()?;
     let environment_args = EnvironmentArgs {
         seconds: lengths.environment_s,
@@ -486,7 +486,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
     progress.start("Fig. 14, 15 approach and landing");
     let mut scenario = Conditions::Adverse.scenario(SEED);
     scenario.control.pitch = ControllerChoice::Opd.parameters();
-    let mut recorder = TimeSeriesRecorder::new(10);
+    let mut recorder = TimeSeriesRecorder::every(0.01);
     let approach = Simulation::new(&scenario)
         .context("cannot set up the approach")?
         .run(&mut recorder);

@@ -13,8 +13,11 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::inputs::{check_finite, ControlError, PitchControlInputs, PitchPlantDerivatives};
+use super::law::{
+    PitchDesignContext, PitchLaw, PitchLawDesign, PitchLawInputs, PitchPlantDerivatives,
+};
 use crate::estimation::{AugmentedObserver, ObserverParameters, ObserverState};
+use crate::parameters::{Bounds, ParameterError};
 
 /// Which pitch attitude the O-PD proportional term compares with θ_ref.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -67,6 +70,30 @@ impl Default for ObserverPdParameters {
     }
 }
 
+impl ObserverPdParameters {
+    /// Checks the design parameters (T_2% in [0.05, 30] s, ζ in [0.1, 5]) and the
+    /// observer, naming `section.key`.
+    pub fn validate(&self, section: &str) -> Result<(), ParameterError> {
+        Bounds::closed(0.05, 30.0).check(section, "settling_time_s", self.settling_time_s)?;
+        Bounds::closed(0.1, 5.0).check(section, "damping_ratio", self.damping_ratio)?;
+        self.observer
+            .validate_in(&crate::parameters::join(section, "observer"))
+    }
+}
+
+impl PitchLawDesign for ObserverPdParameters {
+    type Law = ObserverPdController;
+    const LABEL: &'static str = "O-PD";
+
+    fn validate(&self, section: &str) -> Result<(), ParameterError> {
+        ObserverPdParameters::validate(self, section)
+    }
+
+    fn build(&self, context: &PitchDesignContext) -> Result<ObserverPdController, ParameterError> {
+        ObserverPdController::new(self, context.plant)
+    }
+}
+
 /// O-PD equivalent-control gains (paper Eq. 30; K_P in 1/s², K_D in 1/s).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -85,18 +112,7 @@ impl ObserverPdGains {
         settling_time_s: f64,
         damping_ratio: f64,
         dqdot_dq_per_s: f64,
-    ) -> Result<Self, ControlError> {
-        check_finite("settling_time_s", settling_time_s)?;
-        check_finite("damping_ratio", damping_ratio)?;
-        check_finite("dqdot_dq_per_s", dqdot_dq_per_s)?;
-        for (field, value) in [
-            ("settling_time_s", settling_time_s),
-            ("damping_ratio", damping_ratio),
-        ] {
-            if value <= 0.0 {
-                return Err(ControlError::NonPositive { field, value });
-            }
-        }
+    ) -> Result<Self, ParameterError> {
         let natural_frequency_radps = 4.0 / (settling_time_s * damping_ratio);
         let gains = Self {
             proportional_per_s2: natural_frequency_radps * natural_frequency_radps,
@@ -107,9 +123,21 @@ impl ObserverPdGains {
     }
 
     /// Checks that both gains are finite.
-    pub fn validate(&self) -> Result<(), ControlError> {
-        check_finite("proportional_per_s2", self.proportional_per_s2)?;
-        check_finite("derivative_per_s", self.derivative_per_s)
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        for (key, value) in [
+            ("proportional_per_s2", self.proportional_per_s2),
+            ("derivative_per_s", self.derivative_per_s),
+        ] {
+            if !value.is_finite() {
+                return Err(ParameterError::new(
+                    "O-PD gains",
+                    key,
+                    value,
+                    "a finite gain",
+                ));
+            }
+        }
+        Ok(())
     }
 }
 
@@ -129,7 +157,8 @@ impl ObserverPdController {
     pub fn new(
         parameters: &ObserverPdParameters,
         plant: PitchPlantDerivatives,
-    ) -> Result<Self, ControlError> {
+    ) -> Result<Self, ParameterError> {
+        parameters.validate(super::PitchControllerParameters::SECTION)?;
         plant.validate()?;
         let gains = ObserverPdGains::design(
             parameters.settling_time_s,
@@ -145,7 +174,7 @@ impl ObserverPdController {
         observer: ObserverParameters,
         pitch_feedback: PitchFeedback,
         plant: PitchPlantDerivatives,
-    ) -> Result<Self, ControlError> {
+    ) -> Result<Self, ParameterError> {
         plant.validate()?;
         gains.validate()?;
         Ok(Self {
@@ -183,7 +212,7 @@ impl ObserverPdController {
     /// Elevator command δe = δe* + (U − x3)/(∂q̇/∂δe) (rad; paper Eq. 35–36), not
     /// limited: the actuator applies its position limits (MODEL.md §2.6).
     #[inline]
-    pub fn elevator_command_rad(&self, state: &ObserverState, inputs: &PitchControlInputs) -> f64 {
+    pub fn elevator_command_rad(&self, state: &ObserverState, inputs: &PitchLawInputs) -> f64 {
         let theta_rad = match self.pitch_feedback {
             PitchFeedback::Measured => inputs.theta_measured_rad,
             PitchFeedback::ObserverEstimate => inputs.theta_trim_rad + state.x1,
@@ -199,12 +228,62 @@ impl ObserverPdController {
     /// Observer derivative (MODEL.md §4) with y = θ_m − θ* and
     /// h_θ = (∂q̇/∂q)·x2 + (∂q̇/∂δe)·(δe_actual − δe*).
     #[inline]
-    pub fn derivative(&self, state: &ObserverState, inputs: &PitchControlInputs) -> ObserverState {
+    pub fn derivative(&self, state: &ObserverState, inputs: &PitchLawInputs) -> ObserverState {
         let measurement = inputs.theta_measured_rad - inputs.theta_trim_rad;
         let known_input = self.plant.dqdot_dq_per_s * state.x2
             + self.plant.dqdot_delevator_per_s2
                 * (inputs.elevator_actual_rad - inputs.elevator_trim_rad);
         self.observer.derivative(state, measurement, known_input)
+    }
+}
+
+/// The observer's state names: x1 = Δθ̂ (rad), x2 = Δq̂ (rad/s), x3 = d̂_θ (rad/s²).
+const STATE_NAMES: &[&str] = &[
+    "pitch_deviation_estimate_rad",
+    "pitch_rate_estimate_radps",
+    "disturbance_estimate_radps2",
+];
+
+#[inline]
+fn observer_state(state: &[f64]) -> ObserverState {
+    ObserverState {
+        x1: state[0],
+        x2: state[1],
+        x3: state[2],
+    }
+}
+
+impl PitchLaw for ObserverPdController {
+    fn label(&self) -> &str {
+        "O-PD"
+    }
+
+    fn state_names(&self) -> &'static [&'static str] {
+        STATE_NAMES
+    }
+
+    fn initial_state(&self, inputs: &PitchLawInputs, state: &mut [f64]) {
+        let initial = ObserverPdController::initial_state(
+            self,
+            inputs.theta_measured_rad,
+            inputs.theta_trim_rad,
+        );
+        state.copy_from_slice(&initial.to_array());
+    }
+
+    #[inline]
+    fn elevator_command_rad(&self, state: &[f64], inputs: &PitchLawInputs) -> f64 {
+        ObserverPdController::elevator_command_rad(self, &observer_state(state), inputs)
+    }
+
+    #[inline]
+    fn derivative(&self, state: &[f64], inputs: &PitchLawInputs, rate: &mut [f64]) {
+        let derivative = ObserverPdController::derivative(self, &observer_state(state), inputs);
+        rate.copy_from_slice(&derivative.to_array());
+    }
+
+    fn disturbance_estimate_radps2(&self, state: &[f64]) -> Option<f64> {
+        Some(state[2])
     }
 }
 
@@ -234,15 +313,20 @@ mod tests {
     #[test]
     fn invalid_design_parameters_are_named() {
         let cases = [
-            (0.0, 1.0, "settling_time_s"),
-            (0.3, -1.0, "damping_ratio"),
-            (f64::NAN, 1.0, "settling_time_s"),
+            (0.0, 1.0, "control.pitch.settling_time_s"),
+            (0.3, -1.0, "control.pitch.damping_ratio"),
+            (f64::NAN, 1.0, "control.pitch.settling_time_s"),
+            (1e-300, 1.0, "control.pitch.settling_time_s"),
+            (0.3, 1e308, "control.pitch.damping_ratio"),
         ];
-        for (settling, damping, field) in cases {
-            let message = ObserverPdGains::design(settling, damping, -0.15)
-                .expect_err("invalid")
-                .to_string();
-            assert!(message.contains(field), "{message}");
+        for (settling_time_s, damping_ratio, path) in cases {
+            let parameters = ObserverPdParameters {
+                settling_time_s,
+                damping_ratio,
+                ..ObserverPdParameters::default()
+            };
+            let error = ObserverPdController::new(&parameters, PAPER_PLANT).expect_err("invalid");
+            assert_eq!(error.path, path, "{error}");
         }
     }
 
@@ -250,13 +334,13 @@ mod tests {
     fn at_trim_with_no_error_the_command_is_the_trim_elevator() {
         let controller =
             ObserverPdController::new(&ObserverPdParameters::default(), PAPER_PLANT).expect("ok");
-        let inputs = PitchControlInputs {
+        let inputs = PitchLawInputs {
             theta_ref_rad: 0.124,
             theta_measured_rad: 0.124,
             theta_trim_rad: 0.124,
             elevator_actual_rad: -0.143,
             elevator_trim_rad: -0.143,
-            ..PitchControlInputs::default()
+            ..PitchLawInputs::default()
         };
         let state = controller.initial_state(inputs.theta_measured_rad, inputs.theta_trim_rad);
         assert_eq!(controller.elevator_command_rad(&state, &inputs), -0.143);
@@ -267,26 +351,26 @@ mod tests {
     fn nose_up_command_and_disturbance_estimate_move_the_elevator_trailing_edge_up() {
         let controller =
             ObserverPdController::new(&ObserverPdParameters::default(), PAPER_PLANT).expect("ok");
-        let inputs = PitchControlInputs {
+        let inputs = PitchLawInputs {
             theta_ref_rad: 0.01,
-            ..PitchControlInputs::default()
+            ..PitchLawInputs::default()
         };
         let state = ObserverState::default();
         assert!(controller.elevator_command_rad(&state, &inputs) < 0.0);
         // A nose-down disturbance estimate (x3 < 0) also needs trailing edge up.
         let disturbed = ObserverState { x3: -1.0, ..state };
-        let inputs = PitchControlInputs::default();
+        let inputs = PitchLawInputs::default();
         let command = controller.elevator_command_rad(&disturbed, &inputs);
         assert!((command - (1.0 / -1.93)).abs() < 1e-12, "{command}");
     }
 
     #[test]
     fn pitch_feedback_selects_measured_or_estimated_attitude() {
-        let inputs = PitchControlInputs {
+        let inputs = PitchLawInputs {
             theta_ref_rad: 0.2,
             theta_measured_rad: 0.15,
             theta_trim_rad: 0.1,
-            ..PitchControlInputs::default()
+            ..PitchLawInputs::default()
         };
         // Estimate θ* + x1 = 0.13 differs from the measurement 0.15.
         let state = ObserverState {
@@ -314,9 +398,8 @@ mod tests {
             dqdot_delevator_per_s2: 0.0,
             ..PAPER_PLANT
         };
-        assert_eq!(
-            ObserverPdController::new(&ObserverPdParameters::default(), plant),
-            Err(ControlError::ZeroElevatorEffectiveness)
-        );
+        let error = ObserverPdController::new(&ObserverPdParameters::default(), plant)
+            .expect_err("zero effectiveness");
+        assert!(error.path.ends_with("dqdot_delevator_per_s2"), "{error}");
     }
 }

@@ -12,9 +12,11 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::inputs::{
-    check_finite, ControlError, ElevatorSaturation, PitchControlInputs, PitchPlantDerivatives,
+use super::law::{
+    ElevatorSaturation, PitchDesignContext, PitchLaw, PitchLawDesign, PitchLawInputs,
+    PitchPlantDerivatives,
 };
+use crate::parameters::{Bounds, ParameterError};
 
 /// PID gains and options (paper Eq. 37; gains as printed in paper §4.2.3).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -44,19 +46,25 @@ impl Default for PidParameters {
 }
 
 impl PidParameters {
-    /// Checks that all gains are finite and non-negative.
-    pub fn validate(&self) -> Result<(), ControlError> {
-        for (field, value) in [
-            ("proportional_per_s2", self.proportional_per_s2),
-            ("integral_per_s3", self.integral_per_s3),
-            ("derivative_per_s", self.derivative_per_s),
-        ] {
-            check_finite(field, value)?;
-            if value < 0.0 {
-                return Err(ControlError::NegativeGain { field, value });
-            }
-        }
-        Ok(())
+    /// Checks that every gain lies in [0, 10⁴] (in its unit), naming `section.key`.
+    pub fn validate(&self, section: &str) -> Result<(), ParameterError> {
+        let gain = Bounds::closed(0.0, 1e4);
+        gain.check(section, "proportional_per_s2", self.proportional_per_s2)?;
+        gain.check(section, "integral_per_s3", self.integral_per_s3)?;
+        gain.check(section, "derivative_per_s", self.derivative_per_s)
+    }
+}
+
+impl PitchLawDesign for PidParameters {
+    type Law = PidController;
+    const LABEL: &'static str = "PID";
+
+    fn validate(&self, section: &str) -> Result<(), ParameterError> {
+        PidParameters::validate(self, section)
+    }
+
+    fn build(&self, context: &PitchDesignContext) -> Result<PidController, ParameterError> {
+        PidController::new(self, context.plant)
     }
 }
 
@@ -79,8 +87,8 @@ impl PidController {
     pub fn new(
         parameters: &PidParameters,
         plant: PitchPlantDerivatives,
-    ) -> Result<Self, ControlError> {
-        parameters.validate()?;
+    ) -> Result<Self, ParameterError> {
+        parameters.validate(super::PitchControllerParameters::SECTION)?;
         plant.validate()?;
         Ok(Self {
             parameters: *parameters,
@@ -106,7 +114,7 @@ impl PidController {
     /// Elevator command δe = δe* + U/(∂q̇/∂δe) (rad; paper Eq. 37 in the form of
     /// Eq. 35–36), not limited: the actuator applies its position limits.
     #[inline]
-    pub fn elevator_command_rad(&self, state: &PidState, inputs: &PitchControlInputs) -> f64 {
+    pub fn elevator_command_rad(&self, state: &PidState, inputs: &PitchLawInputs) -> f64 {
         let pitch_error_rad = inputs.theta_ref_rad - inputs.theta_measured_rad;
         let equivalent_control = self.parameters.proportional_per_s2 * pitch_error_rad
             + self.parameters.integral_per_s3 * state.pitch_error_integral_rad_s
@@ -116,7 +124,7 @@ impl PidController {
 
     /// Integrator derivative: e_θ (rad), or 0 while anti-windup freezes it.
     #[inline]
-    pub fn derivative(&self, _state: &PidState, inputs: &PitchControlInputs) -> PidState {
+    pub fn derivative(&self, _state: &PidState, inputs: &PitchLawInputs) -> PidState {
         let pitch_error_rad = inputs.theta_ref_rad - inputs.theta_measured_rad;
         let frozen = self.parameters.anti_windup
             && self.integration_pushes_into_limit(pitch_error_rad, inputs.elevator_saturation);
@@ -145,6 +153,32 @@ impl PidController {
     }
 }
 
+impl PitchLaw for PidController {
+    fn label(&self) -> &str {
+        "PID"
+    }
+
+    fn state_names(&self) -> &'static [&'static str] {
+        &["pitch_error_integral_rad_s"]
+    }
+
+    #[inline]
+    fn elevator_command_rad(&self, state: &[f64], inputs: &PitchLawInputs) -> f64 {
+        let state = PidState {
+            pitch_error_integral_rad_s: state[0],
+        };
+        PidController::elevator_command_rad(self, &state, inputs)
+    }
+
+    #[inline]
+    fn derivative(&self, state: &[f64], inputs: &PitchLawInputs, rate: &mut [f64]) {
+        let state = PidState {
+            pitch_error_integral_rad_s: state[0],
+        };
+        rate[0] = PidController::derivative(self, &state, inputs).pitch_error_integral_rad_s;
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -167,11 +201,11 @@ mod tests {
         let pid = controller(true);
         let state = pid.initial_state();
         // Nose-up error: the command moves trailing edge up, towards the lower limit.
-        let nose_up = PitchControlInputs {
+        let nose_up = PitchLawInputs {
             theta_ref_rad: 0.1,
-            ..PitchControlInputs::default()
+            ..PitchLawInputs::default()
         };
-        let at = |elevator_saturation| PitchControlInputs {
+        let at = |elevator_saturation| PitchLawInputs {
             elevator_saturation,
             ..nose_up
         };
@@ -191,10 +225,10 @@ mod tests {
     #[test]
     fn derivative_acts_on_the_measured_rate_and_command_includes_trim() {
         let pid = controller(true);
-        let inputs = PitchControlInputs {
+        let inputs = PitchLawInputs {
             pitch_rate_measured_radps: 0.1,
             elevator_trim_rad: -0.143,
-            ..PitchControlInputs::default()
+            ..PitchLawInputs::default()
         };
         let command = pid.elevator_command_rad(&pid.initial_state(), &inputs);
         // U = −17.19·0.1, Δδe = U/(−1.93) > 0: a nose-up rate is damped trailing edge down.
@@ -210,17 +244,19 @@ mod tests {
             integral_per_s3: -1.0,
             ..PidParameters::default()
         };
-        let message = PidController::new(&bad, PLANT)
-            .expect_err("neg")
-            .to_string();
-        assert!(message.contains("integral_per_s3"), "{message}");
+        let error = PidController::new(&bad, PLANT).expect_err("neg");
+        assert_eq!(error.path, "control.pitch.integral_per_s3");
         let bad = PidParameters {
             derivative_per_s: f64::INFINITY,
             ..PidParameters::default()
         };
-        let message = PidController::new(&bad, PLANT)
-            .expect_err("inf")
-            .to_string();
-        assert!(message.contains("derivative_per_s"), "{message}");
+        let error = PidController::new(&bad, PLANT).expect_err("inf");
+        assert_eq!(error.path, "control.pitch.derivative_per_s");
+        let huge = PidParameters {
+            proportional_per_s2: 1e308,
+            ..PidParameters::default()
+        };
+        let error = PidController::new(&huge, PLANT).expect_err("huge");
+        assert_eq!(error.path, "control.pitch.proportional_per_s2");
     }
 }

@@ -6,9 +6,7 @@
 //! a backtracking line search. The result is then checked against the model's limits:
 //! α inside the polynomials' range, δe within the actuator's limits, T within [0, 2·T_max].
 
-use crate::aircraft::{
-    Aircraft, AircraftState, AirframeInputs, Wind, ALPHA_MAX_RAD, ALPHA_MIN_RAD,
-};
+use super::{Aircraft, AircraftState, AirframeInputs, Wind, ALPHA_MAX_RAD, ALPHA_MIN_RAD};
 use nalgebra::{Matrix3, Vector3};
 use serde::Serialize;
 

@@ -6,7 +6,7 @@
 //! air, by central differences of the nonlinear equations of motion.
 
 use super::trim::TrimPoint;
-use crate::aircraft::{Aircraft, AirframeInputs, Wind};
+use super::{Aircraft, AirframeInputs, Wind};
 use nalgebra::{Complex, SMatrix, SVector};
 
 /// Names of the linear model's states, in order.

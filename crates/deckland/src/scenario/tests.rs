@@ -1,0 +1,123 @@
+//! Tests of the scenario's sections: validation by dotted path, defaults, and the
+//! independence of the environment's random streams.
+
+use super::*;
+use crate::environment::{ShipMotionSimulator, WindModel};
+use crate::random::RandomStreams;
+use crate::sensors::PitchSensor;
+
+/// Ship heave and measured pitch from a short run, with turbulence on or off.
+fn ship_and_sensor_samples(seed: u64, turbulence: bool) -> (Vec<f64>, Vec<f64>) {
+    let streams = RandomStreams::new(seed);
+    let environment = EnvironmentSection {
+        wind: WindParameters {
+            turbulence,
+            ..WindParameters::default()
+        },
+        ..EnvironmentSection::default()
+    };
+    let mut ship = ShipMotionSimulator::new(environment.ship, &streams, 0.0).expect("valid");
+    let mut wind = WindModel::new(environment.wind, 0.0, &streams).expect("valid");
+    let mut sensor = PitchSensor::new(environment.pitch_noise, &streams).expect("valid");
+    let (mut heave, mut measured) = (Vec::new(), Vec::new());
+    for k in 0..500 {
+        let t = k as f64 * 0.01;
+        wind.advance(0.01, 69.1);
+        ship.step(0.01);
+        heave.push(ship.outputs().heave_m);
+        measured.push(sensor.measure(t, 0.0));
+    }
+    (heave, measured)
+}
+
+#[test]
+fn switching_turbulence_off_leaves_ship_and_sensor_samples_unchanged() {
+    assert_eq!(
+        ship_and_sensor_samples(17, true),
+        ship_and_sensor_samples(17, false)
+    );
+    assert_ne!(
+        ship_and_sensor_samples(17, true).0,
+        ship_and_sensor_samples(18, true).0
+    );
+}
+
+#[test]
+fn bad_parameters_are_rejected_naming_the_field() {
+    type Edit = fn(&mut EnvironmentSection);
+    let cases: &[(&str, Edit)] = &[
+        ("ship.heave_rms_m", |p| p.ship.heave_rms_m = -1.0),
+        ("ship.heave_rms_m", |p| p.ship.heave_rms_m = f64::NAN),
+        ("ship.pitch_rms_deg", |p| p.ship.pitch_rms_deg = -0.5),
+        ("ship.pitch_rms_deg", |p| {
+            p.ship.pitch_rms_deg = f64::INFINITY
+        }),
+        ("ship.forward_speed_mps", |p| {
+            p.ship.forward_speed_mps = f64::NAN
+        }),
+        ("deck.landing_point_aft_of_pitch_centre_m", |p| {
+            p.deck.landing_point_aft_of_pitch_centre_m = f64::NEG_INFINITY
+        }),
+        ("deck.ramp_aft_of_aim_point_m", |p| {
+            p.deck.ramp_aft_of_aim_point_m = 0.0
+        }),
+        ("deck.deck_height_m", |p| p.deck.deck_height_m = -3.0),
+        ("deck.wire_positions_m", |p| {
+            p.deck.wire_positions_m[2] = f64::NAN
+        }),
+        ("wind.wind_over_deck_mps", |p| {
+            p.wind.wind_over_deck_mps = -10.0
+        }),
+        ("wind.turbulence_sigma_u_mps", |p| {
+            p.wind.turbulence_sigma_u_mps = -0.1
+        }),
+        ("wind.turbulence_sigma_w_mps", |p| {
+            p.wind.turbulence_sigma_w_mps = f64::NAN
+        }),
+        ("wind.turbulence_scale_m", |p| {
+            p.wind.turbulence_scale_m = 0.0
+        }),
+        ("wind.turbulence_scale_m", |p| {
+            p.wind.turbulence_scale_m = -30.48
+        }),
+        ("wind.periodic_wake_ship_pitch_rad", |p| {
+            p.wind.periodic_wake_ship_pitch_rad = f64::NAN
+        }),
+        ("wind.periodic_wake_frequency_radps", |p| {
+            p.wind.periodic_wake_frequency_radps = -1.25
+        }),
+        ("pitch_noise.sinusoid_amplitude_rad", |p| {
+            p.pitch_noise.sinusoid_amplitude_rad = f64::INFINITY
+        }),
+        ("pitch_noise.sinusoid_frequency_radps", |p| {
+            p.pitch_noise.sinusoid_frequency_radps = -7.0
+        }),
+        ("pitch_noise.white_noise_sigma_rad", |p| {
+            p.pitch_noise.white_noise_sigma_rad = -0.001
+        }),
+    ];
+    assert!(EnvironmentSection::default().validate().is_ok());
+    for (field, edit) in cases {
+        let mut parameters = EnvironmentSection::default();
+        edit(&mut parameters);
+        let error = parameters
+            .validate()
+            .expect_err(&format!("{field} should be rejected"));
+        let message = error.to_string();
+        assert!(message.contains(field), "{field}: message {message:?}");
+        assert_eq!(error.path, format!("environment.{field}"), "{message}");
+    }
+}
+
+#[test]
+fn parameters_round_trip_through_json_and_fill_defaults() {
+    let parameters = EnvironmentSection::default();
+    let json = serde_json::to_string(&parameters).expect("serialisable");
+    let back: EnvironmentSection = serde_json::from_str(&json).expect("deserialisable");
+    assert_eq!(back, parameters);
+    let partial: EnvironmentSection =
+        serde_json::from_str(r#"{"ship": {"heave_rms_m": 1.0}}"#).expect("partial");
+    assert_eq!(partial.ship.heave_rms_m, 1.0);
+    assert_eq!(partial.ship.pitch_rms_deg, 1.5);
+    assert!(serde_json::from_str::<EnvironmentSection>(r#"{"ship": {"heave": 1.0}}"#).is_err());
+}

@@ -1,0 +1,180 @@
+//! The loops above the pitch law, one variant per kind of run (MODEL.md §5): a pitch
+//! step, a climb-rate program through the sink-rate loop, or the full approach cascade
+//! flight path → guidance → sink rate.
+
+use super::taps::Taps;
+use crate::control::{
+    CommandRamp, DeckReference, FlightPathGenerator, LoopController, PathReference,
+};
+
+/// What produces the pitch command θ_ref.
+#[derive(Debug, Clone, PartialEq)]
+pub enum OuterLoops {
+    /// θ_ref steps by `step_rad` at `step_time_s` from trim; no outer loop.
+    PitchStep {
+        /// Step size (rad).
+        step_rad: f64,
+        /// Time of the step (s).
+        step_time_s: f64,
+    },
+    /// A climb-rate command ramped in by `ramp` to `climb_rate_mps`, followed by the
+    /// sink-rate loop, with the pitch feed-forward moving from trim to
+    /// `theta_feedforward_rad` alike; no guidance.
+    ClimbRate {
+        /// Commanded climb rate after the ramp (m/s, negative descending).
+        climb_rate_mps: f64,
+        /// How the command comes in.
+        ramp: CommandRamp,
+        /// Trim pitch of the commanded descent (rad).
+        theta_feedforward_rad: f64,
+        /// The sink-rate loop.
+        sink_rate: LoopController,
+    },
+    /// The glide path, guidance and the sink-rate loop down to the deck.
+    Approach {
+        /// The glide-path generator.
+        flight_path: FlightPathGenerator,
+        /// Guidance: height error → climb-rate command.
+        guidance: LoopController,
+        /// The sink-rate loop: climb-rate error → pitch command.
+        sink_rate: LoopController,
+    },
+}
+
+/// The hook's kinematics and the aircraft's climb rate, as the outer loops read them.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct OuterLoopInputs {
+    pub time_s: f64,
+    pub theta_trim_rad: f64,
+    pub climb_rate_mps: f64,
+    pub hook_x_m: f64,
+    pub hook_h_m: f64,
+    pub hook_x_rate_mps: f64,
+    pub hook_climb_rate_mps: f64,
+    /// ∫ climb-rate error dt (m).
+    pub sink_rate_integral_m: f64,
+    /// ∫ hook height error dt (m·s).
+    pub guidance_integral_m_s: f64,
+}
+
+/// The outer loops' outputs at one instant.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct OuterLoopOutputs {
+    /// The pitch command, after the taps (rad).
+    pub theta_ref_rad: f64,
+    /// The climb-rate command (m/s); NaN when no loop commands one.
+    pub climb_rate_command_mps: f64,
+    /// The glide path, in an approach.
+    pub path: Option<PathReference>,
+    /// Height error of the hook to the path h_ref − h (m), 0 outside an approach.
+    pub height_error_m: f64,
+    /// Climb-rate error (m/s), 0 without a sink-rate loop.
+    pub climb_rate_error_mps: f64,
+}
+
+impl OuterLoops {
+    /// The pitch command and what led to it; `deck` is the held deck reference of an
+    /// approach.
+    #[inline(always)]
+    pub(crate) fn outputs<T: Taps>(
+        &self,
+        inputs: &OuterLoopInputs,
+        deck: Option<&DeckReference>,
+        taps: &T,
+    ) -> OuterLoopOutputs {
+        let trim_theta = inputs.theta_trim_rad;
+        let (theta_ref_rad, climb_rate_command_mps, path, height_error_m, climb_rate_error_mps) =
+            match self {
+                Self::PitchStep {
+                    step_rad,
+                    step_time_s,
+                } => {
+                    let step = if inputs.time_s >= *step_time_s {
+                        *step_rad
+                    } else {
+                        0.0
+                    };
+                    (trim_theta + step, f64::NAN, None, 0.0, 0.0)
+                }
+                Self::ClimbRate {
+                    climb_rate_mps,
+                    ramp,
+                    theta_feedforward_rad,
+                    sink_rate,
+                } => {
+                    let fraction = ramp.fraction(inputs.time_s);
+                    let command = fraction * climb_rate_mps;
+                    let base = trim_theta + fraction * (theta_feedforward_rad - trim_theta);
+                    let error = command - inputs.climb_rate_mps;
+                    let theta = base + sink_rate.output(error, inputs.sink_rate_integral_m, 0.0);
+                    (theta, command, None, 0.0, error)
+                }
+                Self::Approach {
+                    flight_path,
+                    guidance,
+                    sink_rate,
+                } => {
+                    let deck = deck.expect("an approach always holds a deck reference");
+                    let path = flight_path.reference(inputs.hook_x_m, inputs.hook_x_rate_mps, deck);
+                    let height_error = path.height_m - inputs.hook_h_m;
+                    let height_error_rate = path.climb_rate_mps - inputs.hook_climb_rate_mps;
+                    let command = taps.climb_rate_command(
+                        path.climb_rate_mps
+                            + guidance.output(
+                                height_error,
+                                inputs.guidance_integral_m_s,
+                                height_error_rate,
+                            ),
+                    );
+                    let error = command - inputs.climb_rate_mps;
+                    let theta =
+                        trim_theta + sink_rate.output(error, inputs.sink_rate_integral_m, 0.0);
+                    (theta, command, Some(path), height_error, error)
+                }
+            };
+        OuterLoopOutputs {
+            theta_ref_rad: taps.pitch_command(theta_ref_rad),
+            climb_rate_command_mps,
+            path,
+            height_error_m,
+            climb_rate_error_mps,
+        }
+    }
+
+    /// The rates of the sink-rate and guidance integrators (zero where a loop is off).
+    #[inline(always)]
+    pub(crate) fn integral_rates(
+        &self,
+        inputs: &OuterLoopInputs,
+        outputs: &OuterLoopOutputs,
+    ) -> (f64, f64) {
+        match self {
+            Self::PitchStep { .. } => (0.0, 0.0),
+            Self::ClimbRate { sink_rate, .. } => (
+                sink_rate.integral_rate(
+                    outputs.climb_rate_error_mps,
+                    inputs.sink_rate_integral_m,
+                    0.0,
+                ),
+                0.0,
+            ),
+            Self::Approach {
+                guidance,
+                sink_rate,
+                ..
+            } => (
+                sink_rate.integral_rate(
+                    outputs.climb_rate_error_mps,
+                    inputs.sink_rate_integral_m,
+                    0.0,
+                ),
+                guidance.integral_rate(outputs.height_error_m, inputs.guidance_integral_m_s, 0.0),
+            ),
+        }
+    }
+
+    /// Whether these loops fly an approach to the deck.
+    pub fn is_approach(&self) -> bool {
+        matches!(self, Self::Approach { .. })
+    }
+}

@@ -1,0 +1,167 @@
+//! Taps on the cascade: points where a command computed by one loop can be read and
+//! replaced before the next loop uses it.
+//!
+//! The closed loop is generic over its [`Taps`]: a run flies with [`NoTaps`], whose
+//! methods are the identity and vanish when inlined, so the hot path carries no analysis
+//! code. The stepping API replaces commands with [`Overrides`]; the margin analysis cuts
+//! one loop with a [`LoopCut`], which injects a value and records what the loop computed.
+
+use std::cell::Cell;
+
+/// A point where a loop of the cascade can be cut (MODEL.md §5: margins on the
+/// linearised cascade) or its command replaced.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LoopBreak {
+    /// The elevator command (rad): the pitch loop.
+    ElevatorCommand,
+    /// The pitch command θ_ref (rad): the sink-rate loop.
+    PitchCommand,
+    /// The climb-rate command (m/s): the guidance loop.
+    ClimbRateCommand,
+    /// The thrust command (N): the speed loop.
+    ThrustCommand,
+}
+
+/// What the loop does with the command it computed at each tap point; every method
+/// returns the value used downstream. The defaults pass the computed value on.
+pub trait Taps {
+    /// The climb-rate command (m/s) from guidance, in an approach.
+    #[inline(always)]
+    fn climb_rate_command(&self, computed: f64) -> f64 {
+        computed
+    }
+
+    /// The pitch command θ_ref (rad) from the sink-rate loop or a step.
+    #[inline(always)]
+    fn pitch_command(&self, computed: f64) -> f64 {
+        computed
+    }
+
+    /// The elevator command (rad) from the pitch law.
+    #[inline(always)]
+    fn elevator_command(&self, computed: f64) -> f64 {
+        computed
+    }
+
+    /// The total thrust command (N) from the speed loop.
+    #[inline(always)]
+    fn thrust_command(&self, computed: f64) -> f64 {
+        computed
+    }
+}
+
+/// No taps: every command is used as computed.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct NoTaps;
+
+impl Taps for NoTaps {}
+
+/// Commands given from outside (the stepping API), each replacing what its loop
+/// computed; `None` leaves the loop in charge. A replaced loop keeps running in the
+/// background on the aircraft's actual response (its integrator stays within its
+/// anti-windup limits), so handing control back is possible.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Overrides {
+    /// Pitch command θ_ref (rad), replacing guidance and the sink-rate loop.
+    pub pitch_command_rad: Option<f64>,
+    /// Elevator command (rad), replacing the pitch law (and everything above it).
+    pub elevator_rad: Option<f64>,
+    /// Total thrust command (N), replacing the speed loop.
+    pub thrust_n: Option<f64>,
+}
+
+impl Taps for Overrides {
+    #[inline]
+    fn pitch_command(&self, computed: f64) -> f64 {
+        self.pitch_command_rad.unwrap_or(computed)
+    }
+
+    #[inline]
+    fn elevator_command(&self, computed: f64) -> f64 {
+        self.elevator_rad.unwrap_or(computed)
+    }
+
+    #[inline]
+    fn thrust_command(&self, computed: f64) -> f64 {
+        self.thrust_n.unwrap_or(computed)
+    }
+}
+
+/// One loop cut for analysis: downstream of `at` the loop uses `injected`, and the value
+/// the loop computed there is kept ([`LoopCut::computed`]).
+#[derive(Debug, Clone)]
+pub struct LoopCut {
+    /// Where the loop is cut.
+    pub at: LoopBreak,
+    /// The value used downstream of the cut.
+    pub injected: f64,
+    computed: Cell<f64>,
+}
+
+impl LoopCut {
+    /// A cut at `at` injecting `injected`.
+    pub fn new(at: LoopBreak, injected: f64) -> Self {
+        Self {
+            at,
+            injected,
+            computed: Cell::new(f64::NAN),
+        }
+    }
+
+    /// The value the loop computed at the cut in the last evaluation (NaN before any).
+    pub fn computed(&self) -> f64 {
+        self.computed.get()
+    }
+
+    fn tap(&self, here: LoopBreak, computed: f64) -> f64 {
+        if self.at == here {
+            self.computed.set(computed);
+            self.injected
+        } else {
+            computed
+        }
+    }
+}
+
+impl Taps for LoopCut {
+    fn climb_rate_command(&self, computed: f64) -> f64 {
+        self.tap(LoopBreak::ClimbRateCommand, computed)
+    }
+
+    fn pitch_command(&self, computed: f64) -> f64 {
+        self.tap(LoopBreak::PitchCommand, computed)
+    }
+
+    fn elevator_command(&self, computed: f64) -> f64 {
+        self.tap(LoopBreak::ElevatorCommand, computed)
+    }
+
+    fn thrust_command(&self, computed: f64) -> f64 {
+        self.tap(LoopBreak::ThrustCommand, computed)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_cut_injects_at_its_point_only_and_records_the_computed_value() {
+        let cut = LoopCut::new(LoopBreak::PitchCommand, 0.5);
+        assert_eq!(cut.climb_rate_command(1.0), 1.0);
+        assert_eq!(cut.pitch_command(0.1), 0.5);
+        assert_eq!(cut.computed(), 0.1);
+        assert_eq!(cut.elevator_command(-0.2), -0.2);
+    }
+
+    #[test]
+    fn overrides_replace_only_what_they_set() {
+        let overrides = Overrides {
+            thrust_n: Some(1000.0),
+            ..Overrides::default()
+        };
+        assert_eq!(overrides.thrust_command(5.0), 1000.0);
+        assert_eq!(overrides.pitch_command(0.1), 0.1);
+        assert_eq!(NoTaps.elevator_command(0.3), 0.3);
+    }
+}
