@@ -5,11 +5,8 @@
 //! Prints a markdown table; each seed's run is independent and deterministic, so the
 //! table is the same however the work is split between threads.
 
-mod support;
-
-use support::fly_seeds;
-
 use deckland::control::pitch::{PidParameters, PitchControllerParameters};
+use deckland::experiments::fly_seeds;
 use deckland::scenario::Scenario;
 use deckland::simulation::{Outcome, SetupError};
 

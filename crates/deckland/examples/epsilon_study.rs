@@ -18,14 +18,11 @@
 //! (`deckland::metrics`). A median over seeds counts an unsettled run as slower than
 //! any settled one; if the median run did not settle, the table says "—".
 
-use deckland::aircraft::ElevatorActuatorParameters;
 use deckland::control::pitch::{
     ObserverPdParameters, PidParameters, PitchControllerParameters, PitchFeedback,
 };
-use deckland::metrics::{step_response_metrics, time_at_limits_s, StepResponseSpec};
-use deckland::recording::TimeSeriesRecorder;
-use deckland::scenario::{Mission, Scenario};
-use deckland::simulation::Simulation;
+use deckland::experiments::{fly_pitch_step, PitchStep};
+use deckland::scenario::Scenario;
 
 /// Observer bandwidth parameters studied.
 const EPSILONS: [f64; 7] = [0.01, 0.02, 0.03, 0.05, 0.08, 0.1, 0.15];
@@ -33,8 +30,6 @@ const EPSILONS: [f64; 7] = [0.01, 0.02, 0.03, 0.05, 0.08, 0.1, 0.15];
 const SEEDS: std::ops::RangeInclusive<u64> = 1..=5;
 /// Length of each run (s).
 const DURATION_S: f64 = 6.0;
-/// Time of the step (s), `Mission::pitch_step`'s.
-const STEP_TIME_S: f64 = 1.0;
 
 /// What one run measured.
 #[derive(Debug, Clone, Copy)]
@@ -97,55 +92,38 @@ fn fly(
 ) -> Result<RunMetrics, Box<dyn std::error::Error>> {
     let mut scenario = disturbances.scenario(seed);
     scenario.control.pitch = pitch;
-    scenario.mission = Mission::pitch_step(step_deg, DURATION_S);
-    let mut recorder = TimeSeriesRecorder::every(0.0);
-    Simulation::new(&scenario)?.run(&mut recorder);
-    let samples = &recorder.samples;
+    let step = PitchStep {
+        record_interval_s: 0.001,
+        ..PitchStep::new(step_deg, DURATION_S)
+    };
+    let run = fly_pitch_step(&scenario, &step)?;
+    let response = &run.response;
+    let samples = &run.samples;
     let first = samples.first().ok_or("no samples recorded")?;
-    let trim_deg = first.theta_ref_rad.to_degrees();
-    let elevator_trim_deg = first.elevator_rad.to_degrees();
-    let target_deg = trim_deg + step_deg;
-    let time: Vec<f64> = samples.iter().map(|s| s.time_s).collect();
-    let theta: Vec<f64> = samples.iter().map(|s| s.theta_rad.to_degrees()).collect();
-    let elevator: Vec<f64> = samples
-        .iter()
-        .map(|s| s.elevator_rad.to_degrees())
-        .collect();
-
-    let spec = StepResponseSpec::new(STEP_TIME_S, trim_deg, target_deg);
-    let metrics = step_response_metrics(&time, &theta, &spec)?;
-    let actuator = ElevatorActuatorParameters::default();
-    let limits = time_at_limits_s(
-        &time,
-        &elevator,
-        actuator.min_deflection_deg,
-        actuator.max_deflection_deg,
-        1e-6,
-    )?;
-    let rates: Vec<f64> = time
+    let target_deg = first.theta_ref_rad.to_degrees() + step_deg;
+    let rates: Vec<f64> = samples
         .windows(2)
-        .zip(elevator.windows(2))
-        .map(|(t, e)| (e[1] - e[0]) / (t[1] - t[0]))
+        .map(|w| {
+            (w[1].elevator_rad.to_degrees() - w[0].elevator_rad.to_degrees())
+                / (w[1].time_s - w[0].time_s)
+        })
         .collect();
     let rms = |values: &[f64]| {
         (values.iter().map(|v| v * v).sum::<f64>() / values.len().max(1) as f64).sqrt()
     };
-    let end_s = time.last().copied().unwrap_or(0.0);
-    let residual: Vec<f64> = time
+    let end_s = samples.last().map_or(0.0, |s| s.time_s);
+    let residual: Vec<f64> = samples
         .iter()
-        .zip(&theta)
-        .filter(|(t, _)| **t >= end_s - 2.0)
-        .map(|(_, th)| th - target_deg)
+        .filter(|s| s.time_s >= end_s - 2.0)
+        .map(|s| s.theta_rad.to_degrees() - target_deg)
         .collect();
     Ok(RunMetrics {
-        settling_time_s: metrics.settling_time_s,
-        overshoot_pct: metrics.overshoot_pct,
-        peak_elevator_change_deg: elevator
-            .iter()
-            .fold(0.0_f64, |m, e| m.max((e - elevator_trim_deg).abs())),
+        settling_time_s: response.settling_time_s,
+        overshoot_pct: response.overshoot_pct,
+        peak_elevator_change_deg: response.max_elevator_change_deg,
         elevator_rate_rms_degps: rms(&rates),
-        elevator_total_variation_deg: elevator.windows(2).map(|w| (w[1] - w[0]).abs()).sum(),
-        saturated_s: limits.lower_s + limits.upper_s,
+        elevator_total_variation_deg: response.elevator_total_variation_deg,
+        saturated_s: response.elevator_saturation_s,
         residual_rms_deg: rms(&residual),
     })
 }

@@ -3,11 +3,8 @@
 //! gains and deck-motion predictors, plus the paper's gain set in ideal conditions.
 //! `cargo run --release -p deckland --example outer_loop_sweep [N]` (default 50).
 
-mod support;
-
-use support::fly_seeds;
-
 use deckland::control::{DeckMotionPredictor, GuidanceParameters, SinkRateControllerParameters};
+use deckland::experiments::fly_seeds;
 use deckland::recording::SummaryRecorder;
 use deckland::scenario::Scenario;
 use deckland::simulation::{Outcome, RunSummary, SetupError, Simulation};

@@ -35,6 +35,7 @@ pub mod analysis;
 pub mod control;
 pub mod environment;
 pub mod estimation;
+pub mod experiments;
 pub mod integration;
 pub mod metrics;
 pub mod monte_carlo;

@@ -42,24 +42,22 @@ pub enum Conditions {
 }
 
 impl Conditions {
+    /// The library's conditions.
+    pub fn conditions(self) -> deckland::experiments::Conditions {
+        match self {
+            Self::Ideal => deckland::experiments::Conditions::Ideal,
+            Self::Adverse => deckland::experiments::Conditions::Adverse,
+        }
+    }
+
     /// The default scenario in these conditions, with `seed`.
     pub fn scenario(self, seed: u64) -> Scenario {
-        let base = Scenario {
-            seed,
-            ..Scenario::default()
-        };
-        match self {
-            Self::Ideal => base.ideal(),
-            Self::Adverse => base,
-        }
+        self.conditions().apply(Scenario::default(), seed)
     }
 
     /// The name as written in files.
     pub fn name(self) -> &'static str {
-        match self {
-            Self::Ideal => "ideal",
-            Self::Adverse => "adverse",
-        }
+        self.conditions().name()
     }
 }
 

@@ -5,18 +5,11 @@
 use std::path::PathBuf;
 
 use anyhow::{bail, Result};
-use deckland::environment::{ShipMotionSimulator, WindComponents, WindModel};
-use deckland::random::RandomStreams;
+use deckland::experiments::{record_environment, EnvironmentRecord, EnvironmentSample};
 use deckland::scenario::EnvironmentSection;
-use serde::Serialize;
 
 use crate::output::OutputDir;
 use crate::plot::{Figure, Panel};
-
-/// Integration step (s): MODEL.md §6.
-const TIME_STEP_S: f64 = 0.001;
-/// Steps between recorded rows: every 10 ms.
-const RECORD_EVERY_STEPS: usize = 10;
 
 /// Options of `deckland environment`.
 #[derive(Debug, clap::Args)]
@@ -47,50 +40,8 @@ pub struct EnvironmentArgs {
     pub(crate) force: bool,
 }
 
-/// One recorded row of `environment.csv` (heights in m, angles in deg, wind in m/s).
-#[derive(Debug, Clone, Serialize)]
-pub(crate) struct Row {
-    pub(crate) time_s: f64,
-    pub(crate) heave_m: f64,
-    pub(crate) pitch_deg: f64,
-    pub(crate) landing_point_height_m: f64,
-    pub(crate) wind_x_mps: f64,
-    pub(crate) wind_z_mps: f64,
-    pub(crate) mean_wind_x_mps: f64,
-    pub(crate) turbulence_x_mps: f64,
-    pub(crate) turbulence_z_mps: f64,
-    pub(crate) steady_wake_x_mps: f64,
-    pub(crate) steady_wake_z_mps: f64,
-    pub(crate) periodic_wake_x_mps: f64,
-    pub(crate) periodic_wake_z_mps: f64,
-}
-
-impl Row {
-    fn new(
-        time_s: f64,
-        heave_m: f64,
-        pitch_rad: f64,
-        landing_point_height_m: f64,
-        wind: &WindComponents,
-    ) -> Self {
-        let total = wind.total();
-        Self {
-            time_s,
-            heave_m,
-            pitch_deg: pitch_rad.to_degrees(),
-            landing_point_height_m,
-            wind_x_mps: total.x_mps,
-            wind_z_mps: total.z_mps,
-            mean_wind_x_mps: wind.mean.x_mps,
-            turbulence_x_mps: wind.turbulence.x_mps,
-            turbulence_z_mps: wind.turbulence.z_mps,
-            steady_wake_x_mps: wind.steady_wake.x_mps,
-            steady_wake_z_mps: wind.steady_wake.z_mps,
-            periodic_wake_x_mps: wind.periodic_wake.x_mps,
-            periodic_wake_z_mps: wind.periodic_wake.z_mps,
-        }
-    }
-}
+/// One recorded row of `environment.csv`.
+pub(crate) type Row = EnvironmentSample;
 
 fn check_arguments(args: &EnvironmentArgs) -> Result<()> {
     if !(args.seconds.is_finite() && args.seconds > 0.0 && args.seconds <= 86_400.0) {
@@ -111,38 +62,16 @@ fn check_arguments(args: &EnvironmentArgs) -> Result<()> {
     Ok(())
 }
 
-/// Simulates at dt = 1 ms, recording every 10 ms.
-pub(crate) fn simulate(
-    args: &EnvironmentArgs,
-    parameters: &EnvironmentSection,
-) -> Result<Vec<Row>> {
-    let streams = RandomStreams::new(args.seed);
-    let mut ship = ShipMotionSimulator::new(parameters.ship, &streams, 0.0)?;
-    let mut wind = WindModel::new(parameters.wind, parameters.ship.forward_speed_mps, &streams)?;
-    let deck = parameters.deck;
-    let steps = (args.seconds / TIME_STEP_S).round() as usize;
-    let mut rows = Vec::with_capacity(steps / RECORD_EVERY_STEPS + 1);
-    for step in 0..=steps {
-        if step % RECORD_EVERY_STEPS == 0 {
-            let time_s = step as f64 * TIME_STEP_S;
-            let outputs = ship.outputs();
-            // The deck's mean height is deck_height_m: heave and pitch have zero mean.
-            let aim_height_m = deck.aim_point(&ship.pose()).h_m - deck.deck_height_m;
-            let components = wind.components(time_s, args.distance_aft_m);
-            rows.push(Row::new(
-                time_s,
-                outputs.heave_m,
-                outputs.pitch_rad,
-                aim_height_m,
-                &components,
-            ));
-        }
-        if step < steps {
-            ship.step(TIME_STEP_S);
-            wind.advance(TIME_STEP_S, args.airspeed_mps);
+impl EnvironmentArgs {
+    /// The record these options ask for.
+    pub(crate) fn record(&self) -> EnvironmentRecord {
+        EnvironmentRecord {
+            seconds: self.seconds,
+            seed: self.seed,
+            distance_aft_m: self.distance_aft_m,
+            airspeed_mps: self.airspeed_mps,
         }
     }
-    Ok(rows)
 }
 
 /// RMS about zero, peak |value|, mean and standard deviation of a record.
@@ -174,7 +103,7 @@ fn series(rows: &[Row], value: impl Fn(&Row) -> f64) -> Vec<(f64, f64)> {
 /// components.
 pub(crate) fn figures(
     rows: &[Row],
-    args: &EnvironmentArgs,
+    args: &EnvironmentRecord,
     parameters: &EnvironmentSection,
 ) -> Vec<(&'static str, Figure)> {
     let where_ = format!("{} m aft of the ship's pitch centre", args.distance_aft_m);
@@ -246,7 +175,7 @@ pub fn run(args: &EnvironmentArgs) -> Result<()> {
     let parameters = EnvironmentSection::default();
     parameters.validate()?;
     let output = OutputDir::prepare("environment", args.out.as_deref(), args.force)?;
-    let rows = simulate(args, &parameters)?;
+    let rows = record_environment(&parameters, &args.record())?;
 
     let mut csv = csv::Writer::from_writer(Vec::new());
     for row in &rows {
@@ -254,7 +183,7 @@ pub fn run(args: &EnvironmentArgs) -> Result<()> {
     }
     let csv_bytes = csv.into_inner().map_err(|e| anyhow::anyhow!("{e}"))?;
     let mut written = vec![output.write_bytes("environment.csv", &csv_bytes)?];
-    for (stem, figure) in figures(&rows, args, &parameters) {
+    for (stem, figure) in figures(&rows, &args.record(), &parameters) {
         written.extend(figure.save(&output, stem)?);
     }
 

@@ -10,9 +10,9 @@ use crate::output::OutputDir;
 use crate::plot::{Figure, Panel};
 use anyhow::{Context, Result};
 use clap::Args;
-use deckland::recording::TimeSeriesRecorder;
+use deckland::experiments::fly_approach;
 use deckland::scenario::Scenario;
-use deckland::simulation::{RunSummary, Signals, Simulation};
+use deckland::simulation::{RunSummary, Signals};
 use serde::Serialize;
 
 /// Options of `deckland land`.
@@ -35,9 +35,6 @@ pub struct LandArgs {
     #[command(flatten)]
     pub output: OutputArgs,
 }
-
-/// Steps between recorded samples (10 ms at the default 1 ms step).
-const RECORD_INTERVAL_S: f64 = 0.01;
 
 /// What `summary.json` and `--json` hold: the run's summary with what was flown.
 #[derive(Debug, Serialize)]
@@ -224,9 +221,8 @@ pub fn fly_and_write(
     conditions: &str,
     json: bool,
 ) -> Result<RunSummary> {
-    let simulation = Simulation::new(scenario).context("cannot set up the approach")?;
-    let mut recorder = TimeSeriesRecorder::every(RECORD_INTERVAL_S);
-    let summary = simulation.run(&mut recorder);
+    let run = fly_approach(scenario).context("cannot set up the approach")?;
+    let summary = run.summary;
     let report = LandingReport {
         controller,
         conditions,
@@ -241,7 +237,7 @@ pub fn fly_and_write(
             .as_bytes(),
     )?;
     let mut csv = csv::Writer::from_writer(Vec::new());
-    for sample in &recorder.samples {
+    for sample in &run.samples {
         csv.serialize(Row::from(sample))?;
     }
     let bytes = csv.into_inner().map_err(|e| anyhow::anyhow!("{e}"))?;
@@ -251,7 +247,7 @@ pub fn fly_and_write(
         serde_json::to_string_pretty(&report)?.as_bytes(),
     )?;
     let title = format!("{controller}, {conditions}, seed {}", scenario.seed);
-    for (stem, figure) in figures(&recorder.samples, &title) {
+    for (stem, figure) in figures(&run.samples, &title) {
         figure.save(output, stem)?;
     }
     if json {

@@ -10,10 +10,10 @@ use crate::output::OutputDir;
 use crate::plot::{Figure, Panel};
 use anyhow::{bail, Context, Result};
 use clap::Args;
-use deckland::metrics::{step_response_metrics, StepResponseMetrics, StepResponseSpec};
-use deckland::recording::TimeSeriesRecorder;
-use deckland::scenario::Mission;
-use deckland::simulation::{Outcome, Simulation};
+use deckland::experiments::{
+    fly_sink_rate, SinkRateSample as Row, SinkRateTracking, SINK_COMMAND_TIME_S as COMMAND_TIME_S,
+};
+use deckland::metrics::StepResponseMetrics;
 use serde::Serialize;
 
 /// Options of `deckland sink`.
@@ -48,9 +48,6 @@ pub struct SinkArgs {
     pub output: OutputArgs,
 }
 
-/// Time of the sink-rate command after the start (s).
-const COMMAND_TIME_S: f64 = 1.0;
-
 /// The summary of a sink-rate run (`summary.json`).
 #[derive(Debug, Serialize)]
 pub(crate) struct SinkReport {
@@ -66,30 +63,6 @@ pub(crate) struct SinkReport {
     /// Largest pitch-attitude deviation from level trim (deg).
     max_pitch_change_deg: f64,
     altitude_lost_m: f64,
-}
-
-#[derive(Debug, Serialize)]
-struct Row {
-    time_s: f64,
-    sink_rate_command_mps: f64,
-    sink_rate_mps: f64,
-    sink_rate_error_mps: f64,
-    altitude_m: f64,
-    theta_deg: f64,
-    theta_command_deg: f64,
-    elevator_deg: f64,
-    airspeed_mps: f64,
-}
-
-/// The commanded sink rate at `time_s` (m/s): zero, then a ramp to the command.
-fn command_at(time_s: f64, args: &SinkArgs) -> f64 {
-    if time_s < COMMAND_TIME_S {
-        0.0
-    } else if args.ramp_s > 0.0 {
-        args.sink_rate_mps * ((time_s - COMMAND_TIME_S) / args.ramp_s).min(1.0)
-    } else {
-        args.sink_rate_mps
-    }
 }
 
 /// A flown sink-rate run: the rows recorded every 10 ms and the report.
@@ -109,77 +82,52 @@ pub(crate) fn fly(args: &SinkArgs) -> Result<SinkRun> {
             COMMAND_TIME_S + 1.0
         );
     }
-    let mut scenario = args.conditions.scenario(args.seed);
-    scenario.control.pitch = args.controller.parameters();
-    scenario.mission = Mission::SinkRate {
+    let tracking = SinkRateTracking {
         sink_rate_mps: args.sink_rate_mps,
-        step_time_s: COMMAND_TIME_S,
         ramp_s: args.ramp_s,
-        duration_s: args.seconds,
-        altitude_m: 600.0,
+        seconds: args.seconds,
     };
-    let simulation = Simulation::new(&scenario).context("cannot set up the sink-rate run")?;
-    let mut recorder = TimeSeriesRecorder::every(0.01);
-    let summary = simulation.run(&mut recorder);
-    let samples = &recorder.samples;
-    let rows: Vec<Row> = samples
-        .iter()
-        .map(|s| {
-            let command = command_at(s.time_s, args);
-            Row {
-                time_s: s.time_s,
-                sink_rate_command_mps: command,
-                sink_rate_mps: -s.climb_rate_mps,
-                sink_rate_error_mps: command + s.climb_rate_mps,
-                altitude_m: s.h_m,
-                theta_deg: s.theta_rad.to_degrees(),
-                theta_command_deg: s.theta_ref_rad.to_degrees(),
-                elevator_deg: s.elevator_rad.to_degrees(),
-                airspeed_mps: s.airspeed_mps,
-            }
-        })
-        .collect();
-    let time: Vec<f64> = rows.iter().map(|r| r.time_s).collect();
-    let sink: Vec<f64> = rows.iter().map(|r| r.sink_rate_mps).collect();
-    let metrics = if summary.outcome == Outcome::Completed && args.sink_rate_mps != 0.0 {
-        Some(step_response_metrics(
-            &time,
-            &sink,
-            &StepResponseSpec::new(COMMAND_TIME_S, 0.0, args.sink_rate_mps),
-        )?)
-    } else {
-        None
-    };
-    let trim_theta = rows.first().map_or(0.0, |r| r.theta_deg);
+    fly_tracking(args.controller, args.conditions, args.seed, &tracking)
+}
+
+/// Flies `tracking` with `controller` in `conditions` and measures it.
+pub(crate) fn fly_tracking(
+    controller: ControllerChoice,
+    conditions: Conditions,
+    seed: u64,
+    tracking: &SinkRateTracking,
+) -> Result<SinkRun> {
+    let mut scenario = conditions.scenario(seed);
+    scenario.control.pitch = controller.parameters();
+    let run = fly_sink_rate(&scenario, tracking).context("cannot set up the sink-rate run")?;
+    let summary = run.summary;
     let report = SinkReport {
-        controller: args.controller.label(),
-        conditions: args.conditions.name(),
-        seed: args.seed,
-        sink_rate_command_mps: args.sink_rate_mps,
-        ramp_s: args.ramp_s,
+        controller: controller.label(),
+        conditions: conditions.name(),
+        seed,
+        sink_rate_command_mps: tracking.sink_rate_mps,
+        ramp_s: tracking.ramp_s,
         outcome: summary.outcome.name(),
         reason: summary.reason.clone(),
-        metrics,
-        max_pitch_change_deg: rows
-            .iter()
-            .map(|r| (r.theta_deg - trim_theta).abs())
-            .fold(0.0, f64::max),
-        altitude_lost_m: rows.first().map_or(0.0, |r| r.altitude_m)
-            - rows.last().map_or(0.0, |r| r.altitude_m),
+        metrics: run.metrics,
+        max_pitch_change_deg: run.max_pitch_change_deg,
+        altitude_lost_m: run.altitude_lost_m,
     };
-    Ok(SinkRun { rows, report })
+    Ok(SinkRun {
+        rows: run.samples,
+        report,
+    })
 }
 
 /// The sink-rate figure (paper Fig. 13): sink rate and command, error, altitude.
-pub(crate) fn figure(run: &SinkRun, args: &SinkArgs) -> Figure {
+pub(crate) fn figure(run: &SinkRun) -> Figure {
+    let report = &run.report;
     let rows = &run.rows;
     let points =
         |f: &dyn Fn(&Row) -> f64| rows.iter().map(|r| (r.time_s, f(r))).collect::<Vec<_>>();
     let title = format!(
         "Constant sink-rate command {} m/s (cf. paper Fig. 13) — {}, {}",
-        args.sink_rate_mps,
-        args.controller.label(),
-        args.conditions.name()
+        report.sink_rate_command_mps, report.controller, report.conditions
     );
     Figure::new()
         .title(title)
@@ -216,7 +164,7 @@ pub fn run(args: &SinkArgs) -> Result<()> {
         "summary.json",
         serde_json::to_string_pretty(report)?.as_bytes(),
     )?;
-    figure(&flown, args).save(&output, "sink_rate")?;
+    figure(&flown).save(&output, "sink_rate")?;
 
     if args.output.json {
         println!("{}", serde_json::to_string_pretty(&report)?);

@@ -6,27 +6,19 @@ use std::path::PathBuf;
 
 use anyhow::{anyhow, bail, Context, Result};
 use clap::ValueEnum;
-use deckland::aircraft::ElevatorActuatorParameters;
 use deckland::control::pitch::PitchControllerParameters;
-use deckland::metrics::{
-    actuator_activity, step_response_metrics, total_variation, StepResponseSpec,
+use deckland::experiments::{
+    fly_pitch_step, PitchStep, PitchStepResponse, PITCH_STEP_TIME_S as STEP_TIME_S,
+    SETTLING_BAND_FRACTION,
 };
-use deckland::recording::TimeSeriesRecorder;
-use deckland::scenario::Mission;
-use deckland::simulation::{Outcome, Signals, Simulation};
+use deckland::scenario::Scenario;
+use deckland::simulation::Signals;
 use serde::Serialize;
 
 use super::common::{Conditions, ControllerChoice, OutputArgs};
 use crate::output::OutputDir;
 use crate::plot::{Figure, Panel};
 
-/// Time of the step after the start (s): `Mission::pitch_step`'s default.
-const STEP_TIME_S: f64 = 1.0;
-/// Steps between recorded samples: every 2 ms (the slowest-damped closed-loop mode, near
-/// 28.7 rad/s, has a 0.22 s period).
-const RECORD_INTERVAL_S: f64 = 0.002;
-/// Half-width of the settling band as a fraction of the step.
-const SETTLING_BAND_FRACTION: f64 = 0.02;
 /// Largest |--step-deg| accepted (deg): beyond it the elevator is saturated for most of
 /// the transient and the step says little about the controller.
 const MAX_STEP_DEG: f64 = 10.0;
@@ -34,8 +26,6 @@ const MAX_STEP_DEG: f64 = 10.0;
 const MAX_SECONDS: f64 = 600.0;
 /// Shortest run accepted (s): the step at 1 s plus one second of response.
 const MIN_SECONDS: f64 = 2.0;
-/// Tolerance of "on the position limit" (deg).
-const LIMIT_TOLERANCE_DEG: f64 = 1e-6;
 
 /// Which pitch controllers fly the step.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -90,21 +80,7 @@ pub struct StepArgs {
 }
 
 /// The step response of one controller, as printed in the JSON document.
-#[derive(Debug, Clone, Serialize)]
-pub(crate) struct ControllerResult {
-    pub(crate) controller: &'static str,
-    pub(crate) settling_time_s: Option<f64>,
-    pub(crate) settled: bool,
-    pub(crate) not_settled_reason: Option<String>,
-    pub(crate) overshoot_pct: f64,
-    pub(crate) rise_time_s: Option<f64>,
-    pub(crate) steady_state_error_deg: Option<f64>,
-    pub(crate) max_elevator_deg: f64,
-    pub(crate) max_elevator_change_deg: f64,
-    pub(crate) elevator_saturation_s: f64,
-    pub(crate) elevator_total_variation_deg: f64,
-    pub(crate) outcome: &'static str,
-}
+pub(crate) type ControllerResult = PitchStepResponse;
 
 /// The JSON document of `deckland step --json`.
 #[derive(Debug, Serialize)]
@@ -166,101 +142,53 @@ fn controller_parameters(
     parameters
 }
 
-/// Flies the step with one controller and measures it.
-pub(crate) fn fly(args: &StepArgs, choice: ControllerChoice) -> Result<ControllerRun> {
-    let mut scenario = args.conditions.scenario(args.seed);
-    scenario.control.pitch = controller_parameters(choice, args.epsilon);
-    scenario.mission = Mission::pitch_step(args.step_deg, args.seconds);
-    let mut recorder = TimeSeriesRecorder::every(RECORD_INTERVAL_S);
-    let summary = Simulation::new(&scenario)
-        .with_context(|| format!("cannot set up the {} step", choice.label()))?
-        .run(&mut recorder);
-    let samples = recorder.samples;
-    let first = samples
-        .first()
-        .ok_or_else(|| anyhow!("the {} run recorded no samples", choice.label()))?;
-    let trim_deg = first.theta_ref_rad.to_degrees();
-    let elevator_trim_deg = first.elevator_rad.to_degrees();
-
-    let time: Vec<f64> = samples.iter().map(|s| s.time_s).collect();
-    let theta_deg: Vec<f64> = samples.iter().map(|s| s.theta_rad.to_degrees()).collect();
-    let elevator_deg: Vec<f64> = samples
-        .iter()
-        .map(|s| s.elevator_rad.to_degrees())
-        .collect();
-
-    let mut spec = StepResponseSpec::new(STEP_TIME_S, trim_deg, trim_deg + args.step_deg);
-    spec.settling_band_fraction = SETTLING_BAND_FRACTION;
-    let metrics = step_response_metrics(&time, &theta_deg, &spec);
-    let actuator = ElevatorActuatorParameters::default();
-    let activity = actuator_activity(
-        &time,
-        &elevator_deg,
-        actuator.min_deflection_deg,
-        actuator.max_deflection_deg,
-        LIMIT_TOLERANCE_DEG,
-    )
-    .with_context(|| format!("cannot measure the {} elevator activity", choice.label()))?;
-    let max_elevator_change_deg = elevator_deg
-        .iter()
-        .fold(0.0_f64, |peak, e| peak.max((e - elevator_trim_deg).abs()));
-
-    let diverged = (summary.outcome == Outcome::Diverged).then(|| {
-        format!(
-            "the simulation diverged at t = {:.3} s: {}",
-            summary.end_time_s,
-            summary.reason.clone().unwrap_or_default()
-        )
-    });
-    let result = match metrics {
-        Ok(metrics) => {
-            let not_settled_reason = diverged.or(metrics.not_settled_reason);
-            ControllerResult {
-                controller: choice.label(),
-                settled: not_settled_reason.is_none(),
-                settling_time_s: if not_settled_reason.is_none() {
-                    metrics.settling_time_s
-                } else {
-                    None
-                },
-                not_settled_reason,
-                overshoot_pct: metrics.overshoot_pct,
-                rise_time_s: metrics.rise_time_s,
-                steady_state_error_deg: metrics.steady_state_error,
-                max_elevator_deg: activity.peak_abs,
-                max_elevator_change_deg,
-                elevator_saturation_s: activity.time_at_lower_limit_s
-                    + activity.time_at_upper_limit_s,
-                elevator_total_variation_deg: total_variation(&elevator_deg)?,
-                outcome: summary.outcome.name(),
-            }
-        }
-        // A record that cannot be measured (diverged before the step, non-finite values)
-        // is reported as not settled, with the reason.
-        Err(error) => ControllerResult {
-            controller: choice.label(),
-            settling_time_s: None,
-            settled: false,
-            not_settled_reason: Some(diverged.unwrap_or_else(|| error.to_string())),
-            overshoot_pct: f64::NAN,
-            rise_time_s: None,
-            steady_state_error_deg: None,
-            max_elevator_deg: activity.peak_abs,
-            max_elevator_change_deg,
-            elevator_saturation_s: activity.time_at_lower_limit_s + activity.time_at_upper_limit_s,
-            elevator_total_variation_deg: activity.total_variation,
-            outcome: summary.outcome.name(),
-        },
-    };
-    Ok(ControllerRun {
-        choice,
-        samples,
-        result,
-    })
+/// What a set of step runs flew, for the figures' titles and reference lines.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct StepFlight {
+    /// Ideal or adverse.
+    pub(crate) conditions: Conditions,
+    /// Seed of the random streams.
+    pub(crate) seed: u64,
+    /// The step.
+    pub(crate) step: PitchStep,
+    /// O-PD observer ε, when not the library's.
+    pub(crate) epsilon: Option<f64>,
 }
 
-/// The CSV header and rows: time, then per controller θ, θ_ref, θ_m, elevator, elevator
-/// command (deg) and the O-PD disturbance estimate (rad/s²; empty for the PID).
+impl StepFlight {
+    fn of(args: &StepArgs) -> Self {
+        Self {
+            conditions: args.conditions,
+            seed: args.seed,
+            step: PitchStep::new(args.step_deg, args.seconds),
+            epsilon: args.epsilon,
+        }
+    }
+
+    /// The scenario flown with `choice`.
+    fn scenario(&self, choice: ControllerChoice) -> Scenario {
+        let mut scenario = self.conditions.scenario(self.seed);
+        scenario.control.pitch = controller_parameters(choice, self.epsilon);
+        scenario
+    }
+
+    /// Flies the step with each controller and measures it.
+    pub(crate) fn fly(&self, choices: &[ControllerChoice]) -> Result<Vec<ControllerRun>> {
+        choices
+            .iter()
+            .map(|&choice| {
+                let run = fly_pitch_step(&self.scenario(choice), &self.step)
+                    .with_context(|| format!("cannot fly the {} step", choice.label()))?;
+                Ok(ControllerRun {
+                    choice,
+                    samples: run.samples,
+                    result: run.response,
+                })
+            })
+            .collect()
+    }
+}
+
 fn csv_bytes(runs: &[ControllerRun]) -> Result<Vec<u8>> {
     let mut writer = csv::Writer::from_writer(Vec::new());
     let mut header = vec!["time_s".to_string()];
@@ -320,19 +248,20 @@ fn series(samples: &[Signals], value: impl Fn(&Signals) -> f64) -> Vec<(f64, f64
 }
 
 /// The pitch figure (paper Fig. 10/11) and the elevator figure (paper Fig. 12).
-pub(crate) fn figures(runs: &[ControllerRun], args: &StepArgs) -> Vec<(&'static str, Figure)> {
-    let conditions = match args.conditions {
+pub(crate) fn figures(runs: &[ControllerRun], flight: &StepFlight) -> Vec<(&'static str, Figure)> {
+    let (conditions, seed, step_deg) = (flight.conditions, flight.seed, flight.step.step_deg);
+    let conditions_text = match conditions {
         Conditions::Ideal => "no noise or wind (cf. paper Fig. 10)".to_string(),
-        Conditions::Adverse => format!("noise and wind, seed {} (cf. paper Fig. 11)", args.seed),
+        Conditions::Adverse => format!("noise and wind, seed {seed} (cf. paper Fig. 11)"),
     };
     let trim_deg = runs
         .first()
         .and_then(|r| r.samples.first())
         .map_or(0.0, |s| s.theta_ref_rad.to_degrees());
-    let target_deg = trim_deg + args.step_deg;
-    let band_deg = SETTLING_BAND_FRACTION * args.step_deg.abs();
+    let target_deg = trim_deg + step_deg;
+    let band_deg = SETTLING_BAND_FRACTION * step_deg.abs();
     let mut pitch = Panel::new(
-        format!("Pitch step response of {:+}°, {conditions}", args.step_deg),
+        format!("Pitch step response of {step_deg:+}°, {conditions_text}"),
         "time (s)",
         "pitch angle θ (deg)",
     );
@@ -352,15 +281,16 @@ pub(crate) fn figures(runs: &[ControllerRun], args: &StepArgs) -> Vec<(&'static 
         .reference_line("target + 2 % of the step", target_deg + band_deg)
         .reference_line("target − 2 % of the step", target_deg - band_deg);
 
-    let actuator = ElevatorActuatorParameters::default();
+    let actuator = flight
+        .scenario(ControllerChoice::Opd)
+        .aircraft
+        .elevator_actuator;
     let mut elevator = Panel::new(
         format!(
-            "Elevator deflection during the {:+}° step, {}",
-            args.step_deg,
-            match args.conditions {
+            "Elevator deflection during the {step_deg:+}° step, {}",
+            match conditions {
                 Conditions::Ideal => "no noise or wind".to_string(),
-                Conditions::Adverse =>
-                    format!("noise and wind, seed {} (cf. paper Fig. 12)", args.seed),
+                Conditions::Adverse => format!("noise and wind, seed {seed} (cf. paper Fig. 12)"),
             }
         ),
         "time (s)",
@@ -467,15 +397,11 @@ pub fn run(args: &StepArgs) -> Result<()> {
         PitchControllerParameters::Pid(_) => f64::NAN,
     };
     let output = OutputDir::prepare("step", args.output.out.as_deref(), args.output.force)?;
-    let runs = args
-        .controller
-        .choices()
-        .into_iter()
-        .map(|choice| fly(args, choice))
-        .collect::<Result<Vec<_>>>()?;
+    let flight = StepFlight::of(args);
+    let runs = flight.fly(&args.controller.choices())?;
 
     let mut written = vec![output.write_bytes("step.csv", &csv_bytes(&runs)?)?];
-    for (stem, figure) in figures(&runs, args) {
+    for (stem, figure) in figures(&runs, &flight) {
         written.extend(figure.save(&output, stem)?);
     }
     let report = StepReport {

@@ -22,18 +22,20 @@ use deckland::analysis::{
     OpenLoopSample, TrimPoint, TrimRequest,
 };
 use deckland::control::pitch::ObserverPdGains;
-use deckland::recording::{SummaryRecorder, TimeSeriesRecorder};
+use deckland::experiments::{
+    fly_approach, fly_seeds, record_environment, EnvironmentRecord, OutcomeCounts, PitchStep,
+    SinkRateTracking,
+};
 use deckland::scenario::EnvironmentSection;
-use deckland::simulation::{Outcome, RunSummary, Simulation};
+use deckland::simulation::RunSummary;
 use indicatif::{ProgressBar, ProgressStyle};
 use nalgebra::SMatrix;
 
-use super::common::OutputArgs;
 use super::common::{Conditions, ControllerChoice};
-use super::environment::{self, EnvironmentArgs};
+use super::environment;
 use super::land;
-use super::sink::{self, SinkArgs};
-use super::step::{self, ControllerResult, StepArgs, StepControllers};
+use super::sink;
+use super::step::{self, ControllerResult, StepFlight};
 use crate::output::OutputDir;
 use crate::plot::Figure;
 
@@ -235,35 +237,22 @@ fn pick(figures: &[(&'static str, Figure)], stem: &str) -> Result<Figure> {
         .ok_or_else(|| anyhow!("the figure builder made no `{stem}` figure"))
 }
 
-fn step_args(conditions: Conditions) -> StepArgs {
-    StepArgs {
-        controller: StepControllers::Both,
+/// The pitch step of Fig. 10–12 in `conditions`.
+fn step_flight(conditions: Conditions) -> StepFlight {
+    StepFlight {
         conditions,
-        step_deg: PITCH_STEP_DEG,
-        seconds: PITCH_STEP_SECONDS,
         seed: SEED,
+        step: PitchStep::new(PITCH_STEP_DEG, PITCH_STEP_SECONDS),
         epsilon: None,
-        output: OutputArgs {
-            out: None,
-            force: false,
-            json: false,
-        },
     }
 }
 
-fn sink_args(ramp_s: f64, seconds: f64) -> SinkArgs {
-    SinkArgs {
+/// The sink-rate command of Fig. 13, ramped in over `ramp_s`.
+fn sink_tracking(ramp_s: f64, seconds: f64) -> SinkRateTracking {
+    SinkRateTracking {
         sink_rate_mps: SINK_RATE_MPS,
         ramp_s,
-        controller: ControllerChoice::Opd,
-        conditions: Conditions::Ideal,
         seconds,
-        seed: SEED,
-        output: OutputArgs {
-            out: None,
-            force: false,
-            json: false,
-        },
     }
 }
 
@@ -368,15 +357,13 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
     progress.start("Fig. 7, 8 ship motion and wind");
     let environment_parameters = EnvironmentSection::default();
     environment_parameters.validate()?;
-    let environment_args = EnvironmentArgs {
+    let environment_record = EnvironmentRecord {
         seconds: lengths.environment_s,
         seed: SEED,
         distance_aft_m: WIND_DISTANCE_AFT_M,
         airspeed_mps: trim_point.speed_mps,
-        out: None,
-        force: false,
     };
-    let rows = environment::simulate(&environment_args, &environment_parameters)?;
+    let rows = record_environment(&environment_parameters, &environment_record)?;
     let peak = |f: &dyn Fn(&environment::Row) -> f64| {
         rows.iter().map(|r| f(r).abs()).fold(0.0_f64, f64::max)
     };
@@ -389,7 +376,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
             (lo.min(r.wind_x_mps), hi.max(r.wind_x_mps))
         });
     let environment_figures =
-        environment::figures(&rows, &environment_args, &environment_parameters);
+        environment::figures(&rows, &environment_record, &environment_parameters);
     save(
         &output,
         &mut written,
@@ -415,12 +402,10 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
 
     // Fig. 10–12.
     progress.start("Fig. 10 pitch step, ideal");
-    let ideal_args = step_args(Conditions::Ideal);
-    let ideal_runs = [ControllerChoice::Opd, ControllerChoice::Pid]
-        .into_iter()
-        .map(|choice| step::fly(&ideal_args, choice))
-        .collect::<Result<Vec<_>>>()?;
-    let ideal_figures = step::figures(&ideal_runs, &ideal_args);
+    let both = [ControllerChoice::Opd, ControllerChoice::Pid];
+    let ideal_flight = step_flight(Conditions::Ideal);
+    let ideal_runs = ideal_flight.fly(&both)?;
+    let ideal_figures = step::figures(&ideal_runs, &ideal_flight);
     save(
         &output,
         &mut written,
@@ -430,12 +415,9 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
         format!("{PITCH_STEP_DEG}° pitch step without noise or wind, O-PD and PID"),
     )?;
     progress.start("Fig. 11, 12 pitch step, adverse");
-    let adverse_args = step_args(Conditions::Adverse);
-    let adverse_runs = [ControllerChoice::Opd, ControllerChoice::Pid]
-        .into_iter()
-        .map(|choice| step::fly(&adverse_args, choice))
-        .collect::<Result<Vec<_>>>()?;
-    let adverse_figures = step::figures(&adverse_runs, &adverse_args);
+    let adverse_flight = step_flight(Conditions::Adverse);
+    let adverse_runs = adverse_flight.fly(&both)?;
+    let adverse_figures = step::figures(&adverse_runs, &adverse_flight);
     save(
         &output,
         &mut written,
@@ -455,14 +437,20 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
 
     // Fig. 13.
     progress.start("Fig. 13 sink-rate tracking");
-    let step_sink_args = sink_args(0.0, lengths.sink_s);
-    let sink_step_run = sink::fly(&step_sink_args)?;
-    let ramp_sink_args = sink_args(SINK_RAMP_S, lengths.sink_s);
-    let sink_ramp_run = sink::fly(&ramp_sink_args)?;
+    let fly_sink = |ramp_s| {
+        sink::fly_tracking(
+            ControllerChoice::Opd,
+            Conditions::Ideal,
+            SEED,
+            &sink_tracking(ramp_s, lengths.sink_s),
+        )
+    };
+    let sink_step_run = fly_sink(0.0)?;
+    let sink_ramp_run = fly_sink(SINK_RAMP_S)?;
     save(
         &output,
         &mut written,
-        &sink::figure(&sink_ramp_run, &ramp_sink_args),
+        &sink::figure(&sink_ramp_run),
         "fig13_sink_rate",
         "Fig. 13",
         format!(
@@ -473,7 +461,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
     save(
         &output,
         &mut written,
-        &sink::figure(&sink_step_run, &step_sink_args),
+        &sink::figure(&sink_step_run),
         "fig13_sink_rate_step",
         "Fig. 13",
         format!(
@@ -486,11 +474,9 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
     progress.start("Fig. 14, 15 approach and landing");
     let mut scenario = Conditions::Adverse.scenario(SEED);
     scenario.control.pitch = ControllerChoice::Opd.parameters();
-    let mut recorder = TimeSeriesRecorder::every(0.01);
-    let approach = Simulation::new(&scenario)
-        .context("cannot set up the approach")?
-        .run(&mut recorder);
-    let approach_samples = &recorder.samples;
+    let approach_run = fly_approach(&scenario).context("cannot set up the approach")?;
+    let approach = approach_run.summary;
+    let approach_samples = &approach_run.samples;
     let pitch_tracking_rms_deg = {
         let n = approach_samples.len().max(1) as f64;
         (approach_samples
@@ -529,17 +515,13 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
 
     // Boarding statistics (not in the paper).
     progress.start("boarding statistics");
-    let mut boarded = 0;
-    for seed in 1..=lengths.boarding_seeds {
-        let mut scenario = Conditions::Adverse.scenario(seed);
-        scenario.control.pitch = ControllerChoice::Opd.parameters();
-        let summary = Simulation::new(&scenario)
-            .with_context(|| format!("cannot set up the approach of seed {seed}"))?
-            .run(&mut SummaryRecorder);
-        if summary.outcome == Outcome::Trap {
-            boarded += 1;
-        }
-    }
+    let mut base = Conditions::Adverse.scenario(SEED);
+    base.control.pitch = ControllerChoice::Opd.parameters();
+    let seeds: Vec<u64> = (1..=lengths.boarding_seeds).collect();
+    let boarding = OutcomeCounts::of(
+        &fly_seeds(&base, &seeds).context("cannot set up the boarding statistics")?,
+    );
+    let boarded = boarding.trap;
 
     progress.start("REPORT.md");
     let findings = Findings {
