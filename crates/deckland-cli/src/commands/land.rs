@@ -31,6 +31,9 @@ pub struct LandArgs {
     /// Fly without deck-motion compensation (track the mean deck to the end).
     #[arg(long)]
     pub no_deck_compensation: bool,
+    /// Write no plots (the CSV, the summary and the scenario only).
+    #[arg(long)]
+    pub no_plots: bool,
     /// Output folder, overwriting and JSON printing.
     #[command(flatten)]
     pub output: OutputArgs,
@@ -220,6 +223,7 @@ pub fn fly_and_write(
     controller: &str,
     conditions: &str,
     json: bool,
+    plots: bool,
 ) -> Result<RunSummary> {
     let run = fly_approach(scenario).context("cannot set up the approach")?;
     let summary = run.summary;
@@ -246,9 +250,11 @@ pub fn fly_and_write(
         "summary.json",
         serde_json::to_string_pretty(&report)?.as_bytes(),
     )?;
-    let title = format!("{controller}, {conditions}, seed {}", scenario.seed);
-    for (stem, figure) in figures(&run.samples, &title) {
-        figure.save(output, stem)?;
+    if plots {
+        let title = format!("{controller}, {conditions}, seed {}", scenario.seed);
+        for (stem, figure) in figures(&run.samples, &title) {
+            figure.save(output, stem)?;
+        }
     }
     if json {
         println!("{}", serde_json::to_string_pretty(&report)?);
@@ -305,6 +311,7 @@ pub fn run(args: &LandArgs) -> Result<()> {
         args.controller.label(),
         args.conditions.name(),
         args.output.json,
+        !args.no_plots,
     )?;
     Ok(())
 }

@@ -26,6 +26,9 @@ pub struct RunArgs {
     /// draws it: `--seed` with a `runs.csv` row's seed re-flies that run.
     #[arg(long)]
     pub disperse: bool,
+    /// Write no plots (the CSV, the summary and the scenario only).
+    #[arg(long)]
+    pub no_plots: bool,
     /// Output folder, overwriting and JSON printing.
     #[command(flatten)]
     pub output: OutputArgs,
@@ -54,6 +57,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
         controller_label(&scenario.control.pitch),
         &name,
         args.output.json,
+        !args.no_plots,
     )?;
     Ok(())
 }
