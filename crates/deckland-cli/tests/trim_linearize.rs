@@ -67,7 +67,7 @@ fn linearize_json_has_matrices_eigenvalues_and_modes() {
     let modes = v["modes"].as_array().unwrap();
     let names: Vec<&str> = modes.iter().map(|m| m["name"].as_str().unwrap()).collect();
     assert_eq!(names, ["short_period", "phugoid"]);
-    // MODEL.md §2.3: short period ≈ −0.385 ± 0.478i → ω_n ≈ 0.614 rad/s.
+    // docs/model.md §2.3: short period ≈ −0.385 ± 0.478i → ω_n ≈ 0.614 rad/s.
     let omega = modes[0]["natural_frequency_rad_s"].as_f64().unwrap();
     assert!((omega - (0.385f64.hypot(0.478))).abs() < 0.005, "{omega}");
 }

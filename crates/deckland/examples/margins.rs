@@ -1,5 +1,5 @@
 //! Loop-by-loop stability margins of the default landing cascade, linearised at the start
-//! of an ideal-conditions approach (MODEL.md §5):
+//! of an ideal-conditions approach (docs/model.md §5):
 //! `cargo run --release -p deckland --example margins`.
 
 use deckland::analysis::cascade_margins;

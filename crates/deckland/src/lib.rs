@@ -4,7 +4,7 @@
 //! landing of an unmanned F/A-18 on a moving aircraft carrier, following Kistyarev &
 //! Wang, *Unmanned F/A-18 Aircraft Landing Control on Aircraft Carrier in Adverse
 //! Conditions*, corrected and completed by the project's engineering specification
-//! (`MODEL.md`).
+//! (`docs/model.md`).
 //!
 //! ## Conventions (read these first)
 //!

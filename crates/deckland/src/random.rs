@@ -1,4 +1,4 @@
-//! Seeded, named random streams (MODEL.md §3.4).
+//! Seeded, named random streams (docs/model.md §3.4).
 //!
 //! Every random source (ship heave, ship pitch, turbulence u and w, pitch measurement
 //! noise) draws from its own stream. A stream is a ChaCha8 generator keyed by the
@@ -13,7 +13,7 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rand_distr::StandardNormal;
 
-/// The names of the environment's random streams (MODEL.md §3.4).
+/// The names of the environment's random streams (docs/model.md §3.4).
 pub mod stream_names {
     /// White noise driving the ship heave filter G_H(s) (paper Eq. 15).
     pub const SHIP_HEAVE: &str = "ship_heave";
@@ -38,7 +38,7 @@ pub fn fnv1a_64(bytes: &[u8]) -> u64 {
 }
 
 /// The source of every random stream of one scenario, derived from its seed
-/// (MODEL.md §3.4).
+/// (docs/model.md §3.4).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct RandomStreams {
     seed: u64,
@@ -65,7 +65,7 @@ impl RandomStreams {
     }
 }
 
-/// One independent stream of random numbers (MODEL.md §3.4).
+/// One independent stream of random numbers (docs/model.md §3.4).
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct NoiseStream {
     generator: ChaCha8Rng,

@@ -1,5 +1,5 @@
 //! The default cascade is stable with healthy margins on every outer loop; the paper's
-//! outer-loop gains are not (MODEL.md §5). Linear analysis, independent of simulation.
+//! outer-loop gains are not (docs/model.md §5). Linear analysis, independent of simulation.
 
 #![allow(clippy::unwrap_used)] // tests fail loudly by design
 
@@ -36,7 +36,7 @@ fn default_cascade_is_stable_with_bandwidth_separation_and_margins() {
             assert!(m.gain_margin_db.is_none_or(|g| g > 6.0), "{m:?}");
             assert!(m.modulus_margin > 0.5, "{m:?}");
         }
-        // Bandwidth separation: guidance well below the sink-rate loop (MODEL.md §5).
+        // Bandwidth separation: guidance well below the sink-rate loop (docs/model.md §5).
         let (sink_bw, guidance_bw) = (
             sink.crossover_radps.unwrap(),
             guidance.crossover_radps.unwrap(),

@@ -178,7 +178,7 @@ fn invalid_scenarios_are_rejected_with_the_field_named() {
 
 /// Regression: the sensor's sinusoid was once added twice (held per step and again per
 /// stage), doubling its amplitude. With only the sinusoid on, θ_m − θ must be
-/// 0.001·sin(7t) at every recorded step (MODEL.md §3.3).
+/// 0.001·sin(7t) at every recorded step (docs/model.md §3.3).
 #[test]
 fn regression_sensor_sinusoid_is_added_once() {
     let mut scenario = Scenario::default().ideal();

@@ -2,7 +2,7 @@
 //! ẇ1 = w2, ẇ2 = w3 + h(t), ẇ3 = η(t), y = w1 + n(t), with the known smooth
 //! disturbance w3(t) = sin t + 0.5·cos 2t (so η = cos t − sin 2t) and known input
 //! h(t) = 0.3·cos 0.7t. Plant and observer are integrated together with RK4 at 1 ms
-//! (MODEL.md §6); the noise sample is drawn once per step and held over its stages.
+//! (docs/model.md §6); the noise sample is drawn once per step and held over its stages.
 //!
 //! The error bounds below are the measured maxima after the transient (printed by the
 //! tests with `--nocapture`) rounded up by a factor of about two; they are not from the
@@ -111,7 +111,7 @@ fn error_bound_shrinks_with_epsilon() {
 
 #[test]
 fn estimates_stay_bounded_with_measurement_noise_and_noise_grows_as_epsilon_falls() {
-    // σ = 0.001, the pitch-attitude noise of MODEL.md §3.3.
+    // σ = 0.001, the pitch-attitude noise of docs/model.md §3.3.
     // Measured (seed 7): rms disturbance error 0.12, 0.27, 0.73 rad/s² for ε = 0.05,
     // 0.03, 0.02: the bandwidth that shrinks the lag also passes more noise.
     let mut previous_rms = 0.0;

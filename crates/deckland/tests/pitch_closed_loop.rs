@@ -1,9 +1,9 @@
 //! Pitch controllers in closed loop with the linear pitch model of paper Eq. 26–27,
 //! θ̈ = a_q·θ̇ + b·Δδe + d(t), a_q = ∂q̇/∂q = −0.15 /s (paper Eq. 14), b = ∂q̇/∂δe =
-//! −1.93 /s² (MODEL.md §2 landing trim, computed by hand from C_mδe ≈ −0.93 at
+//! −1.93 /s² (docs/model.md §2 landing trim, computed by hand from C_mδe ≈ −0.93 at
 //! q̄ = 3175 Pa), behind the paper's second-order elevator actuator (ω = 30.74 rad/s,
-//! ζ = 0.509, paper §3.6) with optional position limits −25°…+10° (MODEL.md §2.6).
-//! Trim θ* = 7.1° (paper Table 3), δe* = −8.2° (MODEL.md §2.3). RK4 at 1 ms.
+//! ζ = 0.509, paper §3.6) with optional position limits −25°…+10° (docs/model.md §2.6).
+//! Trim θ* = 7.1° (paper Table 3), δe* = −8.2° (docs/model.md §2.3). RK4 at 1 ms.
 //!
 //! The reference settling time is that of the design's ideal error dynamics
 //! ë + 2ζω_n·ė + ω_n²·e = 0 (poles −3.9 and −22.8 rad/s), measured with the same

@@ -1,5 +1,5 @@
 //! Validation of trim, linearisation and modes against the paper (Table 3, Eq. 14) and
-//! the values MODEL.md §2.3 records for this model, with eigenvalues cross-checked by an
+//! the values docs/model.md §2.3 records for this model, with eigenvalues cross-checked by an
 //! independent computation (characteristic polynomial + Durand–Kerner root finding).
 
 #![allow(clippy::unwrap_used)] // tests fail loudly by design
@@ -26,7 +26,7 @@ fn default_trim_reproduces_paper_table_3() {
     );
     assert!((point.theta_rad.to_degrees() - 7.1).abs() < 0.01);
     assert!(point.residuals.max_abs() < 1e-9, "{:?}", point.residuals);
-    // MODEL.md §2.3: δe ≈ −8.2°, T ≈ 26 kN.
+    // docs/model.md §2.3: δe ≈ −8.2°, T ≈ 26 kN.
     assert!(
         (point.elevator_rad.to_degrees() + 8.2).abs() < 0.1,
         "δe {}",
@@ -39,7 +39,7 @@ fn default_trim_reproduces_paper_table_3() {
     );
 }
 
-/// MODEL.md §2.3: the clean data trims at α ≈ 16° at 69.1 m/s.
+/// docs/model.md §2.3: the clean data trims at α ≈ 16° at 69.1 m/s.
 #[test]
 fn clean_configuration_trims_near_16_degrees() {
     let aircraft = Aircraft::with_configuration(AerodynamicConfiguration::CLEAN);
@@ -82,7 +82,7 @@ fn glide_slope_trim_has_theta_equal_alpha_plus_gamma() {
     )
     .unwrap();
     assert!((point.theta_rad - point.alpha_rad - gamma).abs() < 1e-15);
-    // Descending needs less thrust than level flight, but still positive (MODEL.md §2.3).
+    // Descending needs less thrust than level flight, but still positive (docs/model.md §2.3).
     let level_thrust = trim(&Aircraft::default(), &level(69.1)).unwrap().thrust_n;
     assert!(point.thrust_n > 0.0 && point.thrust_n < level_thrust);
 }
@@ -212,7 +212,7 @@ fn assert_same_spectrum(mut left: Vec<Complex<f64>>, mut right: Vec<Complex<f64>
     }
 }
 
-/// MODEL.md §8: the paper's printed Eq. (14) A matrix has eigenvalues −0.406 ± 0.447i and
+/// docs/model.md §8: the paper's printed Eq. (14) A matrix has eigenvalues −0.406 ± 0.447i and
 /// −0.054 ± 0.161i (not the ones the paper prints).
 #[test]
 fn printed_paper_matrix_gives_the_eigenvalues_model_md_records() {
@@ -242,7 +242,7 @@ fn printed_paper_matrix_gives_the_eigenvalues_model_md_records() {
     );
 }
 
-/// MODEL.md §2.3: short period ≈ −0.385 ± 0.478i, phugoid ≈ 0.002 ± 0.164i; ∂q̇/∂α ≈ −0.26.
+/// docs/model.md §2.3: short period ≈ −0.385 ± 0.478i, phugoid ≈ 0.002 ± 0.164i; ∂q̇/∂α ≈ −0.26.
 #[test]
 fn linear_model_modes_match_model_md() {
     let aircraft = Aircraft::default();

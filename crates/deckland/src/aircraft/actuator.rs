@@ -1,5 +1,5 @@
 //! Second-order elevator (stabilator) actuator with position and optional rate limits
-//! (MODEL.md §2.6, paper §3.6).
+//! (docs/model.md §2.6, paper §3.6).
 //!
 //! Effects, in the order they are applied:
 //! 1. the command is limited to the position limits (so the actuator never aims beyond

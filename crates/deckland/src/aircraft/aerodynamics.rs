@@ -1,4 +1,4 @@
-//! Polynomial F/A-18 aerodynamic coefficients (MODEL.md §2.2).
+//! Polynomial F/A-18 aerodynamic coefficients (docs/model.md §2.2).
 //!
 //! Source: Chakraborty, Seiler & Balas, *Susceptibility of F/A-18 flight controllers to
 //! the falling-leaf mode*, JGCD 2011 (data from the NASA HARV model), the paper's

@@ -1,5 +1,5 @@
 //! Aerodynamic configurations: `landing` (flaps and gear down, default) and `clean`
-//! (MODEL.md §2.3).
+//! (docs/model.md §2.3).
 
 use crate::parameters::{Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
@@ -43,7 +43,7 @@ impl FromStr for ConfigurationName {
 /// Increments added to the clean polynomial aerodynamics, and the CG position.
 ///
 /// The clean data cannot reproduce the paper's trim (Table 3: V* = 69.1 m/s,
-/// α* = 7.1°); the `landing` increments are chosen so that it does (MODEL.md §2.3).
+/// α* = 7.1°); the `landing` increments are chosen so that it does (docs/model.md §2.3).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct AerodynamicConfiguration {
@@ -59,7 +59,7 @@ pub struct AerodynamicConfiguration {
 }
 
 impl AerodynamicConfiguration {
-    /// The approach configuration (MODEL.md §2.3): ΔC_L0 = 0.6938 gives level trim at
+    /// The approach configuration (docs/model.md §2.3): ΔC_L0 = 0.6938 gives level trim at
     /// 69.1 m/s with α = 7.1° (Table 3); ΔC_D0 = 0.16 gives an approach L/D ≈ 5.5;
     /// the CG 0.0729·c̄ ahead of the reference point gives ∂q̇/∂α = −0.26 s⁻² at trim
     /// (paper Eq. 14).

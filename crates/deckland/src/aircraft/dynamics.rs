@@ -1,4 +1,4 @@
-//! The 3-DOF longitudinal equations of motion over a flat earth (MODEL.md §2.4).
+//! The 3-DOF longitudinal equations of motion over a flat earth (docs/model.md §2.4).
 //!
 //! Integrated in body axes on inertial velocities (Stevens & Lewis, *Aircraft Control
 //! and Simulation*, Eq. 2.5-32 family, with β = 0 and no lateral motion):
@@ -344,7 +344,7 @@ impl OdeSystem<{ AircraftState::DIMENSION }> for OpenLoopAircraft {
 mod tests {
     use super::*;
 
-    /// The wind-axis equations of MODEL.md §2.4 written out independently, still air:
+    /// The wind-axis equations of docs/model.md §2.4 written out independently, still air:
     /// V̇ = (T cos α − D)/m − g sin γ, α̇ = q − (T sin α + L)/(mV) + g cos γ / V.
     fn wind_axis_rates(
         aircraft: &Aircraft,

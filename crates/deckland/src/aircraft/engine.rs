@@ -1,4 +1,4 @@
-//! Twin F404-GE-400 engines with first-order thrust lag (MODEL.md §2.5, paper §3.6).
+//! Twin F404-GE-400 engines with first-order thrust lag (docs/model.md §2.5, paper §3.6).
 
 use crate::parameters::{Bounds, ParameterError};
 use serde::{Deserialize, Serialize};

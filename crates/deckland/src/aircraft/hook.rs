@@ -1,4 +1,4 @@
-//! The arresting hook's position (MODEL.md §2.7).
+//! The arresting hook's position (docs/model.md §2.7).
 
 use super::state::AircraftState;
 use crate::parameters::{Bounds, ParameterError};
@@ -8,9 +8,9 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct HookGeometry {
-    /// Distance of the hook point aft of the CG along body x (m); 7.0 m (MODEL.md §2.7).
+    /// Distance of the hook point aft of the CG along body x (m); 7.0 m (docs/model.md §2.7).
     pub aft_of_cg_m: f64,
-    /// Distance of the hook point below the CG along body z (m); 1.8 m (MODEL.md §2.7).
+    /// Distance of the hook point below the CG along body z (m); 1.8 m (docs/model.md §2.7).
     pub below_cg_m: f64,
 }
 

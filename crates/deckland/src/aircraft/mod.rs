@@ -1,4 +1,4 @@
-//! The longitudinal F/A-18 plant (MODEL.md §2): aerodynamics, engines, elevator
+//! The longitudinal F/A-18 plant (docs/model.md §2): aerodynamics, engines, elevator
 //! actuator and the 3-DOF equations of motion.
 //!
 //! The plant's state is [`AircraftState`]; [`Aircraft::derivative`] gives its time

@@ -1,4 +1,4 @@
-//! Mass, inertia, geometry and atmosphere constants (paper Table 2, MODEL.md §2.1).
+//! Mass, inertia, geometry and atmosphere constants (paper Table 2, docs/model.md §2.1).
 
 use crate::parameters::{Bounds, ParameterError};
 use serde::{Deserialize, Serialize};

@@ -3,7 +3,7 @@
 /// State of the longitudinal plant: rigid body, engines and elevator actuator.
 ///
 /// Velocities are *inertial* (earth-relative) components in body axes, so that wind
-/// enters the aerodynamics only through the air-relative velocity (MODEL.md §2.4).
+/// enters the aerodynamics only through the air-relative velocity (docs/model.md §2.4).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct AircraftState {
     /// Inertial velocity along body x, u (m/s).

@@ -1,5 +1,5 @@
 //! Stability margins of the landing cascade, loop by loop, on the linearised closed loop
-//! (MODEL.md §5: "checked on the linearised cascade with gain and phase margins").
+//! (docs/model.md §5: "checked on the linearised cascade with gain and phase margins").
 //!
 //! The closed loop of the approach is linearised numerically (central differences) at the
 //! start of an ideal-conditions approach, with one loop cut at a time

@@ -1,5 +1,5 @@
 //! Flight-path generator: the glide path the hook follows down to the deck (paper §2.1,
-//! §4.1; MODEL.md §5).
+//! §4.1; docs/model.md §5).
 //!
 //! The glide path is a straight line at `glide_slope_deg` through an anchor on the deck:
 //! h_ref = h_anchor + (x_anchor − x_hook)·tan(glide slope), with climb rate

@@ -2,7 +2,7 @@
 //! path (paper §4.5, Eq. 44).
 //!
 //! ḣ_cmd = ḣ_path + K_Pz·e_h + K_Iz·∫e_h + K_Dz·ė_h, e_h = h_ref − h_hook: the path's own
-//! climb rate is fed forward (MODEL.md §5) and the correction is limited to
+//! climb rate is fed forward (docs/model.md §5) and the correction is limited to
 //! ±`climb_rate_authority_mps` with conditional-integration anti-windup.
 
 use super::loop_controller::{LoopController, LoopGains};
@@ -24,7 +24,7 @@ pub struct GuidanceParameters {
 }
 
 impl Default for GuidanceParameters {
-    /// The project's design (MODEL.md §5): K_Pz = 0.3, K_Iz = 0.02, K_Dz = 0, ±5 m/s.
+    /// The project's design (docs/model.md §5): K_Pz = 0.3, K_Iz = 0.02, K_Dz = 0, ±5 m/s.
     fn default() -> Self {
         Self {
             proportional_per_s: 0.3,
@@ -37,7 +37,7 @@ impl Default for GuidanceParameters {
 
 impl GuidanceParameters {
     /// The paper's gains (§4.5): K_Pz = 1, K_Iz = 0.5, K_Dz = 0.01. Faster than the sink
-    /// loop they command; the cascade diverges with them (MODEL.md §5).
+    /// loop they command; the cascade diverges with them (docs/model.md §5).
     pub fn paper() -> Self {
         Self {
             proportional_per_s: 1.0,

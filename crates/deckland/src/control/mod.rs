@@ -1,4 +1,4 @@
-//! Flight controllers of the landing cascade (MODEL.md §5; paper §4).
+//! Flight controllers of the landing cascade (docs/model.md §5; paper §4).
 //!
 //! Cascade: flight-path generator → guidance → sink-rate controller → [`pitch`]
 //! controller → elevator; in parallel the speed controller → thrust.

@@ -1,7 +1,7 @@
 //! Sink-rate controller: pitch command from the climb-rate error (paper §4.4, Eq. 43).
 //!
 //! θ_ref = θ*_gs + K_Ps·e_s + K_Is·∫e_s, e_s = ḣ_cmd − ḣ (climb rates, positive up; the
-//! sink rate is −ḣ), where θ*_gs is the trim pitch on the glide path (MODEL.md §5). The
+//! sink rate is −ḣ), where θ*_gs is the trim pitch on the glide path (docs/model.md §5). The
 //! correction is limited to ±`pitch_authority_deg` with conditional-integration
 //! anti-windup.
 
@@ -24,7 +24,7 @@ pub struct SinkRateControllerParameters {
 impl Default for SinkRateControllerParameters {
     /// The project's design: K_Ps = 0.035, K_Is = 0.012, ±8°.
     ///
-    /// Chosen below MODEL.md §5's starting point (0.05, 0.02): in adverse conditions that
+    /// Chosen below docs/model.md §5's starting point (0.05, 0.02): in adverse conditions that
     /// gain lets the wake's climb-rate swings (vertical gusts of about ±3 m/s met at
     /// 5.8 rad/s) into the pitch command and saturates the elevator; over seeds 1–50 it
     /// boarded 68 % with 3 hard landings, against 76 % and none at 0.035/0.012, while
@@ -41,7 +41,7 @@ impl Default for SinkRateControllerParameters {
 
 impl SinkRateControllerParameters {
     /// The paper's gains (§4.4): K_Ps = 0.0061, K_Is = 0.018. They do not fly this plant
-    /// together with the paper's guidance gains (MODEL.md §5).
+    /// together with the paper's guidance gains (docs/model.md §5).
     pub fn paper() -> Self {
         Self {
             proportional_rad_per_mps: 0.0061,

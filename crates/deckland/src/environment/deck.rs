@@ -1,4 +1,4 @@
-//! Flight-deck geometry on the moving ship (paper Eq. 17–18; MODEL.md §2.7, §3.1).
+//! Flight-deck geometry on the moving ship (paper Eq. 17–18; docs/model.md §2.7, §3.1).
 //!
 //! Signs: the ship sails in +x (earth axes), the aircraft approaches from astern flying
 //! +x, so "aft" is −x. Heights h are positive up. Ship pitch θ_s is positive bow-up, so a
@@ -65,17 +65,17 @@ pub struct EarthVelocity {
     pub h_mps: f64,
 }
 
-/// Deck geometry (MODEL.md §2.7; paper Eq. 17–18 for the 81 m).
+/// Deck geometry (docs/model.md §2.7; paper Eq. 17–18 for the 81 m).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct DeckGeometry {
     /// Distance of the landing (aim) point aft of the ship's pitch centre (m); paper
     /// Eq. 17–18: 81.
     pub landing_point_aft_of_pitch_centre_m: f64,
-    /// Arresting wires along the deck from the aim point, positive forward (m); MODEL.md
+    /// Arresting wires along the deck from the aim point, positive forward (m); docs/model.md
     /// §2.7: −18, −6, +6, +18.
     pub wire_positions_m: [f64; 4],
-    /// Distance of the ramp (aft edge of the deck) aft of the aim point (m); MODEL.md
+    /// Distance of the ramp (aft edge of the deck) aft of the aim point (m); docs/model.md
     /// §2.7: 60.
     pub ramp_aft_of_aim_point_m: f64,
     /// Height of the flight deck above mean sea level at zero heave and pitch (m); the

@@ -1,4 +1,4 @@
-//! Stationary covariance of a linear system driven by white noise (MODEL.md §3.1).
+//! Stationary covariance of a linear system driven by white noise (docs/model.md §3.1).
 //!
 //! For ẋ = A x + B w with w white of unit intensity (E[w(t) w(s)ᵀ] = I δ(t − s)) and A
 //! asymptotically stable, the state's stationary covariance P solves the continuous

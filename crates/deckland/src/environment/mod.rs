@@ -1,5 +1,5 @@
 //! The aircraft's environment: ship deck motion, deck geometry, wind and carrier air
-//! wake (paper §3.3–3.4; MODEL.md §3).
+//! wake (paper §3.3–3.4; docs/model.md §3).
 //!
 //! Signs at a glance: the ship sails in +x and the aircraft approaches from astern, also
 //! flying +x; heights and heave are positive up; ship pitch is positive bow-up; wind is

@@ -1,4 +1,4 @@
-//! Ship heave and pitch (paper §3.3, Eq. 15–16; MODEL.md §3.1).
+//! Ship heave and pitch (paper §3.3, Eq. 15–16; docs/model.md §3.1).
 //!
 //! Heave and pitch are the outputs of the shaping filters G_H(s) = 1.21/D(s) and
 //! G_θ(s) = 0.773·s²/D(s), D(s) = s⁴ + 2.08s³ + 1.32s² + 0.4s + 0.16
@@ -8,7 +8,7 @@
 //! and zₖ = z₁^(k−1). Then heave = 1.21z₁, heave rate = 1.21z₂, pitch = 0.773z₃ and pitch
 //! rate = 0.773z₄ exactly, with no direct feed-through of the noise.
 //!
-//! The paper's noise powers are ambiguous (MODEL.md §3.1), so the configured output RMS
+//! The paper's noise powers are ambiguous (docs/model.md §3.1), so the configured output RMS
 //! sets the noise intensity q through the filter's stationary variance for unit
 //! intensity, σ²₁ (Lyapunov equation): q = RMS²/σ²₁. Heave is positive up; pitch θ_s is
 //! positive bow-up.
@@ -28,17 +28,17 @@ pub const HEAVE_FILTER_GAIN: f64 = 1.21;
 /// Numerator gain of the pitch filter G_θ(s) = 0.773·s²/D(s) (paper Eq. 16), rad per unit.
 pub const PITCH_FILTER_GAIN: f64 = 0.773;
 
-/// Configuration of the ship motion (MODEL.md §3.1).
+/// Configuration of the ship motion (docs/model.md §3.1).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct ShipMotionParameters {
     /// Whether the deck heaves and pitches at all; when false the ship is steady.
     pub enabled: bool,
-    /// Stationary RMS of heave (m); MODEL.md §3.1 default 2.0.
+    /// Stationary RMS of heave (m); docs/model.md §3.1 default 2.0.
     pub heave_rms_m: f64,
-    /// Stationary RMS of pitch θ_s (deg); MODEL.md §3.1 default 1.5.
+    /// Stationary RMS of pitch θ_s (deg); docs/model.md §3.1 default 1.5.
     pub pitch_rms_deg: f64,
-    /// Ship forward speed along +x (m/s); MODEL.md §3.1 default 0 (paper).
+    /// Ship forward speed along +x (m/s); docs/model.md §3.1 default 0 (paper).
     pub forward_speed_mps: f64,
 }
 
@@ -141,7 +141,7 @@ pub struct ShipMotionOutputs {
 }
 
 /// The ship motion model: the two shaping filters with noise intensities derived from
-/// the configured RMS (MODEL.md §3.1).
+/// the configured RMS (docs/model.md §3.1).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ShipMotion {
     parameters: ShipMotionParameters,
@@ -166,7 +166,7 @@ fn canonical_form() -> (DMatrix<f64>, DMatrix<f64>) {
 }
 
 /// The stationary covariance P of one canonical filter state for unit-intensity white
-/// noise, A P + P Aᵀ + B Bᵀ = 0 (MODEL.md §3.1). The filter is fixed and stable (its
+/// noise, A P + P Aᵀ + B Bᵀ = 0 (docs/model.md §3.1). The filter is fixed and stable (its
 /// poles are −1, −1 and −0.04 ± 0.398i), so the solution always exists.
 pub fn unit_intensity_state_covariance() -> [[f64; 4]; 4] {
     let (a, b) = canonical_form();
@@ -181,13 +181,13 @@ pub fn unit_intensity_state_covariance() -> [[f64; 4]; 4] {
     out
 }
 
-/// Stationary variance of heave for unit-intensity noise, 1.21²·P₁₁ (m²); MODEL.md §3.1
+/// Stationary variance of heave for unit-intensity noise, 1.21²·P₁₁ (m²); docs/model.md §3.1
 /// gives 43.62.
 pub fn heave_unit_intensity_variance() -> f64 {
     HEAVE_FILTER_GAIN.powi(2) * unit_intensity_state_covariance()[0][0]
 }
 
-/// Stationary variance of pitch for unit-intensity noise, 0.773²·P₃₃ (rad²); MODEL.md
+/// Stationary variance of pitch for unit-intensity noise, 0.773²·P₃₃ (rad²); docs/model.md
 /// §3.1 gives 0.4858.
 pub fn pitch_unit_intensity_variance() -> f64 {
     PITCH_FILTER_GAIN.powi(2) * unit_intensity_state_covariance()[2][2]
@@ -266,7 +266,7 @@ impl ShipMotion {
     }
 
     /// A state drawn from the filters' stationary distribution, z = √q·L·n with P = L Lᵀ
-    /// and n ~ N(0, I₄), four samples from each filter's stream (MODEL.md §3.1). Zero,
+    /// and n ~ N(0, I₄), four samples from each filter's stream (docs/model.md §3.1). Zero,
     /// with nothing drawn, when the ship motion is disabled.
     pub fn stationary_initial_state(
         &self,

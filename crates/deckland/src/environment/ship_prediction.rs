@@ -1,4 +1,4 @@
-//! Minimum-variance prediction of the ship's heave and pitch (MODEL.md §3.1 filters).
+//! Minimum-variance prediction of the ship's heave and pitch (docs/model.md §3.1 filters).
 //!
 //! Each shaping filter is ż = A z + B n with white noise n. Given the state now, the
 //! expected state T seconds ahead is e^{AT} z (the noise to come has zero mean), so the

@@ -1,4 +1,4 @@
-//! The ship motion stepped on its own with RK4 (MODEL.md §3.1, §6), for the command
+//! The ship motion stepped on its own with RK4 (docs/model.md §3.1, §6), for the command
 //! line and tests. A landing simulation instead folds [`ShipMotion::derivative`] into
 //! its own larger system.
 

@@ -6,7 +6,7 @@ use crate::random::RandomStreams;
 
 #[test]
 fn lyapunov_variances_match_model_md() {
-    // MODEL.md §3.1: 43.62 m² (heave) and 0.4858 (pitch) for unit-intensity noise;
+    // docs/model.md §3.1: 43.62 m² (heave) and 0.4858 (pitch) for unit-intensity noise;
     // numpy's solve of the vectorised equation gives 43.6226 and 0.485764.
     let heave = heave_unit_intensity_variance();
     let pitch = pitch_unit_intensity_variance();

@@ -1,4 +1,4 @@
-//! Free-air turbulence (paper Eq. 19–20; MODEL.md §3.2).
+//! Free-air turbulence (paper Eq. 19–20; docs/model.md §3.2).
 //!
 //! Φ(Ω) = a/(1 + (100Ω)²), Ω in rad/ft, is a first-order Dryden spectrum of scale
 //! L = 100 ft = 30.48 m with σ² = a·π/(2L): σ_u = 0.540 m/s, σ_w = 0.323 m/s. Seen by an

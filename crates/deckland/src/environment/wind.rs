@@ -1,11 +1,11 @@
 //! Wind and carrier air wake (paper §3.4, Eq. 19–25, after MIL-F-8785C §3.7.5;
-//! MODEL.md §3.2).
+//! docs/model.md §3.2).
 //!
 //! Total wind = mean + free-air turbulence + steady wake + periodic wake; the random wake
 //! component is omitted, as in the paper. Signs, in earth axes: `x_mps` positive forward
 //! (+x, the direction of flight and of the ship's travel), so a headwind is negative;
 //! `z_mps` positive **down**. The wake's u components are positive forward and its w
-//! components positive down (MODEL.md §3.2). X is the distance of the aircraft aft of the
+//! components positive down (docs/model.md §3.2). X is the distance of the aircraft aft of the
 //! ship's pitch centre along the approach path (m, positive aft); see
 //! [`super::ShipPose::distance_aft_of_pitch_centre_m`].
 
@@ -22,7 +22,7 @@ use crate::random::RandomStreams;
 pub const STEADY_WAKE_EXTENT_M: f64 = 914.0;
 
 /// A wind velocity in earth axes (m/s): x positive forward (headwind negative), z
-/// positive down (MODEL.md §1).
+/// positive down (docs/model.md §1).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Wind {
     /// W_x (m/s, positive forward; a headwind is negative).
@@ -61,7 +61,7 @@ impl WindComponents {
     }
 }
 
-/// Configuration of the wind (MODEL.md §3.2).
+/// Configuration of the wind (docs/model.md §3.2).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct WindParameters {
@@ -75,9 +75,9 @@ pub struct WindParameters {
     pub steady_wake: bool,
     /// Whether the periodic wake (Eq. 23–25) is on.
     pub periodic_wake: bool,
-    /// RMS of longitudinal turbulence σ_u (m/s); MODEL.md §3.2: 0.540 (a = 200).
+    /// RMS of longitudinal turbulence σ_u (m/s); docs/model.md §3.2: 0.540 (a = 200).
     pub turbulence_sigma_u_mps: f64,
-    /// RMS of vertical turbulence σ_w (m/s); MODEL.md §3.2: 0.323 (a = 71.6).
+    /// RMS of vertical turbulence σ_w (m/s); docs/model.md §3.2: 0.323 (a = 71.6).
     pub turbulence_sigma_w_mps: f64,
     /// Dryden scale length L of both components (m); Eq. 19–20: 100 ft = 30.48 m.
     pub turbulence_scale_m: f64,
@@ -137,7 +137,7 @@ impl WindParameters {
     }
 }
 
-/// Mean wind, W_x = −(V_wd − V_ship), W_z = 0 (MODEL.md §3.2): a headwind when the wind
+/// Mean wind, W_x = −(V_wd − V_ship), W_z = 0 (docs/model.md §3.2): a headwind when the wind
 /// over the deck exceeds the ship's speed.
 pub fn mean_wind(wind_over_deck_mps: f64, ship_forward_speed_mps: f64) -> Wind {
     Wind {
@@ -179,7 +179,7 @@ pub fn periodic_wake(time_s: f64, distance_aft_m: f64, parameters: &WindParamete
 }
 
 /// The wind model: mean wind, turbulence with its state and streams, and the wake
-/// (MODEL.md §3.2).
+/// (docs/model.md §3.2).
 #[derive(Debug, Clone)]
 pub struct WindModel {
     parameters: WindParameters,

@@ -1,4 +1,4 @@
-//! Augmented finite-time disturbance observer (MODEL.md §4, correcting paper Eq. 11–13).
+//! Augmented finite-time disturbance observer (docs/model.md §4, correcting paper Eq. 11–13).
 //!
 //! For a plant in the form (paper Eq. 7–10)
 //!
@@ -17,12 +17,12 @@
 //! ```
 //!
 //! so x1, x2, x3 estimate w1, w2, w3. The paper's Eq. 12 omits h and its Eq. 13 prints
-//! α3 for α1; MODEL.md §4 corrects both.
+//! α3 for α1; docs/model.md §4 corrects both.
 
 use crate::parameters::{Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
 
-/// Tuning of the augmented observer (MODEL.md §4; paper §2.3).
+/// Tuning of the augmented observer (docs/model.md §4; paper §2.3).
 ///
 /// `k1`, `k2`, `k3` place the observer's (normalised) poles; `alpha1` sets the
 /// finite-time exponents (closer to 1 is closer to a linear high-gain observer);
@@ -31,21 +31,21 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct ObserverParameters {
-    /// Disturbance-channel gain k1 (dimensionless, > 0; MODEL.md §4).
+    /// Disturbance-channel gain k1 (dimensionless, > 0; docs/model.md §4).
     pub k1: f64,
-    /// Rate-channel gain k2 (dimensionless, > (4/π)·k1/k3; MODEL.md §4).
+    /// Rate-channel gain k2 (dimensionless, > (4/π)·k1/k3; docs/model.md §4).
     pub k2: f64,
-    /// Output-channel gain k3 (dimensionless, > 0; MODEL.md §4).
+    /// Output-channel gain k3 (dimensionless, > 0; docs/model.md §4).
     pub k3: f64,
-    /// Exponent α1 of the disturbance channel, in (0, 1) (dimensionless; MODEL.md §4).
+    /// Exponent α1 of the disturbance channel, in (0, 1) (dimensionless; docs/model.md §4).
     pub alpha1: f64,
     /// Bandwidth parameter ε, in (0, 1) (s, in the sense that gains scale as ε⁻ⁱ;
-    /// MODEL.md §4). The default 0.03 is provisional, pending tuning on the full loop.
+    /// docs/model.md §4). The default 0.03 is provisional, pending tuning on the full loop.
     pub epsilon: f64,
 }
 
 impl Default for ObserverParameters {
-    /// The starting values of MODEL.md §4: k1 = 1, k2 = 3, k3 = 3, α1 = 0.8, ε = 0.03.
+    /// The starting values of docs/model.md §4: k1 = 1, k2 = 3, k3 = 3, α1 = 0.8, ε = 0.03.
     fn default() -> Self {
         Self {
             k1: 1.0,
@@ -61,7 +61,7 @@ impl ObserverParameters {
     /// Where the O-PD's observer sits in a scenario file.
     pub const SECTION: &'static str = "control.pitch.observer";
 
-    /// Checks the stability and range conditions of MODEL.md §4 (k1, k3 > 0,
+    /// Checks the stability and range conditions of docs/model.md §4 (k1, k3 > 0,
     /// k2 > (4/π)·k1/k3, α1 ∈ (0, 1), ε ∈ (0, 1)) and physical ranges (gains up to 1000,
     /// ε at least 0.001), naming `section.key` in the error.
     pub fn validate_in(&self, section: &str) -> Result<(), ParameterError> {
@@ -93,7 +93,7 @@ impl ObserverParameters {
     }
 }
 
-/// Observer state: estimates of w1, w2 and w3 (MODEL.md §4). For the pitch loop these
+/// Observer state: estimates of w1, w2 and w3 (docs/model.md §4). For the pitch loop these
 /// are Δθ (rad), Δq (rad/s) and the lumped disturbance d_θ (rad/s²).
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct ObserverState {
@@ -123,7 +123,7 @@ impl ObserverState {
     }
 }
 
-/// The augmented finite-time disturbance observer of MODEL.md §4 with validated
+/// The augmented finite-time disturbance observer of docs/model.md §4 with validated
 /// parameters and its gains k3/ε, k2/ε², k1/ε³ precomputed.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct AugmentedObserver {
@@ -140,7 +140,7 @@ pub struct AugmentedObserver {
 }
 
 impl AugmentedObserver {
-    /// Builds the observer after [`ObserverParameters::validate`] (MODEL.md §4).
+    /// Builds the observer after [`ObserverParameters::validate`] (docs/model.md §4).
     pub fn new(parameters: ObserverParameters) -> Result<Self, ParameterError> {
         parameters.validate()?;
         let ObserverParameters {
@@ -164,7 +164,7 @@ impl AugmentedObserver {
         &self.parameters
     }
 
-    /// The observer's time derivative (MODEL.md §4) for `measurement` y of w1 (pitch
+    /// The observer's time derivative (docs/model.md §4) for `measurement` y of w1 (pitch
     /// loop: θ_m − θ*, rad) and `known_input` h (pitch loop: h_θ, rad/s²).
     ///
     /// Pure and allocation-free. The correction terms are written as
@@ -200,7 +200,7 @@ impl AugmentedObserver {
 mod tests {
     use super::*;
 
-    /// The single-power evaluation must equal MODEL.md §4's three powers written out.
+    /// The single-power evaluation must equal docs/model.md §4's three powers written out.
     #[test]
     fn derivative_matches_the_three_fractional_powers_written_out() {
         let parameters = ObserverParameters::default();

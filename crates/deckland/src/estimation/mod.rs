@@ -1,4 +1,4 @@
-//! State and disturbance estimation (MODEL.md §4; paper §2.3).
+//! State and disturbance estimation (docs/model.md §4; paper §2.3).
 //!
 //! The [`AugmentedObserver`] estimates a measured variable, its rate and a lumped
 //! disturbance acting on its second derivative. The O-PD pitch controller runs one on

@@ -1,4 +1,4 @@
-//! Fixed-step classical fourth-order Runge–Kutta (MODEL.md §6; paper §3.7).
+//! Fixed-step classical fourth-order Runge–Kutta (docs/model.md §6; paper §3.7).
 
 /// A system of first-order ordinary differential equations ẋ = f(t, x) of fixed
 /// dimension `N`, as seen by the integrator.

@@ -89,7 +89,7 @@ fn line_text(line: Option<usize>) -> String {
 }
 
 /// Parses the scenario file `file_name` whose content is `text` and checks every value.
-/// Keys left out take their defaults (MODEL.md); unknown keys are errors.
+/// Keys left out take their defaults (docs/model.md); unknown keys are errors.
 pub fn load_scenario(text: &str, file_name: &str) -> Result<Scenario, ScenarioError> {
     let document = ImDocument::parse(text).map_err(|error| {
         let line = error.span().map(|span| line_of(text, span.start));
@@ -188,7 +188,7 @@ fn line_of(text: &str, offset: usize) -> usize {
 /// For text that does not parse: the dotted path of the key on `line`, read from the
 /// raw text (the table header above it and the word before `=`).
 fn key_near_line(text: &str, line: usize) -> String {
-    // A table header may carry a comment after it: `[aircraft.hook]  # MODEL.md §2.7`.
+    // A table header may carry a comment after it: `[aircraft.hook]  # docs/model.md §2.7`.
     let lines: Vec<&str> = text
         .lines()
         .map(|l| l.split('#').next().unwrap_or(""))

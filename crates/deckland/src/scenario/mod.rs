@@ -1,4 +1,4 @@
-//! A scenario: every parameter of one run, with the defaults of MODEL.md.
+//! A scenario: every parameter of one run, with the defaults of docs/model.md.
 //!
 //! The structure mirrors the scenario file (TOML) section by section; units are in the
 //! field names. Each section checks its own fields ([`crate::parameters`]: one error
@@ -35,15 +35,15 @@ pub use template::DEFAULT_SCENARIO_TOML;
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct AircraftSection {
-    /// Aerodynamic configuration: `landing` (default) or `clean` (MODEL.md §2.3).
+    /// Aerodynamic configuration: `landing` (default) or `clean` (docs/model.md §2.3).
     pub configuration: ConfigurationName,
     /// Mass, geometry, atmosphere (paper Table 2).
     pub parameters: AircraftParameters,
-    /// Engines (MODEL.md §2.5).
+    /// Engines (docs/model.md §2.5).
     pub engines: EngineParameters,
-    /// Elevator actuator (MODEL.md §2.6).
+    /// Elevator actuator (docs/model.md §2.6).
     pub elevator_actuator: ElevatorActuatorParameters,
-    /// Hook point (MODEL.md §2.7).
+    /// Hook point (docs/model.md §2.7).
     pub hook: HookGeometry,
 }
 
@@ -62,17 +62,17 @@ impl AircraftSection {
     }
 }
 
-/// The environment section of a scenario (MODEL.md §3; deck geometry §2.7).
+/// The environment section of a scenario (docs/model.md §3; deck geometry §2.7).
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct EnvironmentSection {
-    /// Ship heave and pitch (MODEL.md §3.1).
+    /// Ship heave and pitch (docs/model.md §3.1).
     pub ship: ShipMotionParameters,
-    /// Deck geometry (MODEL.md §2.7).
+    /// Deck geometry (docs/model.md §2.7).
     pub deck: DeckGeometry,
-    /// Wind and air wake (MODEL.md §3.2).
+    /// Wind and air wake (docs/model.md §3.2).
     pub wind: WindParameters,
-    /// Pitch-attitude measurement noise (MODEL.md §3.3).
+    /// Pitch-attitude measurement noise (docs/model.md §3.3).
     pub pitch_noise: PitchNoiseParameters,
 }
 
@@ -86,7 +86,7 @@ impl EnvironmentSection {
     }
 }
 
-/// The controllers of the cascade (MODEL.md §5).
+/// The controllers of the cascade (docs/model.md §5).
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct ControlSection {
@@ -113,7 +113,7 @@ impl ControlSection {
     }
 }
 
-/// The start of an approach (MODEL.md §6).
+/// The start of an approach (docs/model.md §6).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct ApproachParameters {
@@ -150,7 +150,7 @@ impl Default for ApproachParameters {
     }
 }
 
-/// Limits that classify a landing (MODEL.md §7).
+/// Limits that classify a landing (docs/model.md §7).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct OutcomeLimits {
@@ -289,9 +289,9 @@ impl Mission {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Scenario {
-    /// Seed of every random stream (MODEL.md §3.4).
+    /// Seed of every random stream (docs/model.md §3.4).
     pub seed: u64,
-    /// Integration step (s); 1 ms (MODEL.md §6).
+    /// Integration step (s); 1 ms (docs/model.md §6).
     pub time_step_s: f64,
     /// Time limit of an approach (s).
     pub max_time_s: f64,

@@ -1,4 +1,4 @@
-//! Sensors and their noise (paper §3.5; MODEL.md §3.3).
+//! Sensors and their noise (paper §3.5; docs/model.md §3.3).
 
 mod pitch;
 

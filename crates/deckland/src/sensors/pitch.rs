@@ -1,4 +1,4 @@
-//! Pitch-attitude measurement (paper §3.5; MODEL.md §3.3).
+//! Pitch-attitude measurement (paper §3.5; docs/model.md §3.3).
 //!
 //! θ_m = θ + a·sin(ω·t) + n, with a = 0.001 rad, ω = 7 rad/s and n ~ N(0, σ²),
 //! σ = 0.001 rad (MATLAB `wgn` at −60 dBW: variance 10⁻⁶), drawn anew at every control
@@ -9,7 +9,7 @@ use serde::{Deserialize, Serialize};
 use crate::parameters::{Bounds, ParameterError};
 use crate::random::{stream_names, NoiseStream, RandomStreams};
 
-/// Configuration of the pitch-attitude measurement noise (MODEL.md §3.3).
+/// Configuration of the pitch-attitude measurement noise (docs/model.md §3.3).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct PitchNoiseParameters {
@@ -19,7 +19,7 @@ pub struct PitchNoiseParameters {
     pub sinusoid_amplitude_rad: f64,
     /// Frequency ω of the sinusoidal error (rad/s); paper §3.5: 7.
     pub sinusoid_frequency_radps: f64,
-    /// Standard deviation σ of the white noise per control step (rad); MODEL.md §3.3: 0.001.
+    /// Standard deviation σ of the white noise per control step (rad); docs/model.md §3.3: 0.001.
     pub white_noise_sigma_rad: f64,
 }
 

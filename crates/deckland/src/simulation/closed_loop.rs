@@ -1,5 +1,5 @@
 //! The closed loop as a composition of blocks: plant, ship motion, wind, pitch sensor,
-//! deck-motion predictor, pitch law, speed loop and outer loops (MODEL.md §5–6).
+//! deck-motion predictor, pitch law, speed loop and outer loops (docs/model.md §5–6).
 //!
 //! Each block with continuous dynamics owns a named slot of the state vector
 //! ([`LoopLayout`]); the loop evaluates the blocks in the order the signals flow and
@@ -173,7 +173,7 @@ impl ClosedLoop {
     }
 
     /// Draws and samples the inputs held over the step from `t`: the ship filters' white
-    /// noise and the pitch sensor's error (each from its own stream, MODEL.md §3.4), the
+    /// noise and the pitch sensor's error (each from its own stream, docs/model.md §3.4), the
     /// wind at the aircraft and, in an approach, the deck reference.
     pub fn hold(&mut self, t: f64, x: &[f64], streams: &mut StepStreams, dt: f64) -> HeldInputs {
         let ship_state = self.ship_state(x);
@@ -249,7 +249,7 @@ impl ClosedLoop {
         let (hook_x_rate_mps, hook_climb_rate_mps) = self.hook.velocity_trig(a, sin_t, cos_t);
         let (_, climb_rate_mps) = a.earth_velocity_trig(sin_t, cos_t);
 
-        // Outer loops: flight path → guidance → sink rate → θ_ref (MODEL.md §5).
+        // Outer loops: flight path → guidance → sink rate → θ_ref (docs/model.md §5).
         let outer_inputs = OuterLoopInputs {
             time_s: t,
             theta_trim_rad: self.trim.theta_rad,
@@ -263,7 +263,7 @@ impl ClosedLoop {
         };
         let outer = self.outer.outputs(&outer_inputs, held.deck.as_ref(), taps);
 
-        // Pitch law on the measured attitude (MODEL.md §3.3, §4).
+        // Pitch law on the measured attitude (docs/model.md §3.3, §4).
         let theta_measured_rad = a.theta_rad + held.pitch_noise_rad;
         let actuator = self.aircraft.actuator();
         let pitch_inputs = PitchLawInputs {
@@ -284,7 +284,7 @@ impl ClosedLoop {
         let elevator_command_rad =
             taps.elevator_command(self.pitch.elevator_command_rad(pitch_state, &pitch_inputs));
 
-        // Speed loop (MODEL.md §5).
+        // Speed loop (docs/model.md §5).
         let speed_error = self.airspeed_reference_mps - air.airspeed_mps;
         let speed_integral_m = layout.speed.scalar(x);
         let thrust_command_n =

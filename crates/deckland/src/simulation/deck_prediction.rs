@@ -1,5 +1,5 @@
 //! The deck-motion predictor block: where the glide path expects the landing point to be
-//! (MODEL.md §5, deck-motion compensation; see [`crate::control::FlightPathGenerator`]).
+//! (docs/model.md §5, deck-motion compensation; see [`crate::control::FlightPathGenerator`]).
 
 use crate::control::{DeckMotionFilter, DeckReference, FlightPathGenerator};
 use crate::environment::{

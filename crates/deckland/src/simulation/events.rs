@@ -1,6 +1,6 @@
 //! Event detection: the hook against the deck, sampled once per step; each event is a
 //! sign change of one function of the hook's position between two samples, located by
-//! linear interpolation inside the step (MODEL.md §7).
+//! linear interpolation inside the step (docs/model.md §7).
 
 use super::outcome::{Event, Touchdown};
 use super::signals::Signals;

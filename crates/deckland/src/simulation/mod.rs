@@ -1,4 +1,4 @@
-//! The closed-loop simulation (MODEL.md §6).
+//! The closed-loop simulation (docs/model.md §6).
 //!
 //! - [`ClosedLoop`]: the loop as a composition of blocks (plant, ship motion, wind,
 //!   pitch sensor, deck-motion predictor, pitch law, speed loop, outer loops), each with
@@ -8,7 +8,7 @@
 //!   [`Simulation::step`] returns why it stopped ([`Stop`]): still running, an event
 //!   found and interpolated inside the step, or the end with its typed reason
 //!   ([`EndReason`]). Recorders watch through [`Recorder`].
-//! - [`LandingRules`]: turn events into an outcome (MODEL.md §7), outside the
+//! - [`LandingRules`]: turn events into an outcome (docs/model.md §7), outside the
 //!   integration loop.
 
 mod closed_loop;

@@ -1,4 +1,4 @@
-//! How a run ended and what it measured (MODEL.md §7): the outcome, the typed reason,
+//! How a run ended and what it measured (docs/model.md §7): the outcome, the typed reason,
 //! and the rules that turn events into an outcome.
 
 use std::fmt;
@@ -254,7 +254,7 @@ impl EndReason {
     }
 }
 
-/// The rules that classify a landing from its events (MODEL.md §7): the hard-landing
+/// The rules that classify a landing from its events (docs/model.md §7): the hard-landing
 /// limit and the wires.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LandingRules {
@@ -359,7 +359,7 @@ mod tests {
     #[test]
     fn touchdowns_are_classified_by_wire_and_sink_rate() {
         let rules = LandingRules::new(&OutcomeLimits::default(), [-18.0, -6.0, 6.0, 18.0]);
-        // Between wires 2 and 3 (MODEL.md §7: the first wire at or beyond the point).
+        // Between wires 2 and 3 (docs/model.md §7: the first wire at or beyond the point).
         assert_eq!(
             rules.classify_touchdown(&touchdown(0.0, 4.0)),
             EndReason::Trap { wire: 3 }

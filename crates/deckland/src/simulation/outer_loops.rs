@@ -1,4 +1,4 @@
-//! The loops above the pitch law, one variant per kind of run (MODEL.md §5): a pitch
+//! The loops above the pitch law, one variant per kind of run (docs/model.md §5): a pitch
 //! step, a climb-rate program through the sink-rate loop, or the full approach cascade
 //! flight path → guidance → sink rate.
 

@@ -1,4 +1,4 @@
-//! The run loop: one fixed RK4 step at a time (MODEL.md §6). [`Simulation::step`] says
+//! The run loop: one fixed RK4 step at a time (docs/model.md §6). [`Simulation::step`] says
 //! why it returned: still running, an event, or the end with its typed reason.
 //!
 //! Each step: the held inputs are drawn; the loop is evaluated at the step's start, with
@@ -251,7 +251,7 @@ impl Simulation {
         }
     }
 
-    /// Stop conditions on the state itself (MODEL.md §6).
+    /// Stop conditions on the state itself (docs/model.md §6).
     fn check_state(&self, s: &Signals) -> Option<(EndReason, f64)> {
         let t = s.time_s;
         let diverged = |divergence| Some((EndReason::Diverged(divergence), t));

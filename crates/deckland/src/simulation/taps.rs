@@ -8,7 +8,7 @@
 
 use std::cell::Cell;
 
-/// A point where a loop of the cascade can be cut (MODEL.md §5: margins on the
+/// A point where a loop of the cascade can be cut (docs/model.md §5: margins on the
 /// linearised cascade) or its command replaced.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum LoopBreak {

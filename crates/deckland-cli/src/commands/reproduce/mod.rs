@@ -5,7 +5,7 @@
 //! Every figure comes from the other commands' figure builders (`environment`, `step`,
 //! `sink`, `land`) except Fig. 4 and Fig. 6, which no other command draws. The numbers
 //! are measured here, in this run; the report's notes explain the large differences
-//! (MODEL.md §2.3 and §8, `docs/paper-errata-and-assumptions.md`).
+//! (docs/model.md §2.3 and §8, `docs/paper-errata-and-assumptions.md`).
 
 mod figures;
 mod report;

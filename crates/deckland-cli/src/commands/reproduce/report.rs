@@ -104,7 +104,7 @@ pub(crate) fn table(f: &Findings) -> Vec<Row> {
         "maximum thrust T_max (N)",
         "71172",
         format!("{}", f.aircraft.engines().max_total_thrust_n() / 2.0),
-        "per engine; two engines, so the throttle δT is a fraction of 142 344 N (MODEL.md §2.5)",
+        "per engine; two engines, so the throttle δT is a fraction of 142 344 N (docs/model.md §2.5)",
     );
     rows.add(
         "wing area S (m²)",
@@ -137,7 +137,7 @@ pub(crate) fn table(f: &Findings) -> Vec<Row> {
         "pitch angle θ* (deg)",
         "7.1",
         format!("{:.3}", t.theta_rad.to_degrees()),
-        "landing configuration (default): ΔC_L0 = 0.6938 is chosen to give this (MODEL.md §2.3)",
+        "landing configuration (default): ΔC_L0 = 0.6938 is chosen to give this (docs/model.md §2.3)",
     );
     rows.add(
         "angle of attack α* (deg)",
@@ -173,7 +173,7 @@ pub(crate) fn table(f: &Findings) -> Vec<Row> {
         },
         "**large**: the clean polynomials need far more α for L = mg at 69.1 m/s; the paper's \
          trim cannot come from them. Hence the landing configuration's lift, drag and CG \
-         increments (MODEL.md §2.3)",
+         increments (docs/model.md §2.3)",
     );
 
     rows.section = "Linear model (paper Eq. 14)";
@@ -196,7 +196,7 @@ pub(crate) fn table(f: &Findings) -> Vec<Row> {
                 (1, 3) => "kinematic (θ̇ = q)".to_string(),
                 (2, 3) => "kinematic (α̇ contains q; the paper's Eq. 3 omits it)".to_string(),
                 (3, 2) => "matched by the CG position 0.0729·c̄ of the landing configuration \
-                     (MODEL.md §2.3)"
+                     (docs/model.md §2.3)"
                     .to_string(),
                 (3, 3) => {
                     "pitch damping ∂q̇/∂q from the data's C_mq; sets K_Dθ (Eq. 33)".to_string()
@@ -257,7 +257,7 @@ pub(crate) fn table(f: &Findings) -> Vec<Row> {
         complex(ours_ph),
         format!(
             "**large in the real part**: the paper's printed A gives {}, not its printed \
-             eigenvalue, so Eq. 14 is inconsistent with itself (MODEL.md §8). Ours is \
+             eigenvalue, so Eq. 14 is inconsistent with itself (docs/model.md §8). Ours is \
              nearly neutral (ζ = {:.3})",
             complex(printed_ph),
             ours_ph.map_or(f64::NAN, |m| m.damping_ratio)
@@ -339,7 +339,7 @@ pub(crate) fn table(f: &Findings) -> Vec<Row> {
             sink.proportional_rad_per_mps, sink.integral_rad_per_m
         ),
         "**different by design**: with the paper's gains this plant's cascade diverges \
-         (MODEL.md §5); ours are chosen for bandwidth separation and boarding rate \
+         (docs/model.md §5); ours are chosen for bandwidth separation and boarding rate \
          (docs/landing-design.md); the paper's set stays selectable",
     );
     let guidance = scenario.control.guidance;
@@ -351,7 +351,7 @@ pub(crate) fn table(f: &Findings) -> Vec<Row> {
             guidance.proportional_per_s, guidance.integral_per_s2, guidance.derivative
         ),
         "**different by design**: K_Pz = 1 /s is faster than the sink loop it commands \
-         (MODEL.md §5, docs/landing-design.md)",
+         (docs/model.md §5, docs/landing-design.md)",
     );
     let observer = opd.observer;
     rows.add(
@@ -361,7 +361,7 @@ pub(crate) fn table(f: &Findings) -> Vec<Row> {
             "{}, {}, {}, {}, {}",
             observer.k1, observer.k2, observer.k3, observer.alpha1, observer.epsilon
         ),
-        "values chosen here (MODEL.md §4, docs/observer-bandwidth.md)",
+        "values chosen here (docs/model.md §4, docs/observer-bandwidth.md)",
     );
 
     rows.section = "Actuators, simulation and environment (paper §3.3–3.7)";
@@ -415,7 +415,7 @@ pub(crate) fn table(f: &Findings) -> Vec<Row> {
         format!(
             "the noise is set by the output RMS ({} m), not the paper's dB power, which \
              depends on an unstated sample time; over 60 s records the median peak is 4.1 m \
-             (MODEL.md §3.1)",
+             (docs/model.md §3.1)",
             environment.ship.heave_rms_m
         ),
     );
@@ -428,7 +428,7 @@ pub(crate) fn table(f: &Findings) -> Vec<Row> {
             f.environment_seconds()
         ),
         format!(
-            "RMS {}° (median 60-s peak 3.5°, MODEL.md §3.1)",
+            "RMS {}° (median 60-s peak 3.5°, docs/model.md §3.1)",
             environment.ship.pitch_rms_deg
         ),
     );
@@ -581,7 +581,7 @@ pub(crate) fn table(f: &Findings) -> Vec<Row> {
         },
         "**large**: the flight path lags pitch by about 2 s, so 0.5 s is not reachable; the \
          step pitches the nose down faster than the path follows and α leaves the model's \
-         range (MODEL.md §5)",
+         range (docs/model.md §5)",
     );
     let ramp = &f.sink_ramp;
     let ramp_settling = ramp.metrics.as_ref().map_or_else(
@@ -665,7 +665,7 @@ fn difference_note(paper: f64, ours: f64) -> String {
     if (ours - paper).abs() <= 0.25 * scale {
         String::new()
     } else {
-        "differs; the printed matrix does not reproduce its own eigenvalues (MODEL.md §8), so \
+        "differs; the printed matrix does not reproduce its own eigenvalues (docs/model.md §8), so \
          its entries are not a reliable reference"
             .to_string()
     }
@@ -695,7 +695,7 @@ pub(crate) fn markdown(f: &Findings, rows: &[Row]) -> String {
         "Generated by `deckland reproduce{}` (deckland {}) in {:.1} s{}. Every number in \
          the \"deckland\" column was measured in this run. The paper's errata and every \
          assumption made where it is silent are listed in \
-         `docs/paper-errata-and-assumptions.md`; the specification is `MODEL.md`.\n",
+         `docs/paper-errata-and-assumptions.md`; the specification is `docs/model.md`.\n",
         if f.quick { " --quick" } else { "" },
         env!("CARGO_PKG_VERSION"),
         f.elapsed_s,
@@ -729,7 +729,7 @@ pub(crate) fn markdown(f: &Findings, rows: &[Row]) -> String {
         "- **Trim from clean data.** The paper says its coefficients are the clean \
          configuration, yet trims at α = 7.1°; the clean polynomials need about 16° at \
          69.1 m/s. The default `landing` configuration adds ΔC_L0 = 0.6938, ΔC_D0 = 0.16 and \
-         a CG 0.0729·c̄ ahead of the data's reference (MODEL.md §2.3); `clean` stays \
+         a CG 0.0729·c̄ ahead of the data's reference (docs/model.md §2.3); `clean` stays \
          selectable (`deckland trim --config clean`).",
         "- **Eq. 14.** Its printed eigenvalues do not follow from its printed A (computed \
          above), so no model can match both; ours matches the short period and the pitch \
@@ -743,7 +743,7 @@ pub(crate) fn markdown(f: &Findings, rows: &[Row]) -> String {
         "- **Sink rate within 0.5 s.** The flight path follows pitch with a lag of about \
          2 s (L_α/(mV)), which bounds the sink-rate loop near 1 rad/s; the paper's step \
          command drives α out of the model's range. A 5 s ramp converges in about 12 s. The \
-         paper's sink and guidance gains do not fly this plant (MODEL.md §5).",
+         paper's sink and guidance gains do not fly this plant (docs/model.md §5).",
     ] {
         let _ = writeln!(out, "{line}");
     }

@@ -1,5 +1,5 @@
 //! The pitch-law interface: what every pitch controller reads, owns and produces, and how
-//! the registered laws are listed (MODEL.md §4–5; paper Eq. 26–37).
+//! the registered laws are listed (docs/model.md §4–5; paper Eq. 26–37).
 
 use std::fmt;
 
@@ -9,7 +9,7 @@ use crate::aircraft::ElevatorActuatorParameters;
 use crate::parameters::ParameterError;
 use crate::sensors::PitchNoiseParameters;
 
-/// Pitch-plant derivatives from the linearisation at trim (paper Eq. 26; MODEL.md §4:
+/// Pitch-plant derivatives from the linearisation at trim (paper Eq. 26; docs/model.md §4:
 /// taken from the linearisation, not hard-coded).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -48,7 +48,7 @@ impl PitchPlantDerivatives {
     }
 }
 
-/// Which position limit the elevator actuator sits on (MODEL.md §2.6: −25°…+10°).
+/// Which position limit the elevator actuator sits on (docs/model.md §2.6: −25°…+10°).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum ElevatorSaturation {
@@ -80,13 +80,13 @@ impl ElevatorSaturation {
     }
 }
 
-/// The signals a pitch law reads at one instant (MODEL.md §5); angles in rad, rates in
+/// The signals a pitch law reads at one instant (docs/model.md §5); angles in rad, rates in
 /// rad/s.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct PitchLawInputs {
     /// Commanded pitch attitude θ_ref (rad), from the sink-rate controller.
     pub theta_ref_rad: f64,
-    /// Measured pitch attitude θ_m (rad), noise included (MODEL.md §3.3).
+    /// Measured pitch attitude θ_m (rad), noise included (docs/model.md §3.3).
     pub theta_measured_rad: f64,
     /// Measured pitch rate q (rad/s); used by the PID's derivative term only.
     pub pitch_rate_measured_radps: f64,

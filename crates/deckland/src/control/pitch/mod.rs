@@ -1,4 +1,4 @@
-//! Pitch-attitude control laws: θ_ref → elevator command (MODEL.md §5; paper §4.2).
+//! Pitch-attitude control laws: θ_ref → elevator command (docs/model.md §5; paper §4.2).
 //!
 //! Every law implements [`PitchLaw`]: the observer-based PD ([`ObserverPdController`],
 //! paper Eq. 30–36), the PID it is compared with ([`PidController`], paper Eq. 37) and any

@@ -1,6 +1,6 @@
-//! Observer-based PD pitch controller, "O-PD" (paper Eq. 30–36, corrected in MODEL.md §5).
+//! Observer-based PD pitch controller, "O-PD" (paper Eq. 30–36, corrected in docs/model.md §5).
 //!
-//! The augmented observer (MODEL.md §4) estimates the pitch-attitude deviation, the pitch
+//! The augmented observer (docs/model.md §4) estimates the pitch-attitude deviation, the pitch
 //! rate and the lumped disturbance d_θ of the pitch dynamics θ̈ = (∂q̇/∂q)·Δq +
 //! (∂q̇/∂δe)·Δδe + d_θ. The equivalent control U = K_P·e_θ + K_D·ė_θ, with
 //! e_θ = θ_ref − θ and ė_θ = −x2, is turned into an elevator deflection that also
@@ -32,7 +32,7 @@ pub enum PitchFeedback {
     ObserverEstimate,
 }
 
-/// What a user chooses for the O-PD pitch loop (MODEL.md §5): the closed-loop error
+/// What a user chooses for the O-PD pitch loop (docs/model.md §5): the closed-loop error
 /// dynamics s² + 2ζω_n·s + ω_n² with ω_n = 4/(T_2%·ζ), plus the observer tuning.
 ///
 /// With the default ζ = √2 the error dynamics are overdamped (poles −3.9 and −22.8 rad/s),
@@ -54,7 +54,7 @@ pub struct ObserverPdParameters {
     pub damping_ratio: f64,
     /// Pitch attitude used in the proportional term (default: measured, as the paper).
     pub pitch_feedback: PitchFeedback,
-    /// Tuning of the augmented observer (MODEL.md §4).
+    /// Tuning of the augmented observer (docs/model.md §4).
     pub observer: ObserverParameters,
 }
 
@@ -105,7 +105,7 @@ pub struct ObserverPdGains {
 }
 
 impl ObserverPdGains {
-    /// Design rule of MODEL.md §5 (paper Eq. 31–34 corrected): ω_n = 4/(T_2%·ζ),
+    /// Design rule of docs/model.md §5 (paper Eq. 31–34 corrected): ω_n = 4/(T_2%·ζ),
     /// K_P = ω_n², K_D = 2ζω_n + ∂q̇/∂q. With T_2% = 0.3 s, ζ = √2, ∂q̇/∂q = −0.15 /s
     /// this gives K_P = 88.89 /s², K_D = 26.52 /s (the paper's values).
     pub fn design(
@@ -141,7 +141,7 @@ impl ObserverPdGains {
     }
 }
 
-/// The O-PD pitch controller (paper Eq. 30, 35, 36; MODEL.md §4–5). Its state is the
+/// The O-PD pitch controller (paper Eq. 30, 35, 36; docs/model.md §4–5). Its state is the
 /// observer's [`ObserverState`] (Δθ in rad, Δq in rad/s, d_θ in rad/s²).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ObserverPdController {
@@ -210,7 +210,7 @@ impl ObserverPdController {
     }
 
     /// Elevator command δe = δe* + (U − x3)/(∂q̇/∂δe) (rad; paper Eq. 35–36), not
-    /// limited: the actuator applies its position limits (MODEL.md §2.6).
+    /// limited: the actuator applies its position limits (docs/model.md §2.6).
     #[inline]
     pub fn elevator_command_rad(&self, state: &ObserverState, inputs: &PitchLawInputs) -> f64 {
         let theta_rad = match self.pitch_feedback {
@@ -225,7 +225,7 @@ impl ObserverPdController {
             + (equivalent_control - state.x3) / self.plant.dqdot_delevator_per_s2
     }
 
-    /// Observer derivative (MODEL.md §4) with y = θ_m − θ* and
+    /// Observer derivative (docs/model.md §4) with y = θ_m − θ* and
     /// h_θ = (∂q̇/∂q)·x2 + (∂q̇/∂δe)·(δe_actual − δe*).
     #[inline]
     pub fn derivative(&self, state: &ObserverState, inputs: &PitchLawInputs) -> ObserverState {
@@ -299,7 +299,7 @@ mod tests {
     /// Reference: paper §4.2.2 prints K_Pθ = 88.89 and K_Dθ = 26.5186 for T_2% = 0.3 s,
     /// ζ = √2, ∂q̇/∂q = −0.15 (Eq. 14). The rule gives 26.5167; the paper's last digits
     /// imply an unrounded ∂q̇/∂q ≈ −0.148, so K_D is checked to the two decimals
-    /// MODEL.md §5 quotes (26.52).
+    /// docs/model.md §5 quotes (26.52).
     #[test]
     fn design_rule_reproduces_the_paper_gains() {
         let gains = ObserverPdGains::design(0.3, std::f64::consts::SQRT_2, -0.15).expect("valid");

@@ -1,4 +1,4 @@
-//! PID pitch controller for comparison (paper Eq. 37; MODEL.md §5).
+//! PID pitch controller for comparison (paper Eq. 37; docs/model.md §5).
 //!
 //! Same equivalent-control form as the O-PD but without the observer:
 //! U = K_P·e_θ + K_I·∫e_θ dt + K_D·ė_θ with e_θ = θ_ref − θ_m and ė_θ = −q_m
@@ -29,7 +29,7 @@ pub struct PidParameters {
     /// Derivative gain K_D (1/s; paper: 17.19).
     pub derivative_per_s: f64,
     /// Freeze the integrator while the elevator saturates and the error pushes further
-    /// into the limit (default true; MODEL.md §5).
+    /// into the limit (default true; docs/model.md §5).
     pub anti_windup: bool,
 }
 
@@ -75,7 +75,7 @@ pub struct PidState {
     pub pitch_error_integral_rad_s: f64,
 }
 
-/// The PID pitch controller (paper Eq. 37; MODEL.md §5).
+/// The PID pitch controller (paper Eq. 37; docs/model.md §5).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PidController {
     parameters: PidParameters,
