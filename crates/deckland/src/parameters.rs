@@ -3,7 +3,7 @@
 //! A [`ParameterError`] carries the parameter's dotted path in the scenario file
 //! (`aircraft.elevator_actuator.rate_limit_degps`), the value given and what is allowed.
 //! Each parameter struct checks its own fields where it is defined, with the path of its
-//! section; [`crate::scenario::Scenario::validate`] calls every section in turn.
+//! section; the scenario's `Scenario::validate` calls every section in turn.
 //!
 //! Every number has a finite physical range ([`Bounds`]): a value far outside what an
 //! aircraft, a ship or a controller can have is refused before a run starts, never

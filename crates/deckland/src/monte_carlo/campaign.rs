@@ -2,6 +2,7 @@
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
 
 use rayon::prelude::*;
 
@@ -11,15 +12,54 @@ use crate::control::pitch::{ObserverPdParameters, PidParameters, PitchController
 use crate::random::RandomStreams;
 use crate::recording::SummaryRecorder;
 use crate::scenario::{DispersionSample, Mission, Scenario};
-use crate::simulation::{RunSummary, SetupError, Simulation};
+use crate::simulation::{PitchLawFactory, RunSummary, SetupError, Simulation};
+
+/// A user's own pitch law for a campaign: built once per run, after that run's trim.
+#[derive(Clone)]
+pub struct SharedPitchLaw(pub Arc<PitchLawFactory>);
+
+impl std::fmt::Debug for SharedPitchLaw {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("SharedPitchLaw(user's own pitch law)")
+    }
+}
+
+impl PartialEq for SharedPitchLaw {
+    /// The same factory (the same allocation).
+    fn eq(&self, other: &Self) -> bool {
+        Arc::ptr_eq(&self.0, &other.0)
+    }
+}
 
 /// A pitch controller a campaign flies, with its label for tables and files.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ControllerVariant {
     /// Label, e.g. `O-PD`.
     pub label: String,
-    /// The controller and its tuning.
+    /// The controller and its tuning, as the scenario names it.
     pub pitch: PitchControllerParameters,
+    /// A user's own law flying instead of `pitch` (see `examples/custom_pitch_law.rs`).
+    pub custom_law: Option<SharedPitchLaw>,
+}
+
+impl ControllerVariant {
+    /// A registered pitch law with its label.
+    pub fn registered(pitch: PitchControllerParameters) -> Self {
+        Self {
+            label: pitch.label().to_owned(),
+            pitch,
+            custom_law: None,
+        }
+    }
+
+    /// A user's own pitch law, built by `factory` for each run, labelled `label`.
+    pub fn custom(label: impl Into<String>, factory: Arc<PitchLawFactory>) -> Self {
+        Self {
+            label: label.into(),
+            pitch: PitchControllerParameters::default(),
+            custom_law: Some(SharedPitchLaw(factory)),
+        }
+    }
 }
 
 /// The label of a pitch controller, e.g. `O-PD`.
@@ -49,10 +89,7 @@ impl CampaignSpec {
             scenario,
             runs,
             seed,
-            controllers: vec![ControllerVariant {
-                label: controller_label(&pitch).to_owned(),
-                pitch,
-            }],
+            controllers: vec![ControllerVariant::registered(pitch)],
         }
     }
 
@@ -68,10 +105,7 @@ impl CampaignSpec {
             PitchControllerParameters::Pid(pid),
         ]
         .into_iter()
-        .map(|pitch| ControllerVariant {
-            label: controller_label(&pitch).to_owned(),
-            pitch,
-        })
+        .map(ControllerVariant::registered)
         .collect();
         self
     }
@@ -200,8 +234,16 @@ impl CampaignResult {
 /// Flies one run; never panics (a panic inside the simulation becomes a record).
 fn fly(spec: &CampaignSpec, run_index: u64, controller: usize) -> RunRecord {
     let (scenario, dispersion) = spec.run_scenario(run_index, controller);
+    let custom_law = spec
+        .controllers
+        .get(controller)
+        .and_then(|variant| variant.custom_law.as_ref());
     let result = catch_unwind(AssertUnwindSafe(|| {
-        Simulation::new(&scenario).map(|simulation| simulation.run(&mut SummaryRecorder))
+        let simulation = match custom_law {
+            Some(law) => Simulation::with_pitch_law(&scenario, &*law.0),
+            None => Simulation::new(&scenario),
+        };
+        simulation.map(|simulation| simulation.run(&mut SummaryRecorder))
     }))
     .map_err(|payload| {
         let message = payload

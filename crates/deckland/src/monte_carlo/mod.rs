@@ -22,7 +22,7 @@ mod statistics;
 
 pub use campaign::{
     controller_label, run_campaign, CampaignError, CampaignResult, CampaignSpec, ControllerVariant,
-    RunFailure, RunRecord,
+    RunFailure, RunRecord, SharedPitchLaw,
 };
 pub use seeds::{run_seed, splitmix64_mix, SPLITMIX64_GAMMA};
 pub use statistics::{
