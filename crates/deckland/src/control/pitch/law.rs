@@ -168,12 +168,14 @@ pub trait PitchLawDesign {
 /// which dispatches to the registered laws without dynamic calls and holds a user's own
 /// law as a trait object.
 macro_rules! pitch_laws {
-    ($( $(#[$doc:meta])* $variant:ident($name:literal, $parameters:ty) ),+ $(,)?) => {
+    ($( $(#[$doc:meta])* $variant:ident($name:literal, $module:ident :: $parameters:ident) ),+ $(,)?) => {
+        $( pub mod $module; )+
+
         /// Choice and tuning of the pitch law, as written in a scenario (`type` names it).
         #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
         #[serde(tag = "type", deny_unknown_fields)]
         pub enum PitchControllerParameters {
-            $( $(#[$doc])* #[serde(rename = $name)] $variant($parameters), )+
+            $( $(#[$doc])* #[serde(rename = $name)] $variant($module::$parameters), )+
         }
 
         impl PitchControllerParameters {
@@ -183,7 +185,7 @@ macro_rules! pitch_laws {
             /// Short label for tables and plots, e.g. `O-PD`.
             pub fn label(&self) -> &'static str {
                 match self {
-                    $( Self::$variant(_) => <$parameters as $crate::control::pitch::PitchLawDesign>::LABEL, )+
+                    $( Self::$variant(_) => <$module::$parameters as $crate::control::pitch::PitchLawDesign>::LABEL, )+
                 }
             }
 
@@ -211,7 +213,7 @@ macro_rules! pitch_laws {
         /// user's own.
         #[derive(Debug, Clone)]
         pub enum BuiltPitchLaw {
-            $( $(#[$doc])* $variant(<$parameters as $crate::control::pitch::PitchLawDesign>::Law), )+
+            $( $(#[$doc])* $variant(<$module::$parameters as $crate::control::pitch::PitchLawDesign>::Law), )+
             /// A user's own law.
             Custom(std::sync::Arc<dyn PitchLaw>),
         }

@@ -6,14 +6,12 @@
 //! is designed from the pitch-plant derivatives at trim and the hardware
 //! ([`PitchDesignContext`]) and reads the signals of one instant ([`PitchLawInputs`]).
 //!
-//! **Adding a law** to the scenario file takes one file (its parameters implementing
-//! [`PitchLawDesign`], its controller implementing [`PitchLaw`]) and one line in the
-//! registry below. A law used only from code needs no registration: wrap it in
+//! **Adding a law** to the scenario file takes one file beside this one (its parameters
+//! implementing [`PitchLawDesign`], its controller implementing [`PitchLaw`]) and one
+//! line in the registry below, which also declares the file's module. A law used only from code needs no registration: wrap it in
 //! [`BuiltPitchLaw::Custom`].
 
 mod law;
-mod observer_pd;
-mod pid;
 
 pub use law::{
     ElevatorSaturation, PitchDesignContext, PitchLaw, PitchLawDesign, PitchLawInputs,
@@ -22,12 +20,13 @@ pub use law::{
 pub use observer_pd::{ObserverPdController, ObserverPdGains, ObserverPdParameters, PitchFeedback};
 pub use pid::{PidController, PidParameters, PidState};
 
-// The registry of pitch laws that a scenario can name: one line each.
+// The registry of pitch laws that a scenario can name: one line each, `Variant("type
+// name", module::Parameters)`; the macro declares the module (its file beside this one).
 law::pitch_laws! {
     /// Observer-based PD (paper Eq. 30–36).
-    ObserverPd("observer_pd", ObserverPdParameters),
+    ObserverPd("observer_pd", observer_pd::ObserverPdParameters),
     /// PID for comparison (paper Eq. 37).
-    Pid("pid", PidParameters),
+    Pid("pid", pid::PidParameters),
 }
 
 impl PitchControllerParameters {
