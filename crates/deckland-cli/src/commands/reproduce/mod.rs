@@ -475,7 +475,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
     let mut scenario = Conditions::Adverse.scenario(SEED);
     scenario.control.pitch = ControllerChoice::Opd.parameters();
     let approach_run = fly_approach(&scenario).context("cannot set up the approach")?;
-    let approach = approach_run.summary;
+    let approach = approach_run.summary.clone();
     let approach_samples = &approach_run.samples;
     let pitch_tracking_rms_deg = {
         let n = approach_samples.len().max(1) as f64;
@@ -487,7 +487,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
             .sqrt()
     };
     let title = format!("O-PD, adverse, seed {SEED}");
-    let approach_figures = land::figures(approach_samples, &title);
+    let approach_figures = land::figures(&approach_run, &scenario, &title);
     save(
         &output,
         &mut written,
