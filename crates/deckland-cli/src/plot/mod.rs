@@ -1115,6 +1115,60 @@ mod tests {
     }
 
     #[test]
+    fn nothing_non_finite_reaches_the_svg() {
+        let figure = Figure::new()
+            .panel(
+                Panel::new("Lines", "time (s)", "value (m)")
+                    .series("a", vec![(0.0, f64::NAN), (1.0, f64::INFINITY), (2.0, 1.0)])
+                    .dashed_series("b", vec![(f64::NAN, 0.0)])
+                    .reference_line("limit", f64::NAN)
+                    .vertical_line("wire", f64::INFINITY)
+                    .marker("touchdown", (f64::NAN, 1.0), MarkerShape::Circle)
+                    .note("nothing finite here"),
+            )
+            .panel(Panel::new("Histogram", "x (m)", "runs").histogram(
+                "h",
+                vec![f64::NAN, f64::NEG_INFINITY],
+                5,
+            ))
+            .panel(
+                Panel::new("Bars", "outcome", "share (%)")
+                    .categories(vec!["trap".into()])
+                    .bar_group(BarGroup {
+                        name: "O-PD".into(),
+                        values: vec![f64::NAN],
+                        intervals: vec![(f64::NAN, f64::INFINITY)],
+                        labels: Vec::new(),
+                    }),
+            );
+        let svg = figure.render_svg().expect("renders");
+        for word in ["NaN", "inf", "Infinity"] {
+            assert!(
+                !svg.split(|c: char| !c.is_ascii_alphanumeric())
+                    .any(|w| w == word),
+                "{word} in the SVG"
+            );
+        }
+    }
+
+    #[test]
+    fn svg_text_names_only_the_generic_font_family() {
+        let svg = Figure::new()
+            .title("t")
+            .panel(Panel::new("p", "x (s)", "y (m)").series("a", vec![(0.0, 0.0), (1.0, 1.0)]))
+            .render_svg()
+            .expect("renders");
+        let families: Vec<&str> = svg
+            .split("font-family=\"")
+            .skip(1)
+            .filter_map(|rest| rest.split('"').next())
+            .collect();
+        assert!(!families.is_empty());
+        assert!(families.iter().all(|f| *f == FONT_FAMILY), "{families:?}");
+        assert!(!svg.contains("url(") && !svg.contains("@font-face"));
+    }
+
+    #[test]
     fn figure_renders_to_svg_with_its_text() {
         let figure = Figure::new()
             .title("Two panels")
