@@ -401,7 +401,7 @@ fn html_report(
     let header: Vec<&str> = header.iter().map(String::as_str).collect();
     page.section("Outcomes")
         .paragraph(format!(
-            "Each rate with its {}; the classes are exclusive and add up to the runs.",
+            "Intervals: the {}. The classes are exclusive and add up to the runs.",
             report.confidence_interval
         ))
         .table(&header, outcome_rows(stats));
