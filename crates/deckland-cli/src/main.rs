@@ -1,6 +1,7 @@
 //! The `deckland` command line: trim, linearise, simulate and plot carrier landings.
 
 mod commands;
+mod html;
 mod output;
 mod plot;
 

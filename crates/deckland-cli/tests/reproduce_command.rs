@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::scratch;
+use common::{chromium, has_non_finite, headless_chromium, page_text, scratch};
 use std::fs;
 use std::process::Command;
 
@@ -83,6 +83,14 @@ fn quick_reproduction_writes_every_figure_and_the_report() {
             "REPORT.md does not show {stem}"
         );
     }
+    assert!(
+        !report.contains("(no such paper value)"),
+        "REPORT.md looks up a paper value that is not in the table of claims"
+    );
+    assert!(
+        !has_non_finite(&report),
+        "REPORT.md holds a non-finite number"
+    );
     // The numbers the paper states are there, beside ours.
     for paper in [
         "69.1",
@@ -94,6 +102,47 @@ fn quick_reproduction_writes_every_figure_and_the_report() {
         "−0.40 ± 0.45i",
     ] {
         assert!(report.contains(paper), "no `{paper}` in REPORT.md");
+    }
+    // The same inputs give the same report, byte for byte: no timing in the file.
+    let again = scratch("quick-again");
+    let second = Command::new(env!("CARGO_BIN_EXE_deckland"))
+        .args(["reproduce", "--quick", "--out"])
+        .arg(&again)
+        .output()
+        .unwrap();
+    assert!(second.status.success());
+    assert_eq!(
+        report,
+        fs::read_to_string(again.join("REPORT.md")).unwrap(),
+        "REPORT.md differs between two runs with the same inputs"
+    );
+    assert_eq!(
+        fs::read(out.join("report.html")).unwrap(),
+        fs::read(again.join("report.html")).unwrap(),
+        "report.html differs between two runs with the same inputs"
+    );
+    let _ = fs::remove_dir_all(&again);
+
+    // report.html holds the same table, rendered in a browser, and every figure.
+    let html = fs::read_to_string(out.join("report.html")).unwrap();
+    assert!(
+        !has_non_finite(&html),
+        "report.html holds a non-finite number"
+    );
+    assert!(html.matches("<svg").count() >= FIGURES.len());
+    assert!(!html.contains("<script") && !html.contains("<link"));
+    if let Some(chromium) = chromium() {
+        let text = page_text(&headless_chromium(
+            &chromium,
+            &out.join("report.html"),
+            &["--dump-dom"],
+        ));
+        for row in &rows {
+            let cells: Vec<&str> = row.trim_matches('|').split(" | ").collect();
+            let ours = cells[2].trim().replace("\\|", "|");
+            let ours = page_text(&ours.replace("**", "").replace('`', ""));
+            assert!(text.contains(&ours), "report.html does not show `{ours}`");
+        }
     }
     let _ = fs::remove_dir_all(&out);
 }

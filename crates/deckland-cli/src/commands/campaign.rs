@@ -17,8 +17,9 @@
 //! `"partial": true`, and the command exits with status 130.
 
 use super::common::{load_scenario_file, OutputArgs};
+use crate::html;
 use crate::output::OutputDir;
-use crate::plot::{Figure, Panel};
+use crate::plot::{BarGroup, Figure, Panel};
 use anyhow::{Context, Result};
 use clap::Args;
 use deckland::monte_carlo::{
@@ -234,11 +235,24 @@ fn figures(
         "timeout",
         "invalid",
     ];
-    let mut outcomes = Panel::new("Outcomes", "outcome", "runs")
-        .categories(categories.iter().map(|c| (*c).to_owned()).collect());
+    let mut outcomes = Panel::new(
+        "Share of runs by outcome, with 95 % Wilson score intervals (bar labels: runs)",
+        "outcome",
+        "share of runs (%)",
+    )
+    .categories(categories.iter().map(|c| (*c).to_owned()).collect())
+    .interval_name("95 % Wilson score interval");
     for s in &statistics {
-        let counts = proportions(s).iter().map(|(_, p)| p.count as f64).collect();
-        outcomes = outcomes.bars(s.controller.clone(), counts);
+        let classes = proportions(s);
+        outcomes = outcomes.bar_group(BarGroup {
+            name: format!("{} ({} runs)", s.controller, s.runs),
+            values: classes.iter().map(|(_, p)| 100.0 * p.rate).collect(),
+            intervals: classes
+                .iter()
+                .map(|(_, p)| (100.0 * p.ci95_low, 100.0 * p.ci95_high))
+                .collect(),
+            labels: classes.iter().map(|(_, p)| p.count.to_string()).collect(),
+        });
     }
     vec![
         (
@@ -274,6 +288,163 @@ fn proportions(s: &CampaignStatistics) -> [(&'static str, Proportion); 7] {
         ("timeout", s.timeout),
         ("invalid scenario", s.invalid),
     ]
+}
+
+/// The outcome table of `report.html`: per class and controller the count, the rate and
+/// its 95 % Wilson score interval (%), as in `summary.json`.
+fn outcome_rows(stats: &[CampaignStatistics]) -> Vec<Vec<String>> {
+    let Some(first) = stats.first() else {
+        return Vec::new();
+    };
+    (0..proportions(first).len())
+        .map(|row| {
+            let mut cells = vec![proportions(first)[row].0.to_string()];
+            for s in stats {
+                let (_, p) = proportions(s)[row];
+                cells.push(p.count.to_string());
+                cells.push(format!("{} %", html::number(100.0 * p.rate, 1)));
+                cells.push(format!(
+                    "[{}, {}] %",
+                    html::number(100.0 * p.ci95_low, 1),
+                    html::number(100.0 * p.ci95_high, 1)
+                ));
+            }
+            cells
+        })
+        .collect()
+}
+
+/// The touchdown statistics of `report.html`: per quantity and controller the count,
+/// mean, standard deviation, extremes and percentiles.
+fn distribution_rows(stats: &[CampaignStatistics]) -> Vec<Vec<String>> {
+    let quantities: [(&str, DistributionOf); 3] = [
+        ("touchdown from the aim point (m, positive forward)", |s| {
+            s.touchdown_distance_m
+        }),
+        ("touchdown sink rate relative to the deck (m/s)", |s| {
+            s.touchdown_sink_rate_mps
+        }),
+        ("glide-path error RMS (m)", |s| s.glide_path_error_rms_m),
+    ];
+    let mut rows = Vec::new();
+    for (name, get) in quantities {
+        for s in stats {
+            let mut cells = vec![name.to_string(), s.controller.clone()];
+            match get(s) {
+                Some(d) => {
+                    cells.push(d.count.to_string());
+                    cells.extend(
+                        [
+                            d.mean,
+                            d.standard_deviation,
+                            d.min,
+                            d.p5,
+                            d.p50,
+                            d.p95,
+                            d.max,
+                        ]
+                        .map(|v| html::number(v, 2)),
+                    );
+                }
+                None => cells.extend(std::iter::repeat_n("—".to_string(), 8)),
+            }
+            rows.push(cells);
+        }
+    }
+    rows
+}
+
+/// `report.html` of a campaign: what was flown, the outcome table with intervals, the
+/// touchdown statistics, the plots and the scenario.
+fn html_report(
+    report: &CampaignReport,
+    title: &str,
+    plots: &[(&str, String)],
+    scenario_toml: &str,
+) -> String {
+    let stats = report.controllers;
+    let mut page = html::Report::new(format!("Campaign — {title}"));
+    let flown = page.section("What was flown");
+    flown.table(
+        &["quantity", "value"],
+        vec![
+            vec!["scenario file".into(), report.scenario_file.clone()],
+            vec!["campaign seed".into(), report.campaign_seed.to_string()],
+            vec![
+                "controllers".into(),
+                stats
+                    .iter()
+                    .map(|s| s.controller.as_str())
+                    .collect::<Vec<_>>()
+                    .join(", "),
+            ],
+            vec![
+                "runs requested per controller".into(),
+                report.requested_runs.to_string(),
+            ],
+            vec![
+                "runs finished (all controllers)".into(),
+                report.finished_runs.to_string(),
+            ],
+        ],
+    );
+    flown.paragraph(report.seed_derivation);
+    if let Some(note) = &report.partial_note {
+        flown.paragraph(format!("**Partial:** {note}"));
+    }
+    let mut header = vec!["outcome".to_string()];
+    for s in stats {
+        header.push(format!("{}: runs (of {})", s.controller, s.runs));
+        header.push(format!("{}: rate", s.controller));
+        header.push(format!("{}: 95 % interval", s.controller));
+    }
+    let header: Vec<&str> = header.iter().map(String::as_str).collect();
+    page.section("Outcomes")
+        .paragraph(format!(
+            "Intervals: the {}. The classes are exclusive and add up to the runs.",
+            report.confidence_interval
+        ))
+        .table(&header, outcome_rows(stats));
+    let wires: Vec<Vec<String>> = stats
+        .iter()
+        .map(|s| {
+            let mut row = vec![s.controller.clone()];
+            row.extend(s.traps_per_wire.iter().map(|w| w.to_string()));
+            row
+        })
+        .collect();
+    page.section("Touchdown")
+        .paragraph(format!(
+            "Over the runs that touched the deck; percentiles by {}.",
+            report.percentiles
+        ))
+        .table(
+            &[
+                "quantity",
+                "controller",
+                "count",
+                "mean",
+                "sd",
+                "min",
+                "p5",
+                "p50",
+                "p95",
+                "max",
+            ],
+            distribution_rows(stats),
+        )
+        .table(
+            &["controller", "wire 1", "wire 2", "wire 3", "wire 4"],
+            wires,
+        );
+    let plots_section = page.section("Plots");
+    for (stem, svg) in plots {
+        plots_section.figure(svg, format!("`{stem}.svg` (also `{stem}.png`)"));
+    }
+    page.section("Scenario flown")
+        .paragraph("The nominal scenario; `runs.csv` lists each run's seed and dispersions.")
+        .verbatim("scenario.toml", scenario_toml);
+    page.to_html()
 }
 
 /// Picks one distribution out of a controller's statistics.
@@ -404,12 +575,9 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
         percentiles: "linear interpolation between closest ranks (Hyndman & Fan type 7)",
         controllers: &statistics,
     };
-    output.write_bytes(
-        "scenario.toml",
-        toml::to_string(&spec.scenario)
-            .context("cannot write the scenario as TOML")?
-            .as_bytes(),
-    )?;
+    let scenario_toml =
+        toml::to_string(&spec.scenario).context("cannot write the scenario as TOML")?;
+    output.write_bytes("scenario.toml", scenario_toml.as_bytes())?;
     write_runs_csv(&result, &output)?;
     output.write_bytes(
         "summary.json",
@@ -419,10 +587,21 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
         || args.scenario.display().to_string(),
         |n| n.to_string_lossy().into_owned(),
     );
-    let title = format!("{name}, {finished_runs} runs, seed {seed}");
+    let per_controller = statistics.first().map_or(0, |s| s.runs);
+    let title = format!(
+        "{name}, seed {seed}, {per_controller} runs{}",
+        if statistics.len() > 1 {
+            " per controller"
+        } else {
+            ""
+        }
+    );
+    let mut plots = Vec::new();
     for (stem, figure) in figures(&result, &spec.scenario, &title) {
-        figure.save(&output, stem)?;
+        plots.push((stem, figure.save_with_svg(&output, stem)?.1));
     }
+    let page = html_report(&report, &title, &plots, &scenario_toml);
+    output.write_bytes("report.html", page.as_bytes())?;
     if args.output.json {
         println!("{}", serde_json::to_string_pretty(&report)?);
     } else {

@@ -145,21 +145,32 @@ pub(crate) fn figures(
     let components = Figure::new()
         .title(format!("Wind components {where_}, seed {}", args.seed))
         .panel(
-            Panel::new("Longitudinal", "time (s)", "wind x (m/s, positive forward)")
-                .series("turbulence u1", series(rows, |r| r.turbulence_x_mps))
-                .series("steady wake u2", series(rows, |r| r.steady_wake_x_mps))
-                .series("periodic wake u3", series(rows, |r| r.periodic_wake_x_mps))
-                .series(
-                    "total − mean",
-                    series(rows, |r| r.wind_x_mps - r.mean_wind_x_mps),
+            Panel::new(
+                format!(
+                    "Longitudinal: the components, and the total less the mean wind of {} m/s",
+                    format!("{mean_x:+.1}").replace('-', "\u{2212}")
                 ),
+                "time (s)",
+                "wind x (m/s, positive forward)",
+            )
+            .series("turbulence u1", series(rows, |r| r.turbulence_x_mps))
+            .series("steady wake u2", series(rows, |r| r.steady_wake_x_mps))
+            .series("periodic wake u3", series(rows, |r| r.periodic_wake_x_mps))
+            .series(
+                "total − mean wind",
+                series(rows, |r| r.wind_x_mps - r.mean_wind_x_mps),
+            ),
         )
         .panel(
-            Panel::new("Vertical", "time (s)", "wind z (m/s, positive down)")
-                .series("turbulence w1", series(rows, |r| r.turbulence_z_mps))
-                .series("steady wake w2", series(rows, |r| r.steady_wake_z_mps))
-                .series("periodic wake w3", series(rows, |r| r.periodic_wake_z_mps))
-                .series("total", series(rows, |r| r.wind_z_mps)),
+            Panel::new(
+                "Vertical: the components, and the total (the mean wind has no vertical part)",
+                "time (s)",
+                "wind z (m/s, positive down)",
+            )
+            .series("turbulence w1", series(rows, |r| r.turbulence_z_mps))
+            .series("steady wake w2", series(rows, |r| r.steady_wake_z_mps))
+            .series("periodic wake w3", series(rows, |r| r.periodic_wake_z_mps))
+            .series("total", series(rows, |r| r.wind_z_mps)),
         );
     vec![
         ("landing_point_motion", landing_point),

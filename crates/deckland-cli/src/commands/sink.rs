@@ -119,23 +119,54 @@ pub(crate) fn fly_tracking(
     })
 }
 
-/// The sink-rate figure (paper Fig. 13): sink rate and command, error, altitude.
+/// How the run ended, in words: "settled (±2 %) 12.54 s after the command", "diverged at
+/// t = 2.008 s".
+pub(crate) fn outcome_text(run: &SinkRun) -> String {
+    let report = &run.report;
+    let end_s = run.rows.last().map_or(f64::NAN, |r| r.time_s);
+    match (&report.metrics, report.outcome) {
+        (_, "diverged") => format!("diverged at t = {end_s:.3} s"),
+        (Some(m), _) => match (m.settled, m.settling_time_s) {
+            (true, Some(t)) => format!("settled (±2 %) {t:.2} s after the command"),
+            _ => format!(
+                "not settled: {}",
+                m.not_settled_reason.as_deref().unwrap_or("no reason given")
+            ),
+        },
+        (None, outcome) => outcome.replace('_', " "),
+    }
+}
+
+/// The sink-rate figure (paper Fig. 13): sink rate and command, error, altitude; the
+/// title says how the command came in and how the run ended, the note why.
 pub(crate) fn figure(run: &SinkRun) -> Figure {
     let report = &run.report;
     let rows = &run.rows;
     let points =
         |f: &dyn Fn(&Row) -> f64| rows.iter().map(|r| (r.time_s, f(r))).collect::<Vec<_>>();
+    let command = if report.ramp_s > 0.0 {
+        format!(
+            "{} m/s ramped in over {} s",
+            report.sink_rate_command_mps, report.ramp_s
+        )
+    } else {
+        format!("{} m/s as a step", report.sink_rate_command_mps)
+    };
     let title = format!(
-        "Constant sink-rate command {} m/s (cf. paper Fig. 13) — {}, {}",
-        report.sink_rate_command_mps, report.controller, report.conditions
+        "Sink-rate command {command} (cf. paper Fig. 13) — {}, {}: {}",
+        report.controller,
+        report.conditions,
+        outcome_text(run)
     );
+    let mut sink = Panel::new("Sink rate", "time (s)", "sink rate (m/s, positive down)")
+        .dashed_series("command", points(&|r| r.sink_rate_command_mps))
+        .series("sink rate", points(&|r| r.sink_rate_mps));
+    if let Some(reason) = &report.reason {
+        sink = sink.note(format!("{}: {reason}", report.outcome));
+    }
     Figure::new()
         .title(title)
-        .panel(
-            Panel::new("Sink rate", "time (s)", "sink rate (m/s, positive down)")
-                .series("command", points(&|r| r.sink_rate_command_mps))
-                .series("sink rate", points(&|r| r.sink_rate_mps)),
-        )
+        .panel(sink)
         .panel(
             Panel::new("Sink-rate error", "time (s)", "error (m/s)")
                 .series("command − sink rate", points(&|r| r.sink_rate_error_mps))

@@ -29,3 +29,128 @@ pub fn scratch(name: &str) -> PathBuf {
 pub fn file_size(path: &Path) -> u64 {
     std::fs::metadata(path).map(|m| m.len()).unwrap_or(0)
 }
+
+/// The Chromium binary for the browser tests: `$DECKLAND_CHROMIUM`, else `chromium` on the
+/// `PATH`. Without it a test fails with how to install it — unless
+/// `DECKLAND_SKIP_BROWSER_TESTS=1` is set outside CI, when it returns `None` and the test
+/// skips (CI, with `CI` set, never skips: `.ci/run` installs Chromium first).
+pub fn chromium() -> Option<PathBuf> {
+    let candidate = std::env::var_os("DECKLAND_CHROMIUM")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| PathBuf::from("chromium"));
+    let found = Command::new(&candidate)
+        .arg("--version")
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if found {
+        return Some(candidate);
+    }
+    let in_ci = std::env::var_os("CI").is_some_and(|v| !v.is_empty() && v != "false");
+    let skip = std::env::var("DECKLAND_SKIP_BROWSER_TESTS").is_ok_and(|v| v == "1");
+    if skip && !in_ci {
+        eprintln!(
+            "skipping a browser test: {} not found and DECKLAND_SKIP_BROWSER_TESTS=1",
+            candidate.display()
+        );
+        return None;
+    }
+    panic!(
+        "headless Chromium is needed to check report.html but `{}` does not run. Install it \
+         with `bash .ci/install-system-packages` (Debian: `apt-get install chromium`), point \
+         DECKLAND_CHROMIUM at it, or, outside CI only, set DECKLAND_SKIP_BROWSER_TESTS=1 to \
+         skip the browser tests",
+        candidate.display()
+    );
+}
+
+/// Runs headless Chromium on the local file `page` with `mode` (`--dump-dom`, or
+/// `--screenshot=…`), from a new empty profile, with no network use of its own; returns
+/// its standard output. Fails the test after 120 s.
+pub fn headless_chromium(chromium: &Path, page: &Path, mode: &[&str]) -> String {
+    let profile = scratch(&format!(
+        "chromium-profile-{}",
+        page.display().to_string().len() + mode.len()
+    ));
+    std::fs::create_dir_all(&profile).expect("a profile folder");
+    let page = page.canonicalize().expect("the page exists");
+    // Output to files, not pipes: a page's DOM overflows a pipe that nobody reads while
+    // the test waits.
+    let stdout_path = profile.with_extension("stdout");
+    let stderr_path = profile.with_extension("stderr");
+    let mut child = Command::new(chromium)
+        .args([
+            "--headless",
+            "--no-sandbox",
+            "--disable-gpu",
+            "--disable-quic",
+            "--no-first-run",
+            "--disable-background-networking",
+            "--disable-component-update",
+            "--disable-sync",
+        ])
+        .arg(format!("--user-data-dir={}", profile.display()))
+        .args(mode)
+        .arg(format!("file://{}", page.display()))
+        .stdout(std::fs::File::create(&stdout_path).expect("a file for chromium's output"))
+        .stderr(std::fs::File::create(&stderr_path).expect("a file for chromium's errors"))
+        .spawn()
+        .expect("chromium starts");
+    let started = std::time::Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().expect("chromium runs") {
+            break status;
+        }
+        if started.elapsed() > std::time::Duration::from_secs(120) {
+            let _ = child.kill();
+            let _ = child.wait();
+            panic!(
+                "headless chromium did not finish within 120 s on {}",
+                page.display()
+            );
+        }
+        std::thread::sleep(std::time::Duration::from_millis(100));
+    };
+    let stdout = std::fs::read_to_string(&stdout_path).unwrap_or_default();
+    let stderr = std::fs::read_to_string(&stderr_path).unwrap_or_default();
+    let _ = std::fs::remove_dir_all(&profile);
+    let _ = std::fs::remove_file(&stdout_path);
+    let _ = std::fs::remove_file(&stderr_path);
+    assert!(
+        status.success(),
+        "chromium failed on {}: {stderr}",
+        page.display()
+    );
+    stdout
+}
+
+/// The text of an HTML document: tags removed, entities `&amp;` `&lt;` `&gt;` `&quot;`
+/// `&#39;` decoded, runs of white space made one space.
+pub fn page_text(html: &str) -> String {
+    let mut text = String::with_capacity(html.len());
+    let mut in_tag = false;
+    for c in html.chars() {
+        match c {
+            '<' => in_tag = true,
+            '>' if in_tag => {
+                in_tag = false;
+                text.push(' ');
+            }
+            _ if !in_tag => text.push(c),
+            _ => {}
+        }
+    }
+    let decoded = text
+        .replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&quot;", "\"")
+        .replace("&#39;", "'")
+        .replace("&amp;", "&");
+    decoded.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// Whether `text` holds a non-finite number as Rust or JavaScript writes it: `NaN`, `inf`
+/// or `Infinity` standing alone.
+pub fn has_non_finite(text: &str) -> bool {
+    text.split(|c: char| !c.is_ascii_alphanumeric())
+        .any(|word| matches!(word, "NaN" | "nan" | "inf" | "Infinity"))
+}

@@ -8,6 +8,7 @@
 //! (docs/model.md §2.3 and §8, `docs/paper-errata-and-assumptions.md`).
 
 mod figures;
+mod paper;
 mod report;
 
 use std::io::IsTerminal;
@@ -23,8 +24,8 @@ use deckland::analysis::{
 };
 use deckland::control::pitch::ObserverPdGains;
 use deckland::experiments::{
-    fly_approach, fly_seeds, record_environment, EnvironmentRecord, OutcomeCounts, PitchStep,
-    SinkRateTracking,
+    fly_approach, fly_pitch_step, fly_seeds, record_environment, EnvironmentRecord, OutcomeCounts,
+    PitchStep, SinkRateTracking,
 };
 use deckland::scenario::EnvironmentSection;
 use deckland::simulation::RunSummary;
@@ -65,6 +66,10 @@ pub(crate) struct RunLengths {
     pub(crate) sink_s: f64,
     /// Seeds of the boarding statistics (1..=N).
     pub(crate) boarding_seeds: u64,
+    /// Seeds of the pitch-step studies behind the notes (1..=N).
+    pub(crate) study_seeds: u64,
+    /// Seeds of the environment records whose median peaks the notes give (1..=N).
+    pub(crate) peak_seeds: u64,
 }
 
 impl RunLengths {
@@ -75,6 +80,8 @@ impl RunLengths {
                 environment_s: 20.0,
                 sink_s: 16.0,
                 boarding_seeds: 3,
+                study_seeds: 2,
+                peak_seeds: 3,
             }
         } else {
             Self {
@@ -82,6 +89,8 @@ impl RunLengths {
                 environment_s: 60.0,
                 sink_s: 20.0,
                 boarding_seeds: 50,
+                study_seeds: 5,
+                peak_seeds: 20,
             }
         }
     }
@@ -103,21 +112,6 @@ pub(crate) const SEED: u64 = 1;
 /// Distance aft of the ship's pitch centre where Fig. 8 samples the wind (m).
 pub(crate) const WIND_DISTANCE_AFT_M: f64 = 400.0;
 
-/// The printed A of the paper's Eq. 14 (states V_T, θ, α, q).
-pub(crate) const PAPER_A: [[f64; 4]; 4] = [
-    [-0.18, -9.81, -0.274, 0.0],
-    [0.0, 0.0, 0.0, 1.0],
-    [-0.0041, 0.0, -0.59, 1.0],
-    [0.0, 0.0, -0.26, -0.15],
-];
-/// The printed B of the paper's Eq. 14 (inputs δe, δT).
-pub(crate) const PAPER_B: [[f64; 2]; 4] = [
-    [-0.001, 9.85],
-    [0.0, 0.0],
-    [-0.00075, -0.018],
-    [-0.015, 0.0],
-];
-
 /// A figure written by the report, with what it reproduces.
 #[derive(Debug, Clone)]
 pub(crate) struct WrittenFigure {
@@ -127,6 +121,19 @@ pub(crate) struct WrittenFigure {
     pub(crate) paper_figure: &'static str,
     /// One line on what it shows.
     pub(crate) caption: String,
+    /// The SVG document, for `report.html`.
+    pub(crate) svg: String,
+}
+
+impl WrittenFigure {
+    /// The heading of its entry: the paper's figure, or "Extra".
+    pub(crate) fn heading(&self) -> &'static str {
+        if self.paper_figure == "—" {
+            "Extra"
+        } else {
+            self.paper_figure
+        }
+    }
 }
 
 /// Everything the report measures.
@@ -147,18 +154,37 @@ pub(crate) struct Findings {
     pub(crate) environment: EnvironmentSection,
     pub(crate) heave_peak_m: f64,
     pub(crate) ship_pitch_peak_deg: f64,
+    /// Peak |heave| of each environment record of seeds 1..=N (m).
+    pub(crate) heave_peaks_m: Vec<f64>,
+    /// Peak |ship pitch| of each environment record of seeds 1..=N (deg).
+    pub(crate) pitch_peaks_deg: Vec<f64>,
     pub(crate) landing_point_peak_m: f64,
     pub(crate) wind_x_range_mps: (f64, f64),
     pub(crate) step_ideal: Vec<ControllerResult>,
     pub(crate) step_adverse: Vec<ControllerResult>,
+    /// RMS of θ − target over the last second of the adverse O-PD step (deg).
+    pub(crate) adverse_opd_tracking_rms_deg: f64,
+    /// The adverse O-PD step without sensor noise, seeds 1..=N.
+    pub(crate) adverse_opd_noiseless: Vec<ControllerResult>,
+    /// The adverse PID step, seeds 1..=N.
+    pub(crate) adverse_pid_seeds: Vec<ControllerResult>,
     pub(crate) sink_step: sink::SinkReport,
     pub(crate) sink_ramp: sink::SinkReport,
     pub(crate) approach: RunSummary,
+    /// An approach with the paper's sink-rate and guidance gains: ideal, and adverse with
+    /// seed [`SEED`].
+    pub(crate) paper_gains_approaches: [RunSummary; 2],
     pub(crate) pitch_tracking_rms_deg: f64,
     pub(crate) boarded: usize,
     pub(crate) boarding_runs: usize,
     pub(crate) figures: Vec<WrittenFigure>,
-    pub(crate) elapsed_s: f64,
+}
+
+impl Findings {
+    /// The lag of the flight path behind pitch (s): 1/|∂α̇/∂α| of the linear model.
+    pub(crate) fn flight_path_lag_s(&self) -> f64 {
+        1.0 / self.model.a[(2, 2)].abs()
+    }
 }
 
 /// Progress over the report's steps: a bar on a terminal, one line per step otherwise,
@@ -219,11 +245,12 @@ fn save(
     paper_figure: &'static str,
     caption: String,
 ) -> Result<()> {
-    figure.save(output, stem)?;
+    let (_, svg) = figure.save_with_svg(output, stem)?;
     written.push(WrittenFigure {
         stem,
         paper_figure,
         caption,
+        svg,
     });
     Ok(())
 }
@@ -254,6 +281,41 @@ fn sink_tracking(ramp_s: f64, seconds: f64) -> SinkRateTracking {
         ramp_s,
         seconds,
     }
+}
+
+/// RMS of θ − θ_ref over the last second of a pitch-step run (deg).
+fn last_second_rms_deg(samples: &[deckland::simulation::Signals]) -> f64 {
+    let end_s = samples.last().map_or(0.0, |s| s.time_s);
+    let errors: Vec<f64> = samples
+        .iter()
+        .filter(|s| s.time_s >= end_s - 1.0)
+        .map(|s| (s.theta_rad - s.theta_ref_rad).to_degrees())
+        .collect();
+    let n = errors.len().max(1) as f64;
+    (errors.iter().map(|e| e * e).sum::<f64>() / n).sqrt()
+}
+
+/// The adverse pitch step of Fig. 11 with `choice` over `seeds`, without the pitch
+/// sensor's noise if `noiseless`.
+fn step_study(
+    choice: ControllerChoice,
+    seeds: &[u64],
+    noiseless: bool,
+) -> Result<Vec<ControllerResult>> {
+    seeds
+        .iter()
+        .map(|&seed| {
+            let mut scenario = Conditions::Adverse.scenario(seed);
+            scenario.control.pitch = choice.parameters();
+            if noiseless {
+                scenario.environment.pitch_noise.enabled = false;
+            }
+            let step = PitchStep::new(PITCH_STEP_DEG, PITCH_STEP_SECONDS);
+            Ok(fly_pitch_step(&scenario, &step)
+                .with_context(|| format!("cannot fly the {} step of seed {seed}", choice.label()))?
+                .response)
+        })
+        .collect()
 }
 
 /// Worst relative error and largest excursion of each state over the open-loop step.
@@ -296,7 +358,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
         &TrimRequest::default(),
     )
     .map_err(|e| e.to_string());
-    let paper_a = SMatrix::<f64, 4, 4>::from_fn(|i, j| PAPER_A[i][j]);
+    let paper_a = SMatrix::<f64, 4, 4>::from_fn(|i, j| paper::PAPER_A[i][j]);
     let paper_a_modes = identify_modes(
         &paper_a
             .complex_eigenvalues()
@@ -375,6 +437,20 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), r| {
             (lo.min(r.wind_x_mps), hi.max(r.wind_x_mps))
         });
+    let mut heave_peaks_m = Vec::new();
+    let mut pitch_peaks_deg = Vec::new();
+    for seed in 1..=lengths.peak_seeds {
+        let record = EnvironmentRecord {
+            seed,
+            ..environment_record
+        };
+        let rows = record_environment(&environment_parameters, &record)?;
+        let peak = |f: &dyn Fn(&environment::Row) -> f64| {
+            rows.iter().map(|r| f(r).abs()).fold(0.0_f64, f64::max)
+        };
+        heave_peaks_m.push(peak(&|r| r.heave_m));
+        pitch_peaks_deg.push(peak(&|r| r.pitch_deg));
+    }
     let environment_figures =
         environment::figures(&rows, &environment_record, &environment_parameters);
     save(
@@ -418,6 +494,12 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
     let adverse_flight = step_flight(Conditions::Adverse);
     let adverse_runs = adverse_flight.fly(&both)?;
     let adverse_figures = step::figures(&adverse_runs, &adverse_flight);
+    let adverse_opd_tracking_rms_deg = adverse_runs
+        .first()
+        .map_or(f64::NAN, |run| last_second_rms_deg(&run.samples));
+    let study_seeds: Vec<u64> = (1..=lengths.study_seeds).collect();
+    let adverse_opd_noiseless = step_study(ControllerChoice::Opd, &study_seeds, true)?;
+    let adverse_pid_seeds = step_study(ControllerChoice::Pid, &study_seeds, false)?;
     save(
         &output,
         &mut written,
@@ -475,7 +557,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
     let mut scenario = Conditions::Adverse.scenario(SEED);
     scenario.control.pitch = ControllerChoice::Opd.parameters();
     let approach_run = fly_approach(&scenario).context("cannot set up the approach")?;
-    let approach = approach_run.summary;
+    let approach = approach_run.summary.clone();
     let approach_samples = &approach_run.samples;
     let pitch_tracking_rms_deg = {
         let n = approach_samples.len().max(1) as f64;
@@ -486,8 +568,28 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
             / n)
             .sqrt()
     };
+    let fly_paper_gains = |conditions: Conditions| -> Result<RunSummary> {
+        let mut scenario = conditions.scenario(SEED);
+        scenario.control.pitch = ControllerChoice::Opd.parameters();
+        (
+            scenario.control.sink_rate.proportional_rad_per_mps,
+            scenario.control.sink_rate.integral_rad_per_m,
+        ) = paper::PAPER_SINK_GAINS;
+        (
+            scenario.control.guidance.proportional_per_s,
+            scenario.control.guidance.integral_per_s2,
+            scenario.control.guidance.derivative,
+        ) = paper::PAPER_GUIDANCE_GAINS;
+        Ok(fly_approach(&scenario)
+            .context("cannot fly the approach with the paper's gains")?
+            .summary)
+    };
+    let paper_gains_approaches = [
+        fly_paper_gains(Conditions::Ideal)?,
+        fly_paper_gains(Conditions::Adverse)?,
+    ];
     let title = format!("O-PD, adverse, seed {SEED}");
-    let approach_figures = land::figures(approach_samples, &title);
+    let approach_figures = land::figures(&approach_run, &scenario, &title);
     save(
         &output,
         &mut written,
@@ -539,33 +641,46 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
         environment: environment_parameters,
         heave_peak_m,
         ship_pitch_peak_deg,
+        heave_peaks_m,
+        pitch_peaks_deg,
         landing_point_peak_m,
         wind_x_range_mps,
         step_ideal: ideal_runs.into_iter().map(|r| r.result).collect(),
         step_adverse: adverse_runs.into_iter().map(|r| r.result).collect(),
+        adverse_opd_tracking_rms_deg,
+        adverse_opd_noiseless,
+        adverse_pid_seeds,
         sink_step: sink_step_run.report,
         sink_ramp: sink_ramp_run.report,
         approach,
+        paper_gains_approaches,
         pitch_tracking_rms_deg,
         boarded,
         boarding_runs: usize::try_from(lengths.boarding_seeds).unwrap_or(usize::MAX),
         figures: written,
-        elapsed_s: started.elapsed().as_secs_f64(),
     };
-    let rows = report::table(&findings);
-    output.write_bytes("REPORT.md", report::markdown(&findings, &rows).as_bytes())?;
+    let sections = report::sections(&findings);
+    output.write_bytes(
+        "REPORT.md",
+        report::markdown(&findings, &sections).as_bytes(),
+    )?;
+    output.write_bytes("report.html", report::html(&findings, &sections).as_bytes())?;
     progress.finish();
 
+    let rows: usize = sections.iter().map(|s| s.rows.len()).sum();
     println!(
-        "Reproduced {} figures and a table of {} numbers in {:.1} s{}",
+        "Reproduced {} figures and a table of {rows} numbers in {:.1} s{}",
         findings.figures.len(),
-        rows.len(),
         started.elapsed().as_secs_f64(),
         if args.quick { " (quick run)" } else { "" }
     );
     println!(
         "  report                {}",
         output.path().join("REPORT.md").display()
+    );
+    println!(
+        "  the same as one page  {}",
+        output.path().join("report.html").display()
     );
     Ok(())
 }

@@ -1,0 +1,525 @@
+//! Legends that never cover data: what a panel drew is marked on a grid of its plotting
+//! area, and the legend goes where the grid is empty (a corner first), or beside the axes
+//! when no such place exists. Each entry's sample is drawn with the style of its line,
+//! marker or patch: colour, width and dash pattern.
+
+use anyhow::{anyhow, Result};
+use plotters::coord::Shift;
+use plotters::element::DashedPathElement;
+use plotters::prelude::*;
+
+use super::FONT_FAMILY;
+
+/// A point in backend pixels.
+pub(crate) type Pixel = (i32, i32);
+
+/// Font size of legend text (px).
+const TEXT_SIZE: u32 = 14;
+/// Height of one legend line (px).
+const LINE_HEIGHT: i32 = 19;
+/// Width of an entry's sample (px).
+const SAMPLE_WIDTH: i32 = 30;
+/// Widest line of a note before it is wrapped (px).
+const NOTE_WIDTH: u32 = 300;
+/// Padding inside the legend box (px).
+const PADDING: i32 = 7;
+/// Distance kept between the legend and anything drawn, and the axes (px).
+const CLEARANCE: i32 = 4;
+/// Side of a cell of the occupancy grid (px).
+const CELL: i32 = 2;
+
+/// A rectangle in backend pixels, `right` and `bottom` excluded.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct PixelRect {
+    pub(crate) left: i32,
+    pub(crate) top: i32,
+    pub(crate) right: i32,
+    pub(crate) bottom: i32,
+}
+
+impl PixelRect {
+    /// The rectangle at `top_left` of `size`.
+    pub(crate) fn at(top_left: Pixel, (width, height): (i32, i32)) -> Self {
+        Self {
+            left: top_left.0,
+            top: top_left.1,
+            right: top_left.0 + width,
+            bottom: top_left.1 + height,
+        }
+    }
+
+    fn width(&self) -> i32 {
+        self.right - self.left
+    }
+
+    fn height(&self) -> i32 {
+        self.bottom - self.top
+    }
+}
+
+/// Which cells of a plotting area hold something drawn.
+pub(crate) struct Occupancy {
+    area: PixelRect,
+    columns: usize,
+    rows: usize,
+    cells: Vec<bool>,
+}
+
+impl Occupancy {
+    /// An empty grid over `area`.
+    pub(crate) fn new(area: PixelRect) -> Self {
+        let columns = (area.width().max(1) / CELL + 1) as usize;
+        let rows = (area.height().max(1) / CELL + 1) as usize;
+        Self {
+            area,
+            columns,
+            rows,
+            cells: vec![false; columns * rows],
+        }
+    }
+
+    /// Marks the pixels of `rect` (clipped to the area).
+    pub(crate) fn mark_rect(&mut self, rect: PixelRect) {
+        let column = |x: i32| ((x - self.area.left).div_euclid(CELL)).clamp(0, self.columns as i32);
+        let row = |y: i32| ((y - self.area.top).div_euclid(CELL)).clamp(0, self.rows as i32);
+        let (c0, c1) = (column(rect.left), column(rect.right + CELL - 1));
+        let (r0, r1) = (row(rect.top), row(rect.bottom + CELL - 1));
+        for r in r0..r1 {
+            for c in c0..c1 {
+                self.cells[r as usize * self.columns + c as usize] = true;
+            }
+        }
+    }
+
+    /// Marks a disc of `radius` px about `centre` (as its bounding square).
+    pub(crate) fn mark_point(&mut self, centre: Pixel, radius: i32) {
+        self.mark_rect(PixelRect {
+            left: centre.0 - radius,
+            top: centre.1 - radius,
+            right: centre.0 + radius + 1,
+            bottom: centre.1 + radius + 1,
+        });
+    }
+
+    /// Marks the segment from `a` to `b`, `radius` px either side.
+    pub(crate) fn mark_segment(&mut self, a: Pixel, b: Pixel, radius: i32) {
+        let (dx, dy) = ((b.0 - a.0) as f64, (b.1 - a.1) as f64);
+        let length = dx.hypot(dy);
+        if !length.is_finite() {
+            return;
+        }
+        let steps = (length / f64::from(CELL)).ceil().max(1.0) as i32;
+        for i in 0..=steps {
+            let t = f64::from(i) / f64::from(steps);
+            let point = (a.0 + (dx * t).round() as i32, a.1 + (dy * t).round() as i32);
+            self.mark_point(point, radius);
+        }
+    }
+
+    /// Marks a polyline.
+    pub(crate) fn mark_path(&mut self, pixels: &[Pixel], radius: i32) {
+        match pixels {
+            [single] => self.mark_point(*single, radius),
+            _ => {
+                for pair in pixels.windows(2) {
+                    self.mark_segment(pair[0], pair[1], radius);
+                }
+            }
+        }
+    }
+
+    /// Whether any cell of `rect` is marked.
+    fn is_free(&self, rect: PixelRect, table: &[u32]) -> bool {
+        let column = |x: i32| ((x - self.area.left).div_euclid(CELL)).clamp(0, self.columns as i32);
+        let row = |y: i32| ((y - self.area.top).div_euclid(CELL)).clamp(0, self.rows as i32);
+        let (c0, c1) = (
+            column(rect.left) as usize,
+            column(rect.right + CELL - 1) as usize,
+        );
+        let (r0, r1) = (row(rect.top) as usize, row(rect.bottom + CELL - 1) as usize);
+        let stride = self.columns + 1;
+        let at = |r: usize, c: usize| table[r * stride + c];
+        at(r1, c1) + at(r0, c0) - at(r0, c1) - at(r1, c0) == 0
+    }
+
+    /// The summed-area table of the marked cells ((rows + 1) × (columns + 1)).
+    fn summed(&self) -> Vec<u32> {
+        let stride = self.columns + 1;
+        let mut table = vec![0_u32; (self.rows + 1) * stride];
+        for r in 0..self.rows {
+            for c in 0..self.columns {
+                let cell = u32::from(self.cells[r * self.columns + c]);
+                table[(r + 1) * stride + c + 1] =
+                    cell + table[r * stride + c + 1] + table[(r + 1) * stride + c]
+                        - table[r * stride + c];
+            }
+        }
+        table
+    }
+
+    /// The top-left corner of a free place of `size` inside the area, keeping clear of
+    /// the axes: a corner or the middle of the top or bottom edge if one is free (upper
+    /// right first), else the free place nearest to a corner; `None` when nothing is free.
+    pub(crate) fn free_place(&self, size: (i32, i32)) -> Option<Pixel> {
+        let area = self.area;
+        let (width, height) = size;
+        let left = area.left + CLEARANCE;
+        let right = area.right - CLEARANCE - width;
+        let top = area.top + CLEARANCE;
+        let bottom = area.bottom - CLEARANCE - height;
+        if right < left || bottom < top {
+            return None;
+        }
+        let table = self.summed();
+        let free = |x: i32, y: i32| {
+            self.is_free(
+                PixelRect {
+                    left: x - CLEARANCE,
+                    top: y - CLEARANCE,
+                    right: x + width + CLEARANCE,
+                    bottom: y + height + CLEARANCE,
+                },
+                &table,
+            )
+        };
+        let middle = (left + right) / 2;
+        let preferred = [
+            (right, top),
+            (left, top),
+            (right, bottom),
+            (left, bottom),
+            (middle, top),
+            (middle, bottom),
+        ];
+        if let Some(&place) = preferred.iter().find(|(x, y)| free(*x, *y)) {
+            return Some(place);
+        }
+        let corners = [(right, top), (left, top), (right, bottom), (left, bottom)];
+        let mut best: Option<(i64, Pixel)> = None;
+        for y in (top..=bottom).step_by(4) {
+            for x in (left..=right).step_by(4) {
+                if !free(x, y) {
+                    continue;
+                }
+                let distance = corners
+                    .iter()
+                    .map(|(cx, cy)| {
+                        let (dx, dy) = (i64::from(x - cx), i64::from(y - cy));
+                        dx * dx + dy * dy
+                    })
+                    .min()
+                    .unwrap_or(0);
+                if best.is_none_or(|(d, _)| distance < d) {
+                    best = Some((distance, (x, y)));
+                }
+            }
+        }
+        best.map(|(_, place)| place)
+    }
+}
+
+/// The shape of a point marker.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MarkerShape {
+    /// A filled circle.
+    Circle,
+    /// A filled triangle, point up.
+    Triangle,
+}
+
+/// How an entry's sample is drawn: exactly as the thing it names.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Sample {
+    /// A line of `width` px, dashed `(dash, gap)` px or solid.
+    Line {
+        colour: RGBColor,
+        width: u32,
+        dash: Option<(u32, u32)>,
+    },
+    /// A point marker of `size` px (radius).
+    Marker {
+        colour: RGBColor,
+        opacity: f64,
+        shape: MarkerShape,
+        size: u32,
+    },
+    /// A filled patch (histogram or bar), with an outline of the same colour.
+    Patch { colour: RGBColor, opacity: f64 },
+    /// An error bar with caps.
+    Interval { colour: RGBColor },
+}
+
+/// One legend entry.
+#[derive(Debug, Clone)]
+pub(crate) struct Entry {
+    pub(crate) sample: Sample,
+    pub(crate) label: String,
+}
+
+/// A panel's legend: optional note lines (such as the outcome) above the entries.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Legend {
+    pub(crate) notes: Vec<String>,
+    pub(crate) entries: Vec<Entry>,
+}
+
+fn text_style() -> TextStyle<'static> {
+    (FONT_FAMILY, TEXT_SIZE).into_font().color(&BLACK)
+}
+
+fn note_style() -> TextStyle<'static> {
+    (FONT_FAMILY, TEXT_SIZE)
+        .into_font()
+        .style(FontStyle::Bold)
+        .color(&BLACK)
+}
+
+impl Legend {
+    /// Whether the panel shows a legend: notes, or more than one entry (a lone line is
+    /// named by the panel's title).
+    pub(crate) fn is_shown(&self) -> bool {
+        !self.notes.is_empty() || self.entries.len() > 1
+    }
+
+    /// Adds an entry unless one with the same label is there already (two lines of one
+    /// band share one entry).
+    pub(crate) fn push(&mut self, label: &str, sample: Sample) {
+        if !label.is_empty() && !self.entries.iter().any(|e| e.label == label) {
+            self.entries.push(Entry {
+                sample,
+                label: label.to_string(),
+            });
+        }
+    }
+
+    /// The notes wrapped at word boundaries into lines of at most [`NOTE_WIDTH`] px.
+    fn note_lines<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>) -> Vec<String> {
+        let fits = |text: &str| {
+            area.estimate_text_size(text, &note_style())
+                .is_ok_and(|(w, _)| w <= NOTE_WIDTH)
+        };
+        let mut lines = Vec::new();
+        for note in &self.notes {
+            // A short token (a unit, "=") stays with the word before it: "2.008 s".
+            let mut words: Vec<String> = Vec::new();
+            for word in note.split_whitespace() {
+                match words.last_mut() {
+                    Some(last) if word.chars().count() <= 2 => {
+                        last.push(' ');
+                        last.push_str(word);
+                    }
+                    _ => words.push(word.to_string()),
+                }
+            }
+            let mut line = String::new();
+            for word in words {
+                let candidate = if line.is_empty() {
+                    word.clone()
+                } else {
+                    format!("{line} {word}")
+                };
+                if line.is_empty() || fits(&candidate) {
+                    line = candidate;
+                } else {
+                    lines.push(std::mem::replace(&mut line, word));
+                }
+            }
+            if !line.is_empty() {
+                lines.push(line);
+            }
+        }
+        lines
+    }
+
+    /// Width and height of the legend box (px).
+    pub(crate) fn size<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+    ) -> Result<(i32, i32)> {
+        let width_of = |text: &str, style: &TextStyle| -> Result<i32> {
+            let (w, _) = area
+                .estimate_text_size(text, style)
+                .map_err(|e| anyhow!("cannot measure the legend text: {e}"))?;
+            Ok(i32::try_from(w).unwrap_or(i32::MAX / 4))
+        };
+        let notes = self.note_lines(area);
+        let mut width = 0;
+        for note in &notes {
+            width = width.max(width_of(note, &note_style())?);
+        }
+        for entry in &self.entries {
+            width = width.max(SAMPLE_WIDTH + 6 + width_of(&entry.label, &text_style())?);
+        }
+        let lines = i32::try_from(notes.len() + self.entries.len()).unwrap_or(0);
+        Ok((width + 2 * PADDING, lines * LINE_HEIGHT + 2 * PADDING - 4))
+    }
+
+    /// Draws the legend with its top-left corner at `top_left` (backend pixels).
+    pub(crate) fn draw<DB: DrawingBackend>(
+        &self,
+        area: &DrawingArea<DB, Shift>,
+        top_left: Pixel,
+        size: (i32, i32),
+    ) -> Result<()>
+    where
+        DB::ErrorType: 'static,
+    {
+        let error = |e: DrawingAreaErrorKind<DB::ErrorType>| anyhow!("legend drawing failed: {e}");
+        let base = area.get_base_pixel();
+        let at = |x: i32, y: i32| (x - base.0, y - base.1);
+        let (x0, y0) = top_left;
+        area.draw(&Rectangle::new(
+            [at(x0, y0), at(x0 + size.0, y0 + size.1)],
+            WHITE.filled(),
+        ))
+        .map_err(error)?;
+        area.draw(&Rectangle::new(
+            [at(x0, y0), at(x0 + size.0, y0 + size.1)],
+            RGBColor(170, 170, 170).stroke_width(1),
+        ))
+        .map_err(error)?;
+        let mut y = y0 + PADDING;
+        for note in &self.note_lines(area) {
+            area.draw(&Text::new(note.clone(), at(x0 + PADDING, y), note_style()))
+                .map_err(error)?;
+            y += LINE_HEIGHT;
+        }
+        for entry in &self.entries {
+            let middle = y + LINE_HEIGHT / 2 - 2;
+            let left = x0 + PADDING;
+            let right = left + SAMPLE_WIDTH;
+            match entry.sample {
+                Sample::Line {
+                    colour,
+                    width,
+                    dash,
+                } => {
+                    let style = colour.stroke_width(width);
+                    let ends = vec![at(left, middle), at(right, middle)];
+                    match dash {
+                        Some((dash, gap)) => area
+                            .draw(&DashedPathElement::new(ends, dash, gap, style))
+                            .map_err(error)?,
+                        None => area.draw(&PathElement::new(ends, style)).map_err(error)?,
+                    }
+                }
+                Sample::Marker {
+                    colour,
+                    opacity,
+                    shape,
+                    size,
+                } => {
+                    let centre = at((left + right) / 2, middle);
+                    draw_marker(area, centre, shape, colour.mix(opacity), size).map_err(error)?;
+                }
+                Sample::Patch { colour, opacity } => {
+                    let corners = [at(left + 3, middle - 6), at(right - 3, middle + 6)];
+                    area.draw(&Rectangle::new(corners, colour.mix(opacity).filled()))
+                        .map_err(error)?;
+                    area.draw(&Rectangle::new(corners, colour.stroke_width(1)))
+                        .map_err(error)?;
+                }
+                Sample::Interval { colour } => {
+                    let x = (left + right) / 2;
+                    let style = colour.stroke_width(2);
+                    for path in [
+                        vec![at(x, middle - 7), at(x, middle + 7)],
+                        vec![at(x - 5, middle - 7), at(x + 5, middle - 7)],
+                        vec![at(x - 5, middle + 7), at(x + 5, middle + 7)],
+                    ] {
+                        area.draw(&PathElement::new(path, style)).map_err(error)?;
+                    }
+                }
+            }
+            area.draw(&Text::new(
+                entry.label.clone(),
+                at(right + 6, y),
+                text_style(),
+            ))
+            .map_err(error)?;
+            y += LINE_HEIGHT;
+        }
+        Ok(())
+    }
+}
+
+/// Draws one marker centred on `centre` (area-relative pixels).
+pub(crate) fn draw_marker<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    centre: Pixel,
+    shape: MarkerShape,
+    colour: RGBAColor,
+    size: u32,
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
+    let s = i32::try_from(size).unwrap_or(4);
+    let (x, y) = centre;
+    match shape {
+        MarkerShape::Circle => area.draw(&Circle::new(centre, size, colour.filled())),
+        MarkerShape::Triangle => area.draw(&Polygon::new(
+            vec![(x, y - s), (x - s, y + s * 3 / 4), (x + s, y + s * 3 / 4)],
+            colour.filled(),
+        )),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn area() -> PixelRect {
+        PixelRect {
+            left: 100,
+            top: 50,
+            right: 900,
+            bottom: 350,
+        }
+    }
+
+    #[test]
+    fn an_empty_area_takes_the_legend_upper_right() {
+        let grid = Occupancy::new(area());
+        assert_eq!(
+            grid.free_place((200, 80)),
+            Some((900 - CLEARANCE - 200, 54))
+        );
+    }
+
+    #[test]
+    fn the_legend_moves_away_from_data_in_the_upper_right() {
+        let mut grid = Occupancy::new(area());
+        // A line across the upper right quarter.
+        grid.mark_segment((500, 60), (900, 60), 2);
+        grid.mark_segment((600, 50), (600, 200), 2);
+        // The upper right is taken: the next corner in order of preference is upper left.
+        assert_eq!(grid.free_place((200, 80)), Some((100 + CLEARANCE, 54)));
+        // With the upper half full, a lower corner.
+        grid.mark_rect(PixelRect::at((100, 50), (800, 150)));
+        assert_eq!(
+            grid.free_place((200, 80)),
+            Some((696, 350 - CLEARANCE - 80))
+        );
+    }
+
+    #[test]
+    fn a_full_area_has_no_place() {
+        let mut grid = Occupancy::new(area());
+        grid.mark_rect(area());
+        assert_eq!(grid.free_place((50, 20)), None);
+        let small = Occupancy::new(area());
+        assert_eq!(small.free_place((1000, 20)), None);
+    }
+
+    #[test]
+    fn one_entry_per_label() {
+        let mut legend = Legend::default();
+        let sample = Sample::Line {
+            colour: BLACK,
+            width: 1,
+            dash: Some((8, 5)),
+        };
+        legend.push("±2 % band", sample);
+        legend.push("±2 % band", sample);
+        assert_eq!(legend.entries.len(), 1);
+        assert!(!legend.is_shown());
+    }
+}

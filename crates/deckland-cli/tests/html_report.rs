@@ -1,0 +1,207 @@
+//! `report.html` of `land` and `campaign`, opened from the file system in headless
+//! Chromium: the rendered page holds the numbers of `summary.json` and the plots, and uses
+//! nothing from outside the file.
+//!
+//! Needs Chromium (`bash .ci/install-system-packages` installs Debian's); outside CI,
+//! `DECKLAND_SKIP_BROWSER_TESTS=1` skips these tests on a machine without it.
+
+#![allow(clippy::unwrap_used)] // tests fail loudly by design
+
+mod common;
+
+use common::{chromium, deckland, has_non_finite, headless_chromium, page_text, scratch};
+use serde_json::Value;
+use std::path::Path;
+
+/// Width and height of the screenshots (px).
+const WINDOW: (u32, u32) = (1200, 4000);
+
+/// The first colour of the plots' palette (the first line of every plot).
+const FIRST_LINE_COLOUR: [u8; 3] = [0, 114, 178];
+
+/// Checks what every report.html must be: one file, nothing from outside, nothing
+/// non-finite, the plots inline as SVG with a generic font family only.
+fn assert_self_contained(html: &str, plots: usize) {
+    for external in [
+        "<script",
+        "<link",
+        "@import",
+        "url(http",
+        "src=\"http",
+        "href=\"http",
+    ] {
+        assert!(!html.contains(external), "report.html uses `{external}`");
+    }
+    assert!(
+        !has_non_finite(html),
+        "report.html holds a non-finite number"
+    );
+    assert!(
+        html.matches("<svg").count() >= plots,
+        "report.html shows fewer than {plots} plots"
+    );
+    for family in html.split("font-family=\"").skip(1) {
+        let name = family.split('"').next().unwrap();
+        assert_eq!(name, "sans-serif", "an SVG names the font `{name}`");
+    }
+}
+
+/// Renders `page` in headless Chromium: its text after rendering, and a screenshot that
+/// must show the plots (pixels of the first line colour) on a page that is not blank.
+fn render(chromium: &Path, page: &Path) -> String {
+    let dom = headless_chromium(chromium, page, &["--dump-dom"]);
+    assert!(dom.contains("</html>"), "no rendered DOM: {dom}");
+    let shot = page.with_file_name("screenshot.png");
+    headless_chromium(
+        chromium,
+        page,
+        &[
+            &format!("--screenshot={}", shot.display()),
+            &format!("--window-size={},{}", WINDOW.0, WINDOW.1),
+            "--hide-scrollbars",
+        ],
+    );
+    let image = image::open(&shot).unwrap().to_rgb8();
+    assert_eq!(image.dimensions(), WINDOW);
+    let line_pixels = image
+        .pixels()
+        .filter(|p| {
+            p.0.iter()
+                .zip(FIRST_LINE_COLOUR)
+                .all(|(a, b)| a.abs_diff(b) <= 8)
+        })
+        .count();
+    assert!(
+        line_pixels > 200,
+        "the screenshot shows no plot ({line_pixels} pixels of the first line colour)"
+    );
+    let white = image.pixels().filter(|p| p.0 == [255, 255, 255]).count();
+    assert!(
+        white < image.pixels().count() * 99 / 100,
+        "the screenshot is blank"
+    );
+    page_text(&dom)
+}
+
+#[test]
+fn land_report_html_renders_the_summary_numbers_in_a_browser() {
+    let Some(chromium) = chromium() else { return };
+    let dir = scratch("html-land");
+    let output = deckland(["land", "--out", dir.to_str().unwrap()]);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let page = dir.join("report.html");
+    let html = std::fs::read_to_string(&page).unwrap();
+    assert_self_contained(&html, 7);
+    let text = render(&chromium, &page);
+
+    let summary: Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let number = |v: &Value| v.as_f64().unwrap();
+    let mut expected = vec![
+        format!("outcome {}", summary["outcome"].as_str().unwrap()),
+        format!("wire {}", summary["wire"]),
+        format!("seed {}", summary["seed"]),
+    ];
+    let touchdown = &summary["touchdown"];
+    for (name, field, unit) in [
+        ("touchdown time", "time_s", "s"),
+        ("sink rate relative to the deck", "sink_rate_mps", "m/s"),
+        ("pitch at touchdown", "pitch_deg", "deg"),
+        ("airspeed at touchdown", "airspeed_mps", "m/s"),
+    ] {
+        expected.push(format!("{name} {:.2} {unit}", number(&touchdown[field])));
+    }
+    expected.push(format!(
+        "touchdown from the aim point (positive forward) {:+.2} m",
+        number(&touchdown["distance_from_aim_m"])
+    ));
+    for (name, field) in [
+        ("hook over the ramp", "ramp_clearance_m"),
+        ("glide-path error, RMS", "glide_path_error_rms_m"),
+        ("glide-path error, maximum", "glide_path_error_max_m"),
+    ] {
+        expected.push(format!("{name} {:.2} m", number(&summary[field])));
+    }
+    expected.push(format!("integration steps {}", summary["steps"]));
+    for row in expected {
+        assert!(text.contains(&row), "the page does not show `{row}`");
+    }
+    // The scenario flown, verbatim.
+    assert!(text.contains("[control.guidance]") && text.contains("seed = 1"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn campaign_report_html_shows_the_outcomes_with_their_intervals() {
+    let Some(chromium) = chromium() else { return };
+    let dir = scratch("html-campaign");
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("short.toml");
+    std::fs::write(
+        &file,
+        "[approach]\nstart_range_m = 500.0\n\n[dispersion]\nstart_height_offset_sd_m = 1.0\n\
+         wind_over_deck_sd_mps = 2.0\n",
+    )
+    .unwrap();
+    let out = dir.join("out");
+    let output = deckland([
+        "campaign",
+        file.to_str().unwrap(),
+        "--runs",
+        "12",
+        "--compare",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let page = out.join("report.html");
+    let html = std::fs::read_to_string(&page).unwrap();
+    assert_self_contained(&html, 3);
+    let text = render(&chromium, &page);
+
+    let summary: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let controllers = summary["controllers"].as_array().unwrap();
+    assert_eq!(controllers.len(), 2);
+    for (class, name) in [
+        ("boarding", "boarding (trap)"),
+        ("bolter", "bolter"),
+        ("ramp_strike", "ramp strike"),
+        ("hard_landing", "hard landing"),
+    ] {
+        // One row per class: each controller's count, rate and interval, in order.
+        let cells: Vec<String> = controllers
+            .iter()
+            .map(|c| {
+                let p = &c[class];
+                format!(
+                    "{} {:.1} % [{:.1}, {:.1}] %",
+                    p["count"],
+                    100.0 * p["rate"].as_f64().unwrap(),
+                    100.0 * p["ci95_low"].as_f64().unwrap(),
+                    100.0 * p["ci95_high"].as_f64().unwrap()
+                )
+            })
+            .collect();
+        let row = format!("{name} {}", cells.join(" "));
+        assert!(text.contains(&row), "the page does not show `{row}`");
+    }
+    let sink = &controllers[0]["touchdown_sink_rate_mps"];
+    let row = format!(
+        "O-PD {} {:.2} {:.2}",
+        sink["count"],
+        sink["mean"].as_f64().unwrap(),
+        sink["standard_deviation"].as_f64().unwrap()
+    );
+    assert!(text.contains(&row), "the page does not show `{row}`");
+    assert!(text.contains("12 runs per controller"), "title: {text}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
