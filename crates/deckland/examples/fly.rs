@@ -18,7 +18,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 PitchControllerParameters::Pid(PidParameters::default()),
             ),
         ] {
-            for mission in [Mission::Approach, Mission::pitch_step(2.0, 6.0)] {
+            for mission in [
+                Mission::Approach,
+                Mission::pitch_step(2.0, 6.0, base.hardware.pitch_command()),
+            ] {
                 let mut scenario = base;
                 scenario.control.pitch = pitch;
                 scenario.mission = mission;

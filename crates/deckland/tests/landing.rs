@@ -181,10 +181,13 @@ fn invalid_scenarios_are_rejected_with_the_field_named() {
 /// 0.001·sin(7t) at every recorded step (docs/model.md §3.3).
 #[test]
 fn regression_sensor_sinusoid_is_added_once() {
-    let mut scenario = Scenario::default().ideal();
+    // The paper's set reads the sensor at every step (the realistic computer holds one
+    // sample over each 12.5-ms frame).
+    let mut scenario = Scenario::paper().ideal();
     scenario.environment.pitch_noise.enabled = true;
     scenario.environment.pitch_noise.white_noise_sigma_rad = 0.0;
-    scenario.mission = deckland::scenario::Mission::pitch_step(1.0, 2.0);
+    scenario.mission =
+        deckland::scenario::Mission::pitch_step(1.0, 2.0, deckland::scenario::PitchCommand::Step);
     let mut recorder = TimeSeriesRecorder::every(0.0);
     Simulation::new(&scenario).unwrap().run(&mut recorder);
     assert!(recorder.samples.len() > 1000);

@@ -66,7 +66,10 @@ impl PitchLoop {
     fn inputs(&self, t: f64, x: &[f64; 7], elevator: f64) -> PitchLawInputs {
         PitchLawInputs {
             theta_ref_rad: THETA_TRIM + if t >= STEP_TIME { self.step_rad } else { 0.0 },
+            theta_ref_rate_radps: 0.0,
+            theta_ref_acceleration_radps2: 0.0,
             theta_measured_rad: x[0],
+            measurement_age_s: 0.0,
             pitch_rate_measured_radps: x[1],
             elevator_actual_rad: elevator.clamp(self.limits.lower, self.limits.upper),
             theta_trim_rad: THETA_TRIM,
@@ -218,14 +221,18 @@ fn build(parameters: PitchControllerParameters) -> BuiltPitchLaw {
     parameters.build(&context).expect("valid")
 }
 
+/// The paper's O-PD design (T_2% = 0.3 s, ζ = √2), which these tests validate.
 fn observer_pd() -> BuiltPitchLaw {
-    build(PitchControllerParameters::default())
+    build(PitchControllerParameters::ObserverPd(
+        ObserverPdParameters::paper(),
+    ))
 }
 
+/// The paper's PID gains.
 fn pid(anti_windup: bool) -> BuiltPitchLaw {
     let parameters = PidParameters {
         anti_windup,
-        ..PidParameters::default()
+        ..PidParameters::paper()
     };
     build(PitchControllerParameters::Pid(parameters))
 }
@@ -293,11 +300,11 @@ fn paper_gains_ring_with_the_paper_actuator_and_a_slower_design_does_not() {
         };
         metrics(&simulate(&system, 8.0), step)
     };
-    let paper = settle(ObserverPdParameters::default());
+    let paper = settle(ObserverPdParameters::paper());
     let damped = settle(ObserverPdParameters {
         settling_time_s: 0.5,
         damping_ratio: 1.0,
-        ..ObserverPdParameters::default()
+        ..ObserverPdParameters::paper()
     });
     println!("O-PD, paper actuator: paper gains {paper:?}\nT = 0.5 s, ζ = 1: {damped:?}");
     let ringing = paper.settling_time_s.expect("settles eventually");

@@ -19,10 +19,42 @@ fn load_shipped(name: &str) -> Scenario {
 }
 
 #[test]
-fn paper_adverse_is_the_commented_default() {
-    let text = std::fs::read_to_string(scenarios_folder().join("paper-adverse.toml")).unwrap();
-    assert_eq!(text, DEFAULT_SCENARIO_TOML);
-    assert_eq!(load_shipped("paper-adverse.toml"), Scenario::default());
+fn paper_adverse_is_the_papers_scenario_and_the_template_the_realistic_default() {
+    assert_eq!(load_shipped("paper-adverse.toml"), Scenario::paper());
+    assert_eq!(
+        load_scenario(DEFAULT_SCENARIO_TOML, "default").unwrap(),
+        Scenario::default()
+    );
+}
+
+/// A file on the paper's hardware that leaves everything else out is the paper's
+/// scenario; one that sets a key keeps it; the realistic set is the default.
+#[test]
+fn keys_left_out_take_the_values_of_the_files_hardware_set() {
+    let paper = load_scenario("hardware = \"paper\"\n", "p.toml").unwrap();
+    assert_eq!(paper, Scenario::paper());
+    let limited = load_scenario(
+        "hardware = \"paper\"\n[aircraft.elevator_actuator]\nrate_limit_degps = 60.0\n",
+        "p.toml",
+    )
+    .unwrap();
+    assert_eq!(
+        limited.aircraft.elevator_actuator.rate_limit_degps,
+        Some(60.0)
+    );
+    assert_eq!(limited.control.flight_computer_rate_hz, None);
+    let pid = load_scenario(
+        "hardware = \"paper\"\n[control.pitch]\ntype = \"pid\"\nintegral_per_s3 = 7.0\n",
+        "p.toml",
+    )
+    .unwrap();
+    let deckland::control::pitch::PitchControllerParameters::Pid(gains) = pid.control.pitch else {
+        panic!("{:?}", pid.control.pitch);
+    };
+    // The paper's PID gains for what is left out, the file's for what it sets.
+    assert_eq!(gains.proportional_per_s2, 57.01);
+    assert_eq!(gains.integral_per_s3, 7.0);
+    assert_eq!(load_scenario("", "r.toml").unwrap(), Scenario::default());
 }
 
 #[test]

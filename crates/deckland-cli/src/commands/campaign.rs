@@ -91,6 +91,11 @@ struct Row<'a> {
     glide_path_error_rms_m: Option<f64>,
     glide_path_error_max_m: Option<f64>,
     end_time_s: Option<f64>,
+    elevator_rate_rms_degps: Option<f64>,
+    time_on_rate_limit_pct: Option<f64>,
+    time_on_stops_pct: Option<f64>,
+    elevator_travel_deg: Option<f64>,
+    thrust_rate_rms_knps: Option<f64>,
     start_height_offset_dispersion_m: f64,
     airspeed_dispersion_mps: f64,
     sea_state_scale: f64,
@@ -116,6 +121,11 @@ impl<'a> Row<'a> {
             glide_path_error_rms_m: summary.and_then(|s| s.glide_path_error_rms_m),
             glide_path_error_max_m: summary.and_then(|s| s.glide_path_error_max_m),
             end_time_s: summary.map(|s| s.end_time_s),
+            elevator_rate_rms_degps: summary.map(|s| s.actuator.elevator_rate_rms_degps),
+            time_on_rate_limit_pct: summary.map(|s| s.actuator.time_on_rate_limit_pct),
+            time_on_stops_pct: summary.map(|s| s.actuator.time_on_stops_pct),
+            elevator_travel_deg: summary.map(|s| s.actuator.elevator_travel_deg),
+            thrust_rate_rms_knps: summary.map(|s| s.actuator.thrust_rate_rms_knps),
             start_height_offset_dispersion_m: record.dispersion.start_height_offset_m,
             airspeed_dispersion_mps: record.dispersion.airspeed_error_mps,
             sea_state_scale: record.dispersion.sea_state_scale,
@@ -500,9 +510,13 @@ fn print_table(report: &CampaignReport, output: &OutputDir) {
         print!("{:>width$}", format!("{}/{}/{}/{}", w[0], w[1], w[2], w[3]));
     }
     println!();
-    let distribution_rows: [(&str, DistributionOf); 2] = [
+    let distribution_rows: [(&str, DistributionOf); 6] = [
         ("touchdown from aim (m)", |s| s.touchdown_distance_m),
         ("touchdown sink rate (m/s)", |s| s.touchdown_sink_rate_mps),
+        ("elevator rate RMS (deg/s)", |s| s.elevator_rate_rms_degps),
+        ("on the rate limit (% of run)", |s| s.time_on_rate_limit_pct),
+        ("on the stops (% of run)", |s| s.time_on_stops_pct),
+        ("thrust rate RMS (kN/s)", |s| s.thrust_rate_rms_knps),
     ];
     for (name, get) in distribution_rows {
         for (line, part) in [": mean ± sd", "  p5 / p50 / p95"].iter().enumerate() {

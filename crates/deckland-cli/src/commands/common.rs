@@ -2,25 +2,57 @@
 //! scenario files (`run`, `campaign`).
 
 use clap::ValueEnum;
-use deckland::control::pitch::{PidParameters, PitchControllerParameters};
-use deckland::scenario::Scenario;
+use deckland::control::pitch::{ObserverPdParameters, PidParameters, PitchControllerParameters};
+use deckland::scenario::{HardwareSet, Scenario};
+
+/// Which hardware flies (docs/model.md §2.6).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum HardwareChoice {
+    /// A real F/A-18: 40 °/s stabilator, 80 Hz flight computer, controllers designed for it.
+    Realistic,
+    /// What the paper simulated: an ideal actuator and the paper's gains.
+    Paper,
+}
+
+impl HardwareChoice {
+    /// The library's hardware set.
+    pub fn set(self) -> HardwareSet {
+        match self {
+            Self::Realistic => HardwareSet::Realistic,
+            Self::Paper => HardwareSet::Paper,
+        }
+    }
+}
 
 /// Which pitch controller flies.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum ControllerChoice {
     /// Observer-based PD (paper Eq. 30–36).
     Opd,
-    /// PID with the paper's gains (Eq. 37).
+    /// PID (paper Eq. 37).
     Pid,
 }
 
 impl ControllerChoice {
-    /// The controller's parameters with their defaults.
-    pub fn parameters(self) -> PitchControllerParameters {
-        match self {
-            Self::Opd => PitchControllerParameters::default(),
-            Self::Pid => PitchControllerParameters::Pid(PidParameters::default()),
+    /// The controller's parameters: `base`'s own when it flies this controller, else the
+    /// defaults of `base`'s hardware set.
+    pub fn parameters_for(self, base: &Scenario) -> PitchControllerParameters {
+        let paper = base.hardware == HardwareSet::Paper;
+        match (self, base.control.pitch) {
+            (Self::Opd, own @ PitchControllerParameters::ObserverPd(_))
+            | (Self::Pid, own @ PitchControllerParameters::Pid(_)) => own,
+            (Self::Opd, _) if paper => {
+                PitchControllerParameters::ObserverPd(ObserverPdParameters::paper())
+            }
+            (Self::Opd, _) => PitchControllerParameters::default(),
+            (Self::Pid, _) if paper => PitchControllerParameters::Pid(PidParameters::paper()),
+            (Self::Pid, _) => PitchControllerParameters::Pid(PidParameters::default()),
         }
+    }
+
+    /// The controller's parameters on the default scenario of `hardware`.
+    pub fn parameters(self, hardware: HardwareSet) -> PitchControllerParameters {
+        self.parameters_for(&hardware.scenario())
     }
 
     /// Short label for tables, legends and file names.
@@ -50,14 +82,38 @@ impl Conditions {
         }
     }
 
-    /// The default scenario in these conditions, with `seed`.
-    pub fn scenario(self, seed: u64) -> Scenario {
-        self.conditions().apply(Scenario::default(), seed)
+    /// The default scenario of `hardware` in these conditions, with `seed`.
+    pub fn scenario(self, hardware: HardwareSet, seed: u64) -> Scenario {
+        self.conditions().apply(hardware.scenario(), seed)
     }
 
     /// The name as written in files.
     pub fn name(self) -> &'static str {
         self.conditions().name()
+    }
+}
+
+/// The scenario a fixed-length test (`step`, `sink`) flies its mission with: a hardware
+/// set's default, or a scenario file's aircraft, environment and controllers.
+#[derive(Debug, Clone, clap::Args)]
+pub struct BaseScenarioArgs {
+    /// Hardware of the default scenario: `realistic` (40 °/s stabilator, 80 Hz flight
+    /// computer, controllers designed for them) or `paper` (ideal actuator, paper gains).
+    #[arg(long, value_enum, default_value = "realistic")]
+    pub hardware: HardwareChoice,
+    /// Fly a scenario file's aircraft, environment and controllers instead of a default
+    /// scenario (its mission is replaced by this command's; `--hardware` is then unused).
+    #[arg(long, value_name = "FILE", conflicts_with = "hardware")]
+    pub scenario: Option<std::path::PathBuf>,
+}
+
+impl BaseScenarioArgs {
+    /// The scenario file's, or the hardware set's default scenario.
+    pub fn base(&self) -> anyhow::Result<Scenario> {
+        match &self.scenario {
+            Some(path) => load_scenario_file(path),
+            None => Ok(self.hardware.set().scenario()),
+        }
     }
 }
 

@@ -5,7 +5,7 @@
 //! altitude against the glide path and the deck, the glide-path error (paper Fig. 14),
 //! pitch and pitch command (Fig. 15), elevator and thrust, airspeed, and the wind seen.
 
-use super::common::{Conditions, ControllerChoice, OutputArgs};
+use super::common::{Conditions, ControllerChoice, HardwareChoice, OutputArgs};
 use crate::html;
 use crate::output::OutputDir;
 use crate::plot::{Figure, MarkerShape, Panel, DECK_COLOUR};
@@ -26,6 +26,10 @@ pub struct LandArgs {
     /// `ideal` (none).
     #[arg(long, value_enum, default_value = "adverse")]
     pub conditions: Conditions,
+    /// Hardware: `realistic` (40 °/s stabilator, 80 Hz flight computer, controllers
+    /// designed for them) or `paper` (the paper's ideal actuator and gains).
+    #[arg(long, value_enum, default_value = "realistic")]
+    pub hardware: HardwareChoice,
     /// Seed of every random stream.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
@@ -567,13 +571,28 @@ fn print_summary(report: &LandingReport, output: &OutputDir) {
     if let (Some(rms), Some(max)) = (s.glide_path_error_rms_m, s.glide_path_error_max_m) {
         println!("  glide-path error      RMS {rms:.2} m, max {max:.2} m");
     }
+    let a = &s.actuator;
+    println!(
+        "  elevator              rate RMS {:.1}°/s, on the rate limit {:.2} s ({:.1} %), \
+         on the stops {:.2} s ({:.1} %), travel {:.0}°",
+        a.elevator_rate_rms_degps,
+        a.time_on_rate_limit_s,
+        a.time_on_rate_limit_pct,
+        a.time_on_stops_s,
+        a.time_on_stops_pct,
+        a.elevator_travel_deg
+    );
+    println!(
+        "  thrust rate           RMS {:.1} kN/s",
+        a.thrust_rate_rms_knps
+    );
     println!("  results in            {}", output.path().display());
 }
 
 /// Runs `deckland land`.
 pub fn run(args: &LandArgs) -> Result<()> {
-    let mut scenario = args.conditions.scenario(args.seed);
-    scenario.control.pitch = args.controller.parameters();
+    let mut scenario = args.conditions.scenario(args.hardware.set(), args.seed);
+    scenario.control.pitch = args.controller.parameters_for(&scenario);
     if args.no_deck_compensation {
         scenario.control.flight_path.deck_motion_compensation = false;
     }

@@ -5,7 +5,7 @@
 //! convergence time is the 2 % settling time of the sink rate towards the command,
 //! measured from the command (definitions in `deckland::metrics`).
 
-use super::common::{Conditions, ControllerChoice, OutputArgs};
+use super::common::{BaseScenarioArgs, Conditions, ControllerChoice, OutputArgs};
 use crate::output::OutputDir;
 use crate::plot::{Figure, Panel};
 use anyhow::{bail, Context, Result};
@@ -14,6 +14,7 @@ use deckland::experiments::{
     fly_sink_rate, SinkRateSample as Row, SinkRateTracking, SINK_COMMAND_TIME_S as COMMAND_TIME_S,
 };
 use deckland::metrics::StepResponseMetrics;
+use deckland::scenario::Scenario;
 use serde::Serialize;
 
 /// Options of `deckland sink`.
@@ -43,6 +44,9 @@ pub struct SinkArgs {
     /// Seed of every random stream.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
+    /// The hardware set, or a scenario file, to fly the command with.
+    #[command(flatten)]
+    pub base: BaseScenarioArgs,
     /// Output folder, overwriting and JSON printing.
     #[command(flatten)]
     pub output: OutputArgs,
@@ -87,18 +91,25 @@ pub(crate) fn fly(args: &SinkArgs) -> Result<SinkRun> {
         ramp_s: args.ramp_s,
         seconds: args.seconds,
     };
-    fly_tracking(args.controller, args.conditions, args.seed, &tracking)
+    fly_tracking(
+        &args.base.base()?,
+        args.controller,
+        args.conditions,
+        args.seed,
+        &tracking,
+    )
 }
 
-/// Flies `tracking` with `controller` in `conditions` and measures it.
+/// Flies `tracking` on `base` with `controller` in `conditions` and measures it.
 pub(crate) fn fly_tracking(
+    base: &Scenario,
     controller: ControllerChoice,
     conditions: Conditions,
     seed: u64,
     tracking: &SinkRateTracking,
 ) -> Result<SinkRun> {
-    let mut scenario = conditions.scenario(seed);
-    scenario.control.pitch = controller.parameters();
+    let mut scenario = conditions.conditions().apply(*base, seed);
+    scenario.control.pitch = controller.parameters_for(base);
     let run = fly_sink_rate(&scenario, tracking).context("cannot set up the sink-rate run")?;
     let summary = run.summary;
     let report = SinkReport {

@@ -15,7 +15,7 @@ use deckland::scenario::Scenario;
 use deckland::simulation::Signals;
 use serde::Serialize;
 
-use super::common::{Conditions, ControllerChoice, OutputArgs};
+use super::common::{BaseScenarioArgs, Conditions, ControllerChoice, OutputArgs};
 use super::land::signed;
 use crate::output::OutputDir;
 use crate::plot::{Figure, Panel};
@@ -72,9 +72,12 @@ pub struct StepArgs {
     /// Scenario seed of the random streams (matters in adverse conditions).
     #[arg(long, default_value_t = 1)]
     pub(crate) seed: u64,
-    /// O-PD observer bandwidth parameter ε in (0, 1) (default: the library's).
+    /// O-PD observer bandwidth parameter ε in (0, 1) (default: the hardware set's).
     #[arg(long, allow_negative_numbers = true)]
     pub(crate) epsilon: Option<f64>,
+    /// The hardware set, or a scenario file, to fly the step with.
+    #[command(flatten)]
+    pub base: BaseScenarioArgs,
     /// Output folder, overwriting and JSON printing.
     #[command(flatten)]
     pub output: OutputArgs,
@@ -94,6 +97,8 @@ struct StepReport {
     airspeed_mps: f64,
     settling_band_pct: f64,
     epsilon: f64,
+    /// The stabilator rate limit in force (deg/s); null when there is none.
+    elevator_rate_limit_degps: Option<f64>,
     controllers: Vec<ControllerResult>,
     output_folder: String,
 }
@@ -130,12 +135,13 @@ fn check_arguments(args: &StepArgs) -> Result<()> {
     Ok(())
 }
 
-/// The controller's parameters, with `--epsilon` applied to the O-PD observer.
+/// The controller's parameters on `base`, with `--epsilon` applied to the O-PD observer.
 fn controller_parameters(
+    base: &Scenario,
     choice: ControllerChoice,
     epsilon: Option<f64>,
 ) -> PitchControllerParameters {
-    let mut parameters = choice.parameters();
+    let mut parameters = choice.parameters_for(base);
     if let (PitchControllerParameters::ObserverPd(opd), Some(epsilon)) = (&mut parameters, epsilon)
     {
         opd.observer.epsilon = epsilon;
@@ -146,6 +152,8 @@ fn controller_parameters(
 /// What a set of step runs flew, for the figures' titles and reference lines.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct StepFlight {
+    /// The scenario the step is flown on (hardware set or file), before the conditions.
+    pub(crate) base: Scenario,
     /// Ideal or adverse.
     pub(crate) conditions: Conditions,
     /// Seed of the random streams.
@@ -157,19 +165,20 @@ pub(crate) struct StepFlight {
 }
 
 impl StepFlight {
-    fn of(args: &StepArgs) -> Self {
-        Self {
+    fn of(args: &StepArgs) -> Result<Self> {
+        Ok(Self {
+            base: args.base.base()?,
             conditions: args.conditions,
             seed: args.seed,
             step: PitchStep::new(args.step_deg, args.seconds),
             epsilon: args.epsilon,
-        }
+        })
     }
 
     /// The scenario flown with `choice`.
     fn scenario(&self, choice: ControllerChoice) -> Scenario {
-        let mut scenario = self.conditions.scenario(self.seed);
-        scenario.control.pitch = controller_parameters(choice, self.epsilon);
+        let mut scenario = self.conditions.conditions().apply(self.base, self.seed);
+        scenario.control.pitch = controller_parameters(&self.base, choice, self.epsilon);
         scenario
     }
 
@@ -411,6 +420,18 @@ fn print_table(report: &StepReport, written: &[PathBuf]) {
     row("elevator total travel", &|c| {
         format!("{:.0} °", c.elevator_total_variation_deg)
     });
+    row("elevator rate RMS", &|c| {
+        format!("{:.1} °/s", c.actuator.elevator_rate_rms_degps)
+    });
+    row("time on the rate limit", &|c| {
+        format!(
+            "{:.3} s ({:.1} %)",
+            c.actuator.time_on_rate_limit_s, c.actuator.time_on_rate_limit_pct
+        )
+    });
+    row("thrust rate RMS", &|c| {
+        format!("{:.1} kN/s", c.actuator.thrust_rate_rms_knps)
+    });
     for c in &report.controllers {
         if let Some(reason) = &c.not_settled_reason {
             println!("  {} did not settle: {reason}", c.controller);
@@ -431,12 +452,12 @@ fn print_table(report: &StepReport, written: &[PathBuf]) {
 /// Runs the command.
 pub fn run(args: &StepArgs) -> Result<()> {
     check_arguments(args)?;
-    let epsilon = match controller_parameters(ControllerChoice::Opd, args.epsilon) {
+    let flight = StepFlight::of(args)?;
+    let epsilon = match controller_parameters(&flight.base, ControllerChoice::Opd, args.epsilon) {
         PitchControllerParameters::ObserverPd(opd) => opd.observer.epsilon,
         PitchControllerParameters::Pid(_) => f64::NAN,
     };
     let output = OutputDir::prepare("step", args.output.out.as_deref(), args.output.force)?;
-    let flight = StepFlight::of(args);
     let runs = flight.fly(&args.controller.choices())?;
 
     let mut written = vec![output.write_bytes("step.csv", &csv_bytes(&runs)?)?];
@@ -449,9 +470,10 @@ pub fn run(args: &StepArgs) -> Result<()> {
         seed: args.seed,
         seconds: args.seconds,
         step_time_s: STEP_TIME_S,
-        airspeed_mps: args.conditions.scenario(args.seed).approach.airspeed_mps,
+        airspeed_mps: flight.base.approach.airspeed_mps,
         settling_band_pct: SETTLING_BAND_FRACTION * 100.0,
         epsilon,
+        elevator_rate_limit_degps: flight.base.aircraft.elevator_actuator.rate_limit_degps,
         controllers: runs.into_iter().map(|r| r.result).collect(),
         output_folder: output.path().display().to_string(),
     };

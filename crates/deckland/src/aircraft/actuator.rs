@@ -6,8 +6,8 @@
 //!    them);
 //! 2. the second-order dynamics δ̈ = ω_n²(δ_c − δ) − 2ζω_n·δ̇ (ω_n = 30.74 rad/s,
 //!    ζ = 0.509);
-//! 3. the rate limit, if set, clamps δ̇ (F/A-18 stabilator ≈ 40°/s; off by default to
-//!    match the paper);
+//! 3. the rate limit, if set, clamps δ̇ (F/A-18 stabilator 40°/s, the realistic default;
+//!    none in the paper's set);
 //! 4. the position limits act on the actuator's *position*: at a limit, motion further
 //!    out is stopped (rate and acceleration outward set to zero), and after each step
 //!    the position is clamped ([`ElevatorActuator::constrain`]).
@@ -27,7 +27,9 @@ pub struct ElevatorActuatorParameters {
     pub min_deflection_deg: f64,
     /// Highest deflection (deg, trailing edge down); +10° (paper §2.2.1.2).
     pub max_deflection_deg: f64,
-    /// Optional rate limit (deg/s); `None` (off) by default, as in the paper.
+    /// Rate limit (deg/s): 40 °/s for the F/A-18 stabilator (the actuator model of the
+    /// NASA F/A-18 HARV simulation, Messina et al., NASA TM-110216, 1996); `None` is the
+    /// paper's ideal actuator (docs/model.md §2.6).
     pub rate_limit_degps: Option<f64>,
 }
 
@@ -38,7 +40,7 @@ impl Default for ElevatorActuatorParameters {
             damping_ratio: 0.509,
             min_deflection_deg: -25.0,
             max_deflection_deg: 10.0,
-            rate_limit_degps: None,
+            rate_limit_degps: Some(40.0),
         }
     }
 }

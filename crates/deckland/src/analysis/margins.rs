@@ -20,7 +20,10 @@
 //!
 //! The finite-time observer's |e|^α terms have no derivative at e = 0, so the analysis
 //! replaces the O-PD observer by its linear limit (α1 → 1, same k1, k2, k3, ε): the
-//! linear extended-state observer of the same bandwidth.
+//! linear extended-state observer of the same bandwidth. A flight-control computer that
+//! holds its commands over frames of T seconds enters as the zero-order hold's delay
+//! T/2 (a factor e^(−jωT/2) on every loop, each of which passes through one held
+//! command); the closed-loop eigenvalues leave it out.
 
 use crate::control::pitch::PitchControllerParameters;
 use crate::scenario::Scenario;
@@ -210,6 +213,13 @@ fn margins_from_response(cut: LoopBreak, omegas: &[f64], gains: &[Complex<f64>])
 pub fn cascade_margins(scenario: &Scenario) -> Result<Vec<LoopMargins>, SetupError> {
     let mut linear = scenario.ideal();
     linear.mission = crate::scenario::Mission::Approach;
+    // The flight computer's zero-order hold enters as its equivalent delay of half a
+    // frame: the linearisation needs the commands to follow the state continuously.
+    let hold_delay_s = linear
+        .control
+        .flight_computer_rate_hz
+        .map_or(0.0, |rate| 0.5 / rate);
+    linear.control.flight_computer_rate_hz = None;
     if let PitchControllerParameters::ObserverPd(p) = &mut linear.control.pitch {
         p.observer.alpha1 = 1.0 - 1e-9;
     }
@@ -229,7 +239,10 @@ pub fn cascade_margins(scenario: &Scenario) -> Result<Vec<LoopMargins>, SetupErr
         (LoopBreak::ThrustCommand, nominal.thrust_command_n),
     ] {
         let model = linearise(system, &held, x0, cut, u0);
-        let gains: Vec<Complex<f64>> = omegas.iter().map(|&w| model.loop_gain(w)).collect();
+        let gains: Vec<Complex<f64>> = omegas
+            .iter()
+            .map(|&w| model.loop_gain(w) * Complex::from_polar(1.0, -w * hold_delay_s))
+            .collect();
         let mut margins = margins_from_response(cut, &omegas, &gains);
         margins.closed_loop_max_real_part = model.closed_loop_max_real_part();
         all.push(margins);

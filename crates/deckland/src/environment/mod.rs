@@ -26,7 +26,7 @@ pub use ship_simulator::ShipMotionSimulator;
 pub use turbulence::Turbulence;
 pub use wind::{
     mean_wind, periodic_wake, steady_wake, Wind, WindComponents, WindModel, WindParameters,
-    STEADY_WAKE_EXTENT_M,
+    STEADY_WAKE_EXTENT_M, WAKE_TAPER_M,
 };
 
 #[cfg(test)]

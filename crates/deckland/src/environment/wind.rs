@@ -21,6 +21,11 @@ use crate::random::RandomStreams;
 /// Eq. 21–22 (3000 ft).
 pub const STEADY_WAKE_EXTENT_M: f64 = 914.0;
 
+/// Length over which a bounded air wake fades out before its extent (m): long enough that
+/// the aircraft (about 60 m/s over the sea) meets no step gust where the wake ends, short
+/// against the 914-m wake. A project choice (docs/model.md §3.2).
+pub const WAKE_TAPER_M: f64 = 100.0;
+
 /// A wind velocity in earth axes (m/s): x positive forward (headwind negative), z
 /// positive down (docs/model.md §1).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -85,6 +90,11 @@ pub struct WindParameters {
     pub periodic_wake_ship_pitch_rad: f64,
     /// Frequency ω_p of the periodic wake (rad/s); paper §3.4: 1.25.
     pub periodic_wake_frequency_radps: f64,
+    /// How far aft of the ship's pitch centre the air wake (steady and periodic) reaches
+    /// (m); `None` is the paper's literal form (the steady wake to 914 m, the periodic
+    /// wake everywhere), `Some(L)` fades both out over the last [`WAKE_TAPER_M`] before L
+    /// (docs/model.md §3.2; realistic default 914 m, the steady wake's own bound).
+    pub wake_extent_m: Option<f64>,
 }
 
 impl Default for WindParameters {
@@ -100,6 +110,7 @@ impl Default for WindParameters {
             turbulence_scale_m: 30.48,
             periodic_wake_ship_pitch_rad: 0.05,
             periodic_wake_frequency_radps: 1.25,
+            wake_extent_m: Some(STEADY_WAKE_EXTENT_M),
         }
     }
 }
@@ -133,7 +144,39 @@ impl WindParameters {
             "periodic_wake_frequency_radps",
             self.periodic_wake_frequency_radps,
         )?;
+        if let Some(extent) = self.wake_extent_m {
+            Bounds::closed(2.0 * WAKE_TAPER_M, 5000.0).check(SECTION, "wake_extent_m", extent)?;
+        }
         Ok(())
+    }
+
+    /// The paper's literal wake: no bound on the periodic wake.
+    pub fn paper() -> Self {
+        Self {
+            wake_extent_m: None,
+            ..Self::default()
+        }
+    }
+
+    /// The weight (0–1) of the air wake at X = `distance_aft_m` (m, positive aft): 1
+    /// within the wake, fading as cos² over the last [`WAKE_TAPER_M`] before
+    /// `wake_extent_m`, 0 beyond; always 1 with the paper's literal form.
+    #[inline]
+    pub fn wake_weight(&self, distance_aft_m: f64) -> f64 {
+        match self.wake_extent_m {
+            None => 1.0,
+            Some(extent) => {
+                let into_taper = distance_aft_m - (extent - WAKE_TAPER_M);
+                if into_taper <= 0.0 {
+                    1.0
+                } else if into_taper >= WAKE_TAPER_M {
+                    0.0
+                } else {
+                    let c = (0.5 * std::f64::consts::PI * into_taper / WAKE_TAPER_M).cos();
+                    c * c
+                }
+            }
+        }
     }
 }
 
@@ -222,6 +265,11 @@ impl WindModel {
     /// Every component at time `time_s` (s) and X = `distance_aft_m` (m, positive aft).
     pub fn components(&self, time_s: f64, distance_aft_m: f64) -> WindComponents {
         let p = &self.parameters;
+        let wake = p.wake_weight(distance_aft_m);
+        let scaled = |w: Wind| Wind {
+            x_mps: wake * w.x_mps,
+            z_mps: wake * w.z_mps,
+        };
         WindComponents {
             mean: if p.mean_wind {
                 mean_wind(p.wind_over_deck_mps, self.ship_forward_speed_mps)
@@ -229,13 +277,13 @@ impl WindModel {
                 Wind::default()
             },
             turbulence: self.turbulence.wind(),
-            steady_wake: if p.steady_wake {
-                steady_wake(distance_aft_m)
+            steady_wake: if p.steady_wake && wake > 0.0 {
+                scaled(steady_wake(distance_aft_m))
             } else {
                 Wind::default()
             },
-            periodic_wake: if p.periodic_wake {
-                periodic_wake(time_s, distance_aft_m, p)
+            periodic_wake: if p.periodic_wake && wake > 0.0 {
+                scaled(periodic_wake(time_s, distance_aft_m, p))
             } else {
                 Wind::default()
             },

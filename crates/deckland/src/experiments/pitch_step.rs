@@ -7,7 +7,7 @@ use super::ExperimentError;
 use crate::metrics::{actuator_activity, step_response_metrics, total_variation, StepResponseSpec};
 use crate::recording::TimeSeriesRecorder;
 use crate::scenario::{Mission, Scenario};
-use crate::simulation::{Outcome, RunSummary, Signals, Simulation};
+use crate::simulation::{ActuatorActivity, Outcome, RunSummary, Signals, Simulation};
 
 /// Time of the step after the start (s).
 pub const PITCH_STEP_TIME_S: f64 = 1.0;
@@ -20,7 +20,9 @@ pub const SETTLING_BAND_FRACTION: f64 = 0.02;
 const LIMIT_TOLERANCE_DEG: f64 = 1e-6;
 
 /// The step to fly: `step_deg` nose-up at [`PITCH_STEP_TIME_S`], `seconds` of flight,
-/// from level trim 1000 m aft of the ship at 150 m ([`Mission::pitch_step`]).
+/// from level trim 1000 m aft of the ship at 150 m ([`Mission::pitch_step`]), commanded
+/// as the scenario's hardware set commands steps (jerk-limited on the realistic
+/// hardware, a step in the paper's set).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PitchStep {
     /// Step size (deg), positive nose-up.
@@ -70,6 +72,8 @@ pub struct PitchStepResponse {
     pub elevator_total_variation_deg: f64,
     /// How the run ended (`completed`, or `diverged`).
     pub outcome: &'static str,
+    /// What the elevator and the engines did over the whole run.
+    pub actuator: ActuatorActivity,
 }
 
 /// A flown pitch step.
@@ -89,7 +93,11 @@ pub fn fly_pitch_step(
     step: &PitchStep,
 ) -> Result<PitchStepRun, ExperimentError> {
     let mut scenario = *scenario;
-    scenario.mission = Mission::pitch_step(step.step_deg, step.seconds);
+    scenario.mission = Mission::pitch_step(
+        step.step_deg,
+        step.seconds,
+        scenario.hardware.pitch_command(),
+    );
     let label = scenario.control.pitch.label().to_owned();
     let mut recorder = TimeSeriesRecorder::every(step.record_interval_s);
     let summary = Simulation::new(&scenario)?.run(&mut recorder);
@@ -146,6 +154,7 @@ pub fn fly_pitch_step(
                 elevator_saturation_s: saturation_s,
                 elevator_total_variation_deg: total_variation(&elevator_deg)?,
                 outcome: summary.outcome.name(),
+                actuator: summary.actuator,
             }
         }
         // A record that cannot be measured (diverged before the step, non-finite values)
@@ -163,6 +172,7 @@ pub fn fly_pitch_step(
             elevator_saturation_s: saturation_s,
             elevator_total_variation_deg: activity.total_variation,
             outcome: summary.outcome.name(),
+            actuator: summary.actuator,
         },
     };
     Ok(PitchStepRun {

@@ -85,6 +85,7 @@ mod tests {
             ramp_clearance_m: None,
             glide_path_error_rms_m: None,
             glide_path_error_max_m: None,
+            actuator: Default::default(),
         }
     }
 

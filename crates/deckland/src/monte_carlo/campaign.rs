@@ -94,11 +94,18 @@ impl CampaignSpec {
     }
 
     /// The same campaign under O-PD and PID, in that order: the scenario's own controller
-    /// keeps its tuning, the other takes its defaults.
+    /// keeps its tuning, the other takes its defaults in the scenario's hardware set.
     pub fn comparing_pitch_controllers(mut self) -> Self {
+        // The other controller takes the defaults of the scenario's hardware set.
+        let paper = self.scenario.hardware == crate::scenario::HardwareSet::Paper;
+        let (default_opd, default_pid) = if paper {
+            (ObserverPdParameters::paper(), PidParameters::paper())
+        } else {
+            (ObserverPdParameters::default(), PidParameters::default())
+        };
         let (observer_pd, pid) = match self.scenario.control.pitch {
-            PitchControllerParameters::ObserverPd(p) => (p, PidParameters::default()),
-            PitchControllerParameters::Pid(p) => (ObserverPdParameters::default(), p),
+            PitchControllerParameters::ObserverPd(p) => (p, default_pid),
+            PitchControllerParameters::Pid(p) => (default_opd, p),
         };
         self.controllers = [
             PitchControllerParameters::ObserverPd(observer_pd),

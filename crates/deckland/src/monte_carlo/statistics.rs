@@ -152,6 +152,16 @@ pub struct CampaignStatistics {
     pub touchdown_sink_rate_mps: Option<Distribution>,
     /// RMS glide-path error of each flown run (m).
     pub glide_path_error_rms_m: Option<Distribution>,
+    /// Elevator-rate RMS of each flown run (deg/s).
+    pub elevator_rate_rms_degps: Option<Distribution>,
+    /// Share of each flown run with the elevator on its rate limit (%).
+    pub time_on_rate_limit_pct: Option<Distribution>,
+    /// Share of each flown run with the elevator on a position stop (%).
+    pub time_on_stops_pct: Option<Distribution>,
+    /// Total elevator travel of each flown run (deg).
+    pub elevator_travel_deg: Option<Distribution>,
+    /// Thrust-rate RMS of each flown run (kN/s).
+    pub thrust_rate_rms_knps: Option<Distribution>,
 }
 
 impl CampaignStatistics {
@@ -192,6 +202,19 @@ impl CampaignStatistics {
             touchdown_sink_rate_mps: Distribution::of(touchdowns.iter().map(|t| t.sink_rate_mps)),
             glide_path_error_rms_m: Distribution::of(
                 flown.iter().filter_map(|s| s.glide_path_error_rms_m),
+            ),
+            elevator_rate_rms_degps: Distribution::of(
+                flown.iter().map(|s| s.actuator.elevator_rate_rms_degps),
+            ),
+            time_on_rate_limit_pct: Distribution::of(
+                flown.iter().map(|s| s.actuator.time_on_rate_limit_pct),
+            ),
+            time_on_stops_pct: Distribution::of(flown.iter().map(|s| s.actuator.time_on_stops_pct)),
+            elevator_travel_deg: Distribution::of(
+                flown.iter().map(|s| s.actuator.elevator_travel_deg),
+            ),
+            thrust_rate_rms_knps: Distribution::of(
+                flown.iter().map(|s| s.actuator.thrust_rate_rms_knps),
             ),
         }
     }

@@ -150,6 +150,15 @@ pub fn load_scenario(text: &str, file_name: &str) -> Result<Scenario, ScenarioEr
         }
     }
 
+    // A file on the paper's hardware takes the paper's values for what it leaves out.
+    let scenario = scenario
+        .with_set_defaults(|path| index.keys.iter().any(|k| k.path == path))
+        .map_err(|message| ScenarioError::Structure {
+            file: file_name.to_owned(),
+            line: None,
+            field: "hardware".to_owned(),
+            message,
+        })?;
     scenario.validate().map_err(|problem| {
         let line = index
             .keys

@@ -23,12 +23,14 @@ use serde::{Deserialize, Serialize};
 
 mod dispersion;
 mod file;
+mod hardware;
 mod template;
 #[cfg(test)]
 mod tests;
 
 pub use dispersion::{DispersionParameters, DispersionSample, DISPERSION_STREAM};
 pub use file::{load_scenario, ScenarioError};
+pub use hardware::HardwareSet;
 pub use template::DEFAULT_SCENARIO_TOML;
 
 /// The aircraft section of a scenario.
@@ -87,9 +89,14 @@ impl EnvironmentSection {
 }
 
 /// The controllers of the cascade (docs/model.md §5).
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct ControlSection {
+    /// Frame rate of the flight-control computer (Hz): the controllers read the sensors
+    /// and set the elevator and thrust commands once per frame, held in between
+    /// (docs/model.md §2.6; F/A-18: 80 Hz). `None` updates them every integration step,
+    /// as the paper's simulation.
+    pub flight_computer_rate_hz: Option<f64>,
     /// Pitch controller: O-PD (default) or PID.
     pub pitch: PitchControllerParameters,
     /// Speed (thrust) loop.
@@ -102,9 +109,25 @@ pub struct ControlSection {
     pub flight_path: FlightPathParameters,
 }
 
+impl Default for ControlSection {
+    fn default() -> Self {
+        Self {
+            flight_computer_rate_hz: Some(80.0),
+            pitch: PitchControllerParameters::default(),
+            speed: SpeedControllerParameters::default(),
+            sink_rate: SinkRateControllerParameters::default(),
+            guidance: GuidanceParameters::default(),
+            flight_path: FlightPathParameters::default(),
+        }
+    }
+}
+
 impl ControlSection {
     /// Checks every controller.
     pub fn validate(&self) -> Result<(), ParameterError> {
+        if let Some(rate) = self.flight_computer_rate_hz {
+            Bounds::closed(10.0, 10_000.0).check("control", "flight_computer_rate_hz", rate)?;
+        }
         self.pitch.validate()?;
         self.speed.validate()?;
         self.sink_rate.validate()?;
@@ -182,6 +205,19 @@ impl Default for OutcomeLimits {
     }
 }
 
+/// How a pitch-step mission commands its step.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PitchCommand {
+    /// The fastest rest-to-rest pitch trajectory the elevator's rate and travel allow
+    /// (jerk- and acceleration-limited), its rate and acceleration fed forward
+    /// (docs/model.md §5.2; realistic default).
+    #[default]
+    JerkLimited,
+    /// A step in θ_ref, as the paper (Fig. 10–12).
+    Step,
+}
+
 /// What the run flies.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
@@ -202,6 +238,9 @@ pub enum Mission {
         start_distance_aft_m: f64,
         /// Altitude (m).
         altitude_m: f64,
+        /// How the step is commanded: `jerk_limited` (default) or `step` (the paper).
+        #[serde(default)]
+        command: PitchCommand,
     },
     /// Tracking a constant commanded sink rate from level trim (paper Fig. 13).
     SinkRate {
@@ -238,6 +277,7 @@ impl Mission {
                 duration_s,
                 start_distance_aft_m,
                 altitude_m,
+                ..
             } => {
                 Bounds::closed(-20.0, 20.0).check(SECTION, "step_deg", step_deg)?;
                 Bounds::closed(-10_000.0, 20_000.0).check(
@@ -261,14 +301,16 @@ impl Mission {
         }
     }
 
-    /// A pitch step of `step_deg` lasting `duration_s`, with the other defaults.
-    pub fn pitch_step(step_deg: f64, duration_s: f64) -> Self {
+    /// A pitch step of `step_deg` lasting `duration_s`, commanded as `command`, with the
+    /// other defaults.
+    pub fn pitch_step(step_deg: f64, duration_s: f64, command: PitchCommand) -> Self {
         Self::PitchStep {
             step_deg,
             step_time_s: 1.0,
             duration_s,
             start_distance_aft_m: 1000.0,
             altitude_m: 150.0,
+            command,
         }
     }
 
@@ -289,6 +331,9 @@ impl Mission {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct Scenario {
+    /// The hardware set: `realistic` (default) or `paper`; keys left out of a scenario
+    /// file take this set's values (docs/model.md §2.6).
+    pub hardware: HardwareSet,
     /// Seed of every random stream (docs/model.md §3.4).
     pub seed: u64,
     /// Integration step (s); 1 ms (docs/model.md §6).
@@ -316,6 +361,7 @@ impl Default for Scenario {
     /// Adverse conditions (every disturbance at its default), O-PD pitch control.
     fn default() -> Self {
         Self {
+            hardware: HardwareSet::Realistic,
             seed: 1,
             time_step_s: 0.001,
             max_time_s: 60.0,

@@ -8,10 +8,11 @@
 //! explicitly ([`HeldInputs`]), which is a pure function of time, state and held inputs.
 
 use super::deck_prediction::{DeckPredictor, DeckView};
+use super::flight_computer::{FlightComputer, HeldCommands};
 use super::layout::{Slot, StateLayout};
 use super::outer_loops::{OuterLoopInputs, OuterLoops};
 use super::signals::Signals;
-use super::taps::Taps;
+use super::taps::{NoTaps, Taps};
 use crate::aircraft::{Aircraft, AircraftCommands, AircraftState, HookGeometry, TrimPoint};
 use crate::control::pitch::{BuiltPitchLaw, ElevatorSaturation, PitchLaw, PitchLawInputs};
 use crate::control::{DeckReference, SpeedController};
@@ -36,7 +37,7 @@ pub struct LoopLayout {
     pub ship: Slot,
     /// The pitch law's own states.
     pub pitch_law: Slot,
-    /// ∫ airspeed error dt (m).
+    /// The speed loop: ∫ airspeed error dt (m), and the filtered airspeed (m/s).
     pub speed: Slot,
     /// ∫ climb-rate error dt (m).
     pub sink_rate: Slot,
@@ -47,13 +48,17 @@ pub struct LoopLayout {
 }
 
 impl LoopLayout {
-    /// Lays out the blocks, given the pitch law's and the predictor's state names.
-    pub fn new(pitch_law: &[&'static str], deck_predictor: &[&'static str]) -> Self {
+    /// Lays out the blocks, given the state names of the blocks whose states vary.
+    pub fn new(
+        pitch_law: &[&'static str],
+        speed: &[&'static str],
+        deck_predictor: &[&'static str],
+    ) -> Self {
         let mut states = StateLayout::new();
         let aircraft = states.add("aircraft", &AircraftState::NAMES);
         let ship = states.add("ship", &ShipMotionState::NAMES);
         let pitch_law = states.add("pitch_law", pitch_law);
-        let speed = states.add("speed", &["airspeed_error_integral_m"]);
+        let speed = states.add("speed", speed);
         let sink_rate = states.add("sink_rate", &["climb_rate_error_integral_m"]);
         let guidance = states.add("guidance", &["height_error_integral_m_s"]);
         let deck_predictor = states.add("deck_predictor", deck_predictor);
@@ -89,6 +94,13 @@ pub struct HeldInputs {
     /// The deck reference of the glide-path generator, computed at the start of the step
     /// (the guidance computer updates once per step); `None` outside an approach.
     pub deck: Option<DeckReference>,
+    /// With a flight-control computer running in frames, the commands of the current
+    /// frame, which the actuators hold; `None` updates them continuously.
+    pub commands: Option<HeldCommands>,
+    /// With a flight-control computer, the pitch attitude it read at the frame's start
+    /// (rad) and the time that reading stands for (s); the pitch law uses it in place of
+    /// θ + `pitch_noise_rad`.
+    pub theta_read: Option<(f64, f64)>,
 }
 
 /// The random streams the loop draws from step by step.
@@ -117,6 +129,7 @@ pub struct ClosedLoop {
     pub(crate) outer: OuterLoops,
     pub(crate) trim: TrimPoint,
     pub(crate) airspeed_reference_mps: f64,
+    pub(crate) computer: Option<FlightComputer>,
 }
 
 impl ClosedLoop {
@@ -204,14 +217,43 @@ impl ClosedLoop {
             }
             _ => None,
         };
-        HeldInputs {
-            ship_noise: self
-                .ship
-                .draw_noise(&mut streams.ship_heave, &mut streams.ship_pitch, dt),
-            pitch_noise_rad: self.sensor.draw_white_noise() + self.sensor.sinusoid(t),
+        let ship_noise = self
+            .ship
+            .draw_noise(&mut streams.ship_heave, &mut streams.ship_pitch, dt);
+        let Some(mut computer) = self.computer.take() else {
+            return HeldInputs {
+                ship_noise,
+                pitch_noise_rad: self.sensor.draw_white_noise() + self.sensor.sinusoid(t),
+                wind,
+                deck,
+                commands: None,
+                theta_read: None,
+            };
+        };
+        // A frame of the flight-control computer: read the sensor (the mean of its samples
+        // since the last frame) and compute the commands at its start; hold both until the
+        // next.
+        let pitch_noise_rad = self.sensor.draw_white_noise() + self.sensor.sinusoid(t);
+        let starts = computer.starts_frame(t);
+        computer.sample(t, aircraft.theta_rad + pitch_noise_rad, starts);
+        let mut held = HeldInputs {
+            ship_noise,
+            pitch_noise_rad,
             wind,
             deck,
+            commands: None,
+            theta_read: Some((computer.theta_read_rad, computer.theta_read_time_s)),
+        };
+        if starts {
+            let signals = self.evaluate(t, x, &held, &NoTaps, &mut computer.scratch);
+            computer.commands = HeldCommands {
+                elevator_rad: signals.elevator_command_rad,
+                thrust_n: signals.thrust_command_n,
+            };
         }
+        held.commands = Some(computer.commands);
+        self.computer = Some(computer);
+        held
     }
 
     /// Advances the loop's discrete-time parts by `dt` after a step: the free-air
@@ -264,11 +306,17 @@ impl ClosedLoop {
         let outer = self.outer.outputs(&outer_inputs, held.deck.as_ref(), taps);
 
         // Pitch law on the measured attitude (docs/model.md §3.3, §4).
-        let theta_measured_rad = a.theta_rad + held.pitch_noise_rad;
+        let (theta_measured_rad, measurement_age_s) = match held.theta_read {
+            Some((read, read_time)) => (read, t - read_time),
+            None => (a.theta_rad + held.pitch_noise_rad, 0.0),
+        };
         let actuator = self.aircraft.actuator();
         let pitch_inputs = PitchLawInputs {
             theta_ref_rad: outer.theta_ref_rad,
+            theta_ref_rate_radps: outer.theta_ref_rate_radps,
+            theta_ref_acceleration_radps2: outer.theta_ref_acceleration_radps2,
             theta_measured_rad,
+            measurement_age_s,
             pitch_rate_measured_radps: a.q_radps,
             elevator_actual_rad: a.elevator_rad,
             theta_trim_rad: self.trim.theta_rad,
@@ -281,14 +329,21 @@ impl ClosedLoop {
             ),
         };
         let pitch_state = layout.pitch_law.of(x);
-        let elevator_command_rad =
-            taps.elevator_command(self.pitch.elevator_command_rad(pitch_state, &pitch_inputs));
+        let elevator_command_rad = taps.elevator_command(match held.commands {
+            Some(commands) => commands.elevator_rad,
+            None => self.pitch.elevator_command_rad(pitch_state, &pitch_inputs),
+        });
 
         // Speed loop (docs/model.md §5).
-        let speed_error = self.airspeed_reference_mps - air.airspeed_mps;
-        let speed_integral_m = layout.speed.scalar(x);
-        let thrust_command_n =
-            taps.thrust_command(self.speed.thrust_command_n(speed_error, speed_integral_m));
+        let speed_state = layout.speed.of(x);
+        let speed_error = self.airspeed_reference_mps
+            - self
+                .speed
+                .feedback_airspeed_mps(speed_state, air.airspeed_mps);
+        let thrust_command_n = taps.thrust_command(match held.commands {
+            Some(commands) => commands.thrust_n,
+            None => self.speed.thrust_command_n(speed_error, speed_state[0]),
+        });
 
         // Rates, block by block.
         let commands = AircraftCommands {
@@ -303,7 +358,12 @@ impl ClosedLoop {
         layout.ship.write_array(rate, &ship_rate.to_array());
         self.pitch
             .derivative(pitch_state, &pitch_inputs, layout.pitch_law.of_mut(rate));
-        rate[layout.speed.offset] = self.speed.integral_rate(speed_error, speed_integral_m);
+        self.speed.derivative(
+            speed_state,
+            speed_error,
+            air.airspeed_mps,
+            layout.speed.of_mut(rate),
+        );
         let (sink_integral_rate, guidance_integral_rate) =
             self.outer.integral_rates(&outer_inputs, &outer);
         rate[layout.sink_rate.offset] = sink_integral_rate;
@@ -337,6 +397,7 @@ impl ClosedLoop {
             climb_rate_mps,
             climb_rate_command_mps: outer.climb_rate_command_mps,
             elevator_rad: a.elevator_rad,
+            elevator_rate_radps: a.elevator_rate_radps,
             elevator_command_rad,
             thrust_n: a.total_thrust_n(),
             thrust_command_n,

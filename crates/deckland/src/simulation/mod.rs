@@ -11,9 +11,11 @@
 //! - [`LandingRules`]: turn events into an outcome (docs/model.md §7), outside the
 //!   integration loop.
 
+mod activity;
 mod closed_loop;
 mod deck_prediction;
 mod events;
+mod flight_computer;
 mod layout;
 mod outcome;
 mod outer_loops;
@@ -23,9 +25,11 @@ mod setup;
 mod signals;
 mod taps;
 
+pub use activity::ActuatorActivity;
 pub use closed_loop::{ClosedLoop, HeldInputs, LoopLayout, StepStreams};
 pub use deck_prediction::DeckPredictor;
 pub use events::PROBE_RANGE_AFT_OF_RAMP_M;
+pub use flight_computer::HeldCommands;
 pub use layout::{BlockStates, Slot, StateLayout};
 pub use outcome::{Divergence, EndReason, Event, LandingRules, Outcome, RunSummary, Touchdown};
 pub use outer_loops::OuterLoops;

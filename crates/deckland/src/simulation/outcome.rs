@@ -5,6 +5,7 @@ use std::fmt;
 
 use serde::Serialize;
 
+use super::activity::ActuatorActivity;
 use crate::scenario::OutcomeLimits;
 
 /// How a run ended.
@@ -340,6 +341,8 @@ pub struct RunSummary {
     pub glide_path_error_rms_m: Option<f64>,
     /// Largest absolute height error to the glide path over the approach (m).
     pub glide_path_error_max_m: Option<f64>,
+    /// What the elevator and the engines did over the run.
+    pub actuator: ActuatorActivity,
 }
 
 #[cfg(test)]

@@ -3,6 +3,7 @@
 //! flight path → guidance → sink rate.
 
 use super::taps::Taps;
+use crate::control::pitch::command_shaping::JerkLimitedStep;
 use crate::control::{
     CommandRamp, DeckReference, FlightPathGenerator, LoopController, PathReference,
 };
@@ -10,12 +11,15 @@ use crate::control::{
 /// What produces the pitch command θ_ref.
 #[derive(Debug, Clone, PartialEq)]
 pub enum OuterLoops {
-    /// θ_ref steps by `step_rad` at `step_time_s` from trim; no outer loop.
+    /// θ_ref steps by `step_rad` at `step_time_s` from trim, or follows `shaped` from
+    /// then, with its rate and acceleration fed forward; no outer loop.
     PitchStep {
         /// Step size (rad).
         step_rad: f64,
         /// Time of the step (s).
         step_time_s: f64,
+        /// The jerk-limited trajectory flown instead of the step, if any.
+        shaped: Option<JerkLimitedStep>,
     },
     /// A climb-rate command ramped in by `ramp` to `climb_rate_mps`, followed by the
     /// sink-rate loop, with the pitch feed-forward moving from trim to
@@ -62,6 +66,10 @@ pub(crate) struct OuterLoopInputs {
 pub(crate) struct OuterLoopOutputs {
     /// The pitch command, after the taps (rad).
     pub theta_ref_rad: f64,
+    /// Its rate (rad/s) when it is a shaped trajectory, else 0.
+    pub theta_ref_rate_radps: f64,
+    /// Its acceleration (rad/s²) when it is a shaped trajectory, else 0.
+    pub theta_ref_acceleration_radps2: f64,
     /// The climb-rate command (m/s); NaN when no loop commands one.
     pub climb_rate_command_mps: f64,
     /// The glide path, in an approach.
@@ -83,11 +91,13 @@ impl OuterLoops {
         taps: &T,
     ) -> OuterLoopOutputs {
         let trim_theta = inputs.theta_trim_rad;
+        let (mut reference_rate, mut reference_acceleration) = (0.0, 0.0);
         let (theta_ref_rad, climb_rate_command_mps, path, height_error_m, climb_rate_error_mps) =
             match self {
                 Self::PitchStep {
                     step_rad,
                     step_time_s,
+                    shaped: None,
                 } => {
                     let step = if inputs.time_s >= *step_time_s {
                         *step_rad
@@ -95,6 +105,16 @@ impl OuterLoops {
                         0.0
                     };
                     (trim_theta + step, f64::NAN, None, 0.0, 0.0)
+                }
+                Self::PitchStep {
+                    step_time_s,
+                    shaped: Some(trajectory),
+                    ..
+                } => {
+                    let reference = trajectory.reference(inputs.time_s - step_time_s);
+                    reference_rate = reference.rate_radps;
+                    reference_acceleration = reference.acceleration_radps2;
+                    (trim_theta + reference.theta_rad, f64::NAN, None, 0.0, 0.0)
                 }
                 Self::ClimbRate {
                     climb_rate_mps,
@@ -134,6 +154,8 @@ impl OuterLoops {
             };
         OuterLoopOutputs {
             theta_ref_rad: taps.pitch_command(theta_ref_rad),
+            theta_ref_rate_radps: reference_rate,
+            theta_ref_acceleration_radps2: reference_acceleration,
             climb_rate_command_mps,
             path,
             height_error_m,

@@ -8,6 +8,7 @@
 
 use std::collections::VecDeque;
 
+use super::activity::ActivityStatistics;
 use super::closed_loop::{ClosedLoop, HeldInputs, HeldLoop, StepStreams};
 use super::events::EventDetector;
 use super::outcome::{Divergence, EndReason, Event, LandingRules, RunSummary};
@@ -47,6 +48,7 @@ pub struct Simulation {
     rules: LandingRules,
     detector: EventDetector,
     statistics: GlidePathStatistics,
+    activity: ActivityStatistics,
     ramp_clearance_m: Option<f64>,
     pending: VecDeque<Stop>,
     summary: Option<RunSummary>,
@@ -74,6 +76,8 @@ impl Simulation {
     fn from_setup(setup: super::setup::Setup, scenario: &Scenario) -> Self {
         let dimension = setup.initial.len();
         let deck = setup.system.deck;
+        let activity =
+            ActivityStatistics::new(setup.system.aircraft.actuator(), scenario.time_step_s);
         Self {
             system: setup.system,
             state: setup.initial,
@@ -89,6 +93,7 @@ impl Simulation {
             rules: LandingRules::new(&scenario.outcome, deck.wire_positions_m),
             detector: EventDetector::new(deck),
             statistics: GlidePathStatistics::default(),
+            activity,
             ramp_clearance_m: None,
             pending: VecDeque::with_capacity(4),
             summary: None,
@@ -178,6 +183,9 @@ impl Simulation {
             .evaluate(t, &self.state, &self.held, taps, &mut self.k1);
         let approach = self.system.outer.is_approach();
         let mut end = self.check_state(&signals);
+        if end.is_none() {
+            self.activity.sample(&signals);
+        }
         if approach && end.is_none() {
             self.statistics.sample(&signals);
             for event in self.detector.detect(&signals).iter() {
@@ -220,6 +228,7 @@ impl Simulation {
                 ramp_clearance_m: self.ramp_clearance_m,
                 glide_path_error_rms_m: self.statistics.rms_m(),
                 glide_path_error_max_m: self.statistics.max_m(),
+                actuator: self.activity.activity(),
             };
             recorder.finish(&summary);
             self.summary = Some(summary);

@@ -3,8 +3,11 @@
 
 use super::closed_loop::{ClosedLoop, LoopLayout, StepStreams};
 use super::deck_prediction::{DeckPredictor, DeckView};
+use super::flight_computer::FlightComputer;
 use super::outer_loops::OuterLoops;
 use crate::aircraft::{linearize, trim, Aircraft, TrimError, TrimPoint, TrimRequest};
+use crate::control::pitch::command_shaping::JerkLimitedStep;
+use crate::control::pitch::design::{command_bounds, PitchDesignRequest, PitchHardware};
 use crate::control::pitch::{
     BuiltPitchLaw, PitchDesignContext, PitchLaw, PitchLawInputs, PitchPlantDerivatives,
 };
@@ -16,7 +19,7 @@ use crate::environment::{
 };
 use crate::parameters::ParameterError;
 use crate::random::{stream_names, RandomStreams};
-use crate::scenario::{Mission, Scenario};
+use crate::scenario::{Mission, PitchCommand, Scenario};
 use crate::sensors::PitchSensor;
 
 /// Builds a user's own pitch law for the plant and hardware of a run (called once per
@@ -93,9 +96,11 @@ fn outer_loops(
             duration_s,
             ..
         } => {
+            // The trajectory is shaped once the trim is known (`shape_pitch_step`).
             let loops = OuterLoops::PitchStep {
                 step_rad: step_deg.to_radians(),
                 step_time_s,
+                shaped: None,
             };
             (loops, 0.0, duration_s)
         }
@@ -124,6 +129,63 @@ fn outer_loops(
             };
             (loops, 0.0, duration_s)
         }
+    })
+}
+
+/// A pitch step commanded as `jerk_limited` gets its trajectory: the fastest rest-to-rest
+/// pitch motion within the jerk and acceleration the elevator can give (a share η of its
+/// rate limit and κ of its travel to the nearer stop, `control::pitch::design`).
+fn shape_pitch_step(
+    outer: OuterLoops,
+    scenario: &Scenario,
+    context: &PitchDesignContext,
+    elevator_trim_rad: f64,
+) -> Result<OuterLoops, SetupError> {
+    let OuterLoops::PitchStep {
+        step_rad,
+        step_time_s,
+        ..
+    } = outer
+    else {
+        return Ok(outer);
+    };
+    let Mission::PitchStep {
+        command: PitchCommand::JerkLimited,
+        ..
+    } = scenario.mission
+    else {
+        return Ok(outer);
+    };
+    let hardware = PitchHardware {
+        actuator: context.actuator,
+        elevator_trim_rad,
+        plant: context.plant,
+        coupling: None,
+        control_delay_s: 0.0,
+    };
+    let request = PitchDesignRequest::default();
+    let (jerk, acceleration, _) = command_bounds(
+        &hardware,
+        request.command_rate_fraction,
+        request.command_travel_fraction,
+    );
+    if !(jerk > 0.0 && acceleration > 0.0) {
+        return Err(ParameterError::new(
+            "mission",
+            "command",
+            "jerk_limited",
+            format_args!(
+                "hardware that leaves the shaped command a positive jerk and acceleration \
+                 (got {jerk:.3} rad/s³ and {acceleration:.3} rad/s²): a faster \
+                 aircraft.elevator_actuator.rate_limit_degps or `command = \"step\"`"
+            ),
+        )
+        .into());
+    }
+    Ok(OuterLoops::PitchStep {
+        step_rad,
+        step_time_s,
+        shaped: Some(JerkLimitedStep::new(step_rad, jerk, acceleration)),
     })
 }
 
@@ -180,6 +242,7 @@ pub(crate) fn build(
         None => scenario.control.pitch.build(&context)?,
         Some(factory) => BuiltPitchLaw::Custom(factory(&context)?.into()),
     };
+    let outer = shape_pitch_step(outer, scenario, &context, trim_point.elevator_rad)?;
     let speed = SpeedController::new(
         &scenario.control.speed,
         aircraft.parameters().mass_kg,
@@ -217,7 +280,11 @@ pub(crate) fn build(
         Mission::SinkRate { altitude_m, .. } => (ship_initial_x_m - 20_000.0, altitude_m),
     };
 
-    let layout = LoopLayout::new(pitch.state_names(), deck_predictor.state_names());
+    let layout = LoopLayout::new(
+        pitch.state_names(),
+        speed.state_names(),
+        deck_predictor.state_names(),
+    );
     let mut initial = vec![0.0; layout.dimension()];
     layout
         .aircraft
@@ -236,6 +303,7 @@ pub(crate) fn build(
         ..PitchLawInputs::default()
     };
     pitch.initial_state(&trim_inputs, layout.pitch_law.of_mut(&mut initial));
+    speed.initial_state(airspeed, layout.speed.of_mut(&mut initial));
     let pose = ship.pose(&ship_state, ship_initial_x_m, 0.0);
     let pose_rate = ship.pose_rate(&ship_state);
     let view = DeckView {
@@ -262,6 +330,10 @@ pub(crate) fn build(
         outer,
         trim: trim_point,
         airspeed_reference_mps: airspeed,
+        computer: scenario
+            .control
+            .flight_computer_rate_hz
+            .map(|rate| FlightComputer::new(rate, initial.len())),
     };
     Ok(Setup {
         system,

@@ -46,6 +46,8 @@ pub struct Signals {
     pub climb_rate_command_mps: f64,
     /// Elevator position (rad).
     pub elevator_rad: f64,
+    /// Elevator rate (rad/s).
+    pub elevator_rate_radps: f64,
     /// Elevator command (rad).
     pub elevator_command_rad: f64,
     /// Total actual thrust (N).

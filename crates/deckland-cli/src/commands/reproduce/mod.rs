@@ -27,7 +27,7 @@ use deckland::experiments::{
     fly_approach, fly_pitch_step, fly_seeds, record_environment, EnvironmentRecord, OutcomeCounts,
     PitchStep, SinkRateTracking,
 };
-use deckland::scenario::EnvironmentSection;
+use deckland::scenario::{EnvironmentSection, HardwareSet, Scenario};
 use deckland::simulation::RunSummary;
 use indicatif::{ProgressBar, ProgressStyle};
 use nalgebra::SMatrix;
@@ -264,9 +264,20 @@ fn pick(figures: &[(&'static str, Figure)], stem: &str) -> Result<Figure> {
         .ok_or_else(|| anyhow!("the figure builder made no `{stem}` figure"))
 }
 
+/// The hardware every run of the reproduction flies: the paper's.
+const HARDWARE: HardwareSet = HardwareSet::Paper;
+
+/// The paper's scenario in `conditions` with `seed`, flying `choice`.
+fn paper_scenario(conditions: Conditions, seed: u64, choice: ControllerChoice) -> Scenario {
+    let mut scenario = conditions.scenario(HARDWARE, seed);
+    scenario.control.pitch = choice.parameters(HARDWARE);
+    scenario
+}
+
 /// The pitch step of Fig. 10–12 in `conditions`.
 fn step_flight(conditions: Conditions) -> StepFlight {
     StepFlight {
+        base: HARDWARE.scenario(),
         conditions,
         seed: SEED,
         step: PitchStep::new(PITCH_STEP_DEG, PITCH_STEP_SECONDS),
@@ -305,8 +316,7 @@ fn step_study(
     seeds
         .iter()
         .map(|&seed| {
-            let mut scenario = Conditions::Adverse.scenario(seed);
-            scenario.control.pitch = choice.parameters();
+            let mut scenario = paper_scenario(Conditions::Adverse, seed, choice);
             if noiseless {
                 scenario.environment.pitch_noise.enabled = false;
             }
@@ -366,7 +376,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
             .copied()
             .collect::<Vec<_>>(),
     );
-    let opd = deckland::control::pitch::ObserverPdParameters::default();
+    let opd = deckland::control::pitch::ObserverPdParameters::paper();
     let gains = ObserverPdGains::design(
         opd.settling_time_s,
         opd.damping_ratio,
@@ -417,7 +427,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
 
     // Fig. 7, 8.
     progress.start("Fig. 7, 8 ship motion and wind");
-    let environment_parameters = EnvironmentSection::default();
+    let environment_parameters = HARDWARE.scenario().environment;
     environment_parameters.validate()?;
     let environment_record = EnvironmentRecord {
         seconds: lengths.environment_s,
@@ -521,6 +531,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
     progress.start("Fig. 13 sink-rate tracking");
     let fly_sink = |ramp_s| {
         sink::fly_tracking(
+            &HARDWARE.scenario(),
             ControllerChoice::Opd,
             Conditions::Ideal,
             SEED,
@@ -554,8 +565,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
 
     // Fig. 14, 15.
     progress.start("Fig. 14, 15 approach and landing");
-    let mut scenario = Conditions::Adverse.scenario(SEED);
-    scenario.control.pitch = ControllerChoice::Opd.parameters();
+    let scenario = paper_scenario(Conditions::Adverse, SEED, ControllerChoice::Opd);
     let approach_run = fly_approach(&scenario).context("cannot set up the approach")?;
     let approach = approach_run.summary.clone();
     let approach_samples = &approach_run.samples;
@@ -569,8 +579,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
             .sqrt()
     };
     let fly_paper_gains = |conditions: Conditions| -> Result<RunSummary> {
-        let mut scenario = conditions.scenario(SEED);
-        scenario.control.pitch = ControllerChoice::Opd.parameters();
+        let mut scenario = paper_scenario(conditions, SEED, ControllerChoice::Opd);
         (
             scenario.control.sink_rate.proportional_rad_per_mps,
             scenario.control.sink_rate.integral_rad_per_m,
@@ -617,8 +626,7 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
 
     // Boarding statistics (not in the paper).
     progress.start("boarding statistics");
-    let mut base = Conditions::Adverse.scenario(SEED);
-    base.control.pitch = ControllerChoice::Opd.parameters();
+    let base = paper_scenario(Conditions::Adverse, SEED, ControllerChoice::Opd);
     let seeds: Vec<u64> = (1..=lengths.boarding_seeds).collect();
     let boarding = OutcomeCounts::of(
         &fly_seeds(&base, &seeds).context("cannot set up the boarding statistics")?,

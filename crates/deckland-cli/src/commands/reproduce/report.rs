@@ -438,9 +438,9 @@ fn linear_model(f: &Findings) -> Section {
 
 /// Paper §4: the gains.
 fn controllers(f: &Findings) -> Section {
-    let opd = ObserverPdParameters::default();
-    let pid = PidParameters::default();
-    let scenario = Scenario::default();
+    let opd = ObserverPdParameters::paper();
+    let pid = PidParameters::paper();
+    let scenario = Scenario::paper();
     let speed = scenario.control.speed;
     let sink = scenario.control.sink_rate;
     let guidance = scenario.control.guidance;
@@ -548,7 +548,7 @@ fn controllers(f: &Findings) -> Section {
 
 /// Paper §3.3–3.7: actuators, simulation and environment.
 fn environment(f: &Findings) -> Section {
-    let scenario = Scenario::default();
+    let scenario = Scenario::paper();
     let engines = scenario.aircraft.engines;
     let actuator = scenario.aircraft.elevator_actuator;
     let environment = &f.environment;

@@ -86,8 +86,16 @@ impl ElevatorSaturation {
 pub struct PitchLawInputs {
     /// Commanded pitch attitude θ_ref (rad), from the sink-rate controller.
     pub theta_ref_rad: f64,
+    /// Rate of the commanded attitude q_r (rad/s) when the command is a shaped trajectory
+    /// (docs/model.md §5.2, feed-forward); 0 for a plain command.
+    pub theta_ref_rate_radps: f64,
+    /// Acceleration of the commanded attitude q̇_r (rad/s²); 0 for a plain command.
+    pub theta_ref_acceleration_radps2: f64,
     /// Measured pitch attitude θ_m (rad), noise included (docs/model.md §3.3).
     pub theta_measured_rad: f64,
+    /// How old the measurement is (s): 0 when read continuously; with a flight-control
+    /// computer, the time since the middle of the samples it averaged.
+    pub measurement_age_s: f64,
     /// Measured pitch rate q (rad/s); used by the PID's derivative term only.
     pub pitch_rate_measured_radps: f64,
     /// Actual elevator position δe (rad) from the actuator (not the command).

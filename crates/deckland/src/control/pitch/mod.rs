@@ -11,6 +11,8 @@
 //! line in the registry below, which also declares the file's module. A law used only from code needs no registration: wrap it in
 //! [`BuiltPitchLaw::Custom`].
 
+pub mod command_shaping;
+pub mod design;
 mod law;
 
 pub use law::{
@@ -35,9 +37,19 @@ impl PitchControllerParameters {
 }
 
 impl Default for PitchControllerParameters {
-    /// The paper's proposed controller, O-PD, with its default design.
+    /// The paper's proposed controller, O-PD, designed for the realistic stabilator.
     fn default() -> Self {
         Self::ObserverPd(ObserverPdParameters::default())
+    }
+}
+
+impl PitchControllerParameters {
+    /// The same law with the paper's tuning (its gains, its O-PD design).
+    pub fn paper_tuning(&self) -> Self {
+        match self {
+            Self::ObserverPd(_) => Self::ObserverPd(ObserverPdParameters::paper()),
+            Self::Pid(_) => Self::Pid(PidParameters::paper()),
+        }
     }
 }
 
@@ -97,7 +109,8 @@ mod tests {
             panic!("expected PID, got {parameters:?}");
         };
         assert!(!pid.anti_windup);
-        assert_eq!(pid.proportional_per_s2, 57.01);
+        // Keys left out take the realistic PID's gains (docs/pitch-step.md).
+        assert_eq!(pid.proportional_per_s2, 6.25);
     }
 
     #[test]

@@ -59,8 +59,26 @@ pub struct ObserverPdParameters {
 }
 
 impl Default for ObserverPdParameters {
-    /// T_2% = 0.3 s, ζ = √2 (paper §4.2.2), measured-attitude feedback, default observer.
+    /// The design for the realistic stabilator (40 °/s; docs/pitch-step.md): T_2% = 1.6 s,
+    /// ζ = 1, the observer's attitude fed back, observer ε = 0.2
+    /// ([`crate::control::pitch::design::design_observer_pd`] finds it admissible).
     fn default() -> Self {
+        Self {
+            settling_time_s: 1.6,
+            damping_ratio: 1.0,
+            pitch_feedback: PitchFeedback::ObserverEstimate,
+            observer: ObserverParameters {
+                epsilon: 0.2,
+                ..ObserverParameters::default()
+            },
+        }
+    }
+}
+
+impl ObserverPdParameters {
+    /// The paper's design (§4.2.2): T_2% = 0.3 s, ζ = √2, the measured attitude fed back,
+    /// observer ε = 0.03 (docs/observer-bandwidth.md).
+    pub fn paper() -> Self {
         Self {
             settling_time_s: 0.3,
             damping_ratio: std::f64::consts::SQRT_2,
@@ -209,8 +227,10 @@ impl ObserverPdController {
         }
     }
 
-    /// Elevator command δe = δe* + (U − x3)/(∂q̇/∂δe) (rad; paper Eq. 35–36), not
-    /// limited: the actuator applies its position limits (docs/model.md §2.6).
+    /// Elevator command δe = δe* + (U − x3)/(∂q̇/∂δe) (rad; paper Eq. 35–36) with
+    /// U = K_P·(θ_ref − θ) + K_D·(q_r − x2) + q̇_r − M_q·q_r, the paper's law about a moving
+    /// reference (q_r = q̇_r = 0 for a plain command: the paper's U); not limited: the
+    /// actuator applies its position limits (docs/model.md §2.6).
     #[inline]
     pub fn elevator_command_rad(&self, state: &ObserverState, inputs: &PitchLawInputs) -> f64 {
         let theta_rad = match self.pitch_feedback {
@@ -218,18 +238,26 @@ impl ObserverPdController {
             PitchFeedback::ObserverEstimate => inputs.theta_trim_rad + state.x1,
         };
         let pitch_error_rad = inputs.theta_ref_rad - theta_rad;
-        let pitch_error_rate_radps = -state.x2;
+        let pitch_error_rate_radps = inputs.theta_ref_rate_radps - state.x2;
+        // Feed-forward of a shaped reference: q̇_r − M_q·q_r (zero for a plain command).
+        let feed_forward = inputs.theta_ref_acceleration_radps2
+            - self.plant.dqdot_dq_per_s * inputs.theta_ref_rate_radps;
         let equivalent_control = self.gains.proportional_per_s2 * pitch_error_rad
-            + self.gains.derivative_per_s * pitch_error_rate_radps;
+            + self.gains.derivative_per_s * pitch_error_rate_radps
+            + feed_forward;
         inputs.elevator_trim_rad
             + (equivalent_control - state.x3) / self.plant.dqdot_delevator_per_s2
     }
 
     /// Observer derivative (docs/model.md §4) with y = θ_m − θ* and
-    /// h_θ = (∂q̇/∂q)·x2 + (∂q̇/∂δe)·(δe_actual − δe*).
+    /// h_θ = (∂q̇/∂q)·x2 + (∂q̇/∂δe)·(δe_actual − δe*); a sampled reading's age τ is
+    /// compensated to first order (the innovation compares x1 − τ·x2 with y).
     #[inline]
     pub fn derivative(&self, state: &ObserverState, inputs: &PitchLawInputs) -> ObserverState {
-        let measurement = inputs.theta_measured_rad - inputs.theta_trim_rad;
+        // A reading `age` seconds old is compared with the estimate brought back to its
+        // time, x1 − age·x2: the same as the measurement brought forward by age·x2.
+        let measurement = inputs.theta_measured_rad - inputs.theta_trim_rad
+            + inputs.measurement_age_s * state.x2;
         let known_input = self.plant.dqdot_dq_per_s * state.x2
             + self.plant.dqdot_delevator_per_s2
                 * (inputs.elevator_actual_rad - inputs.elevator_trim_rad);

@@ -1,0 +1,200 @@
+//! Assessing one O-PD feedback on the reduced linear pitch loop: margins with the
+//! actuator and the computer's delay, the θ/θ_ref lag seen by the outer loop, the sensor
+//! noise at the elevator, and the rate limit's limit cycle.
+
+use nalgebra::Complex;
+use serde::Serialize;
+
+use super::loop_model::{
+    log_grid, margins_of, LinearActuator, LinearPitchLaw, LoopInput, LoopOutput, Margins,
+    PitchLoopModel,
+};
+use super::rate_limit::rate_limit_cycles;
+use super::{PitchDesignRequest, PitchHardware, PitchSensorNoise};
+use crate::control::pitch::observer_pd::{ObserverPdGains, ObserverPdParameters};
+
+/// How the sensor noise reaches the elevator and the attitude (reduced linear loop).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct NoiseBudget {
+    /// Elevator-rate RMS from the white part (rad/s).
+    pub white_elevator_rate_rms_radps: f64,
+    /// Elevator-rate RMS from the sinusoid (rad/s): amplitude·|H(jω)|·ω/√2.
+    pub sinusoid_elevator_rate_rms_radps: f64,
+    /// Both together (rad/s).
+    pub elevator_rate_rms_radps: f64,
+    /// Gain from the sensor error to the elevator at the sinusoid's frequency (rad/rad).
+    pub sinusoid_to_elevator_gain: f64,
+    /// Amplitude of the true attitude's answer to the sinusoid (rad).
+    pub pitch_sinusoid_amplitude_rad: f64,
+    /// RMS of the true attitude's answer to the white part (rad).
+    pub pitch_white_rms_rad: f64,
+}
+
+/// What a candidate feedback achieves on the reduced linear loop.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FeedbackAssessment {
+    /// The O-PD parameters assessed.
+    pub parameters: ObserverPdParameters,
+    /// K_P, K_D from them.
+    pub gains: ObserverPdGains,
+    /// Margins at the elevator command.
+    pub margins: Margins,
+    /// Phase lag of θ/θ_ref at the outer loop's crossover (deg, positive lagging).
+    pub outer_loop_lag_deg: f64,
+    /// Noise at the elevator and the attitude.
+    pub noise: NoiseBudget,
+    /// Largest real part of the closed loop's eigenvalues (1/s).
+    pub closed_loop_max_real_part: f64,
+    /// Smallest elevator-command amplitude (rad) of a limit cycle the rate limit can
+    /// sustain ([`rate_limit_cycles`]); infinite when none is predicted or there is no
+    /// rate limit.
+    pub limit_cycle_amplitude_rad: f64,
+}
+
+/// Assesses one O-PD feedback on the reduced linear loop (see the module docs).
+pub fn assess_feedback(
+    hardware: &PitchHardware,
+    noise: &PitchSensorNoise,
+    parameters: &ObserverPdParameters,
+    outer_loop_crossover_radps: f64,
+) -> Option<FeedbackAssessment> {
+    let gains = ObserverPdGains::design(
+        parameters.settling_time_s,
+        parameters.damping_ratio,
+        hardware.plant.dqdot_dq_per_s,
+    )
+    .ok()?;
+    let law = LinearPitchLaw::ObserverPd {
+        gains,
+        observer: parameters.observer,
+        feedback: parameters.pitch_feedback,
+    };
+    let actuator = LinearActuator {
+        natural_frequency_radps: hardware.actuator.natural_frequency_rad_s,
+        damping_ratio: hardware.actuator.damping_ratio,
+    };
+    let model = PitchLoopModel::new(hardware.plant, hardware.coupling, actuator, &law);
+    let delayed =
+        |w: f64| model.loop_gain(w) * Complex::from_polar(1.0, -w * hardware.control_delay_s);
+    let omegas = log_grid(0.01, 300.0, 800);
+    let response: Vec<Complex<f64>> = omegas.iter().map(|&w| delayed(w)).collect();
+    let margins = margins_of(&omegas, &response);
+    let limit_cycle_amplitude_rad = match hardware.actuator.rate_limit_degps {
+        Some(rate) => rate_limit_cycles(delayed, rate.to_radians(), &log_grid(0.05, 50.0, 600))
+            .first()
+            .map_or(f64::INFINITY, |c| c.amplitude),
+        None => f64::INFINITY,
+    };
+    let lag = -model
+        .closed_loop(
+            LoopInput::Command,
+            LoopOutput::Pitch,
+            outer_loop_crossover_radps,
+        )
+        .arg()
+        .to_degrees();
+    let omega = noise.sinusoid_frequency_radps;
+    let to_elevator = model
+        .closed_loop(LoopInput::SensorNoise, LoopOutput::Elevator, omega)
+        .norm();
+    let white_rate = if noise.white_sigma_rad > 0.0 {
+        model.white_noise_rms(
+            LoopOutput::ElevatorRate,
+            noise.white_sigma_rad,
+            noise.sample_interval_s,
+        )
+    } else {
+        0.0
+    };
+    let sinusoid_rate = noise.sinusoid_amplitude_rad * to_elevator * omega / 2f64.sqrt();
+    let white_pitch = if noise.white_sigma_rad > 0.0 {
+        model.white_noise_rms(
+            LoopOutput::Pitch,
+            noise.white_sigma_rad,
+            noise.sample_interval_s,
+        )
+    } else {
+        0.0
+    };
+    let pitch_sinusoid = noise.sinusoid_amplitude_rad
+        * model
+            .closed_loop(LoopInput::SensorNoise, LoopOutput::Pitch, omega)
+            .norm();
+    Some(FeedbackAssessment {
+        parameters: *parameters,
+        gains,
+        margins,
+        outer_loop_lag_deg: lag,
+        noise: NoiseBudget {
+            white_elevator_rate_rms_radps: white_rate,
+            sinusoid_elevator_rate_rms_radps: sinusoid_rate,
+            elevator_rate_rms_radps: white_rate.hypot(sinusoid_rate),
+            sinusoid_to_elevator_gain: to_elevator,
+            pitch_sinusoid_amplitude_rad: pitch_sinusoid,
+            pitch_white_rms_rad: white_pitch,
+        },
+        closed_loop_max_real_part: model.closed_loop_max_real_part(),
+        limit_cycle_amplitude_rad,
+    })
+}
+
+/// How far a candidate is from meeting each requirement: (field, achieved, required,
+/// shortfall ≥ 0 as a fraction of the requirement).
+pub(super) fn shortfalls(
+    candidate: &FeedbackAssessment,
+    request: &PitchDesignRequest,
+    rate_limit_radps: f64,
+    travel_rad: f64,
+) -> [(&'static str, f64, f64, f64); 5] {
+    let cycle_ratio = candidate.limit_cycle_amplitude_rad / travel_rad;
+    let pm = candidate
+        .margins
+        .phase_margin_deg
+        .unwrap_or(f64::NEG_INFINITY);
+    let gm = candidate.margins.gain_margin_db.unwrap_or(f64::INFINITY);
+    let noise_fraction = candidate.noise.elevator_rate_rms_radps / rate_limit_radps;
+    let short = |achieved: f64, required: f64, larger_is_better: bool| {
+        let gap = if larger_is_better {
+            required - achieved
+        } else {
+            achieved - required
+        };
+        (gap / required.abs().max(1e-9)).max(0.0)
+    };
+    [
+        (
+            "min_phase_margin_deg",
+            pm,
+            request.min_phase_margin_deg,
+            short(pm, request.min_phase_margin_deg, true),
+        ),
+        (
+            "min_gain_margin_db",
+            gm,
+            request.min_gain_margin_db,
+            short(gm, request.min_gain_margin_db, true),
+        ),
+        (
+            "max_outer_loop_lag_deg",
+            candidate.outer_loop_lag_deg,
+            request.max_outer_loop_lag_deg,
+            short(
+                candidate.outer_loop_lag_deg,
+                request.max_outer_loop_lag_deg,
+                false,
+            ),
+        ),
+        (
+            "max_noise_rate_fraction",
+            noise_fraction,
+            request.max_noise_rate_fraction,
+            short(noise_fraction, request.max_noise_rate_fraction, false),
+        ),
+        (
+            "min_limit_cycle_travel_ratio",
+            cycle_ratio,
+            request.min_limit_cycle_travel_ratio,
+            short(cycle_ratio, request.min_limit_cycle_travel_ratio, true),
+        ),
+    ]
+}

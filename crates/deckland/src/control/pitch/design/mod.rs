@@ -1,0 +1,354 @@
+//! O-PD design for the real stabilator: gains, observer bandwidth and command shaping
+//! chosen from the elevator's rate and travel, the sensor noise and the loop margins with
+//! the actuator in the loop (docs/stabilator-design.md; docs/model.md §2.6, §3.3, §4–5).
+//!
+//! The paper's rule (Eq. 31–34) picks K_P, K_D from a settling time alone and ignores the
+//! elevator. Here the structure stays the paper's — augmented observer, PD on the
+//! attitude error, cancellation of the estimated disturbance (Eq. 30–36) — and three
+//! things are designed for the hardware:
+//!
+//! 1. **Command shaping.** A θ_ref step is flown as the jerk-limited trajectory of
+//!    [`JerkLimitedStep`] with the O-PD's feed-forward
+//!    ([`super::command_shaping::reference_equivalent_control`]). Its jerk and
+//!    acceleration bounds come from the elevator: the feed-forward elevator
+//!    δ_ff = (q̇_r − M_q·q_r)/M_δ may use a fraction η of the rate limit R and a fraction κ
+//!    of the travel to the nearer stop:
+//!    A = κ·|M_δ|·min(δe* − δ_min, δ_max − δe*),  J = η·R·|M_δ| − |M_q|·A.
+//!    **Criterion** (the one a request can fail): the command settling time of a design
+//!    step Δθ is the trajectory's duration plus the actuator's lag 2ζ_a/ω_a; a requested
+//!    settling time below it is refused, naming the rate limit (when the jerk bound sets
+//!    the duration) or the stop (when the acceleration bound does).
+//! 2. **Feedback.** The error dynamics' settling time T_2% (ζ = 1), the observer's ε and
+//!    the attitude fed back (measured or estimated) are searched on a grid; a candidate
+//!    is admissible when, on the reduced linear loop with the actuator
+//!    ([`PitchLoopModel`]), the phase and gain margins at the elevator command meet their
+//!    targets, the closed loop θ/θ_ref lags the outer (sink-rate) loop's crossover by no
+//!    more than the allowed phase, and the elevator rate driven by the sensor noise (its
+//!    white part and its sinusoid) stays within a fraction of the rate limit, and the
+//!    describing function of the rate limit ([`rate_limit`])
+//!    predicts no limit cycle below a multiple of the travel to the nearer stop (the
+//!    smallest such cycle is the excitation threshold of a rate-limit oscillation; the
+//!    default multiple 3 separates the gains that diverged in adverse approaches from
+//!    those that did not, docs/stabilator-design.md). Among the admissible candidates
+//!    the fastest error dynamics (smallest T_2%) win, then the least noise-driven
+//!    elevator rate.
+//! 3. **Refusal.** When no candidate is admissible the error names the requirement that
+//!    failed for the candidate closest to meeting all of them.
+
+use serde::{Deserialize, Serialize};
+use thiserror::Error;
+
+use super::command_shaping::JerkLimitedStep;
+use super::observer_pd::{ObserverPdParameters, PitchFeedback};
+use super::PitchPlantDerivatives;
+use crate::aircraft::ElevatorActuatorParameters;
+use crate::estimation::ObserverParameters;
+use crate::sensors::PitchNoiseParameters;
+
+mod assessment;
+mod command;
+pub mod loop_model;
+pub mod rate_limit;
+#[cfg(test)]
+mod tests;
+
+use assessment::shortfalls;
+pub use assessment::{assess_feedback, FeedbackAssessment, NoiseBudget};
+pub use command::{command_bounds, design_command, nearer_stop_travel_rad};
+use loop_model::AngleOfAttackCoupling;
+
+/// The hardware the pitch loop flies: elevator actuator (with its rate limit and stops),
+/// trim elevator and the pitch-plant derivatives at trim.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PitchHardware {
+    /// The elevator actuator: dynamics, stops and rate limit (docs/model.md §2.6).
+    pub actuator: ElevatorActuatorParameters,
+    /// Trim elevator δe* (rad).
+    pub elevator_trim_rad: f64,
+    /// ∂q̇/∂q and ∂q̇/∂δe at trim.
+    pub plant: PitchPlantDerivatives,
+    /// The angle-of-attack coupling at trim, which the observer must estimate as a
+    /// disturbance; `None` assesses the loop on the observer's own model.
+    pub coupling: Option<AngleOfAttackCoupling>,
+    /// Equivalent delay of a sampled flight-control computer (s): half a frame for the
+    /// zero-order hold plus the computing delay (one 12.5-ms frame at 80 Hz gives
+    /// 18.75 ms); 0 for the continuous controller of the simulation.
+    pub control_delay_s: f64,
+}
+
+/// The pitch-measurement error the loop must live with (docs/model.md §3.3).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PitchSensorNoise {
+    /// Standard deviation of the white part, drawn every sample (rad).
+    pub white_sigma_rad: f64,
+    /// Interval at which the white part is drawn (s): the control step.
+    pub sample_interval_s: f64,
+    /// Amplitude of the sinusoidal part (rad).
+    pub sinusoid_amplitude_rad: f64,
+    /// Frequency of the sinusoidal part (rad/s).
+    pub sinusoid_frequency_radps: f64,
+}
+
+impl PitchSensorNoise {
+    /// The noise of a scenario's sensor read every `control_interval_s` seconds (zero
+    /// when the noise is switched off).
+    pub fn from_parameters(noise: &PitchNoiseParameters, control_interval_s: f64) -> Self {
+        let on = if noise.enabled { 1.0 } else { 0.0 };
+        Self {
+            white_sigma_rad: on * noise.white_noise_sigma_rad,
+            sample_interval_s: control_interval_s,
+            sinusoid_amplitude_rad: on * noise.sinusoid_amplitude_rad,
+            sinusoid_frequency_radps: noise.sinusoid_frequency_radps,
+        }
+    }
+}
+
+/// What the design must achieve; [`Default`] gives the targets of issue 11.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct PitchDesignRequest {
+    /// Largest pitch step the loop must fly without saturating (deg); default 5.
+    pub design_step_deg: f64,
+    /// Requested settling time of the design step (s); `None`: the fastest allowed.
+    pub command_settling_time_s: Option<f64>,
+    /// Share η of the rate limit the shaped command may use (–); default 0.75.
+    pub command_rate_fraction: f64,
+    /// Share κ of the travel to the nearer stop the shaped command may use (–); 0.8.
+    pub command_travel_fraction: f64,
+    /// Smallest phase margin at the elevator command (deg); default 45.
+    pub min_phase_margin_deg: f64,
+    /// Smallest gain margin at the elevator command (dB); default 6.
+    pub min_gain_margin_db: f64,
+    /// Largest noise-driven elevator-rate RMS as a share of the rate limit (–); 0.25.
+    pub max_noise_rate_fraction: f64,
+    /// Smallest elevator-command amplitude of a rate-limit limit cycle predicted by the
+    /// describing function, as a multiple of the travel to the nearer stop (–); default 3.
+    pub min_limit_cycle_travel_ratio: f64,
+    /// Crossover of the loop around the pitch loop (sink rate), rad/s; default 1.2.
+    pub outer_loop_crossover_radps: f64,
+    /// Largest phase lag of θ/θ_ref at that frequency (deg); default 60 (the sink-rate
+    /// loop then keeps about 30° of phase margin, docs/stabilator-design.md).
+    pub max_outer_loop_lag_deg: f64,
+    /// Observer gains k1, k2, k3 and exponent α1 (ε is designed); docs/model.md §4 defaults.
+    pub observer: ObserverParameters,
+}
+
+impl Default for PitchDesignRequest {
+    fn default() -> Self {
+        Self {
+            design_step_deg: 5.0,
+            command_settling_time_s: None,
+            command_rate_fraction: 0.75,
+            command_travel_fraction: 0.8,
+            min_phase_margin_deg: 45.0,
+            min_gain_margin_db: 6.0,
+            max_noise_rate_fraction: 0.25,
+            min_limit_cycle_travel_ratio: 3.0,
+            outer_loop_crossover_radps: 1.2,
+            max_outer_loop_lag_deg: 60.0,
+            observer: ObserverParameters::default(),
+        }
+    }
+}
+
+/// The designed pitch loop.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PitchDesign {
+    /// The feedback chosen, with its assessment.
+    pub feedback: FeedbackAssessment,
+    /// The design step's shaped trajectory (jerk, acceleration bounds inside).
+    pub command: JerkLimitedStep,
+    /// Its settling time: trajectory duration plus the actuator's lag 2ζ_a/ω_a (s).
+    pub command_settling_time_s: f64,
+}
+
+/// Why a request cannot be met by the hardware.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum PitchDesignError {
+    /// A request or hardware value is NaN or out of its range.
+    #[error("pitch design parameter `{field}` = {value} is out of range: expected {expected}")]
+    InvalidParameter {
+        /// The parameter's name.
+        field: &'static str,
+        /// The rejected value.
+        value: f64,
+        /// The allowed range, in words.
+        expected: &'static str,
+    },
+    /// The requested settling time is shorter than the hardware allows.
+    #[error(
+        "a {step_deg}° pitch step cannot settle in {requested_s:.3} s: `{limiting}` = \
+         {limit_value} allows no less than {minimum_s:.3} s (jerk-limited trajectory with \
+         {rate_fraction} of the rate limit and {travel_fraction} of the travel for the \
+         command, plus the actuator's lag)"
+    )]
+    SettlingTimeTooShort {
+        /// The design step (deg).
+        step_deg: f64,
+        /// The requested settling time (s).
+        requested_s: f64,
+        /// The shortest the hardware allows (s).
+        minimum_s: f64,
+        /// The hardware parameter that sets the minimum: the rate limit, or the stop.
+        limiting: &'static str,
+        /// Its value (deg/s or deg).
+        limit_value: f64,
+        /// Share of the rate limit given to the command.
+        rate_fraction: f64,
+        /// Share of the travel given to the command.
+        travel_fraction: f64,
+    },
+    /// No feedback on the search grid meets every requirement.
+    #[error(
+        "no O-PD feedback meets `{limiting}`: the best candidate reaches {best:.3}, the \
+         request asks for {required:.3}"
+    )]
+    NoFeasibleFeedback {
+        /// The request field that failed (for the candidate closest to success).
+        limiting: &'static str,
+        /// What that candidate achieves, in the field's unit.
+        best: f64,
+        /// What the request asks for.
+        required: f64,
+    },
+}
+
+/// Error-dynamics settling times T_2% searched (s).
+const SETTLING_TIMES_S: [f64; 14] = [
+    0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.2, 1.4, 1.6, 1.8, 2.0, 2.2, 2.5, 3.0,
+];
+/// Observer bandwidth parameters ε searched.
+const EPSILONS: [f64; 7] = [0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.5];
+
+pub(super) fn check(
+    field: &'static str,
+    value: f64,
+    ok: bool,
+    expected: &'static str,
+) -> Result<(), PitchDesignError> {
+    if value.is_finite() && ok {
+        Ok(())
+    } else {
+        Err(PitchDesignError::InvalidParameter {
+            field,
+            value,
+            expected,
+        })
+    }
+}
+
+/// Designs the O-PD for `hardware` and `noise` to meet `request` (module docs).
+pub fn design_observer_pd(
+    hardware: &PitchHardware,
+    noise: &PitchSensorNoise,
+    request: &PitchDesignRequest,
+) -> Result<PitchDesign, PitchDesignError> {
+    hardware
+        .plant
+        .validate()
+        .map_err(|_| PitchDesignError::InvalidParameter {
+            field: "dqdot_delevator_per_s2",
+            value: hardware.plant.dqdot_delevator_per_s2,
+            expected: "finite and nonzero (and a finite dqdot_dq_per_s)",
+        })?;
+    check(
+        "design_step_deg",
+        request.design_step_deg,
+        request.design_step_deg > 0.0 && request.design_step_deg <= 20.0,
+        "in (0, 20]",
+    )?;
+    check(
+        "command_rate_fraction",
+        request.command_rate_fraction,
+        request.command_rate_fraction > 0.0 && request.command_rate_fraction <= 1.0,
+        "in (0, 1]",
+    )?;
+    check(
+        "command_travel_fraction",
+        request.command_travel_fraction,
+        request.command_travel_fraction > 0.0 && request.command_travel_fraction <= 1.0,
+        "in (0, 1]",
+    )?;
+    check(
+        "max_noise_rate_fraction",
+        request.max_noise_rate_fraction,
+        request.max_noise_rate_fraction > 0.0,
+        "> 0",
+    )?;
+    check(
+        "outer_loop_crossover_radps",
+        request.outer_loop_crossover_radps,
+        request.outer_loop_crossover_radps > 0.0,
+        "> 0",
+    )?;
+    if let Some(t) = request.command_settling_time_s {
+        check("command_settling_time_s", t, t > 0.0, "> 0")?;
+    }
+    let (command, command_settling_time_s) = design_command(hardware, request)?;
+    let rate_limit_radps = hardware
+        .actuator
+        .rate_limit_degps
+        .map_or(f64::INFINITY, f64::to_radians);
+    let travel_rad = nearer_stop_travel_rad(hardware);
+    let mut best: Option<(f64, FeedbackAssessment)> = None;
+    let mut closest: Option<(f64, FeedbackAssessment)> = None;
+    for settling_time_s in SETTLING_TIMES_S {
+        for epsilon in EPSILONS {
+            for pitch_feedback in [PitchFeedback::ObserverEstimate, PitchFeedback::Measured] {
+                let parameters = ObserverPdParameters {
+                    settling_time_s,
+                    damping_ratio: 1.0,
+                    pitch_feedback,
+                    observer: ObserverParameters {
+                        epsilon,
+                        ..request.observer
+                    },
+                };
+                let Some(candidate) = assess_feedback(
+                    hardware,
+                    noise,
+                    &parameters,
+                    request.outer_loop_crossover_radps,
+                ) else {
+                    continue;
+                };
+                if candidate.closed_loop_max_real_part >= 0.0 {
+                    continue;
+                }
+                let gaps = shortfalls(&candidate, request, rate_limit_radps, travel_rad);
+                let total: f64 = gaps.iter().map(|g| g.3).sum();
+                if total == 0.0 {
+                    // Fastest first (T_2% dominates), then quietest.
+                    let score = settling_time_s * 1e3 + candidate.noise.elevator_rate_rms_radps;
+                    if best.is_none_or(|(s, _)| score < s) {
+                        best = Some((score, candidate));
+                    }
+                } else if closest.is_none_or(|(s, _)| total < s) {
+                    closest = Some((total, candidate));
+                }
+            }
+        }
+    }
+    if let Some((_, feedback)) = best {
+        return Ok(PitchDesign {
+            feedback,
+            command,
+            command_settling_time_s,
+        });
+    }
+    let Some((_, candidate)) = closest else {
+        return Err(PitchDesignError::NoFeasibleFeedback {
+            limiting: "closed-loop stability",
+            best: f64::NAN,
+            required: 0.0,
+        });
+    };
+    let worst = shortfalls(&candidate, request, rate_limit_radps, travel_rad)
+        .into_iter()
+        .fold(("", 0.0, 0.0, -1.0), |w, g| if g.3 > w.3 { g } else { w });
+    Err(PitchDesignError::NoFeasibleFeedback {
+        limiting: worst.0,
+        best: worst.1,
+        required: worst.2,
+    })
+}
