@@ -59,7 +59,7 @@ struct Row {
     x_m: f64,
     altitude_m: f64,
     hook_height_m: f64,
-    glide_path_height_m: f64,
+    glide_path_height_m: Option<f64>,
     glide_path_error_m: f64,
     landing_point_height_m: f64,
     airspeed_mps: f64,
@@ -68,7 +68,7 @@ struct Row {
     theta_command_deg: f64,
     theta_measured_deg: f64,
     climb_rate_mps: f64,
-    climb_rate_command_mps: f64,
+    climb_rate_command_mps: Option<f64>,
     elevator_deg: f64,
     elevator_command_deg: f64,
     thrust_n: f64,
@@ -117,6 +117,17 @@ fn series(samples: &[Signals], value: impl Fn(&Signals) -> f64) -> Vec<(f64, f64
     samples.iter().map(|s| (s.time_s, value(s))).collect()
 }
 
+/// Points (time, value) of a signal where it applies.
+fn series_where_applicable(
+    samples: &[Signals],
+    value: impl Fn(&Signals) -> Option<f64>,
+) -> Vec<(f64, f64)> {
+    samples
+        .iter()
+        .filter_map(|s| value(s).map(|v| (s.time_s, v)))
+        .collect()
+}
+
 /// The approach's figures, each with its file stem: `altitude`, `glide_path_error`
 /// (paper Fig. 14), `pitch` (Fig. 15), `controls`, `airspeed` and `wind`.
 pub(crate) fn figures(samples: &[Signals], title: &str) -> Vec<(&'static str, Figure)> {
@@ -129,7 +140,7 @@ pub(crate) fn figures(samples: &[Signals], title: &str) -> Vec<(&'static str, Fi
         )
         .series(
             "glide path (hook reference)",
-            series(samples, |s| s.path_height_m),
+            series_where_applicable(samples, |s| s.path_height_m),
         )
         .series("hook", series(samples, |s| s.hook_h_m))
         .series(
