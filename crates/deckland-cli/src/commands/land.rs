@@ -45,9 +45,9 @@ pub struct LandingReport<'a> {
     pub conditions: &'a str,
     /// Seed of the random streams.
     pub seed: u64,
-    /// Outcome name (`trap`, `bolter`, `ramp_strike`, `hard_landing`, `diverged`, `timeout`).
-    pub outcome: &'static str,
-    /// The run's summary (outcome, wire, touchdown, ramp clearance, glide-path error).
+    /// The run's summary: outcome (`trap`, `bolter`, `ramp_strike`, `hard_landing`,
+    /// `diverged`, `timeout`), wire, touchdown, ramp clearance, glide-path error. Its
+    /// keys are the document's own (flattened), so none may repeat a key above.
     #[serde(flatten)]
     pub summary: &'a RunSummary,
 }
@@ -238,7 +238,6 @@ pub fn fly_and_write(
         controller,
         conditions,
         seed: scenario.seed,
-        outcome: summary.outcome.name(),
         summary: &summary,
     };
     output.write_bytes(
@@ -272,8 +271,8 @@ pub fn fly_and_write(
 fn print_summary(report: &LandingReport, output: &OutputDir) {
     let s = report.summary;
     let outcome = match s.wire {
-        Some(wire) => format!("{} (wire {wire})", report.outcome),
-        None => report.outcome.to_string(),
+        Some(wire) => format!("{} (wire {wire})", s.outcome.name()),
+        None => s.outcome.name().to_string(),
     };
     println!(
         "Approach — {} pitch control, {} conditions, seed {}",
