@@ -5,7 +5,7 @@
 //! altitude against the glide path and the deck, the glide-path error (paper Fig. 14),
 //! pitch and pitch command (Fig. 15), elevator and thrust, airspeed, and the wind seen.
 
-use super::common::{Conditions, ControllerChoice, OutputArgs};
+use super::common::{check_set_up, seed_parser, Conditions, ControllerChoice, OutputArgs};
 use crate::output::OutputDir;
 use crate::plot::{Figure, Panel};
 use anyhow::{Context, Result};
@@ -25,8 +25,8 @@ pub struct LandArgs {
     /// `ideal` (none).
     #[arg(long, value_enum, default_value = "adverse")]
     pub conditions: Conditions,
-    /// Seed of every random stream.
-    #[arg(long, default_value_t = 1)]
+    /// Seed of every random stream, 0 to 2⁶³ − 1.
+    #[arg(long, default_value_t = 1, value_parser = seed_parser(), allow_negative_numbers = true)]
     pub seed: u64,
     /// Fly without deck-motion compensation (track the mean deck to the end).
     #[arg(long)]
@@ -261,44 +261,50 @@ pub fn fly_and_write(
         figure.save(output, stem)?;
     }
     if json {
-        println!("{}", serde_json::to_string_pretty(&report)?);
+        outln!("{}", serde_json::to_string_pretty(&report)?)?;
     } else {
-        print_summary(&report, output);
+        print_summary(&report, output)?;
     }
     Ok(summary)
 }
 
-fn print_summary(report: &LandingReport, output: &OutputDir) {
+fn print_summary(report: &LandingReport, output: &OutputDir) -> Result<()> {
     let s = report.summary;
     let outcome = match s.wire {
         Some(wire) => format!("{} (wire {wire})", s.outcome.name()),
         None => s.outcome.name().to_string(),
     };
-    println!(
+    outln!(
         "Approach — {} pitch control, {} conditions, seed {}",
-        report.controller, report.conditions, report.seed
-    );
-    println!("  outcome               {outcome}");
+        report.controller,
+        report.conditions,
+        report.seed
+    )?;
+    outln!("  outcome               {outcome}")?;
     if let Some(reason) = &s.reason {
-        println!("  reason                {reason}");
+        outln!("  reason                {reason}")?;
     }
     if let Some(t) = &s.touchdown {
-        println!(
+        outln!(
             "  touchdown             {:.2} s, {:+.1} m from the aim point (positive forward)",
-            t.time_s, t.distance_from_aim_m
-        );
-        println!(
+            t.time_s,
+            t.distance_from_aim_m
+        )?;
+        outln!(
             "  sink rate at deck     {:.2} m/s   pitch {:.1}°   airspeed {:.1} m/s",
-            t.sink_rate_mps, t.pitch_deg, t.airspeed_mps
-        );
+            t.sink_rate_mps,
+            t.pitch_deg,
+            t.airspeed_mps
+        )?;
     }
     if let Some(c) = s.ramp_clearance_m {
-        println!("  hook over the ramp    {c:.2} m");
+        outln!("  hook over the ramp    {c:.2} m")?;
     }
     if let (Some(rms), Some(max)) = (s.glide_path_error_rms_m, s.glide_path_error_max_m) {
-        println!("  glide-path error      RMS {rms:.2} m, max {max:.2} m");
+        outln!("  glide-path error      RMS {rms:.2} m, max {max:.2} m")?;
     }
-    println!("  results in            {}", output.path().display());
+    outln!("  results in            {}", output.path().display())?;
+    Ok(())
 }
 
 /// Runs `deckland land`.
@@ -308,6 +314,7 @@ pub fn run(args: &LandArgs) -> Result<()> {
     if args.no_deck_compensation {
         scenario.control.flight_path.deck_motion_compensation = false;
     }
+    check_set_up(&scenario)?;
     let output = OutputDir::prepare("land", args.output.out.as_deref(), args.output.force)?;
     fly_and_write(
         &scenario,

@@ -194,7 +194,7 @@ impl Progress {
                 bar.set_position(self.done as u64);
                 bar.set_message(what.to_string());
             }
-            None => eprintln!("[{}/{}] {what}", self.done + 1, self.total),
+            None => warnln!("[{}/{}] {what}", self.done + 1, self.total),
         }
         self.done += 1;
     }
@@ -556,16 +556,16 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
     output.write_bytes("REPORT.md", report::markdown(&findings, &rows).as_bytes())?;
     progress.finish();
 
-    println!(
+    outln!(
         "Reproduced {} figures and a table of {} numbers in {:.1} s{}",
         findings.figures.len(),
         rows.len(),
         started.elapsed().as_secs_f64(),
         if args.quick { " (quick run)" } else { "" }
-    );
-    println!(
+    )?;
+    outln!(
         "  report                {}",
         output.path().join("REPORT.md").display()
-    );
+    )?;
     Ok(())
 }
