@@ -1,12 +1,15 @@
 //! The `deckland` command line: trim, linearise, simulate and plot carrier landings.
 
+#[macro_use]
+mod output;
 mod commands;
 mod html;
-mod output;
+mod interrupt;
 mod plot;
 
 use anyhow::Result;
 use clap::{Parser, Subcommand};
+use output::StdoutError;
 use std::process::ExitCode;
 
 /// Simulate and control the automatic landing of an unmanned F/A-18 on a moving carrier.
@@ -60,12 +63,57 @@ fn run(cli: &Cli) -> Result<()> {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    interrupt::install();
     match run(&cli) {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {
-            // `{:#}` prints the whole chain of causes on one line, without a backtrace.
-            eprintln!("error: {error:#}");
+            // A reader that went away (`deckland trim | head -1`) ends the command
+            // quietly, as Unix tools do; results already written to files stay.
+            if error.chain().any(|cause| {
+                cause
+                    .downcast_ref()
+                    .is_some_and(StdoutError::is_closed_pipe)
+            }) {
+                return ExitCode::SUCCESS;
+            }
+            warnln!("error: {}", error_chain(&error));
             ExitCode::FAILURE
         }
+    }
+}
+
+/// The error and its causes on one line, without a backtrace; a cause whose words the
+/// message before it already holds (a library error that shows its source) is left out,
+/// so nothing is printed twice.
+fn error_chain(error: &anyhow::Error) -> String {
+    let mut line = String::new();
+    for cause in error.chain() {
+        let text = cause.to_string();
+        if !line.contains(&text) {
+            if !line.is_empty() {
+                line.push_str(": ");
+            }
+            line.push_str(&text);
+        }
+    }
+    line
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Regression (issue 14, class 8): a trim error was printed twice, once by the
+    /// set-up error that shows its source and once as that source.
+    #[test]
+    fn regression_a_cause_already_in_the_message_is_printed_once() {
+        let inner = std::io::Error::other("trim needs total thrust beyond the limit");
+        let outer = anyhow::Error::new(inner)
+            .context("cannot trim: trim needs total thrust beyond the limit")
+            .context("cannot set up the approach");
+        assert_eq!(
+            error_chain(&outer),
+            "cannot set up the approach: cannot trim: trim needs total thrust beyond the limit"
+        );
     }
 }

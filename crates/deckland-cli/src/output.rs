@@ -1,67 +1,211 @@
-//! Output folders and atomic file writes, shared by every command.
+//! Output folders, atomic file writes and standard output, shared by every command.
 //!
 //! Each run writes into its own folder: by default a new `runs/<command>-<UTC timestamp>`
-//! (with `-2`, `-3`, … appended if that exists already); an explicit `--out` folder that
-//! already holds files is refused unless `--force`, which then overwrites the files of the
-//! same names (other files in it are left alone). Every file is written atomically: to a
-//! temporary file in the same folder, flushed to disk, then renamed over the final name,
-//! so a crash never leaves a half-written file under a result's name.
+//! (with `-2`, `-3`, … appended if that exists already), or the `--out` folder, which
+//! must be a folder the user owns and either be new, be empty, or (with `--force`) hold
+//! the results of an earlier deckland run. Every output folder holds a list of the files
+//! deckland wrote there ([`MANIFEST`]); `--force` replaces exactly those — the files of
+//! the earlier run are removed, so no other command's results stay mixed with the new
+//! ones — and never touches a file deckland did not write. A folder that holds files but
+//! no list (`/dev`, a home folder, results of another tool) is refused even with
+//! `--force`.
+//!
+//! Every file is written atomically: to a temporary file `.partial-<pid>-<name>` in the
+//! same folder, flushed to disk, then renamed over the final name, so a crash never
+//! leaves a half-written file under a result's name. A temporary file left by a killed
+//! run (SIGKILL cannot be caught) is removed by the next run that prepares an output
+//! folder beside it ([`remove_stale_temporary_files`]); Ctrl-C and SIGTERM remove the
+//! current one before exiting ([`crate::interrupt`]).
+//!
+//! Standard output is written with [`print_stdout`] (through `outln!` and `out!`), which
+//! returns an error instead of panicking: a closed pipe ends the command quietly (see
+//! `main`), a full device ends it with a message.
 
 use std::fs;
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::time::{SystemTime, UNIX_EPOCH};
+use std::sync::Mutex;
+use std::time::{Duration, SystemTime, UNIX_EPOCH};
 
 use anyhow::{bail, Context, Result};
 
 /// Folder under which runs go when no `--out` is given.
 pub const DEFAULT_RUNS_FOLDER: &str = "runs";
 
+/// The list of the files deckland wrote into an output folder: its first line names the
+/// command, each further line one file.
+pub const MANIFEST: &str = ".deckland-outputs";
+
+/// Prefix of the temporary files of atomic writes.
+const TEMPORARY_PREFIX: &str = ".partial-";
+
+/// A temporary file older than this is stale whatever its process (s): a write takes
+/// seconds, never an hour.
+const STALE_AFTER: Duration = Duration::from_secs(3600);
+
+/// Writes `args` to standard output and flushes it. A closed pipe or a full device is an
+/// error ([`StdoutError`]), never a panic as with `print!`.
+pub fn print_stdout(args: std::fmt::Arguments) -> Result<(), StdoutError> {
+    let mut stdout = std::io::stdout().lock();
+    stdout
+        .write_fmt(args)
+        .and_then(|()| stdout.flush())
+        .map_err(StdoutError)
+}
+
+/// Writes `args` to standard error, ignoring failure: a message about a problem must not
+/// itself become one (`eprint!` panics when standard error is closed).
+pub fn print_stderr(args: std::fmt::Arguments) {
+    let mut stderr = std::io::stderr().lock();
+    let _ = stderr.write_fmt(args).and_then(|()| stderr.flush());
+}
+
+/// Standard output could not be written.
+#[derive(Debug)]
+pub struct StdoutError(pub std::io::Error);
+
+impl std::fmt::Display for StdoutError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "cannot write to standard output: {}", self.0)
+    }
+}
+
+impl std::error::Error for StdoutError {}
+
+impl StdoutError {
+    /// Whether the reader went away (a closed pipe, as in `deckland trim | head -1`).
+    pub fn is_closed_pipe(&self) -> bool {
+        self.0.kind() == std::io::ErrorKind::BrokenPipe
+    }
+}
+
+/// `println!` that returns a [`StdoutError`] instead of panicking.
+macro_rules! outln {
+    () => {
+        $crate::output::print_stdout(format_args!("\n"))
+    };
+    ($($arg:tt)*) => {
+        $crate::output::print_stdout(format_args!("{}\n", format_args!($($arg)*)))
+    };
+}
+
+/// `print!` that returns a [`StdoutError`] instead of panicking.
+macro_rules! out {
+    ($($arg:tt)*) => {
+        $crate::output::print_stdout(format_args!($($arg)*))
+    };
+}
+
+/// `eprintln!` that never panics.
+macro_rules! warnln {
+    ($($arg:tt)*) => {
+        $crate::output::print_stderr(format_args!("{}\n", format_args!($($arg)*)))
+    };
+}
+
 /// The folder a run writes its results into.
-#[derive(Debug, Clone)]
+#[derive(Debug)]
 pub struct OutputDir {
     path: PathBuf,
+    command: String,
+    /// The files written by this run, in order (the manifest's lines).
+    written: Mutex<Vec<String>>,
 }
 
 impl OutputDir {
-    /// Prepares the output folder of `command`: `explicit` if given (refused if it already
-    /// holds files, unless `force`), else a new `runs/<command>-<UTC timestamp>`.
+    /// Prepares the output folder of `command`: `explicit` if given, else a new
+    /// `runs/<command>-<UTC timestamp>`. An explicit folder must be new, empty, or — with
+    /// `force` — hold an earlier deckland run's results, which are removed; it must be
+    /// a folder the user owns. Stale temporary files of killed runs are removed.
     pub fn prepare(command: &str, explicit: Option<&Path>, force: bool) -> Result<Self> {
-        match explicit {
-            Some(path) => Self::prepare_explicit(path, force),
+        let output = match explicit {
+            Some(path) => Self::prepare_explicit(command, path, force)?,
             None => {
-                Self::prepare_default(Path::new(DEFAULT_RUNS_FOLDER), command, SystemTime::now())
+                Self::prepare_default(command, Path::new(DEFAULT_RUNS_FOLDER), SystemTime::now())?
             }
+        };
+        output.write_manifest()?;
+        Ok(output)
+    }
+
+    fn new(command: &str, path: PathBuf) -> Self {
+        Self {
+            path,
+            command: command.to_owned(),
+            written: Mutex::new(Vec::new()),
         }
     }
 
-    fn prepare_explicit(path: &Path, force: bool) -> Result<Self> {
-        if path.exists() {
-            if !path.is_dir() {
-                bail!("output path {} exists and is not a folder", path.display());
+    fn prepare_explicit(command: &str, path: &Path, force: bool) -> Result<Self> {
+        let shown = path.display();
+        let metadata = match fs::metadata(path) {
+            Ok(metadata) => metadata,
+            Err(error) if error.kind() == std::io::ErrorKind::NotFound => {
+                fs::create_dir_all(path)
+                    .with_context(|| format!("cannot create output folder {shown}"))?;
+                return Ok(Self::new(command, path.to_path_buf()));
             }
-            let holds_files = fs::read_dir(path)
-                .with_context(|| format!("cannot read output folder {}", path.display()))?
-                .next()
-                .is_some();
-            if holds_files && !force {
-                bail!(
-                    "output folder {} already holds results; choose another with --out or \
-                     pass --force to overwrite",
-                    path.display()
-                );
+            Err(error) => {
+                return Err(error).with_context(|| format!("cannot use --out {shown}"));
+            }
+        };
+        if !metadata.is_dir() {
+            bail!("--out {shown} exists and is not a folder");
+        }
+        check_owned_by_user(path, &metadata)?;
+        remove_stale_temporary_files(path);
+        let entries: Vec<String> = fs::read_dir(path)
+            .with_context(|| format!("cannot read output folder {shown}"))?
+            .filter_map(|entry| entry.ok())
+            .map(|entry| entry.file_name().to_string_lossy().into_owned())
+            .collect();
+        // Empty, or holding only the list of a run that wrote nothing: use it.
+        if entries.iter().all(|name| name == MANIFEST) {
+            return Ok(Self::new(command, path.to_path_buf()));
+        }
+        let Some((previous_command, previous_files)) = read_manifest(path) else {
+            bail!(
+                "--out {shown} holds files that deckland did not write (it has no {MANIFEST} \
+                 list), and --force replaces only an earlier deckland run's results; choose a \
+                 new or empty folder"
+            );
+        };
+        if !force {
+            bail!(
+                "output folder {shown} already holds the results of `deckland \
+                 {previous_command}`; choose another with --out or pass --force to replace them"
+            );
+        }
+        // Remove the earlier run's own files (and only those): its results must not stay
+        // mixed with the new ones.
+        for name in previous_files.iter().filter(|n| is_plain_file_name(n)) {
+            match fs::remove_file(path.join(name)) {
+                Ok(()) => {}
+                Err(error) if error.kind() == std::io::ErrorKind::NotFound => {}
+                Err(error) => {
+                    return Err(error).with_context(|| {
+                        format!(
+                            "cannot remove the earlier result {}",
+                            path.join(name).display()
+                        )
+                    })
+                }
             }
         }
-        fs::create_dir_all(path)
-            .with_context(|| format!("cannot create output folder {}", path.display()))?;
-        Ok(Self {
-            path: path.to_path_buf(),
-        })
+        Ok(Self::new(command, path.to_path_buf()))
     }
 
-    fn prepare_default(runs: &Path, command: &str, now: SystemTime) -> Result<Self> {
+    fn prepare_default(command: &str, runs: &Path, now: SystemTime) -> Result<Self> {
         fs::create_dir_all(runs)
             .with_context(|| format!("cannot create folder {}", runs.display()))?;
+        // Temporary files of runs killed earlier, in their own folders.
+        if let Ok(entries) = fs::read_dir(runs) {
+            for entry in entries.filter_map(|e| e.ok()) {
+                if entry.file_type().is_ok_and(|t| t.is_dir()) {
+                    remove_stale_temporary_files(&entry.path());
+                }
+            }
+        }
         let stem = format!("{command}-{}", utc_timestamp(now));
         for attempt in 1..1000 {
             let name = if attempt == 1 {
@@ -73,7 +217,7 @@ impl OutputDir {
             // create_dir (not create_dir_all) fails if the folder exists: a fresh folder
             // even when two runs start within the same second.
             match fs::create_dir(&path) {
-                Ok(()) => return Ok(Self { path }),
+                Ok(()) => return Ok(Self::new(command, path)),
                 Err(error) if error.kind() == std::io::ErrorKind::AlreadyExists => continue,
                 Err(error) => {
                     return Err(error)
@@ -103,27 +247,161 @@ impl OutputDir {
 
     /// Lets `write` create `file_name`'s content at a temporary path in the folder (with the
     /// same extension, for writers that choose the format by it), then flushes it to disk
-    /// and renames it into place; the temporary file is removed if `write` fails.
+    /// and renames it into place; the temporary file is removed if `write` fails, and by
+    /// the interrupt handler if the command is interrupted meanwhile.
     pub fn write_with(
         &self,
         file_name: &str,
         write: impl FnOnce(&Path) -> Result<()>,
     ) -> Result<PathBuf> {
         let final_path = self.path.join(file_name);
-        let temporary = self
-            .path
-            .join(format!(".partial-{}-{file_name}", std::process::id()));
+        let temporary = self.path.join(format!(
+            "{TEMPORARY_PREFIX}{}-{file_name}",
+            std::process::id()
+        ));
+        crate::interrupt::register_temporary_file(&temporary);
         let result = write(&temporary).and_then(|()| {
             fs::File::open(&temporary)?.sync_all()?;
             fs::rename(&temporary, &final_path)?;
             Ok(())
         });
-        if let Err(error) = result {
+        if result.is_err() {
             let _ = fs::remove_file(&temporary);
-            return Err(error).with_context(|| format!("cannot write {}", final_path.display()));
         }
+        crate::interrupt::unregister_temporary_file(&temporary);
+        result.with_context(|| format!("cannot write {}", final_path.display()))?;
+        self.record_written(file_name)?;
         Ok(final_path)
     }
+
+    /// Adds `file_name` to the folder's list of deckland's files.
+    fn record_written(&self, file_name: &str) -> Result<()> {
+        {
+            let mut written = self
+                .written
+                .lock()
+                .map_err(|_| anyhow::anyhow!("the list of written files is poisoned"))?;
+            if !written.iter().any(|n| n == file_name) {
+                written.push(file_name.to_owned());
+            }
+        }
+        self.write_manifest()
+    }
+
+    /// Writes the list of the files written so far (atomically, like every result).
+    fn write_manifest(&self) -> Result<()> {
+        let written = self
+            .written
+            .lock()
+            .map_err(|_| anyhow::anyhow!("the list of written files is poisoned"))?
+            .clone();
+        let mut text = format!("deckland {}\n", self.command);
+        for name in &written {
+            text.push_str(name);
+            text.push('\n');
+        }
+        let final_path = self.path.join(MANIFEST);
+        let temporary = self.path.join(format!(
+            "{TEMPORARY_PREFIX}{}-{MANIFEST}",
+            std::process::id()
+        ));
+        crate::interrupt::register_temporary_file(&temporary);
+        let result = fs::write(&temporary, text).and_then(|()| fs::rename(&temporary, &final_path));
+        if result.is_err() {
+            let _ = fs::remove_file(&temporary);
+        }
+        crate::interrupt::unregister_temporary_file(&temporary);
+        result.with_context(|| format!("cannot write {}", final_path.display()))
+    }
+}
+
+/// The command and the files listed in `folder`'s manifest, if it has one.
+fn read_manifest(folder: &Path) -> Option<(String, Vec<String>)> {
+    let text = fs::read_to_string(folder.join(MANIFEST)).ok()?;
+    let mut lines = text.lines();
+    let command = lines.next()?.strip_prefix("deckland ")?.to_owned();
+    Some((command, lines.map(str::to_owned).collect()))
+}
+
+/// Whether `name` is a bare file name (no separator, not `.` or `..`): a manifest line
+/// never reaches outside its folder.
+fn is_plain_file_name(name: &str) -> bool {
+    !name.is_empty()
+        && name != "."
+        && name != ".."
+        && name != MANIFEST
+        && !name.contains('/')
+        && !name.contains('\\')
+}
+
+/// Refuses a folder that belongs to another user.
+#[cfg(unix)]
+fn check_owned_by_user(path: &Path, metadata: &fs::Metadata) -> Result<()> {
+    use std::os::unix::fs::MetadataExt;
+    let user = nix::unistd::geteuid().as_raw();
+    if metadata.uid() != user {
+        bail!(
+            "--out {} belongs to user id {}, not to you (user id {user}); choose a folder \
+             of your own",
+            path.display(),
+            metadata.uid()
+        );
+    }
+    Ok(())
+}
+
+/// Refuses a folder that belongs to another user (not checked off Unix).
+#[cfg(not(unix))]
+fn check_owned_by_user(_path: &Path, _metadata: &fs::Metadata) -> Result<()> {
+    Ok(())
+}
+
+/// Removes the temporary files in `folder` left by runs that were killed: those whose
+/// process no longer runs, and any older than an hour. Failures are ignored (a file that
+/// cannot be removed is no worse than before).
+pub fn remove_stale_temporary_files(folder: &Path) {
+    let Ok(entries) = fs::read_dir(folder) else {
+        return;
+    };
+    for entry in entries.filter_map(|e| e.ok()) {
+        let name = entry.file_name().to_string_lossy().into_owned();
+        let Some(rest) = name.strip_prefix(TEMPORARY_PREFIX) else {
+            continue;
+        };
+        let pid = rest
+            .split_once('-')
+            .and_then(|(pid, _)| pid.parse::<u32>().ok());
+        let old = entry
+            .metadata()
+            .and_then(|m| m.modified())
+            .ok()
+            .and_then(|modified| modified.elapsed().ok())
+            .is_some_and(|age| age > STALE_AFTER);
+        let orphaned = pid.is_none_or(|pid| pid != std::process::id() && !process_is_running(pid));
+        if old || orphaned {
+            let _ = fs::remove_file(entry.path());
+        }
+    }
+}
+
+/// Whether a process `pid` runs (signal 0 probes without sending anything).
+#[cfg(unix)]
+fn process_is_running(pid: u32) -> bool {
+    use nix::errno::Errno;
+    let Ok(raw) = i32::try_from(pid) else {
+        return false;
+    };
+    match nix::sys::signal::kill(nix::unistd::Pid::from_raw(raw), None) {
+        Ok(()) => true,
+        Err(Errno::ESRCH) => false,
+        Err(_) => true, // EPERM: it runs, as another user
+    }
+}
+
+/// Whether a process `pid` runs: unknown off Unix, so only age makes a file stale.
+#[cfg(not(unix))]
+fn process_is_running(_pid: u32) -> bool {
+    true
 }
 
 /// `time` as a compact UTC timestamp, e.g. `20261121T084316Z`.
@@ -166,7 +444,6 @@ pub fn civil_from_days(days: i64) -> (i64, u32, u32) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use std::time::Duration;
 
     #[test]
     fn civil_from_days_matches_known_dates() {
@@ -190,6 +467,16 @@ mod tests {
         path
     }
 
+    fn names(path: &Path) -> Vec<String> {
+        let mut names: Vec<String> = fs::read_dir(path)
+            .expect("read")
+            .filter_map(|e| e.ok())
+            .map(|e| e.file_name().to_string_lossy().into_owned())
+            .collect();
+        names.sort();
+        names
+    }
+
     #[test]
     fn explicit_folder_with_results_is_refused_without_force() {
         let path = scratch("explicit");
@@ -202,13 +489,42 @@ mod tests {
             fs::read_to_string(path.join("a.csv")).expect("read"),
             "x\n2\n"
         );
-        let leftovers: Vec<_> = fs::read_dir(&path)
-            .expect("read")
-            .filter_map(|e| e.ok())
-            .filter(|e| e.file_name().to_string_lossy().starts_with(".partial"))
-            .collect();
-        assert!(leftovers.is_empty());
+        assert_eq!(names(&path), [MANIFEST, "a.csv"]);
         let _ = fs::remove_dir_all(&path);
+    }
+
+    /// Regression (issue 14, class 11): `--force` left another command's outputs mixed
+    /// with the new ones, and wrote into any folder (`/dev` as root).
+    #[test]
+    fn regression_force_replaces_only_the_earlier_runs_own_files() {
+        let path = scratch("force");
+        let first = OutputDir::prepare("campaign", Some(&path), false).expect("new");
+        first.write_bytes("runs.csv", b"a\n").expect("written");
+        first.write_bytes("summary.json", b"{}").expect("written");
+        fs::write(path.join("notes.txt"), b"mine").expect("user file");
+        let second = OutputDir::prepare("land", Some(&path), true).expect("forced");
+        second
+            .write_bytes("summary.json", b"{\"x\":1}")
+            .expect("written");
+        assert_eq!(names(&path), [MANIFEST, "notes.txt", "summary.json"]);
+        assert_eq!(
+            fs::read_to_string(path.join(MANIFEST)).expect("manifest"),
+            "deckland land\nsummary.json\n"
+        );
+        // A folder with files but no list is not deckland's: refused even with --force.
+        fs::remove_file(path.join(MANIFEST)).expect("removed");
+        let error = OutputDir::prepare("land", Some(&path), true).expect_err("refused");
+        assert!(error.to_string().contains("did not write"), "{error}");
+        assert!(path.join("notes.txt").exists() && path.join("summary.json").exists());
+        let _ = fs::remove_dir_all(&path);
+    }
+
+    #[test]
+    fn a_manifest_never_reaches_outside_its_folder() {
+        for name in ["../x", "/etc/passwd", ".", "..", "", "a/b", MANIFEST] {
+            assert!(!is_plain_file_name(name), "{name}");
+        }
+        assert!(is_plain_file_name("approach.csv"));
     }
 
     #[test]
@@ -217,10 +533,29 @@ mod tests {
         let out = OutputDir::prepare("test", Some(&path), false).expect("new folder");
         let result = out.write_with("b.csv", |temporary| {
             fs::write(temporary, b"half")?;
-            bail!("simulated crash")
+            Err(std::io::Error::from(std::io::ErrorKind::StorageFull).into())
         });
-        assert!(result.is_err());
-        assert_eq!(fs::read_dir(&path).expect("read").count(), 0);
+        let error = result.expect_err("disk full");
+        assert!(format!("{error:#}").contains("cannot write"), "{error:#}");
+        assert_eq!(names(&path), [MANIFEST]);
+        let _ = fs::remove_dir_all(&path);
+    }
+
+    /// Regression (issue 14, class 10): temporary files of killed runs stayed forever.
+    #[test]
+    fn regression_stale_temporary_files_are_removed_at_the_next_run() {
+        let path = scratch("stale");
+        fs::create_dir_all(&path).expect("folder");
+        // A process id that cannot run (above the kernel's maximum of 2^22).
+        let dead = path.join(format!("{TEMPORARY_PREFIX}4294967-approach.csv"));
+        let unparsable = path.join(format!("{TEMPORARY_PREFIX}x-approach.csv"));
+        let live = path.join(format!("{TEMPORARY_PREFIX}{}-a.csv", std::process::id()));
+        for file in [&dead, &unparsable, &live] {
+            fs::write(file, b"half").expect("written");
+        }
+        remove_stale_temporary_files(&path);
+        assert!(!dead.exists() && !unparsable.exists());
+        assert!(live.exists(), "a running process's file is kept");
         let _ = fs::remove_dir_all(&path);
     }
 
@@ -228,8 +563,8 @@ mod tests {
     fn default_folders_are_new_per_run() {
         let runs = scratch("runs");
         let now = SystemTime::now();
-        let a = OutputDir::prepare_default(&runs, "environment", now).expect("first");
-        let b = OutputDir::prepare_default(&runs, "environment", now).expect("second");
+        let a = OutputDir::prepare_default("environment", &runs, now).expect("first");
+        let b = OutputDir::prepare_default("environment", &runs, now).expect("second");
         assert_ne!(a.path(), b.path());
         let name = a
             .path()
@@ -237,5 +572,28 @@ mod tests {
             .map(|n| n.to_string_lossy().into_owned());
         assert!(name.is_some_and(|n| n.starts_with("environment-") && n.ends_with('Z')));
         let _ = fs::remove_dir_all(&runs);
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_folder_of_another_user_is_refused() {
+        use std::os::unix::fs::MetadataExt;
+        // /dev and / belong to root; as root, a folder given away to "nobody" is used.
+        let path = scratch("other-user");
+        fs::create_dir_all(&path).expect("folder");
+        let foreign = if nix::unistd::geteuid().is_root() {
+            let nobody = nix::unistd::Uid::from_raw(65_534);
+            std::os::unix::fs::chown(&path, Some(nobody.as_raw()), None).expect("chown as root");
+            path.clone()
+        } else {
+            PathBuf::from("/")
+        };
+        assert_ne!(
+            fs::metadata(&foreign).expect("exists").uid(),
+            nix::unistd::geteuid().as_raw()
+        );
+        let error = OutputDir::prepare("land", Some(&foreign), true).expect_err("refused");
+        assert!(error.to_string().contains("not to you"), "{error}");
+        let _ = fs::remove_dir_all(&path);
     }
 }

@@ -75,7 +75,7 @@ fn land_writes_every_result_and_prints_the_json_summary() {
     let leftovers: Vec<_> = std::fs::read_dir(&dir)
         .unwrap()
         .filter_map(|e| e.ok())
-        .filter(|e| e.file_name().to_string_lossy().contains(".tmp"))
+        .filter(|e| e.file_name().to_string_lossy().starts_with(".partial-"))
         .collect();
     assert!(leftovers.is_empty());
 

@@ -13,26 +13,27 @@
 //! - plots: `touchdown_dispersion` (touchdown point along the deck against sink rate,
 //!   with the wires and the ramp), `touchdown_histograms`, `outcomes`.
 //!
-//! Ctrl-C stops the workers before their next run; the finished runs are written, marked
-//! `"partial": true`, and the command exits with status 130.
+//! Ctrl-C or SIGTERM stops the workers before their next run; the finished runs are
+//! written, marked `"partial": true`, and the command exits with status 130.
+//!
+//! `--runs` is at most [`MAX_RUNS`] and `--threads` at most [`MAX_THREADS`]: the records
+//! of every run are kept in memory, and threads beyond the cores buy nothing.
 
-use super::common::{load_scenario_file, OutputArgs};
+use super::common::{check_set_up, load_scenario_file, seed_parser, OutputArgs};
 use crate::html;
 use crate::output::OutputDir;
 use crate::plot::{BarGroup, Figure, Panel};
-use anyhow::{Context, Result};
+use anyhow::{bail, Context, Result};
 use clap::Args;
 use deckland::monte_carlo::{
     run_campaign, CampaignResult, CampaignSpec, CampaignStatistics, Distribution, Proportion,
     RunRecord,
 };
-use deckland::scenario::Scenario;
+use deckland::scenario::{Mission, Scenario};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressState, ProgressStyle};
 use serde::Serialize;
 use std::io::IsTerminal;
 use std::path::PathBuf;
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::Arc;
 use std::time::Instant;
 
 /// Options of `deckland campaign`.
@@ -40,15 +41,17 @@ use std::time::Instant;
 pub struct CampaignArgs {
     /// Scenario file (TOML); its `[dispersion]` section sets the per-run dispersions.
     pub scenario: PathBuf,
-    /// Number of approaches (per controller with `--compare`).
-    #[arg(long)]
+    /// Number of approaches (per controller with `--compare`), 1 to 100 000.
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..=MAX_RUNS), allow_negative_numbers = true)]
     pub runs: u64,
-    /// Campaign seed S; run i flies seed SplitMix64(S, i) (default: the scenario's seed).
-    #[arg(long)]
+    /// Campaign seed S, 0 to 2⁶³ − 1; run i flies seed SplitMix64(S, i) (default: the
+    /// scenario's seed).
+    #[arg(long, value_parser = seed_parser(), allow_negative_numbers = true)]
     pub seed: Option<u64>,
-    /// Worker threads (default: the number of CPUs). The results do not depend on it.
-    #[arg(long)]
-    pub threads: Option<usize>,
+    /// Worker threads, 1 to 256 (default: the number of CPUs). The results do not depend
+    /// on it.
+    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=MAX_THREADS), allow_negative_numbers = true)]
+    pub threads: Option<u16>,
     /// Output folder, overwriting and JSON printing.
     #[command(flatten)]
     pub output: OutputArgs,
@@ -56,6 +59,13 @@ pub struct CampaignArgs {
     #[arg(long)]
     pub compare: bool,
 }
+
+/// Most approaches of one campaign (per controller): a record of each is kept, about
+/// 0.3 kB, and 100 000 runs already give a rate to ±0.3 points.
+pub const MAX_RUNS: u64 = 100_000;
+
+/// Most worker threads: more than the cores only adds switching.
+pub const MAX_THREADS: i64 = 256;
 
 /// What `summary.json` and `--json` hold.
 #[derive(Debug, Serialize)]
@@ -169,18 +179,6 @@ fn progress_bar(total: u64, hidden: bool) -> ProgressBar {
     .unwrap_or_else(|_| ProgressStyle::default_bar());
     bar.set_style(style);
     bar
-}
-
-/// Sets the stop flag on Ctrl-C; a second Ctrl-C exits at once.
-fn install_interrupt_handler(stop: Arc<AtomicBool>) {
-    let result = ctrlc::set_handler(move || {
-        if stop.swap(true, Ordering::SeqCst) {
-            std::process::exit(130);
-        }
-    });
-    if let Err(error) = result {
-        eprintln!("warning: Ctrl-C will not stop the campaign cleanly: {error}");
-    }
 }
 
 /// The plots of a campaign, each with its file stem.
@@ -460,9 +458,9 @@ fn html_report(
 /// Picks one distribution out of a controller's statistics.
 type DistributionOf = fn(&CampaignStatistics) -> Option<Distribution>;
 
-fn print_table(report: &CampaignReport, output: &OutputDir) {
+fn print_table(report: &CampaignReport, output: &OutputDir) -> Result<()> {
     let stats = report.controllers;
-    println!(
+    outln!(
         "Campaign — {}, {} runs{}, seed {}, {} threads, {:.1} s ({:.0} runs/s)",
         report.scenario_file,
         report.requested_runs,
@@ -475,23 +473,23 @@ fn print_table(report: &CampaignReport, output: &OutputDir) {
         report.threads,
         report.elapsed_s,
         report.runs_per_s
-    );
+    )?;
     if let Some(note) = &report.partial_note {
-        println!("  PARTIAL: {note}");
+        outln!("  PARTIAL: {note}")?;
     }
     let width = 30;
     let label_width = 36;
-    print!("  {:<label_width$}", "");
+    out!("  {:<label_width$}", "")?;
     for s in stats {
-        print!("{:>width$}", format!("{} ({} runs)", s.controller, s.runs));
+        out!("{:>width$}", format!("{} ({} runs)", s.controller, s.runs))?;
     }
-    println!();
-    println!("  outcome: count, rate [95 % Wilson score interval]");
+    outln!()?;
+    outln!("  outcome: count, rate [95 % Wilson score interval]")?;
     for row in 0..7 {
-        print!("  {:<label_width$}", proportions(&stats[0])[row].0);
+        out!("  {:<label_width$}", proportions(&stats[0])[row].0)?;
         for s in stats {
             let (_, p) = proportions(s)[row];
-            print!(
+            out!(
                 "{:>width$}",
                 format!(
                     "{:>5} {:5.1} % [{:5.1}, {:5.1}]",
@@ -500,16 +498,16 @@ fn print_table(report: &CampaignReport, output: &OutputDir) {
                     100.0 * p.ci95_low,
                     100.0 * p.ci95_high
                 )
-            );
+            )?;
         }
-        println!();
+        outln!()?;
     }
-    print!("  {:<label_width$}", "traps on wires 1/2/3/4");
+    out!("  {:<label_width$}", "traps on wires 1/2/3/4")?;
     for s in stats {
         let w = s.traps_per_wire;
-        print!("{:>width$}", format!("{}/{}/{}/{}", w[0], w[1], w[2], w[3]));
+        out!("{:>width$}", format!("{}/{}/{}/{}", w[0], w[1], w[2], w[3]))?;
     }
-    println!();
+    outln!()?;
     let distribution_rows: [(&str, DistributionOf); 6] = [
         ("touchdown from aim (m)", |s| s.touchdown_distance_m),
         ("touchdown sink rate (m/s)", |s| s.touchdown_sink_rate_mps),
@@ -525,41 +523,53 @@ fn print_table(report: &CampaignReport, output: &OutputDir) {
             } else {
                 (*part).to_owned()
             };
-            print!("  {label:<label_width$}");
+            out!("  {label:<label_width$}")?;
             for s in stats {
                 let text = match get(s) {
                     None => "–".to_owned(),
                     Some(d) if line == 0 => format!("{:+.2} ± {:.2}", d.mean, d.standard_deviation),
                     Some(d) => format!("{:+.2} / {:+.2} / {:+.2}", d.p5, d.p50, d.p95),
                 };
-                print!("{text:>width$}");
+                out!("{text:>width$}")?;
             }
-            println!();
+            outln!()?;
         }
     }
-    println!("  results in {}", output.path().display());
+    outln!("  results in {}", output.path().display())?;
+    Ok(())
 }
 
 /// Runs `deckland campaign`.
 pub fn run(args: &CampaignArgs) -> Result<()> {
     let scenario = load_scenario_file(&args.scenario)?;
+    if !matches!(scenario.mission, Mission::Approach) {
+        bail!(
+            "{}: `mission.kind` is not \"approach\": a campaign flies approaches",
+            args.scenario.display()
+        );
+    }
+    // The nominal scenario must fly; a dispersed run that cannot is a row of the result.
+    check_set_up(&scenario)?;
     let seed = args.seed.unwrap_or(scenario.seed);
     let mut spec = CampaignSpec::new(scenario, args.runs, seed);
     if args.compare {
         spec = spec.comparing_pitch_controllers();
     }
-    let threads = args.threads.unwrap_or_else(|| {
-        std::thread::available_parallelism()
-            .map(|n| n.get())
-            .unwrap_or(1)
-    });
+    let threads = args.threads.map_or_else(
+        || {
+            std::thread::available_parallelism()
+                .map(|n| n.get())
+                .unwrap_or(1)
+                .min(MAX_THREADS as usize)
+        },
+        usize::from,
+    );
     let output = OutputDir::prepare("campaign", args.output.out.as_deref(), args.output.force)?;
     let total = args.runs.saturating_mul(spec.controllers.len() as u64);
     let bar = progress_bar(total, args.output.json);
-    let stop = Arc::new(AtomicBool::new(false));
-    install_interrupt_handler(Arc::clone(&stop));
+    let stop = crate::interrupt::graceful_stop();
     let started = Instant::now();
-    let result = run_campaign(&spec, threads, &|_: &RunRecord| bar.inc(1), &stop)
+    let result = run_campaign(&spec, threads, &|_: &RunRecord| bar.inc(1), stop)
         .context("cannot run the campaign")?;
     let elapsed_s = started.elapsed().as_secs_f64();
     bar.finish_and_clear();
@@ -578,7 +588,7 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
         partial: result.partial,
         partial_note: result.partial.then(|| {
             format!(
-                "stopped by Ctrl-C: {finished_runs} of {total} runs finished; the statistics \
+                "stopped by Ctrl-C or SIGTERM: {finished_runs} of {total} runs finished; the statistics \
                  cover the finished runs only, listed by index in runs.csv"
             )
         }),
@@ -617,16 +627,16 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
     let page = html_report(&report, &title, &plots, &scenario_toml);
     output.write_bytes("report.html", page.as_bytes())?;
     if args.output.json {
-        println!("{}", serde_json::to_string_pretty(&report)?);
+        outln!("{}", serde_json::to_string_pretty(&report)?)?;
     } else {
-        print_table(&report, &output);
+        print_table(&report, &output)?;
     }
     if result.partial {
-        eprintln!(
-            "campaign stopped by Ctrl-C: partial results ({finished_runs} of {total} runs) in {}",
+        warnln!(
+            "campaign stopped by Ctrl-C or SIGTERM: partial results ({finished_runs} of {total} runs) in {}",
             output.path().display()
         );
-        std::process::exit(130);
+        std::process::exit(crate::interrupt::INTERRUPTED_STATUS);
     }
     Ok(())
 }

@@ -1,9 +1,11 @@
 //! Options shared by the simulation commands (`step`, `land`, `sink`) and the loading of
 //! scenario files (`run`, `campaign`).
 
+use anyhow::{bail, Context};
 use clap::ValueEnum;
 use deckland::control::pitch::{ObserverPdParameters, PidParameters, PitchControllerParameters};
-use deckland::scenario::{HardwareSet, Scenario};
+use deckland::scenario::{HardwareSet, Scenario, MAX_SEED};
+use deckland::simulation::Simulation;
 
 /// Which hardware flies (docs/model.md §2.6).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -21,6 +23,38 @@ impl HardwareChoice {
             Self::Realistic => HardwareSet::Realistic,
             Self::Paper => HardwareSet::Paper,
         }
+    }
+}
+
+/// The one seed domain of every command: 0 to 2⁶³ − 1, what a scenario file can hold
+/// (TOML integers are signed 64-bit), checked by clap before anything is flown or
+/// written; `--seed 9223372036854775808` is refused naming the option.
+pub fn seed_parser() -> clap::builder::RangedU64ValueParser<u64> {
+    clap::value_parser!(u64).range(0..=MAX_SEED)
+}
+
+/// Sets `scenario` up as a run would (validation, trim, linearisation, controller
+/// design) without flying it: a scenario that passes can be flown.
+pub fn check_set_up(scenario: &Scenario) -> anyhow::Result<()> {
+    Simulation::new(scenario)
+        .map(|_| ())
+        .context("cannot set up the scenario")
+}
+
+/// Checks `scenario` with the library's ranges and, when the key at fault was set by a
+/// command-line option (`options`: dotted path and option), names the option instead
+/// of the key: `--epsilon 0.0005 is not allowed: expected …`.
+pub fn validate_options(scenario: &Scenario, options: &[(&str, &str)]) -> anyhow::Result<()> {
+    let Err(problem) = scenario.validate() else {
+        return Ok(());
+    };
+    match options.iter().find(|(path, _)| *path == problem.path) {
+        Some((_, option)) => bail!(
+            "{option} {} is not allowed: expected {}",
+            problem.value,
+            problem.allowed
+        ),
+        None => Err(problem.into()),
     }
 }
 
@@ -135,7 +169,8 @@ pub struct OutputArgs {
     /// Output folder (default: a new `runs/<command>-<UTC time>`).
     #[arg(long)]
     pub out: Option<std::path::PathBuf>,
-    /// Overwrite results in an existing `--out` folder.
+    /// Replace the results of an earlier deckland run in the `--out` folder (only the
+    /// files that run wrote; other files are left alone).
     #[arg(long)]
     pub force: bool,
     /// Print the result as one JSON document instead of text.

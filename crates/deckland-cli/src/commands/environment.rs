@@ -14,11 +14,11 @@ use crate::plot::{Figure, Panel};
 /// Options of `deckland environment`.
 #[derive(Debug, clap::Args)]
 pub struct EnvironmentArgs {
-    /// Simulated time (s).
-    #[arg(long, default_value_t = 60.0)]
+    /// Simulated time (s), at most 3600 (recorded every 10 ms).
+    #[arg(long, default_value_t = 60.0, allow_negative_numbers = true)]
     pub(crate) seconds: f64,
-    /// Scenario seed of the random streams.
-    #[arg(long, default_value_t = 1)]
+    /// Scenario seed of the random streams, 0 to 2⁶³ − 1.
+    #[arg(long, default_value_t = 1, value_parser = crate::commands::common::seed_parser(), allow_negative_numbers = true)]
     pub(crate) seed: u64,
     /// Where the wind is sampled: distance aft of the ship's pitch centre (m, positive aft),
     /// the X of the paper's wake model (Fig. 8 uses 400).
@@ -30,32 +30,43 @@ pub struct EnvironmentArgs {
     pub(crate) distance_aft_m: f64,
     /// Airspeed that sets the turbulence time constant L/V (m/s); default the paper's trim
     /// speed (Table 3).
-    #[arg(long = "airspeed", default_value_t = 69.1)]
+    #[arg(
+        long = "airspeed",
+        default_value_t = 69.1,
+        allow_negative_numbers = true
+    )]
     pub(crate) airspeed_mps: f64,
     /// Output folder (default: a new runs/environment-<UTC timestamp>).
     #[arg(long)]
     pub(crate) out: Option<PathBuf>,
-    /// Overwrite results in an --out folder that already holds some.
+    /// Replace the results of an earlier deckland run in the `--out` folder (only the
+    /// files that run wrote).
     #[arg(long)]
     pub(crate) force: bool,
 }
+
+/// Longest record (s): 360 000 rows of 10 ms, about 70 MB of CSV.
+const MAX_SECONDS: f64 = 3600.0;
 
 /// One recorded row of `environment.csv`.
 pub(crate) type Row = EnvironmentSample;
 
 fn check_arguments(args: &EnvironmentArgs) -> Result<()> {
-    if !(args.seconds.is_finite() && args.seconds > 0.0 && args.seconds <= 86_400.0) {
-        bail!("--seconds must lie in (0, 86400] s, got {}", args.seconds);
+    if !(args.seconds.is_finite() && args.seconds > 0.0 && args.seconds <= MAX_SECONDS) {
+        bail!(
+            "--seconds must lie in (0, {MAX_SECONDS}] s, got {:?}",
+            args.seconds
+        );
     }
     if !(args.distance_aft_m.is_finite() && args.distance_aft_m.abs() <= 10_000.0) {
         bail!(
-            "--distance-aft must lie in [-10000, 10000] m, got {}",
+            "--distance-aft must lie in [-10000, 10000] m, got {:?}",
             args.distance_aft_m
         );
     }
     if !(args.airspeed_mps.is_finite() && args.airspeed_mps > 0.0 && args.airspeed_mps <= 300.0) {
         bail!(
-            "--airspeed must lie in (0, 300] m/s, got {}",
+            "--airspeed must lie in (0, 300] m/s, got {:?}",
             args.airspeed_mps
         );
     }
@@ -185,8 +196,8 @@ pub fn run(args: &EnvironmentArgs) -> Result<()> {
     check_arguments(args)?;
     let parameters = EnvironmentSection::default();
     parameters.validate()?;
-    let output = OutputDir::prepare("environment", args.out.as_deref(), args.force)?;
     let rows = record_environment(&parameters, &args.record())?;
+    let output = OutputDir::prepare("environment", args.out.as_deref(), args.force)?;
 
     let mut csv = csv::Writer::from_writer(Vec::new());
     for row in &rows {
@@ -203,38 +214,47 @@ pub fn run(args: &EnvironmentArgs) -> Result<()> {
     let landing = statistics(rows.iter().map(|r| r.landing_point_height_m));
     let wind_x = statistics(rows.iter().map(|r| r.wind_x_mps));
     let wind_z = statistics(rows.iter().map(|r| r.wind_z_mps));
-    println!(
+    outln!(
         "Environment: {} s at dt = 1 ms, seed {}, wind sampled {} m aft of the pitch centre",
-        args.seconds, args.seed, args.distance_aft_m
-    );
-    println!(
+        args.seconds,
+        args.seed,
+        args.distance_aft_m
+    )?;
+    outln!(
         "  heave          RMS {:6.2} m    peak {:6.2} m    (configured RMS {} m)",
-        heave.rms, heave.peak, parameters.ship.heave_rms_m
-    );
-    println!(
+        heave.rms,
+        heave.peak,
+        parameters.ship.heave_rms_m
+    )?;
+    outln!(
         "  pitch          RMS {:6.2} deg  peak {:6.2} deg  (configured RMS {} deg)",
-        pitch.rms, pitch.peak, parameters.ship.pitch_rms_deg
-    );
-    println!(
+        pitch.rms,
+        pitch.peak,
+        parameters.ship.pitch_rms_deg
+    )?;
+    outln!(
         "  landing point  RMS {:6.2} m    peak {:6.2} m    (height about its mean)",
-        landing.rms, landing.peak
-    );
-    println!(
+        landing.rms,
+        landing.peak
+    )?;
+    outln!(
         "  wind x         mean {:6.2} m/s  RMS about mean {:5.2} m/s  (positive forward)",
-        wind_x.mean, wind_x.standard_deviation
-    );
-    println!(
+        wind_x.mean,
+        wind_x.standard_deviation
+    )?;
+    outln!(
         "  wind z         mean {:6.2} m/s  RMS about mean {:5.2} m/s  (positive down)",
-        wind_z.mean, wind_z.standard_deviation
-    );
-    println!(
+        wind_z.mean,
+        wind_z.standard_deviation
+    )?;
+    outln!(
         "Wrote {} files to {}:",
         written.len(),
         output.path().display()
-    );
+    )?;
     for path in &written {
         if let Some(name) = path.file_name() {
-            println!("  {}", name.to_string_lossy());
+            outln!("  {}", name.to_string_lossy())?;
         }
     }
     Ok(())

@@ -5,7 +5,9 @@
 //! altitude against the glide path and the deck, the glide-path error (paper Fig. 14),
 //! pitch and pitch command (Fig. 15), elevator and thrust, airspeed, and the wind seen.
 
-use super::common::{Conditions, ControllerChoice, HardwareChoice, OutputArgs};
+use super::common::{
+    check_set_up, seed_parser, Conditions, ControllerChoice, HardwareChoice, OutputArgs,
+};
 use crate::html;
 use crate::output::OutputDir;
 use crate::plot::{Figure, MarkerShape, Panel, DECK_COLOUR};
@@ -30,8 +32,8 @@ pub struct LandArgs {
     /// designed for them) or `paper` (the paper's ideal actuator and gains).
     #[arg(long, value_enum, default_value = "realistic")]
     pub hardware: HardwareChoice,
-    /// Seed of every random stream.
-    #[arg(long, default_value_t = 1)]
+    /// Seed of every random stream, 0 to 2⁶³ − 1.
+    #[arg(long, default_value_t = 1, value_parser = seed_parser(), allow_negative_numbers = true)]
     pub seed: u64,
     /// Fly without deck-motion compensation (track the mean deck to the end).
     #[arg(long)]
@@ -53,9 +55,9 @@ pub struct LandingReport<'a> {
     pub conditions: &'a str,
     /// Seed of the random streams.
     pub seed: u64,
-    /// Outcome name (`trap`, `bolter`, `ramp_strike`, `hard_landing`, `diverged`, `timeout`).
-    pub outcome: &'static str,
-    /// The run's summary (outcome, wire, touchdown, ramp clearance, glide-path error).
+    /// The run's summary: outcome (`trap`, `bolter`, `ramp_strike`, `hard_landing`,
+    /// `diverged`, `timeout`), wire, touchdown, ramp clearance, glide-path error. Its
+    /// keys are the document's own (flattened), so none may repeat a key above.
     #[serde(flatten)]
     pub summary: &'a RunSummary,
 }
@@ -67,7 +69,7 @@ struct Row {
     x_m: f64,
     altitude_m: f64,
     hook_height_m: f64,
-    glide_path_height_m: f64,
+    glide_path_height_m: Option<f64>,
     glide_path_error_m: f64,
     landing_point_height_m: f64,
     airspeed_mps: f64,
@@ -76,7 +78,7 @@ struct Row {
     theta_command_deg: f64,
     theta_measured_deg: f64,
     climb_rate_mps: f64,
-    climb_rate_command_mps: f64,
+    climb_rate_command_mps: Option<f64>,
     elevator_deg: f64,
     elevator_command_deg: f64,
     thrust_n: f64,
@@ -125,6 +127,17 @@ fn series(samples: &[Signals], value: impl Fn(&Signals) -> f64) -> Vec<(f64, f64
     samples.iter().map(|s| (s.time_s, value(s))).collect()
 }
 
+/// Points (time, value) of a signal where it applies.
+fn series_where_applicable(
+    samples: &[Signals],
+    value: impl Fn(&Signals) -> Option<f64>,
+) -> Vec<(f64, f64)> {
+    samples
+        .iter()
+        .filter_map(|s| value(s).map(|v| (s.time_s, v)))
+        .collect()
+}
+
 /// The outcome in words, with what decided it: "trap on wire 4", "ramp strike: hook
 /// 3.29 m below the ramp".
 pub(crate) fn outcome_text(summary: &RunSummary) -> String {
@@ -167,10 +180,12 @@ fn approach_figure(run: &ApproachRun, scenario: &Scenario, flown: &str) -> Figur
     let samples = &run.samples;
     let mean_deck_m = deck.deck_height_m;
     let along = |s: &Signals| deck.distance_along_deck(&s.ship, s.hook_x_m);
-    let curve = |from_m: f64, value: &dyn Fn(&Signals) -> f64| -> Vec<(f64, f64)> {
+    // Points (distance along the deck, height above the mean deck) where the signal
+    // applies and the hook is at or forward of `from_m`.
+    let curve = |from_m: f64, value: &dyn Fn(&Signals) -> Option<f64>| -> Vec<(f64, f64)> {
         samples
             .iter()
-            .map(|s| (along(s), value(s) - mean_deck_m))
+            .filter_map(|s| value(s).map(|v| (along(s), v - mean_deck_m)))
             .filter(|(x, _)| *x >= from_m)
             .collect()
     };
@@ -221,9 +236,9 @@ fn approach_figure(run: &ApproachRun, scenario: &Scenario, flown: &str) -> Figur
             "height above the mean deck (m)",
         )
         .x_limits(from_m..forward_end_m)
-        .series("hook", curve(from_m, &|s| s.hook_h_m))
+        .series("hook", curve(from_m, &|s| Some(s.hook_h_m)))
         .dashed_series("glide path", curve(from_m, &|s| s.path_height_m))
-        .series("landing point", curve(from_m, &|s| s.aim_point.h_m))
+        .series("landing point", curve(from_m, &|s| Some(s.aim_point.h_m)))
         .coloured_series(deck_name, deck_line.clone(), DECK_COLOUR)
         .vertical_line("ramp", ramp_m);
         if let Some((height, clearance)) = ramp_crossing {
@@ -298,7 +313,7 @@ pub(crate) fn figures(
             .series("hook", series(samples, |s| s.hook_h_m))
             .dashed_series(
                 "glide path (hook reference)",
-                series(samples, |s| s.path_height_m),
+                series_where_applicable(samples, |s| s.path_height_m),
             )
             .series(
                 "landing point on the deck",
@@ -417,7 +432,6 @@ pub fn fly_and_write(
         controller,
         conditions,
         seed: scenario.seed,
-        outcome: summary.outcome.name(),
         summary: &summary,
     };
     let scenario_toml = toml::to_string(scenario).context("cannot write the scenario as TOML")?;
@@ -440,9 +454,9 @@ pub fn fly_and_write(
     let page = html_report(&report, &flown, &plots, &scenario_toml, &summary_json);
     output.write_bytes("report.html", page.as_bytes())?;
     if json {
-        println!("{}", serde_json::to_string_pretty(&report)?);
+        outln!("{}", serde_json::to_string_pretty(&report)?)?;
     } else {
-        print_summary(&report, output);
+        print_summary(&report, output)?;
     }
     Ok(summary)
 }
@@ -458,7 +472,7 @@ pub(crate) fn summary_rows(report: &LandingReport) -> Vec<Vec<String>> {
         row("controller", report.controller.to_string(), ""),
         row("conditions", report.conditions.to_string(), ""),
         row("seed", report.seed.to_string(), ""),
-        row("outcome", report.outcome.to_string(), ""),
+        row("outcome", s.outcome.name().to_string(), ""),
         row(
             "wire",
             s.wire.map_or_else(|| "—".to_string(), |w| w.to_string()),
@@ -541,38 +555,43 @@ fn html_report(
     page.to_html()
 }
 
-fn print_summary(report: &LandingReport, output: &OutputDir) {
+fn print_summary(report: &LandingReport, output: &OutputDir) -> Result<()> {
     let s = report.summary;
     let outcome = match s.wire {
-        Some(wire) => format!("{} (wire {wire})", report.outcome),
-        None => report.outcome.to_string(),
+        Some(wire) => format!("{} (wire {wire})", s.outcome.name()),
+        None => s.outcome.name().to_string(),
     };
-    println!(
+    outln!(
         "Approach — {} pitch control, {} conditions, seed {}",
-        report.controller, report.conditions, report.seed
-    );
-    println!("  outcome               {outcome}");
+        report.controller,
+        report.conditions,
+        report.seed
+    )?;
+    outln!("  outcome               {outcome}")?;
     if let Some(reason) = &s.reason {
-        println!("  reason                {reason}");
+        outln!("  reason                {reason}")?;
     }
     if let Some(t) = &s.touchdown {
-        println!(
+        outln!(
             "  touchdown             {:.2} s, {:+.1} m from the aim point (positive forward)",
-            t.time_s, t.distance_from_aim_m
-        );
-        println!(
+            t.time_s,
+            t.distance_from_aim_m
+        )?;
+        outln!(
             "  sink rate at deck     {:.2} m/s   pitch {:.1}°   airspeed {:.1} m/s",
-            t.sink_rate_mps, t.pitch_deg, t.airspeed_mps
-        );
+            t.sink_rate_mps,
+            t.pitch_deg,
+            t.airspeed_mps
+        )?;
     }
     if let Some(c) = s.ramp_clearance_m {
-        println!("  hook over the ramp    {c:.2} m");
+        outln!("  hook over the ramp    {c:.2} m")?;
     }
     if let (Some(rms), Some(max)) = (s.glide_path_error_rms_m, s.glide_path_error_max_m) {
-        println!("  glide-path error      RMS {rms:.2} m, max {max:.2} m");
+        outln!("  glide-path error      RMS {rms:.2} m, max {max:.2} m")?;
     }
     let a = &s.actuator;
-    println!(
+    outln!(
         "  elevator              rate RMS {:.1}°/s, on the rate limit {:.2} s ({:.1} %), \
          on the stops {:.2} s ({:.1} %), travel {:.0}°",
         a.elevator_rate_rms_degps,
@@ -581,12 +600,13 @@ fn print_summary(report: &LandingReport, output: &OutputDir) {
         a.time_on_stops_s,
         a.time_on_stops_pct,
         a.elevator_travel_deg
-    );
-    println!(
+    )?;
+    outln!(
         "  thrust rate           RMS {:.1} kN/s",
         a.thrust_rate_rms_knps
-    );
-    println!("  results in            {}", output.path().display());
+    )?;
+    outln!("  results in            {}", output.path().display())?;
+    Ok(())
 }
 
 /// Runs `deckland land`.
@@ -596,6 +616,7 @@ pub fn run(args: &LandArgs) -> Result<()> {
     if args.no_deck_compensation {
         scenario.control.flight_path.deck_motion_compensation = false;
     }
+    check_set_up(&scenario)?;
     let output = OutputDir::prepare("land", args.output.out.as_deref(), args.output.force)?;
     fly_and_write(
         &scenario,

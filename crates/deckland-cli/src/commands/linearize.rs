@@ -66,25 +66,31 @@ fn print_matrix<const R: usize, const C: usize>(
     name: &str,
     m: &nalgebra::SMatrix<f64, R, C>,
     columns: &[&str],
-) {
-    print!("  {name:<16}");
+) -> Result<()> {
+    out!("  {name:<16}")?;
     for column in columns {
-        print!("{column:>23}");
+        out!("{column:>23}")?;
     }
-    println!();
+    outln!()?;
     for (i, state) in STATE_NAMES.iter().enumerate() {
-        print!("  d{state:<15}");
+        out!("  d{state:<15}")?;
         for j in 0..C {
-            print!("{:>23.6}", m[(i, j)]);
+            out!("{:>23.6}", m[(i, j)])?;
         }
-        println!();
+        outln!()?;
     }
+    Ok(())
 }
 
-fn print_table(args: &TrimArgs, model: &LinearModel, modes: &[Mode], max_thrust_n: f64) {
-    print_trim_table(args.configuration, &model.trim, max_thrust_n);
-    println!();
-    println!("Linear model ẋ = A x + B u (paper Eq. 14 form)");
+fn print_table(
+    args: &TrimArgs,
+    model: &LinearModel,
+    modes: &[Mode],
+    max_thrust_n: f64,
+) -> Result<()> {
+    print_trim_table(args.configuration, &model.trim, max_thrust_n)?;
+    outln!()?;
+    outln!("Linear model ẋ = A x + B u (paper Eq. 14 form)")?;
     let states: Vec<String> = STATE_NAMES
         .iter()
         .zip(STATE_UNITS)
@@ -97,19 +103,24 @@ fn print_table(args: &TrimArgs, model: &LinearModel, modes: &[Mode], max_thrust_
         .collect();
     let states: Vec<&str> = states.iter().map(String::as_str).collect();
     let inputs: Vec<&str> = inputs.iter().map(String::as_str).collect();
-    print_matrix("A", &model.a, &states);
-    print_matrix("B", &model.b, &inputs);
-    println!(
+    print_matrix("A", &model.a, &states)?;
+    print_matrix("B", &model.b, &inputs)?;
+    outln!(
         "  (throttle is a fraction of the total maximum thrust of both engines; ∂q̇/∂q = {:.4} 1/s, ∂q̇/∂δe = {:.4} 1/s²)",
         model.pitch_damping_per_s(),
         model.elevator_effectiveness_per_s2()
-    );
-    println!();
-    println!("Modes");
-    println!(
+    )?;
+    outln!()?;
+    outln!("Modes")?;
+    outln!(
         "  {:<14}{:>24}{:>12}{:>10}{:>12}{:>22}",
-        "mode", "eigenvalue [1/s]", "ω_n [rad/s]", "ζ [–]", "period [s]", "time to half/double"
-    );
+        "mode",
+        "eigenvalue [1/s]",
+        "ω_n [rad/s]",
+        "ζ [–]",
+        "period [s]",
+        "time to half/double"
+    )?;
     for mode in modes {
         let period = mode.period_s.map_or("—".to_string(), |p| format!("{p:.2}"));
         let timing = match (mode.time_to_half_s, mode.time_to_double_s) {
@@ -117,7 +128,7 @@ fn print_table(args: &TrimArgs, model: &LinearModel, modes: &[Mode], max_thrust_
             (_, Some(t)) => format!("double in {t:.1} s"),
             _ => "neutral".to_string(),
         };
-        println!(
+        outln!(
             "  {:<14}{:>24}{:>12.4}{:>10.4}{:>12}{:>22}",
             mode.kind.name(),
             format!("{:.4} ± {:.4}i", mode.eigenvalue.re, mode.eigenvalue.im),
@@ -125,8 +136,9 @@ fn print_table(args: &TrimArgs, model: &LinearModel, modes: &[Mode], max_thrust_
             mode.damping_ratio,
             period,
             timing
-        );
+        )?;
     }
+    Ok(())
 }
 
 /// Runs `deckland linearize`.
@@ -151,14 +163,14 @@ pub fn run(args: &TrimArgs) -> Result<()> {
                 .collect(),
             modes: modes.iter().map(ModeReport::from).collect(),
         };
-        println!("{}", serde_json::to_string_pretty(&report)?);
+        outln!("{}", serde_json::to_string_pretty(&report)?)?;
     } else {
         print_table(
             args,
             &model,
             &modes,
             aircraft.engines().max_total_thrust_n(),
-        );
+        )?;
     }
     Ok(())
 }

@@ -11,11 +11,13 @@ use deckland::experiments::{
     fly_pitch_step, PitchStep, PitchStepResponse, PITCH_STEP_TIME_S as STEP_TIME_S,
     SETTLING_BAND_FRACTION,
 };
-use deckland::scenario::Scenario;
+use deckland::scenario::{Mission, Scenario};
 use deckland::simulation::Signals;
 use serde::Serialize;
 
-use super::common::{BaseScenarioArgs, Conditions, ControllerChoice, OutputArgs};
+use super::common::{
+    seed_parser, validate_options, BaseScenarioArgs, Conditions, ControllerChoice, OutputArgs,
+};
 use super::land::signed;
 use crate::output::OutputDir;
 use crate::plot::{Figure, Panel};
@@ -69,10 +71,12 @@ pub struct StepArgs {
     /// Simulated time (s), at least 2 (the step comes at 1 s), at most 600.
     #[arg(long, default_value_t = 6.0, allow_negative_numbers = true)]
     pub(crate) seconds: f64,
-    /// Scenario seed of the random streams (matters in adverse conditions).
-    #[arg(long, default_value_t = 1)]
+    /// Scenario seed of the random streams (matters in adverse conditions), 0 to
+    /// 2⁶³ − 1.
+    #[arg(long, default_value_t = 1, value_parser = seed_parser(), allow_negative_numbers = true)]
     pub(crate) seed: u64,
-    /// O-PD observer bandwidth parameter ε in (0, 1) (default: the hardware set's).
+    /// O-PD observer bandwidth parameter ε, below 1 and at least 0.006 (so that the
+    /// observer, k3/ε rad/s, is resolved by the 1 ms step); default: the hardware set's.
     #[arg(long, allow_negative_numbers = true)]
     pub(crate) epsilon: Option<f64>,
     /// The hardware set, or a scenario file, to fly the step with.
@@ -116,21 +120,34 @@ pub(crate) struct ControllerRun {
 fn check_arguments(args: &StepArgs) -> Result<()> {
     if !(args.step_deg.is_finite() && args.step_deg != 0.0 && args.step_deg.abs() <= MAX_STEP_DEG) {
         bail!(
-            "--step-deg must be nonzero and lie in [-{MAX_STEP_DEG}, {MAX_STEP_DEG}] deg, got {}",
+            "--step-deg must be nonzero and lie in [-{MAX_STEP_DEG}, {MAX_STEP_DEG}] deg, got {:?}",
             args.step_deg
         );
     }
     if !(args.seconds.is_finite() && (MIN_SECONDS..=MAX_SECONDS).contains(&args.seconds)) {
         bail!(
             "--seconds must lie in [{MIN_SECONDS}, {MAX_SECONDS}] s (the step comes at \
-             {STEP_TIME_S} s), got {}",
+             {STEP_TIME_S} s), got {:?}",
             args.seconds
         );
     }
-    if let Some(epsilon) = args.epsilon {
-        if !(epsilon.is_finite() && epsilon > 0.0 && epsilon < 1.0) {
-            bail!("--epsilon must lie in (0, 1), got {epsilon}");
-        }
+    // The rest as the library checks the scenario flown, naming the options.
+    let flight = StepFlight::of(args)?;
+    for choice in args.controller.choices() {
+        let mut scenario = flight.scenario(choice);
+        scenario.mission = Mission::pitch_step(
+            args.step_deg,
+            args.seconds,
+            scenario.hardware.pitch_command(),
+        );
+        validate_options(
+            &scenario,
+            &[
+                ("control.pitch.observer.epsilon", "--epsilon"),
+                ("mission.step_deg", "--step-deg"),
+                ("mission.duration_s", "--seconds"),
+            ],
+        )?;
     }
     Ok(())
 }
@@ -363,8 +380,8 @@ fn format_option(value: Option<f64>, digits: usize, unit: &str) -> String {
     value.map_or_else(|| "—".to_string(), |v| format!("{v:.digits$} {unit}"))
 }
 
-fn print_table(report: &StepReport, written: &[PathBuf]) {
-    println!(
+fn print_table(report: &StepReport, written: &[PathBuf]) -> Result<()> {
+    outln!(
         "Pitch step {:+}° at t = {} s from level trim ({} m/s), {} conditions, seed {}, \
          {} s, O-PD ε = {}",
         report.step_deg,
@@ -374,8 +391,8 @@ fn print_table(report: &StepReport, written: &[PathBuf]) {
         report.seed,
         report.seconds,
         report.epsilon
-    );
-    println!(
+    )?;
+    outln!(
         "  {:<26}{}",
         "",
         report
@@ -383,16 +400,16 @@ fn print_table(report: &StepReport, written: &[PathBuf]) {
             .iter()
             .map(|c| format!("{:>18}", c.controller))
             .collect::<String>()
-    );
+    )?;
     let row = |name: &str, cell: &dyn Fn(&ControllerResult) -> String| {
-        println!(
+        outln!(
             "  {name:<26}{}",
             report
                 .controllers
                 .iter()
                 .map(|c| format!("{:>18}", cell(c)))
                 .collect::<String>()
-        );
+        )
     };
     row("settling time (±2 %)", &|c| {
         if c.settled {
@@ -400,53 +417,54 @@ fn print_table(report: &StepReport, written: &[PathBuf]) {
         } else {
             "not settled".to_string()
         }
-    });
-    row("overshoot", &|c| format!("{:.1} %", c.overshoot_pct));
+    })?;
+    row("overshoot", &|c| format!("{:.1} %", c.overshoot_pct))?;
     row("rise time 10–90 %", &|c| {
         format_option(c.rise_time_s, 3, "s")
-    });
+    })?;
     row("steady-state error", &|c| {
         format_option(c.steady_state_error_deg, 4, "°")
-    });
+    })?;
     row("peak |elevator|", &|c| {
         format!("{:.1} °", c.max_elevator_deg)
-    });
+    })?;
     row("peak elevator − trim", &|c| {
         format!("{:.1} °", c.max_elevator_change_deg)
-    });
+    })?;
     row("time on elevator limit", &|c| {
         format!("{:.3} s", c.elevator_saturation_s)
-    });
+    })?;
     row("elevator total travel", &|c| {
         format!("{:.0} °", c.elevator_total_variation_deg)
-    });
+    })?;
     row("elevator rate RMS", &|c| {
         format!("{:.1} °/s", c.actuator.elevator_rate_rms_degps)
-    });
+    })?;
     row("time on the rate limit", &|c| {
         format!(
             "{:.3} s ({:.1} %)",
             c.actuator.time_on_rate_limit_s, c.actuator.time_on_rate_limit_pct
         )
-    });
+    })?;
     row("thrust rate RMS", &|c| {
         format!("{:.1} kN/s", c.actuator.thrust_rate_rms_knps)
-    });
+    })?;
     for c in &report.controllers {
         if let Some(reason) = &c.not_settled_reason {
-            println!("  {} did not settle: {reason}", c.controller);
+            outln!("  {} did not settle: {reason}", c.controller)?;
         }
     }
-    println!(
+    outln!(
         "Settling time: from the step to the last entry into the ±2 % band around the target \
          (it must stay there to the end, at least 0.5 s)."
-    );
-    println!("Wrote {} files to {}:", written.len(), report.output_folder);
+    )?;
+    outln!("Wrote {} files to {}:", written.len(), report.output_folder)?;
     for path in written {
         if let Some(name) = path.file_name() {
-            println!("  {}", name.to_string_lossy());
+            outln!("  {}", name.to_string_lossy())?;
         }
     }
+    Ok(())
 }
 
 /// Runs the command.
@@ -457,8 +475,8 @@ pub fn run(args: &StepArgs) -> Result<()> {
         PitchControllerParameters::ObserverPd(opd) => opd.observer.epsilon,
         PitchControllerParameters::Pid(_) => f64::NAN,
     };
-    let output = OutputDir::prepare("step", args.output.out.as_deref(), args.output.force)?;
     let runs = flight.fly(&args.controller.choices())?;
+    let output = OutputDir::prepare("step", args.output.out.as_deref(), args.output.force)?;
 
     let mut written = vec![output.write_bytes("step.csv", &csv_bytes(&runs)?)?];
     for (stem, figure) in figures(&runs, &flight) {
@@ -478,9 +496,9 @@ pub fn run(args: &StepArgs) -> Result<()> {
         output_folder: output.path().display().to_string(),
     };
     if args.output.json {
-        println!("{}", serde_json::to_string_pretty(&report)?);
+        outln!("{}", serde_json::to_string_pretty(&report)?)?;
     } else {
-        print_table(&report, &written);
+        print_table(&report, &written)?;
     }
     Ok(())
 }

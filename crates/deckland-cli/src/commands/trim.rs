@@ -1,9 +1,9 @@
 //! `deckland trim`: steady straight flight at a given airspeed and flight-path angle.
 
-use anyhow::{Context, Result};
+use anyhow::{bail, Context, Result};
 use clap::Args;
 use deckland::aircraft::{AerodynamicConfiguration, Aircraft, ConfigurationName};
-use deckland::analysis::{trim, TrimPoint, TrimRequest, TrimResiduals};
+use deckland::analysis::{trim, TrimError, TrimPoint, TrimRequest, TrimResiduals};
 use serde::Serialize;
 
 /// Options shared by `trim` and `linearize`.
@@ -49,11 +49,24 @@ impl TrimArgs {
             speed_mps: self.speed_mps,
             flight_path_angle_rad: self.gamma_deg.to_radians(),
         };
-        trim(aircraft, &request).with_context(|| {
-            format!(
-                "cannot trim the {} configuration at {} m/s and γ = {}°",
-                self.configuration, self.speed_mps, self.gamma_deg
-            )
+        trim(aircraft, &request).or_else(|error| match error {
+            // A request out of the solver's range is an option out of range: name it.
+            TrimError::InvalidRequest {
+                field, expected, ..
+            } => {
+                let (option, value) = if field == "speed_mps" {
+                    ("--speed", self.speed_mps)
+                } else {
+                    ("--gamma", self.gamma_deg)
+                };
+                bail!("{option} {value:?} is not allowed: expected {expected}")
+            }
+            error => Err(error).with_context(|| {
+                format!(
+                    "cannot trim the {} configuration at {} m/s and γ = {}°",
+                    self.configuration, self.speed_mps, self.gamma_deg
+                )
+            }),
         })
     }
 }
@@ -92,33 +105,40 @@ impl TrimReport {
 }
 
 /// Prints a trim point as a readable table.
-pub fn print_trim_table(configuration: ConfigurationName, point: &TrimPoint, max_thrust_n: f64) {
-    println!(
+pub fn print_trim_table(
+    configuration: ConfigurationName,
+    point: &TrimPoint,
+    max_thrust_n: f64,
+) -> Result<()> {
+    outln!(
         "Trim — {configuration} configuration, V_T = {:.2} m/s, γ = {:.2}°",
         point.speed_mps,
         point.flight_path_angle_rad.to_degrees()
-    );
-    println!(
+    )?;
+    outln!(
         "  angle of attack α   {:>10.3} °",
         point.alpha_rad.to_degrees()
-    );
-    println!(
+    )?;
+    outln!(
         "  pitch angle θ       {:>10.3} °",
         point.theta_rad.to_degrees()
-    );
-    println!(
+    )?;
+    outln!(
         "  elevator δe         {:>10.3} °   (positive trailing edge down)",
         point.elevator_rad.to_degrees()
-    );
-    println!(
+    )?;
+    outln!(
         "  thrust T            {:>10.0} N   (throttle {:.3} of {:.0} N, both engines)",
-        point.thrust_n, point.throttle, max_thrust_n
-    );
+        point.thrust_n,
+        point.throttle,
+        max_thrust_n
+    )?;
     let r = &point.residuals;
-    println!(
+    outln!(
         "  residuals           V̇ {:.1e} m/s², α̇ {:.1e} rad/s, q̇ {:.1e} rad/s²  ({} Newton iterations)",
         r.airspeed_rate_mps2, r.alpha_rate_radps, r.pitch_acceleration_radps2, point.iterations
-    );
+    )?;
+    Ok(())
 }
 
 /// Runs `deckland trim`.
@@ -126,16 +146,16 @@ pub fn run(args: &TrimArgs) -> Result<()> {
     let aircraft = args.aircraft();
     let point = args.trim(&aircraft)?;
     if args.json {
-        println!(
+        outln!(
             "{}",
             serde_json::to_string_pretty(&TrimReport::new(args.configuration, &point))?
-        );
+        )?;
     } else {
         print_trim_table(
             args.configuration,
             &point,
             aircraft.engines().max_total_thrust_n(),
-        );
+        )?;
     }
     Ok(())
 }

@@ -235,7 +235,11 @@ pub fn cascade_margins(scenario: &Scenario) -> Result<Vec<LoopMargins>, SetupErr
     for (cut, u0) in [
         (LoopBreak::ElevatorCommand, nominal.elevator_command_rad),
         (LoopBreak::PitchCommand, nominal.theta_ref_rad),
-        (LoopBreak::ClimbRateCommand, nominal.climb_rate_command_mps),
+        // An approach always commands a climb rate.
+        (
+            LoopBreak::ClimbRateCommand,
+            nominal.climb_rate_command_mps.unwrap_or_default(),
+        ),
         (LoopBreak::ThrustCommand, nominal.thrust_command_n),
     ] {
         let model = linearise(system, &held, x0, cut, u0);

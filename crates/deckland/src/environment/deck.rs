@@ -65,6 +65,18 @@ pub struct EarthVelocity {
     pub h_mps: f64,
 }
 
+/// Reads an array of exactly four numbers. serde's `[f64; 4]` reads the first four
+/// elements and lets the TOML reader drop any further ones unread (issue 14, class 7:
+/// extra elements, even a string or a table, were silently ignored).
+fn exactly_four_numbers<'de, D: serde::Deserializer<'de>>(
+    deserializer: D,
+) -> Result<[f64; 4], D::Error> {
+    let values = Vec::<f64>::deserialize(deserializer)?;
+    <[f64; 4]>::try_from(values.as_slice()).map_err(|_| {
+        serde::de::Error::invalid_length(values.len(), &"an array of exactly 4 numbers")
+    })
+}
+
 /// Deck geometry (docs/model.md §2.7; paper Eq. 17–18 for the 81 m).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
@@ -74,6 +86,7 @@ pub struct DeckGeometry {
     pub landing_point_aft_of_pitch_centre_m: f64,
     /// Arresting wires along the deck from the aim point, positive forward (m); docs/model.md
     /// §2.7: −18, −6, +6, +18.
+    #[serde(deserialize_with = "exactly_four_numbers")]
     pub wire_positions_m: [f64; 4],
     /// Distance of the ramp (aft edge of the deck) aft of the aim point (m); docs/model.md
     /// §2.7: 60.

@@ -384,9 +384,9 @@ impl ClosedLoop {
             hook_h_m,
             hook_climb_rate_mps,
             hook_x_rate_mps,
-            path_height_m: path.map_or(f64::NAN, |p| p.height_m),
+            path_height_m: path.map(|p| p.height_m),
             glide_path_error_m: outer.height_error_m,
-            time_to_go_s: path.map_or(f64::INFINITY, |p| p.time_to_go_s),
+            time_to_go_s: path.map(|p| p.time_to_go_s),
             compensation_weight: path.map_or(0.0, |p| p.compensation_weight),
             airspeed_mps: air.airspeed_mps,
             alpha_rad: air.alpha_rad,
@@ -395,7 +395,9 @@ impl ClosedLoop {
             theta_ref_rad: outer.theta_ref_rad,
             q_radps: a.q_radps,
             climb_rate_mps,
-            climb_rate_command_mps: outer.climb_rate_command_mps,
+            // A pitch step has no climb-rate loop: not applicable, rather than NaN.
+            climb_rate_command_mps: (!matches!(self.outer, OuterLoops::PitchStep { .. }))
+                .then_some(outer.climb_rate_command_mps),
             elevator_rad: a.elevator_rad,
             elevator_rate_radps: a.elevator_rate_radps,
             elevator_command_rad,

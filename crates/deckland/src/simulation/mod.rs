@@ -36,5 +36,5 @@ pub use outer_loops::OuterLoops;
 pub use recorder::{GlidePathStatistics, Recorder};
 pub use runner::{Simulation, Stop};
 pub use setup::{approach_flight_path_angle, PitchLawFactory, SetupError};
-pub use signals::Signals;
+pub use signals::{Signals, SIGNAL_MAGNITUDE_LIMIT};
 pub use taps::{LoopBreak, LoopCut, NoTaps, Overrides, Taps};

@@ -99,6 +99,18 @@ pub enum Divergence {
         /// The signal's name.
         signal: &'static str,
     },
+    /// A signal grew beyond any physical magnitude
+    /// ([`super::signals::SIGNAL_MAGNITUDE_LIMIT`]).
+    SignalOutOfRange {
+        /// Time (s).
+        time_s: f64,
+        /// The signal's name.
+        signal: &'static str,
+        /// Its value.
+        value: f64,
+        /// The largest magnitude allowed.
+        limit: f64,
+    },
     /// The angle of attack left the aerodynamic model's range.
     AngleOfAttack {
         /// Time (s).
@@ -133,6 +145,15 @@ impl fmt::Display for Divergence {
             Self::NonFiniteSignal { time_s, signal } => {
                 write!(f, "non-finite signal `{signal}` at t = {time_s:.3} s")
             }
+            Self::SignalOutOfRange {
+                time_s,
+                signal,
+                value,
+                limit,
+            } => write!(
+                f,
+                "signal `{signal}` = {value:e} beyond any physical magnitude (±{limit:e}) at t = {time_s:.3} s"
+            ),
             Self::AngleOfAttack {
                 time_s,
                 alpha_rad,

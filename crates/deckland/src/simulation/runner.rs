@@ -14,7 +14,7 @@ use super::events::EventDetector;
 use super::outcome::{Divergence, EndReason, Event, LandingRules, RunSummary};
 use super::recorder::{GlidePathStatistics, Recorder};
 use super::setup::{build, SetupError};
-use super::signals::Signals;
+use super::signals::{Signals, SIGNAL_MAGNITUDE_LIMIT};
 use super::taps::{NoTaps, Taps};
 use crate::aircraft::{ALPHA_MAX_RAD, ALPHA_MIN_RAD};
 use crate::integration::Rk4Workspace;
@@ -210,7 +210,9 @@ impl Simulation {
             };
             end = Some((reason, t));
         }
-        if self.sample_due(recorder) || end.is_some() {
+        // Signals that diverged (NaN, ∞, beyond any physical size) are never recorded:
+        // the summary names them, and nothing non-finite reaches a recorder's file.
+        if (self.sample_due(recorder) || end.is_some()) && signals.first_out_of_range().is_none() {
             recorder.sample(&signals);
         }
         if let Some((reason, end_time_s)) = end {
@@ -278,6 +280,20 @@ impl Simulation {
                 .state_name(index)
                 .unwrap_or_else(|| format!("#{index}"));
             return diverged(Divergence::NonFiniteState { time_s: t, state });
+        }
+        // Every signal, commands included: a non-finite or absurd command ends the run
+        // here, named, before it reaches the plant's next step or a recorder.
+        if let Some((signal, value)) = s.first_out_of_range() {
+            return diverged(if value.is_finite() {
+                Divergence::SignalOutOfRange {
+                    time_s: t,
+                    signal,
+                    value,
+                    limit: SIGNAL_MAGNITUDE_LIMIT,
+                }
+            } else {
+                Divergence::NonFiniteSignal { time_s: t, signal }
+            });
         }
         if !(ALPHA_MIN_RAD..=ALPHA_MAX_RAD).contains(&s.alpha_rad) {
             return diverged(Divergence::AngleOfAttack {

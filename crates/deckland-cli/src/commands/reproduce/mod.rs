@@ -220,7 +220,7 @@ impl Progress {
                 bar.set_position(self.done as u64);
                 bar.set_message(what.to_string());
             }
-            None => eprintln!("[{}/{}] {what}", self.done + 1, self.total),
+            None => warnln!("[{}/{}] {what}", self.done + 1, self.total),
         }
         self.done += 1;
     }
@@ -676,19 +676,19 @@ pub fn run(args: &ReproduceArgs) -> Result<()> {
     progress.finish();
 
     let rows: usize = sections.iter().map(|s| s.rows.len()).sum();
-    println!(
+    outln!(
         "Reproduced {} figures and a table of {rows} numbers in {:.1} s{}",
         findings.figures.len(),
         started.elapsed().as_secs_f64(),
         if args.quick { " (quick run)" } else { "" }
-    );
-    println!(
+    )?;
+    outln!(
         "  report                {}",
         output.path().join("REPORT.md").display()
-    );
-    println!(
+    )?;
+    outln!(
         "  the same as one page  {}",
         output.path().join("report.html").display()
-    );
+    )?;
     Ok(())
 }
