@@ -116,8 +116,9 @@ approach = deckland.Approach(scenario, seed=1, pitch_law=pitch_pd)
 observation = approach.reset()
 while not observation["done"]:
     observation = approach.step()
-print("Python PD pitch law:", observation["outcome"], "| glide-path error RMS",
-      round(approach.summary["glide_path_error_rms_m"], 3), "m")
+summary = approach.summary
+print(f"Python PD pitch law ({len(approach.events)} events): {summary['outcome']}, "
+      f"glide-path error RMS {summary['glide_path_error_rms_m']} m")
 
 # %% [markdown]
 # ## A campaign, into pandas
