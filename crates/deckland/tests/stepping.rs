@@ -1,10 +1,13 @@
 //! `Simulation::step` says why it stopped: stepping a run to its end gives the same
 //! result as `run`, the events come as values in the order they happened, and the end
-//! comes with its typed reason.
+//! comes with its typed reason; what the next step starts from can be looked at between
+//! steps (as the Python package's `Approach` does) without changing the run.
 
 use deckland::recording::{SummaryRecorder, TimeSeriesRecorder};
 use deckland::scenario::Scenario;
-use deckland::simulation::{EndReason, Event, Outcome, Overrides, Simulation, Stop};
+use deckland::simulation::{
+    EndReason, Event, NoTaps, Outcome, Overrides, Signals, Simulation, Stop,
+};
 
 fn default_approach() -> Scenario {
     Scenario::default()
@@ -74,4 +77,98 @@ fn a_full_thrust_override_reaches_the_engines_and_speeds_the_aircraft_up() {
     let signals = simulation.signals();
     assert!(signals.airspeed_mps > 72.0, "{}", signals.airspeed_mps);
     assert!(signals.thrust_n > 130_000.0, "{}", signals.thrust_n);
+}
+
+/// The signals the next step starts from, as `Approach` observes them.
+fn next_step_signals(simulation: &mut Simulation) -> Signals {
+    let held = simulation.next_step_inputs();
+    let mut rate = vec![0.0; simulation.state().len()];
+    simulation.system().evaluate(
+        simulation.time_s(),
+        simulation.state(),
+        &held,
+        &NoTaps,
+        &mut rate,
+    )
+}
+
+/// Regression: `Simulation::signals` before the first step panicked in an approach (no
+/// deck reference held yet). It now shows the signals the first step starts from.
+#[test]
+fn regression_signals_before_the_first_step_are_those_of_the_first_step() {
+    let scenario = Scenario::default();
+    let simulation = Simulation::new(&scenario).expect("valid");
+    let before = simulation.signals();
+
+    let mut recorder = TimeSeriesRecorder::every(scenario.time_step_s);
+    let mut stepped = simulation.clone();
+    stepped.step(&mut recorder);
+    assert_eq!(recorder.samples[0], before);
+    // Looking did not draw from the random streams: the run is unchanged.
+    let looked_at = simulation.run(&mut SummaryRecorder);
+    let fresh = Simulation::new(&scenario)
+        .expect("valid")
+        .run(&mut SummaryRecorder);
+    assert_eq!(looked_at, fresh);
+}
+
+#[test]
+fn the_next_step_starts_from_the_signals_looked_at_and_the_run_is_unchanged() {
+    let scenario = Scenario {
+        seed: 5,
+        ..Scenario::default()
+    };
+    let expected = Simulation::new(&scenario)
+        .expect("valid")
+        .run(&mut SummaryRecorder);
+    let mut simulation = Simulation::new(&scenario).expect("valid");
+    let mut recorder = TimeSeriesRecorder::every(scenario.time_step_s);
+    let mut looked_at = Vec::new();
+    loop {
+        // Look every 20 steps, as `Approach` does, with no override.
+        let step = recorder.samples.len();
+        if step % 20 == 0 {
+            looked_at.push((step, next_step_signals(&mut simulation)));
+            assert!(simulation.next_step_inputs().deck.is_some());
+        }
+        if let Stop::Ended(_) = simulation.step_with(&mut recorder, &Overrides::default()) {
+            break;
+        }
+    }
+    assert_eq!(simulation.summary(), Some(&expected));
+    assert!(looked_at.len() > 1000);
+    for (step, signals) in looked_at {
+        assert_eq!(recorder.samples[step], signals, "step {step}");
+    }
+    // After the end: the signals of the last step, again.
+    let last = recorder.samples.last().expect("samples");
+    assert_eq!(&next_step_signals(&mut simulation), last);
+}
+
+/// Regression: with the flight-control computer (the realistic default, 80 Hz), the
+/// frame's commands were computed without the step's overrides, so a pitch command
+/// given from outside never reached the pitch law. Three seconds of a pitch command
+/// 4° above trim must bring θ to within 1° of it (the pitch loop settles in about 1.6 s),
+/// where the cascade alone holds θ near trim.
+#[test]
+fn regression_a_pitch_command_reaches_the_flight_computer() {
+    let scenario = Scenario::default();
+    assert!(scenario.control.flight_computer_rate_hz.is_some());
+    let mut simulation = Simulation::new(&scenario).expect("valid");
+    let trim_theta_rad = simulation.signals().theta_ref_rad;
+    let command = trim_theta_rad + 4f64.to_radians();
+    let overrides = Overrides {
+        pitch_command_rad: Some(command),
+        ..Overrides::default()
+    };
+    for _ in 0..3000 {
+        simulation.step_with(&mut SummaryRecorder, &overrides);
+    }
+    let theta_rad = simulation.signals().theta_rad;
+    assert!(
+        (theta_rad - command).abs() < 1f64.to_radians(),
+        "θ {:.2}° against the command {:.2}°",
+        theta_rad.to_degrees(),
+        command.to_degrees()
+    );
 }

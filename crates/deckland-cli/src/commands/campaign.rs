@@ -27,7 +27,7 @@ use anyhow::{bail, Context, Result};
 use clap::Args;
 use deckland::monte_carlo::{
     run_campaign, CampaignResult, CampaignSpec, CampaignStatistics, Distribution, Proportion,
-    RunRecord,
+    RunRecord, RunRow,
 };
 use deckland::scenario::{Mission, Scenario};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressState, ProgressStyle};
@@ -85,73 +85,13 @@ struct CampaignReport<'a> {
     controllers: &'a [CampaignStatistics],
 }
 
-/// One row of `runs.csv`.
-#[derive(Debug, Serialize)]
-struct Row<'a> {
-    run_index: u64,
-    controller: &'a str,
-    seed: u64,
-    outcome: &'static str,
-    wire: Option<u8>,
-    touchdown_distance_m: Option<f64>,
-    touchdown_sink_rate_mps: Option<f64>,
-    touchdown_pitch_deg: Option<f64>,
-    touchdown_airspeed_mps: Option<f64>,
-    ramp_clearance_m: Option<f64>,
-    glide_path_error_rms_m: Option<f64>,
-    glide_path_error_max_m: Option<f64>,
-    end_time_s: Option<f64>,
-    elevator_rate_rms_degps: Option<f64>,
-    time_on_rate_limit_pct: Option<f64>,
-    time_on_stops_pct: Option<f64>,
-    elevator_travel_deg: Option<f64>,
-    thrust_rate_rms_knps: Option<f64>,
-    start_height_offset_dispersion_m: f64,
-    airspeed_dispersion_mps: f64,
-    sea_state_scale: f64,
-    wind_over_deck_dispersion_mps: f64,
-    reason: Option<String>,
-}
-
-impl<'a> Row<'a> {
-    fn new(record: &RunRecord, labels: &'a [String]) -> Self {
-        let summary = record.result.as_ref().ok();
-        let touchdown = summary.and_then(|s| s.touchdown);
-        Self {
-            run_index: record.run_index,
-            controller: labels.get(record.controller).map_or("?", String::as_str),
-            seed: record.seed,
-            outcome: record.outcome_name(),
-            wire: summary.and_then(|s| s.wire),
-            touchdown_distance_m: touchdown.map(|t| t.distance_from_aim_m),
-            touchdown_sink_rate_mps: touchdown.map(|t| t.sink_rate_mps),
-            touchdown_pitch_deg: touchdown.map(|t| t.pitch_deg),
-            touchdown_airspeed_mps: touchdown.map(|t| t.airspeed_mps),
-            ramp_clearance_m: summary.and_then(|s| s.ramp_clearance_m),
-            glide_path_error_rms_m: summary.and_then(|s| s.glide_path_error_rms_m),
-            glide_path_error_max_m: summary.and_then(|s| s.glide_path_error_max_m),
-            end_time_s: summary.map(|s| s.end_time_s),
-            elevator_rate_rms_degps: summary.map(|s| s.actuator.elevator_rate_rms_degps),
-            time_on_rate_limit_pct: summary.map(|s| s.actuator.time_on_rate_limit_pct),
-            time_on_stops_pct: summary.map(|s| s.actuator.time_on_stops_pct),
-            elevator_travel_deg: summary.map(|s| s.actuator.elevator_travel_deg),
-            thrust_rate_rms_knps: summary.map(|s| s.actuator.thrust_rate_rms_knps),
-            start_height_offset_dispersion_m: record.dispersion.start_height_offset_m,
-            airspeed_dispersion_mps: record.dispersion.airspeed_error_mps,
-            sea_state_scale: record.dispersion.sea_state_scale,
-            wind_over_deck_dispersion_mps: record.dispersion.wind_over_deck_error_mps,
-            reason: record.failure_reason(),
-        }
-    }
-}
-
 /// Writes `runs.csv` (atomically, streamed to the file): one row per finished run and
 /// controller, sorted by run index.
 fn write_runs_csv(result: &CampaignResult, output: &OutputDir) -> Result<()> {
     output.write_with("runs.csv", |path| {
         let mut csv = csv::Writer::from_path(path)?;
         for record in &result.records {
-            csv.serialize(Row::new(record, &result.controller_labels))?;
+            csv.serialize(RunRow::new(record, &result.controller_labels))?;
         }
         csv.flush()?;
         Ok(())

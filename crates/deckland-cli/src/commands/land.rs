@@ -13,7 +13,7 @@ use crate::output::OutputDir;
 use crate::plot::{Figure, MarkerShape, Panel, DECK_COLOUR};
 use anyhow::{Context, Result};
 use clap::Args;
-use deckland::experiments::{fly_approach, ApproachRun};
+use deckland::experiments::{fly_approach, ApproachRow, ApproachRun};
 use deckland::scenario::Scenario;
 use deckland::simulation::{Event, Outcome, RunSummary, Signals};
 use serde::Serialize;
@@ -60,66 +60,6 @@ pub struct LandingReport<'a> {
     /// keys are the document's own (flattened), so none may repeat a key above.
     #[serde(flatten)]
     pub summary: &'a RunSummary,
-}
-
-/// One row of `approach.csv`.
-#[derive(Debug, Serialize)]
-struct Row {
-    time_s: f64,
-    x_m: f64,
-    altitude_m: f64,
-    hook_height_m: f64,
-    glide_path_height_m: Option<f64>,
-    glide_path_error_m: f64,
-    landing_point_height_m: f64,
-    airspeed_mps: f64,
-    alpha_deg: f64,
-    theta_deg: f64,
-    theta_command_deg: f64,
-    theta_measured_deg: f64,
-    climb_rate_mps: f64,
-    climb_rate_command_mps: Option<f64>,
-    elevator_deg: f64,
-    elevator_command_deg: f64,
-    thrust_n: f64,
-    thrust_command_n: f64,
-    wind_x_mps: f64,
-    wind_z_mps: f64,
-    distance_aft_m: f64,
-    ship_heave_m: f64,
-    ship_pitch_deg: f64,
-    disturbance_estimate_radps2: Option<f64>,
-}
-
-impl From<&Signals> for Row {
-    fn from(s: &Signals) -> Self {
-        Self {
-            time_s: s.time_s,
-            x_m: s.x_m,
-            altitude_m: s.h_m,
-            hook_height_m: s.hook_h_m,
-            glide_path_height_m: s.path_height_m,
-            glide_path_error_m: s.glide_path_error_m,
-            landing_point_height_m: s.aim_point.h_m,
-            airspeed_mps: s.airspeed_mps,
-            alpha_deg: s.alpha_rad.to_degrees(),
-            theta_deg: s.theta_rad.to_degrees(),
-            theta_command_deg: s.theta_ref_rad.to_degrees(),
-            theta_measured_deg: s.theta_measured_rad.to_degrees(),
-            climb_rate_mps: s.climb_rate_mps,
-            climb_rate_command_mps: s.climb_rate_command_mps,
-            elevator_deg: s.elevator_rad.to_degrees(),
-            elevator_command_deg: s.elevator_command_rad.to_degrees(),
-            thrust_n: s.thrust_n,
-            thrust_command_n: s.thrust_command_n,
-            wind_x_mps: s.wind.x_mps,
-            wind_z_mps: s.wind.z_mps,
-            distance_aft_m: s.distance_aft_m,
-            ship_heave_m: s.ship.heave_m,
-            ship_pitch_deg: s.ship.pitch_rad.to_degrees(),
-            disturbance_estimate_radps2: s.disturbance_estimate_radps2,
-        }
-    }
 }
 
 /// Points (time, value) of one signal.
@@ -438,7 +378,7 @@ pub fn fly_and_write(
     output.write_bytes("scenario.toml", scenario_toml.as_bytes())?;
     let mut csv = csv::Writer::from_writer(Vec::new());
     for sample in &run.samples {
-        csv.serialize(Row::from(sample))?;
+        csv.serialize(ApproachRow::from(sample))?;
     }
     let bytes = csv.into_inner().map_err(|e| anyhow::anyhow!("{e}"))?;
     output.write_bytes("approach.csv", &bytes)?;

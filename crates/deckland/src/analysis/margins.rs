@@ -224,7 +224,7 @@ pub fn cascade_margins(scenario: &Scenario) -> Result<Vec<LoopMargins>, SetupErr
         p.observer.alpha1 = 1.0 - 1e-9;
     }
     let mut simulation = Simulation::new(&linear)?;
-    let held = simulation.hold_inputs_now();
+    let held = simulation.next_step_inputs();
     let system = simulation.system();
     let x0 = simulation.state();
     let nominal = simulation.signals();

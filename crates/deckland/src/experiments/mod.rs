@@ -20,7 +20,9 @@ mod pitch_step;
 mod sink_rate;
 mod sweep;
 
-pub use approach::{fly_approach, fly_approach_with_law, ApproachRun, APPROACH_RECORD_INTERVAL_S};
+pub use approach::{
+    fly_approach, fly_approach_with_law, ApproachRow, ApproachRun, APPROACH_RECORD_INTERVAL_S,
+};
 pub use conditions::Conditions;
 pub use environment::{record_environment, EnvironmentRecord, EnvironmentSample};
 pub use pitch_step::{

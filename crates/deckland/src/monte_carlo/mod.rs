@@ -11,12 +11,14 @@
 //!   Every run depends only on its seed and the runs are sorted by index at the end, so
 //!   the result is identical for any thread count.
 //! - Memory: each run keeps only its summary ([`crate::recording::SummaryRecorder`]) and
-//!   becomes one small [`RunRecord`]; nothing grows with the length of a run.
+//!   becomes one small [`RunRecord`] (flattened for files and tables as a [`RunRow`]);
+//!   nothing grows with the length of a run.
 //! - Failures are data (after nyx): a run that diverges, times out or whose dispersed
 //!   scenario is invalid is a record with its reason, never an abort. A stop flag ends a
 //!   campaign early with the runs that finished ([`CampaignResult::partial`]).
 
 mod campaign;
+mod row;
 mod seeds;
 mod statistics;
 
@@ -24,6 +26,7 @@ pub use campaign::{
     controller_label, run_campaign, CampaignError, CampaignResult, CampaignSpec, ControllerVariant,
     RunFailure, RunRecord, SharedPitchLaw,
 };
+pub use row::RunRow;
 pub use seeds::{run_seed, splitmix64_mix, SPLITMIX64_GAMMA};
 pub use statistics::{
     percentile, wilson_interval, CampaignStatistics, Distribution, Proportion, CONFIDENCE_Z_95,

@@ -12,7 +12,7 @@ use super::flight_computer::{FlightComputer, HeldCommands};
 use super::layout::{Slot, StateLayout};
 use super::outer_loops::{OuterLoopInputs, OuterLoops};
 use super::signals::Signals;
-use super::taps::{NoTaps, Taps};
+use super::taps::Taps;
 use crate::aircraft::{Aircraft, AircraftCommands, AircraftState, HookGeometry, TrimPoint};
 use crate::control::pitch::{BuiltPitchLaw, ElevatorSaturation, PitchLaw, PitchLawInputs};
 use crate::control::{DeckReference, SpeedController};
@@ -101,6 +101,10 @@ pub struct HeldInputs {
     /// (rad) and the time that reading stands for (s); the pitch law uses it in place of
     /// θ + `pitch_noise_rad`.
     pub theta_read: Option<(f64, f64)>,
+    /// Whether a frame of the flight-control computer starts at this step: then
+    /// [`ClosedLoop::compute_frame`] computes the frame's commands (`commands` holds the
+    /// last frame's until it does).
+    pub frame_starts: bool,
 }
 
 /// The random streams the loop draws from step by step.
@@ -228,32 +232,48 @@ impl ClosedLoop {
                 deck,
                 commands: None,
                 theta_read: None,
+                frame_starts: false,
             };
         };
         // A frame of the flight-control computer: read the sensor (the mean of its samples
-        // since the last frame) and compute the commands at its start; hold both until the
-        // next.
+        // since the last frame); `compute_frame` computes the commands at its start, and
+        // both are held until the next.
         let pitch_noise_rad = self.sensor.draw_white_noise() + self.sensor.sinusoid(t);
-        let starts = computer.starts_frame(t);
-        computer.sample(t, aircraft.theta_rad + pitch_noise_rad, starts);
-        let mut held = HeldInputs {
+        let frame_starts = computer.starts_frame(t);
+        computer.sample(t, aircraft.theta_rad + pitch_noise_rad, frame_starts);
+        let held = HeldInputs {
             ship_noise,
             pitch_noise_rad,
             wind,
             deck,
-            commands: None,
+            commands: Some(computer.commands),
             theta_read: Some((computer.theta_read_rad, computer.theta_read_time_s)),
+            frame_starts,
         };
-        if starts {
-            let signals = self.evaluate(t, x, &held, &NoTaps, &mut computer.scratch);
-            computer.commands = HeldCommands {
-                elevator_rad: signals.elevator_command_rad,
-                thrust_n: signals.thrust_command_n,
-            };
-        }
-        held.commands = Some(computer.commands);
         self.computer = Some(computer);
         held
+    }
+
+    /// At the start of a flight-computer frame (`held.frame_starts`), computes the frame's
+    /// elevator and thrust commands from the reading held, each passed through `taps` (so
+    /// that a command given from outside reaches the computer), and holds them in `held`
+    /// and in the computer for the rest of the frame. Without a computer, or within a
+    /// frame, does nothing. Computing again with other taps replaces the commands.
+    pub fn compute_frame<T: Taps>(&mut self, t: f64, x: &[f64], held: &mut HeldInputs, taps: &T) {
+        if !held.frame_starts {
+            return;
+        }
+        let Some(mut computer) = self.computer.take() else {
+            return;
+        };
+        held.commands = None;
+        let signals = self.evaluate(t, x, held, taps, &mut computer.scratch);
+        computer.commands = HeldCommands {
+            elevator_rad: signals.elevator_command_rad,
+            thrust_n: signals.thrust_command_n,
+        };
+        held.commands = Some(computer.commands);
+        self.computer = Some(computer);
     }
 
     /// Advances the loop's discrete-time parts by `dt` after a step: the free-air

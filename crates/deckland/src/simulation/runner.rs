@@ -40,6 +40,10 @@ pub struct Simulation {
     workspace: Rk4Workspace,
     streams: StepStreams,
     held: HeldInputs,
+    /// Whether `held` has been drawn (by a step or [`Simulation::next_step_inputs`]).
+    inputs_held: bool,
+    /// Whether `held` was drawn early for the coming step, which then holds it.
+    held_for_next_step: bool,
     time_s: f64,
     step: u64,
     dt: f64,
@@ -85,6 +89,8 @@ impl Simulation {
             workspace: Rk4Workspace::new(dimension),
             streams: setup.streams,
             held: HeldInputs::default(),
+            inputs_held: false,
+            held_for_next_step: false,
             time_s: 0.0,
             step: 0,
             dt: scenario.time_step_s,
@@ -121,20 +127,42 @@ impl Simulation {
         self.dt
     }
 
-    /// The signals at the current time and state, with the inputs held over the last
-    /// step (for an observation between steps; the run loop computes its own).
+    /// The signals at the current time and state, with the inputs held now: those of
+    /// the last step, or those drawn for the next by [`Simulation::next_step_inputs`]
+    /// (for an observation between steps; the run loop computes its own). Before the
+    /// first step, with the inputs the first step will hold.
     pub fn signals(&self) -> Signals {
         let mut rate = vec![0.0; self.state.len()];
+        let held = if self.inputs_held {
+            self.held
+        } else {
+            // Drawn from copies of the random streams: looking changes nothing.
+            let mut system = self.system.clone();
+            let mut streams = self.streams.clone();
+            let mut held = system.hold(self.time_s, &self.state, &mut streams, self.dt);
+            system.compute_frame(self.time_s, &self.state, &mut held, &NoTaps);
+            held
+        };
         self.system
-            .evaluate(self.time_s, &self.state, &self.held, &NoTaps, &mut rate)
+            .evaluate(self.time_s, &self.state, &held, &NoTaps, &mut rate)
     }
 
-    /// Draws the inputs held over the coming step and keeps them for
-    /// [`Simulation::signals`] (for analyses that evaluate the loop outside a run).
-    pub(crate) fn hold_inputs_now(&mut self) -> HeldInputs {
-        self.held = self
-            .system
-            .hold(self.time_s, &self.state, &mut self.streams, self.dt);
+    /// Draws the inputs the next step will hold (wind, pitch-sensor noise, the deck
+    /// reference with its predicted landing point) now, and keeps them for that step:
+    /// the same draws in the same order, so the run is unchanged. With them,
+    /// [`ClosedLoop::evaluate`] at the current time and state gives the signals the next
+    /// step starts from (what a recorder sampling it receives). After the end, the
+    /// inputs of the last step. For observations between steps and for analyses.
+    pub fn next_step_inputs(&mut self) -> HeldInputs {
+        if self.end.is_none() && !self.held_for_next_step {
+            self.held = self
+                .system
+                .hold(self.time_s, &self.state, &mut self.streams, self.dt);
+            self.system
+                .compute_frame(self.time_s, &self.state, &mut self.held, &NoTaps);
+            self.inputs_held = true;
+            self.held_for_next_step = true;
+        }
         self.held
     }
 
@@ -177,7 +205,14 @@ impl Simulation {
             return Stop::Ended(end.clone());
         }
         let t = self.time_s;
-        self.held = self.system.hold(t, &self.state, &mut self.streams, self.dt);
+        if !self.held_for_next_step {
+            self.held = self.system.hold(t, &self.state, &mut self.streams, self.dt);
+            self.inputs_held = true;
+        }
+        self.held_for_next_step = false;
+        // The frame's commands with this step's taps (again, if drawn early without).
+        self.system
+            .compute_frame(t, &self.state, &mut self.held, taps);
         let signals = self
             .system
             .evaluate(t, &self.state, &self.held, taps, &mut self.k1);

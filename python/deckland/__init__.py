@@ -1,0 +1,166 @@
+"""deckland: automatic carrier landing of an unmanned F/A-18, from Python.
+
+The simulator is the Rust library `deckland` (the same code as the `deckland` command);
+this package calls it directly, so every number is the CLI's, bit for bit.
+
+- :func:`trim` and :func:`linearize`: steady flight and its linear model (numpy arrays,
+  ready for ``control.ss``).
+- :class:`Scenario`: every parameter of a run, read and set by dotted path
+  (``s["environment.ship.heave_rms_m"] = 1.0``); a bad value raises ``ValueError``.
+- :func:`fly`: one approach, with its summary and time series (a pandas DataFrame when
+  pandas is installed, else a dict of numpy arrays; the columns of ``approach.csv``).
+- :func:`campaign`: many approaches in parallel (Monte Carlo), the rows of ``runs.csv``.
+- :class:`Approach`: the stepping API, one control interval at a time, the built-in
+  cascade flying or your commands replacing its loops, or your own pitch law.
+- ``deckland/CarrierLanding-v0``: a Gymnasium environment on :class:`Approach`
+  (registered when gymnasium is installed; see :mod:`deckland.env`).
+
+Units are SI and angles radians, except where a name says ``_deg``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Callable, Dict, List, Optional
+
+from . import _deckland
+from ._deckland import Approach, LinearModel, Scenario, Trim, linearize, trim
+from ._tables import table
+
+__version__ = _deckland.__version__
+
+__all__ = [
+    "Approach",
+    "Campaign",
+    "Flight",
+    "LinearModel",
+    "Scenario",
+    "Trim",
+    "campaign",
+    "fly",
+    "linearize",
+    "trim",
+]
+
+
+@dataclass
+class Flight:
+    """One flown approach.
+
+    ``summary`` is the dict of ``summary.json`` (``controller``, ``conditions``,
+    ``seed``, ``outcome``, ``wire``, ``reason``, ``end_time_s``, ``steps``,
+    ``touchdown``, ``ramp_clearance_m``, ``glide_path_error_rms_m``,
+    ``glide_path_error_max_m``); ``time_series`` has the columns of ``approach.csv``
+    (every 10 ms and the last step); ``events`` lists the ramp crossing, touchdown and
+    passing of the last wire, as dicts.
+    """
+
+    summary: Dict[str, Any]
+    time_series: Any
+    events: List[Dict[str, Any]] = field(default_factory=list)
+
+    @property
+    def outcome(self) -> str:
+        """``trap``, ``bolter``, ``ramp_strike``, ``hard_landing``, ``diverged`` or ``timeout``."""
+        return self.summary["outcome"]
+
+    @property
+    def wire(self) -> Optional[int]:
+        """The wire caught (1 aftmost … 4), for a trap or a hard landing that caught one."""
+        return self.summary["wire"]
+
+    @property
+    def reason(self) -> Optional[str]:
+        """Why the run did not trap, in words (None for a trap)."""
+        return self.summary["reason"]
+
+    @property
+    def touchdown(self) -> Optional[Dict[str, float]]:
+        """The touchdown (``time_s``, ``distance_from_aim_m``, ``sink_rate_mps``,
+        ``pitch_deg``, ``airspeed_mps``), if the hook reached the deck."""
+        return self.summary["touchdown"]
+
+    def __repr__(self) -> str:
+        wire = f", wire={self.wire}" if self.wire is not None else ""
+        return f"Flight(outcome={self.outcome!r}{wire}, seed={self.summary['seed']})"
+
+
+@dataclass
+class Campaign:
+    """A Monte Carlo campaign: ``runs`` has the columns of ``runs.csv`` (one row per run
+    and controller, by run index), ``summary`` the keys of the CLI's ``summary.json``
+    (outcome rates with 95 % Wilson intervals and touchdown statistics per controller
+    under ``"controllers"``)."""
+
+    runs: Any
+    summary: Dict[str, Any]
+
+    @property
+    def statistics(self) -> List[Dict[str, Any]]:
+        """The statistics of each controller (``summary["controllers"]``)."""
+        return self.summary["controllers"]
+
+    def __repr__(self) -> str:
+        rates = ", ".join(
+            f"{s['controller']}: {s['boarding']['rate']:.1%} boarding"
+            for s in self.statistics
+        )
+        return f"Campaign({self.summary['finished_runs']} runs; {rates})"
+
+
+def fly(
+    scenario: Optional[Scenario] = None,
+    seed: Optional[int] = None,
+    *,
+    disperse: bool = False,
+    pitch_law: Optional[Callable[[Dict[str, float]], float]] = None,
+    control_interval_s: float = 0.02,
+) -> Flight:
+    """Flies one approach and returns its :class:`Flight`.
+
+    ``scenario`` defaults to :meth:`Scenario.default` (what ``deckland land`` flies);
+    ``seed`` to the scenario's own seed (1 for the default), which seeds every random
+    stream. With ``disperse=True`` the scenario's ``[dispersion]`` is drawn from the seed
+    as a campaign run draws it (``deckland run FILE --seed S --disperse``), so a row of
+    :func:`campaign` can be flown again with its time series.
+
+    ``pitch_law`` flies a Python callable as the pitch law, called once per
+    ``control_interval_s`` (see :class:`Approach`); without it the whole run is in Rust
+    and the interpreter is released while it flies.
+    """
+    summary, columns, events = _deckland.fly(
+        scenario, seed, disperse, pitch_law, control_interval_s
+    )
+    return Flight(summary=summary, time_series=table(columns), events=events)
+
+
+def campaign(
+    scenario: Scenario,
+    runs: int,
+    seed: Optional[int] = None,
+    threads: Optional[int] = None,
+    compare: bool = False,
+) -> Campaign:
+    """Flies ``runs`` approaches of ``scenario`` in parallel, as ``deckland campaign``.
+
+    Run ``i`` flies seed SplitMix64(``seed``, i) with the scenario's dispersions drawn
+    from it; ``seed`` defaults to the scenario's. ``threads`` defaults to the number of
+    CPUs; the result does not depend on it. ``compare=True`` flies the same runs under
+    O-PD and PID. The rows are those of ``runs.csv``, bit for bit.
+    """
+    columns, summary = _deckland.campaign(scenario, runs, seed, threads, compare)
+    return Campaign(runs=table(columns), summary=summary)
+
+
+def _register_gymnasium() -> None:
+    """Registers ``deckland/CarrierLanding-v0`` when gymnasium is installed."""
+    import importlib.util
+
+    if importlib.util.find_spec("gymnasium") is None:
+        return
+    from .env import register
+
+    register()
+
+
+_register_gymnasium()

@@ -1,0 +1,52 @@
+//! `deckland._deckland`: the Rust half of the `deckland` Python package.
+//!
+//! Thin bindings over the `deckland` library, one module per concept:
+//!
+//! - [`scenario`]: `Scenario`, read and set by dotted path, checked on every change;
+//! - [`analysis`]: `trim` and `linearize`;
+//! - [`flight`]: `fly`, one recorded approach;
+//! - [`approach`]: `Approach`, the stepping API, and a Python callable as the pitch law;
+//! - [`campaign`]: `campaign`, Monte Carlo approaches in parallel;
+//! - [`columns`] and [`convert`]: rows of the CLI's CSV files as columns of numpy
+//!   arrays, and serde values as Python objects.
+//!
+//! The Python package (`python/deckland/__init__.py`) wraps these in its public API:
+//! tables become pandas DataFrames when pandas is installed. Every run releases the
+//! interpreter while it integrates, except the short steps of `Approach`.
+
+mod analysis;
+mod approach;
+mod campaign;
+mod columns;
+mod convert;
+mod errors;
+mod flight;
+mod scenario;
+
+use pyo3::prelude::*;
+
+/// The compiled core of deckland (see the `deckland` package for the documented API).
+#[pymodule]
+mod _deckland {
+    #[pymodule_export]
+    use super::analysis::{linearize, trim, LinearModel, Trim};
+    #[pymodule_export]
+    use super::approach::{bench_stepping, Approach};
+    #[pymodule_export]
+    use super::campaign::campaign;
+    #[pymodule_export]
+    use super::flight::fly;
+    #[pymodule_export]
+    use super::scenario::Scenario;
+
+    use pyo3::prelude::*;
+
+    #[pymodule_init]
+    fn init(module: &Bound<'_, PyModule>) -> PyResult<()> {
+        module.add("__version__", env!("CARGO_PKG_VERSION"))?;
+        module.add("STATE_NAMES", deckland::aircraft::STATE_NAMES.to_vec())?;
+        module.add("INPUT_NAMES", deckland::aircraft::INPUT_NAMES.to_vec())?;
+        module.add("MAX_SEED", deckland::scenario::MAX_SEED)?;
+        Ok(())
+    }
+}

@@ -1,0 +1,129 @@
+"""The package gives the CLI's numbers for the same inputs, bit for bit."""
+
+from __future__ import annotations
+
+import json
+import shutil
+
+import numpy as np
+import pytest
+
+import deckland
+
+from conftest import SCENARIOS, assert_column_equals, read_csv_columns
+
+TRIM_CASES = [
+    (69.1, 0.0, "landing"),
+    (75.0, -3.5, "landing"),
+    (120.0, 2.0, "clean"),
+]
+
+
+def trim_args(speed, gamma, configuration):
+    return ["--speed", repr(speed), "--gamma", repr(gamma), "--config", configuration, "--json"]
+
+
+@pytest.mark.parametrize("speed,gamma,configuration", TRIM_CASES)
+def test_trim_is_the_cli_trim(cli, speed, gamma, configuration):
+    expected = cli.json(["trim", *trim_args(speed, gamma, configuration)])
+    actual = deckland.trim(speed_mps=speed, gamma_deg=gamma, configuration=configuration)
+    assert actual.to_dict() == expected
+    for key in ("alpha_deg", "theta_deg", "elevator_deg", "thrust_n", "throttle"):
+        assert getattr(actual, key) == expected[key], key
+
+
+@pytest.mark.parametrize("speed,gamma,configuration", TRIM_CASES)
+def test_linearize_is_the_cli_linear_model(cli, speed, gamma, configuration):
+    expected = cli.json(["linearize", *trim_args(speed, gamma, configuration)])
+    model = deckland.linearize(speed, gamma, configuration)
+    assert np.array_equal(model.a, np.array(expected["a"]))
+    assert np.array_equal(model.b, np.array(expected["b"]))
+    assert model.a.shape == (4, 4) and model.b.shape == (4, 2)
+    eigenvalues = [complex(e["re"], e["im"]) for e in expected["eigenvalues"]]
+    assert list(model.eigenvalues) == eigenvalues
+    assert model.state_names == expected["state_names"]
+    assert model.input_names == expected["input_names"]
+    assert model.state_units == expected["state_units"]
+    assert model.input_units == expected["input_units"]
+    assert model.modes == expected["modes"]
+    assert model.trim.to_dict() == expected["trim"]
+
+
+def assert_flight_is_the_cli_run(flight, out):
+    """`flight` equals the CLI's summary.json and approach.csv in `out`, bit for bit."""
+    with open(out / "summary.json") as f:
+        assert flight.summary == json.load(f)
+    expected = read_csv_columns(out / "approach.csv")
+    series = flight.time_series
+    assert list(series.keys()) == list(expected.keys())
+    for name, column in expected.items():
+        assert_column_equals(name, column, series[name])
+
+
+@pytest.mark.parametrize("seed,controller", [(1, "opd"), (4, "pid")])
+def test_fly_is_deckland_land(cli, tmp_path, seed, controller):
+    out = tmp_path / "land"
+    cli.run(["land", "--no-plots", "--json", "--seed", str(seed), "--controller", controller, "--out", str(out)])
+    scenario = deckland.Scenario.default()
+    if controller == "pid":
+        scenario["control.pitch"] = {"type": "pid"}
+    flight = deckland.fly(scenario, seed=seed)
+    assert_flight_is_the_cli_run(flight, out)
+    assert flight.outcome == flight.summary["outcome"]
+    assert flight.touchdown == flight.summary["touchdown"]
+    with open(out / "scenario.toml") as f:
+        flown = f.read()
+    scenario["seed"] = seed
+    assert scenario.to_toml() == flown
+
+
+def test_the_paper_set_is_deckland_land_hardware_paper(cli, tmp_path):
+    out = tmp_path / "land"
+    cli.run(["land", "--no-plots", "--json", "--hardware", "paper", "--seed", "2", "--out", str(out)])
+    flight = deckland.fly(deckland.Scenario.paper(), seed=2)
+    assert_flight_is_the_cli_run(flight, out)
+    assert deckland.Scenario.paper()["hardware"] == "paper"
+    assert deckland.Scenario.default()["hardware"] == "realistic"
+
+
+def test_fly_of_a_file_with_dispersions_is_deckland_run(cli, tmp_path):
+    shutil.copy(SCENARIOS / "heavy-sea.toml", tmp_path / "heavy-sea.toml")
+    out = tmp_path / "run"
+    cli.run(
+        ["run", "heavy-sea.toml", "--seed", "9", "--disperse", "--no-plots", "--json", "--out", str(out)],
+        cwd=tmp_path,
+    )
+    scenario = deckland.Scenario.from_file(tmp_path / "heavy-sea.toml")
+    flight = deckland.fly(scenario, seed=9, disperse=True)
+    assert flight.summary["conditions"] == "heavy-sea.toml"
+    assert_flight_is_the_cli_run(flight, out)
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+def test_campaign_is_deckland_campaign(cli, tmp_path, threads):
+    shutil.copy(SCENARIOS / "heavy-sea.toml", tmp_path / "heavy-sea.toml")
+    out = tmp_path / "campaign"
+    expected_summary = cli.json(
+        ["campaign", "heavy-sea.toml", "--runs", "6", "--seed", "11", "--compare", "--threads", "2", "--json", "--out", str(out)],
+        cwd=tmp_path,
+    )
+    scenario = deckland.Scenario.from_file(tmp_path / "heavy-sea.toml")
+    result = deckland.campaign(scenario, 6, seed=11, threads=threads, compare=True)
+    expected = read_csv_columns(out / "runs.csv")
+    runs = result.runs
+    assert list(runs.keys()) == list(expected.keys())
+    for name, column in expected.items():
+        assert_column_equals(name, column, runs[name])
+    assert len(runs["run_index"]) == 12
+    timing = {"elapsed_s", "runs_per_s", "threads"}
+    assert set(result.summary) == set(expected_summary)
+    for key in set(expected_summary) - timing:
+        assert result.summary[key] == expected_summary[key], key
+    assert result.summary["threads"] == threads
+    assert result.statistics == expected_summary["controllers"]
+
+
+def test_the_default_scenario_is_the_cli_default(cli):
+    # `deckland scenario --print-default` is the commented template of the default.
+    text = cli.run(["scenario", "--print-default"]).stdout
+    assert deckland.Scenario.from_toml(text) == deckland.Scenario.default()

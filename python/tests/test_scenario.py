@@ -1,0 +1,44 @@
+"""Scenario keys by dotted path, round trips through TOML."""
+
+from __future__ import annotations
+
+import deckland
+
+
+def test_keys_are_read_and_set_by_dotted_path():
+    scenario = deckland.Scenario.default()
+    scenario["environment.ship.heave_rms_m"] = 1.0
+    assert scenario["environment.ship.heave_rms_m"] == 1.0
+    assert scenario["environment.ship"]["heave_rms_m"] == 1.0
+    scenario["environment.deck.wire_positions_m"] = [-20.0, -7.0, 7.0, 20.0]
+    assert scenario["environment.deck.wire_positions_m"] == [-20.0, -7.0, 7.0, 20.0]
+    scenario["seed"] = 42
+    assert scenario["seed"] == 42 and isinstance(scenario["seed"], int)
+    assert "environment.ship.heave_rms_m" in scenario
+    assert "environment.ship.swell" not in scenario
+
+
+def test_every_key_round_trips_through_the_scenario_file():
+    scenario = deckland.Scenario.default()
+    scenario["control.pitch"] = {"type": "pid"}
+    scenario["approach.start_height_offset_m"] = 3.0
+    again = deckland.Scenario.from_toml(scenario.to_toml())
+    assert again == scenario
+    keys = scenario.keys()
+    assert "control.pitch.type" in keys and "approach.start_range_m" in keys
+    for key in keys:
+        assert again[key] == scenario[key]
+
+
+def test_a_section_switches_whole():
+    scenario = deckland.Scenario.default()
+    assert scenario["control.pitch.type"] == "observer_pd"
+    scenario["control.pitch"] = {"type": "pid"}
+    assert scenario["control.pitch.type"] == "pid"
+    assert repr(scenario) == 'Scenario(name="adverse", seed=1, pitch_law="PID")'
+
+
+def test_an_integer_is_taken_for_a_float_key():
+    scenario = deckland.Scenario.default()
+    scenario["approach.start_range_m"] = 1200
+    assert scenario["approach.start_range_m"] == 1200.0
