@@ -97,6 +97,11 @@ pub struct ControlSection {
     /// (docs/model.md §2.6; F/A-18: 80 Hz). `None` updates them every integration step,
     /// as the paper's simulation.
     pub flight_computer_rate_hz: Option<f64>,
+    /// Refuse, before the run, a pitch tuning that the stabilator's rate limit cannot
+    /// follow: one in which the describing function predicts a rate-limit oscillation
+    /// from less than 3× the elevator's travel to the nearer stop (docs/pitch-step.md).
+    /// `false` flies it anyway, for studies of that oscillation.
+    pub rate_limit_check: bool,
     /// Pitch controller: O-PD (default) or PID.
     pub pitch: PitchControllerParameters,
     /// Speed (thrust) loop.
@@ -113,6 +118,7 @@ impl Default for ControlSection {
     fn default() -> Self {
         Self {
             flight_computer_rate_hz: Some(80.0),
+            rate_limit_check: true,
             pitch: PitchControllerParameters::default(),
             speed: SpeedControllerParameters::default(),
             sink_rate: SinkRateControllerParameters::default(),

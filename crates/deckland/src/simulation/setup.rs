@@ -5,9 +5,12 @@ use super::closed_loop::{ClosedLoop, LoopLayout, StepStreams};
 use super::deck_prediction::{DeckPredictor, DeckView};
 use super::flight_computer::FlightComputer;
 use super::outer_loops::OuterLoops;
-use crate::aircraft::{linearize, trim, Aircraft, TrimError, TrimPoint, TrimRequest};
+use crate::aircraft::{linearize, trim, Aircraft, LinearModel, TrimError, TrimPoint, TrimRequest};
 use crate::control::pitch::command_shaping::JerkLimitedStep;
-use crate::control::pitch::design::{command_bounds, PitchDesignRequest, PitchHardware};
+use crate::control::pitch::design::{
+    check_pitch_tuning, command_bounds, AngleOfAttackCoupling, PitchDesignRequest, PitchHardware,
+    PitchTuningProblem,
+};
 use crate::control::pitch::{
     BuiltPitchLaw, PitchDesignContext, PitchLaw, PitchLawInputs, PitchPlantDerivatives,
 };
@@ -189,6 +192,89 @@ fn shape_pitch_step(
     })
 }
 
+/// Refuses a registered pitch law that the hardware cannot fly ([`check_pitch_tuning`]):
+/// unstable with the actuator and the flight computer's delay, or open to a rate-limit
+/// oscillation of the stabilator. The error names the parameter that sets the loop's
+/// speed and the hardware that limits it. Nothing to check on the paper's hardware (no
+/// rate limit, no computer), for a user's own law, or with `control.rate_limit_check`
+/// off.
+fn refuse_infeasible_pitch_tuning(
+    scenario: &Scenario,
+    context: &PitchDesignContext,
+    model: &LinearModel,
+    elevator_trim_rad: f64,
+) -> Result<(), SetupError> {
+    let rate_limit = context.actuator.rate_limit_degps;
+    let computer = scenario.control.flight_computer_rate_hz;
+    if (rate_limit.is_none() && computer.is_none()) || !scenario.control.rate_limit_check {
+        return Ok(());
+    }
+    let Some(linear) = scenario.control.pitch.linear_law(context.plant) else {
+        return Ok(());
+    };
+    let hardware = PitchHardware {
+        actuator: context.actuator,
+        elevator_trim_rad,
+        plant: context.plant,
+        coupling: Some(AngleOfAttackCoupling {
+            dalphadot_dalpha_per_s: model.a[(2, 2)],
+            dalphadot_delevator_per_s: model.b[(2, 0)],
+            dqdot_dalpha_per_s2: model.pitch_stiffness_per_s2(),
+        }),
+        // As the design assesses a sampled computer: half a frame for the zero-order
+        // hold and one frame for the reading and the computing (control::pitch::design).
+        control_delay_s: computer.map_or(0.0, |rate| 1.5 / rate),
+    };
+    let ratio = PitchDesignRequest::default().min_limit_cycle_travel_ratio;
+    let hardware_named = match (rate_limit, computer) {
+        (Some(rate), Some(hz)) => format!(
+            "aircraft.elevator_actuator.rate_limit_degps = {rate} and \
+             control.flight_computer_rate_hz = {hz}"
+        ),
+        (Some(rate), None) => format!("aircraft.elevator_actuator.rate_limit_degps = {rate}"),
+        (None, Some(hz)) => format!("control.flight_computer_rate_hz = {hz}"),
+        (None, None) => String::new(),
+    };
+    let why = match check_pitch_tuning(&hardware, &linear.law, ratio) {
+        Ok(()) => return Ok(()),
+        Err(PitchTuningProblem::Unstable {
+            phase_margin_deg: Some(pm),
+            crossover_radps,
+        }) => format!(
+            "a pitch loop stable on this hardware: with {hardware_named} the loop has a \
+             phase margin of {pm:.1}° at {:.1} rad/s (the actuator's lag and the \
+             computer's delay included), so it diverges",
+            crossover_radps.unwrap_or(f64::NAN)
+        ),
+        Err(PitchTuningProblem::Unstable { .. }) => format!(
+            "a pitch loop stable on this hardware: with {hardware_named} the linear loop \
+             has an unstable eigenvalue"
+        ),
+        Err(PitchTuningProblem::RateLimitOscillation {
+            amplitude_rad,
+            travel_rad,
+        }) => format!(
+            "a pitch loop the stabilator can follow: with {hardware_named} the describing \
+             function predicts a rate-limit oscillation from an elevator command of \
+             {:.1}° amplitude, less than {ratio} × the {:.1}° of travel to the nearer stop, \
+             so the loop would diverge in turbulence",
+            amplitude_rad.to_degrees(),
+            travel_rad.to_degrees(),
+        ),
+    };
+    Err(ParameterError::new(
+        "control.pitch",
+        linear.speed_key,
+        linear.speed_value,
+        format_args!(
+            "{why}; choose {} or faster hardware (control.rate_limit_check = false flies \
+             it anyway, for studies)",
+            linear.speed_advice
+        ),
+    )
+    .into())
+}
+
 /// Builds the loop for `scenario`, with `pitch_law` flying instead of the scenario's
 /// pitch law when given.
 pub(crate) fn build(
@@ -242,6 +328,9 @@ pub(crate) fn build(
         None => scenario.control.pitch.build(&context)?,
         Some(factory) => BuiltPitchLaw::Custom(factory(&context)?.into()),
     };
+    if pitch_law.is_none() {
+        refuse_infeasible_pitch_tuning(scenario, &context, &model, trim_point.elevator_rad)?;
+    }
     let outer = shape_pitch_step(outer, scenario, &context, trim_point.elevator_rad)?;
     let speed = SpeedController::new(
         &scenario.control.speed,

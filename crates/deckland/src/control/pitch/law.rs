@@ -168,6 +168,13 @@ pub trait PitchLawDesign {
 
     /// Builds the law for a plant and its hardware.
     fn build(&self, context: &PitchDesignContext) -> Result<Self::Law, ParameterError>;
+
+    /// The law in its linear limit on the reduced pitch loop, with the parameter that sets
+    /// its speed, for the check that the stabilator's rate limit can follow it
+    /// ([`super::design::check_pitch_tuning`]); `None` (the default): not checked.
+    fn linear_law(&self, _plant: PitchPlantDerivatives) -> Option<super::design::LinearisedLaw> {
+        None
+    }
 }
 
 /// Lists the registered pitch laws: one line each, `Variant("type name", Parameters)`,
@@ -201,6 +208,17 @@ macro_rules! pitch_laws {
             pub fn validate(&self) -> Result<(), $crate::parameters::ParameterError> {
                 match self {
                     $( Self::$variant(p) => $crate::control::pitch::PitchLawDesign::validate(p, Self::SECTION), )+
+                }
+            }
+
+            /// The chosen law in its linear limit, for the rate-limit check (`None`: a law
+            /// that is not checked).
+            pub fn linear_law(
+                &self,
+                plant: $crate::control::pitch::PitchPlantDerivatives,
+            ) -> Option<$crate::control::pitch::design::LinearisedLaw> {
+                match self {
+                    $( Self::$variant(p) => $crate::control::pitch::PitchLawDesign::linear_law(p, plant), )+
                 }
             }
 

@@ -17,6 +17,8 @@ use super::law::{
     PitchDesignContext, PitchLaw, PitchLawDesign, PitchLawInputs, PitchPlantDerivatives,
 };
 use crate::estimation::{AugmentedObserver, ObserverParameters, ObserverState};
+use super::design::loop_model::LinearPitchLaw;
+use super::design::LinearisedLaw;
 use crate::parameters::{Bounds, ParameterError};
 
 /// Which pitch attitude the O-PD proportional term compares with θ_ref.
@@ -48,7 +50,7 @@ pub enum PitchFeedback {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct ObserverPdParameters {
-    /// Design settling time T_2% (s) in ω_n = 4/(T_2%·ζ) (paper Eq. 34; default 0.3 s).
+    /// Design settling time T_2% (s) in ω_n = 4/(T_2%·ζ) (paper Eq. 34; the paper flies 0.3 s, the realistic set 1.6 s).
     pub settling_time_s: f64,
     /// Damping ratio ζ of the error dynamics (dimensionless; paper: √2).
     pub damping_ratio: f64,
@@ -109,6 +111,22 @@ impl PitchLawDesign for ObserverPdParameters {
 
     fn build(&self, context: &PitchDesignContext) -> Result<ObserverPdController, ParameterError> {
         ObserverPdController::new(self, context.plant)
+    }
+
+    fn linear_law(&self, plant: PitchPlantDerivatives) -> Option<LinearisedLaw> {
+        let gains =
+            ObserverPdGains::design(self.settling_time_s, self.damping_ratio, plant.dqdot_dq_per_s)
+                .ok()?;
+        Some(LinearisedLaw {
+            law: LinearPitchLaw::ObserverPd {
+                gains,
+                observer: self.observer,
+                feedback: self.pitch_feedback,
+            },
+            speed_key: "settling_time_s",
+            speed_value: self.settling_time_s,
+            speed_advice: "a longer settling_time_s",
+        })
     }
 }
 

@@ -17,6 +17,8 @@ use super::law::{
     PitchPlantDerivatives,
 };
 use crate::parameters::{Bounds, ParameterError};
+use super::design::loop_model::LinearPitchLaw;
+use super::design::LinearisedLaw;
 
 /// PID gains and options (paper Eq. 37; gains as printed in paper §4.2.3).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -80,6 +82,15 @@ impl PitchLawDesign for PidParameters {
 
     fn build(&self, context: &PitchDesignContext) -> Result<PidController, ParameterError> {
         PidController::new(self, context.plant)
+    }
+
+    fn linear_law(&self, _plant: PitchPlantDerivatives) -> Option<LinearisedLaw> {
+        Some(LinearisedLaw {
+            law: LinearPitchLaw::Pid(*self),
+            speed_key: "proportional_per_s2",
+            speed_value: self.proportional_per_s2,
+            speed_advice: "smaller gains",
+        })
     }
 }
 
