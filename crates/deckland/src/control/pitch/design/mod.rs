@@ -112,7 +112,11 @@ pub struct PitchDesignRequest {
     pub design_step_deg: f64,
     /// Requested settling time of the design step (s); `None`: the fastest allowed.
     pub command_settling_time_s: Option<f64>,
-    /// Share η of the rate limit the shaped command may use (–); default 0.75.
+    /// Share η of the rate limit the shaped command may use (–); default 0.6. The rest
+    /// (16 °/s of the 40) is left to the feedback: in adverse conditions the sensor's
+    /// errors and the gusts alone drive the elevator at about 15 °/s RMS. With 0.75 the
+    /// adverse 5° step spent 24 % of its time on the rate limit and overshot 15 %; with
+    /// 0.6, 8 % and 2 % (docs/pitch-step.md).
     pub command_rate_fraction: f64,
     /// Share κ of the travel to the nearer stop the shaped command may use (–); 0.8.
     pub command_travel_fraction: f64,
@@ -139,7 +143,7 @@ impl Default for PitchDesignRequest {
         Self {
             design_step_deg: 5.0,
             command_settling_time_s: None,
-            command_rate_fraction: 0.75,
+            command_rate_fraction: 0.6,
             command_travel_fraction: 0.8,
             min_phase_margin_deg: 45.0,
             min_gain_margin_db: 6.0,

@@ -40,9 +40,10 @@ fn command_bounds_follow_from_rate_limit_and_travel() {
     assert_eq!(stop, "aircraft.elevator_actuator.min_deflection_deg");
 }
 
-/// 5° step with J = 0.94275: τ_j = (0.087266/(2·0.94275))^(1/3) = 0.35904 s,
-/// peak acceleration 0.33848 < A, T = 1.43615 s; plus the actuator's lag
-/// 2·0.509/30.74 = 0.03312 s: 1.46927 s. A request of 1.2 s is refused, naming the
+/// 5° step with the default η = 0.6: J = 0.6·0.69813·1.9675 − 0.1891·0.46235 = 0.82414
+/// − 0.08743 = 0.73671 rad/s³; τ_j = (0.087266/(2·0.73671))^(1/3) = 0.38980 s, peak
+/// acceleration 0.28717 < A, T = 4τ_j = 1.55919 s; plus the actuator's lag
+/// 2·0.509/30.74 = 0.03312 s: 1.59231 s. A request of 1.2 s is refused, naming the
 /// rate limit; 2 s is granted with a gentler trajectory.
 #[test]
 fn settling_time_below_the_rate_limit_minimum_is_refused_by_name() {
@@ -59,7 +60,7 @@ fn settling_time_below_the_rate_limit_minimum_is_refused_by_name() {
     else {
         panic!("{error:?}");
     };
-    assert!((minimum_s - 1.469_27).abs() < 1e-4, "{minimum_s}");
+    assert!((minimum_s - 1.592_31).abs() < 1e-4, "{minimum_s}");
     assert_eq!(*limiting, "aircraft.elevator_actuator.rate_limit_degps");
     assert!(error.to_string().contains("rate_limit_degps"), "{error}");
     let slower = PitchDesignRequest {
@@ -117,7 +118,7 @@ fn default_design_meets_its_targets() {
     assert!(f.limit_cycle_amplitude_rad >= 3.0 * travel, "{f:?}");
     // The paper's T_2% = 0.3 s is not among the admissible gains.
     assert!(f.parameters.settling_time_s > 1.0, "{f:?}");
-    assert!((design.command_settling_time_s - 1.469_27).abs() < 1e-4);
+    assert!((design.command_settling_time_s - 1.592_31).abs() < 1e-4);
 }
 
 /// The paper's gains on the realistic hardware fail, and the error names a
