@@ -1,11 +1,12 @@
-//! Loop-by-loop stability margins of the default landing cascade, linearised at the start
-//! of an ideal-conditions approach (docs/model.md §5):
+//! Loop-by-loop stability margins of the landing cascade of both hardware sets, linearised
+//! at the start of an ideal-conditions approach (docs/model.md §5), with each set's O-PD and
+//! PID and with the set's or the paper's outer-loop gains:
 //! `cargo run --release -p deckland --example margins`.
 
 use deckland::analysis::cascade_margins;
 use deckland::control::pitch::{PidParameters, PitchControllerParameters};
 use deckland::control::{GuidanceParameters, SinkRateControllerParameters};
-use deckland::scenario::Scenario;
+use deckland::scenario::HardwareSet;
 use deckland::simulation::SetupError;
 
 fn show(value: Option<f64>, unit: &str) -> String {
@@ -13,25 +14,26 @@ fn show(value: Option<f64>, unit: &str) -> String {
 }
 
 fn main() -> Result<(), SetupError> {
-    println!("| pitch control | outer-loop gains | loop (cut at) | bandwidth (first crossover) | phase margin there | gain margin | modulus margin (at ω) | closed loop max Re λ |");
-    println!("|---|---|---|---|---|---|---|---|");
-    for (pitch_name, pitch) in [
-        ("O-PD", PitchControllerParameters::default()),
-        (
-            "PID",
-            PitchControllerParameters::Pid(PidParameters::default()),
-        ),
-    ] {
-        for (gains_name, paper) in [("default", false), ("paper", true)] {
-            let mut scenario = Scenario::default();
-            scenario.control.pitch = pitch;
-            if paper {
-                scenario.control.sink_rate = SinkRateControllerParameters::paper();
-                scenario.control.guidance = GuidanceParameters::paper();
-            }
-            for m in cascade_margins(&scenario)? {
-                println!(
-                    "| {pitch_name} | {gains_name} | {:?} | {} | {} | {} at {} | {:.2} ({:.2} rad/s) | {:+.3} 1/s |",
+    println!("| hardware | pitch control | outer-loop gains | loop (cut at) | bandwidth (first crossover) | phase margin there | gain margin | modulus margin (at ω) | closed loop max Re λ |");
+    println!("|---|---|---|---|---|---|---|---|---|");
+    for set in [HardwareSet::Realistic, HardwareSet::Paper] {
+        let opd = set.scenario().control.pitch;
+        let pid = match set {
+            HardwareSet::Realistic => PidParameters::default(),
+            HardwareSet::Paper => PidParameters::paper(),
+        };
+        for (pitch_name, pitch) in [("O-PD", opd), ("PID", PitchControllerParameters::Pid(pid))] {
+            for (gains_name, paper) in [("the set's", false), ("paper", true)] {
+                let mut scenario = set.scenario();
+                scenario.control.pitch = pitch;
+                if paper {
+                    scenario.control.sink_rate = SinkRateControllerParameters::paper();
+                    scenario.control.guidance = GuidanceParameters::paper();
+                }
+                for m in cascade_margins(&scenario)? {
+                    println!(
+                    "| {} | {pitch_name} | {gains_name} | {:?} | {} | {} | {} at {} | {:.2} ({:.2} rad/s) | {:+.3} 1/s |",
+                    set.name(),
                     m.loop_break,
                     show(m.crossover_radps, "rad/s"),
                     show(m.phase_margin_deg, "°"),
@@ -41,6 +43,7 @@ fn main() -> Result<(), SetupError> {
                     m.modulus_margin_radps,
                     m.closed_loop_max_real_part,
                 );
+                }
             }
         }
     }
