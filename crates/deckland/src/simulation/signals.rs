@@ -140,7 +140,16 @@ impl Signals {
     /// its value; `None` when every signal is in range.
     pub fn first_out_of_range(&self) -> Option<(&'static str, f64)> {
         let in_range = |v: f64| v.abs() <= SIGNAL_MAGNITUDE_LIMIT; // false for NaN
-        self.named_values()
+        let values = self.named_values();
+        // Checked every step: one pass without early exits (which the compiler can keep
+        // branch-free), then the search for the name only when something is wrong.
+        let all_in_range = values
+            .iter()
+            .fold(true, |ok, (_, value)| ok & value.is_none_or(in_range));
+        if all_in_range {
+            return None;
+        }
+        values
             .into_iter()
             .find_map(|(name, value)| value.filter(|v| !in_range(*v)).map(|v| (name, v)))
     }
