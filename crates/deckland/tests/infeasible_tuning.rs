@@ -81,3 +81,24 @@ fn each_set_flies_its_own_gains() {
     pid.control.pitch = PitchControllerParameters::Pid(PidParameters::default());
     assert!(Simulation::new(&pid).is_ok());
 }
+
+/// Issue 11, bad input: a rate limit that is not positive, not a number or beyond the
+/// key's physical range ((0, 500] °/s, docs/model.md §2.6) is refused naming the key and
+/// the value.
+#[test]
+fn a_rate_limit_outside_its_physical_range_is_refused_by_name() {
+    for value in ["0.0", "-40.0", "600.0", "nan", "inf"] {
+        let text = format!("[aircraft.elevator_actuator]\nrate_limit_degps = {value}\n");
+        let error = deckland::scenario::load_scenario(&text, "s.toml")
+            .err()
+            .map(|e| e.to_string());
+        let Some(error) = error else {
+            panic!("rate_limit_degps = {value} was accepted");
+        };
+        assert!(
+            error.contains("rate_limit_degps")
+                && error.to_lowercase().contains(value.trim_end_matches(".0")),
+            "{value}: {error}"
+        );
+    }
+}
