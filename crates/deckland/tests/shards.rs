@@ -61,7 +61,7 @@ fn three_shards_merged_are_the_campaign_flown_whole() {
         CampaignSpec::new(short_dispersed_scenario(), runs, seed).comparing_pitch_controllers();
     let whole = fly(&spec);
     let mut shards = Vec::new();
-    for index in [3, 1, 2] {
+    for index in [2, 0, 1] {
         let shard = Shard::new(index, 3).unwrap();
         let result = fly(&spec.clone().sharded(shard));
         assert_eq!(result.records.len() as u64, 2 * shard.runs_of(runs));
@@ -75,7 +75,7 @@ fn three_shards_merged_are_the_campaign_flown_whole() {
         .map(|r| RunRow::new(r, &whole.controller_labels))
         .collect();
     assert_eq!(merged.rows, expected);
-    assert_eq!(merged.sources, ["shard-1", "shard-2", "shard-3"]);
+    assert_eq!(merged.sources, ["shard-0", "shard-1", "shard-2"]);
     // The statistics from the rows are those from the records.
     let summary = CampaignSummary::of_rows(
         &merged.rows,
@@ -110,7 +110,7 @@ fn a_merge_refuses_shards_that_do_not_belong_together() {
         let result = fly(&spec.clone().sharded(Shard::new(index, 3).unwrap()));
         shard_rows(&result, seed, &format!("s{index}"))
     };
-    let (one, two, three) = (shard(1), shard(2), shard(3));
+    let (one, two, three) = (shard(0), shard(1), shard(2));
     let all = || vec![one.clone(), two.clone(), three.clone()];
     assert!(merge_shards(all()).is_ok());
     assert_eq!(merge_shards(Vec::new()), Err(MergeError::NoShards));
@@ -119,26 +119,26 @@ fn a_merge_refuses_shards_that_do_not_belong_together() {
     assert_eq!(
         error,
         MergeError::MissingShards {
-            missing: vec![2],
+            missing: vec![1],
             count: 3
         }
     );
     assert_eq!(
         error.to_string(),
-        "missing shard 2 of 3: a merge needs every shard"
+        "missing shard 1/3: a merge needs every shard"
     );
 
     let error =
         merge_shards(vec![one.clone(), two.clone(), two.clone(), three.clone()]).unwrap_err();
     assert!(matches!(error, MergeError::Overlapping { .. }), "{error}");
-    assert!(error.to_string().contains("both shard 2/3"), "{error}");
+    assert!(error.to_string().contains("both shard 1/3"), "{error}");
 
     let mut partial = all();
     partial[1].identity.partial = true;
     partial[1].rows.pop();
     let error = merge_shards(partial).unwrap_err();
     assert!(
-        error.to_string().contains("s2 is shard 2/3 stopped"),
+        error.to_string().contains("s1 is shard 1/3 stopped"),
         "{error}"
     );
 
@@ -147,7 +147,7 @@ fn a_merge_refuses_shards_that_do_not_belong_together() {
     let error = merge_shards(other_seed).unwrap_err();
     assert_eq!(
         error.to_string(),
-        "s3 is not a shard of the same campaign as s1: `campaign_seed` is 10 there and 9 in s1"
+        "s2 is not a shard of the same campaign as s0: `campaign_seed` is 10 there and 9 in s0"
     );
 
     let mut other_runs = all();
@@ -158,11 +158,11 @@ fn a_merge_refuses_shards_that_do_not_belong_together() {
         .contains("`requested_runs` is 7"));
 
     let mut other_count = all();
-    other_count[1].identity.shard = Shard::new(2, 4).unwrap();
+    other_count[1].identity.shard = Shard::new(1, 4).unwrap();
     assert!(merge_shards(other_count)
         .unwrap_err()
         .to_string()
-        .contains("`shard count M` is 2/4"));
+        .contains("`shard count M` is 1/4"));
 
     let mut other_scenario = all();
     other_scenario[1].identity.scenario_toml = "seed = 1\n".to_owned();
@@ -173,7 +173,7 @@ fn a_merge_refuses_shards_that_do_not_belong_together() {
     assert!(
         error
             .to_string()
-            .contains("s2 flew another scenario than s1"),
+            .contains("s1 flew another scenario than s0"),
         "{error}"
     );
 
@@ -184,7 +184,7 @@ fn a_merge_refuses_shards_that_do_not_belong_together() {
     assert!(
         error
             .to_string()
-            .contains("s3 (shard 3/3) holds 1 of its 2 rows; the first missing is run 5"),
+            .contains("s2 (shard 2/3) holds 1 of its 2 rows; the first missing is run 5"),
         "{error}"
     );
 
@@ -195,7 +195,7 @@ fn a_merge_refuses_shards_that_do_not_belong_together() {
     assert!(merge_shards(foreign)
         .unwrap_err()
         .to_string()
-        .contains("run 0 (O-PD) belongs to shard 1/3"));
+        .contains("run 0 (O-PD) belongs to shard 0/3"));
     let mut twice = all();
     let copy = twice[0].rows[0].clone();
     twice[0].rows.push(copy);
@@ -214,12 +214,12 @@ fn a_merge_refuses_shards_that_do_not_belong_together() {
 #[test]
 fn a_shard_beyond_the_runs_is_refused() {
     let spec =
-        CampaignSpec::new(short_dispersed_scenario(), 2, 1).sharded(Shard::new(3, 3).unwrap());
+        CampaignSpec::new(short_dispersed_scenario(), 2, 1).sharded(Shard::new(2, 3).unwrap());
     let error = run_campaign(&spec, 1, &|_: &RunRecord| {}, &AtomicBool::new(false)).unwrap_err();
     assert!(
         error
             .to_string()
-            .contains("shard 3/3 of a campaign of 2 runs holds no run"),
+            .contains("shard 2/3 of a campaign of 2 runs holds no run"),
         "{error}"
     );
 }

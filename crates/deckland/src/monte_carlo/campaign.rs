@@ -210,7 +210,7 @@ pub enum CampaignError {
     /// The scenario's mission is not an approach.
     #[error("a campaign flies approaches: set `mission.kind = \"approach\"`")]
     NotAnApproach,
-    /// A shard beyond the runs: shard K of M holds no run when K > N.
+    /// A shard beyond the runs: shard K/M holds no run when K ≥ N.
     #[error("shard {shard} of a campaign of {runs} runs holds no run: use at most {runs} shards")]
     EmptyShard {
         /// The shard.

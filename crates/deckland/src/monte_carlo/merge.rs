@@ -52,7 +52,7 @@ pub struct MergedCampaign {
     pub controllers: Vec<String>,
     /// Every run's rows, sorted by run index and controller.
     pub rows: Vec<RunRow<'static>>,
-    /// The shards' sources, by shard index (the first is shard 1).
+    /// The shards' sources, by shard index (the first is shard 0).
     pub sources: Vec<String>,
 }
 
@@ -112,9 +112,9 @@ pub enum MergeError {
         other: String,
     },
     /// Shards of the campaign are not there.
-    #[error("missing shard{} {} of {count}: a merge needs every shard", if missing.len() == 1 { "" } else { "s" }, missing.iter().map(u64::to_string).collect::<Vec<_>>().join(", "))]
+    #[error("missing shard{} {}: a merge needs every shard", if missing.len() == 1 { "" } else { "s" }, missing.iter().map(|k| format!("{k}/{count}")).collect::<Vec<_>>().join(", "))]
     MissingShards {
-        /// The shards missing (K of K/M).
+        /// The shards missing (K of K/M, from 0).
         missing: Vec<u64>,
         /// M.
         count: u64,
@@ -242,7 +242,7 @@ pub fn merge_shards(mut shards: Vec<ShardRows>) -> Result<MergedCampaign, MergeE
     let mut by_index: Vec<Option<usize>> = vec![None; usize::try_from(count).unwrap_or(0)];
     for (position, shard) in shards.iter().enumerate() {
         let identity = &shard.identity;
-        let slot = usize::try_from(identity.shard.index() - 1)
+        let slot = usize::try_from(identity.shard.index())
             .ok()
             .and_then(|i| by_index.get_mut(i));
         let Some(slot) = slot else {
@@ -257,8 +257,8 @@ pub fn merge_shards(mut shards: Vec<ShardRows>) -> Result<MergedCampaign, MergeE
         }
         *slot = Some(position);
     }
-    let missing: Vec<u64> = (1..=count)
-        .filter(|&k| by_index.get((k - 1) as usize).is_none_or(Option::is_none))
+    let missing: Vec<u64> = (0..count)
+        .filter(|&k| by_index.get(k as usize).is_none_or(Option::is_none))
         .collect();
     if !missing.is_empty() {
         return Err(MergeError::MissingShards { missing, count });
@@ -326,7 +326,7 @@ fn check_rows(
                 row,
                 format!(
                     "belongs to shard {}/{}",
-                    row.run_index % identity.shard.count() + 1,
+                    row.run_index % identity.shard.count(),
                     identity.shard.count()
                 ),
             ));

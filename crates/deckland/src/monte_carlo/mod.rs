@@ -13,7 +13,7 @@
 //! - Memory: each run keeps only its summary ([`crate::recording::SummaryRecorder`]) and
 //!   becomes one small [`RunRecord`] (flattened for files and tables as a [`RunRow`]);
 //!   nothing grows with the length of a run.
-//! - Shards: a [`Shard`] K/M of a campaign flies the runs i with i mod M = K − 1; since a
+//! - Shards: a [`Shard`] K/M of a campaign flies the runs i with i mod M = K; since a
 //!   run depends only on the campaign seed and its index, [`merge_shards`] puts the M
 //!   shards' rows (`runs.csv`, [`RunRow`]) together into the campaign flown whole,
 //!   refusing shards that do not belong together ([`MergeError`]).

@@ -1,6 +1,6 @@
 //! Shards: the part of a campaign one machine flies.
 //!
-//! Shard K of M (K from 1) flies the runs i (from 0) with i mod M = K − 1: round robin, so
+//! Shard K/M (K from 0 to M − 1) flies the runs i (from 0) with i mod M = K: round robin, so
 //! every shard holds a sample of the whole campaign spread over its run indices, and the
 //! shards of one campaign differ in size by at most one run. Run i depends only on the
 //! campaign seed and i ([`super::run_seed`]), so the union of the M shards is the
@@ -12,14 +12,14 @@ use std::str::FromStr;
 use serde::Serialize;
 
 /// The sharding scheme in words, for summaries.
-pub const SHARD_SCHEME: &str = "round robin: shard K of M (K from 1) flies the runs i (from 0) \
-                                with i mod M = K − 1";
+pub const SHARD_SCHEME: &str = "round robin: shard K/M (K from 0 to M − 1) flies the runs i \
+                                (from 0) with i mod M = K";
 
-/// Shard `index` (1 to `count`) of a campaign split into `count` shards; made only by
+/// Shard `index` (0 to `count` − 1) of a campaign split into `count` shards; made only by
 /// [`Shard::new`] or parsed from `K/M`, so always valid.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
 pub struct Shard {
-    /// Which shard, from 1.
+    /// Which shard, from 0.
     index: u64,
     /// How many shards the campaign is split into.
     count: u64,
@@ -40,8 +40,8 @@ pub enum ShardError {
         /// The K given.
         index: u64,
     },
-    /// K = 0 or K > M.
-    #[error("shard `{index}/{count}`: K must be 1 to M = {count} (shards count from 1)")]
+    /// K ≥ M.
+    #[error("shard `{index}/{count}`: K must be 0 to M − 1 = {} (shards count from 0, as run indices)", count - 1)]
     IndexOutOfRange {
         /// The K given.
         index: u64,
@@ -51,21 +51,21 @@ pub enum ShardError {
 }
 
 impl Shard {
-    /// The whole campaign: shard 1 of 1.
-    pub const WHOLE: Self = Self { index: 1, count: 1 };
+    /// The whole campaign: shard 0/1.
+    pub const WHOLE: Self = Self { index: 0, count: 1 };
 
     /// Shard `index` of `count`, checked.
     pub fn new(index: u64, count: u64) -> Result<Self, ShardError> {
         if count == 0 {
             return Err(ShardError::NoShards { index });
         }
-        if index == 0 || index > count {
+        if index >= count {
             return Err(ShardError::IndexOutOfRange { index, count });
         }
         Ok(Self { index, count })
     }
 
-    /// Which shard, from 1 (K of K/M).
+    /// Which shard, from 0 (K of K/M).
     pub fn index(&self) -> u64 {
         self.index
     }
@@ -75,19 +75,19 @@ impl Shard {
         self.count
     }
 
-    /// Whether this is the whole campaign (1/1).
+    /// Whether this is the whole campaign (0/1).
     pub fn is_whole(&self) -> bool {
         self.count == 1
     }
 
     /// Whether run `run_index` belongs to this shard.
     pub fn contains(&self, run_index: u64) -> bool {
-        run_index % self.count == self.index - 1
+        run_index % self.count == self.index
     }
 
     /// How many of the runs 0 … `runs` − 1 belong to this shard.
     pub fn runs_of(&self, runs: u64) -> u64 {
-        let first = self.index - 1;
+        let first = self.index;
         if runs <= first {
             0
         } else {
@@ -97,7 +97,7 @@ impl Shard {
 
     /// The `position`-th run (from 0) of this shard.
     pub fn run_index(&self, position: u64) -> u64 {
-        self.index - 1 + position * self.count
+        self.index + position * self.count
     }
 }
 
@@ -136,7 +136,7 @@ mod tests {
         for runs in [1, 2, 3, 10, 11, 1000] {
             for count in 1..=5 {
                 let mut seen = vec![0u32; runs as usize];
-                for index in 1..=count {
+                for index in 0..count {
                     let shard = Shard::new(index, count).expect("valid");
                     let members: Vec<u64> = (0..runs).filter(|&i| shard.contains(i)).collect();
                     assert_eq!(
@@ -157,24 +157,26 @@ mod tests {
     #[test]
     fn shards_parse_from_k_of_m_and_refuse_the_rest() {
         assert_eq!("2/3".parse(), Ok(Shard { index: 2, count: 3 }));
-        assert_eq!(" 1 / 1 ".parse(), Ok(Shard::WHOLE));
+        assert_eq!(" 0 / 1 ".parse(), Ok(Shard::WHOLE));
+        assert_eq!("0/3".parse(), Ok(Shard { index: 0, count: 3 }));
         assert_eq!(
-            "0/3".parse::<Shard>(),
-            Err(ShardError::IndexOutOfRange { index: 0, count: 3 })
+            "3/3".parse::<Shard>(),
+            Err(ShardError::IndexOutOfRange { index: 3, count: 3 })
         );
         assert_eq!(
-            "4/3".parse::<Shard>(),
-            Err(ShardError::IndexOutOfRange { index: 4, count: 3 })
+            "3/3".parse::<Shard>().unwrap_err().to_string(),
+            "shard `3/3`: K must be 0 to M − 1 = 2 (shards count from 0, as run indices)"
         );
         assert_eq!(
-            "1/0".parse::<Shard>(),
-            Err(ShardError::NoShards { index: 1 })
+            "0/0".parse::<Shard>(),
+            Err(ShardError::NoShards { index: 0 })
         );
         for text in [
             "",
             "1",
             "a/3",
             "1/b",
+            "a/b",
             "-1/3",
             "1/3/4",
             "1.0/3",
