@@ -126,5 +126,5 @@ pub fn campaign<'py>(
         percentiles: "linear interpolation between closest ranks (Hyndman & Fan type 7)",
         controllers: &statistics,
     };
-    Ok((table.into_dict(py)?, to_python(py, &report)?))
+    Ok((crate::columns::into_dict(table, py)?, to_python(py, &report)?))
 }
