@@ -29,7 +29,9 @@ pub struct Shard {
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum ShardError {
     /// Not of the form `K/M` with whole numbers.
-    #[error("`{text}` is not a shard: expected K/M, shard K of M with 1 ≤ K ≤ M (e.g. 2/3)")]
+    #[error(
+        "`{text}` is not a shard: expected K/M, shard K of M shards with 0 ≤ K < M (e.g. 1/3)"
+    )]
     Malformed {
         /// The text given.
         text: String,

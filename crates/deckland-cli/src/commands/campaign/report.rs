@@ -1,0 +1,547 @@
+//! What a campaign folder holds, written the same way for a campaign flown whole, one of
+//! its shards, and a campaign merged from its shards (`deckland merge`): `scenario.toml`,
+//! `runs.csv`, `runs.parquet`, `summary.json`, the plots and `report.html`, all computed
+//! from the rows of `runs.csv` and the library's [`CampaignSummary`], so a merged
+//! campaign's files are those of the campaign flown whole.
+
+use crate::html;
+use crate::output::OutputDir;
+use crate::plot::{BarGroup, Figure, Panel};
+use anyhow::Result;
+use deckland::monte_carlo::{
+    CampaignStatistics, CampaignSummary, Distribution, Proportion, RunRow, UPPER_BOUND_CONFIDENCE,
+};
+use deckland::scenario::Scenario;
+use serde::Serialize;
+
+/// Classes seen at most this many times get their upper bound spelt out in the report.
+const RARE_COUNT: u64 = 3;
+
+/// What `summary.json` and `--json` hold: where and how the campaign was flown around
+/// the statistics ([`CampaignSummary`], flattened in the middle, so that its text is one
+/// block, the same in a merged campaign as in the campaign flown whole).
+#[derive(Debug, Serialize)]
+pub struct CampaignReport<'a> {
+    /// The scenario file given (of the first shard, for a merge).
+    pub scenario_file: String,
+    /// The statistics.
+    #[serde(flatten)]
+    pub summary: &'a CampaignSummary,
+    /// Worker threads (`None` for a merge).
+    pub threads: Option<usize>,
+    /// Wall-clock time of the command (s).
+    pub elapsed_s: f64,
+    /// Runs finished per second (`None` for a merge: nothing was flown).
+    pub runs_per_s: Option<f64>,
+    /// The part of the campaign flown, `K/M` (`0/1` for the whole campaign).
+    pub shard: String,
+    /// How shards divide the runs.
+    pub shard_scheme: &'static str,
+    /// The shard folders a merged campaign was made from, by shard index (empty when flown).
+    pub merged_from: Vec<String>,
+}
+
+/// A campaign folder's content before it is written.
+pub struct CampaignFolder<'a> {
+    /// The scenario flown.
+    pub scenario: &'a Scenario,
+    /// Its TOML text, written as `scenario.toml`.
+    pub scenario_toml: &'a str,
+    /// The rows of `runs.csv`, sorted by run index and controller.
+    pub rows: &'a [RunRow<'a>],
+    /// The report (`summary.json`).
+    pub report: &'a CampaignReport<'a>,
+    /// The title of the plots and the page.
+    pub title: String,
+}
+
+/// The title of a campaign's plots and page: scenario file name, seed, runs, shard.
+pub fn title(scenario_file: &std::path::Path, report: &CampaignReport) -> String {
+    let name = scenario_file.file_name().map_or_else(
+        || scenario_file.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    );
+    let statistics = &report.summary.controllers;
+    let per_controller = statistics.first().map_or(0, |s| s.runs);
+    format!(
+        "{name}, seed {}, {per_controller} runs{}{}",
+        report.summary.campaign_seed,
+        if statistics.len() > 1 {
+            " per controller"
+        } else {
+            ""
+        },
+        if report.shard == "0/1" {
+            String::new()
+        } else {
+            format!(", shard {}", report.shard)
+        }
+    )
+}
+
+/// Writes the folder's files, each atomically: `scenario.toml`, `runs.csv`,
+/// `runs.parquet` (when a run finished), `summary.json`, the plots and `report.html`.
+pub fn write_folder(folder: &CampaignFolder, output: &OutputDir) -> Result<()> {
+    output.write_bytes("scenario.toml", folder.scenario_toml.as_bytes())?;
+    output.write_with("runs.csv", |path| {
+        let mut csv = csv::Writer::from_path(path)?;
+        for row in folder.rows {
+            csv.serialize(row)?;
+        }
+        csv.flush()?;
+        Ok(())
+    })?;
+    if !folder.rows.is_empty() {
+        output.write_with("runs.parquet", |path| {
+            crate::parquet::write_runs(path, folder.rows)
+        })?;
+    }
+    output.write_bytes(
+        "summary.json",
+        serde_json::to_string_pretty(folder.report)?.as_bytes(),
+    )?;
+    let mut plots = Vec::new();
+    for (stem, figure) in figures(folder) {
+        plots.push((stem, figure.save_with_svg(output, stem)?.1));
+    }
+    let page = html_report(folder.report, &folder.title, &plots, folder.scenario_toml);
+    output.write_bytes("report.html", page.as_bytes())?;
+    Ok(())
+}
+
+/// The plots of a campaign, each with its file stem.
+fn figures(folder: &CampaignFolder) -> Vec<(&'static str, Figure)> {
+    let (scenario, title) = (folder.scenario, &folder.title);
+    let deck = &scenario.environment.deck;
+    let statistics = &folder.report.summary.controllers;
+    let labels: Vec<&str> = statistics.iter().map(|s| s.controller.as_str()).collect();
+    let touchdowns = |label: &str| -> Vec<(f64, f64)> {
+        folder
+            .rows
+            .iter()
+            .filter(|r| r.controller == label)
+            .filter_map(|r| r.touchdown_distance_m.zip(r.touchdown_sink_rate_mps))
+            .collect()
+    };
+    let mut dispersion = Panel::new(
+        "Touchdown point along the deck and sink rate relative to the deck",
+        "touchdown along the deck from the aim point (m, positive forward)",
+        "sink rate at touchdown (m/s)",
+    );
+    for label in &labels {
+        let points = touchdowns(label);
+        dispersion = dispersion.scatter(format!("{label} ({} touchdowns)", points.len()), points);
+    }
+    dispersion = dispersion.vertical_line("ramp", -deck.ramp_aft_of_aim_point_m);
+    for (index, wire) in deck.wire_positions_m.iter().enumerate() {
+        dispersion = dispersion.vertical_line(format!("wire {}", index + 1), *wire);
+    }
+    dispersion = dispersion.reference_line(
+        "hard-landing limit",
+        scenario.outcome.hard_landing_sink_rate_mps,
+    );
+
+    let bins = 30;
+    let mut sink = Panel::new(
+        "Touchdown sink rate relative to the deck",
+        "sink rate (m/s)",
+        "runs",
+    );
+    let mut distance = Panel::new(
+        "Touchdown point along the deck from the aim point",
+        "distance (m, positive forward)",
+        "runs",
+    );
+    for label in &labels {
+        let points = touchdowns(label);
+        sink = sink.histogram(
+            label.to_string(),
+            points.iter().map(|p| p.1).collect(),
+            bins,
+        );
+        distance = distance.histogram(
+            label.to_string(),
+            points.iter().map(|p| p.0).collect(),
+            bins,
+        );
+    }
+
+    let categories = [
+        "trap",
+        "bolter",
+        "ramp strike",
+        "hard landing",
+        "diverged",
+        "timeout",
+        "invalid",
+    ];
+    let mut outcomes = Panel::new(
+        "Share of runs by outcome, with 95 % Wilson score intervals (bar labels: runs)",
+        "outcome",
+        "share of runs (%)",
+    )
+    .categories(categories.iter().map(|c| (*c).to_owned()).collect())
+    .interval_name("95 % Wilson score interval");
+    for s in statistics {
+        let classes = proportions(s);
+        outcomes = outcomes.bar_group(BarGroup {
+            name: format!("{} ({} runs)", s.controller, s.runs),
+            values: classes.iter().map(|(_, p)| 100.0 * p.rate).collect(),
+            intervals: classes
+                .iter()
+                .map(|(_, p)| (100.0 * p.ci95_low, 100.0 * p.ci95_high))
+                .collect(),
+            labels: classes.iter().map(|(_, p)| p.count.to_string()).collect(),
+        });
+    }
+    vec![
+        (
+            "touchdown_dispersion",
+            Figure::new()
+                .title(format!("Touchdown dispersion — {title}"))
+                .panel(dispersion),
+        ),
+        (
+            "touchdown_histograms",
+            Figure::new()
+                .title(format!("Touchdown histograms — {title}"))
+                .panel(sink)
+                .panel(distance),
+        ),
+        (
+            "outcomes",
+            Figure::new()
+                .title(format!("Outcomes — {title}"))
+                .panel(outcomes),
+        ),
+    ]
+}
+
+/// The outcome classes with their names, in table order.
+fn proportions(s: &CampaignStatistics) -> [(&'static str, Proportion); 7] {
+    [
+        ("boarding (trap)", s.boarding),
+        ("bolter", s.bolter),
+        ("ramp strike", s.ramp_strike),
+        ("hard landing", s.hard_landing),
+        ("diverged", s.divergence),
+        ("timeout", s.timeout),
+        ("invalid scenario", s.invalid),
+    ]
+}
+
+/// The outcome table of `report.html`: per class and controller the count, the rate and
+/// its 95 % Wilson score interval (%), as in `summary.json`.
+fn outcome_rows(stats: &[CampaignStatistics]) -> Vec<Vec<String>> {
+    let Some(first) = stats.first() else {
+        return Vec::new();
+    };
+    (0..proportions(first).len())
+        .map(|row| {
+            let mut cells = vec![proportions(first)[row].0.to_string()];
+            for s in stats {
+                let (_, p) = proportions(s)[row];
+                cells.push(p.count.to_string());
+                cells.push(format!("{} %", html::number(100.0 * p.rate, 1)));
+                cells.push(format!(
+                    "[{}, {}] %",
+                    html::number(100.0 * p.ci95_low, 1),
+                    html::number(100.0 * p.ci95_high, 1)
+                ));
+            }
+            cells
+        })
+        .collect()
+}
+
+/// The touchdown statistics of `report.html`: per quantity and controller the count,
+/// mean, standard deviation, extremes and percentiles.
+fn distribution_rows(stats: &[CampaignStatistics]) -> Vec<Vec<String>> {
+    let quantities: [(&str, DistributionOf); 3] = [
+        ("touchdown from the aim point (m, positive forward)", |s| {
+            s.touchdown_distance_m
+        }),
+        ("touchdown sink rate relative to the deck (m/s)", |s| {
+            s.touchdown_sink_rate_mps
+        }),
+        ("glide-path error RMS (m)", |s| s.glide_path_error_rms_m),
+    ];
+    let mut rows = Vec::new();
+    for (name, get) in quantities {
+        for s in stats {
+            let mut cells = vec![name.to_string(), s.controller.clone()];
+            match get(s) {
+                Some(d) => {
+                    cells.push(d.count.to_string());
+                    cells.extend(
+                        [
+                            d.mean,
+                            d.standard_deviation,
+                            d.min,
+                            d.p5,
+                            d.p50,
+                            d.p95,
+                            d.max,
+                        ]
+                        .map(|v| html::number(v, 2)),
+                    );
+                }
+                None => cells.extend(std::iter::repeat_n("—".to_string(), 8)),
+            }
+            rows.push(cells);
+        }
+    }
+    rows
+}
+
+/// `report.html` of a campaign: what was flown, the outcome table with intervals, the
+/// touchdown statistics, the plots and the scenario.
+fn html_report(
+    report: &CampaignReport,
+    title: &str,
+    plots: &[(&str, String)],
+    scenario_toml: &str,
+) -> String {
+    let stats = &report.summary.controllers;
+    let mut page = html::Report::new(format!("Campaign — {title}"));
+    let flown = page.section("What was flown");
+    flown.table(
+        &["quantity", "value"],
+        vec![
+            vec!["scenario file".into(), report.scenario_file.clone()],
+            vec![
+                "campaign seed".into(),
+                report.summary.campaign_seed.to_string(),
+            ],
+            vec![
+                "controllers".into(),
+                stats
+                    .iter()
+                    .map(|s| s.controller.as_str())
+                    .collect::<Vec<_>>()
+                    .join(", "),
+            ],
+            vec![
+                "runs requested per controller".into(),
+                report.summary.requested_runs.to_string(),
+            ],
+            vec![
+                "runs finished (all controllers)".into(),
+                report.summary.finished_runs.to_string(),
+            ],
+        ],
+    );
+    flown.paragraph(report.summary.seed_derivation);
+    if let Some(note) = &report.summary.partial_note {
+        flown.paragraph(format!("**Partial:** {note}"));
+    }
+    let mut header = vec!["outcome".to_string()];
+    for s in stats {
+        header.push(format!("{}: runs (of {})", s.controller, s.runs));
+        header.push(format!("{}: rate", s.controller));
+        header.push(format!("{}: 95 % interval", s.controller));
+    }
+    let header: Vec<&str> = header.iter().map(String::as_str).collect();
+    page.section("Outcomes")
+        .paragraph(format!(
+            "Intervals: the {}. The classes are exclusive and add up to the runs.",
+            report.summary.confidence_interval
+        ))
+        .table(&header, outcome_rows(stats));
+    let wires: Vec<Vec<String>> = stats
+        .iter()
+        .map(|s| {
+            let mut row = vec![s.controller.clone()];
+            row.extend(s.traps_per_wire.iter().map(|w| w.to_string()));
+            row
+        })
+        .collect();
+    page.section("Touchdown")
+        .paragraph(format!(
+            "Over the runs that touched the deck; percentiles by {}.",
+            report.summary.percentiles
+        ))
+        .table(
+            &[
+                "quantity",
+                "controller",
+                "count",
+                "mean",
+                "sd",
+                "min",
+                "p5",
+                "p50",
+                "p95",
+                "max",
+            ],
+            distribution_rows(stats),
+        )
+        .table(
+            &["controller", "wire 1", "wire 2", "wire 3", "wire 4"],
+            wires,
+        );
+    let rare = rare_event_lines(report.summary);
+    let rare_section = page.section("Rare events");
+    rare_section.paragraph(format!("Upper bounds: the {}.", report.summary.upper_bound));
+    for line in rare {
+        rare_section.paragraph(line);
+    }
+    let plots_section = page.section("Plots");
+    for (stem, svg) in plots {
+        plots_section.figure(svg, format!("`{stem}.svg` (also `{stem}.png`)"));
+    }
+    page.section("Scenario flown")
+        .paragraph("The nominal scenario; `runs.csv` lists each run's seed and dispersions.")
+        .verbatim("scenario.toml", scenario_toml);
+    page.to_html()
+}
+
+/// Picks one distribution out of a controller's statistics.
+type DistributionOf = fn(&CampaignStatistics) -> Option<Distribution>;
+
+/// Prints the report as a table on stdout.
+pub fn print_table(report: &CampaignReport, output: &OutputDir) -> Result<()> {
+    let stats = &report.summary.controllers;
+    let how = match (report.threads, report.runs_per_s) {
+        (Some(threads), Some(rate)) => format!(
+            "{threads} threads, {:.1} s ({rate:.0} runs/s)",
+            report.elapsed_s
+        ),
+        _ => format!(
+            "merged from {} shards in {:.1} s",
+            report.merged_from.len(),
+            report.elapsed_s
+        ),
+    };
+    let shard = if report.shard == "0/1" {
+        String::new()
+    } else {
+        format!(", shard {}", report.shard)
+    };
+    outln!(
+        "Campaign — {}, {} runs{}{shard}, seed {}, {how}",
+        report.scenario_file,
+        report.summary.requested_runs,
+        if stats.len() > 1 {
+            " per controller"
+        } else {
+            ""
+        },
+        report.summary.campaign_seed,
+    )?;
+    if let Some(note) = &report.summary.partial_note {
+        outln!("  PARTIAL: {note}")?;
+    }
+    let width = 30;
+    let label_width = 36;
+    out!("  {:<label_width$}", "")?;
+    for s in stats {
+        out!("{:>width$}", format!("{} ({} runs)", s.controller, s.runs))?;
+    }
+    outln!()?;
+    outln!("  outcome: count, rate [95 % Wilson score interval]")?;
+    for row in 0..7 {
+        out!("  {:<label_width$}", proportions(&stats[0])[row].0)?;
+        for s in stats {
+            let (_, p) = proportions(s)[row];
+            out!(
+                "{:>width$}",
+                format!(
+                    "{:>5} {:5.1} % [{:5.1}, {:5.1}]",
+                    p.count,
+                    100.0 * p.rate,
+                    100.0 * p.ci95_low,
+                    100.0 * p.ci95_high
+                )
+            )?;
+        }
+        outln!()?;
+    }
+    out!("  {:<label_width$}", "traps on wires 1/2/3/4")?;
+    for s in stats {
+        let w = s.traps_per_wire;
+        out!("{:>width$}", format!("{}/{}/{}/{}", w[0], w[1], w[2], w[3]))?;
+    }
+    outln!()?;
+    let distribution_rows: [(&str, DistributionOf); 6] = [
+        ("touchdown from aim (m)", |s| s.touchdown_distance_m),
+        ("touchdown sink rate (m/s)", |s| s.touchdown_sink_rate_mps),
+        ("elevator rate RMS (deg/s)", |s| s.elevator_rate_rms_degps),
+        ("on the rate limit (% of run)", |s| s.time_on_rate_limit_pct),
+        ("on the stops (% of run)", |s| s.time_on_stops_pct),
+        ("thrust rate RMS (kN/s)", |s| s.thrust_rate_rms_knps),
+    ];
+    for (name, get) in distribution_rows {
+        for (line, part) in [": mean ± sd", "  p5 / p50 / p95"].iter().enumerate() {
+            let label = if line == 0 {
+                format!("{name}{part}")
+            } else {
+                (*part).to_owned()
+            };
+            out!("  {label:<label_width$}")?;
+            for s in stats {
+                let text = match get(s) {
+                    None => "–".to_owned(),
+                    Some(d) if line == 0 => format!("{:+.2} ± {:.2}", d.mean, d.standard_deviation),
+                    Some(d) => format!("{:+.2} / {:+.2} / {:+.2}", d.p5, d.p50, d.p95),
+                };
+                out!("{text:>width$}")?;
+            }
+            outln!()?;
+        }
+    }
+    for line in rare_event_lines(report.summary) {
+        outln!("  {line}")?;
+    }
+    outln!("  results in {}", output.path().display())?;
+    Ok(())
+}
+
+/// A probability in words: percent down to 0.01 %, else in powers of ten.
+fn probability(p: f64) -> String {
+    if p >= 1e-4 {
+        format!("{:.2} %", 100.0 * p)
+    } else {
+        format!("{p:.2e}")
+    }
+}
+
+/// The rare-event part of the report: for every class seen at most [`RARE_COUNT`] times,
+/// its 95 % upper bound; then the runs it takes to show the target rate.
+pub fn rare_event_lines(summary: &CampaignSummary) -> Vec<String> {
+    let mut lines = vec![format!(
+        "rare events (seen at most {RARE_COUNT} times): {} % upper bound of the probability",
+        100.0 * UPPER_BOUND_CONFIDENCE
+    )];
+    for s in &summary.controllers {
+        // Every class but the trap is a failure.
+        for (name, p) in proportions(s).into_iter().skip(1) {
+            if p.count <= RARE_COUNT && s.runs > 0 {
+                lines.push(format!(
+                    "  {}: {name}: {} in {} runs, p < {}",
+                    s.controller,
+                    p.count,
+                    s.runs,
+                    probability(p.upper_bound_95)
+                ));
+            }
+        }
+    }
+    let target = &summary.rare_event_target;
+    let needed: Vec<String> = target
+        .runs_needed
+        .iter()
+        .map(|n| match n.runs {
+            Some(runs) => format!("{runs} runs if {} events", n.events),
+            None => format!("beyond 2^62 runs if {} events", n.events),
+        })
+        .collect();
+    lines.push(format!(
+        "to show p < {:e} at {} %: {} (with none, the n with (1 − p)^n ≤ {:.2}: about 3/p, the rule of three)",
+        target.rate,
+        100.0 * target.confidence,
+        needed.join(", "),
+        1.0 - target.confidence,
+    ));
+    lines
+}
