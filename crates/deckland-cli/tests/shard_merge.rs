@@ -205,6 +205,30 @@ fn a_merge_refuses_shards_of_other_campaigns_missing_overlapping_or_unfinished()
     )
     .unwrap();
     refused(&[&zero, &truncated], "holds 5 of its 6 rows");
+
+    // A number edited into NaN: refused, not carried into the merged files.
+    let edited = dir.join("edited");
+    std::fs::create_dir_all(&edited).unwrap();
+    for name in ["summary.json", "scenario.toml"] {
+        std::fs::copy(one.join(name), edited.join(name)).unwrap();
+    }
+    let mut reader = csv::Reader::from_path(one.join("runs.csv")).unwrap();
+    let header = reader.headers().unwrap().clone();
+    let column = header.iter().position(|h| h == "end_time_s").unwrap();
+    let mut writer = csv::Writer::from_path(edited.join("runs.csv")).unwrap();
+    writer.write_record(&header).unwrap();
+    for (index, record) in reader.records().enumerate() {
+        let mut fields: Vec<String> = record.unwrap().iter().map(str::to_owned).collect();
+        if index == 0 {
+            fields[column] = "NaN".to_owned();
+        }
+        writer.write_record(&fields).unwrap();
+    }
+    writer.flush().unwrap();
+    refused(
+        &[&zero, &edited],
+        "`end_time_s` is NaN, not a finite number",
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }
 

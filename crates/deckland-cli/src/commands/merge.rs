@@ -23,6 +23,7 @@ use deckland::monte_carlo::{
     merge_shards, CampaignSummary, RunRow, Shard, ShardIdentity, ShardRows, DEFAULT_TARGET_RATE,
     SHARD_SCHEME,
 };
+use deckland::recording::{Cell, Columns};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -122,6 +123,7 @@ fn read_shard(folder: &Path) -> Result<ShardFolder> {
             row.with_context(|| format!("{} line {}", runs_path.display(), line + 2))
         })
         .collect::<Result<Vec<_>>>()?;
+    check_finite(&rows, &runs_path)?;
     Ok(ShardFolder {
         rows: ShardRows {
             identity: ShardIdentity {
@@ -137,6 +139,30 @@ fn read_shard(folder: &Path) -> Result<ShardFolder> {
         },
         scenario_file,
     })
+}
+
+/// Refuses a row with a number that is not finite (an edited file: a campaign writes
+/// none), naming the file, the run and the column: nothing non-finite reaches a file.
+fn check_finite(rows: &[RunRow], file: &Path) -> Result<()> {
+    let mut table = Columns::with_capacity(rows.len());
+    for row in rows {
+        table.push(row).map_err(|e| anyhow!("{e}"))?;
+    }
+    for (name, cells) in table.into_columns() {
+        for (row, cell) in rows.iter().zip(cells) {
+            if let Cell::Float(value) = cell {
+                if !value.is_finite() {
+                    bail!(
+                        "{}: run {} ({}): `{name}` is {value}, not a finite number",
+                        file.display(),
+                        row.run_index,
+                        row.controller
+                    );
+                }
+            }
+        }
+    }
+    Ok(())
 }
 
 /// Runs `deckland merge`.
