@@ -76,7 +76,7 @@ pub fn campaign<'py>(
         Some(threads) => whole("threads", threads, 1, 1024)? as usize,
         None => std::thread::available_parallelism().map_or(1, |n| n.get()),
     };
-    let mut spec = CampaignSpec::new(scenario.scenario.clone(), runs, seed);
+    let mut spec = CampaignSpec::new(scenario.scenario, runs, seed);
     if compare {
         spec = spec.comparing_pitch_controllers();
     }
@@ -174,7 +174,7 @@ pub fn campaign_shard(
         None => scenario.scenario.seed,
     };
     let threads = whole("threads", threads, 1, 1024)? as usize;
-    let mut spec = CampaignSpec::new(scenario.scenario.clone(), runs, seed);
+    let mut spec = CampaignSpec::new(scenario.scenario, runs, seed);
     if compare {
         spec = spec.comparing_pitch_controllers();
     }
