@@ -1,8 +1,8 @@
 """Speed-up of ``deckland.dask.campaign`` on a local cluster (figures in BENCHMARKS.md).
 
-    python python/benchmarks/bench_dask.py [--runs 2000] [--repeat 3]
+    python python/benchmarks/bench_dask.py [--runs 2000] [--repeat 3] [--scenario FILE]
 
-Flies the same campaign (``scenarios/heavy-sea.toml``, seed 1, ``--runs`` approaches in
+Flies the same campaign (``--scenario``, default ``scenarios/heavy-sea.toml``, seed 1, ``--runs`` approaches in
 8 shards, one thread per shard) on a ``LocalCluster`` of 1 and of 2 worker processes
 with one thread each, alternately, ``--repeat`` times, and prints the runs per second of
 each (median) and their ratio. The cluster is started before the clock starts and a
@@ -30,8 +30,9 @@ def main() -> None:
     parser.add_argument("--runs", type=int, default=2000)
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--shards", type=int, default=8)
+    parser.add_argument("--scenario", type=Path, default=SCENARIO)
     args = parser.parse_args()
-    scenario = deckland.Scenario.from_file(SCENARIO)
+    scenario = deckland.Scenario.from_file(args.scenario)
     clients = {}
     for workers in (1, 2):
         cluster = distributed.LocalCluster(
