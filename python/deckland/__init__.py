@@ -9,7 +9,8 @@ this package calls it directly, so every number is the CLI's, bit for bit.
   (``s["environment.ship.heave_rms_m"] = 1.0``); a bad value raises ``ValueError``.
 - :func:`fly`: one approach, with its summary and time series (a pandas DataFrame when
   pandas is installed, else a dict of numpy arrays; the columns of ``approach.csv``).
-- :func:`campaign`: many approaches in parallel (Monte Carlo), the rows of ``runs.csv``.
+- :func:`campaign`: many approaches in parallel (Monte Carlo), the rows of ``runs.csv``;
+  :func:`deckland.dask.campaign` flies its shards on a Dask cluster (``deckland[dask]``).
 - :class:`Approach`: the stepping API, one control interval at a time, the built-in
   cascade flying or your commands replacing its loops, or your own pitch law.
 - ``deckland/CarrierLanding-v0``: a Gymnasium environment on :class:`Approach`
@@ -21,7 +22,7 @@ Units are SI and angles radians, except where a name says ``_deg``.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any, Callable, Dict, List, Optional
+from typing import Any, Callable, Dict, Iterator, List, Optional
 
 from . import _deckland
 from ._deckland import Approach, LinearModel, Scenario, Trim, linearize, trim
@@ -99,6 +100,10 @@ class Campaign:
     def statistics(self) -> List[Dict[str, Any]]:
         """The statistics of each controller (``summary["controllers"]``)."""
         return self.summary["controllers"]
+
+    def __iter__(self) -> Iterator[Any]:
+        """``runs, summary = campaign``."""
+        return iter((self.runs, self.summary))
 
     def __repr__(self) -> str:
         rates = ", ".join(

@@ -116,6 +116,16 @@ def campaign(
     threads: Optional[int] = None,
     compare: bool = False,
 ) -> Tuple[Dict[str, np.ndarray], Dict[str, Any]]: ...
+def campaign_shard(
+    scenario: Scenario,
+    runs: int,
+    index: int,
+    count: int,
+    seed: Optional[int] = None,
+    threads: int = 1,
+    compare: bool = False,
+) -> str: ...
+def merge_shards_text(shards: List[str]) -> Tuple[Dict[str, np.ndarray], Dict[str, Any]]: ...
 def _bench_stepping(
     scenario: Optional[Scenario] = None, seed: Optional[int] = None, control_interval_s: float = 0.02
 ) -> Tuple[int, float]: ...

@@ -4,36 +4,42 @@
 //! dispersions and results) and the rows of `runs.csv` ([`RunRow`]) are the CLI's, bit
 //! for bit, for any number of threads. Ctrl-C stops the workers before their next run
 //! and raises `KeyboardInterrupt`.
+//!
+//! `campaign_shard` flies one shard K/M (the runs i with i mod M = K) and returns it as
+//! text that any process can carry (JSON, its rows as `runs.csv`, whose numbers read
+//! back exactly); `merge_shards` checks and merges such shards with the library's
+//! `merge_shards` into the campaign flown whole. `deckland.dask` maps shards over a
+//! Dask cluster with them.
 
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
-use deckland::monte_carlo::{run_campaign, CampaignSpec, RunRecord, RunRow};
+use deckland::monte_carlo::{
+    merge_shards, run_campaign, CampaignResult, CampaignSpec, CampaignSummary, RunRecord, RunRow,
+    Shard, ShardIdentity, ShardRows, DEFAULT_TARGET_RATE, SHARD_SCHEME,
+};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::columns::Columns;
 use crate::convert::to_python;
 use crate::errors::{argument_error, value_error};
 use crate::scenario::Scenario;
 
-/// What the summary holds: the keys of the CLI's `summary.json`.
+/// What the summary holds: the keys of the CLI's `summary.json` (the library's
+/// statistics between the scenario and how the campaign was flown).
 #[derive(Debug, Serialize)]
 struct CampaignReport<'a> {
     scenario_file: &'a str,
-    campaign_seed: u64,
-    seed_derivation: &'static str,
-    requested_runs: u64,
-    finished_runs: u64,
-    partial: bool,
-    partial_note: Option<String>,
-    threads: usize,
+    #[serde(flatten)]
+    summary: &'a CampaignSummary,
+    threads: Option<usize>,
     elapsed_s: f64,
-    runs_per_s: f64,
-    confidence_interval: &'static str,
-    percentiles: &'static str,
-    controllers: &'a [deckland::monte_carlo::CampaignStatistics],
+    runs_per_s: Option<f64>,
+    shard: String,
+    shard_scheme: &'static str,
+    merged_from: Vec<String>,
 }
 
 /// A whole number argument ≥ `min`, else `ValueError` naming it.
@@ -74,12 +80,41 @@ pub fn campaign<'py>(
     if compare {
         spec = spec.comparing_pitch_controllers();
     }
-    let stop = AtomicBool::new(false);
     let started = Instant::now();
+    let result = fly(py, &spec, threads)?;
+    let elapsed_s = started.elapsed().as_secs_f64();
+
+    let mut table = Columns::with_capacity(result.records.len());
+    for record in &result.records {
+        table
+            .push(&RunRow::new(record, &result.controller_labels))
+            .map_err(value_error)?;
+    }
+    let summary = CampaignSummary::of_result(&result, seed, DEFAULT_TARGET_RATE);
+    let report = CampaignReport {
+        scenario_file: &scenario.name,
+        summary: &summary,
+        threads: Some(threads),
+        elapsed_s,
+        runs_per_s: Some(result.records.len() as f64 / elapsed_s.max(1e-9)),
+        shard: Shard::WHOLE.to_string(),
+        shard_scheme: SHARD_SCHEME,
+        merged_from: Vec::new(),
+    };
+    Ok((
+        crate::columns::into_dict(table, py)?,
+        to_python(py, &report)?,
+    ))
+}
+
+/// Flies `spec` on `threads` workers with the GIL released; Ctrl-C stops the workers
+/// and raises `KeyboardInterrupt`.
+fn fly(py: Python<'_>, spec: &CampaignSpec, threads: usize) -> PyResult<CampaignResult> {
+    let stop = AtomicBool::new(false);
     let mut interrupted: Option<PyErr> = None;
     let result = py.detach(|| {
         std::thread::scope(|scope| {
-            let worker = scope.spawn(|| run_campaign(&spec, threads, &|_: &RunRecord| {}, &stop));
+            let worker = scope.spawn(|| run_campaign(spec, threads, &|_: &RunRecord| {}, &stop));
             while !worker.is_finished() {
                 std::thread::sleep(Duration::from_millis(20));
                 if interrupted.is_none() {
@@ -95,36 +130,142 @@ pub fn campaign<'py>(
     if let Some(error) = interrupted {
         return Err(error);
     }
-    let result = result
+    result
         .map_err(|_| value_error("the campaign's worker thread panicked"))?
-        .map_err(|error| value_error(format!("cannot run the campaign: {error}")))?;
-    let elapsed_s = started.elapsed().as_secs_f64();
+        .map_err(|error| value_error(format!("cannot run the campaign: {error}")))
+}
 
-    let mut table = Columns::with_capacity(result.records.len());
+/// One shard as it travels between processes: what it is part of, and its rows as the
+/// text of `runs.csv` (shortest round-trip numbers: they read back bit for bit).
+#[derive(Debug, Serialize, Deserialize)]
+struct ShardPayload {
+    scenario_name: String,
+    scenario_toml: String,
+    campaign_seed: u64,
+    requested_runs: u64,
+    controllers: Vec<String>,
+    shard: String,
+    partial: bool,
+    elapsed_s: f64,
+    runs_csv: String,
+}
+
+/// Flies shard `index`/`count` of the campaign of `runs` approaches of `scenario` (the
+/// runs i with i mod count = index); returns it as JSON text for `merge_shards`.
+#[pyfunction]
+#[pyo3(signature = (scenario, runs, index, count, seed = None, threads = 1, compare = false))]
+#[allow(clippy::too_many_arguments)]
+pub fn campaign_shard(
+    py: Python<'_>,
+    scenario: PyRef<'_, Scenario>,
+    runs: i128,
+    index: i128,
+    count: i128,
+    seed: Option<i128>,
+    threads: i128,
+    compare: bool,
+) -> PyResult<String> {
+    let runs = whole("runs", runs, 1, u64::MAX)?;
+    let count = whole("count", count, 1, u64::MAX)?;
+    let index = whole("index", index, 0, count - 1)?;
+    let shard = Shard::new(index, count).map_err(value_error)?;
+    let seed = match seed {
+        Some(seed) => whole("seed", seed, 0, u64::MAX)?,
+        None => scenario.scenario.seed,
+    };
+    let threads = whole("threads", threads, 1, 1024)? as usize;
+    let mut spec = CampaignSpec::new(scenario.scenario, runs, seed);
+    if compare {
+        spec = spec.comparing_pitch_controllers();
+    }
+    spec = spec.sharded(shard);
+    let started = Instant::now();
+    let result = fly(py, &spec, threads)?;
+    let elapsed_s = started.elapsed().as_secs_f64();
+    let mut csv = csv::Writer::from_writer(Vec::new());
     for record in &result.records {
-        table
-            .push(&RunRow::new(record, &result.controller_labels))
+        csv.serialize(RunRow::new(record, &result.controller_labels))
             .map_err(value_error)?;
     }
-    let statistics = result.statistics();
-    let finished_runs = result.records.len() as u64;
-    let report = CampaignReport {
-        scenario_file: &scenario.name,
+    let runs_csv =
+        String::from_utf8(csv.into_inner().map_err(value_error)?).map_err(value_error)?;
+    let payload = ShardPayload {
+        scenario_name: scenario.name.clone(),
+        scenario_toml: toml::to_string(&spec.scenario).map_err(value_error)?,
         campaign_seed: seed,
-        seed_derivation: "run i (from 0) flies seed SplitMix64 output i of the campaign seed, \
-                          shifted right by one bit (mix(S + (i + 1)·0x9e3779b97f4a7c15) >> 1); \
-                          its dispersions come from that seed's \"dispersion\" stream; \
-                          `deckland run FILE --seed SEED --disperse` flies it again",
         requested_runs: runs,
-        finished_runs,
+        controllers: result.controller_labels.clone(),
+        shard: shard.to_string(),
         partial: result.partial,
-        partial_note: None,
-        threads,
         elapsed_s,
-        runs_per_s: finished_runs as f64 / elapsed_s.max(1e-9),
-        confidence_interval: "95 % Wilson score interval of each rate",
-        percentiles: "linear interpolation between closest ranks (Hyndman & Fan type 7)",
-        controllers: &statistics,
+        runs_csv,
     };
-    Ok((table.into_dict(py)?, to_python(py, &report)?))
+    serde_json::to_string(&payload).map_err(value_error)
+}
+
+/// Merges shards made by `campaign_shard` (every shard of one campaign, in any order)
+/// into the campaign flown whole; returns `(runs, summary)` as `campaign` does. A shard
+/// of another campaign, a missing, repeated or partial shard raises `ValueError` naming it.
+#[pyfunction]
+pub fn merge_shards_text<'py>(
+    py: Python<'py>,
+    shards: Vec<String>,
+) -> PyResult<(Bound<'py, PyDict>, Py<PyAny>)> {
+    let started = Instant::now();
+    let mut parts = Vec::with_capacity(shards.len());
+    let mut scenario_name = String::new();
+    for (position, text) in shards.iter().enumerate() {
+        let payload: ShardPayload = serde_json::from_str(text)
+            .map_err(|e| value_error(format!("shard {position} is not a shard: {e}")))?;
+        let shard: Shard = payload.shard.parse().map_err(value_error)?;
+        if shard.index() == 0 {
+            scenario_name = payload.scenario_name.clone();
+        }
+        let rows = csv::Reader::from_reader(payload.runs_csv.as_bytes())
+            .deserialize::<RunRow<'static>>()
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(|e| value_error(format!("shard {shard}: {e}")))?;
+        parts.push(ShardRows {
+            identity: ShardIdentity {
+                source: format!("shard {shard}"),
+                scenario_toml: payload.scenario_toml,
+                campaign_seed: payload.campaign_seed,
+                requested_runs: payload.requested_runs,
+                controllers: payload.controllers,
+                shard,
+                partial: payload.partial,
+            },
+            rows,
+        });
+    }
+    let merged = merge_shards(parts).map_err(|e| value_error(format!("cannot merge: {e}")))?;
+    let expected = merged
+        .requested_runs
+        .saturating_mul(merged.controllers.len() as u64);
+    let summary = CampaignSummary::of_rows(
+        &merged.rows,
+        &merged.controllers,
+        merged.campaign_seed,
+        merged.requested_runs,
+        expected,
+        DEFAULT_TARGET_RATE,
+    );
+    let mut table = Columns::with_capacity(merged.rows.len());
+    for row in &merged.rows {
+        table.push(row).map_err(value_error)?;
+    }
+    let report = CampaignReport {
+        scenario_file: &scenario_name,
+        summary: &summary,
+        threads: None,
+        elapsed_s: started.elapsed().as_secs_f64(),
+        runs_per_s: None,
+        shard: Shard::WHOLE.to_string(),
+        shard_scheme: SHARD_SCHEME,
+        merged_from: merged.sources.clone(),
+    };
+    Ok((
+        crate::columns::into_dict(table, py)?,
+        to_python(py, &report)?,
+    ))
 }

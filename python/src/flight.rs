@@ -63,7 +63,7 @@ pub(crate) fn time_series<'py>(
             .push(&ApproachRow::from(sample))
             .map_err(value_error)?;
     }
-    table.into_dict(py)
+    crate::columns::into_dict(table, py)
 }
 
 /// The events as a list of dicts (`{"event": "touchdown", "time_s": …, …}`).

@@ -33,7 +33,7 @@ mod _deckland {
     #[pymodule_export]
     use super::approach::{bench_stepping, Approach};
     #[pymodule_export]
-    use super::campaign::campaign;
+    use super::campaign::{campaign, campaign_shard, merge_shards_text};
     #[pymodule_export]
     use super::flight::fly;
     #[pymodule_export]

@@ -5,6 +5,7 @@ mod output;
 mod commands;
 mod html;
 mod interrupt;
+mod parquet;
 mod plot;
 
 use anyhow::Result;
@@ -44,6 +45,9 @@ enum Command {
     /// Fly N approaches of a scenario file in parallel (Monte Carlo): rates with
     /// confidence intervals, touchdown statistics, runs.csv and plots.
     Campaign(commands::campaign::CampaignArgs),
+    /// Merge the shard folders of a campaign (`campaign --shard K/M`) into the campaign
+    /// folder of the campaign flown whole.
+    Merge(commands::merge::MergeArgs),
 }
 
 fn run(cli: &Cli) -> Result<()> {
@@ -58,6 +62,7 @@ fn run(cli: &Cli) -> Result<()> {
         Command::Scenario(args) => commands::scenario::run(args),
         Command::Run(args) => commands::run::run(args),
         Command::Campaign(args) => commands::campaign::run(args),
+        Command::Merge(args) => commands::merge::run(args),
     }
 }
 

@@ -127,7 +127,7 @@ fn the_next_step_starts_from_the_signals_looked_at_and_the_run_is_unchanged() {
     loop {
         // Look every 20 steps, as `Approach` does, with no override.
         let step = recorder.samples.len();
-        if step % 20 == 0 {
+        if step.is_multiple_of(20) {
             looked_at.push((step, next_step_signals(&mut simulation)));
             assert!(simulation.next_step_inputs().deck.is_some());
         }

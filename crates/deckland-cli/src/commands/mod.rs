@@ -5,6 +5,7 @@ pub mod common;
 pub mod environment;
 pub mod land;
 pub mod linearize;
+pub mod merge;
 pub mod reproduce;
 pub mod run;
 pub mod scenario;

@@ -7,6 +7,7 @@ use std::sync::Arc;
 use rayon::prelude::*;
 
 use super::seeds::run_seed;
+use super::shard::Shard;
 use super::statistics::CampaignStatistics;
 use crate::control::pitch::{ObserverPdParameters, PidParameters, PitchControllerParameters};
 use crate::random::RandomStreams;
@@ -68,7 +69,8 @@ pub fn controller_label(pitch: &PitchControllerParameters) -> &'static str {
 }
 
 /// What a campaign flies: `runs` approaches of `scenario` (with its dispersions), each
-/// under every controller of `controllers`, run `i` with seed [`run_seed`]`(seed, i)`.
+/// under every controller of `controllers`, run `i` with seed [`run_seed`]`(seed, i)` —
+/// all of them, or those of one [`Shard`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct CampaignSpec {
     /// The nominal scenario; its `seed` is replaced per run, its `dispersion` applied.
@@ -79,6 +81,8 @@ pub struct CampaignSpec {
     pub seed: u64,
     /// The controllers; the same seeds and dispersions fly under each.
     pub controllers: Vec<ControllerVariant>,
+    /// The part of the campaign to fly ([`Shard::WHOLE`] for all of it).
+    pub shard: Shard,
 }
 
 impl CampaignSpec {
@@ -90,7 +94,13 @@ impl CampaignSpec {
             runs,
             seed,
             controllers: vec![ControllerVariant::registered(pitch)],
+            shard: Shard::WHOLE,
         }
+    }
+
+    /// Only the runs of `shard` of this campaign.
+    pub fn sharded(self, shard: Shard) -> Self {
+        Self { shard, ..self }
     }
 
     /// The same campaign under O-PD and PID, in that order: the scenario's own controller
@@ -200,6 +210,14 @@ pub enum CampaignError {
     /// The scenario's mission is not an approach.
     #[error("a campaign flies approaches: set `mission.kind = \"approach\"`")]
     NotAnApproach,
+    /// A shard beyond the runs: shard K/M holds no run when K ≥ N.
+    #[error("shard {shard} of a campaign of {runs} runs holds no run: use at most {runs} shards")]
+    EmptyShard {
+        /// The shard.
+        shard: Shard,
+        /// Runs of the whole campaign.
+        runs: u64,
+    },
     /// The nominal scenario itself is invalid.
     #[error("the nominal scenario is invalid: {0}")]
     InvalidScenario(#[from] crate::parameters::ParameterError),
@@ -218,12 +236,14 @@ pub enum CampaignError {
 pub struct CampaignResult {
     /// Every finished run, sorted by run index then controller.
     pub records: Vec<RunRecord>,
-    /// Approaches asked for, per controller.
+    /// Approaches asked for, per controller, in the whole campaign (all shards).
     pub requested_runs: u64,
+    /// The part of the campaign flown.
+    pub shard: Shard,
     /// The controllers' labels, in [`RunRecord::controller`] order.
     pub controller_labels: Vec<String>,
-    /// Whether the campaign was stopped before every run finished; the records then hold
-    /// exactly the runs that finished (not necessarily the first ones).
+    /// Whether the campaign (or shard) was stopped before every run finished; the records
+    /// then hold exactly the runs that finished (not necessarily the first ones).
     pub partial: bool,
 }
 
@@ -274,8 +294,9 @@ fn fly(spec: &CampaignSpec, run_index: u64, controller: usize) -> RunRecord {
 /// workers) after each run with its record; `stop`, when set, makes the workers start
 /// no further run, and the result is then [`CampaignResult::partial`].
 ///
-/// The records are sorted by run index and controller, and each depends only on its
-/// seed, so the result is identical for any `threads`.
+/// Only the runs of the spec's [`CampaignSpec::shard`] are flown. The records are sorted
+/// by run index and controller, and each depends only on its seed, so the result is
+/// identical for any `threads`, and the shards of a campaign together are the campaign.
 pub fn run_campaign(
     spec: &CampaignSpec,
     threads: usize,
@@ -303,7 +324,15 @@ pub fn run_campaign(
         .thread_name(|index| format!("deckland-campaign-{index}"))
         .build()
         .map_err(|e| pool_error(e.to_string()))?;
-    let total = usize::try_from(spec.runs)
+    let shard = spec.shard;
+    let shard_runs = shard.runs_of(spec.runs);
+    if shard_runs == 0 {
+        return Err(CampaignError::EmptyShard {
+            shard,
+            runs: spec.runs,
+        });
+    }
+    let total = usize::try_from(shard_runs)
         .ok()
         .and_then(|runs| runs.checked_mul(variants))
         .ok_or(CampaignError::TooManyRuns {
@@ -320,7 +349,8 @@ pub fn run_campaign(
                 if stop.load(Ordering::Relaxed) {
                     return None;
                 }
-                let record = fly(spec, (item / variants) as u64, item % variants);
+                let run_index = shard.run_index((item / variants) as u64);
+                let record = fly(spec, run_index, item % variants);
                 progress(&record);
                 Some(record)
             })
@@ -332,6 +362,7 @@ pub fn run_campaign(
     Ok(CampaignResult {
         records,
         requested_runs: spec.runs,
+        shard,
         controller_labels: spec.controllers.iter().map(|c| c.label.clone()).collect(),
         partial,
     })

@@ -13,21 +13,41 @@
 //! - Memory: each run keeps only its summary ([`crate::recording::SummaryRecorder`]) and
 //!   becomes one small [`RunRecord`] (flattened for files and tables as a [`RunRow`]);
 //!   nothing grows with the length of a run.
+//! - Shards: a [`Shard`] K/M of a campaign flies the runs i with i mod M = K; since a
+//!   run depends only on the campaign seed and its index, [`merge_shards`] puts the M
+//!   shards' rows (`runs.csv`, [`RunRow`]) together into the campaign flown whole,
+//!   refusing shards that do not belong together ([`MergeError`]).
+//! - Statistics: rates with 95 % Wilson score intervals and exact one-sided upper bounds
+//!   for rare events ([`upper_bound`], [`runs_to_show_below`]), computed from the rows, so
+//!   a merged campaign's statistics are those of the whole campaign.
 //! - Failures are data (after nyx): a run that diverges, times out or whose dispersed
 //!   scenario is invalid is a record with its reason, never an abort. A stop flag ends a
 //!   campaign early with the runs that finished ([`CampaignResult::partial`]).
 
 mod campaign;
+mod merge;
+mod rare_events;
 mod row;
 mod seeds;
+mod shard;
 mod statistics;
+mod summary;
 
 pub use campaign::{
     controller_label, run_campaign, CampaignError, CampaignResult, CampaignSpec, ControllerVariant,
     RunFailure, RunRecord, SharedPitchLaw,
 };
+pub use merge::{merge_shards, MergeError, MergedCampaign, ShardIdentity, ShardRows};
+pub use rare_events::{
+    binomial_cdf, regularized_incomplete_beta, runs_to_show_below, upper_bound, RareEventTarget,
+    RunsNeeded, DEFAULT_TARGET_RATE, UPPER_BOUND_CONFIDENCE, UPPER_BOUND_METHOD,
+};
 pub use row::RunRow;
 pub use seeds::{run_seed, splitmix64_mix, SPLITMIX64_GAMMA};
+pub use shard::{Shard, ShardError, SHARD_SCHEME};
 pub use statistics::{
     percentile, wilson_interval, CampaignStatistics, Distribution, Proportion, CONFIDENCE_Z_95,
+};
+pub use summary::{
+    CampaignSummary, CONFIDENCE_INTERVAL_METHOD, PERCENTILE_METHOD, SEED_DERIVATION,
 };

@@ -1,23 +1,27 @@
 //! One campaign run as a flat row: the columns of the CLI's `runs.csv` and of the
-//! Python package's campaign table, defined once.
+//! Python package's campaign table, defined once. A row reads back from `runs.csv`
+//! exactly (`Deserialize`: numbers are written in their shortest round-trip form), which
+//! is what lets shards be merged into the campaign they are part of.
 
-use serde::Serialize;
+use std::borrow::Cow;
+
+use serde::{Deserialize, Serialize};
 
 use super::campaign::RunRecord;
 
 /// One run of a campaign under one controller, flattened (outcome, wire, touchdown, ramp
 /// clearance, glide-path error, the actuators' activity, the dispersions drawn, the failure reason). Fields that
 /// a run did not produce (no touchdown, a failed setup) are `None`.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct RunRow<'a> {
     /// Index of the run (from 0).
     pub run_index: u64,
     /// The controller's label (`?` if the record names no known controller).
-    pub controller: &'a str,
+    pub controller: Cow<'a, str>,
     /// The run's seed.
     pub seed: u64,
     /// The outcome's name, `invalid` or `panicked`.
-    pub outcome: &'static str,
+    pub outcome: Cow<'a, str>,
     /// Wire caught (1–4).
     pub wire: Option<u8>,
     /// Touchdown point from the aim point (m, positive forward).
@@ -62,13 +66,21 @@ impl<'a> RunRow<'a> {
     /// The row of `record`, its controller named from `labels`
     /// ([`super::CampaignResult::controller_labels`]).
     pub fn new(record: &RunRecord, labels: &'a [String]) -> Self {
+        Self::with_controller(
+            record,
+            labels.get(record.controller).map_or("?", String::as_str),
+        )
+    }
+
+    /// The row of `record`, its controller labelled `controller`.
+    pub fn with_controller(record: &RunRecord, controller: &'a str) -> Self {
         let summary = record.result.as_ref().ok();
         let touchdown = summary.and_then(|s| s.touchdown);
         Self {
             run_index: record.run_index,
-            controller: labels.get(record.controller).map_or("?", String::as_str),
+            controller: Cow::Borrowed(controller),
             seed: record.seed,
-            outcome: record.outcome_name(),
+            outcome: Cow::Borrowed(record.outcome_name()),
             wire: summary.and_then(|s| s.wire),
             touchdown_distance_m: touchdown.map(|t| t.distance_from_aim_m),
             touchdown_sink_rate_mps: touchdown.map(|t| t.sink_rate_mps),
@@ -89,5 +101,11 @@ impl<'a> RunRow<'a> {
             wind_over_deck_dispersion_mps: record.dispersion.wind_over_deck_error_mps,
             reason: record.failure_reason(),
         }
+    }
+
+    /// Whether the run flew (its scenario could be set up): only a flown run has an end
+    /// time.
+    pub fn flown(&self) -> bool {
+        self.end_time_s.is_some()
     }
 }

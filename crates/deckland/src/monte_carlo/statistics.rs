@@ -4,6 +4,8 @@
 use serde::Serialize;
 
 use super::campaign::RunRecord;
+use super::rare_events::{upper_bound, UPPER_BOUND_CONFIDENCE};
+use super::row::RunRow;
 use crate::simulation::Outcome;
 
 /// The standard normal quantile of a two-sided 95 % interval, z = Φ⁻¹(0.975).
@@ -52,6 +54,10 @@ pub struct Proportion {
     pub ci95_low: f64,
     /// Upper end of the 95 % Wilson score interval of the rate.
     pub ci95_high: f64,
+    /// Exact one-sided 95 % upper confidence bound of the rate (Clopper–Pearson): what
+    /// the runs show the probability to be below, also when the outcome never happened
+    /// ([`super::upper_bound`]).
+    pub upper_bound_95: f64,
 }
 
 impl Proportion {
@@ -67,6 +73,7 @@ impl Proportion {
             },
             ci95_low,
             ci95_high,
+            upper_bound_95: upper_bound(count, runs, UPPER_BOUND_CONFIDENCE),
         }
     }
 }
@@ -167,21 +174,29 @@ pub struct CampaignStatistics {
 impl CampaignStatistics {
     /// The statistics of the records of controller `controller` labelled `label`.
     pub fn of(records: &[RunRecord], controller: usize, label: &str) -> Self {
-        let own: Vec<&RunRecord> = records
+        let rows: Vec<RunRow> = records
             .iter()
             .filter(|r| r.controller == controller)
+            .map(|r| RunRow::with_controller(r, label))
             .collect();
-        let runs = own.len() as u64;
-        let count = |outcome: Outcome| {
-            own.iter()
-                .filter(|r| r.result.as_ref().is_ok_and(|s| s.outcome == outcome))
-                .count() as u64
-        };
-        let flown: Vec<_> = own.iter().filter_map(|r| r.result.as_ref().ok()).collect();
-        let touchdowns: Vec<_> = flown.iter().filter_map(|s| s.touchdown).collect();
+        Self::of_rows(&rows, label)
+    }
+
+    /// The statistics of `rows`, the rows of one controller labelled `label`: the same
+    /// numbers as [`Self::of`] on the records the rows were made from, so a campaign
+    /// merged from its shards' `runs.csv` has the statistics of the campaign flown whole.
+    pub fn of_rows(rows: &[RunRow], label: &str) -> Self {
+        let runs = rows.len() as u64;
+        let count =
+            |outcome: Outcome| rows.iter().filter(|r| r.outcome == outcome.name()).count() as u64;
+        let flown: Vec<&RunRow> = rows.iter().filter(|r| r.flown()).collect();
+        let touchdowns: Vec<(f64, f64)> = flown
+            .iter()
+            .filter_map(|r| r.touchdown_distance_m.zip(r.touchdown_sink_rate_mps))
+            .collect();
         let mut traps_per_wire = [0; 4];
-        for summary in flown.iter().filter(|s| s.outcome == Outcome::Trap) {
-            if let Some(wire) = summary.wire.filter(|w| (1..=4).contains(w)) {
+        for row in flown.iter().filter(|r| r.outcome == Outcome::Trap.name()) {
+            if let Some(wire) = row.wire.filter(|w| (1..=4).contains(w)) {
                 traps_per_wire[usize::from(wire - 1)] += 1;
             }
         }
@@ -196,27 +211,40 @@ impl CampaignStatistics {
             timeout: Proportion::new(count(Outcome::Timeout), runs),
             invalid: Proportion::new(runs - flown.len() as u64, runs),
             traps_per_wire,
-            touchdown_distance_m: Distribution::of(
-                touchdowns.iter().map(|t| t.distance_from_aim_m),
-            ),
-            touchdown_sink_rate_mps: Distribution::of(touchdowns.iter().map(|t| t.sink_rate_mps)),
+            touchdown_distance_m: Distribution::of(touchdowns.iter().map(|t| t.0)),
+            touchdown_sink_rate_mps: Distribution::of(touchdowns.iter().map(|t| t.1)),
             glide_path_error_rms_m: Distribution::of(
-                flown.iter().filter_map(|s| s.glide_path_error_rms_m),
+                flown.iter().filter_map(|r| r.glide_path_error_rms_m),
             ),
             elevator_rate_rms_degps: Distribution::of(
-                flown.iter().map(|s| s.actuator.elevator_rate_rms_degps),
+                flown.iter().filter_map(|r| r.elevator_rate_rms_degps),
             ),
             time_on_rate_limit_pct: Distribution::of(
-                flown.iter().map(|s| s.actuator.time_on_rate_limit_pct),
+                flown.iter().filter_map(|r| r.time_on_rate_limit_pct),
             ),
-            time_on_stops_pct: Distribution::of(flown.iter().map(|s| s.actuator.time_on_stops_pct)),
+            time_on_stops_pct: Distribution::of(flown.iter().filter_map(|r| r.time_on_stops_pct)),
             elevator_travel_deg: Distribution::of(
-                flown.iter().map(|s| s.actuator.elevator_travel_deg),
+                flown.iter().filter_map(|r| r.elevator_travel_deg),
             ),
             thrust_rate_rms_knps: Distribution::of(
-                flown.iter().map(|s| s.actuator.thrust_rate_rms_knps),
+                flown.iter().filter_map(|r| r.thrust_rate_rms_knps),
             ),
         }
+    }
+
+    /// Every outcome class with its rate, by its key in `summary.json`, in order — for
+    /// code that treats the classes alike (rare-event tables). A test keeps it equal to
+    /// the [`Proportion`] fields of this struct, so a new class cannot be left out.
+    pub fn rates(&self) -> Vec<(&'static str, Proportion)> {
+        vec![
+            ("boarding", self.boarding),
+            ("bolter", self.bolter),
+            ("ramp_strike", self.ramp_strike),
+            ("hard_landing", self.hard_landing),
+            ("divergence", self.divergence),
+            ("timeout", self.timeout),
+            ("invalid", self.invalid),
+        ]
     }
 }
 
@@ -250,5 +278,27 @@ mod tests {
         assert_eq!(d.mean, 5.0);
         assert!((d.standard_deviation - (32.0f64 / 7.0).sqrt()).abs() < 1e-12);
         assert!(Distribution::of([f64::NAN]).is_none());
+    }
+
+    #[test]
+    fn rates_lists_every_proportion_of_the_statistics() {
+        let statistics = CampaignStatistics::of_rows(&[], "O-PD");
+        let json = serde_json::to_value(&statistics).expect("serialises");
+        let proportions: Vec<String> = json
+            .as_object()
+            .expect("an object")
+            .iter()
+            .filter(|(_, v)| v.get("ci95_low").is_some())
+            .map(|(k, _)| k.clone())
+            .collect();
+        let listed: Vec<&str> = statistics.rates().iter().map(|(k, _)| *k).collect();
+        let mut sorted = listed.clone();
+        sorted.sort_unstable();
+        let mut expected = proportions.clone();
+        expected.sort_unstable();
+        assert_eq!(
+            sorted, expected,
+            "CampaignStatistics::rates() misses a class"
+        );
     }
 }

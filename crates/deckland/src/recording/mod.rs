@@ -5,8 +5,11 @@
 //! Monte Carlo campaigns use [`SummaryRecorder`] (nothing kept); single runs a
 //! [`TimeSeriesRecorder`].
 
+mod columns;
+
 pub use crate::simulation::Recorder;
 use crate::simulation::{Event, RunSummary, Signals};
+pub use columns::{Cell, ColumnError, Columns};
 
 /// Keeps nothing: for Monte Carlo runs, where the summary is all that is needed.
 #[derive(Debug, Clone, Copy, Default)]

@@ -292,7 +292,7 @@ impl Simulation {
             None => false,
             Some(interval_s) => {
                 let every = ((interval_s / self.dt).round() as u64).max(1);
-                self.step % every == 0
+                self.step.is_multiple_of(every)
             }
         }
     }

@@ -1,141 +1,126 @@
-//! `deckland campaign`: N approaches of a scenario file in parallel (Monte Carlo).
-//!
-//! Run `i` flies seed SplitMix64(S, i) (`deckland::monte_carlo::run_seed`) with the
-//! scenario's dispersions drawn from that seed, on a pool of `--threads` workers; the
-//! results are sorted by run index, so every file except the timing in `summary.json` is
-//! identical for any thread count. Writes into the output folder:
-//!
-//! - `scenario.toml`: the nominal scenario flown;
-//! - `runs.csv`: one row per run and controller (outcome, wire, touchdown, ramp
-//!   clearance, glide-path error, the dispersions drawn, the failure reason);
-//! - `summary.json`: outcome rates with 95 % Wilson score intervals, touchdown distance
-//!   and sink-rate mean, standard deviation and percentiles, per controller;
-//! - plots: `touchdown_dispersion` (touchdown point along the deck against sink rate,
-//!   with the wires and the ramp), `touchdown_histograms`, `outcomes`.
-//!
-//! Ctrl-C or SIGTERM stops the workers before their next run; the finished runs are
-//! written, marked `"partial": true`, and the command exits with status 130.
-//!
-//! `--runs` is at most [`MAX_RUNS`] and `--threads` at most [`MAX_THREADS`]: the records
-//! of every run are kept in memory, and threads beyond the cores buy nothing.
+//! What a campaign folder holds, written the same way for a campaign flown whole, one of
+//! its shards, and a campaign merged from its shards (`deckland merge`): `scenario.toml`,
+//! `runs.csv`, `runs.parquet`, `summary.json`, the plots and `report.html`, all computed
+//! from the rows of `runs.csv` and the library's [`CampaignSummary`], so a merged
+//! campaign's files are those of the campaign flown whole.
 
-use super::common::{check_set_up, load_scenario_file, seed_parser, OutputArgs};
 use crate::html;
 use crate::output::OutputDir;
 use crate::plot::{BarGroup, Figure, Panel};
-use anyhow::{bail, Context, Result};
-use clap::Args;
+use anyhow::Result;
 use deckland::monte_carlo::{
-    run_campaign, CampaignResult, CampaignSpec, CampaignStatistics, Distribution, Proportion,
-    RunRecord, RunRow,
+    CampaignStatistics, CampaignSummary, Distribution, Proportion, RunRow, UPPER_BOUND_CONFIDENCE,
 };
-use deckland::scenario::{Mission, Scenario};
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressState, ProgressStyle};
+use deckland::scenario::Scenario;
 use serde::Serialize;
-use std::io::IsTerminal;
-use std::path::PathBuf;
-use std::time::Instant;
 
-/// Options of `deckland campaign`.
-#[derive(Debug, Clone, Args)]
-pub struct CampaignArgs {
-    /// Scenario file (TOML); its `[dispersion]` section sets the per-run dispersions.
-    pub scenario: PathBuf,
-    /// Number of approaches (per controller with `--compare`), 1 to 100 000.
-    #[arg(long, value_parser = clap::value_parser!(u64).range(1..=MAX_RUNS), allow_negative_numbers = true)]
-    pub runs: u64,
-    /// Campaign seed S, 0 to 2⁶³ − 1; run i flies seed SplitMix64(S, i) (default: the
-    /// scenario's seed).
-    #[arg(long, value_parser = seed_parser(), allow_negative_numbers = true)]
-    pub seed: Option<u64>,
-    /// Worker threads, 1 to 256 (default: the number of CPUs). The results do not depend
-    /// on it.
-    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=MAX_THREADS), allow_negative_numbers = true)]
-    pub threads: Option<u16>,
-    /// Output folder, overwriting and JSON printing.
-    #[command(flatten)]
-    pub output: OutputArgs,
-    /// Fly the same seeds and dispersions under O-PD and PID and report them side by side.
-    #[arg(long)]
-    pub compare: bool,
-}
+/// Classes seen at most this many times get their upper bound spelt out in the report.
+const RARE_COUNT: u64 = 3;
 
-/// Most approaches of one campaign (per controller): a record of each is kept, about
-/// 0.3 kB, and 100 000 runs already give a rate to ±0.3 points.
-pub const MAX_RUNS: u64 = 100_000;
-
-/// Most worker threads: more than the cores only adds switching.
-pub const MAX_THREADS: i64 = 256;
-
-/// What `summary.json` and `--json` hold.
+/// What `summary.json` and `--json` hold: where and how the campaign was flown around
+/// the statistics ([`CampaignSummary`], flattened in the middle, so that its text is one
+/// block, the same in a merged campaign as in the campaign flown whole).
 #[derive(Debug, Serialize)]
-struct CampaignReport<'a> {
-    scenario_file: String,
-    campaign_seed: u64,
-    seed_derivation: &'static str,
-    requested_runs: u64,
-    finished_runs: u64,
-    partial: bool,
-    partial_note: Option<String>,
-    threads: usize,
-    elapsed_s: f64,
-    runs_per_s: f64,
-    confidence_interval: &'static str,
-    percentiles: &'static str,
-    controllers: &'a [CampaignStatistics],
+pub struct CampaignReport<'a> {
+    /// The scenario file given (of the first shard, for a merge).
+    pub scenario_file: String,
+    /// The statistics.
+    #[serde(flatten)]
+    pub summary: &'a CampaignSummary,
+    /// Worker threads (`None` for a merge).
+    pub threads: Option<usize>,
+    /// Wall-clock time of the command (s).
+    pub elapsed_s: f64,
+    /// Runs finished per second (`None` for a merge: nothing was flown).
+    pub runs_per_s: Option<f64>,
+    /// The part of the campaign flown, `K/M` (`0/1` for the whole campaign).
+    pub shard: String,
+    /// How shards divide the runs.
+    pub shard_scheme: &'static str,
+    /// The shard folders a merged campaign was made from, by shard index (empty when flown).
+    pub merged_from: Vec<String>,
 }
 
-/// Writes `runs.csv` (atomically, streamed to the file): one row per finished run and
-/// controller, sorted by run index.
-fn write_runs_csv(result: &CampaignResult, output: &OutputDir) -> Result<()> {
+/// A campaign folder's content before it is written.
+pub struct CampaignFolder<'a> {
+    /// The scenario flown.
+    pub scenario: &'a Scenario,
+    /// Its TOML text, written as `scenario.toml`.
+    pub scenario_toml: &'a str,
+    /// The rows of `runs.csv`, sorted by run index and controller.
+    pub rows: &'a [RunRow<'a>],
+    /// The report (`summary.json`).
+    pub report: &'a CampaignReport<'a>,
+    /// The title of the plots and the page.
+    pub title: String,
+}
+
+/// The title of a campaign's plots and page: scenario file name, seed, runs, shard.
+pub fn title(scenario_file: &std::path::Path, report: &CampaignReport) -> String {
+    let name = scenario_file.file_name().map_or_else(
+        || scenario_file.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    );
+    let statistics = &report.summary.controllers;
+    let per_controller = statistics.first().map_or(0, |s| s.runs);
+    format!(
+        "{name}, seed {}, {per_controller} runs{}{}",
+        report.summary.campaign_seed,
+        if statistics.len() > 1 {
+            " per controller"
+        } else {
+            ""
+        },
+        if report.shard == "0/1" {
+            String::new()
+        } else {
+            format!(", shard {}", report.shard)
+        }
+    )
+}
+
+/// Writes the folder's files, each atomically: `scenario.toml`, `runs.csv`,
+/// `runs.parquet` (when a run finished), `summary.json`, the plots and `report.html`.
+pub fn write_folder(folder: &CampaignFolder, output: &OutputDir) -> Result<()> {
+    output.write_bytes("scenario.toml", folder.scenario_toml.as_bytes())?;
     output.write_with("runs.csv", |path| {
         let mut csv = csv::Writer::from_path(path)?;
-        for record in &result.records {
-            csv.serialize(RunRow::new(record, &result.controller_labels))?;
+        for row in folder.rows {
+            csv.serialize(row)?;
         }
         csv.flush()?;
         Ok(())
     })?;
+    if !folder.rows.is_empty() {
+        output.write_with("runs.parquet", |path| {
+            crate::parquet::write_runs(path, folder.rows)
+        })?;
+    }
+    output.write_bytes(
+        "summary.json",
+        serde_json::to_string_pretty(folder.report)?.as_bytes(),
+    )?;
+    let mut plots = Vec::new();
+    for (stem, figure) in figures(folder) {
+        plots.push((stem, figure.save_with_svg(output, stem)?.1));
+    }
+    let page = html_report(folder.report, &folder.title, &plots, folder.scenario_toml);
+    output.write_bytes("report.html", page.as_bytes())?;
     Ok(())
 }
 
-/// The progress bar on stderr: hidden when stderr is not a terminal or with `--json`.
-fn progress_bar(total: u64, hidden: bool) -> ProgressBar {
-    if hidden || !std::io::stderr().is_terminal() {
-        return ProgressBar::with_draw_target(Some(total), ProgressDrawTarget::hidden());
-    }
-    let bar = ProgressBar::with_draw_target(Some(total), ProgressDrawTarget::stderr());
-    let style = ProgressStyle::with_template(
-        "{elapsed_precise} [{bar:40}] {pos}/{len} runs, {rate}, ETA {eta}",
-    )
-    .map(|s| {
-        s.progress_chars("=> ").with_key(
-            "rate",
-            |state: &ProgressState, w: &mut dyn std::fmt::Write| {
-                let _ = write!(w, "{:.0} runs/s", state.per_sec());
-            },
-        )
-    })
-    .unwrap_or_else(|_| ProgressStyle::default_bar());
-    bar.set_style(style);
-    bar
-}
-
 /// The plots of a campaign, each with its file stem.
-fn figures(
-    result: &CampaignResult,
-    scenario: &Scenario,
-    title: &str,
-) -> Vec<(&'static str, Figure)> {
+fn figures(folder: &CampaignFolder) -> Vec<(&'static str, Figure)> {
+    let (scenario, title) = (folder.scenario, &folder.title);
     let deck = &scenario.environment.deck;
-    let labels = &result.controller_labels;
-    let touchdowns = |controller: usize| -> Vec<(f64, f64)> {
-        result
-            .records
+    let statistics = &folder.report.summary.controllers;
+    let labels: Vec<&str> = statistics.iter().map(|s| s.controller.as_str()).collect();
+    let touchdowns = |label: &str| -> Vec<(f64, f64)> {
+        folder
+            .rows
             .iter()
-            .filter(|r| r.controller == controller)
-            .filter_map(|r| r.result.as_ref().ok().and_then(|s| s.touchdown))
-            .map(|t| (t.distance_from_aim_m, t.sink_rate_mps))
+            .filter(|r| r.controller == label)
+            .filter_map(|r| r.touchdown_distance_m.zip(r.touchdown_sink_rate_mps))
             .collect()
     };
     let mut dispersion = Panel::new(
@@ -143,8 +128,8 @@ fn figures(
         "touchdown along the deck from the aim point (m, positive forward)",
         "sink rate at touchdown (m/s)",
     );
-    for (index, label) in labels.iter().enumerate() {
-        let points = touchdowns(index);
+    for label in &labels {
+        let points = touchdowns(label);
         dispersion = dispersion.scatter(format!("{label} ({} touchdowns)", points.len()), points);
     }
     dispersion = dispersion.vertical_line("ramp", -deck.ramp_aft_of_aim_point_m);
@@ -167,13 +152,20 @@ fn figures(
         "distance (m, positive forward)",
         "runs",
     );
-    for (index, label) in labels.iter().enumerate() {
-        let points = touchdowns(index);
-        sink = sink.histogram(label.clone(), points.iter().map(|p| p.1).collect(), bins);
-        distance = distance.histogram(label.clone(), points.iter().map(|p| p.0).collect(), bins);
+    for label in &labels {
+        let points = touchdowns(label);
+        sink = sink.histogram(
+            label.to_string(),
+            points.iter().map(|p| p.1).collect(),
+            bins,
+        );
+        distance = distance.histogram(
+            label.to_string(),
+            points.iter().map(|p| p.0).collect(),
+            bins,
+        );
     }
 
-    let statistics = result.statistics();
     let categories = [
         "trap",
         "bolter",
@@ -190,7 +182,7 @@ fn figures(
     )
     .categories(categories.iter().map(|c| (*c).to_owned()).collect())
     .interval_name("95 % Wilson score interval");
-    for s in &statistics {
+    for s in statistics {
         let classes = proportions(s);
         outcomes = outcomes.bar_group(BarGroup {
             name: format!("{} ({} runs)", s.controller, s.runs),
@@ -310,14 +302,17 @@ fn html_report(
     plots: &[(&str, String)],
     scenario_toml: &str,
 ) -> String {
-    let stats = report.controllers;
+    let stats = &report.summary.controllers;
     let mut page = html::Report::new(format!("Campaign — {title}"));
     let flown = page.section("What was flown");
     flown.table(
         &["quantity", "value"],
         vec![
             vec!["scenario file".into(), report.scenario_file.clone()],
-            vec!["campaign seed".into(), report.campaign_seed.to_string()],
+            vec![
+                "campaign seed".into(),
+                report.summary.campaign_seed.to_string(),
+            ],
             vec![
                 "controllers".into(),
                 stats
@@ -328,16 +323,16 @@ fn html_report(
             ],
             vec![
                 "runs requested per controller".into(),
-                report.requested_runs.to_string(),
+                report.summary.requested_runs.to_string(),
             ],
             vec![
                 "runs finished (all controllers)".into(),
-                report.finished_runs.to_string(),
+                report.summary.finished_runs.to_string(),
             ],
         ],
     );
-    flown.paragraph(report.seed_derivation);
-    if let Some(note) = &report.partial_note {
+    flown.paragraph(report.summary.seed_derivation);
+    if let Some(note) = &report.summary.partial_note {
         flown.paragraph(format!("**Partial:** {note}"));
     }
     let mut header = vec!["outcome".to_string()];
@@ -350,7 +345,7 @@ fn html_report(
     page.section("Outcomes")
         .paragraph(format!(
             "Intervals: the {}. The classes are exclusive and add up to the runs.",
-            report.confidence_interval
+            report.summary.confidence_interval
         ))
         .table(&header, outcome_rows(stats));
     let wires: Vec<Vec<String>> = stats
@@ -364,7 +359,7 @@ fn html_report(
     page.section("Touchdown")
         .paragraph(format!(
             "Over the runs that touched the deck; percentiles by {}.",
-            report.percentiles
+            report.summary.percentiles
         ))
         .table(
             &[
@@ -385,6 +380,12 @@ fn html_report(
             &["controller", "wire 1", "wire 2", "wire 3", "wire 4"],
             wires,
         );
+    let rare = rare_event_lines(report.summary);
+    let rare_section = page.section("Rare events");
+    rare_section.paragraph(format!("Upper bounds: the {}.", report.summary.upper_bound));
+    for line in rare {
+        rare_section.paragraph(line);
+    }
     let plots_section = page.section("Plots");
     for (stem, svg) in plots {
         plots_section.figure(svg, format!("`{stem}.svg` (also `{stem}.png`)"));
@@ -398,23 +399,37 @@ fn html_report(
 /// Picks one distribution out of a controller's statistics.
 type DistributionOf = fn(&CampaignStatistics) -> Option<Distribution>;
 
-fn print_table(report: &CampaignReport, output: &OutputDir) -> Result<()> {
-    let stats = report.controllers;
+/// Prints the report as a table on stdout.
+pub fn print_table(report: &CampaignReport, output: &OutputDir) -> Result<()> {
+    let stats = &report.summary.controllers;
+    let how = match (report.threads, report.runs_per_s) {
+        (Some(threads), Some(rate)) => format!(
+            "{threads} threads, {:.1} s ({rate:.0} runs/s)",
+            report.elapsed_s
+        ),
+        _ => format!(
+            "merged from {} shards in {:.1} s",
+            report.merged_from.len(),
+            report.elapsed_s
+        ),
+    };
+    let shard = if report.shard == "0/1" {
+        String::new()
+    } else {
+        format!(", shard {}", report.shard)
+    };
     outln!(
-        "Campaign — {}, {} runs{}, seed {}, {} threads, {:.1} s ({:.0} runs/s)",
+        "Campaign — {}, {} runs{}{shard}, seed {}, {how}",
         report.scenario_file,
-        report.requested_runs,
+        report.summary.requested_runs,
         if stats.len() > 1 {
             " per controller"
         } else {
             ""
         },
-        report.campaign_seed,
-        report.threads,
-        report.elapsed_s,
-        report.runs_per_s
+        report.summary.campaign_seed,
     )?;
-    if let Some(note) = &report.partial_note {
+    if let Some(note) = &report.summary.partial_note {
         outln!("  PARTIAL: {note}")?;
     }
     let width = 30;
@@ -475,108 +490,58 @@ fn print_table(report: &CampaignReport, output: &OutputDir) -> Result<()> {
             outln!()?;
         }
     }
+    for line in rare_event_lines(report.summary) {
+        outln!("  {line}")?;
+    }
     outln!("  results in {}", output.path().display())?;
     Ok(())
 }
 
-/// Runs `deckland campaign`.
-pub fn run(args: &CampaignArgs) -> Result<()> {
-    let scenario = load_scenario_file(&args.scenario)?;
-    if !matches!(scenario.mission, Mission::Approach) {
-        bail!(
-            "{}: `mission.kind` is not \"approach\": a campaign flies approaches",
-            args.scenario.display()
-        );
-    }
-    // The nominal scenario must fly; a dispersed run that cannot is a row of the result.
-    check_set_up(&scenario)?;
-    let seed = args.seed.unwrap_or(scenario.seed);
-    let mut spec = CampaignSpec::new(scenario, args.runs, seed);
-    if args.compare {
-        spec = spec.comparing_pitch_controllers();
-    }
-    let threads = args.threads.map_or_else(
-        || {
-            std::thread::available_parallelism()
-                .map(|n| n.get())
-                .unwrap_or(1)
-                .min(MAX_THREADS as usize)
-        },
-        usize::from,
-    );
-    let output = OutputDir::prepare("campaign", args.output.out.as_deref(), args.output.force)?;
-    let total = args.runs.saturating_mul(spec.controllers.len() as u64);
-    let bar = progress_bar(total, args.output.json);
-    let stop = crate::interrupt::graceful_stop();
-    let started = Instant::now();
-    let result = run_campaign(&spec, threads, &|_: &RunRecord| bar.inc(1), stop)
-        .context("cannot run the campaign")?;
-    let elapsed_s = started.elapsed().as_secs_f64();
-    bar.finish_and_clear();
-
-    let statistics = result.statistics();
-    let finished_runs = result.records.len() as u64;
-    let report = CampaignReport {
-        scenario_file: args.scenario.display().to_string(),
-        campaign_seed: seed,
-        seed_derivation: "run i (from 0) flies seed SplitMix64 output i of the campaign seed, \
-                          shifted right by one bit (mix(S + (i + 1)·0x9e3779b97f4a7c15) >> 1); \
-                          its dispersions come from that seed's \"dispersion\" stream; \
-                          `deckland run FILE --seed SEED --disperse` flies it again",
-        requested_runs: args.runs,
-        finished_runs,
-        partial: result.partial,
-        partial_note: result.partial.then(|| {
-            format!(
-                "stopped by Ctrl-C or SIGTERM: {finished_runs} of {total} runs finished; the statistics \
-                 cover the finished runs only, listed by index in runs.csv"
-            )
-        }),
-        threads,
-        elapsed_s,
-        runs_per_s: finished_runs as f64 / elapsed_s.max(1e-9),
-        confidence_interval: "95 % Wilson score interval of each rate",
-        percentiles: "linear interpolation between closest ranks (Hyndman & Fan type 7)",
-        controllers: &statistics,
-    };
-    let scenario_toml =
-        toml::to_string(&spec.scenario).context("cannot write the scenario as TOML")?;
-    output.write_bytes("scenario.toml", scenario_toml.as_bytes())?;
-    write_runs_csv(&result, &output)?;
-    output.write_bytes(
-        "summary.json",
-        serde_json::to_string_pretty(&report)?.as_bytes(),
-    )?;
-    let name = args.scenario.file_name().map_or_else(
-        || args.scenario.display().to_string(),
-        |n| n.to_string_lossy().into_owned(),
-    );
-    let per_controller = statistics.first().map_or(0, |s| s.runs);
-    let title = format!(
-        "{name}, seed {seed}, {per_controller} runs{}",
-        if statistics.len() > 1 {
-            " per controller"
-        } else {
-            ""
-        }
-    );
-    let mut plots = Vec::new();
-    for (stem, figure) in figures(&result, &spec.scenario, &title) {
-        plots.push((stem, figure.save_with_svg(&output, stem)?.1));
-    }
-    let page = html_report(&report, &title, &plots, &scenario_toml);
-    output.write_bytes("report.html", page.as_bytes())?;
-    if args.output.json {
-        outln!("{}", serde_json::to_string_pretty(&report)?)?;
+/// A probability in words: percent down to 0.01 %, else in powers of ten.
+fn probability(p: f64) -> String {
+    if p >= 1e-4 {
+        format!("{:.2} %", 100.0 * p)
     } else {
-        print_table(&report, &output)?;
+        format!("{p:.2e}")
     }
-    if result.partial {
-        warnln!(
-            "campaign stopped by Ctrl-C or SIGTERM: partial results ({finished_runs} of {total} runs) in {}",
-            output.path().display()
-        );
-        std::process::exit(crate::interrupt::INTERRUPTED_STATUS);
+}
+
+/// The rare-event part of the report: for every class seen at most [`RARE_COUNT`] times,
+/// its 95 % upper bound; then the runs it takes to show the target rate.
+pub fn rare_event_lines(summary: &CampaignSummary) -> Vec<String> {
+    let mut lines = vec![format!(
+        "rare events (seen at most {RARE_COUNT} times): {} % upper bound of the probability",
+        100.0 * UPPER_BOUND_CONFIDENCE
+    )];
+    for s in &summary.controllers {
+        // Every class but the trap is a failure.
+        for (name, p) in proportions(s).into_iter().skip(1) {
+            if p.count <= RARE_COUNT && s.runs > 0 {
+                lines.push(format!(
+                    "  {}: {name}: {} in {} runs, p < {}",
+                    s.controller,
+                    p.count,
+                    s.runs,
+                    probability(p.upper_bound_95)
+                ));
+            }
+        }
     }
-    Ok(())
+    let target = &summary.rare_event_target;
+    let needed: Vec<String> = target
+        .runs_needed
+        .iter()
+        .map(|n| match n.runs {
+            Some(runs) => format!("{runs} runs if {} events", n.events),
+            None => format!("beyond 2^62 runs if {} events", n.events),
+        })
+        .collect();
+    lines.push(format!(
+        "to show p < {:e} at {} %: {} (with none, the n with (1 − p)^n ≤ {:.2}: about 3/p, the rule of three)",
+        target.rate,
+        100.0 * target.confidence,
+        needed.join(", "),
+        1.0 - target.confidence,
+    ));
+    lines
 }

@@ -1,0 +1,187 @@
+//! `deckland campaign`: N approaches of a scenario file in parallel (Monte Carlo).
+//!
+//! Run `i` flies seed SplitMix64(S, i) (`deckland::monte_carlo::run_seed`) with the
+//! scenario's dispersions drawn from that seed, on a pool of `--threads` workers; the
+//! results are sorted by run index, so every file except the timing in `summary.json` is
+//! identical for any thread count. Writes into the output folder:
+//!
+//! - `scenario.toml`: the nominal scenario flown;
+//! - `runs.csv`: one row per run and controller (outcome, wire, touchdown, ramp
+//!   clearance, glide-path error, the dispersions drawn, the failure reason), and the
+//!   same rows as `runs.parquet`;
+//! - `summary.json`: outcome rates with 95 % Wilson score intervals and exact 95 % upper
+//!   bounds, the runs needed to show a target rate, touchdown distance and sink-rate
+//!   mean, standard deviation and percentiles, per controller;
+//! - plots: `touchdown_dispersion` (touchdown point along the deck against sink rate,
+//!   with the wires and the ramp), `touchdown_histograms`, `outcomes`.
+//!
+//! `--shard K/M` flies only the runs i with i mod M = K (round robin: every shard is a
+//! sample of the whole campaign and the shards differ by one run at most); the folder
+//! says which shard it is, and `deckland merge` puts the M folders together into the
+//! campaign flown whole ([`merge`](super::merge)).
+//!
+//! Ctrl-C or SIGTERM stops the workers before their next run; the finished runs are
+//! written, marked `"partial": true`, and the command exits with status 130.
+//!
+//! `--runs` is at most [`MAX_RUNS`] and `--threads` at most [`MAX_THREADS`]: the records
+//! of every run are kept in memory, and threads beyond the cores buy nothing.
+
+pub mod report;
+
+use super::common::{check_set_up, load_scenario_file, seed_parser, OutputArgs};
+use crate::output::OutputDir;
+use anyhow::{bail, Context, Result};
+use clap::Args;
+use deckland::monte_carlo::{
+    run_campaign, CampaignSpec, CampaignSummary, RunRecord, RunRow, Shard, DEFAULT_TARGET_RATE,
+    SHARD_SCHEME,
+};
+use deckland::scenario::Mission;
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressState, ProgressStyle};
+use report::{CampaignFolder, CampaignReport};
+use std::io::IsTerminal;
+use std::path::PathBuf;
+use std::time::Instant;
+
+/// Options of `deckland campaign`.
+#[derive(Debug, Clone, Args)]
+pub struct CampaignArgs {
+    /// Scenario file (TOML); its `[dispersion]` section sets the per-run dispersions.
+    pub scenario: PathBuf,
+    /// Number of approaches (per controller with `--compare`), 1 to 100 000.
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..=MAX_RUNS), allow_negative_numbers = true)]
+    pub runs: u64,
+    /// Campaign seed S, 0 to 2⁶³ − 1; run i flies seed SplitMix64(S, i) (default: the
+    /// scenario's seed).
+    #[arg(long, value_parser = seed_parser(), allow_negative_numbers = true)]
+    pub seed: Option<u64>,
+    /// Worker threads, 1 to 256 (default: the number of CPUs). The results do not depend
+    /// on it.
+    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=MAX_THREADS), allow_negative_numbers = true)]
+    pub threads: Option<u16>,
+    /// Output folder, overwriting and JSON printing.
+    #[command(flatten)]
+    pub output: OutputArgs,
+    /// Fly the same seeds and dispersions under O-PD and PID and report them side by side.
+    #[arg(long)]
+    pub compare: bool,
+    /// Fly only shard K/M of the campaign (K from 0 to M − 1): the runs i with
+    /// i mod M = K. `deckland merge` puts the M shard folders together.
+    #[arg(long, value_parser = clap::builder::ValueParser::new(parse_shard), allow_hyphen_values = true)]
+    pub shard: Option<Shard>,
+}
+
+/// `K/M`, refused with the library's reason.
+fn parse_shard(text: &str) -> Result<Shard, String> {
+    text.parse::<Shard>().map_err(|e| e.to_string())
+}
+
+/// Most approaches of one campaign (per controller): a record of each is kept, about
+/// 0.3 kB, and 100 000 runs already give a rate to ±0.3 points.
+pub const MAX_RUNS: u64 = 100_000;
+
+/// Most worker threads: more than the cores only adds switching.
+pub const MAX_THREADS: i64 = 256;
+
+/// The progress bar on stderr: hidden when stderr is not a terminal or with `--json`.
+fn progress_bar(total: u64, hidden: bool) -> ProgressBar {
+    if hidden || !std::io::stderr().is_terminal() {
+        return ProgressBar::with_draw_target(Some(total), ProgressDrawTarget::hidden());
+    }
+    let bar = ProgressBar::with_draw_target(Some(total), ProgressDrawTarget::stderr());
+    let style = ProgressStyle::with_template(
+        "{elapsed_precise} [{bar:40}] {pos}/{len} runs, {rate}, ETA {eta}",
+    )
+    .map(|s| {
+        s.progress_chars("=> ").with_key(
+            "rate",
+            |state: &ProgressState, w: &mut dyn std::fmt::Write| {
+                let _ = write!(w, "{:.0} runs/s", state.per_sec());
+            },
+        )
+    })
+    .unwrap_or_else(|_| ProgressStyle::default_bar());
+    bar.set_style(style);
+    bar
+}
+
+/// Runs `deckland campaign`.
+pub fn run(args: &CampaignArgs) -> Result<()> {
+    let scenario = load_scenario_file(&args.scenario)?;
+    if !matches!(scenario.mission, Mission::Approach) {
+        bail!(
+            "{}: `mission.kind` is not \"approach\": a campaign flies approaches",
+            args.scenario.display()
+        );
+    }
+    // The nominal scenario must fly; a dispersed run that cannot is a row of the result.
+    check_set_up(&scenario)?;
+    let seed = args.seed.unwrap_or(scenario.seed);
+    let mut spec = CampaignSpec::new(scenario, args.runs, seed);
+    if args.compare {
+        spec = spec.comparing_pitch_controllers();
+    }
+    let threads = args.threads.map_or_else(
+        || {
+            std::thread::available_parallelism()
+                .map(|n| n.get())
+                .unwrap_or(1)
+                .min(MAX_THREADS as usize)
+        },
+        usize::from,
+    );
+    let shard = args.shard.unwrap_or(Shard::WHOLE);
+    spec = spec.sharded(shard);
+    let output = OutputDir::prepare("campaign", args.output.out.as_deref(), args.output.force)?;
+    let total = shard
+        .runs_of(args.runs)
+        .saturating_mul(spec.controllers.len() as u64);
+    let bar = progress_bar(total, args.output.json);
+    let stop = crate::interrupt::graceful_stop();
+    let started = Instant::now();
+    let result = run_campaign(&spec, threads, &|_: &RunRecord| bar.inc(1), stop)
+        .context("cannot run the campaign")?;
+    let elapsed_s = started.elapsed().as_secs_f64();
+    bar.finish_and_clear();
+
+    let summary = CampaignSummary::of_result(&result, seed, DEFAULT_TARGET_RATE);
+    let finished_runs = result.records.len() as u64;
+    let report = CampaignReport {
+        scenario_file: args.scenario.display().to_string(),
+        summary: &summary,
+        threads: Some(threads),
+        elapsed_s,
+        runs_per_s: Some(finished_runs as f64 / elapsed_s.max(1e-9)),
+        shard: shard.to_string(),
+        shard_scheme: SHARD_SCHEME,
+        merged_from: Vec::new(),
+    };
+    let scenario_toml =
+        toml::to_string(&spec.scenario).context("cannot write the scenario as TOML")?;
+    let rows: Vec<RunRow> = result
+        .records
+        .iter()
+        .map(|r| RunRow::new(r, &result.controller_labels))
+        .collect();
+    let folder = CampaignFolder {
+        scenario: &spec.scenario,
+        scenario_toml: &scenario_toml,
+        rows: &rows,
+        report: &report,
+        title: report::title(&args.scenario, &report),
+    };
+    report::write_folder(&folder, &output)?;
+    if args.output.json {
+        outln!("{}", serde_json::to_string_pretty(&report)?)?;
+    } else {
+        report::print_table(&report, &output)?;
+    }
+    if result.partial {
+        warnln!(
+            "campaign stopped by Ctrl-C or SIGTERM: partial results ({finished_runs} of {total} runs) in {}",
+            output.path().display()
+        );
+        std::process::exit(crate::interrupt::INTERRUPTED_STATUS);
+    }
+    Ok(())
+}

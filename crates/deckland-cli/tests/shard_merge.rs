@@ -1,0 +1,379 @@
+//! `deckland campaign --shard K/M` and `deckland merge`: three shards merged are the
+//! campaign flown whole, byte for byte; shards that do not belong together, partial or
+//! unfinished shards and malformed shard specs are refused by name; `runs.parquet` holds
+//! the rows of `runs.csv`.
+
+#![allow(clippy::unwrap_used)] // tests fail loudly by design
+
+mod common;
+
+use common::{deckland, scratch};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+
+/// A short (500 m) adverse approach with every dispersion on, written to a temp file.
+fn short_dispersed_scenario(dir: &Path) -> String {
+    std::fs::create_dir_all(dir).unwrap();
+    let path = dir.join("short.toml");
+    std::fs::write(
+        &path,
+        "[approach]\nstart_range_m = 500.0\n\n[dispersion]\nstart_height_offset_sd_m = 1.0\n\
+         airspeed_error_sd_mps = 1.0\nsea_state_log_sd = 0.2\nwind_over_deck_sd_mps = 2.0\n",
+    )
+    .unwrap();
+    path.display().to_string()
+}
+
+fn assert_success(output: &Output) {
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+}
+
+fn stderr(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stderr).into_owned()
+}
+
+/// Flies `deckland campaign FILE --runs RUNS --seed SEED --compare [--shard S] --out OUT`.
+fn campaign(file: &str, runs: &str, seed: &str, shard: Option<&str>, out: &Path) -> Output {
+    let mut args = vec![
+        "campaign",
+        file,
+        "--runs",
+        runs,
+        "--seed",
+        seed,
+        "--compare",
+        "--threads",
+        if shard.is_some() { "1" } else { "2" },
+        "--json",
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    if let Some(shard) = shard {
+        args.extend(["--shard", shard]);
+    }
+    deckland(args)
+}
+
+/// The statistics of a `summary.json`: the text from `"campaign_seed"` up to the first
+/// key that describes how the campaign was flown (`"threads"`).
+fn statistics_text(folder: &Path) -> String {
+    let text = std::fs::read_to_string(folder.join("summary.json")).unwrap();
+    let start = text.find("\"campaign_seed\"").unwrap();
+    let end = text.find("\"threads\"").unwrap();
+    text[start..end].to_owned()
+}
+
+fn merge(folders: &[&PathBuf], out: &Path) -> Output {
+    let mut args: Vec<&str> = vec!["merge"];
+    args.extend(folders.iter().map(|f| f.to_str().unwrap()));
+    args.extend(["--json", "--force", "--out", out.to_str().unwrap()]);
+    deckland(args)
+}
+
+#[test]
+fn three_shards_merged_are_the_campaign_flown_whole_byte_for_byte() {
+    let dir = scratch("shards-merge");
+    let file = short_dispersed_scenario(&dir);
+    let whole = dir.join("whole");
+    assert_success(&campaign(&file, "23", "7", None, &whole));
+    let shards: Vec<PathBuf> = (0..3).map(|k| dir.join(format!("shard-{k}"))).collect();
+    for (k, folder) in shards.iter().enumerate() {
+        let output = campaign(&file, "23", "7", Some(&format!("{k}/3")), folder);
+        assert_success(&output);
+        let summary: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+        assert_eq!(summary["shard"], format!("{k}/3"));
+        assert_eq!(summary["requested_runs"], 23);
+        // Round robin: shard k holds the runs i with i mod 3 = k, under both controllers.
+        let expected_runs = (0..23).filter(|i| i % 3 == k).count();
+        assert_eq!(summary["finished_runs"], 2 * expected_runs);
+        let csv = std::fs::read_to_string(folder.join("runs.csv")).unwrap();
+        for line in csv.lines().skip(1) {
+            let run: usize = line.split(',').next().unwrap().parse().unwrap();
+            assert_eq!(run % 3, k, "{line}");
+        }
+    }
+    let merged = dir.join("merged");
+    // In any order.
+    let output = merge(&[&shards[2], &shards[0], &shards[1]], &merged);
+    assert_success(&output);
+    assert_eq!(
+        std::fs::read(whole.join("runs.csv")).unwrap(),
+        std::fs::read(merged.join("runs.csv")).unwrap(),
+        "runs.csv of the merge differs from the campaign flown whole"
+    );
+    assert_eq!(
+        statistics_text(&whole),
+        statistics_text(&merged),
+        "the statistics of summary.json differ"
+    );
+    assert_eq!(
+        std::fs::read(whole.join("scenario.toml")).unwrap(),
+        std::fs::read(merged.join("scenario.toml")).unwrap()
+    );
+    let summary: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+    assert_eq!(summary["merged_from"].as_array().unwrap().len(), 3);
+    assert_eq!(summary["partial"], false);
+    for file in ["outcomes.png", "touchdown_dispersion.svg", "report.html"] {
+        assert!(merged.join(file).exists(), "{file}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_merge_refuses_shards_of_other_campaigns_missing_overlapping_or_unfinished() {
+    let dir = scratch("shards-refuse");
+    let file = short_dispersed_scenario(&dir);
+    let shard = |name: &str, runs: &str, seed: &str, spec: &str| {
+        let folder = dir.join(name);
+        assert_success(&campaign(&file, runs, seed, Some(spec), &folder));
+        folder
+    };
+    let zero = shard("s0", "6", "7", "0/2");
+    let one = shard("s1", "6", "7", "1/2");
+    let out = dir.join("out");
+    assert_success(&merge(&[&zero, &one], &out));
+
+    let refused = |folders: &[&PathBuf], expected: &str| {
+        let output = merge(folders, &out);
+        assert_eq!(output.status.code(), Some(1), "{}", stderr(&output));
+        assert!(
+            stderr(&output).contains(expected),
+            "expected {expected:?} in: {}",
+            stderr(&output)
+        );
+    };
+    refused(&[&zero], "missing shard 1/2: a merge needs every shard");
+    refused(&[&zero, &one, &one], "are both shard 1/2");
+    let other_seed = shard("seed8", "6", "8", "1/2");
+    refused(
+        &[&zero, &other_seed],
+        "is not a shard of the same campaign as",
+    );
+    refused(&[&zero, &other_seed], "`campaign_seed` is 8 there and 7 in");
+    let other_runs = shard("runs7", "7", "7", "1/2");
+    refused(
+        &[&zero, &other_runs],
+        "`requested_runs` is 7 there and 6 in",
+    );
+    let other_count = shard("of3", "6", "7", "1/3");
+    refused(
+        &[&zero, &other_count],
+        "`shard count M` is 1/3 there and 0/2",
+    );
+
+    // Another scenario: the same file with another start range.
+    let other_file = dir.join("other.toml");
+    std::fs::write(
+        &other_file,
+        std::fs::read_to_string(&file)
+            .unwrap()
+            .replace("500.0", "520.0"),
+    )
+    .unwrap();
+    let other_scenario = dir.join("other-scenario");
+    assert_success(&campaign(
+        other_file.to_str().unwrap(),
+        "6",
+        "7",
+        Some("1/2"),
+        &other_scenario,
+    ));
+    refused(&[&zero, &other_scenario], "flew another scenario than");
+    refused(&[&zero, &other_scenario], "`approach.start_range_m` is 520");
+
+    // A shard killed before it wrote its results: no summary.json.
+    let unfinished = dir.join("unfinished");
+    std::fs::create_dir_all(&unfinished).unwrap();
+    std::fs::copy(one.join("runs.csv"), unfinished.join("runs.csv")).unwrap();
+    refused(&[&zero, &unfinished], "has no summary.json");
+
+    // A truncated runs.csv: its last row lost.
+    let truncated = dir.join("truncated");
+    std::fs::create_dir_all(&truncated).unwrap();
+    for name in ["summary.json", "scenario.toml"] {
+        std::fs::copy(one.join(name), truncated.join(name)).unwrap();
+    }
+    let csv = std::fs::read_to_string(one.join("runs.csv")).unwrap();
+    let kept: Vec<&str> = csv.lines().collect();
+    std::fs::write(
+        truncated.join("runs.csv"),
+        kept[..kept.len() - 1].join("\n") + "\n",
+    )
+    .unwrap();
+    refused(&[&zero, &truncated], "holds 5 of its 6 rows");
+
+    // A number edited into NaN: refused, not carried into the merged files.
+    let edited = dir.join("edited");
+    std::fs::create_dir_all(&edited).unwrap();
+    for name in ["summary.json", "scenario.toml"] {
+        std::fs::copy(one.join(name), edited.join(name)).unwrap();
+    }
+    let mut reader = csv::Reader::from_path(one.join("runs.csv")).unwrap();
+    let header = reader.headers().unwrap().clone();
+    let column = header.iter().position(|h| h == "end_time_s").unwrap();
+    let mut writer = csv::Writer::from_path(edited.join("runs.csv")).unwrap();
+    writer.write_record(&header).unwrap();
+    for (index, record) in reader.records().enumerate() {
+        let mut fields: Vec<String> = record.unwrap().iter().map(str::to_owned).collect();
+        if index == 0 {
+            fields[column] = "NaN".to_owned();
+        }
+        writer.write_record(&fields).unwrap();
+    }
+    writer.flush().unwrap();
+    refused(
+        &[&zero, &edited],
+        "`end_time_s` is NaN, not a finite number",
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A shard stopped by SIGTERM (as by Ctrl-C) is marked partial and refused by a merge.
+#[cfg(unix)]
+#[test]
+fn an_interrupted_shard_is_partial_and_refused() {
+    let dir = scratch("shards-partial");
+    let file = short_dispersed_scenario(&dir);
+    let complete = dir.join("complete");
+    assert_success(&campaign(&file, "4", "7", Some("0/2"), &complete));
+    let interrupted = dir.join("interrupted");
+    let child = Command::new(env!("CARGO_BIN_EXE_deckland"))
+        .args([
+            "campaign",
+            &file,
+            "--runs",
+            "100000",
+            "--seed",
+            "7",
+            "--compare",
+            "--shard",
+            "1/2",
+            "--threads",
+            "1",
+            "--json",
+            "--out",
+            interrupted.to_str().unwrap(),
+        ])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    std::thread::sleep(std::time::Duration::from_millis(1500));
+    let term = Command::new("kill")
+        .args(["-TERM", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(term.success());
+    let status = child.wait_with_output().unwrap().status;
+    assert_eq!(status.code(), Some(130));
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(interrupted.join("summary.json")).unwrap())
+            .unwrap();
+    assert_eq!(summary["partial"], true);
+    assert_eq!(summary["shard"], "1/2");
+    // The shard of a 100 000-run campaign does not match the 4-run one: make it match
+    // but for `partial`, so the merge is refused for that reason alone.
+    let mut text = std::fs::read_to_string(interrupted.join("summary.json")).unwrap();
+    text = text.replace("\"requested_runs\": 100000", "\"requested_runs\": 4");
+    std::fs::write(interrupted.join("summary.json"), text).unwrap();
+    let output = merge(&[&complete, &interrupted], &dir.join("out"));
+    assert_eq!(output.status.code(), Some(1));
+    assert!(
+        stderr(&output).contains("is shard 1/2 stopped before every run finished"),
+        "{}",
+        stderr(&output)
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn malformed_shards_are_refused_by_name() {
+    let dir = scratch("shards-malformed");
+    let file = short_dispersed_scenario(&dir);
+    for (spec, expected) in [
+        ("3/3", "shard `3/3`: K must be 0 to M − 1 = 2"),
+        (
+            "0/0",
+            "shard `0/0`: the number of shards M must be at least 1",
+        ),
+        ("a/b", "`a/b` is not a shard: expected K/M"),
+        ("1", "`1` is not a shard"),
+        ("-1/3", "`-1/3` is not a shard"),
+    ] {
+        let output = campaign(&file, "4", "1", Some(spec), &dir.join("out"));
+        assert_eq!(output.status.code(), Some(2), "{spec}: {}", stderr(&output));
+        assert!(
+            stderr(&output).contains(expected),
+            "{spec}: {}",
+            stderr(&output)
+        );
+        assert!(stderr(&output).contains("--shard"), "{spec}");
+    }
+    // A shard with no run of the campaign: named, not an empty folder.
+    let output = campaign(&file, "2", "1", Some("2/3"), &dir.join("empty"));
+    assert_eq!(output.status.code(), Some(1));
+    assert!(
+        stderr(&output).contains("shard 2/3 of a campaign of 2 runs holds no run"),
+        "{}",
+        stderr(&output)
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn runs_parquet_holds_the_rows_of_runs_csv() {
+    use parquet::file::reader::{FileReader, SerializedFileReader};
+    use parquet::record::Field;
+
+    let dir = scratch("shards-parquet");
+    let file = short_dispersed_scenario(&dir);
+    let out = dir.join("out");
+    assert_success(&campaign(&file, "9", "3", None, &out));
+    let mut csv = csv::Reader::from_path(out.join("runs.csv")).unwrap();
+    let header: Vec<String> = csv.headers().unwrap().iter().map(str::to_owned).collect();
+    let rows: Vec<Vec<String>> = csv
+        .records()
+        .map(|r| r.unwrap().iter().map(str::to_owned).collect())
+        .collect();
+    let reader =
+        SerializedFileReader::new(std::fs::File::open(out.join("runs.parquet")).unwrap()).unwrap();
+    let columns: Vec<String> = reader
+        .metadata()
+        .file_metadata()
+        .schema_descr()
+        .columns()
+        .iter()
+        .map(|c| c.name().to_owned())
+        .collect();
+    assert_eq!(
+        columns, header,
+        "the Parquet columns are the CSV's, in order"
+    );
+    let records: Vec<_> = reader
+        .get_row_iter(None)
+        .unwrap()
+        .map(Result::unwrap)
+        .collect();
+    assert_eq!(records.len(), rows.len());
+    for (record, row) in records.iter().zip(&rows) {
+        for ((name, field), text) in record.get_column_iter().zip(row) {
+            match field {
+                Field::Null => assert_eq!(*text, "", "{name}"),
+                Field::Long(v) => assert_eq!(v.to_string(), *text, "{name}"),
+                // The CSV text read as a double is the same double, bit for bit.
+                Field::Double(v) => assert_eq!(
+                    v.to_bits(),
+                    text.parse::<f64>().unwrap().to_bits(),
+                    "{name}"
+                ),
+                Field::Str(v) => assert_eq!(v, text, "{name}"),
+                other => panic!("{name}: unexpected {other:?}"),
+            }
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -1,0 +1,225 @@
+//! Sharded campaigns: the shards of a campaign together are the campaign, run for run,
+//! and a merge refuses shards that do not belong together, naming what differs.
+
+#![allow(clippy::unwrap_used)] // tests fail loudly by design
+
+use deckland::monte_carlo::{
+    merge_shards, run_campaign, CampaignResult, CampaignSpec, CampaignStatistics, CampaignSummary,
+    MergeError, RunRecord, RunRow, Shard, ShardIdentity, ShardRows, DEFAULT_TARGET_RATE,
+};
+use deckland::scenario::{DispersionParameters, Scenario};
+use std::sync::atomic::AtomicBool;
+
+/// Adverse conditions, a short approach (500 m) and every dispersion on.
+fn short_dispersed_scenario() -> Scenario {
+    let mut scenario = Scenario::default();
+    scenario.approach.start_range_m = 500.0;
+    scenario.dispersion = DispersionParameters {
+        start_height_offset_sd_m: 1.0,
+        airspeed_error_sd_mps: 1.0,
+        sea_state_log_sd: 0.2,
+        wind_over_deck_sd_mps: 2.0,
+    };
+    scenario
+}
+
+fn fly(spec: &CampaignSpec) -> CampaignResult {
+    run_campaign(spec, 2, &|_: &RunRecord| {}, &AtomicBool::new(false)).unwrap()
+}
+
+fn shard_rows(result: &CampaignResult, seed: u64, source: &str) -> ShardRows {
+    ShardRows {
+        identity: ShardIdentity {
+            source: source.to_owned(),
+            scenario_toml: "seed = 1\n".to_owned(),
+            campaign_seed: seed,
+            requested_runs: result.requested_runs,
+            controllers: result.controller_labels.clone(),
+            shard: result.shard,
+            partial: result.partial,
+        },
+        rows: result
+            .records
+            .iter()
+            .map(|r| {
+                let row = RunRow::new(r, &result.controller_labels);
+                // As read back from a file: owning its text.
+                RunRow {
+                    controller: row.controller.into_owned().into(),
+                    outcome: row.outcome.into_owned().into(),
+                    ..row
+                }
+            })
+            .collect(),
+    }
+}
+
+#[test]
+fn three_shards_merged_are_the_campaign_flown_whole() {
+    let (runs, seed) = (17, 5);
+    let spec =
+        CampaignSpec::new(short_dispersed_scenario(), runs, seed).comparing_pitch_controllers();
+    let whole = fly(&spec);
+    let mut shards = Vec::new();
+    for index in [2, 0, 1] {
+        let shard = Shard::new(index, 3).unwrap();
+        let result = fly(&spec.clone().sharded(shard));
+        assert_eq!(result.records.len() as u64, 2 * shard.runs_of(runs));
+        assert!(result.records.iter().all(|r| shard.contains(r.run_index)));
+        shards.push(shard_rows(&result, seed, &format!("shard-{index}")));
+    }
+    let merged = merge_shards(shards).unwrap();
+    let expected: Vec<RunRow> = whole
+        .records
+        .iter()
+        .map(|r| RunRow::new(r, &whole.controller_labels))
+        .collect();
+    assert_eq!(merged.rows, expected);
+    assert_eq!(merged.sources, ["shard-0", "shard-1", "shard-2"]);
+    // The statistics from the rows are those from the records.
+    let summary = CampaignSummary::of_rows(
+        &merged.rows,
+        &merged.controllers,
+        seed,
+        runs,
+        2 * runs,
+        DEFAULT_TARGET_RATE,
+    );
+    assert_eq!(
+        summary,
+        CampaignSummary::of_result(&whole, seed, DEFAULT_TARGET_RATE)
+    );
+    assert_eq!(summary.controllers, whole.statistics());
+    assert!(!summary.partial);
+    let opd: Vec<RunRow> = expected
+        .iter()
+        .filter(|r| r.controller == "O-PD")
+        .cloned()
+        .collect();
+    assert_eq!(
+        CampaignStatistics::of_rows(&opd, "O-PD"),
+        whole.statistics()[0]
+    );
+}
+
+#[test]
+fn a_merge_refuses_shards_that_do_not_belong_together() {
+    let (runs, seed) = (6, 9);
+    let spec = CampaignSpec::new(short_dispersed_scenario(), runs, seed);
+    let shard = |index: u64| {
+        let result = fly(&spec.clone().sharded(Shard::new(index, 3).unwrap()));
+        shard_rows(&result, seed, &format!("s{index}"))
+    };
+    let (one, two, three) = (shard(0), shard(1), shard(2));
+    let all = || vec![one.clone(), two.clone(), three.clone()];
+    assert!(merge_shards(all()).is_ok());
+    assert_eq!(merge_shards(Vec::new()), Err(MergeError::NoShards));
+
+    let error = merge_shards(vec![one.clone(), three.clone()]).unwrap_err();
+    assert_eq!(
+        error,
+        MergeError::MissingShards {
+            missing: vec![1],
+            count: 3
+        }
+    );
+    assert_eq!(
+        error.to_string(),
+        "missing shard 1/3: a merge needs every shard"
+    );
+
+    let error =
+        merge_shards(vec![one.clone(), two.clone(), two.clone(), three.clone()]).unwrap_err();
+    assert!(matches!(error, MergeError::Overlapping { .. }), "{error}");
+    assert!(error.to_string().contains("both shard 1/3"), "{error}");
+
+    let mut partial = all();
+    partial[1].identity.partial = true;
+    partial[1].rows.pop();
+    let error = merge_shards(partial).unwrap_err();
+    assert!(
+        error.to_string().contains("s1 is shard 1/3 stopped"),
+        "{error}"
+    );
+
+    let mut other_seed = all();
+    other_seed[2].identity.campaign_seed = 10;
+    let error = merge_shards(other_seed).unwrap_err();
+    assert_eq!(
+        error.to_string(),
+        "s2 is not a shard of the same campaign as s0: `campaign_seed` is 10 there and 9 in s0"
+    );
+
+    let mut other_runs = all();
+    other_runs[1].identity.requested_runs = 7;
+    assert!(merge_shards(other_runs)
+        .unwrap_err()
+        .to_string()
+        .contains("`requested_runs` is 7"));
+
+    let mut other_count = all();
+    other_count[1].identity.shard = Shard::new(1, 4).unwrap();
+    assert!(merge_shards(other_count)
+        .unwrap_err()
+        .to_string()
+        .contains("`shard count M` is 1/4"));
+
+    let mut other_scenario = all();
+    other_scenario[1].identity.scenario_toml = "seed = 1\n".to_owned();
+    other_scenario[0].identity.scenario_toml =
+        "seed = 1\n[approach]\nstart_range_m = 500.0\n".to_owned();
+    other_scenario[2].identity.scenario_toml = other_scenario[0].identity.scenario_toml.clone();
+    let error = merge_shards(other_scenario).unwrap_err();
+    assert!(
+        error
+            .to_string()
+            .contains("s1 flew another scenario than s0"),
+        "{error}"
+    );
+
+    // A truncated shard: its last row lost.
+    let mut truncated = all();
+    truncated[2].rows.pop();
+    let error = merge_shards(truncated).unwrap_err();
+    assert!(
+        error
+            .to_string()
+            .contains("s2 (shard 2/3) holds 1 of its 2 rows; the first missing is run 5"),
+        "{error}"
+    );
+
+    // A row of another shard, a row twice, a row with another campaign's seed.
+    let mut foreign = all();
+    let stray = foreign[0].rows[0].clone();
+    foreign[1].rows.push(stray);
+    assert!(merge_shards(foreign)
+        .unwrap_err()
+        .to_string()
+        .contains("run 0 (O-PD) belongs to shard 0/3"));
+    let mut twice = all();
+    let copy = twice[0].rows[0].clone();
+    twice[0].rows.push(copy);
+    assert!(merge_shards(twice)
+        .unwrap_err()
+        .to_string()
+        .contains("appears twice"));
+    let mut reseeded = all();
+    reseeded[0].rows[1].seed += 1;
+    assert!(merge_shards(reseeded)
+        .unwrap_err()
+        .to_string()
+        .contains("where campaign seed 9 gives"));
+}
+
+#[test]
+fn a_shard_beyond_the_runs_is_refused() {
+    let spec =
+        CampaignSpec::new(short_dispersed_scenario(), 2, 1).sharded(Shard::new(2, 3).unwrap());
+    let error = run_campaign(&spec, 1, &|_: &RunRecord| {}, &AtomicBool::new(false)).unwrap_err();
+    assert!(
+        error
+            .to_string()
+            .contains("shard 2/3 of a campaign of 2 runs holds no run"),
+        "{error}"
+    );
+}

@@ -1,0 +1,82 @@
+"""Campaigns on a Dask cluster: the shards of one campaign flown by Dask workers.
+
+:func:`campaign` splits a campaign into shards (shard K of M flies the runs i with
+i mod M = K), maps them over a ``dask.distributed`` cluster — each task calls the
+compiled core to fly one shard and returns its rows — and merges the shards with the
+same Rust code as ``deckland merge``. Run i depends only on the campaign seed and i, so
+the result is :func:`deckland.campaign`'s, bit for bit, on any cluster: the code here
+only sees a :class:`distributed.Client`, whether it talks to a ``LocalCluster``, to
+Slurm or PBS through ``dask-jobqueue``, or to Kubernetes through ``dask-kubernetes``
+(python/README.md shows each).
+
+Needs the ``dask`` extra (``pip install "deckland[dask]"``) here and deckland installed
+on every worker.
+"""
+
+from __future__ import annotations
+
+from typing import Any, Optional
+
+from . import Campaign, Scenario, _deckland
+from ._tables import table
+
+__all__ = ["campaign"]
+
+
+def _fly_shard(
+    index: int,
+    scenario: Scenario,
+    runs: int,
+    count: int,
+    seed: Optional[int],
+    threads: int,
+    compare: bool,
+) -> str:
+    """One task: flies shard ``index``/``count`` on a worker; the shard as text."""
+    return _deckland.campaign_shard(scenario, runs, index, count, seed, threads, compare)
+
+
+def campaign(
+    client: Any,
+    scenario: Scenario,
+    runs: int,
+    seed: Optional[int] = None,
+    shards: Optional[int] = None,
+    *,
+    compare: bool = False,
+    threads_per_shard: int = 1,
+) -> Campaign:
+    """Flies ``runs`` approaches of ``scenario`` as shards on the cluster of ``client``.
+
+    ``shards`` defaults to the number of worker threads of the cluster (at most
+    ``runs``); more shards than workers balance uneven workers better. Each shard flies
+    on ``threads_per_shard`` threads of its worker (1: Dask's threads are the
+    parallelism). ``seed`` and ``compare`` are :func:`deckland.campaign`'s.
+
+    Returns the :class:`deckland.Campaign` (``runs``, ``summary``; it unpacks as
+    ``runs, summary = ...``) that :func:`deckland.campaign` returns for the same
+    arguments, except the timing keys of the summary; ``summary["merged_from"]`` names
+    the shards. Raises ``ValueError`` if a shard comes back partial (a worker stopped)
+    or does not belong to the campaign.
+    """
+    if not isinstance(runs, int) or isinstance(runs, bool) or runs < 1:
+        raise ValueError(f"runs = {runs!r}: expected a whole number ≥ 1")
+    if shards is None:
+        shards = max(1, sum(client.nthreads().values()))
+    if not isinstance(shards, int) or isinstance(shards, bool) or shards < 1:
+        raise ValueError(f"shards = {shards!r}: expected a whole number ≥ 1")
+    shards = min(shards, runs)
+    futures = client.map(
+        _fly_shard,
+        list(range(shards)),
+        scenario=scenario,
+        runs=runs,
+        count=shards,
+        seed=seed,
+        threads=threads_per_shard,
+        compare=compare,
+        pure=False,
+    )
+    texts = client.gather(futures)
+    columns, summary = _deckland.merge_shards_text(list(texts))
+    return Campaign(runs=table(columns), summary=summary)

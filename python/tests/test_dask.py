@@ -1,0 +1,125 @@
+"""Shards, merges and Dask: ``deckland.dask.campaign`` on a local cluster of two worker
+processes is ``deckland.campaign``, bit for bit; the CLI's ``runs.parquet`` reads as its
+``runs.csv``; the rare-event bounds match scipy's beta quantiles (an independent
+implementation: Clopper–Pearson's bound is the beta distribution's 95 % quantile)."""
+
+from __future__ import annotations
+
+import math
+import shutil
+
+import pytest
+
+import deckland
+from conftest import SCENARIOS
+
+pd = pytest.importorskip("pandas")
+distributed = pytest.importorskip("distributed")
+import deckland.dask  # noqa: E402  (after the skip: needs dask)
+
+# How the campaign was flown, not what it found: differs between front ends.
+EXECUTION = {"threads", "elapsed_s", "runs_per_s", "merged_from"}
+
+
+@pytest.fixture(scope="module")
+def client():
+    cluster = distributed.LocalCluster(
+        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
+    )
+    with distributed.Client(cluster) as dask_client:
+        yield dask_client
+    cluster.close()
+
+
+def test_a_local_cluster_gives_the_single_machine_campaign(client):
+    scenario = deckland.Scenario.from_file(SCENARIOS / "heavy-sea.toml")
+    expected = deckland.campaign(scenario, 17, seed=11, threads=2, compare=True)
+    runs, summary = deckland.dask.campaign(client, scenario, 17, seed=11, shards=3, compare=True)
+    assert len(runs) == 34
+    pd.testing.assert_frame_equal(runs, expected.runs, check_exact=True)
+    assert set(summary) == set(expected.summary)
+    for key in set(summary) - EXECUTION:
+        assert summary[key] == expected.summary[key], key
+    assert summary["merged_from"] == ["shard 0/3", "shard 1/3", "shard 2/3"]
+    assert summary["partial"] is False
+
+
+def test_the_default_shards_are_the_workers_and_the_seed_the_scenarios(client):
+    scenario = deckland.Scenario.from_file(SCENARIOS / "heavy-sea.toml")
+    result = deckland.dask.campaign(client, scenario, 5)
+    assert len(result.summary["merged_from"]) == 2
+    expected = deckland.campaign(scenario, 5, threads=1)
+    pd.testing.assert_frame_equal(result.runs, expected.runs, check_exact=True)
+
+
+def test_bad_arguments_and_foreign_shards_are_refused(client):
+    scenario = deckland.Scenario.from_file(SCENARIOS / "heavy-sea.toml")
+    for runs in (0, -3, 2.5, True):
+        with pytest.raises(ValueError, match="runs"):
+            deckland.dask.campaign(client, scenario, runs)
+    with pytest.raises(ValueError, match="shards"):
+        deckland.dask.campaign(client, scenario, 4, shards=0)
+    zero = deckland._deckland.campaign_shard(scenario, 4, 0, 2, seed=1)
+    one = deckland._deckland.campaign_shard(scenario, 4, 1, 2, seed=1)
+    other_seed = deckland._deckland.campaign_shard(scenario, 4, 1, 2, seed=2)
+    deckland._deckland.merge_shards_text([one, zero])
+    with pytest.raises(ValueError, match="missing shard 1/2"):
+        deckland._deckland.merge_shards_text([zero])
+    with pytest.raises(ValueError, match="both shard 0/2"):
+        deckland._deckland.merge_shards_text([zero, zero, one])
+    with pytest.raises(ValueError, match="`campaign_seed` is 2 there and 1"):
+        deckland._deckland.merge_shards_text([zero, other_seed])
+    with pytest.raises(ValueError, match="index"):
+        deckland._deckland.campaign_shard(scenario, 4, 2, 2)
+
+
+def test_runs_parquet_reads_as_runs_csv(cli, tmp_path):
+    pytest.importorskip("pyarrow")
+    shutil.copy(SCENARIOS / "heavy-sea.toml", tmp_path / "heavy-sea.toml")
+    out = tmp_path / "campaign"
+    cli.run(
+        ["campaign", "heavy-sea.toml", "--runs", "12", "--seed", "3", "--compare", "--json", "--out", str(out)],
+        cwd=tmp_path,
+    )
+    from_csv = pd.read_csv(out / "runs.csv")
+    from_parquet = pd.read_parquet(out / "runs.parquet")
+    assert list(from_parquet.columns) == list(from_csv.columns)
+    assert len(from_parquet) == 24
+    for name in from_csv.columns:
+        csv_column, parquet_column = from_csv[name], from_parquet[name]
+        if csv_column.isna().all():
+            # An empty CSV column reads as float NaN; Parquet keeps its type (text).
+            assert parquet_column.isna().all(), name
+            continue
+        pd.testing.assert_series_equal(parquet_column, csv_column, check_exact=True, obj=name)
+
+
+def test_rare_event_bounds_match_scipy(cli, tmp_path):
+    beta = pytest.importorskip("scipy.stats").beta
+    scenario = deckland.Scenario.from_file(SCENARIOS / "heavy-sea.toml")
+    summary = deckland.campaign(scenario, 40, seed=5, threads=2).summary
+    classes = ["boarding", "bolter", "ramp_strike", "hard_landing", "divergence", "timeout", "invalid"]
+    for statistics in summary["controllers"]:
+        n = statistics["runs"]
+        for name in classes:
+            k = statistics[name]["count"]
+            expected = 1.0 if k >= n else beta.ppf(0.95, k + 1, n - k)
+            assert statistics[name]["upper_bound_95"] == pytest.approx(expected, rel=1e-9, abs=1e-15), name
+    # With no event: 1 - 0.05^(1/n) ≈ 3/n, the rule of three.
+    assert beta.ppf(0.95, 1, 40) == pytest.approx(1 - 0.05 ** (1 / 40), rel=1e-12)
+
+    def runs_needed(events: int, target: float = 1e-4) -> int:
+        low, high = events + 1, 10**7
+        while high - low > 1:
+            middle = (low + high) // 2
+            if beta.ppf(0.95, events + 1, middle - events) < target:
+                high = middle
+            else:
+                low = middle
+        return high
+
+    needed = {n["events"]: n["runs"] for n in summary["rare_event_target"]["runs_needed"]}
+    assert summary["rare_event_target"]["rate"] == 1e-4
+    assert needed[0] == math.ceil(math.log(0.05) / math.log(1 - 1e-4))
+    for events in (1, 2, 3):
+        assert needed[events] == runs_needed(events), events
