@@ -8,7 +8,7 @@
 //! linearly.
 //!
 //! Given instead an *estimate* of the state with error covariance P (a Kalman filter's,
-//! [`crate::estimation::DeckMotionEstimator`]), the prediction is the same map of the
+//! `estimation::DeckMotionEstimator`), the prediction is the same map of the
 //! estimate and its error variance, for an output row c, is
 //! c e^{AT} P e^{AᵀT} cᵀ + q·c (P∞ − e^{AT} P∞ e^{AᵀT}) cᵀ: the estimate's own error
 //! carried forward, plus the noise still to come, where P∞ is the filter's stationary
