@@ -457,6 +457,35 @@ mod tests {
         assert!((peak - 1.0 / 1.01).abs() < 2e-3, "{peak}");
     }
 
+    /// The smooth blend w = 3s² − 2s³: at s = ¼ it is 0.15625 (by hand), and the reference's
+    /// rate has no step where the blend starts and ends (ẇ = 6s(1 − s)/T_blend is 0
+    /// there), unlike the linear blend, whose rate steps by offset/T_blend.
+    #[test]
+    fn the_smooth_blend_starts_and_ends_without_a_step_in_rate() {
+        let smooth = FlightPathGenerator::new(FlightPathParameters::default()).unwrap();
+        let linear = FlightPathGenerator::new(FlightPathParameters {
+            compensation_blend: CompensationBlend::Linear,
+            ..Default::default()
+        })
+        .unwrap();
+        // 11.5 s to go at 60 m/s: a quarter of the 2-s blend from 12 s.
+        let r = smooth.reference(-690.0, 60.0, &deck(24.0, 0.0));
+        assert!((r.compensation_weight - 0.15625).abs() < 1e-12);
+        let climb = |g: &FlightPathGenerator, time_to_go: f64| {
+            g.reference(-60.0 * time_to_go, 60.0, &deck(24.0, 0.0))
+                .climb_rate_mps
+        };
+        let glide = -60.0 * smooth.tan_slope();
+        for edge in [12.0, 10.0] {
+            for side in [-1e-6, 1e-6] {
+                assert!((climb(&smooth, edge + side) - glide).abs() < 1e-4);
+            }
+        }
+        // The linear blend's rate steps by (24 − 20)/2 = 2 m/s at its start.
+        assert!((climb(&linear, 12.0 - 1e-6) - glide - 2.0).abs() < 1e-4);
+        assert!((climb(&linear, 12.0 + 1e-6) - glide).abs() < 1e-9);
+    }
+
     #[test]
     fn invalid_slope_is_named() {
         let error = FlightPathGenerator::new(FlightPathParameters {

@@ -351,3 +351,79 @@ fn ramp_aware_anchor(
     let floor_m = forecast.ramp_height_m + parameters.ramp_clearance_margin_m - rise_to_ramp_m;
     forecast.landing_point_height_m.max(floor_m)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::control::FlightPathParameters;
+    use crate::environment::{ShipMotionParameters, ShipMotionPredictor};
+    use crate::random::RandomStreams;
+    use crate::sensors::ShipMotionSensingParameters;
+
+    fn estimator_block(frequency_radps: f64) -> EstimatorPredictor {
+        let ship = ShipMotion::new(ShipMotionParameters::default()).unwrap();
+        let sensing = ShipMotionSensingParameters::default();
+        EstimatorPredictor::new(
+            ShipMotionSensor::new(sensing, &RandomStreams::new(1)).unwrap(),
+            DeckMotionEstimator::new(&ship, &sensing),
+            ShipMotionPredictor::new(1.0),
+            frequency_radps,
+        )
+    }
+
+    /// The anchor filter's step response is the critically damped one,
+    /// a(t) = u − (u − a₀)·(1 + ωt)·e^(−ωt) from rest, whatever the step: one 0.5-s step
+    /// and 500 steps of 1 ms land on the closed form (by hand: ω = 4, t = 0.5 gives
+    /// 1 − 3·e⁻² = 0.593994 of the way to the target).
+    #[test]
+    fn the_anchor_filter_follows_the_critically_damped_step_response_at_any_step() {
+        let expected = 1.0 - 3.0 * (-2.0_f64).exp();
+        for steps in [1_u32, 500] {
+            let mut block = estimator_block(4.0);
+            block.smooth_anchor(0.0, 0.001); // starts at rest on 0
+            let dt = 0.5 / f64::from(steps);
+            let mut last = (0.0, 0.0);
+            for _ in 0..steps {
+                last = block.smooth_anchor(1.0, dt);
+            }
+            assert!((last.0 - expected).abs() < 1e-12, "{steps}: {last:?}");
+            // Rate: u·ω²·t·e^(−ωt) = 16·0.5·e⁻² = 1.082682 m/s.
+            assert!((last.1 - 8.0 * (-2.0_f64).exp()).abs() < 1e-12, "{last:?}");
+        }
+    }
+
+    fn forecast(landing_point_height_m: f64, ramp_height_m: f64) -> DeckForecast {
+        DeckForecast {
+            ramp_height_m,
+            ramp_height_sigma_m: 0.0,
+            landing_point_climb_rate_mps: 0.0,
+            landing_point_height_m,
+            pitch_rad: 0.0,
+        }
+    }
+
+    /// On a level deck the path already clears the ramp by 60·tan 3.5° = 3.6698 m > 2.5 m:
+    /// the anchor stays on the landing point. With the ramp 2 m higher than the landing
+    /// point (the ship bow down about 1.9°), the anchor rises to
+    /// ramp + 2.5 − 3.6698 = landing point + 0.8302 m.
+    #[test]
+    fn the_ramp_aware_anchor_rises_only_when_the_ramp_would_come_too_close() {
+        let deck = DeckGeometry::default();
+        let parameters = FlightPathParameters::default();
+        let generator = FlightPathGenerator::new(parameters).unwrap();
+        let rise = 60.0 * 3.5_f64.to_radians().tan();
+        let level = ramp_aware_anchor(&parameters, &generator, &deck, &forecast(20.0, 20.0));
+        assert_eq!(level, 20.0);
+        let pitched = ramp_aware_anchor(&parameters, &generator, &deck, &forecast(22.0, 24.0));
+        assert!((pitched - (24.0 + 2.5 - rise)).abs() < 1e-12, "{pitched}");
+        assert!((pitched - 22.0 - 0.8302).abs() < 1e-4, "{pitched}");
+        let unaware = FlightPathParameters {
+            ramp_aware: false,
+            ..parameters
+        };
+        assert_eq!(
+            ramp_aware_anchor(&unaware, &generator, &deck, &forecast(22.0, 24.0)),
+            22.0
+        );
+    }
+}
