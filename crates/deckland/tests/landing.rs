@@ -218,3 +218,43 @@ fn regression_sensor_sinusoid_is_added_once() {
         );
     }
 }
+
+/// The paper's hardware set flies the `oracle`, a linear blend, no ramp awareness, no
+/// wake feed-forward and no wave-off (issue 12): exactly what it flew before. The numbers
+/// are main's (bd764c3) `deckland land --hardware paper` summary.json, seed 1, and must
+/// match to the last bit.
+#[test]
+fn regression_the_paper_set_flies_bit_for_bit_what_it_flew_before_the_estimator() {
+    let summary = fly(&Scenario::paper());
+    assert_eq!(summary.outcome, Outcome::Trap);
+    assert_eq!(summary.wire, Some(4));
+    assert_eq!(summary.steps, 25449);
+    let touchdown = summary.touchdown.unwrap();
+    for (what, value, before) in [
+        ("touchdown time", touchdown.time_s, 25.448564705613098_f64),
+        (
+            "touchdown distance",
+            touchdown.distance_from_aim_m,
+            14.361130159805963,
+        ),
+        ("sink rate", touchdown.sink_rate_mps, 3.9158442029954714),
+        ("pitch", touchdown.pitch_deg, 2.584344821831796),
+        ("airspeed", touchdown.airspeed_mps, 68.71399571903268),
+        (
+            "ramp clearance",
+            summary.ramp_clearance_m.unwrap(),
+            1.0836869084372405,
+        ),
+        (
+            "glide-path error RMS",
+            summary.glide_path_error_rms_m.unwrap(),
+            0.6794647782254623,
+        ),
+    ] {
+        assert_eq!(
+            value.to_bits(),
+            before.to_bits(),
+            "{what}: {value} ≠ {before}"
+        );
+    }
+}
