@@ -234,13 +234,13 @@ pub struct DeckReference {
     pub forecast: Option<DeckForecast>,
 }
 
-/// What a model-based predictor expects the deck to do while the hook closes on it.
+/// What a model-based predictor expects the deck to do while the hook closes on it (the
+/// means: the loop does not need the error variances every step;
+/// [`crate::environment::ShipMotionPredictor::forecast`] gives them).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DeckForecast {
     /// Predicted ramp height when the hook crosses it (m).
     pub ramp_height_m: f64,
-    /// Standard deviation of that prediction's error (m).
-    pub ramp_height_sigma_m: f64,
     /// Predicted climb rate of the landing point at touchdown (m/s, up).
     pub landing_point_climb_rate_mps: f64,
     /// Predicted landing-point height at touchdown (m).

@@ -305,7 +305,6 @@ mod tests {
             mean_landing_point_height_m: 20.0,
             forecast: DeckForecast {
                 ramp_height_m: 20.0,
-                ramp_height_sigma_m: 0.1,
                 landing_point_climb_rate_mps: 0.0,
                 landing_point_height_m: 20.0,
                 pitch_rad: 0.0,

@@ -188,6 +188,30 @@ impl ShipMotionPredictor {
         }
     }
 
+    /// As [`ShipMotionPredictor::forecast`] without the error variances (left zero): the
+    /// mean alone, for the loop's every step (a third of the work).
+    #[inline]
+    pub fn forecast_mean(
+        &self,
+        ship: &ShipMotion,
+        estimate: &ShipMotionEstimate,
+        lead_s: f64,
+    ) -> ShipMotionForecast {
+        if !ship.parameters().enabled {
+            return ShipMotionForecast::default();
+        }
+        let grid = self.grid(lead_s);
+        let dot = |r: &[f64; 4], z: &[f64; 4]| (0..4).map(|j| r[j] * z[j]).sum::<f64>();
+        let (zh, zp) = (&estimate.mean.heave_filter, &estimate.mean.pitch_filter);
+        ShipMotionForecast {
+            heave_m: HEAVE_FILTER_GAIN * dot(&self.row(grid, 0), zh),
+            heave_rate_mps: HEAVE_FILTER_GAIN * dot(&self.row(grid, 1), zh),
+            pitch_rad: PITCH_FILTER_GAIN * dot(&self.row(grid, 2), zp),
+            pitch_rate_radps: PITCH_FILTER_GAIN * dot(&self.row(grid, 3), zp),
+            ..ShipMotionForecast::default()
+        }
+    }
+
     /// The prediction `lead_s` seconds after the time of `estimate`, with its error
     /// variances (module docs); zero when the ship motion of `ship` is disabled.
     pub fn forecast(
@@ -267,6 +291,37 @@ mod tests {
         }
         let now = predictor.predict(&ship, &state, 0.0);
         assert!((now.heave_m - ship.outputs(&state).heave_m).abs() < 1e-15);
+    }
+
+    #[test]
+    fn the_mean_alone_is_the_forecasts_mean() {
+        let ship = ShipMotion::new(ShipMotionParameters::default()).unwrap();
+        let estimate = ShipMotionEstimate {
+            mean: ShipMotionState {
+                heave_filter: [0.5, -0.2, 0.1, 0.05],
+                pitch_filter: [0.3, 0.1, -0.02, 0.04],
+            },
+            ..ShipMotionEstimate::default()
+        };
+        let predictor = ShipMotionPredictor::new(5.0);
+        for lead in [0.0, 0.37, 2.0, 9.0] {
+            let full = predictor.forecast(&ship, &estimate, lead);
+            let mean = predictor.forecast_mean(&ship, &estimate, lead);
+            assert_eq!(
+                (
+                    mean.heave_m,
+                    mean.heave_rate_mps,
+                    mean.pitch_rad,
+                    mean.pitch_rate_radps
+                ),
+                (
+                    full.heave_m,
+                    full.heave_rate_mps,
+                    full.pitch_rad,
+                    full.pitch_rate_radps
+                )
+            );
+        }
     }
 
     /// The physics floor of docs/model.md §3.6: with the true state known (the oracle),

@@ -321,11 +321,10 @@ fn forecast_deck(
         time_to_go_s
     };
     let at_touchdown: ShipMotionForecast =
-        predictor.forecast(ship, estimate, age_s + time_to_go_s.max(0.0));
-    let at_ramp = predictor.forecast(ship, estimate, age_s + ramp_time_s);
+        predictor.forecast_mean(ship, estimate, age_s + time_to_go_s.max(0.0));
+    let at_ramp = predictor.forecast_mean(ship, estimate, age_s + ramp_time_s);
     DeckForecast {
         ramp_height_m: deck.deck_height_m + at_ramp.deck_point_height_m(ramp_arm_m),
-        ramp_height_sigma_m: at_ramp.deck_point_height_sigma_m(ramp_arm_m),
         landing_point_climb_rate_mps: at_touchdown.deck_point_climb_rate_mps(landing_arm_m),
         landing_point_height_m: deck.deck_height_m
             + at_touchdown.deck_point_height_m(landing_arm_m),
@@ -395,7 +394,6 @@ mod tests {
     fn forecast(landing_point_height_m: f64, ramp_height_m: f64) -> DeckForecast {
         DeckForecast {
             ramp_height_m,
-            ramp_height_sigma_m: 0.0,
             landing_point_climb_rate_mps: 0.0,
             landing_point_height_m,
             pitch_rad: 0.0,
