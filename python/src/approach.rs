@@ -461,7 +461,8 @@ impl Approach {
         )?))
     }
 
-    /// The events so far (ramp crossing, touchdown, passing the last wire), as dicts.
+    /// The events so far (ramp crossing, touchdown, passing the last wire, the wave-off
+    /// decision), as dicts.
     #[getter]
     fn events<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
         events_list(py, &self.recorder.events)
