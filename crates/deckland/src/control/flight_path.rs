@@ -7,21 +7,28 @@
 //!
 //! Until the last `compensation_window_s` seconds before touchdown the anchor is the
 //! *mean* landing point (ship level, no heave). Then, with deck-motion compensation on,
-//! it moves over `compensation_blend_s` seconds to the *moving* landing point predicted
-//! `deck_motion_lead_s` seconds ahead by linear extrapolation, ĥ_L + τ·ĥ̇_L, so that the
-//! lag of the deck filter and of the aircraft behind its reference is partly made up
-//! (the lead of the AN/SPN-42 deck-motion compensation, paper §2.1). The blend avoids a
+//! it moves over `compensation_blend_s` seconds to the *predicted* landing point (for
+//! `filter_lead`, the filtered one extrapolated `deck_motion_lead_s` ahead, ĥ_L + τ·ĥ̇_L,
+//! the lead of the AN/SPN-42 deck-motion compensation, paper §2.1). The blend avoids a
 //! step in the reference. The rate fed forward is ĥ̇_L (the prediction's own
 //! acceleration term is left out).
 //!
-//! Two predictors of the landing point are offered ([`DeckMotionPredictor`]):
+//! Three predictors of the landing point are offered ([`DeckMotionPredictor`]; the
+//! blocks are in `simulation::deck_prediction`):
 //!
-//! - `model` (default): the minimum-variance prediction of the landing point's height at
-//!   the estimated touchdown time, from the ship-motion model
-//!   ([`crate::environment::ShipMotionPredictor`]); its expected rate of change is zero, so
-//!   nothing is fed forward and the lead is not used. Idealised: it assumes the deck
-//!   motion estimator knows the shaping filters' state.
+//! - `estimator` (default): the minimum-variance prediction of the landing point's height
+//!   at the estimated touchdown time from a Kalman filter's estimate of the ship-motion
+//!   state, fed by the ship's sensed motion ([`crate::estimation::DeckMotionEstimator`]);
+//!   raised, when `ramp_aware`, so that the path clears the predicted ramp by
+//!   `ramp_clearance_margin_m`, and smoothed by a critically damped filter whose rate is
+//!   fed forward. The lead is not used.
+//! - `oracle`: the same prediction from the ship model's *true* state (the paper's set;
+//!   studies only); its expected rate of change is zero, so nothing is fed forward.
 //! - `filter_lead`: the filtered landing point extrapolated by the lead, below.
+//!
+//! The blend's weight rises linearly (`linear`, the paper's set) or as 3s² − 2s³
+//! (`smooth`), which leaves no step in the reference's rate. The path may aim
+//! `touchdown_correction_m` from the aim point.
 //!
 //! For `filter_lead`, ĥ_L and ĥ̇_L are not the raw deck signals but the states of a critically damped
 //! second-order low-pass filter ([`DeckMotionFilter`]) on the landing point's height. The
