@@ -62,7 +62,7 @@ class Flight:
 
     @property
     def outcome(self) -> str:
-        """``trap``, ``bolter``, ``ramp_strike``, ``hard_landing``, ``diverged`` or ``timeout``."""
+        """``trap``, ``bolter``, ``wave_off``, ``ramp_strike``, ``hard_landing``, ``diverged`` or ``timeout``."""
         return self.summary["outcome"]
 
     @property

@@ -296,7 +296,7 @@ fn parse_action(action: Option<&Bound<'_, PyAny>>) -> PyResult<Overrides> {
 ///   the deck-motion predictor expects it (the glide path's anchor near the end);
 /// - `wind_x_mps`, `wind_z_mps`: the wind at the aircraft (earth axes, x forward, z
 ///   down);
-/// - `done`: whether the approach has ended; then `outcome` (`trap`, `bolter`,
+/// - `done`: whether the approach has ended; then `outcome` (`trap`, `bolter`, `wave_off`,
 ///   `ramp_strike`, `hard_landing`, `diverged`, `timeout`), `wire` (1–4 for a trap) and
 ///   `reason` are set (None before).
 ///
@@ -461,7 +461,8 @@ impl Approach {
         )?))
     }
 
-    /// The events so far (ramp crossing, touchdown, passing the last wire), as dicts.
+    /// The events so far (ramp crossing, touchdown, passing the last wire, the wave-off
+    /// decision), as dicts.
     #[getter]
     fn events<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyList>> {
         events_list(py, &self.recorder.events)

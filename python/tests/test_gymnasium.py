@@ -68,7 +68,7 @@ def test_the_cascade_as_an_agent_lands_and_is_rewarded_for_the_outcome():
     trajectory, rewards, info, terminated, truncated = run_episode(env, 1, follow_the_cascade(env))
     outcome = info["outcome"]
     assert terminated != truncated
-    assert outcome in {"trap", "bolter", "ramp_strike", "hard_landing", "diverged", "timeout"}
+    assert outcome in {"trap", "bolter", "wave_off", "ramp_strike", "hard_landing", "diverged", "timeout"}
     interval = env.approach.control_interval_s
     error = info["glide_path_error_m"]
     shaping = -ERROR_WEIGHT * min(error * error, 100.0) * interval

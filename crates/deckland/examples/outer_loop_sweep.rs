@@ -20,12 +20,13 @@ fn row(label: &str, results: &[RunSummary]) {
     let sd =
         (distances.iter().map(|d| (d - mean).powi(2)).sum::<f64>() / (n - 1.0).max(1.0)).sqrt();
     println!(
-        "| {label} | {:.0} % | {} | {} | {} | {} | {mean:+.1} ± {sd:.1} |",
+        "| {label} | {:.0} % | {} | {} | {} | {} | {} | {mean:+.1} ± {sd:.1} |",
         100.0 * count(Outcome::Trap) as f64 / results.len() as f64,
         count(Outcome::Bolter),
         count(Outcome::RampStrike),
         count(Outcome::HardLanding),
         count(Outcome::Diverged),
+        count(Outcome::WaveOff),
     );
 }
 
@@ -35,9 +36,13 @@ fn main() -> Result<(), SetupError> {
         .and_then(|a| a.parse().ok())
         .unwrap_or(50);
     let seeds: Vec<u64> = (1..=count).collect();
-    println!("| configuration (adverse, O-PD, seeds 1–{count}) | trap | bolter | ramp strike | hard | diverged | touchdown from aim (m) |");
-    println!("|---|---|---|---|---|---|---|");
-    for predictor in [DeckMotionPredictor::Model, DeckMotionPredictor::FilterLead] {
+    println!("| configuration (adverse, O-PD, seeds 1–{count}) | trap | bolter | ramp strike | hard | diverged | wave-off | touchdown from aim (m) |");
+    println!("|---|---|---|---|---|---|---|---|");
+    for predictor in [
+        DeckMotionPredictor::Estimator,
+        DeckMotionPredictor::Oracle,
+        DeckMotionPredictor::FilterLead,
+    ] {
         for (kps, kis) in [(0.05, 0.02), (0.035, 0.012), (0.025, 0.008)] {
             for kpz in [0.3, 0.5] {
                 let mut base = Scenario::default();

@@ -25,6 +25,14 @@ pub mod stream_names {
     pub const TURBULENCE_W: &str = "turbulence_w";
     /// White noise on the pitch-attitude measurement (paper §3.5).
     pub const PITCH_NOISE: &str = "pitch_noise";
+    /// Noise of the ship's heave measurement (docs/model.md §3.5).
+    pub const SHIP_SENSOR_HEAVE: &str = "ship_sensor_heave";
+    /// Noise of the ship's heave-rate measurement (docs/model.md §3.5).
+    pub const SHIP_SENSOR_HEAVE_RATE: &str = "ship_sensor_heave_rate";
+    /// Noise of the ship's pitch measurement (docs/model.md §3.5).
+    pub const SHIP_SENSOR_PITCH: &str = "ship_sensor_pitch";
+    /// Noise of the ship's pitch-rate measurement (docs/model.md §3.5).
+    pub const SHIP_SENSOR_PITCH_RATE: &str = "ship_sensor_pitch_rate";
 }
 
 /// The 64-bit FNV-1a hash of `bytes` (Fowler–Noll–Vo, offset basis

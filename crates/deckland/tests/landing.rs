@@ -48,8 +48,12 @@ fn ideal_approach_traps_at_the_aim_point_with_both_controllers() {
 }
 
 #[test]
-fn adverse_approach_with_the_default_seed_traps() {
-    let summary = fly(&Scenario::default());
+fn adverse_approaches_trap_or_wave_off_on_the_estimator() {
+    // Seed 3 of the default (paper's sea, realistic hardware, estimator) traps.
+    let summary = fly(&Scenario {
+        seed: 3,
+        ..Scenario::default()
+    });
     assert_eq!(summary.outcome, Outcome::Trap, "{summary:?}");
     let touchdown = summary.touchdown.unwrap();
     assert!(touchdown.sink_rate_mps < 7.6, "{touchdown:?}");
@@ -57,6 +61,15 @@ fn adverse_approach_with_the_default_seed_traps() {
         summary.glide_path_error_rms_m.unwrap() > 0.05,
         "disturbances must show"
     );
+    // In seed 1 the deck rises into a hook that dived back onto the path: the hook
+    // drifts through the path at more than 4 m/s and the aircraft waves off, clearing
+    // the ramp and climbing away over the deck.
+    let summary = fly(&Scenario::default());
+    assert_eq!(summary.outcome, Outcome::WaveOff, "{summary:?}");
+    assert!(summary.touchdown.is_none());
+    assert!(summary.ramp_clearance_m.unwrap() > 0.0, "{summary:?}");
+    let reason = summary.reason.unwrap();
+    assert!(reason.contains("glide_path_error_rate"), "{reason}");
 }
 
 #[test]
@@ -74,7 +87,11 @@ fn guidance_with_the_wrong_sign_ends_in_a_detected_failure() {
     assert!(
         matches!(
             summary.outcome,
-            Outcome::RampStrike | Outcome::Diverged | Outcome::Bolter | Outcome::HardLanding
+            Outcome::RampStrike
+                | Outcome::Diverged
+                | Outcome::Bolter
+                | Outcome::HardLanding
+                | Outcome::WaveOff
         ),
         "{summary:?}"
     );
@@ -198,6 +215,46 @@ fn regression_sensor_sinusoid_is_added_once() {
             (error - expected).abs() < 1e-12,
             "t {}: {error} vs {expected}",
             s.time_s
+        );
+    }
+}
+
+/// The paper's hardware set flies the `oracle`, a linear blend, no ramp awareness, no
+/// wake feed-forward and no wave-off (issue 12): exactly what it flew before. The numbers
+/// are main's (bd764c3) `deckland land --hardware paper` summary.json, seed 1, and must
+/// match to the last bit.
+#[test]
+fn regression_the_paper_set_flies_bit_for_bit_what_it_flew_before_the_estimator() {
+    let summary = fly(&Scenario::paper());
+    assert_eq!(summary.outcome, Outcome::Trap);
+    assert_eq!(summary.wire, Some(4));
+    assert_eq!(summary.steps, 25449);
+    let touchdown = summary.touchdown.unwrap();
+    for (what, value, before) in [
+        ("touchdown time", touchdown.time_s, 25.448564705613098_f64),
+        (
+            "touchdown distance",
+            touchdown.distance_from_aim_m,
+            14.361130159805963,
+        ),
+        ("sink rate", touchdown.sink_rate_mps, 3.9158442029954714),
+        ("pitch", touchdown.pitch_deg, 2.584344821831796),
+        ("airspeed", touchdown.airspeed_mps, 68.71399571903268),
+        (
+            "ramp clearance",
+            summary.ramp_clearance_m.unwrap(),
+            1.0836869084372405,
+        ),
+        (
+            "glide-path error RMS",
+            summary.glide_path_error_rms_m.unwrap(),
+            0.6794647782254623,
+        ),
+    ] {
+        assert_eq!(
+            value.to_bits(),
+            before.to_bits(),
+            "{what}: {value} ≠ {before}"
         );
     }
 }

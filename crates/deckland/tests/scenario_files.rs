@@ -65,7 +65,15 @@ fn every_shipped_scenario_loads_and_flies_one_approach() {
         .filter(|n| n.ends_with(".toml"))
         .collect();
     names.sort();
-    assert_eq!(names, ["calm.toml", "heavy-sea.toml", "paper-adverse.toml"]);
+    assert_eq!(
+        names,
+        [
+            "calm.toml",
+            "heavy-sea.toml",
+            "moderate-sea.toml",
+            "paper-adverse.toml"
+        ]
+    );
     for name in &names {
         let scenario = load_shipped(name);
         let summary = Simulation::new(&scenario)
@@ -73,7 +81,10 @@ fn every_shipped_scenario_loads_and_flies_one_approach() {
             .run(&mut SummaryRecorder);
         assert!(
             summary.touchdown.is_some()
-                || matches!(summary.outcome, Outcome::Bolter | Outcome::RampStrike),
+                || matches!(
+                    summary.outcome,
+                    Outcome::Bolter | Outcome::RampStrike | Outcome::WaveOff
+                ),
             "{name}: {summary:?}"
         );
     }
@@ -82,6 +93,18 @@ fn every_shipped_scenario_loads_and_flies_one_approach() {
     let heavy = load_shipped("heavy-sea.toml");
     assert_eq!(heavy.environment.ship.heave_rms_m, 3.0);
     assert!(!heavy.dispersion.is_none());
+    let moderate = load_shipped("moderate-sea.toml");
+    assert_eq!(
+        (
+            moderate.environment.ship.heave_rms_m,
+            moderate.environment.ship.pitch_rms_deg
+        ),
+        (1.0, 0.75)
+    );
+    assert_eq!(
+        moderate.control.flight_path.deck_motion_predictor,
+        deckland::control::DeckMotionPredictor::Estimator
+    );
 }
 
 /// One bad input: its text, and the line, field and words of the allowed range or

@@ -9,8 +9,13 @@ use deckland::simulation::{
     EndReason, Event, NoTaps, Outcome, Overrides, Signals, Simulation, Stop,
 };
 
+/// The default scenario with seed 3, which traps (seed 1 waves off:
+/// `a_wave_off_is_an_event_then_the_end`).
 fn default_approach() -> Scenario {
-    Scenario::default()
+    Scenario {
+        seed: 3,
+        ..Scenario::default()
+    }
 }
 
 #[test]
@@ -38,7 +43,7 @@ fn stepping_to_the_end_equals_running_and_reports_events_in_order() {
     // The recorder saw the same events, and the run asks no more of step().
     assert_eq!(recorder.events, events);
     assert_eq!(simulation.step(&mut recorder), Stop::Ended(end.clone()));
-    // The default approach (seed 1) crosses the ramp, then traps.
+    // The default approach with seed 3 crosses the ramp, then traps.
     assert_eq!(summary.outcome, Outcome::Trap);
     assert!(
         matches!(events[0], Event::RampCrossing { .. }),
@@ -170,5 +175,44 @@ fn regression_a_pitch_command_reaches_the_flight_computer() {
         "θ {:.2}° against the command {:.2}°",
         theta_rad.to_degrees(),
         command.to_degrees()
+    );
+}
+
+#[test]
+fn a_wave_off_is_an_event_then_the_end() {
+    // The default scenario, seed 1, on the estimator: the wave-off decision is an event,
+    // the hook then crosses the ramp and passes the last wire in the air, which ends the
+    // run as a wave-off with the decision's reason.
+    let mut simulation = Simulation::new(&Scenario::default()).expect("valid");
+    let mut events = Vec::new();
+    let end = loop {
+        match simulation.step(&mut SummaryRecorder) {
+            Stop::Running => {}
+            Stop::Event(event) => events.push(event),
+            Stop::Ended(reason) => break reason,
+        }
+    };
+    assert!(matches!(events[0], Event::WaveOff { .. }), "{events:?}");
+    assert!(
+        matches!(events[1], Event::RampCrossing { clearance_m, .. } if clearance_m > 0.0),
+        "{events:?}"
+    );
+    assert!(
+        matches!(events[2], Event::PassedLastWire { .. }),
+        "{events:?}"
+    );
+    let Event::WaveOff { time_s, decision } = events[0] else {
+        unreachable!()
+    };
+    assert_eq!(
+        end,
+        EndReason::WaveOff {
+            decided_at_s: time_s,
+            decision
+        }
+    );
+    assert_eq!(
+        simulation.system().wave_off_decision(),
+        Some((time_s, decision))
     );
 }

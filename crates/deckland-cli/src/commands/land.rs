@@ -55,8 +55,8 @@ pub struct LandingReport<'a> {
     pub conditions: &'a str,
     /// Seed of the random streams.
     pub seed: u64,
-    /// The run's summary: outcome (`trap`, `bolter`, `ramp_strike`, `hard_landing`,
-    /// `diverged`, `timeout`), wire, touchdown, ramp clearance, glide-path error. Its
+    /// The run's summary: outcome (`trap`, `bolter`, `wave_off`, `ramp_strike`,
+    /// `hard_landing`, `diverged`, `timeout`), wire, touchdown, ramp clearance, glide-path error. Its
     /// keys are the document's own (flattened), so none may repeat a key above.
     #[serde(flatten)]
     pub summary: &'a RunSummary,

@@ -7,21 +7,28 @@
 //!
 //! Until the last `compensation_window_s` seconds before touchdown the anchor is the
 //! *mean* landing point (ship level, no heave). Then, with deck-motion compensation on,
-//! it moves over `compensation_blend_s` seconds to the *moving* landing point predicted
-//! `deck_motion_lead_s` seconds ahead by linear extrapolation, ĥ_L + τ·ĥ̇_L, so that the
-//! lag of the deck filter and of the aircraft behind its reference is partly made up
-//! (the lead of the AN/SPN-42 deck-motion compensation, paper §2.1). The blend avoids a
+//! it moves over `compensation_blend_s` seconds to the *predicted* landing point (for
+//! `filter_lead`, the filtered one extrapolated `deck_motion_lead_s` ahead, ĥ_L + τ·ĥ̇_L,
+//! the lead of the AN/SPN-42 deck-motion compensation, paper §2.1). The blend avoids a
 //! step in the reference. The rate fed forward is ĥ̇_L (the prediction's own
 //! acceleration term is left out).
 //!
-//! Two predictors of the landing point are offered ([`DeckMotionPredictor`]):
+//! Three predictors of the landing point are offered ([`DeckMotionPredictor`]; the
+//! blocks are in `simulation::deck_prediction`):
 //!
-//! - `model` (default): the minimum-variance prediction of the landing point's height at
-//!   the estimated touchdown time, from the ship-motion model
-//!   ([`crate::environment::ShipMotionPredictor`]); its expected rate of change is zero, so
-//!   nothing is fed forward and the lead is not used. Idealised: it assumes the deck
-//!   motion estimator knows the shaping filters' state.
+//! - `estimator` (default): the minimum-variance prediction of the landing point's height
+//!   at the estimated touchdown time from a Kalman filter's estimate of the ship-motion
+//!   state, fed by the ship's sensed motion ([`crate::estimation::DeckMotionEstimator`]);
+//!   raised, when `ramp_aware`, so that the path clears the predicted ramp by
+//!   `ramp_clearance_margin_m`, and smoothed by a critically damped filter whose rate is
+//!   fed forward. The lead is not used.
+//! - `oracle`: the same prediction from the ship model's *true* state (the paper's set;
+//!   studies only); its expected rate of change is zero, so nothing is fed forward.
 //! - `filter_lead`: the filtered landing point extrapolated by the lead, below.
+//!
+//! The blend's weight rises linearly (`linear`, the paper's set) or as 3s² − 2s³
+//! (`smooth`), which leaves no step in the reference's rate. The path may aim
+//! `touchdown_correction_m` from the aim point.
 //!
 //! For `filter_lead`, ĥ_L and ĥ̇_L are not the raw deck signals but the states of a critically damped
 //! second-order low-pass filter ([`DeckMotionFilter`]) on the landing point's height. The
@@ -33,15 +40,43 @@ use crate::environment::{EarthPoint, EarthVelocity};
 use crate::parameters::{Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
 
-/// How the landing point is predicted for deck-motion compensation.
+/// How the landing point is predicted for deck-motion compensation (docs/model.md §5.7).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum DeckMotionPredictor {
-    /// Minimum-variance prediction at the touchdown time from the ship-motion model.
+    /// Minimum-variance prediction at the touchdown time from a Kalman filter's estimate
+    /// of the ship-motion state, fed by the sensed ship motion (docs/model.md §3.5): what
+    /// an aircraft can fly with. The default.
     #[default]
-    Model,
+    Estimator,
+    /// Minimum-variance prediction at the touchdown time from the ship model's *true*
+    /// state: an upper bound for studies, which no aircraft can fly with. `model` is its
+    /// former name, still read.
+    #[serde(alias = "model")]
+    Oracle,
     /// Low-pass filtered landing point plus a linear lead of `deck_motion_lead_s`.
     FilterLead,
+}
+
+impl DeckMotionPredictor {
+    /// Whether this predictor forecasts the deck from the ship-motion model (and so gives
+    /// the ramp and the deck's rate at a future time, with their error σ).
+    pub fn forecasts(self) -> bool {
+        matches!(self, Self::Estimator | Self::Oracle)
+    }
+}
+
+/// How the compensation weight w rises from 0 to 1 over the blend (docs/model.md §5.7).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CompensationBlend {
+    /// w = 3s² − 2s³ of the blend's progress s: no step in the reference's rate either
+    /// where the blend starts or where it ends. The default.
+    #[default]
+    Smooth,
+    /// w = s, as the paper's hardware set flies: the reference's rate steps by
+    /// offset/T_blend where the blend starts and ends.
+    Linear,
 }
 
 /// Parameters of the glide path and of deck-motion compensation.
@@ -62,6 +97,30 @@ pub struct FlightPathParameters {
     pub deck_motion_lead_s: f64,
     /// Natural frequency of the critically damped deck-motion filter (rad/s); 1.0.
     pub deck_filter_frequency_radps: f64,
+    /// Shape of the blend-in of compensation; `smooth` (realistic), `linear` (paper).
+    pub compensation_blend: CompensationBlend,
+    /// Natural frequency (rad/s) of the critically damped filter through which the
+    /// `estimator`'s predicted anchor passes, so that each 50-Hz update of the estimate
+    /// moves the glide path smoothly; 4 rad/s (a project choice, docs/model.md §5.7).
+    pub anchor_filter_frequency_radps: f64,
+    /// Keep the path above the ramp: the anchor is raised so that the path crosses the
+    /// predicted ramp at least `ramp_clearance_margin_m` above it (docs/model.md §5.7);
+    /// on in the realistic set, off in the paper's.
+    pub ramp_aware: bool,
+    /// Hook-over-ramp clearance the path keeps above the predicted ramp (m); 2.5 m (the
+    /// landing signal officer's minimum is 10 ft, 3.05 m: on this deck, with 3.7 m of
+    /// nominal clearance, keeping it lifts the path so often that a moderate sea boards
+    /// 86 % instead of 95 %; docs/model.md §5.7).
+    pub ramp_clearance_margin_m: f64,
+    /// Touchdown-point correction (m along the deck, positive forward): the path aims
+    /// this far from the aim point, to cancel the air wake's systematic push of the
+    /// touchdown forward (docs/model.md §5.7); measured in calm water. 0 in the paper's
+    /// set.
+    pub touchdown_correction_m: f64,
+    /// Feed the steady air wake's vertical wind forward into the pitch command,
+    /// Δθ = W_z/V (docs/model.md §5.7), from the MIL-F-8785C steady-wake model at the
+    /// aircraft's distance aft of the ship; on in the realistic set, off in the paper's.
+    pub wake_feedforward: bool,
 }
 
 impl Default for FlightPathParameters {
@@ -69,18 +128,39 @@ impl Default for FlightPathParameters {
         Self {
             glide_slope_deg: 3.5,
             deck_motion_compensation: true,
-            deck_motion_predictor: DeckMotionPredictor::Model,
+            deck_motion_predictor: DeckMotionPredictor::Estimator,
             compensation_window_s: 12.0,
             compensation_blend_s: 2.0,
             deck_motion_lead_s: 1.0,
             deck_filter_frequency_radps: 1.0,
+            compensation_blend: CompensationBlend::Smooth,
+            anchor_filter_frequency_radps: 4.0,
+            ramp_aware: true,
+            ramp_clearance_margin_m: 2.5,
+            touchdown_correction_m: 0.0,
+            wake_feedforward: true,
         }
     }
 }
 
 impl FlightPathParameters {
+    /// The paper's glide path: the `oracle` predictor, a linear blend, no ramp awareness
+    /// and no touchdown correction (what the paper's hardware set flies, docs/model.md
+    /// §2.6).
+    pub fn paper() -> Self {
+        Self {
+            deck_motion_predictor: DeckMotionPredictor::Oracle,
+            compensation_blend: CompensationBlend::Linear,
+            ramp_aware: false,
+            touchdown_correction_m: 0.0,
+            wake_feedforward: false,
+            ..Self::default()
+        }
+    }
+
     /// Checks the glide slope is in (0°, 10°], the compensation window in [0, 60] s, the
-    /// blend in (0, 30] s, the lead in [0, 10] s and the filter in (0, 100] rad/s.
+    /// blend in (0, 30] s, the lead in [0, 10] s, the filters in (0, 100] rad/s, the ramp
+    /// margin in [0, 20] m and the touchdown correction in [−50, 50] m.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "control.flight_path";
         Bounds::positive_up_to(10.0).check(SECTION, "glide_slope_deg", self.glide_slope_deg)?;
@@ -99,6 +179,21 @@ impl FlightPathParameters {
             SECTION,
             "deck_filter_frequency_radps",
             self.deck_filter_frequency_radps,
+        )?;
+        Bounds::positive_up_to(100.0).check(
+            SECTION,
+            "anchor_filter_frequency_radps",
+            self.anchor_filter_frequency_radps,
+        )?;
+        Bounds::closed(0.0, 20.0).check(
+            SECTION,
+            "ramp_clearance_margin_m",
+            self.ramp_clearance_margin_m,
+        )?;
+        Bounds::closed(-50.0, 50.0).check(
+            SECTION,
+            "touchdown_correction_m",
+            self.touchdown_correction_m,
         )
     }
 }
@@ -140,6 +235,25 @@ pub struct DeckReference {
     pub aim: EarthPoint,
     /// Its velocity (filtered estimate).
     pub aim_velocity: EarthVelocity,
+    /// The deck forecast at the hook's ramp crossing and touchdown, from predictors that
+    /// forecast the ship's motion ([`DeckMotionPredictor::forecasts`]); for the wave-off
+    /// decision.
+    pub forecast: Option<DeckForecast>,
+}
+
+/// What a model-based predictor expects the deck to do while the hook closes on it (the
+/// means: the loop does not need the error variances every step;
+/// [`crate::environment::ShipMotionPredictor::forecast`] gives them).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DeckForecast {
+    /// Predicted ramp height when the hook crosses it (m).
+    pub ramp_height_m: f64,
+    /// Predicted climb rate of the landing point at touchdown (m/s, up).
+    pub landing_point_climb_rate_mps: f64,
+    /// Predicted landing-point height at touchdown (m).
+    pub landing_point_height_m: f64,
+    /// Predicted ship pitch at touchdown (rad, bow up).
+    pub pitch_rad: f64,
 }
 
 /// The generator's output for the hook.
@@ -211,11 +325,13 @@ impl FlightPathGenerator {
         deck: &DeckReference,
     ) -> PathReference {
         let p = &self.parameters;
-        let range = deck.mean_aim.x_m - hook_x_m;
+        // The path aims `touchdown_correction_m` from the mean aim point (0 adds nothing).
+        let aim_x_m = deck.mean_aim.x_m + p.touchdown_correction_m;
+        let range = aim_x_m - hook_x_m;
         let time_to_go_s = self.time_to_go_s(
             hook_x_m,
             hook_x_rate_mps,
-            deck.mean_aim.x_m,
+            aim_x_m,
             deck.mean_aim_velocity.x_mps,
         );
         let (weight, weight_rate) = if p.deck_motion_compensation {
@@ -226,13 +342,19 @@ impl FlightPathGenerator {
                 (1.0, 0.0)
             } else {
                 // d(time to go)/dt = −1 at constant closure.
-                (w, 1.0 / p.compensation_blend_s)
+                match p.compensation_blend {
+                    CompensationBlend::Linear => (w, 1.0 / p.compensation_blend_s),
+                    CompensationBlend::Smooth => (
+                        w * w * (3.0 - 2.0 * w),
+                        6.0 * w * (1.0 - w) / p.compensation_blend_s,
+                    ),
+                }
             }
         } else {
             (0.0, 0.0)
         };
         let lead_s = match p.deck_motion_predictor {
-            DeckMotionPredictor::Model => 0.0,
+            DeckMotionPredictor::Estimator | DeckMotionPredictor::Oracle => 0.0,
             DeckMotionPredictor::FilterLead => p.deck_motion_lead_s,
         };
         let predicted = deck.aim.h_m + lead_s * deck.aim_velocity.h_mps;
@@ -252,102 +374,5 @@ impl FlightPathGenerator {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn deck(aim_h: f64, aim_h_rate: f64) -> DeckReference {
-        DeckReference {
-            mean_aim: EarthPoint {
-                x_m: 0.0,
-                h_m: 20.0,
-            },
-            mean_aim_velocity: EarthVelocity {
-                x_mps: 0.0,
-                h_mps: 0.0,
-            },
-            aim: EarthPoint {
-                x_m: 0.0,
-                h_m: aim_h,
-            },
-            aim_velocity: EarthVelocity {
-                x_mps: 0.0,
-                h_mps: aim_h_rate,
-            },
-        }
-    }
-
-    #[test]
-    fn far_out_the_path_is_anchored_on_the_mean_deck() {
-        let generator = FlightPathGenerator::new(FlightPathParameters::default()).unwrap();
-        let r = generator.reference(-1000.0, 60.0, &deck(23.0, 1.0));
-        // By hand: 20 + 1000·tan 3.5° = 81.16 m; climb −60·tan 3.5° = −3.670 m/s.
-        assert!((r.height_m - (20.0 + 1000.0 * 3.5f64.to_radians().tan())).abs() < 1e-9);
-        assert!((r.climb_rate_mps + 60.0 * 3.5f64.to_radians().tan()).abs() < 1e-12);
-        assert_eq!(r.compensation_weight, 0.0);
-        assert!((r.time_to_go_s - 1000.0 / 60.0).abs() < 1e-12);
-    }
-
-    #[test]
-    fn close_in_the_path_follows_the_predicted_moving_deck() {
-        let generator = FlightPathGenerator::new(FlightPathParameters {
-            deck_motion_predictor: DeckMotionPredictor::FilterLead,
-            ..Default::default()
-        })
-        .unwrap();
-        // 5 s to go: fully compensated. Anchor = 23 + 1.0 s · 1 m/s = 24 m.
-        let r = generator.reference(-300.0, 60.0, &deck(23.0, 1.0));
-        assert_eq!(r.compensation_weight, 1.0);
-        assert!((r.height_m - (24.0 + 300.0 * generator.tan_slope())).abs() < 1e-9);
-        assert!((r.climb_rate_mps - (1.0 - 60.0 * generator.tan_slope())).abs() < 1e-12);
-    }
-
-    #[test]
-    fn blend_is_continuous_and_compensation_can_be_switched_off() {
-        let generator = FlightPathGenerator::new(FlightPathParameters::default()).unwrap();
-        // 11 s to go: half way through the 2 s blend.
-        let r = generator.reference(-660.0, 60.0, &deck(24.0, 0.0));
-        assert!((r.compensation_weight - 0.5).abs() < 1e-12);
-        assert!((r.height_m - (22.0 + 660.0 * generator.tan_slope())).abs() < 1e-9);
-        let off = FlightPathGenerator::new(FlightPathParameters {
-            deck_motion_compensation: false,
-            ..Default::default()
-        })
-        .unwrap();
-        let r = off.reference(-100.0, 60.0, &deck(24.0, 1.0));
-        assert_eq!(r.compensation_weight, 0.0);
-        assert!((r.height_m - (20.0 + 100.0 * generator.tan_slope())).abs() < 1e-9);
-    }
-
-    #[test]
-    fn deck_filter_passes_slow_motion_and_settles_on_a_constant() {
-        use crate::integration::{rk4_step, OdeSystem};
-        struct Alone(DeckMotionFilter, f64);
-        impl OdeSystem<2> for Alone {
-            fn derivative(&self, t: f64, x: &[f64; 2]) -> [f64; 2] {
-                self.0.derivative(*x, (self.1 * t).sin())
-            }
-        }
-        // Input sin(0.1 t): a critically damped filter at 1 rad/s has gain
-        // 1/(1 + 0.1²) = 0.990 there (|1/(1 + s)²| at s = 0.1i).
-        let system = Alone(DeckMotionFilter::new(1.0), 0.1);
-        let mut x = [0.0, 0.1];
-        let mut peak: f64 = 0.0;
-        for k in 0..200_000 {
-            x = rk4_step(&system, k as f64 * 1e-3, &x, 1e-3);
-            if k > 100_000 {
-                peak = peak.max(x[0].abs());
-            }
-        }
-        assert!((peak - 1.0 / 1.01).abs() < 2e-3, "{peak}");
-    }
-
-    #[test]
-    fn invalid_slope_is_named() {
-        let error = FlightPathGenerator::new(FlightPathParameters {
-            glide_slope_deg: -3.0,
-            ..Default::default()
-        })
-        .unwrap_err();
-        assert!(error.to_string().contains("glide_slope_deg"));
-    }
-}
+#[path = "flight_path_tests.rs"]
+mod tests;

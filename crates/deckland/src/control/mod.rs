@@ -10,13 +10,15 @@ mod loop_controller;
 pub mod pitch;
 mod sink_rate;
 mod speed;
+mod wave_off;
 
 pub use command_ramp::CommandRamp;
 pub use flight_path::{
-    DeckMotionFilter, DeckMotionPredictor, DeckReference, FlightPathGenerator,
-    FlightPathParameters, PathReference,
+    CompensationBlend, DeckForecast, DeckMotionFilter, DeckMotionPredictor, DeckReference,
+    FlightPathGenerator, FlightPathParameters, PathReference,
 };
 pub use guidance::GuidanceParameters;
 pub use loop_controller::{LoopController, LoopGains};
 pub use sink_rate::SinkRateControllerParameters;
 pub use speed::{SpeedController, SpeedControllerParameters};
+pub use wave_off::{WaveOffCriterion, WaveOffDecision, WaveOffInputs, WaveOffParameters};

@@ -21,7 +21,9 @@ pub use ship::{
     ShipMotion, ShipMotionOutputs, ShipMotionParameters, ShipMotionState, ShipNoise,
     HEAVE_FILTER_GAIN, PITCH_FILTER_GAIN, SHAPING_FILTER_DENOMINATOR,
 };
-pub use ship_prediction::{PredictedShipMotion, ShipMotionPredictor};
+pub use ship_prediction::{
+    Matrix4Array, PredictedShipMotion, ShipMotionEstimate, ShipMotionForecast, ShipMotionPredictor,
+};
 pub use ship_simulator::ShipMotionSimulator;
 pub use turbulence::Turbulence;
 pub use wind::{

@@ -1,26 +1,39 @@
-//! Minimum-variance prediction of the ship's heave and pitch (docs/model.md §3.1 filters).
+//! Minimum-variance prediction of the ship's heave and pitch (docs/model.md §3.1 filters,
+//! §3.5).
 //!
-//! Each shaping filter is ż = A z + B n with white noise n. Given the state now, the
-//! expected state T seconds ahead is e^{AT} z (the noise to come has zero mean), so the
-//! predicted heave is 1.21·e₁ᵀe^{AT}z and the predicted pitch 0.773·e₃ᵀe^{AT}z. The rows
-//! e₁ᵀe^{AT} and e₃ᵀe^{AT} are tabulated once on a fine grid of T and interpolated
-//! linearly. The prediction is the best possible given the filter state; a real deck
-//! motion estimator would have to estimate that state from measurements, so this is the
-//! idealised (upper-bound) predictor.
+//! Each shaping filter is ż = A z + B n with white noise n of intensity q. Given the state
+//! now, the expected state T seconds ahead is e^{AT} z (the noise to come has zero mean),
+//! so the predicted heave is 1.21·e₁ᵀe^{AT}z and the predicted pitch 0.773·e₃ᵀe^{AT}z.
+//! The transitions e^{AT} are tabulated once on a fine grid of T and interpolated
+//! linearly.
+//!
+//! Given instead an *estimate* of the state with error covariance P (a Kalman filter's,
+//! `estimation::DeckMotionEstimator`), the prediction is the same map of the
+//! estimate and its error variance, for an output row c, is
+//! c e^{AT} P e^{AᵀT} cᵀ + q·c (P∞ − e^{AT} P∞ e^{AᵀT}) cᵀ: the estimate's own error
+//! carried forward, plus the noise still to come, where P∞ is the filter's stationary
+//! covariance for unit intensity (A P∞ + P∞ Aᵀ + B Bᵀ = 0 gives
+//! ∫₀ᵀ e^{As}BBᵀe^{Aᵀs} ds = P∞ − e^{AT} P∞ e^{AᵀT} exactly). With P = 0 (the true
+//! state known: the `oracle`) only the second term is left: the physics floor of
+//! prediction, docs/model.md §3.6.
 
 use super::ship::{
-    ShipMotion, ShipMotionState, HEAVE_FILTER_GAIN, PITCH_FILTER_GAIN, SHAPING_FILTER_DENOMINATOR,
+    unit_intensity_state_covariance, ShipMotion, ShipMotionState, HEAVE_FILTER_GAIN,
+    PITCH_FILTER_GAIN, SHAPING_FILTER_DENOMINATOR,
 };
 use nalgebra::Matrix4;
 
-/// Grid spacing of the tabulated rows (s).
+/// Grid spacing of the tabulated transitions (s).
 const GRID_S: f64 = 0.02;
 
-/// Tabulated prediction rows of the ship's shaping filters.
+/// A 4 × 4 matrix as nested arrays (row major).
+pub type Matrix4Array = [[f64; 4]; 4];
+
+/// Tabulated transitions e^{AT} of the ship's shaping filters.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ShipMotionPredictor {
-    heave_rows: Vec<[f64; 4]>,
-    pitch_rows: Vec<[f64; 4]>,
+    transitions: Vec<Matrix4Array>,
+    stationary: Matrix4Array,
 }
 
 /// Predicted heave (m) and pitch (rad).
@@ -32,9 +45,73 @@ pub struct PredictedShipMotion {
     pub pitch_rad: f64,
 }
 
+/// An estimate of both shaping filters' state with its error covariances (filter units).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ShipMotionEstimate {
+    /// The estimated state.
+    pub mean: ShipMotionState,
+    /// Error covariance of the heave filter's state.
+    pub heave_covariance: Matrix4Array,
+    /// Error covariance of the pitch filter's state.
+    pub pitch_covariance: Matrix4Array,
+}
+
+/// The predicted ship motion at one horizon, with the variances of its prediction error.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ShipMotionForecast {
+    /// Heave (m, up).
+    pub heave_m: f64,
+    /// Heave rate (m/s, up).
+    pub heave_rate_mps: f64,
+    /// Pitch (rad, bow up).
+    pub pitch_rad: f64,
+    /// Pitch rate (rad/s).
+    pub pitch_rate_radps: f64,
+    /// Variance of the heave prediction's error (m²).
+    pub heave_variance_m2: f64,
+    /// Variance of the pitch prediction's error (rad²).
+    pub pitch_variance_rad2: f64,
+}
+
+impl ShipMotionForecast {
+    /// Predicted height change of a deck point `lever_arm_m` aft of the pitch centre
+    /// (m, up): heave − r·sin θ (docs/model.md §3.1, Eq. 17–18 without the deck height).
+    pub fn deck_point_height_m(&self, lever_arm_m: f64) -> f64 {
+        self.heave_m - lever_arm_m * self.pitch_rad.sin()
+    }
+
+    /// Predicted vertical velocity of that deck point (m/s, up): ż − r·cos θ·θ̇.
+    pub fn deck_point_climb_rate_mps(&self, lever_arm_m: f64) -> f64 {
+        self.heave_rate_mps - lever_arm_m * self.pitch_rad.cos() * self.pitch_rate_radps
+    }
+
+    /// Standard deviation of that deck point's height prediction (m), linearised in the
+    /// pitch error (heave and pitch are independent): √(σ²_z + (r cos θ)² σ²_θ).
+    pub fn deck_point_height_sigma_m(&self, lever_arm_m: f64) -> f64 {
+        let arm = lever_arm_m * self.pitch_rad.cos();
+        (self.heave_variance_m2 + arm * arm * self.pitch_variance_rad2)
+            .max(0.0)
+            .sqrt()
+    }
+}
+
+/// r·P·rᵀ for a row r and a symmetric P.
+#[inline]
+fn quadratic_form(row: &[f64; 4], p: &Matrix4Array) -> f64 {
+    let mut sum = 0.0;
+    for i in 0..4 {
+        let mut inner = 0.0;
+        for j in 0..4 {
+            inner += p[i][j] * row[j];
+        }
+        sum += row[i] * inner;
+    }
+    sum
+}
+
 impl ShipMotionPredictor {
-    /// Tabulates the rows for horizons from 0 to `max_horizon_s` (s); longer horizons are
-    /// clamped to it.
+    /// Tabulates the transitions for horizons from 0 to `max_horizon_s` (s); longer
+    /// horizons are clamped to it.
     pub fn new(max_horizon_s: f64) -> Self {
         let [d0, d1, d2, d3] = SHAPING_FILTER_DENOMINATOR;
         #[rustfmt::skip]
@@ -47,17 +124,40 @@ impl ShipMotionPredictor {
         let step = (a * GRID_S).exp();
         let count = (max_horizon_s.max(0.0) / GRID_S).ceil() as usize + 2;
         let mut transition = Matrix4::identity();
-        let mut heave_rows = Vec::with_capacity(count);
-        let mut pitch_rows = Vec::with_capacity(count);
+        let mut transitions = Vec::with_capacity(count);
         for _ in 0..count {
-            heave_rows.push(std::array::from_fn(|j| transition[(0, j)]));
-            pitch_rows.push(std::array::from_fn(|j| transition[(2, j)]));
+            transitions.push(std::array::from_fn(|i| {
+                std::array::from_fn(|j| transition[(i, j)])
+            }));
             transition *= step;
         }
         Self {
-            heave_rows,
-            pitch_rows,
+            transitions,
+            stationary: unit_intensity_state_covariance(),
         }
+    }
+
+    /// The longest horizon tabulated (s).
+    pub fn max_horizon_s(&self) -> f64 {
+        (self.transitions.len() - 2) as f64 * GRID_S
+    }
+
+    /// The grid index and the fraction towards the next point of `horizon_s`.
+    #[inline]
+    fn grid(&self, horizon_s: f64) -> (usize, f64) {
+        let position = (horizon_s.max(0.0) / GRID_S).min((self.transitions.len() - 2) as f64);
+        let index = position as usize;
+        (index, position - index as f64)
+    }
+
+    /// Row `row` of e^{AT}, interpolated at the grid position.
+    #[inline]
+    fn row(&self, (index, fraction): (usize, f64), row: usize) -> [f64; 4] {
+        let (r0, r1) = (
+            &self.transitions[index][row],
+            &self.transitions[index + 1][row],
+        );
+        std::array::from_fn(|j| r0[j] + fraction * (r1[j] - r0[j]))
     }
 
     /// The expected heave and pitch `horizon_s` seconds after `state` (zero when the ship
@@ -72,18 +172,75 @@ impl ShipMotionPredictor {
         if !ship.parameters().enabled {
             return PredictedShipMotion::default();
         }
-        let position = (horizon_s.max(0.0) / GRID_S).min((self.heave_rows.len() - 2) as f64);
-        let index = position as usize;
-        let fraction = position - index as f64;
-        let row = |rows: &[[f64; 4]], z: &[f64; 4]| {
-            let (r0, r1) = (&rows[index], &rows[index + 1]);
+        let (index, fraction) = self.grid(horizon_s);
+        let row = |row: usize, z: &[f64; 4]| {
+            let (r0, r1) = (
+                &self.transitions[index][row],
+                &self.transitions[index + 1][row],
+            );
             (0..4)
                 .map(|j| (r0[j] + fraction * (r1[j] - r0[j])) * z[j])
                 .sum::<f64>()
         };
         PredictedShipMotion {
-            heave_m: HEAVE_FILTER_GAIN * row(&self.heave_rows, &state.heave_filter),
-            pitch_rad: PITCH_FILTER_GAIN * row(&self.pitch_rows, &state.pitch_filter),
+            heave_m: HEAVE_FILTER_GAIN * row(0, &state.heave_filter),
+            pitch_rad: PITCH_FILTER_GAIN * row(2, &state.pitch_filter),
+        }
+    }
+
+    /// As [`ShipMotionPredictor::forecast`] without the error variances (left zero): the
+    /// mean alone, for the loop's every step (a third of the work).
+    #[inline]
+    pub fn forecast_mean(
+        &self,
+        ship: &ShipMotion,
+        estimate: &ShipMotionEstimate,
+        lead_s: f64,
+    ) -> ShipMotionForecast {
+        if !ship.parameters().enabled {
+            return ShipMotionForecast::default();
+        }
+        let grid = self.grid(lead_s);
+        let dot = |r: &[f64; 4], z: &[f64; 4]| (0..4).map(|j| r[j] * z[j]).sum::<f64>();
+        let (zh, zp) = (&estimate.mean.heave_filter, &estimate.mean.pitch_filter);
+        ShipMotionForecast {
+            heave_m: HEAVE_FILTER_GAIN * dot(&self.row(grid, 0), zh),
+            heave_rate_mps: HEAVE_FILTER_GAIN * dot(&self.row(grid, 1), zh),
+            pitch_rad: PITCH_FILTER_GAIN * dot(&self.row(grid, 2), zp),
+            pitch_rate_radps: PITCH_FILTER_GAIN * dot(&self.row(grid, 3), zp),
+            ..ShipMotionForecast::default()
+        }
+    }
+
+    /// The prediction `lead_s` seconds after the time of `estimate`, with its error
+    /// variances (module docs); zero when the ship motion of `ship` is disabled.
+    pub fn forecast(
+        &self,
+        ship: &ShipMotion,
+        estimate: &ShipMotionEstimate,
+        lead_s: f64,
+    ) -> ShipMotionForecast {
+        if !ship.parameters().enabled {
+            return ShipMotionForecast::default();
+        }
+        let grid = self.grid(lead_s);
+        let dot = |r: &[f64; 4], z: &[f64; 4]| (0..4).map(|j| r[j] * z[j]).sum::<f64>();
+        let rows: [[f64; 4]; 4] = std::array::from_fn(|i| self.row(grid, i));
+        let (zh, zp) = (&estimate.mean.heave_filter, &estimate.mean.pitch_filter);
+        let unpredictable = |row: &[f64; 4], i: usize| {
+            (self.stationary[i][i] - quadratic_form(row, &self.stationary)).max(0.0)
+        };
+        ShipMotionForecast {
+            heave_m: HEAVE_FILTER_GAIN * dot(&rows[0], zh),
+            heave_rate_mps: HEAVE_FILTER_GAIN * dot(&rows[1], zh),
+            pitch_rad: PITCH_FILTER_GAIN * dot(&rows[2], zp),
+            pitch_rate_radps: PITCH_FILTER_GAIN * dot(&rows[3], zp),
+            heave_variance_m2: HEAVE_FILTER_GAIN.powi(2)
+                * (quadratic_form(&rows[0], &estimate.heave_covariance)
+                    + ship.heave_noise_intensity() * unpredictable(&rows[0], 0)),
+            pitch_variance_rad2: PITCH_FILTER_GAIN.powi(2)
+                * (quadratic_form(&rows[2], &estimate.pitch_covariance)
+                    + ship.pitch_noise_intensity() * unpredictable(&rows[2], 2)),
         }
     }
 }
@@ -134,5 +291,59 @@ mod tests {
         }
         let now = predictor.predict(&ship, &state, 0.0);
         assert!((now.heave_m - ship.outputs(&state).heave_m).abs() < 1e-15);
+    }
+
+    #[test]
+    fn the_mean_alone_is_the_forecasts_mean() {
+        let ship = ShipMotion::new(ShipMotionParameters::default()).unwrap();
+        let estimate = ShipMotionEstimate {
+            mean: ShipMotionState {
+                heave_filter: [0.5, -0.2, 0.1, 0.05],
+                pitch_filter: [0.3, 0.1, -0.02, 0.04],
+            },
+            ..ShipMotionEstimate::default()
+        };
+        let predictor = ShipMotionPredictor::new(5.0);
+        for lead in [0.0, 0.37, 2.0, 9.0] {
+            let full = predictor.forecast(&ship, &estimate, lead);
+            let mean = predictor.forecast_mean(&ship, &estimate, lead);
+            assert_eq!(
+                (
+                    mean.heave_m,
+                    mean.heave_rate_mps,
+                    mean.pitch_rad,
+                    mean.pitch_rate_radps
+                ),
+                (
+                    full.heave_m,
+                    full.heave_rate_mps,
+                    full.pitch_rad,
+                    full.pitch_rate_radps
+                )
+            );
+        }
+    }
+
+    /// The physics floor of docs/model.md §3.6: with the true state known (the oracle),
+    /// the landing point's height T s ahead is uncertain by the noise still to come. As
+    /// touchdown scatter on a 3.5° path (σ / tan 3.5°), docs/model.md quotes 5.3, 10.4, 14.5
+    /// and 15.5 m at 0.5, 1, 2 and 3 s in the paper's sea (and
+    /// tests/reference/deck_motion_kalman.py gives 5.34, 10.36, 14.50, 15.50 m with scipy).
+    #[test]
+    fn the_oracles_error_is_the_physics_floor_of_the_specification() {
+        let ship = ShipMotion::new(ShipMotionParameters::default()).unwrap();
+        let predictor = ShipMotionPredictor::new(10.0);
+        let tan = 3.5_f64.to_radians().tan();
+        for (horizon, scatter_m) in [(0.5, 5.3), (1.0, 10.4), (2.0, 14.5), (3.0, 15.5)] {
+            let forecast = predictor.forecast(&ship, &ShipMotionEstimate::default(), horizon);
+            let scatter = forecast.deck_point_height_sigma_m(81.0) / tan;
+            assert!(
+                (scatter - scatter_m).abs() < 0.06,
+                "{horizon} s: {scatter:.3} m against {scatter_m} m"
+            );
+        }
+        // No horizon is worse than knowing nothing: the stationary heave variance, 4 m².
+        let far = predictor.forecast(&ship, &ShipMotionEstimate::default(), 1e6);
+        assert!(far.heave_variance_m2 <= 4.0 + 1e-9 && far.heave_variance_m2 > 1.0);
     }
 }

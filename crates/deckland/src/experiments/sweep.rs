@@ -33,6 +33,8 @@ pub struct OutcomeCounts {
     pub ramp_strike: usize,
     /// Hard landings.
     pub hard_landing: usize,
+    /// Wave-offs (safe, not failures).
+    pub wave_off: usize,
     /// Divergences.
     pub diverged: usize,
     /// Timeouts.
@@ -52,6 +54,7 @@ impl OutcomeCounts {
                 Outcome::Bolter => counts.bolter += 1,
                 Outcome::RampStrike => counts.ramp_strike += 1,
                 Outcome::HardLanding => counts.hard_landing += 1,
+                Outcome::WaveOff => counts.wave_off += 1,
                 Outcome::Diverged => counts.diverged += 1,
                 Outcome::Timeout => counts.timeout += 1,
                 Outcome::Completed => {}

@@ -144,6 +144,9 @@ pub struct CampaignStatistics {
     pub ramp_strike: Proportion,
     /// Touchdown sink rate above the limit.
     pub hard_landing: Proportion,
+    /// The aircraft decided not to land and climbed away (docs/model.md §9): safe, not
+    /// one of the failures.
+    pub wave_off: Proportion,
     /// The simulation left the model's validity.
     pub divergence: Proportion,
     /// No touchdown within the time limit.
@@ -207,6 +210,7 @@ impl CampaignStatistics {
             bolter: Proportion::new(count(Outcome::Bolter), runs),
             ramp_strike: Proportion::new(count(Outcome::RampStrike), runs),
             hard_landing: Proportion::new(count(Outcome::HardLanding), runs),
+            wave_off: Proportion::new(count(Outcome::WaveOff), runs),
             divergence: Proportion::new(count(Outcome::Diverged), runs),
             timeout: Proportion::new(count(Outcome::Timeout), runs),
             invalid: Proportion::new(runs - flown.len() as u64, runs),
@@ -239,6 +243,7 @@ impl CampaignStatistics {
         vec![
             ("boarding", self.boarding),
             ("bolter", self.bolter),
+            ("wave_off", self.wave_off),
             ("ramp_strike", self.ramp_strike),
             ("hard_landing", self.hard_landing),
             ("divergence", self.divergence),

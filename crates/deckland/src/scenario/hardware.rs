@@ -11,6 +11,9 @@
 //! | sink-rate loop | K_Ps 0.035, K_Is 0.012 | K_Ps 0.035, K_Is 0.006 |
 //! | flight-control computer | every integration step | 80 Hz frames |
 //! | pitch-step command | a step | jerk-limited, fed forward |
+//! | deck-motion predictor | `oracle` (the ship's true state) | `estimator` (sensed motion, Kalman filter) |
+//! | glide path | linear blend, not ramp-aware | smooth blend, ramp-aware, touchdown correction |
+//! | automatic wave-off | none | on |
 //!
 //! A scenario names its set (`hardware = "paper"`); in a scenario file every key left
 //! out takes its set's value ([`super::load_scenario`]).
@@ -19,7 +22,10 @@ use serde::{Deserialize, Serialize};
 
 use super::{Mission, PitchCommand, Scenario};
 use crate::control::pitch::{PidParameters, PitchControllerParameters};
-use crate::control::{SinkRateControllerParameters, SpeedControllerParameters};
+use crate::control::{
+    FlightPathParameters, SinkRateControllerParameters, SpeedControllerParameters,
+    WaveOffParameters,
+};
 use crate::environment::WindParameters;
 
 /// Which hardware a scenario flies.
@@ -73,6 +79,8 @@ impl Scenario {
         scenario.control.speed = SpeedControllerParameters::paper();
         scenario.control.sink_rate = SinkRateControllerParameters::for_ideal_actuator();
         scenario.control.flight_computer_rate_hz = None;
+        scenario.control.flight_path = FlightPathParameters::paper();
+        scenario.control.wave_off = WaveOffParameters::paper();
         scenario
     }
 

@@ -14,11 +14,11 @@ use crate::aircraft::{
 use crate::control::pitch::PitchControllerParameters;
 use crate::control::{
     FlightPathParameters, GuidanceParameters, SinkRateControllerParameters,
-    SpeedControllerParameters,
+    SpeedControllerParameters, WaveOffParameters,
 };
 use crate::environment::{DeckGeometry, ShipMotionParameters, WindParameters};
 use crate::parameters::{Bounds, ParameterError};
-use crate::sensors::PitchNoiseParameters;
+use crate::sensors::{PitchNoiseParameters, ShipMotionSensingParameters};
 use serde::{Deserialize, Serialize};
 
 mod dispersion;
@@ -76,6 +76,9 @@ pub struct EnvironmentSection {
     pub wind: WindParameters,
     /// Pitch-attitude measurement noise (docs/model.md §3.3).
     pub pitch_noise: PitchNoiseParameters,
+    /// The ship's motion as its inertial navigation measures it and the data link
+    /// delivers it to the aircraft (docs/model.md §3.5).
+    pub ship_sensing: ShipMotionSensingParameters,
 }
 
 impl EnvironmentSection {
@@ -84,7 +87,8 @@ impl EnvironmentSection {
         self.ship.validate()?;
         self.deck.validate()?;
         self.wind.validate()?;
-        self.pitch_noise.validate()
+        self.pitch_noise.validate()?;
+        self.ship_sensing.validate()
     }
 }
 
@@ -112,6 +116,8 @@ pub struct ControlSection {
     pub guidance: GuidanceParameters,
     /// Glide path and deck-motion compensation.
     pub flight_path: FlightPathParameters,
+    /// Automatic wave-off (docs/model.md §9).
+    pub wave_off: WaveOffParameters,
 }
 
 impl Default for ControlSection {
@@ -124,6 +130,7 @@ impl Default for ControlSection {
             sink_rate: SinkRateControllerParameters::default(),
             guidance: GuidanceParameters::default(),
             flight_path: FlightPathParameters::default(),
+            wave_off: WaveOffParameters::default(),
         }
     }
 }
@@ -138,7 +145,8 @@ impl ControlSection {
         self.speed.validate()?;
         self.sink_rate.validate()?;
         self.guidance.validate()?;
-        self.flight_path.validate()
+        self.flight_path.validate()?;
+        self.wave_off.validate()
     }
 }
 

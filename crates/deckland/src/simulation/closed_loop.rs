@@ -7,7 +7,7 @@
 //! once per step by [`ClosedLoop::hold`] and passed to [`ClosedLoop::evaluate`]
 //! explicitly ([`HeldInputs`]), which is a pure function of time, state and held inputs.
 
-use super::deck_prediction::{DeckPredictor, DeckView};
+use super::deck_prediction::DeckPredictor;
 use super::flight_computer::{FlightComputer, HeldCommands};
 use super::layout::{Slot, StateLayout};
 use super::outer_loops::{OuterLoopInputs, OuterLoops};
@@ -15,9 +15,10 @@ use super::signals::Signals;
 use super::taps::Taps;
 use crate::aircraft::{Aircraft, AircraftCommands, AircraftState, HookGeometry, TrimPoint};
 use crate::control::pitch::{BuiltPitchLaw, ElevatorSaturation, PitchLaw, PitchLawInputs};
-use crate::control::{DeckReference, SpeedController};
+use crate::control::{DeckReference, SpeedController, WaveOffDecision, WaveOffParameters};
 use crate::environment::{
-    DeckGeometry, ShipMotion, ShipMotionState, ShipNoise, ShipPose, ShipPoseRate, Wind, WindModel,
+    steady_wake, DeckGeometry, ShipMotion, ShipMotionState, ShipNoise, ShipPose, ShipPoseRate,
+    Wind, WindModel,
 };
 use crate::integration::VectorSystem;
 use crate::random::NoiseStream;
@@ -105,6 +106,8 @@ pub struct HeldInputs {
     /// [`ClosedLoop::compute_frame`] computes the frame's commands (`commands` holds the
     /// last frame's until it does).
     pub frame_starts: bool,
+    /// Whether the aircraft is waving off (docs/model.md §9): full thrust and a climb.
+    pub wave_off: bool,
 }
 
 /// The random streams the loop draws from step by step.
@@ -134,6 +137,13 @@ pub struct ClosedLoop {
     pub(crate) trim: TrimPoint,
     pub(crate) airspeed_reference_mps: f64,
     pub(crate) computer: Option<FlightComputer>,
+    pub(crate) wave_off: WaveOffParameters,
+    /// Whether the steady air wake is fed forward into the pitch command.
+    pub(crate) wake_feedforward: bool,
+    /// The wave-off decision, once taken: its time (s) and why.
+    pub(crate) waved_off: Option<(f64, WaveOffDecision)>,
+    /// A decision taken while holding the inputs of a step, not yet reported as an event.
+    pub(crate) unreported_wave_off: Option<(f64, WaveOffDecision)>,
 }
 
 impl ClosedLoop {
@@ -191,36 +201,17 @@ impl ClosedLoop {
 
     /// Draws and samples the inputs held over the step from `t`: the ship filters' white
     /// noise and the pitch sensor's error (each from its own stream, docs/model.md §3.4), the
-    /// wind at the aircraft and, in an approach, the deck reference.
+    /// wind at the aircraft and, in an approach, the deck reference and whether the
+    /// aircraft waves off (the guidance computer's step).
     pub fn hold(&mut self, t: f64, x: &[f64], streams: &mut StepStreams, dt: f64) -> HeldInputs {
         let ship_state = self.ship_state(x);
         let aircraft = self.aircraft_state(x);
-        let (pose, rate) = self.ship_pose(x, t);
+        let (pose, _) = self.ship_pose(x, t);
         let wind = self
             .wind
             .wind(t, pose.distance_aft_of_pitch_centre_m(aircraft.x_m));
-        let deck = match &self.outer {
-            OuterLoops::Approach { flight_path, .. } => {
-                let (sin_t, cos_t) = aircraft.theta_rad.sin_cos();
-                let (hook_x_m, _) = self.hook.position_trig(&aircraft, sin_t, cos_t);
-                let (hook_x_rate_mps, _) = self.hook.velocity_trig(&aircraft, sin_t, cos_t);
-                let view = DeckView {
-                    ship_model: &self.ship,
-                    ship_state: &ship_state,
-                    deck: &self.deck,
-                    pose: &pose,
-                    rate: &rate,
-                };
-                Some(self.deck_predictor.deck_reference(
-                    &view,
-                    self.layout.deck_predictor.of(x),
-                    flight_path,
-                    hook_x_m,
-                    hook_x_rate_mps,
-                ))
-            }
-            _ => None,
-        };
+        let deck = self.guidance_computer_step(t, x, &aircraft, &ship_state, dt);
+        let wave_off = self.waved_off.is_some();
         let ship_noise = self
             .ship
             .draw_noise(&mut streams.ship_heave, &mut streams.ship_pitch, dt);
@@ -233,6 +224,7 @@ impl ClosedLoop {
                 commands: None,
                 theta_read: None,
                 frame_starts: false,
+                wave_off,
             };
         };
         // A frame of the flight-control computer: read the sensor (the mean of its samples
@@ -249,6 +241,7 @@ impl ClosedLoop {
             commands: Some(computer.commands),
             theta_read: Some((computer.theta_read_rad, computer.theta_read_time_s)),
             frame_starts,
+            wave_off,
         };
         self.computer = Some(computer);
         held
@@ -322,8 +315,18 @@ impl ClosedLoop {
             hook_climb_rate_mps,
             sink_rate_integral_m: layout.sink_rate.scalar(x),
             guidance_integral_m_s: layout.guidance.scalar(x),
+            wake_pitch_feedforward_rad: if self.wake_feedforward {
+                // Δθ = W_z/V: air sinking (W_z > 0) is climbed against (docs/model.md §5.7).
+                steady_wake(distance_aft_m).z_mps
+                    * self.wind.parameters().wake_weight(distance_aft_m)
+                    / air.airspeed_mps
+            } else {
+                0.0
+            },
         };
-        let outer = self.outer.outputs(&outer_inputs, held.deck.as_ref(), taps);
+        let outer = self
+            .outer
+            .outputs(&outer_inputs, held.deck.as_ref(), held.wave_off, taps);
 
         // Pitch law on the measured attitude (docs/model.md §3.3, §4).
         let (theta_measured_rad, measurement_age_s) = match held.theta_read {
@@ -362,6 +365,8 @@ impl ClosedLoop {
                 .feedback_airspeed_mps(speed_state, air.airspeed_mps);
         let thrust_command_n = taps.thrust_command(match held.commands {
             Some(commands) => commands.thrust_n,
+            // A wave-off: full thrust of both engines (docs/model.md §9).
+            None if held.wave_off => self.aircraft.engines().max_total_thrust_n(),
             None => self.speed.thrust_command_n(speed_error, speed_state[0]),
         });
 
@@ -385,7 +390,8 @@ impl ClosedLoop {
             layout.speed.of_mut(rate),
         );
         let (sink_integral_rate, guidance_integral_rate) =
-            self.outer.integral_rates(&outer_inputs, &outer);
+            self.outer
+                .integral_rates(&outer_inputs, &outer, held.wave_off);
         rate[layout.sink_rate.offset] = sink_integral_rate;
         rate[layout.guidance.offset] = guidance_integral_rate;
         let aim_point = self.deck.aim_point(&pose);
@@ -430,6 +436,17 @@ impl ClosedLoop {
             aim_point,
             disturbance_estimate_radps2: self.pitch.disturbance_estimate_radps2(pitch_state),
         }
+    }
+
+    /// The wave-off decision, once taken: its time (s) and why.
+    pub fn wave_off_decision(&self) -> Option<(f64, WaveOffDecision)> {
+        self.waved_off
+    }
+
+    /// The wave-off decision taken since the last call, if any (for the run loop to
+    /// report it as an event once).
+    pub(crate) fn take_unreported_wave_off(&mut self) -> Option<(f64, WaveOffDecision)> {
+        self.unreported_wave_off.take()
     }
 
     /// Holds the elevator actuator at its stops after a step.

@@ -1,21 +1,104 @@
 //! The deck-motion predictor block: where the glide path expects the landing point to be
-//! (docs/model.md §5, deck-motion compensation; see [`crate::control::FlightPathGenerator`]).
+//! (docs/model.md §5.7, deck-motion compensation; see [`crate::control::FlightPathGenerator`]).
+//!
+//! - `estimator` (default): the ship's sensed motion (docs/model.md §3.5) feeds a Kalman
+//!   filter ([`DeckMotionEstimator`]); the landing point and the ramp are forecast from
+//!   its estimate at the hook's touchdown and ramp-crossing times, the data link's
+//!   latency added to the horizon. The anchor passes through a critically damped filter
+//!   so that each 50-Hz update moves the path smoothly.
+//! - `oracle`: the same forecast from the ship model's *true* state (studies only).
+//! - `filter_lead`: a low-pass filter on the landing point's height with a lead.
+//!
+//! With `ramp_aware` the predicted anchor is raised, where needed, so that the path
+//! crosses the predicted ramp `ramp_clearance_margin_m` above it.
 
-use crate::control::{DeckMotionFilter, DeckReference, FlightPathGenerator};
-use crate::environment::{
-    DeckGeometry, EarthPoint, EarthVelocity, ShipMotion, ShipMotionPredictor, ShipMotionState,
-    ShipPose, ShipPoseRate,
+use crate::control::{
+    DeckForecast, DeckMotionFilter, DeckReference, FlightPathGenerator, FlightPathParameters,
 };
+use crate::environment::{
+    DeckGeometry, EarthPoint, EarthVelocity, ShipMotion, ShipMotionEstimate, ShipMotionForecast,
+    ShipMotionPredictor, ShipMotionState, ShipPose, ShipPoseRate,
+};
+use crate::estimation::DeckMotionEstimator;
+use crate::sensors::ShipMotionSensor;
 
 /// Names of the `filter_lead` predictor's states.
 const FILTER_STATE_NAMES: &[&str] = &["landing_point_height_m", "landing_point_climb_rate_mps"];
 
+/// The `estimator` predictor's parts: the ship's sensing, the Kalman filter, the
+/// forecast and the smoothing of the anchor (all discrete: updated once per step).
+#[derive(Debug, Clone)]
+pub struct EstimatorPredictor {
+    sensor: ShipMotionSensor,
+    estimator: DeckMotionEstimator,
+    predictor: ShipMotionPredictor,
+    estimate: ShipMotionEstimate,
+    /// The smoothed anchor height (m) and its rate (m/s); `None` before the first step.
+    anchor: Option<(f64, f64)>,
+    anchor_frequency_radps: f64,
+}
+
+impl EstimatorPredictor {
+    /// The predictor with this sensing and filter, its anchor smoothed at
+    /// `anchor_frequency_radps`.
+    pub fn new(
+        sensor: ShipMotionSensor,
+        estimator: DeckMotionEstimator,
+        predictor: ShipMotionPredictor,
+        anchor_frequency_radps: f64,
+    ) -> Self {
+        let estimate = estimator.estimate();
+        Self {
+            sensor,
+            estimator,
+            predictor,
+            estimate,
+            anchor: None,
+            anchor_frequency_radps,
+        }
+    }
+
+    /// The Kalman filter.
+    pub fn estimator(&self) -> &DeckMotionEstimator {
+        &self.estimator
+    }
+
+    /// Moves the smoothed anchor over `dt` towards `target_m`, held over the step: the
+    /// exact solution of ä = ω²(target − a) − 2ω·ȧ (critically damped), so stable at
+    /// any step.
+    fn smooth_anchor(&mut self, target_m: f64, dt: f64) -> (f64, f64) {
+        let (height, rate) = match self.anchor {
+            None => (target_m, 0.0),
+            Some((height, rate)) => {
+                let omega = self.anchor_frequency_radps;
+                let error = height - target_m;
+                let b = rate + omega * error;
+                let decay = (-omega * dt).exp();
+                (
+                    target_m + (error + b * dt) * decay,
+                    (rate - omega * b * dt) * decay,
+                )
+            }
+        };
+        self.anchor = Some((height, rate));
+        (height, rate)
+    }
+}
+
 /// How the landing point is predicted for the glide path, with the predictor's own state.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub enum DeckPredictor {
+    /// The Kalman estimate of the sensed ship motion, forecast to touchdown.
+    Estimator(Box<EstimatorPredictor>),
     /// The minimum-variance prediction at the estimated touchdown time from the ship
-    /// model's *true* state: an oracle, no state of its own.
-    Model(ShipMotionPredictor),
+    /// model's *true* state: an oracle, no state of its own. `forecasting` also gives the
+    /// ramp and the deck's rate (for ramp-aware guidance and the wave-off decision).
+    Oracle {
+        /// The tabulated transitions.
+        predictor: ShipMotionPredictor,
+        /// Whether to forecast the ramp and the deck's rate.
+        forecasting: bool,
+    },
     /// A critically damped low-pass filter on the landing point's height (two states)
     /// with a linear lead.
     FilterLead(DeckMotionFilter),
@@ -31,12 +114,30 @@ pub(crate) struct DeckView<'a> {
     pub rate: &'a ShipPoseRate,
 }
 
+/// Where the hook is, for the predictor.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct HookTrack {
+    pub time_s: f64,
+    pub x_m: f64,
+    pub x_rate_mps: f64,
+    /// The integration step (s): the smoothed anchor moves once per step.
+    pub dt: f64,
+}
+
 impl DeckPredictor {
     /// Names of the predictor's continuous states.
     pub fn state_names(&self) -> &'static [&'static str] {
         match self {
-            Self::Model(_) => &[],
+            Self::Estimator(_) | Self::Oracle { .. } => &[],
             Self::FilterLead(_) => FILTER_STATE_NAMES,
+        }
+    }
+
+    /// The Kalman filter, for the `estimator`.
+    pub fn estimator(&self) -> Option<&DeckMotionEstimator> {
+        match self {
+            Self::Estimator(block) => Some(block.estimator()),
+            _ => None,
         }
     }
 
@@ -51,6 +152,24 @@ impl DeckPredictor {
         }
     }
 
+    /// Once per step, at its start: the ship's inertial navigation samples the true
+    /// motion and the measurements that have arrived over the data link update the
+    /// Kalman filter (`estimator` only).
+    pub(crate) fn observe(&mut self, time_s: f64, view: &DeckView<'_>) {
+        if let Self::Estimator(block) = self {
+            let truth = view.ship_model.outputs(view.ship_state);
+            block.sensor.sample(time_s, &truth);
+            let mut updated = false;
+            while let Some(measurement) = block.sensor.receive(time_s) {
+                block.estimator.update(&measurement);
+                updated = true;
+            }
+            if updated {
+                block.estimate = block.estimator.estimate();
+            }
+        }
+    }
+
     /// The predictor's state rate, given the landing point's true height (m).
     #[inline(always)]
     pub(crate) fn derivative(&self, state: &[f64], aim_height_m: f64, rate: &mut [f64]) {
@@ -62,16 +181,17 @@ impl DeckPredictor {
     }
 
     /// The deck reference for the flight-path generator: the mean landing point and the
-    /// predicted moving one (the model's prediction at the touchdown time, with rate
-    /// zero; or the filtered height and rate).
+    /// predicted moving one (the forecast at the touchdown time, raised above the ramp
+    /// when ramp-aware, with rate zero for the oracle and the smoothed rate for the
+    /// estimator; or the filtered height and rate), and the forecast of the ramp and the
+    /// deck's rate. Called once per step (the estimator's anchor moves by `hook.dt`).
     #[inline]
     pub(crate) fn deck_reference(
-        &self,
+        &mut self,
         view: &DeckView<'_>,
         state: &[f64],
         flight_path: &FlightPathGenerator,
-        hook_x_m: f64,
-        hook_x_rate_mps: f64,
+        hook: &HookTrack,
     ) -> DeckReference {
         let (pose, rate, deck) = (view.pose, view.rate, view.deck);
         // Ship level and at its mean height: the aim point sits 81 m aft of the pitch
@@ -84,21 +204,76 @@ impl DeckPredictor {
             x_mps: rate.pitch_centre_x_rate_mps,
             h_mps: 0.0,
         };
-        let (aim, aim_velocity) = match self {
-            Self::Model(predictor) => {
-                let horizon_s = flight_path.time_to_go_s(
-                    hook_x_m,
-                    hook_x_rate_mps,
-                    mean_aim.x_m,
-                    mean_aim_velocity.x_mps,
-                );
-                let predicted = predictor.predict(view.ship_model, view.ship_state, horizon_s);
+        let parameters = flight_path.parameters();
+        let aim_x_m = mean_aim.x_m + parameters.touchdown_correction_m;
+        let time_to_go_s =
+            flight_path.time_to_go_s(hook.x_m, hook.x_rate_mps, aim_x_m, mean_aim_velocity.x_mps);
+        let (aim, aim_velocity, forecast) = match self {
+            Self::Oracle {
+                predictor,
+                forecasting: false,
+            } => {
+                let predicted = predictor.predict(view.ship_model, view.ship_state, time_to_go_s);
                 let predicted_pose = ShipPose {
                     heave_m: predicted.heave_m,
                     pitch_rad: predicted.pitch_rad,
                     ..*pose
                 };
-                (deck.aim_point(&predicted_pose), mean_aim_velocity)
+                (deck.aim_point(&predicted_pose), mean_aim_velocity, None)
+            }
+            Self::Oracle {
+                predictor,
+                forecasting: true,
+            } => {
+                let truth = ShipMotionEstimate {
+                    mean: *view.ship_state,
+                    ..ShipMotionEstimate::default()
+                };
+                let closure = hook.x_rate_mps - mean_aim_velocity.x_mps;
+                let forecast = forecast_deck(
+                    predictor,
+                    view.ship_model,
+                    &truth,
+                    0.0,
+                    time_to_go_s,
+                    closure,
+                    deck,
+                );
+                let anchor_h = ramp_aware_anchor(parameters, flight_path, deck, &forecast);
+                (
+                    EarthPoint {
+                        x_m: mean_aim.x_m,
+                        h_m: anchor_h,
+                    },
+                    mean_aim_velocity,
+                    Some(forecast),
+                )
+            }
+            Self::Estimator(block) => {
+                let age_s = hook.time_s - block.estimator.time_s();
+                let closure = hook.x_rate_mps - mean_aim_velocity.x_mps;
+                let forecast = forecast_deck(
+                    &block.predictor,
+                    view.ship_model,
+                    &block.estimate,
+                    age_s,
+                    time_to_go_s,
+                    closure,
+                    deck,
+                );
+                let target = ramp_aware_anchor(parameters, flight_path, deck, &forecast);
+                let (anchor_h, anchor_rate) = block.smooth_anchor(target, hook.dt);
+                (
+                    EarthPoint {
+                        x_m: mean_aim.x_m,
+                        h_m: anchor_h,
+                    },
+                    EarthVelocity {
+                        x_mps: mean_aim_velocity.x_mps,
+                        h_mps: anchor_rate,
+                    },
+                    Some(forecast),
+                )
             }
             Self::FilterLead(_) => {
                 let aim = deck.aim_point(pose);
@@ -111,6 +286,7 @@ impl DeckPredictor {
                         x_mps: deck.velocity_along_deck(pose, rate, 0.0).x_mps,
                         h_mps: state[1],
                     },
+                    None,
                 )
             }
         };
@@ -119,6 +295,133 @@ impl DeckPredictor {
             mean_aim_velocity,
             aim,
             aim_velocity,
+            forecast,
         }
+    }
+}
+
+/// The forecast of the deck for a hook `time_to_go_s` from touchdown closing at
+/// `closure_mps`, from `estimate` whose time lies `age_s` in the past: the landing point
+/// at touchdown, the ramp when the hook crosses it (`ramp_aft_of_aim_point_m` / closure
+/// earlier).
+fn forecast_deck(
+    predictor: &ShipMotionPredictor,
+    ship: &ShipMotion,
+    estimate: &ShipMotionEstimate,
+    age_s: f64,
+    time_to_go_s: f64,
+    closure_mps: f64,
+    deck: &DeckGeometry,
+) -> DeckForecast {
+    let landing_arm_m = deck.landing_point_aft_of_pitch_centre_m;
+    let ramp_arm_m = landing_arm_m + deck.ramp_aft_of_aim_point_m;
+    let ramp_time_s = if closure_mps > 0.0 {
+        (time_to_go_s - deck.ramp_aft_of_aim_point_m / closure_mps).max(0.0)
+    } else {
+        time_to_go_s
+    };
+    let at_touchdown: ShipMotionForecast =
+        predictor.forecast_mean(ship, estimate, age_s + time_to_go_s.max(0.0));
+    let at_ramp = predictor.forecast_mean(ship, estimate, age_s + ramp_time_s);
+    DeckForecast {
+        ramp_height_m: deck.deck_height_m + at_ramp.deck_point_height_m(ramp_arm_m),
+        landing_point_climb_rate_mps: at_touchdown.deck_point_climb_rate_mps(landing_arm_m),
+        landing_point_height_m: deck.deck_height_m
+            + at_touchdown.deck_point_height_m(landing_arm_m),
+        pitch_rad: at_touchdown.pitch_rad,
+    }
+}
+
+/// The anchor height: the forecast landing point, raised where the ramp-aware path needs
+/// it so that the path crosses the predicted ramp `ramp_clearance_margin_m` above it.
+/// The path passes the ramp (ramp_aft_of_aim_point + touchdown correction)·tan Γ above
+/// its anchor.
+fn ramp_aware_anchor(
+    parameters: &FlightPathParameters,
+    flight_path: &FlightPathGenerator,
+    deck: &DeckGeometry,
+    forecast: &DeckForecast,
+) -> f64 {
+    if !parameters.ramp_aware {
+        return forecast.landing_point_height_m;
+    }
+    let rise_to_ramp_m = (deck.ramp_aft_of_aim_point_m + parameters.touchdown_correction_m)
+        * flight_path.tan_slope();
+    let floor_m = forecast.ramp_height_m + parameters.ramp_clearance_margin_m - rise_to_ramp_m;
+    forecast.landing_point_height_m.max(floor_m)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::control::FlightPathParameters;
+    use crate::environment::{ShipMotionParameters, ShipMotionPredictor};
+    use crate::random::RandomStreams;
+    use crate::sensors::ShipMotionSensingParameters;
+
+    fn estimator_block(frequency_radps: f64) -> EstimatorPredictor {
+        let ship = ShipMotion::new(ShipMotionParameters::default()).unwrap();
+        let sensing = ShipMotionSensingParameters::default();
+        EstimatorPredictor::new(
+            ShipMotionSensor::new(sensing, &RandomStreams::new(1)).unwrap(),
+            DeckMotionEstimator::new(&ship, &sensing),
+            ShipMotionPredictor::new(1.0),
+            frequency_radps,
+        )
+    }
+
+    /// The anchor filter's step response is the critically damped one,
+    /// a(t) = u − (u − a₀)·(1 + ωt)·e^(−ωt) from rest, whatever the step: one 0.5-s step
+    /// and 500 steps of 1 ms land on the closed form (by hand: ω = 4, t = 0.5 gives
+    /// 1 − 3·e⁻² = 0.593994 of the way to the target).
+    #[test]
+    fn the_anchor_filter_follows_the_critically_damped_step_response_at_any_step() {
+        let expected = 1.0 - 3.0 * (-2.0_f64).exp();
+        for steps in [1_u32, 500] {
+            let mut block = estimator_block(4.0);
+            block.smooth_anchor(0.0, 0.001); // starts at rest on 0
+            let dt = 0.5 / f64::from(steps);
+            let mut last = (0.0, 0.0);
+            for _ in 0..steps {
+                last = block.smooth_anchor(1.0, dt);
+            }
+            assert!((last.0 - expected).abs() < 1e-12, "{steps}: {last:?}");
+            // Rate: u·ω²·t·e^(−ωt) = 16·0.5·e⁻² = 1.082682 m/s.
+            assert!((last.1 - 8.0 * (-2.0_f64).exp()).abs() < 1e-12, "{last:?}");
+        }
+    }
+
+    fn forecast(landing_point_height_m: f64, ramp_height_m: f64) -> DeckForecast {
+        DeckForecast {
+            ramp_height_m,
+            landing_point_climb_rate_mps: 0.0,
+            landing_point_height_m,
+            pitch_rad: 0.0,
+        }
+    }
+
+    /// On a level deck the path already clears the ramp by 60·tan 3.5° = 3.6698 m > 2.5 m:
+    /// the anchor stays on the landing point. With the ramp 2 m higher than the landing
+    /// point (the ship bow down about 1.9°), the anchor rises to
+    /// ramp + 2.5 − 3.6698 = landing point + 0.8302 m.
+    #[test]
+    fn the_ramp_aware_anchor_rises_only_when_the_ramp_would_come_too_close() {
+        let deck = DeckGeometry::default();
+        let parameters = FlightPathParameters::default();
+        let generator = FlightPathGenerator::new(parameters).unwrap();
+        let rise = 60.0 * 3.5_f64.to_radians().tan();
+        let level = ramp_aware_anchor(&parameters, &generator, &deck, &forecast(20.0, 20.0));
+        assert_eq!(level, 20.0);
+        let pitched = ramp_aware_anchor(&parameters, &generator, &deck, &forecast(22.0, 24.0));
+        assert!((pitched - (24.0 + 2.5 - rise)).abs() < 1e-12, "{pitched}");
+        assert!((pitched - 22.0 - 0.8302).abs() < 1e-4, "{pitched}");
+        let unaware = FlightPathParameters {
+            ramp_aware: false,
+            ..parameters
+        };
+        assert_eq!(
+            ramp_aware_anchor(&unaware, &generator, &deck, &forecast(22.0, 24.0)),
+            22.0
+        );
     }
 }

@@ -24,6 +24,7 @@ mod runner;
 mod setup;
 mod signals;
 mod taps;
+mod wave_off;
 
 pub use activity::ActuatorActivity;
 pub use closed_loop::{ClosedLoop, HeldInputs, LoopLayout, StepStreams};

@@ -6,6 +6,7 @@ use std::fmt;
 use serde::Serialize;
 
 use super::activity::ActuatorActivity;
+use crate::control::WaveOffDecision;
 use crate::scenario::OutcomeLimits;
 
 /// How a run ended.
@@ -20,6 +21,9 @@ pub enum Outcome {
     RampStrike,
     /// Touchdown sink rate relative to the deck above the hard-landing limit.
     HardLanding,
+    /// The aircraft decided not to land and climbed away over the deck (docs/model.md
+    /// §9): a safe outcome, counted apart from the failures.
+    WaveOff,
     /// The simulation left the model's validity (see [`RunSummary::reason`]).
     Diverged,
     /// The approach did not end before the time limit.
@@ -36,6 +40,7 @@ impl Outcome {
             Self::Bolter => "bolter",
             Self::RampStrike => "ramp_strike",
             Self::HardLanding => "hard_landing",
+            Self::WaveOff => "wave_off",
             Self::Diverged => "diverged",
             Self::Timeout => "timeout",
             Self::Completed => "completed",
@@ -78,6 +83,13 @@ pub enum Event {
         time_s: f64,
         /// Hook height above the deck (m).
         height_above_deck_m: f64,
+    },
+    /// The aircraft decided to wave off (docs/model.md §9), at the start of the step.
+    WaveOff {
+        /// Time (s).
+        time_s: f64,
+        /// Which criterion, its value and its limit.
+        decision: WaveOffDecision,
     },
 }
 
@@ -207,6 +219,13 @@ pub enum EndReason {
         /// Hook height above the deck there (m).
         height_above_deck_m: f64,
     },
+    /// The aircraft waved off and its hook passed over the deck's last wire in the air.
+    WaveOff {
+        /// When it decided (s).
+        decided_at_s: f64,
+        /// Why.
+        decision: WaveOffDecision,
+    },
     /// The hook was below the ramp as it crossed it.
     RampStrike {
         /// Hook height above the ramp (m), negative.
@@ -231,6 +250,7 @@ impl EndReason {
             Self::HardLanding { .. } => Outcome::HardLanding,
             Self::TouchdownPastLastWire { .. } | Self::FlewOverLastWire { .. } => Outcome::Bolter,
             Self::RampStrike { .. } => Outcome::RampStrike,
+            Self::WaveOff { .. } => Outcome::WaveOff,
             Self::TimeLimit { .. } => Outcome::Timeout,
             Self::Completed => Outcome::Completed,
             Self::Diverged(_) => Outcome::Diverged,
@@ -270,6 +290,16 @@ impl EndReason {
             Self::RampStrike { clearance_m } => {
                 Some(format!("hook {:.2} m below the ramp", -clearance_m))
             }
+            Self::WaveOff {
+                decided_at_s,
+                decision,
+            } => Some(format!(
+                "wave-off at t = {decided_at_s:.2} s on {}: {} {:.2} against the limit {:.2}",
+                decision.criterion.name(),
+                decision.criterion.quantity(),
+                decision.value,
+                decision.limit
+            )),
             Self::TimeLimit { limit_s } => Some(format!("no touchdown within {limit_s:.1} s")),
             Self::Diverged(divergence) => Some(divergence.to_string()),
         }
@@ -314,6 +344,25 @@ impl LandingRules {
             } => Some(EndReason::FlewOverLastWire {
                 height_above_deck_m,
             }),
+            Event::WaveOff { .. } => None,
+        }
+    }
+
+    /// As [`LandingRules::judge`], for an aircraft that has decided to wave off at
+    /// `decided_at_s` for `decision`: passing the last wire in the air completes the
+    /// wave-off; a ramp strike or a touchdown is judged as in any approach.
+    pub fn judge_in_wave_off(
+        &self,
+        event: &Event,
+        decided_at_s: f64,
+        decision: WaveOffDecision,
+    ) -> Option<EndReason> {
+        match event {
+            Event::PassedLastWire { .. } => Some(EndReason::WaveOff {
+                decided_at_s,
+                decision,
+            }),
+            _ => self.judge(event),
         }
     }
 

@@ -38,6 +38,8 @@ pub enum OuterLoops {
     Approach {
         /// The glide-path generator.
         flight_path: FlightPathGenerator,
+        /// The climb rate commanded in a wave-off (m/s); `None` without wave-offs.
+        wave_off_climb_rate_mps: Option<f64>,
         /// Guidance: height error → climb-rate command.
         guidance: LoopController,
         /// The sink-rate loop: climb-rate error → pitch command.
@@ -59,6 +61,8 @@ pub(crate) struct OuterLoopInputs {
     pub sink_rate_integral_m: f64,
     /// ∫ hook height error dt (m·s).
     pub guidance_integral_m_s: f64,
+    /// Pitch fed forward against the steady air wake's vertical wind (rad).
+    pub wake_pitch_feedforward_rad: f64,
 }
 
 /// The outer loops' outputs at one instant.
@@ -88,6 +92,7 @@ impl OuterLoops {
         &self,
         inputs: &OuterLoopInputs,
         deck: Option<&DeckReference>,
+        wave_off: bool,
         taps: &T,
     ) -> OuterLoopOutputs {
         let trim_theta = inputs.theta_trim_rad;
@@ -133,22 +138,28 @@ impl OuterLoops {
                     flight_path,
                     guidance,
                     sink_rate,
+                    wave_off_climb_rate_mps,
                 } => {
                     let deck = deck.expect("an approach always holds a deck reference");
                     let path = flight_path.reference(inputs.hook_x_m, inputs.hook_x_rate_mps, deck);
                     let height_error = path.height_m - inputs.hook_h_m;
                     let height_error_rate = path.climb_rate_mps - inputs.hook_climb_rate_mps;
-                    let command = taps.climb_rate_command(
-                        path.climb_rate_mps
-                            + guidance.output(
-                                height_error,
-                                inputs.guidance_integral_m_s,
-                                height_error_rate,
-                            ),
-                    );
+                    // A wave-off commands its climb; the guidance no longer flies the path.
+                    let command = taps.climb_rate_command(match wave_off_climb_rate_mps {
+                        Some(climb) if wave_off => *climb,
+                        _ => {
+                            path.climb_rate_mps
+                                + guidance.output(
+                                    height_error,
+                                    inputs.guidance_integral_m_s,
+                                    height_error_rate,
+                                )
+                        }
+                    });
                     let error = command - inputs.climb_rate_mps;
-                    let theta =
-                        trim_theta + sink_rate.output(error, inputs.sink_rate_integral_m, 0.0);
+                    let theta = trim_theta
+                        + sink_rate.output(error, inputs.sink_rate_integral_m, 0.0)
+                        + inputs.wake_pitch_feedforward_rad;
                     (theta, command, Some(path), height_error, error)
                 }
             };
@@ -169,6 +180,7 @@ impl OuterLoops {
         &self,
         inputs: &OuterLoopInputs,
         outputs: &OuterLoopOutputs,
+        wave_off: bool,
     ) -> (f64, f64) {
         match self {
             Self::PitchStep { .. } => (0.0, 0.0),
@@ -190,7 +202,16 @@ impl OuterLoops {
                     inputs.sink_rate_integral_m,
                     0.0,
                 ),
-                guidance.integral_rate(outputs.height_error_m, inputs.guidance_integral_m_s, 0.0),
+                // The guidance integrator holds in a wave-off.
+                if wave_off {
+                    0.0
+                } else {
+                    guidance.integral_rate(
+                        outputs.height_error_m,
+                        inputs.guidance_integral_m_s,
+                        0.0,
+                    )
+                },
             ),
         }
     }

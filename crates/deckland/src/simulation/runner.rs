@@ -210,6 +210,12 @@ impl Simulation {
             self.inputs_held = true;
         }
         self.held_for_next_step = false;
+        // A wave-off decided while holding this step's inputs is an event of this step.
+        if let Some((time_s, decision)) = self.system.take_unreported_wave_off() {
+            let event = Event::WaveOff { time_s, decision };
+            recorder.event(&event);
+            self.pending.push_back(Stop::Event(event));
+        }
         // The frame's commands with this step's taps (again, if drawn early without).
         self.system
             .compute_frame(t, &self.state, &mut self.held, taps);
@@ -222,14 +228,23 @@ impl Simulation {
             self.activity.sample(&signals);
         }
         if approach && end.is_none() {
-            self.statistics.sample(&signals);
+            // The glide-path statistics cover the approach, not a wave-off's climb.
+            if self.system.wave_off_decision().is_none() {
+                self.statistics.sample(&signals);
+            }
             for event in self.detector.detect(&signals).iter() {
                 if let Event::RampCrossing { clearance_m, .. } = event {
                     self.ramp_clearance_m = Some(*clearance_m);
                 }
                 recorder.event(event);
                 self.pending.push_back(Stop::Event(*event));
-                if let Some(reason) = self.rules.judge(event) {
+                let judged = match self.system.wave_off_decision() {
+                    Some((decided_at_s, decision)) => {
+                        self.rules.judge_in_wave_off(event, decided_at_s, decision)
+                    }
+                    None => self.rules.judge(event),
+                };
+                if let Some(reason) = judged {
                     end = Some((reason, event_time(event)));
                     break;
                 }
@@ -354,7 +369,9 @@ impl Simulation {
 /// The time of an event (s).
 fn event_time(event: &Event) -> f64 {
     match event {
-        Event::RampCrossing { time_s, .. } | Event::PassedLastWire { time_s, .. } => *time_s,
+        Event::RampCrossing { time_s, .. }
+        | Event::PassedLastWire { time_s, .. }
+        | Event::WaveOff { time_s, .. } => *time_s,
         Event::Touchdown(touchdown) => touchdown.time_s,
     }
 }

@@ -2,7 +2,7 @@
 //! the initial state.
 
 use super::closed_loop::{ClosedLoop, LoopLayout, StepStreams};
-use super::deck_prediction::{DeckPredictor, DeckView};
+use super::deck_prediction::{DeckPredictor, DeckView, EstimatorPredictor};
 use super::flight_computer::FlightComputer;
 use super::outer_loops::OuterLoops;
 use crate::aircraft::{linearize, trim, Aircraft, LinearModel, TrimError, TrimPoint, TrimRequest};
@@ -20,10 +20,11 @@ use crate::control::{
 use crate::environment::{
     mean_wind, ShipMotion, ShipMotionPredictor, ShipMotionState, Wind, WindModel,
 };
+use crate::estimation::DeckMotionEstimator;
 use crate::parameters::ParameterError;
 use crate::random::{stream_names, RandomStreams};
 use crate::scenario::{Mission, PitchCommand, Scenario};
-use crate::sensors::PitchSensor;
+use crate::sensors::{PitchSensor, ShipMotionSensor};
 
 /// Builds a user's own pitch law for the plant and hardware of a run (called once per
 /// run, after trim, so that a campaign can fly it over dispersed scenarios).
@@ -88,6 +89,10 @@ fn outer_loops(
             );
             let loops = OuterLoops::Approach {
                 flight_path: FlightPathGenerator::new(control.flight_path)?,
+                wave_off_climb_rate_mps: control
+                    .wave_off
+                    .enabled
+                    .then_some(control.wave_off.climb_rate_mps),
                 guidance: control.guidance.controller(),
                 sink_rate: control.sink_rate.controller(),
             };
@@ -339,10 +344,23 @@ pub(crate) fn build(
         aircraft.engines().max_total_thrust_n(),
     );
     let flight_path = &scenario.control.flight_path;
+    // The forecasts reach the compensation window and the blend, plus the data link's
+    // latency for the estimator.
+    let horizon_s = flight_path.compensation_window_s + flight_path.compensation_blend_s;
     let deck_predictor = match flight_path.deck_motion_predictor {
-        DeckMotionPredictor::Model => DeckPredictor::Model(ShipMotionPredictor::new(
-            flight_path.compensation_window_s + flight_path.compensation_blend_s,
-        )),
+        DeckMotionPredictor::Oracle => DeckPredictor::Oracle {
+            predictor: ShipMotionPredictor::new(horizon_s),
+            forecasting: flight_path.ramp_aware || scenario.control.wave_off.enabled,
+        },
+        DeckMotionPredictor::Estimator => {
+            let sensing = env.ship_sensing;
+            DeckPredictor::Estimator(Box::new(EstimatorPredictor::new(
+                ShipMotionSensor::new(sensing, &streams)?,
+                DeckMotionEstimator::new(&ship, &sensing),
+                ShipMotionPredictor::new(horizon_s + sensing.latency_s + 1.0),
+                flight_path.anchor_filter_frequency_radps,
+            )))
+        }
         DeckMotionPredictor::FilterLead => DeckPredictor::FilterLead(DeckMotionFilter::new(
             flight_path.deck_filter_frequency_radps,
         )),
@@ -423,6 +441,12 @@ pub(crate) fn build(
             .control
             .flight_computer_rate_hz
             .map(|rate| FlightComputer::new(rate, initial.len())),
+        wave_off: scenario.control.wave_off,
+        wake_feedforward: scenario.mission == Mission::Approach
+            && flight_path.wake_feedforward
+            && env.wind.steady_wake,
+        waved_off: None,
+        unreported_wave_off: None,
     };
     Ok(Setup {
         system,

@@ -169,6 +169,7 @@ fn figures(folder: &CampaignFolder) -> Vec<(&'static str, Figure)> {
     let categories = [
         "trap",
         "bolter",
+        "wave-off",
         "ramp strike",
         "hard landing",
         "diverged",
@@ -218,10 +219,11 @@ fn figures(folder: &CampaignFolder) -> Vec<(&'static str, Figure)> {
 }
 
 /// The outcome classes with their names, in table order.
-fn proportions(s: &CampaignStatistics) -> [(&'static str, Proportion); 7] {
+fn proportions(s: &CampaignStatistics) -> [(&'static str, Proportion); 8] {
     [
         ("boarding (trap)", s.boarding),
         ("bolter", s.bolter),
+        ("wave-off (safe)", s.wave_off),
         ("ramp strike", s.ramp_strike),
         ("hard landing", s.hard_landing),
         ("diverged", s.divergence),

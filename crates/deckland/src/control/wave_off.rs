@@ -1,0 +1,401 @@
+//! Automatic wave-off: the decision not to land (docs/model.md §9).
+//!
+//! A landing signal officer, and an automatic carrier landing system, abort an approach
+//! that is not going to end well. The decision is taken on named criteria, evaluated once
+//! per step while the hook is between `window_start_time_to_go_s` and
+//! `decision_time_to_go_s` from touchdown (after that the aircraft is committed: a
+//! wave-off could no longer stop the hook reaching the deck):
+//!
+//! 1. **ramp clearance**: the hook's predicted height over the predicted ramp when it
+//!    crosses it, assuming it keeps its present offset from the glide path, below
+//!    `min_ramp_clearance_m` (1 m; the guidance itself keeps the landing signal
+//!    officer's margin, [`crate::control::FlightPathParameters::ramp_clearance_margin_m`]);
+//! 2. **touchdown sink rate**: the hook's sink rate plus the predicted climb rate of the
+//!    landing point at touchdown above `max_touchdown_sink_rate_mps`;
+//! 3. **glide-path error**: the hook more than `max_glide_path_error_m` off the path,
+//!    or moving away from it faster than `max_glide_path_error_rate_mps`;
+//! 4. **deck motion**: the predicted ship pitch at touchdown beyond `max_deck_pitch_deg`,
+//!    or the predicted landing point more than `max_landing_point_displacement_m` from
+//!    its mean height.
+//!
+//! The wave-off is flown by the outer loops: full thrust of both engines, and a climb
+//! rate of `climb_rate_mps` commanded to the sink-rate loop, whose pitch authority
+//! limits the rotation (pitching up swings the hook, 7 m aft of the CG, down).
+
+use serde::{Deserialize, Serialize};
+
+use crate::control::DeckForecast;
+use crate::parameters::{Bounds, ParameterError};
+
+/// The wave-off decision's limits and how it is flown (docs/model.md §9).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct WaveOffParameters {
+    /// Whether the aircraft decides to wave off at all; on in the realistic set, off in
+    /// the paper's (the paper has no wave-off).
+    pub enabled: bool,
+    /// Time to go (s) at which the decision window opens; 4 s (a project choice: earlier
+    /// decisions rest on forecasts too uncertain to act on, docs/deck-prediction.md).
+    pub window_start_time_to_go_s: f64,
+    /// Time to go (s) after which the aircraft is committed; 1.5 s (a project choice:
+    /// engines spool with a 0.625-s lag, and the sink must be arrested before the ramp).
+    pub decision_time_to_go_s: f64,
+    /// Smallest predicted hook-to-ramp clearance (m); 1.0 m. The landing signal
+    /// officer's 10-ft (3.05-m) minimum is the guidance's margin
+    /// (`control.flight_path.ramp_clearance_margin_m`); on this deck's geometry (3.7 m
+    /// nominal clearance) waving off every pass predicted below 3.05 m waves off half the
+    /// approaches in a moderate sea (docs/model.md §9).
+    pub min_ramp_clearance_m: f64,
+    /// Largest predicted touchdown sink rate relative to the deck (m/s); 7.0 m/s, below
+    /// the 7.6-m/s hard-landing limit (docs/model.md §7).
+    pub max_touchdown_sink_rate_mps: f64,
+    /// Largest height error of the hook to the glide path (m); 3 m.
+    pub max_glide_path_error_m: f64,
+    /// Largest rate at which the hook drifts from the glide path (m/s); 4 m/s.
+    pub max_glide_path_error_rate_mps: f64,
+    /// Largest predicted ship pitch at touchdown (deg); 3.5°.
+    pub max_deck_pitch_deg: f64,
+    /// Largest predicted displacement of the landing point from its mean height (m);
+    /// 5.35 m, half of the 35-ft (10.7-m) total deck motion at which recovery stops
+    /// (docs/model.md §3.6).
+    pub max_landing_point_displacement_m: f64,
+    /// Climb rate commanded in the wave-off (m/s, up); 5 m/s.
+    pub climb_rate_mps: f64,
+}
+
+impl Default for WaveOffParameters {
+    fn default() -> Self {
+        Self {
+            enabled: true,
+            window_start_time_to_go_s: 4.0,
+            decision_time_to_go_s: 1.5,
+            min_ramp_clearance_m: 1.0,
+            max_touchdown_sink_rate_mps: 7.0,
+            max_glide_path_error_m: 3.0,
+            max_glide_path_error_rate_mps: 4.0,
+            max_deck_pitch_deg: 3.5,
+            max_landing_point_displacement_m: 5.35,
+            climb_rate_mps: 5.0,
+        }
+    }
+}
+
+impl WaveOffParameters {
+    /// The paper's set: no wave-off.
+    pub fn paper() -> Self {
+        Self {
+            enabled: false,
+            ..Self::default()
+        }
+    }
+
+    /// Checks every limit: window 0–30 s, decision point 0–30 s and not after the window
+    /// opens, clearance 0–20 m, sink rate (0, 20] m/s, glide-path error (0, 50] m and
+    /// (0, 50] m/s, deck pitch (0, 30]°, displacement (0, 50] m, climb rate (0, 30] m/s.
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        const SECTION: &str = "control.wave_off";
+        Bounds::closed(0.0, 30.0).check(
+            SECTION,
+            "window_start_time_to_go_s",
+            self.window_start_time_to_go_s,
+        )?;
+        Bounds::closed(0.0, self.window_start_time_to_go_s).check(
+            SECTION,
+            "decision_time_to_go_s",
+            self.decision_time_to_go_s,
+        )?;
+        Bounds::closed(0.0, 20.0).check(
+            SECTION,
+            "min_ramp_clearance_m",
+            self.min_ramp_clearance_m,
+        )?;
+        Bounds::positive_up_to(20.0).check(
+            SECTION,
+            "max_touchdown_sink_rate_mps",
+            self.max_touchdown_sink_rate_mps,
+        )?;
+        Bounds::positive_up_to(50.0).check(
+            SECTION,
+            "max_glide_path_error_m",
+            self.max_glide_path_error_m,
+        )?;
+        Bounds::positive_up_to(50.0).check(
+            SECTION,
+            "max_glide_path_error_rate_mps",
+            self.max_glide_path_error_rate_mps,
+        )?;
+        Bounds::positive_up_to(30.0).check(
+            SECTION,
+            "max_deck_pitch_deg",
+            self.max_deck_pitch_deg,
+        )?;
+        Bounds::positive_up_to(50.0).check(
+            SECTION,
+            "max_landing_point_displacement_m",
+            self.max_landing_point_displacement_m,
+        )?;
+        Bounds::positive_up_to(30.0).check(SECTION, "climb_rate_mps", self.climb_rate_mps)
+    }
+}
+
+/// Which criterion called the wave-off.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum WaveOffCriterion {
+    /// Predicted hook-to-ramp clearance below the minimum.
+    RampClearance,
+    /// Predicted touchdown sink rate relative to the deck above the limit.
+    TouchdownSinkRate,
+    /// Hook too far off the glide path.
+    GlidePathError,
+    /// Hook drifting off the glide path too fast.
+    GlidePathErrorRate,
+    /// Predicted ship pitch at touchdown beyond the limit.
+    DeckPitch,
+    /// Predicted landing point too far from its mean height.
+    LandingPointDisplacement,
+}
+
+impl WaveOffCriterion {
+    /// The criterion's name, as written to files.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::RampClearance => "ramp_clearance",
+            Self::TouchdownSinkRate => "touchdown_sink_rate",
+            Self::GlidePathError => "glide_path_error",
+            Self::GlidePathErrorRate => "glide_path_error_rate",
+            Self::DeckPitch => "deck_pitch",
+            Self::LandingPointDisplacement => "landing_point_displacement",
+        }
+    }
+
+    /// The criterion's quantity and unit, in words.
+    pub fn quantity(self) -> &'static str {
+        match self {
+            Self::RampClearance => "predicted ramp clearance (m)",
+            Self::TouchdownSinkRate => "predicted touchdown sink rate (m/s)",
+            Self::GlidePathError => "glide-path error (m)",
+            Self::GlidePathErrorRate => "glide-path error rate (m/s)",
+            Self::DeckPitch => "predicted deck pitch (deg)",
+            Self::LandingPointDisplacement => "predicted landing-point displacement (m)",
+        }
+    }
+}
+
+/// A wave-off decision: which criterion, its value and its limit.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct WaveOffDecision {
+    /// The criterion that called it.
+    pub criterion: WaveOffCriterion,
+    /// The criterion's value (unit of [`WaveOffCriterion::quantity`]).
+    pub value: f64,
+    /// Its limit.
+    pub limit: f64,
+    /// The predicted hook-to-ramp clearance at the decision (m).
+    pub predicted_ramp_clearance_m: f64,
+}
+
+/// What the decision looks at, once per step.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct WaveOffInputs {
+    /// Estimated time to touchdown (s).
+    pub time_to_go_s: f64,
+    /// Height error of the hook to the path, h_ref − h_hook (m).
+    pub glide_path_error_m: f64,
+    /// Its rate (m/s).
+    pub glide_path_error_rate_mps: f64,
+    /// The glide path's height where it crosses the ramp (m).
+    pub path_height_at_ramp_m: f64,
+    /// The hook's climb rate (m/s, up).
+    pub hook_climb_rate_mps: f64,
+    /// Mean height of the landing point (m).
+    pub mean_landing_point_height_m: f64,
+    /// The deck forecast.
+    pub forecast: DeckForecast,
+}
+
+impl WaveOffParameters {
+    /// Whether the hook is in the decision window.
+    pub fn in_window(&self, time_to_go_s: f64) -> bool {
+        self.enabled
+            && time_to_go_s <= self.window_start_time_to_go_s
+            && time_to_go_s >= self.decision_time_to_go_s
+    }
+
+    /// The decision on these inputs: the first criterion (in the order of the module
+    /// docs) that is out of limits, or `None` to go on. Outside the window, `None`.
+    pub fn decide(&self, inputs: &WaveOffInputs) -> Option<WaveOffDecision> {
+        if !self.in_window(inputs.time_to_go_s) {
+            return None;
+        }
+        let forecast = &inputs.forecast;
+        let clearance =
+            inputs.path_height_at_ramp_m - inputs.glide_path_error_m - forecast.ramp_height_m;
+        let sink = -inputs.hook_climb_rate_mps + forecast.landing_point_climb_rate_mps;
+        let pitch_deg = forecast.pitch_rad.to_degrees();
+        let displacement = forecast.landing_point_height_m - inputs.mean_landing_point_height_m;
+        // The error grows when it and its rate have the same sign.
+        let drift = if inputs.glide_path_error_m * inputs.glide_path_error_rate_mps > 0.0 {
+            inputs.glide_path_error_rate_mps.abs()
+        } else {
+            0.0
+        };
+        let checks = [
+            (
+                WaveOffCriterion::RampClearance,
+                clearance,
+                self.min_ramp_clearance_m,
+                clearance < self.min_ramp_clearance_m,
+            ),
+            (
+                WaveOffCriterion::TouchdownSinkRate,
+                sink,
+                self.max_touchdown_sink_rate_mps,
+                sink > self.max_touchdown_sink_rate_mps,
+            ),
+            (
+                WaveOffCriterion::GlidePathError,
+                inputs.glide_path_error_m,
+                self.max_glide_path_error_m,
+                inputs.glide_path_error_m.abs() > self.max_glide_path_error_m,
+            ),
+            (
+                WaveOffCriterion::GlidePathErrorRate,
+                drift,
+                self.max_glide_path_error_rate_mps,
+                drift > self.max_glide_path_error_rate_mps,
+            ),
+            (
+                WaveOffCriterion::DeckPitch,
+                pitch_deg,
+                self.max_deck_pitch_deg,
+                pitch_deg.abs() > self.max_deck_pitch_deg,
+            ),
+            (
+                WaveOffCriterion::LandingPointDisplacement,
+                displacement,
+                self.max_landing_point_displacement_m,
+                displacement.abs() > self.max_landing_point_displacement_m,
+            ),
+        ];
+        checks
+            .into_iter()
+            .find(|check| check.3)
+            .map(|(criterion, value, limit, _)| WaveOffDecision {
+                criterion,
+                value,
+                limit,
+                predicted_ramp_clearance_m: clearance,
+            })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn calm() -> WaveOffInputs {
+        WaveOffInputs {
+            time_to_go_s: 4.0,
+            glide_path_error_m: 0.0,
+            glide_path_error_rate_mps: 0.0,
+            // 3.5° path over a level deck: 60·tan 3.5° = 3.67 m over a ramp at 20 m.
+            path_height_at_ramp_m: 23.67,
+            hook_climb_rate_mps: -3.7,
+            mean_landing_point_height_m: 20.0,
+            forecast: DeckForecast {
+                ramp_height_m: 20.0,
+                landing_point_climb_rate_mps: 0.0,
+                landing_point_height_m: 20.0,
+                pitch_rad: 0.0,
+            },
+        }
+    }
+
+    #[test]
+    fn a_nominal_approach_on_a_level_deck_goes_on() {
+        assert_eq!(WaveOffParameters::default().decide(&calm()), None);
+    }
+
+    #[test]
+    fn each_criterion_calls_the_wave_off_with_its_value() {
+        let p = WaveOffParameters::default();
+        // The hook 2.8 m low: clearance 3.67 − 2.8 = 0.87 m < 1 m.
+        let low = WaveOffInputs {
+            glide_path_error_m: 2.8,
+            ..calm()
+        };
+        let d = p.decide(&low).expect("wave-off");
+        assert_eq!(d.criterion, WaveOffCriterion::RampClearance);
+        assert!((d.value - 0.87).abs() < 1e-9);
+        // The deck rising at 3.5 m/s into a hook sinking at 3.7 m/s: 7.2 m/s > 7.
+        let mut rising = calm();
+        rising.forecast.landing_point_climb_rate_mps = 3.5;
+        let d = p.decide(&rising).expect("wave-off");
+        assert_eq!(d.criterion, WaveOffCriterion::TouchdownSinkRate);
+        assert!((d.value - 7.2).abs() < 1e-9);
+        // 3.5 m high: clearance is fine, the error is not.
+        let high = WaveOffInputs {
+            glide_path_error_m: -3.5,
+            ..calm()
+        };
+        assert_eq!(
+            p.decide(&high).map(|d| d.criterion),
+            Some(WaveOffCriterion::GlidePathError)
+        );
+        // Drifting high at 4.5 m/s.
+        let drifting = WaveOffInputs {
+            glide_path_error_m: -0.5,
+            glide_path_error_rate_mps: -4.5,
+            ..calm()
+        };
+        assert_eq!(
+            p.decide(&drifting).map(|d| d.criterion),
+            Some(WaveOffCriterion::GlidePathErrorRate)
+        );
+        // Bow up 4°: the deck pitch limit (the ramp drops, so clearance is fine).
+        let mut pitched = calm();
+        pitched.forecast.pitch_rad = 4.0_f64.to_radians();
+        assert_eq!(
+            p.decide(&pitched).map(|d| d.criterion),
+            Some(WaveOffCriterion::DeckPitch)
+        );
+        let mut heaved = calm();
+        heaved.forecast.landing_point_height_m = 14.0;
+        heaved.forecast.ramp_height_m = 14.0;
+        assert_eq!(
+            p.decide(&heaved).map(|d| d.criterion),
+            Some(WaveOffCriterion::LandingPointDisplacement)
+        );
+    }
+
+    #[test]
+    fn outside_the_window_or_disabled_nothing_is_decided() {
+        let low = WaveOffInputs {
+            glide_path_error_m: 2.9,
+            ..calm()
+        };
+        let p = WaveOffParameters::default();
+        for time_to_go_s in [6.0, 1.0] {
+            assert_eq!(
+                p.decide(&WaveOffInputs {
+                    time_to_go_s,
+                    ..low
+                }),
+                None
+            );
+        }
+        assert_eq!(WaveOffParameters::paper().decide(&low), None);
+    }
+
+    #[test]
+    fn a_decision_point_after_the_window_is_refused_by_name() {
+        let error = WaveOffParameters {
+            decision_time_to_go_s: 5.0,
+            ..WaveOffParameters::default()
+        }
+        .validate()
+        .unwrap_err();
+        assert_eq!(error.path, "control.wave_off.decision_time_to_go_s");
+    }
+}

@@ -1,0 +1,274 @@
+//! The ship's motion as the aircraft receives it (docs/model.md §3.5).
+//!
+//! A real aircraft cannot read the ship-motion filters' state. The ship's inertial
+//! navigation measures heave, heave rate, pitch and pitch rate at its own sample rate;
+//! each measurement carries white noise and reaches the aircraft's guidance computer over
+//! a data link `latency_s` later. All four are used: heave and pitch fix the position,
+//! the two rates the phase of the ship's slow oscillation, which is what a prediction
+//! seconds ahead needs most (the pitch filter's lightly damped pair at 0.4 rad/s).
+//!
+//! The defaults are assumptions (docs/model.md §3.5 names them as such), chosen as a
+//! navigation-grade ship's inertial system's figures: heave σ 0.05 m, heave rate σ
+//! 0.05 m/s, pitch σ 0.02°, pitch rate σ 0.02 °/s, 50 Hz, 0.1 s latency.
+//!
+//! Sampling is on the integration grid: a sample is taken at the first step at or after
+//! each multiple of the sample period and stamped with that step's time; it is delivered
+//! at the first step at or after its time plus the latency. Each channel's noise comes
+//! from its own stream (`ship_sensor_heave`, …; docs/model.md §3.4).
+
+use std::collections::VecDeque;
+
+use serde::{Deserialize, Serialize};
+
+use crate::environment::ShipMotionOutputs;
+use crate::parameters::{Bounds, ParameterError};
+use crate::random::{stream_names, NoiseStream, RandomStreams};
+
+/// Noise, rate and latency of the ship-motion measurements (docs/model.md §3.5).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct ShipMotionSensingParameters {
+    /// Standard deviation of the heave measurement (m); assumption: 0.05.
+    pub heave_sigma_m: f64,
+    /// Standard deviation of the heave-rate measurement (m/s); assumption: 0.05.
+    pub heave_rate_sigma_mps: f64,
+    /// Standard deviation of the pitch measurement (deg); assumption: 0.02.
+    pub pitch_sigma_deg: f64,
+    /// Standard deviation of the pitch-rate measurement (deg/s); assumption: 0.02.
+    pub pitch_rate_sigma_degps: f64,
+    /// Sample rate of the ship's inertial navigation on the data link (Hz); assumption: 50.
+    pub sample_rate_hz: f64,
+    /// Delay from a sample to its arrival at the aircraft (s); assumption: 0.1.
+    pub latency_s: f64,
+}
+
+impl Default for ShipMotionSensingParameters {
+    fn default() -> Self {
+        Self {
+            heave_sigma_m: 0.05,
+            heave_rate_sigma_mps: 0.05,
+            pitch_sigma_deg: 0.02,
+            pitch_rate_sigma_degps: 0.02,
+            sample_rate_hz: 50.0,
+            latency_s: 0.1,
+        }
+    }
+}
+
+impl ShipMotionSensingParameters {
+    /// The section's dotted path.
+    pub const SECTION: &'static str = "environment.ship_sensing";
+
+    /// Checks every field: σ in (0, 5] m and m/s, (0, 5]° and °/s (a perfect sensor has
+    /// no Kalman filter: its measurement covariance must be invertible); sample rate
+    /// 1–1000 Hz; latency 0–5 s.
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        let section = Self::SECTION;
+        let sigma = Bounds::positive_up_to(5.0);
+        sigma.check(section, "heave_sigma_m", self.heave_sigma_m)?;
+        sigma.check(section, "heave_rate_sigma_mps", self.heave_rate_sigma_mps)?;
+        sigma.check(section, "pitch_sigma_deg", self.pitch_sigma_deg)?;
+        sigma.check(
+            section,
+            "pitch_rate_sigma_degps",
+            self.pitch_rate_sigma_degps,
+        )?;
+        Bounds::closed(1.0, 1000.0).check(section, "sample_rate_hz", self.sample_rate_hz)?;
+        Bounds::closed(0.0, 5.0).check(section, "latency_s", self.latency_s)
+    }
+
+    /// The standard deviations in SI units: heave (m), heave rate (m/s), pitch (rad),
+    /// pitch rate (rad/s).
+    pub fn sigmas_si(&self) -> [f64; 4] {
+        [
+            self.heave_sigma_m,
+            self.heave_rate_sigma_mps,
+            self.pitch_sigma_deg.to_radians(),
+            self.pitch_rate_sigma_degps.to_radians(),
+        ]
+    }
+}
+
+/// One measurement of the ship's motion, as sent over the data link.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ShipMotionMeasurement {
+    /// The time the sample was taken (s).
+    pub time_s: f64,
+    /// Heave (m, up).
+    pub heave_m: f64,
+    /// Heave rate (m/s, up).
+    pub heave_rate_mps: f64,
+    /// Pitch (rad, bow up).
+    pub pitch_rad: f64,
+    /// Pitch rate (rad/s).
+    pub pitch_rate_radps: f64,
+}
+
+/// The ship's inertial navigation and the data link: samples, noise and latency.
+#[derive(Debug, Clone)]
+pub struct ShipMotionSensor {
+    parameters: ShipMotionSensingParameters,
+    sigmas: [f64; 4],
+    streams: [NoiseStream; 4],
+    last_sample: Option<i64>,
+    in_transit: VecDeque<ShipMotionMeasurement>,
+}
+
+impl ShipMotionSensor {
+    /// A sensor with these parameters, its noise from the four `ship_sensor_*` streams of
+    /// `streams`.
+    pub fn new(
+        parameters: ShipMotionSensingParameters,
+        streams: &RandomStreams,
+    ) -> Result<Self, ParameterError> {
+        parameters.validate()?;
+        Ok(Self {
+            parameters,
+            sigmas: parameters.sigmas_si(),
+            streams: [
+                stream_names::SHIP_SENSOR_HEAVE,
+                stream_names::SHIP_SENSOR_HEAVE_RATE,
+                stream_names::SHIP_SENSOR_PITCH,
+                stream_names::SHIP_SENSOR_PITCH_RATE,
+            ]
+            .map(|name| streams.stream(name)),
+            last_sample: None,
+            in_transit: VecDeque::with_capacity(16),
+        })
+    }
+
+    /// The parameters.
+    pub fn parameters(&self) -> &ShipMotionSensingParameters {
+        &self.parameters
+    }
+
+    /// Whether a sample is due at the step from `time_s` (the first step at or after a
+    /// multiple of the sample period).
+    pub fn sample_due(&self, time_s: f64) -> bool {
+        // A hair above an integer counts as that integer: k·T computed as a multiple of
+        // the step may round below it.
+        let index = (time_s * self.parameters.sample_rate_hz + 1e-9).floor() as i64;
+        self.last_sample != Some(index)
+    }
+
+    /// Takes a sample of the true motion `truth` at `time_s` if one is due, drawing one
+    /// number from each channel's stream, and puts it on the data link.
+    pub fn sample(&mut self, time_s: f64, truth: &ShipMotionOutputs) {
+        if !self.sample_due(time_s) {
+            return;
+        }
+        self.last_sample = Some((time_s * self.parameters.sample_rate_hz + 1e-9).floor() as i64);
+        let mut noise = [0.0; 4];
+        for ((n, stream), sigma) in noise.iter_mut().zip(&mut self.streams).zip(self.sigmas) {
+            *n = sigma * stream.standard_normal();
+        }
+        self.in_transit.push_back(ShipMotionMeasurement {
+            time_s,
+            heave_m: truth.heave_m + noise[0],
+            heave_rate_mps: truth.heave_rate_mps + noise[1],
+            pitch_rad: truth.pitch_rad + noise[2],
+            pitch_rate_radps: truth.pitch_rate_radps + noise[3],
+        });
+    }
+
+    /// The oldest measurement that has arrived by `time_s` (sent at or before
+    /// `time_s` − latency), if any; call until `None` to take every arrival.
+    pub fn receive(&mut self, time_s: f64) -> Option<ShipMotionMeasurement> {
+        let arrived = self
+            .in_transit
+            .front()
+            .is_some_and(|m| m.time_s + self.parameters.latency_s <= time_s + 1e-9);
+        if arrived {
+            self.in_transit.pop_front()
+        } else {
+            None
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn truth(heave_m: f64) -> ShipMotionOutputs {
+        ShipMotionOutputs {
+            heave_m,
+            ..ShipMotionOutputs::default()
+        }
+    }
+
+    #[test]
+    fn samples_at_the_rate_and_delivers_after_the_latency() {
+        let mut sensor = ShipMotionSensor::new(
+            ShipMotionSensingParameters::default(),
+            &RandomStreams::new(1),
+        )
+        .expect("defaults are valid");
+        let mut arrivals = Vec::new();
+        for k in 0..200_u32 {
+            let t = f64::from(k) * 0.001;
+            sensor.sample(t, &truth(t));
+            while let Some(m) = sensor.receive(t) {
+                arrivals.push((t, m.time_s));
+            }
+        }
+        // 50 Hz: samples at 0, 20, 40, … ms; arriving 100 ms later, by 199 ms the
+        // samples of 0–80 ms have arrived (five of them).
+        let sent: Vec<f64> = arrivals.iter().map(|a| a.1).collect();
+        assert_eq!(sent.len(), 5, "{arrivals:?}");
+        for (i, (arrived, sent)) in arrivals.iter().enumerate() {
+            assert!((sent - 0.02 * i as f64).abs() < 1e-12);
+            assert!((arrived - sent - 0.1).abs() < 1e-12);
+        }
+    }
+
+    #[test]
+    fn noise_has_the_configured_standard_deviation() {
+        let parameters = ShipMotionSensingParameters {
+            latency_s: 0.0,
+            sample_rate_hz: 1000.0,
+            ..ShipMotionSensingParameters::default()
+        };
+        let mut sensor = ShipMotionSensor::new(parameters, &RandomStreams::new(2)).unwrap();
+        let n = 20_000;
+        let (mut sum_heave, mut sum_pitch) = (0.0, 0.0);
+        for k in 0..n {
+            let t = f64::from(k) * 0.001;
+            sensor.sample(t, &truth(0.0));
+            let m = sensor.receive(t).expect("no latency");
+            sum_heave += m.heave_m * m.heave_m;
+            sum_pitch += m.pitch_rad * m.pitch_rad;
+        }
+        // The sample variance of n normal draws has a relative standard error √(2/n) = 1 %.
+        let heave = (sum_heave / f64::from(n)).sqrt();
+        let pitch = (sum_pitch / f64::from(n)).sqrt();
+        assert!((heave / 0.05 - 1.0).abs() < 0.02, "{heave}");
+        assert!(
+            (pitch / 0.02_f64.to_radians() - 1.0).abs() < 0.02,
+            "{pitch}"
+        );
+    }
+
+    #[test]
+    fn a_perfect_or_absurd_sensor_is_refused_by_name() {
+        for (parameters, key) in [
+            (
+                ShipMotionSensingParameters {
+                    heave_sigma_m: 0.0,
+                    ..Default::default()
+                },
+                "environment.ship_sensing.heave_sigma_m",
+            ),
+            (
+                ShipMotionSensingParameters {
+                    latency_s: 10.0,
+                    ..Default::default()
+                },
+                "environment.ship_sensing.latency_s",
+            ),
+        ] {
+            let error = parameters.validate().unwrap_err();
+            assert_eq!(error.path, key);
+        }
+    }
+}

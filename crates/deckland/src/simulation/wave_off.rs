@@ -1,0 +1,109 @@
+//! The guidance computer's step and the wave-off decision in the loop (docs/model.md
+//! §5.7, §9): once per step the ship's sensed motion updates the deck-motion predictor,
+//! which gives the deck reference; the decision logic of
+//! [`crate::control::WaveOffParameters`] then reads the hook, the glide path and the deck
+//! forecast.
+
+use super::closed_loop::ClosedLoop;
+use super::deck_prediction::{DeckView, HookTrack};
+use super::outer_loops::OuterLoops;
+use crate::aircraft::AircraftState;
+use crate::control::{
+    DeckReference, FlightPathGenerator, WaveOffDecision, WaveOffInputs, WaveOffParameters,
+};
+use crate::environment::{DeckGeometry, ShipMotionState};
+
+impl ClosedLoop {
+    /// The guidance computer at the start of a step from `t` (state `x`): the deck
+    /// predictor observes the ship, and in an approach gives the deck reference held over
+    /// the step, on which the wave-off is decided (once).
+    pub(crate) fn guidance_computer_step(
+        &mut self,
+        t: f64,
+        x: &[f64],
+        aircraft: &AircraftState,
+        ship_state: &ShipMotionState,
+        dt: f64,
+    ) -> Option<DeckReference> {
+        let (pose, rate) = self.ship_pose(x, t);
+        let view = DeckView {
+            ship_model: &self.ship,
+            ship_state,
+            deck: &self.deck,
+            pose: &pose,
+            rate: &rate,
+        };
+        self.deck_predictor.observe(t, &view);
+        let OuterLoops::Approach { flight_path, .. } = &self.outer else {
+            return None;
+        };
+        let (sin_t, cos_t) = aircraft.theta_rad.sin_cos();
+        let (hook_x_m, hook_h_m) = self.hook.position_trig(aircraft, sin_t, cos_t);
+        let (hook_x_rate_mps, hook_climb_rate_mps) =
+            self.hook.velocity_trig(aircraft, sin_t, cos_t);
+        let track = HookTrack {
+            time_s: t,
+            x_m: hook_x_m,
+            x_rate_mps: hook_x_rate_mps,
+            dt,
+        };
+        let reference = self.deck_predictor.deck_reference(
+            &view,
+            self.layout.deck_predictor.of(x),
+            flight_path,
+            &track,
+        );
+        if self.waved_off.is_none() {
+            let hook = HookKinematics {
+                x_m: hook_x_m,
+                h_m: hook_h_m,
+                x_rate_mps: hook_x_rate_mps,
+                climb_rate_mps: hook_climb_rate_mps,
+            };
+            if let Some(decision) =
+                assess(&self.wave_off, flight_path, &self.deck, &reference, &hook)
+            {
+                self.waved_off = Some((t, decision));
+                self.unreported_wave_off = Some((t, decision));
+            }
+        }
+        Some(reference)
+    }
+}
+
+/// The hook's position and velocity (earth axes).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct HookKinematics {
+    pub x_m: f64,
+    pub h_m: f64,
+    pub x_rate_mps: f64,
+    pub climb_rate_mps: f64,
+}
+
+/// The decision for a hook at `hook` on the path of `flight_path` over the deck
+/// `reference` (which must carry a forecast: predictors without one never wave off).
+pub(crate) fn assess(
+    wave_off: &WaveOffParameters,
+    flight_path: &FlightPathGenerator,
+    deck: &DeckGeometry,
+    reference: &DeckReference,
+    hook: &HookKinematics,
+) -> Option<WaveOffDecision> {
+    if !wave_off.enabled {
+        return None;
+    }
+    let forecast = reference.forecast?;
+    let path = flight_path.reference(hook.x_m, hook.x_rate_mps, reference);
+    // The path is a straight line: at the ramp (mean position) it stands
+    // (ramp x − hook x)·tan Γ below its height over the hook.
+    let ramp_x_m = reference.mean_aim.x_m - deck.ramp_aft_of_aim_point_m;
+    wave_off.decide(&WaveOffInputs {
+        time_to_go_s: path.time_to_go_s,
+        glide_path_error_m: path.height_m - hook.h_m,
+        glide_path_error_rate_mps: path.climb_rate_mps - hook.climb_rate_mps,
+        path_height_at_ramp_m: path.height_m - (ramp_x_m - hook.x_m) * flight_path.tan_slope(),
+        hook_climb_rate_mps: hook.climb_rate_mps,
+        mean_landing_point_height_m: reference.mean_aim.h_m,
+        forecast,
+    })
+}
