@@ -239,17 +239,7 @@ pub fn merge_shards_text<'py>(
         });
     }
     let merged = merge_shards(parts).map_err(|e| value_error(format!("cannot merge: {e}")))?;
-    let expected = merged
-        .requested_runs
-        .saturating_mul(merged.controllers.len() as u64);
-    let summary = CampaignSummary::of_rows(
-        &merged.rows,
-        &merged.controllers,
-        merged.campaign_seed,
-        merged.requested_runs,
-        expected,
-        DEFAULT_TARGET_RATE,
-    );
+    let summary = CampaignSummary::of_merged(&merged, DEFAULT_TARGET_RATE);
     let mut table = Columns::with_capacity(merged.rows.len());
     for row in &merged.rows {
         table.push(row).map_err(value_error)?;

@@ -7,30 +7,9 @@
 
 mod common;
 
-use common::{deckland, scratch};
+use common::{assert_success, deckland, scratch, short_dispersed_scenario};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
-
-/// A short (500 m) adverse approach with every dispersion on, written to a temp file.
-fn short_dispersed_scenario(dir: &Path) -> String {
-    std::fs::create_dir_all(dir).unwrap();
-    let path = dir.join("short.toml");
-    std::fs::write(
-        &path,
-        "[approach]\nstart_range_m = 500.0\n\n[dispersion]\nstart_height_offset_sd_m = 1.0\n\
-         airspeed_error_sd_mps = 1.0\nsea_state_log_sd = 0.2\nwind_over_deck_sd_mps = 2.0\n",
-    )
-    .unwrap();
-    path.display().to_string()
-}
-
-fn assert_success(output: &Output) {
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-}
 
 fn stderr(output: &Output) -> String {
     String::from_utf8_lossy(&output.stderr).into_owned()

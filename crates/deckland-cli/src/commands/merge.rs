@@ -187,17 +187,7 @@ pub fn run(args: &MergeArgs) -> Result<()> {
         .map(PathBuf::from)
         .ok_or_else(|| anyhow!("no shard to merge"))?;
     let scenario = load_scenario_file(&first_folder.join("scenario.toml"))?;
-    let expected_rows = merged
-        .requested_runs
-        .saturating_mul(merged.controllers.len() as u64);
-    let summary = CampaignSummary::of_rows(
-        &merged.rows,
-        &merged.controllers,
-        merged.campaign_seed,
-        merged.requested_runs,
-        expected_rows,
-        DEFAULT_TARGET_RATE,
-    );
+    let summary = CampaignSummary::of_merged(&merged, DEFAULT_TARGET_RATE);
     let output = OutputDir::prepare("merge", args.output.out.as_deref(), args.output.force)?;
     let report = CampaignReport {
         scenario_file: scenario_file.clone(),

@@ -271,3 +271,26 @@ pub fn temporary_files(folder: &Path) -> Vec<String> {
         })
         .unwrap_or_default()
 }
+
+/// A short (500 m) adverse approach with every dispersion on, written to `dir/short.toml`;
+/// returns its path.
+pub fn short_dispersed_scenario(dir: &Path) -> String {
+    std::fs::create_dir_all(dir).expect("scratch folder");
+    let path = dir.join("short.toml");
+    std::fs::write(
+        &path,
+        "[approach]\nstart_range_m = 500.0\n\n[dispersion]\nstart_height_offset_sd_m = 1.0\n\
+         airspeed_error_sd_mps = 1.0\nsea_state_log_sd = 0.2\nwind_over_deck_sd_mps = 2.0\n",
+    )
+    .expect("scenario file");
+    path.display().to_string()
+}
+
+/// Fails with the command's standard error unless it succeeded.
+pub fn assert_success(output: &Output) {
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+}

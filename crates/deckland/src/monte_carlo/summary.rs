@@ -57,6 +57,22 @@ pub struct CampaignSummary {
 }
 
 impl CampaignSummary {
+    /// The summary of merged shards: complete when every run of every controller is
+    /// there, which [`super::merge_shards`] has checked.
+    pub fn of_merged(merged: &super::MergedCampaign, target_rate: f64) -> Self {
+        let expected_rows = merged
+            .requested_runs
+            .saturating_mul(merged.controllers.len() as u64);
+        Self::of_rows(
+            &merged.rows,
+            &merged.controllers,
+            merged.campaign_seed,
+            merged.requested_runs,
+            expected_rows,
+            target_rate,
+        )
+    }
+
     /// The summary of `rows` (any order of runs; each row's controller one of `labels`):
     /// `expected_rows` is how many a complete result holds, for `partial`.
     pub fn of_rows(
