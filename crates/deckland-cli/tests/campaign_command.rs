@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{assert_success, deckland, scratch, short_dispersed_scenario};
+use common::{assert_success, deckland, scratch, short_dispersed_scenario, signal_after};
 use serde_json::Value;
 use std::path::PathBuf;
 use std::process::Command;
@@ -220,13 +220,7 @@ fn an_interrupted_campaign_keeps_a_consistent_partial_result() {
         .stderr(std::process::Stdio::piped())
         .spawn()
         .unwrap();
-    std::thread::sleep(std::time::Duration::from_millis(1500));
-    let killed = Command::new("kill")
-        .args(["-INT", &child.id().to_string()])
-        .status()
-        .unwrap();
-    assert!(killed.success());
-    let output = child.wait_with_output().unwrap();
+    let output = signal_after(child, "INT", 1500);
     assert_eq!(
         output.status.code(),
         Some(130),

@@ -10,7 +10,7 @@ mod common;
 
 use common::{
     assert_finite_csv, assert_no_panic, assert_refused, assert_unique_keys, deckland, deckland_in,
-    scratch, temporary_files,
+    scratch, signal_after, temporary_files,
 };
 use serde_json::Value;
 use std::fs;
@@ -426,13 +426,7 @@ fn regression_kills_leave_no_temporary_files() {
         .stderr(Stdio::piped())
         .spawn()
         .unwrap();
-    std::thread::sleep(std::time::Duration::from_millis(1500));
-    let term = Command::new("kill")
-        .args(["-TERM", &child.id().to_string()])
-        .status()
-        .unwrap();
-    assert!(term.success());
-    let output = child.wait_with_output().unwrap();
+    let output = signal_after(child, "TERM", 1500);
     assert_eq!(output.status.code(), Some(130), "{output:?}");
     let summary: Value =
         serde_json::from_str(&fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();

@@ -7,7 +7,7 @@
 
 mod common;
 
-use common::{assert_success, deckland, scratch, short_dispersed_scenario};
+use common::{assert_success, deckland, scratch, short_dispersed_scenario, signal_after};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 
@@ -241,13 +241,7 @@ fn an_interrupted_shard_is_partial_and_refused() {
         .stderr(Stdio::null())
         .spawn()
         .unwrap();
-    std::thread::sleep(std::time::Duration::from_millis(1500));
-    let term = Command::new("kill")
-        .args(["-TERM", &child.id().to_string()])
-        .status()
-        .unwrap();
-    assert!(term.success());
-    let status = child.wait_with_output().unwrap().status;
+    let status = signal_after(child, "TERM", 1500).status;
     assert_eq!(status.code(), Some(130));
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(interrupted.join("summary.json")).unwrap())

@@ -294,3 +294,15 @@ pub fn assert_success(output: &Output) {
         String::from_utf8_lossy(&output.stderr)
     );
 }
+
+/// Sends `signal` (`"INT"`, `"TERM"`, …) to a running `child` after `after_ms`
+/// milliseconds, as a user or a scheduler would, and waits for it to end.
+pub fn signal_after(child: std::process::Child, signal: &str, after_ms: u64) -> Output {
+    std::thread::sleep(std::time::Duration::from_millis(after_ms));
+    let sent = Command::new("kill")
+        .args([format!("-{signal}"), child.id().to_string()])
+        .status()
+        .expect("kill runs");
+    assert!(sent.success(), "kill -{signal} failed");
+    child.wait_with_output().expect("the child ends")
+}
