@@ -17,9 +17,9 @@ mod wind;
 
 pub use deck::{DeckGeometry, EarthPoint, EarthVelocity, ShipPose, ShipPoseRate};
 pub use ship::{
-    heave_unit_intensity_variance, pitch_unit_intensity_variance, unit_intensity_state_covariance,
-    ShipMotion, ShipMotionOutputs, ShipMotionParameters, ShipMotionState, ShipNoise,
-    HEAVE_FILTER_GAIN, PITCH_FILTER_GAIN, SHAPING_FILTER_DENOMINATOR,
+    heave_unit_intensity_variance, pitch_unit_intensity_variance, shaping_filter_companion,
+    unit_intensity_state_covariance, ShipMotion, ShipMotionOutputs, ShipMotionParameters,
+    ShipMotionState, ShipNoise, HEAVE_FILTER_GAIN, PITCH_FILTER_GAIN, SHAPING_FILTER_DENOMINATOR,
 };
 pub use ship_prediction::{
     Matrix4Array, PredictedShipMotion, ShipMotionEstimate, ShipMotionForecast, ShipMotionPredictor,

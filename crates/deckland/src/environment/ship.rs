@@ -13,7 +13,7 @@
 //! intensity, σ²₁ (Lyapunov equation): q = RMS²/σ²₁. Heave is positive up; pitch θ_s is
 //! positive bow-up.
 
-use nalgebra::DMatrix;
+use nalgebra::{DMatrix, Matrix4};
 use serde::{Deserialize, Serialize};
 
 use super::deck::{ShipPose, ShipPoseRate};
@@ -151,16 +151,23 @@ pub struct ShipMotion {
     covariance_factor: [[f64; 4]; 4],
 }
 
-/// The companion matrix A and input B of one filter in controllable canonical form.
-fn canonical_form() -> (DMatrix<f64>, DMatrix<f64>) {
+/// The companion matrix A of one shaping filter in controllable canonical form, with
+/// the denominator D(s) of paper Eq. 15–16 in its last row (docs/model.md §3.1).
+pub fn shaping_filter_companion() -> Matrix4<f64> {
     let [d0, d1, d2, d3] = SHAPING_FILTER_DENOMINATOR;
     #[rustfmt::skip]
-    let a = DMatrix::from_row_slice(4, 4, &[
+    let a = Matrix4::new(
         0.0, 1.0, 0.0, 0.0,
         0.0, 0.0, 1.0, 0.0,
         0.0, 0.0, 0.0, 1.0,
         -d0, -d1, -d2, -d3,
-    ]);
+    );
+    a
+}
+
+/// The companion matrix A and input B of one filter in controllable canonical form.
+fn canonical_form() -> (DMatrix<f64>, DMatrix<f64>) {
+    let a = DMatrix::from_fn(4, 4, |i, j| shaping_filter_companion()[(i, j)]);
     let b = DMatrix::from_row_slice(4, 1, &[0.0, 0.0, 0.0, 1.0]);
     (a, b)
 }

@@ -18,8 +18,8 @@
 //! prediction, docs/model.md §3.6.
 
 use super::ship::{
-    unit_intensity_state_covariance, ShipMotion, ShipMotionState, HEAVE_FILTER_GAIN,
-    PITCH_FILTER_GAIN, SHAPING_FILTER_DENOMINATOR,
+    shaping_filter_companion, unit_intensity_state_covariance, ShipMotion, ShipMotionState,
+    HEAVE_FILTER_GAIN, PITCH_FILTER_GAIN,
 };
 use nalgebra::Matrix4;
 
@@ -113,15 +113,7 @@ impl ShipMotionPredictor {
     /// Tabulates the transitions for horizons from 0 to `max_horizon_s` (s); longer
     /// horizons are clamped to it.
     pub fn new(max_horizon_s: f64) -> Self {
-        let [d0, d1, d2, d3] = SHAPING_FILTER_DENOMINATOR;
-        #[rustfmt::skip]
-        let a = Matrix4::new(
-            0.0, 1.0, 0.0, 0.0,
-            0.0, 0.0, 1.0, 0.0,
-            0.0, 0.0, 0.0, 1.0,
-            -d0, -d1, -d2, -d3,
-        );
-        let step = (a * GRID_S).exp();
+        let step = (shaping_filter_companion() * GRID_S).exp();
         let count = (max_horizon_s.max(0.0) / GRID_S).ceil() as usize + 2;
         let mut transition = Matrix4::identity();
         let mut transitions = Vec::with_capacity(count);

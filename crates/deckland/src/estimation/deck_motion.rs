@@ -27,23 +27,10 @@
 use nalgebra::{Matrix2, Matrix2x4, Matrix4, Vector2, Vector4};
 
 use crate::environment::{
-    unit_intensity_state_covariance, Matrix4Array, ShipMotion, ShipMotionEstimate, ShipMotionState,
-    HEAVE_FILTER_GAIN, PITCH_FILTER_GAIN, SHAPING_FILTER_DENOMINATOR,
+    shaping_filter_companion, unit_intensity_state_covariance, Matrix4Array, ShipMotion,
+    ShipMotionEstimate, ShipMotionState, HEAVE_FILTER_GAIN, PITCH_FILTER_GAIN,
 };
 use crate::sensors::{ShipMotionMeasurement, ShipMotionSensingParameters};
-
-/// The companion matrix A of one shaping filter (docs/model.md §3.1).
-fn companion() -> Matrix4<f64> {
-    let [d0, d1, d2, d3] = SHAPING_FILTER_DENOMINATOR;
-    #[rustfmt::skip]
-    let a = Matrix4::new(
-        0.0, 1.0, 0.0, 0.0,
-        0.0, 0.0, 1.0, 0.0,
-        0.0, 0.0, 0.0, 1.0,
-        -d0, -d1, -d2, -d3,
-    );
-    a
-}
 
 fn to_array(m: &Matrix4<f64>) -> Matrix4Array {
     std::array::from_fn(|i| std::array::from_fn(|j| m[(i, j)]))
@@ -165,7 +152,7 @@ impl DeckMotionEstimator {
                 [pitch_sigma, pitch_rate_sigma],
             ),
             time_s: 0.0,
-            companion: companion(),
+            companion: shaping_filter_companion(),
             stationary,
             transitions: Vec::with_capacity(4),
             updates: 0,
