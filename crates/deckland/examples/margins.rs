@@ -1,6 +1,7 @@
 //! Loop-by-loop stability margins of the landing cascade of both hardware sets, linearised
 //! at the start of an ideal-conditions approach (docs/model.md §5), with each set's O-PD and
-//! PID and with the set's or the paper's outer-loop gains:
+//! PID and with the set's or the paper's outer-loop gains, and on the realistic set with
+//! the opt-in direct lift control (docs/model.md §5.9):
 //! `cargo run --release -p deckland --example margins`.
 
 use deckland::analysis::cascade_margins;
@@ -23,9 +24,18 @@ fn main() -> Result<(), SetupError> {
             HardwareSet::Paper => PidParameters::paper(),
         };
         for (pitch_name, pitch) in [("O-PD", opd), ("PID", PitchControllerParameters::Pid(pid))] {
-            for (gains_name, paper) in [("the set's", false), ("paper", true)] {
+            let variants = [
+                ("the set's", false, false),
+                ("paper", true, false),
+                ("the set's + direct lift", false, true),
+            ];
+            for (gains_name, paper, direct_lift) in variants {
+                if direct_lift && set == HardwareSet::Paper {
+                    continue;
+                }
                 let mut scenario = set.scenario();
                 scenario.control.pitch = pitch;
+                scenario.control.direct_lift.enabled = direct_lift;
                 if paper {
                     scenario.control.sink_rate = SinkRateControllerParameters::paper();
                     scenario.control.guidance = GuidanceParameters::paper();

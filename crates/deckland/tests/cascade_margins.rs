@@ -61,6 +61,30 @@ fn default_cascade_is_stable_with_bandwidth_separation_and_margins() {
     }
 }
 
+/// The opt-in direct lift control's default gains are the largest that keep every loop,
+/// its own included, at ≥ 45° and ≥ 6 dB with the others closed (docs/model.md §5.9);
+/// with four times K_h the guidance loop falls below 30° (docs/no-oracle-results.md).
+#[test]
+fn direct_lift_keeps_every_loop_at_45_degrees_and_6_db() {
+    let mut scenario = Scenario::default();
+    scenario.control.direct_lift.enabled = true;
+    let margins = cascade_margins(&scenario).unwrap();
+    assert_eq!(margins.len(), 5, "{margins:?}");
+    assert!(margins[0].closed_loop_max_real_part < 0.0, "{margins:?}");
+    for m in &margins {
+        assert!(m.phase_margin_deg.unwrap() >= 45.0, "{m:?}");
+        assert!(m.gain_margin_db.is_none_or(|g| g >= 6.0), "{m:?}");
+    }
+    let lift = margins_of(&margins, LoopBreak::DirectLiftCommand);
+    assert!(lift.crossover_radps.unwrap() > 2.0, "{lift:?}");
+    // Larger gains cost the outer loops their margins.
+    scenario.control.direct_lift.height_gain_per_m = 0.6;
+    scenario.control.direct_lift.height_rate_gain_s_per_m = 0.5;
+    let margins = cascade_margins(&scenario).unwrap();
+    let guidance = margins_of(&margins, LoopBreak::ClimbRateCommand);
+    assert!(guidance.phase_margin_deg.unwrap() < 30.0, "{guidance:?}");
+}
+
 #[test]
 fn paper_outer_loop_gains_give_an_unstable_cascade() {
     let mut scenario = Scenario::default();

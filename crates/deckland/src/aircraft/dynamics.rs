@@ -186,7 +186,7 @@ impl Aircraft {
     ) -> BodyAccelerations {
         let (sin_t, cos_t) = theta.sin_cos();
         let air = self.air_data_trig(u, w, sin_t, cos_t, wind);
-        self.body_accelerations_from(u, w, q, sin_t, cos_t, inputs, &air)
+        self.body_accelerations_from(u, w, q, sin_t, cos_t, inputs, &air, 0.0)
     }
 
     #[inline]
@@ -200,6 +200,7 @@ impl Aircraft {
         cos_t: f64,
         inputs: &AirframeInputs,
         air: &AirData,
+        lift_coefficient_increment: f64,
     ) -> BodyAccelerations {
         let p = &self.parameters;
         let q_hat = q * p.mean_chord_m / (2.0 * air.airspeed_mps);
@@ -213,7 +214,9 @@ impl Aircraft {
             &self.configuration,
         );
         let qs = air.dynamic_pressure_pa * p.wing_area_m2;
-        let lift = qs * c.lift;
+        // Direct lift control's increment acts as the wing's own lift does, normal to the
+        // air-relative velocity (docs/model.md §5.9).
+        let lift = qs * (c.lift + lift_coefficient_increment);
         let drag = qs * c.drag;
         let force_x = lift * sin_a - drag * cos_a + inputs.thrust_n;
         let force_z = -lift * cos_a - drag * sin_a;
@@ -264,6 +267,21 @@ impl Aircraft {
         sin_t: f64,
         cos_t: f64,
     ) -> AircraftState {
+        self.derivative_with_direct_lift(state, commands, air, sin_t, cos_t, 0.0)
+    }
+
+    /// As [`Aircraft::derivative_from`], with a lift-coefficient increment ΔC_L (–) from
+    /// direct lift control added to the wing's (docs/model.md §5.9).
+    #[inline]
+    pub fn derivative_with_direct_lift(
+        &self,
+        state: &AircraftState,
+        commands: &AircraftCommands,
+        air: &AirData,
+        sin_t: f64,
+        cos_t: f64,
+        lift_coefficient_increment: f64,
+    ) -> AircraftState {
         let inputs = AirframeInputs {
             elevator_rad: state.elevator_rad,
             thrust_n: state.total_thrust_n(),
@@ -276,6 +294,7 @@ impl Aircraft {
             cos_t,
             &inputs,
             air,
+            lift_coefficient_increment,
         );
         let (x_dot, h_dot) = state.earth_velocity_trig(sin_t, cos_t);
         let (elevator_rate, elevator_acceleration) = self.actuator.derivative(
@@ -341,117 +360,5 @@ impl OdeSystem<{ AircraftState::DIMENSION }> for OpenLoopAircraft {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The wind-axis equations of docs/model.md §2.4 written out independently, still air:
-    /// V̇ = (T cos α − D)/m − g sin γ, α̇ = q − (T sin α + L)/(mV) + g cos γ / V.
-    fn wind_axis_rates(
-        aircraft: &Aircraft,
-        v: f64,
-        alpha: f64,
-        theta: f64,
-        q: f64,
-        de: f64,
-        t: f64,
-    ) -> (f64, f64, f64) {
-        let p = aircraft.parameters();
-        let q_hat = q * p.mean_chord_m / (2.0 * v);
-        let c = aerodynamic_coefficients(alpha, de, q_hat, aircraft.configuration());
-        let qbar_s = 0.5 * p.air_density_kg_m3 * v * v * p.wing_area_m2;
-        let (lift, drag) = (qbar_s * c.lift, qbar_s * c.drag);
-        let gamma = theta - alpha;
-        let m = p.mass_kg;
-        let g = p.gravity_mps2;
-        let v_dot = (t * alpha.cos() - drag) / m - g * gamma.sin();
-        let alpha_dot = q - (t * alpha.sin() + lift) / (m * v) + g * gamma.cos() / v;
-        let q_dot = qbar_s * p.mean_chord_m * c.moment / p.pitch_inertia_kg_m2;
-        (v_dot, alpha_dot, q_dot)
-    }
-
-    #[test]
-    fn body_axis_equations_agree_with_wind_axis_form_in_still_air() {
-        let aircraft = Aircraft::default();
-        let cases = [
-            (69.1, 0.124, 0.124, 0.0, -0.14, 26_000.0),
-            (75.0, 0.05, -0.02, 0.1, 0.02, 60_000.0),
-            (55.0, 0.30, 0.20, -0.2, -0.3, 10_000.0),
-        ];
-        for (v, alpha, theta, q, de, t) in cases {
-            let (u, w) = (v * f64::cos(alpha), v * f64::sin(alpha));
-            let inputs = AirframeInputs {
-                elevator_rad: de,
-                thrust_n: t,
-            };
-            let (u_dot, w_dot, q_dot) =
-                aircraft.airframe_accelerations(u, w, q, theta, &inputs, &Wind::default());
-            let v_dot = (u * u_dot + w * w_dot) / v;
-            let alpha_dot = (u * w_dot - w * u_dot) / (v * v);
-            let (v_ref, a_ref, q_ref) = wind_axis_rates(&aircraft, v, alpha, theta, q, de, t);
-            assert!((v_dot - v_ref).abs() < 1e-10, "V̇ {v_dot} vs {v_ref}");
-            assert!(
-                (alpha_dot - a_ref).abs() < 1e-12,
-                "α̇ {alpha_dot} vs {a_ref}"
-            );
-            assert!((q_dot - q_ref).abs() < 1e-12);
-        }
-    }
-
-    #[test]
-    fn steady_uniform_wind_acts_only_through_air_relative_velocity() {
-        let aircraft = Aircraft::default();
-        let inputs = AirframeInputs {
-            elevator_rad: -0.1,
-            thrust_n: 30_000.0,
-        };
-        let (theta, alpha, v) = (0.1_f64, 0.12_f64, 69.0);
-        let still = aircraft.airframe_accelerations(
-            v * alpha.cos(),
-            v * alpha.sin(),
-            0.0,
-            theta,
-            &inputs,
-            &Wind::default(),
-        );
-        // The same air-relative velocity, carried by a 12 m/s headwind and 3 m/s updraft.
-        let wind = Wind {
-            x_mps: -12.0,
-            z_mps: -3.0,
-        };
-        let wind_xb = wind.x_mps * theta.cos() - wind.z_mps * theta.sin();
-        let wind_zb = wind.x_mps * theta.sin() + wind.z_mps * theta.cos();
-        let windy = aircraft.airframe_accelerations(
-            v * alpha.cos() + wind_xb,
-            v * alpha.sin() + wind_zb,
-            0.0,
-            theta,
-            &inputs,
-            &wind,
-        );
-        assert!((still.0 - windy.0).abs() < 1e-12);
-        assert!((still.1 - windy.1).abs() < 1e-12);
-        assert!((still.2 - windy.2).abs() < 1e-12);
-    }
-
-    #[test]
-    fn engines_lag_towards_half_the_total_command_each() {
-        let aircraft = Aircraft::default();
-        let state = AircraftState {
-            u_mps: 69.0,
-            engine_thrust_n: [10_000.0, 10_000.0],
-            ..Default::default()
-        };
-        let commands = AircraftCommands {
-            elevator_rad: 0.0,
-            thrust_n: 50_000.0,
-        };
-        let d = aircraft.derivative(&state, &commands, &Wind::default());
-        assert!((d.engine_thrust_n[0] - (25_000.0 - 10_000.0) / 0.625).abs() < 1e-9);
-        let over = AircraftCommands {
-            thrust_n: 1e9,
-            ..commands
-        };
-        let d = aircraft.derivative(&state, &over, &Wind::default());
-        assert!((d.engine_thrust_n[1] - (71_172.0 - 10_000.0) / 0.625).abs() < 1e-9);
-    }
-}
+#[path = "dynamics_tests.rs"]
+mod tests;

@@ -209,7 +209,8 @@ fn margins_from_response(cut: LoopBreak, omegas: &[f64], gains: &[Complex<f64>])
 }
 
 /// The margins of the pitch, sink-rate, guidance and speed loops of `scenario`'s cascade,
-/// linearised at the start of an approach in ideal conditions.
+/// and of its direct-lift loop when it flies one, linearised at the start of an approach
+/// in ideal conditions.
 pub fn cascade_margins(scenario: &Scenario) -> Result<Vec<LoopMargins>, SetupError> {
     let mut linear = scenario.ideal();
     linear.mission = crate::scenario::Mission::Approach;
@@ -232,6 +233,9 @@ pub fn cascade_margins(scenario: &Scenario) -> Result<Vec<LoopMargins>, SetupErr
         .map(|k| 10f64.powf(-3.0 + 5.0 * k as f64 / 1200.0))
         .collect();
     let mut all = Vec::new();
+    let direct_lift = nominal
+        .direct_lift_command
+        .map(|command| (LoopBreak::DirectLiftCommand, command));
     for (cut, u0) in [
         (LoopBreak::ElevatorCommand, nominal.elevator_command_rad),
         (LoopBreak::PitchCommand, nominal.theta_ref_rad),
@@ -241,7 +245,10 @@ pub fn cascade_margins(scenario: &Scenario) -> Result<Vec<LoopMargins>, SetupErr
             nominal.climb_rate_command_mps.unwrap_or_default(),
         ),
         (LoopBreak::ThrustCommand, nominal.thrust_command_n),
-    ] {
+    ]
+    .into_iter()
+    .chain(direct_lift)
+    {
         let model = linearise(system, &held, x0, cut, u0);
         let gains: Vec<Complex<f64>> = omegas
             .iter()

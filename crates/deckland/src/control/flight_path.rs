@@ -241,6 +241,9 @@ pub struct DeckReference {
     /// forecast the ship's motion ([`DeckMotionPredictor::forecasts`]); for the wave-off
     /// decision.
     pub forecast: Option<DeckForecast>,
+    /// The estimator's anchor height before its anchor filter (m), which direct lift
+    /// control flies to (docs/model.md §5.9); `None` for the other predictors.
+    pub unfiltered_aim_h_m: Option<f64>,
 }
 
 /// What a model-based predictor expects the deck to do while the hook closes on it (the

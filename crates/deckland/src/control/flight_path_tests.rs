@@ -20,6 +20,7 @@ fn deck(aim_h: f64, aim_h_rate: f64) -> DeckReference {
             h_mps: aim_h_rate,
         },
         forecast: None,
+        unfiltered_aim_h_m: None,
     }
 }
 

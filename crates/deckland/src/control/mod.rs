@@ -1,9 +1,11 @@
 //! Flight controllers of the landing cascade (docs/model.md §5; paper §4).
 //!
 //! Cascade: flight-path generator → guidance → sink-rate controller → [`pitch`]
-//! controller → elevator; in parallel the speed controller → thrust.
+//! controller → elevator; in parallel the speed controller → thrust and, in the
+//! realistic set, direct lift control from the glide-path error → lift.
 
 mod command_ramp;
+mod direct_lift;
 mod flight_path;
 mod guidance;
 mod loop_controller;
@@ -13,6 +15,7 @@ mod speed;
 mod wave_off;
 
 pub use command_ramp::CommandRamp;
+pub use direct_lift::DirectLiftParameters;
 pub use flight_path::{
     CompensationBlend, DeckForecast, DeckMotionFilter, DeckMotionPredictor, DeckReference,
     FlightPathGenerator, FlightPathParameters, PathReference,

@@ -23,8 +23,8 @@ use serde::{Deserialize, Serialize};
 use super::{Mission, PitchCommand, Scenario};
 use crate::control::pitch::{PidParameters, PitchControllerParameters};
 use crate::control::{
-    FlightPathParameters, SinkRateControllerParameters, SpeedControllerParameters,
-    WaveOffParameters,
+    DirectLiftParameters, FlightPathParameters, SinkRateControllerParameters,
+    SpeedControllerParameters, WaveOffParameters,
 };
 use crate::environment::WindParameters;
 
@@ -81,6 +81,7 @@ impl Scenario {
         scenario.control.flight_computer_rate_hz = None;
         scenario.control.flight_path = FlightPathParameters::paper();
         scenario.control.wave_off = WaveOffParameters::paper();
+        scenario.control.direct_lift = DirectLiftParameters::paper();
         scenario
     }
 

@@ -13,7 +13,7 @@ use crate::aircraft::{
 };
 use crate::control::pitch::PitchControllerParameters;
 use crate::control::{
-    FlightPathParameters, GuidanceParameters, SinkRateControllerParameters,
+    DirectLiftParameters, FlightPathParameters, GuidanceParameters, SinkRateControllerParameters,
     SpeedControllerParameters, WaveOffParameters,
 };
 use crate::environment::{DeckGeometry, ShipMotionParameters, WindParameters};
@@ -118,6 +118,8 @@ pub struct ControlSection {
     pub flight_path: FlightPathParameters,
     /// Automatic wave-off (docs/model.md §9).
     pub wave_off: WaveOffParameters,
+    /// Direct lift control (docs/model.md §5.9).
+    pub direct_lift: DirectLiftParameters,
 }
 
 impl Default for ControlSection {
@@ -131,6 +133,7 @@ impl Default for ControlSection {
             guidance: GuidanceParameters::default(),
             flight_path: FlightPathParameters::default(),
             wave_off: WaveOffParameters::default(),
+            direct_lift: DirectLiftParameters::default(),
         }
     }
 }
@@ -146,7 +149,8 @@ impl ControlSection {
         self.sink_rate.validate()?;
         self.guidance.validate()?;
         self.flight_path.validate()?;
-        self.wave_off.validate()
+        self.wave_off.validate()?;
+        self.direct_lift.validate()
     }
 }
 

@@ -9,13 +9,15 @@
 
 use super::deck_prediction::DeckPredictor;
 use super::flight_computer::{FlightComputer, HeldCommands};
-use super::layout::{Slot, StateLayout};
+pub use super::layout::LoopLayout;
 use super::outer_loops::{OuterLoopInputs, OuterLoops};
 use super::signals::Signals;
 use super::taps::Taps;
 use crate::aircraft::{Aircraft, AircraftCommands, AircraftState, HookGeometry, TrimPoint};
 use crate::control::pitch::{BuiltPitchLaw, ElevatorSaturation, PitchLaw, PitchLawInputs};
-use crate::control::{DeckReference, SpeedController, WaveOffDecision, WaveOffParameters};
+use crate::control::{
+    DeckReference, DirectLiftParameters, SpeedController, WaveOffDecision, WaveOffParameters,
+};
 use crate::environment::{
     steady_wake, DeckGeometry, ShipMotion, ShipMotionState, ShipNoise, ShipPose, ShipPoseRate,
     Wind, WindModel,
@@ -26,60 +28,6 @@ use crate::sensors::PitchSensor;
 
 /// Tolerance of "the elevator sits on a position limit" for the pitch laws (rad).
 const SATURATION_TOLERANCE_RAD: f64 = 1e-9;
-
-/// The slots of the loop's blocks in its state vector.
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct LoopLayout {
-    /// Every block, in order, with its state names.
-    pub states: StateLayout,
-    /// The aircraft plant ([`AircraftState`]).
-    pub aircraft: Slot,
-    /// The ship's heave and pitch shaping filters ([`ShipMotionState`]).
-    pub ship: Slot,
-    /// The pitch law's own states.
-    pub pitch_law: Slot,
-    /// The speed loop: ∫ airspeed error dt (m), and the filtered airspeed (m/s).
-    pub speed: Slot,
-    /// ∫ climb-rate error dt (m).
-    pub sink_rate: Slot,
-    /// ∫ hook height error dt (m·s).
-    pub guidance: Slot,
-    /// The deck-motion predictor's own states.
-    pub deck_predictor: Slot,
-}
-
-impl LoopLayout {
-    /// Lays out the blocks, given the state names of the blocks whose states vary.
-    pub fn new(
-        pitch_law: &[&'static str],
-        speed: &[&'static str],
-        deck_predictor: &[&'static str],
-    ) -> Self {
-        let mut states = StateLayout::new();
-        let aircraft = states.add("aircraft", &AircraftState::NAMES);
-        let ship = states.add("ship", &ShipMotionState::NAMES);
-        let pitch_law = states.add("pitch_law", pitch_law);
-        let speed = states.add("speed", speed);
-        let sink_rate = states.add("sink_rate", &["climb_rate_error_integral_m"]);
-        let guidance = states.add("guidance", &["height_error_integral_m_s"]);
-        let deck_predictor = states.add("deck_predictor", deck_predictor);
-        Self {
-            states,
-            aircraft,
-            ship,
-            pitch_law,
-            speed,
-            sink_rate,
-            guidance,
-            deck_predictor,
-        }
-    }
-
-    /// The number of states.
-    pub fn dimension(&self) -> usize {
-        self.states.dimension()
-    }
-}
 
 /// Inputs drawn or sampled once per step and held over its four RK4 stages.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -140,6 +88,8 @@ pub struct ClosedLoop {
     pub(crate) wave_off: WaveOffParameters,
     /// Whether the steady air wake is fed forward into the pitch command.
     pub(crate) wake_feedforward: bool,
+    /// Direct lift control, in an approach that flies it (docs/model.md §5.9).
+    pub(crate) direct_lift: Option<DirectLiftParameters>,
     /// The wave-off decision, once taken: its time (s) and why.
     pub(crate) waved_off: Option<(f64, WaveOffDecision)>,
     /// A decision taken while holding the inputs of a step, not yet reported as an event.
@@ -264,6 +214,7 @@ impl ClosedLoop {
         computer.commands = HeldCommands {
             elevator_rad: signals.elevator_command_rad,
             thrust_n: signals.thrust_command_n,
+            direct_lift: signals.direct_lift_command.unwrap_or(0.0),
         };
         held.commands = Some(computer.commands);
         self.computer = Some(computer);
@@ -375,9 +326,29 @@ impl ClosedLoop {
             elevator_rad: elevator_command_rad,
             thrust_n: thrust_command_n,
         };
-        let aircraft_rate = self
-            .aircraft
-            .derivative_from(a, &commands, &air, sin_t, cos_t);
+        // Direct lift control on the hook's height error to the path (docs/model.md §5.9).
+        let direct_lift = self.direct_lift.map(|law| {
+            let increment = layout.direct_lift.scalar(x);
+            let command = taps.direct_lift_command(match held.commands {
+                Some(commands) => commands.direct_lift,
+                None => {
+                    let error_rate = outer
+                        .path
+                        .map_or(0.0, |p| p.climb_rate_mps - hook_climb_rate_mps);
+                    law.command(outer.direct_lift_height_error_m, error_rate, held.wave_off)
+                }
+            });
+            rate[layout.direct_lift.offset] = law.increment_rate(increment, command);
+            (increment, command)
+        });
+        let aircraft_rate = self.aircraft.derivative_with_direct_lift(
+            a,
+            &commands,
+            &air,
+            sin_t,
+            cos_t,
+            direct_lift.map_or(0.0, |(increment, _)| increment),
+        );
         layout.aircraft.write_array(rate, &aircraft_rate.to_array());
         let ship_rate = self.ship.derivative(&ship_state, held.ship_noise);
         layout.ship.write_array(rate, &ship_rate.to_array());
@@ -435,6 +406,8 @@ impl ClosedLoop {
             ship_rate: pose_rate,
             aim_point,
             disturbance_estimate_radps2: self.pitch.disturbance_estimate_radps2(pitch_state),
+            direct_lift_coefficient: direct_lift.map(|(increment, _)| increment),
+            direct_lift_command: direct_lift.map(|(_, command)| command),
         }
     }
 

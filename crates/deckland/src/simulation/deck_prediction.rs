@@ -208,6 +208,8 @@ impl DeckPredictor {
         let aim_x_m = mean_aim.x_m + parameters.touchdown_correction_m;
         let time_to_go_s =
             flight_path.time_to_go_s(hook.x_m, hook.x_rate_mps, aim_x_m, mean_aim_velocity.x_mps);
+        // The estimator's anchor before its filter, for direct lift control.
+        let mut unfiltered_aim_h_m = None;
         let (aim, aim_velocity, forecast) = match self {
             Self::Oracle {
                 predictor,
@@ -262,6 +264,7 @@ impl DeckPredictor {
                     deck,
                 );
                 let target = ramp_aware_anchor(parameters, flight_path, deck, &forecast);
+                unfiltered_aim_h_m = Some(target);
                 let (anchor_h, anchor_rate) = block.smooth_anchor(target, hook.dt);
                 (
                     EarthPoint {
@@ -296,6 +299,7 @@ impl DeckPredictor {
             aim,
             aim_velocity,
             forecast,
+            unfiltered_aim_h_m,
         }
     }
 }

@@ -21,6 +21,8 @@ pub struct HeldCommands {
     pub elevator_rad: f64,
     /// Total thrust command (N).
     pub thrust_n: f64,
+    /// Direct lift control's lift-coefficient command (–), 0 without it.
+    pub direct_lift: f64,
 }
 
 /// The computer's frame clock and what it holds over a frame.

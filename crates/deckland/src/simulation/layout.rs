@@ -6,6 +6,9 @@
 //! integral against the O-PD's three observer states, a user's own law) changes nothing
 //! else.
 
+use crate::aircraft::AircraftState;
+use crate::environment::ShipMotionState;
+
 /// A block's place in the state vector: `len` states from `offset`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct Slot {
@@ -105,6 +108,72 @@ impl StateLayout {
             let i = index.checked_sub(b.slot.offset)?;
             b.names.get(i).map(|name| format!("{}.{name}", b.block))
         })
+    }
+}
+
+/// The slots of the loop's blocks in its state vector.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct LoopLayout {
+    /// Every block, in order, with its state names.
+    pub states: StateLayout,
+    /// The aircraft plant ([`AircraftState`]).
+    pub aircraft: Slot,
+    /// The ship's heave and pitch shaping filters ([`ShipMotionState`]).
+    pub ship: Slot,
+    /// The pitch law's own states.
+    pub pitch_law: Slot,
+    /// The speed loop: ∫ airspeed error dt (m), and the filtered airspeed (m/s).
+    pub speed: Slot,
+    /// ∫ climb-rate error dt (m).
+    pub sink_rate: Slot,
+    /// ∫ hook height error dt (m·s).
+    pub guidance: Slot,
+    /// The deck-motion predictor's own states.
+    pub deck_predictor: Slot,
+    /// Direct lift control's lift-coefficient increment (–); no state without it.
+    pub direct_lift: Slot,
+}
+
+impl LoopLayout {
+    /// Lays out the blocks, given the state names of the blocks whose states vary.
+    pub fn new(
+        pitch_law: &[&'static str],
+        speed: &[&'static str],
+        deck_predictor: &[&'static str],
+        direct_lift: bool,
+    ) -> Self {
+        let mut states = StateLayout::new();
+        let aircraft = states.add("aircraft", &AircraftState::NAMES);
+        let ship = states.add("ship", &ShipMotionState::NAMES);
+        let pitch_law = states.add("pitch_law", pitch_law);
+        let speed = states.add("speed", speed);
+        let sink_rate = states.add("sink_rate", &["climb_rate_error_integral_m"]);
+        let guidance = states.add("guidance", &["height_error_integral_m_s"]);
+        let deck_predictor = states.add("deck_predictor", deck_predictor);
+        let direct_lift = states.add(
+            "direct_lift",
+            if direct_lift {
+                &["lift_coefficient_increment"]
+            } else {
+                &[]
+            },
+        );
+        Self {
+            direct_lift,
+            states,
+            aircraft,
+            ship,
+            pitch_law,
+            speed,
+            sink_rate,
+            guidance,
+            deck_predictor,
+        }
+    }
+
+    /// The number of states.
+    pub fn dimension(&self) -> usize {
+        self.states.dimension()
     }
 }
 

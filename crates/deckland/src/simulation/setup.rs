@@ -387,10 +387,15 @@ pub(crate) fn build(
         Mission::SinkRate { altitude_m, .. } => (ship_initial_x_m - 20_000.0, altitude_m),
     };
 
+    // Direct lift control flies the glide path: only in an approach.
+    let direct_lift = (scenario.mission == Mission::Approach
+        && scenario.control.direct_lift.enabled)
+        .then_some(scenario.control.direct_lift);
     let layout = LoopLayout::new(
         pitch.state_names(),
         speed.state_names(),
         deck_predictor.state_names(),
+        direct_lift.is_some(),
     );
     let mut initial = vec![0.0; layout.dimension()];
     layout
@@ -447,6 +452,7 @@ pub(crate) fn build(
             && env.wind.steady_wake,
         waved_off: None,
         unreported_wave_off: None,
+        direct_lift,
     };
     Ok(Setup {
         system,

@@ -80,11 +80,15 @@ pub struct Signals {
     pub aim_point: EarthPoint,
     /// The pitch law's disturbance estimate (rad/s²), if it has one (the O-PD does).
     pub disturbance_estimate_radps2: Option<f64>,
+    /// Direct lift control's lift-coefficient increment ΔC_L (–); `None` without it.
+    pub direct_lift_coefficient: Option<f64>,
+    /// Direct lift control's command (–); `None` without it.
+    pub direct_lift_command: Option<f64>,
 }
 
 impl Signals {
     /// Every numeric signal with its name, `None` for those that do not apply.
-    pub fn named_values(&self) -> [(&'static str, Option<f64>); 35] {
+    pub fn named_values(&self) -> [(&'static str, Option<f64>); 37] {
         [
             ("time_s", Some(self.time_s)),
             ("x_m", Some(self.x_m)),
@@ -133,6 +137,8 @@ impl Signals {
                 "disturbance_estimate_radps2",
                 self.disturbance_estimate_radps2,
             ),
+            ("direct_lift_coefficient", self.direct_lift_coefficient),
+            ("direct_lift_command", self.direct_lift_command),
         ]
     }
 

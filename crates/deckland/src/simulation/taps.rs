@@ -20,6 +20,8 @@ pub enum LoopBreak {
     ClimbRateCommand,
     /// The thrust command (N): the speed loop.
     ThrustCommand,
+    /// Direct lift control's lift-coefficient command (–): the direct-lift height loop.
+    DirectLiftCommand,
 }
 
 /// What the loop does with the command it computed at each tap point; every method
@@ -46,6 +48,12 @@ pub trait Taps {
     /// The total thrust command (N) from the speed loop.
     #[inline(always)]
     fn thrust_command(&self, computed: f64) -> f64 {
+        computed
+    }
+
+    /// Direct lift control's lift-coefficient command (–).
+    #[inline(always)]
+    fn direct_lift_command(&self, computed: f64) -> f64 {
         computed
     }
 }
@@ -138,6 +146,10 @@ impl Taps for LoopCut {
 
     fn thrust_command(&self, computed: f64) -> f64 {
         self.tap(LoopBreak::ThrustCommand, computed)
+    }
+
+    fn direct_lift_command(&self, computed: f64) -> f64 {
+        self.tap(LoopBreak::DirectLiftCommand, computed)
     }
 }
 

@@ -1,0 +1,156 @@
+//! Direct lift control (DLC): lift changed at constant attitude by the wing's trailing-edge
+//! surfaces, the idea of the F/A-18E/F's Precision Landing Mode (docs/model.md §5.9).
+//!
+//! The pitch path moves the flight path only through α, about 2 s behind the pitch
+//! attitude (docs/model.md §5.5); in the last seconds of an approach the deck's predicted
+//! height changes faster than that. DLC adds a lift increment ΔC_L on the glide path's
+//! height error directly, in parallel with the cascade:
+//!
+//! ```text
+//! ΔC_L,cmd = clamp(K_h·e_h + K_ḣ·ė_h, −ΔC_L,max, +ΔC_L,max)      (wave-off: +ΔC_L,max)
+//! τ·ΔĊ_L   = ΔC_L,cmd − ΔC_L, with |ΔĊ_L| ≤ R
+//! ```
+//!
+//! e_h = h_ref − h_hook is the hook's height error to the path (m, positive below it) and
+//! ė_h its rate; the surfaces are a first-order lag τ with a rate limit R on the lift
+//! coefficient they produce. The cascade's integrators (sink rate, guidance) carry the
+//! steady state, so the increment returns to zero on a steady path, slowly. The lift acts
+//! normal to the air-relative velocity like the wing's own lift (docs/model.md §2.4). The
+//! surfaces' pitching moment is taken as cancelled by the stabilator interconnect that
+//! such a mode has, and their drag increment is neglected (the speed loop holds the
+//! airspeed); both are stated as assumptions in docs/model.md §5.9.
+
+use serde::{Deserialize, Serialize};
+
+use crate::parameters::{Bounds, ParameterError};
+
+/// Direct lift control's law and surfaces (docs/model.md §5.9).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct DirectLiftParameters {
+    /// Whether the approach flies with direct lift control; off in both hardware sets
+    /// (opt-in: with it no design yet meets both the loop margins and the safety outcomes
+    /// of the default, docs/no-oracle-results.md).
+    pub enabled: bool,
+    /// Lift-coefficient increment per metre of hook height error to the glide path,
+    /// K_h (1/m); 0.15, the largest with every loop of the cascade at ≥ 45° and ≥ 6 dB
+    /// (docs/landing-design.md).
+    pub height_gain_per_m: f64,
+    /// Lift-coefficient increment per m/s of the height error's rate, K_ḣ (s/m); 0.3.
+    pub height_rate_gain_s_per_m: f64,
+    /// Largest lift-coefficient increment either way, ΔC_L,max (–); 0.15, about 12 % of
+    /// the approach lift coefficient (1.24), ±0.12 g (an assumption, docs/model.md §5.9).
+    pub max_lift_coefficient_increment: f64,
+    /// Time constant τ of the surfaces and the lift's build-up (s); 0.1 s.
+    pub time_constant_s: f64,
+    /// Rate limit R of the lift-coefficient increment (1/s); 1.0 (full authority in
+    /// 0.15 s).
+    pub rate_limit_per_s: f64,
+}
+
+impl Default for DirectLiftParameters {
+    fn default() -> Self {
+        Self {
+            enabled: false,
+            height_gain_per_m: 0.15,
+            height_rate_gain_s_per_m: 0.3,
+            max_lift_coefficient_increment: 0.15,
+            time_constant_s: 0.1,
+            rate_limit_per_s: 1.0,
+        }
+    }
+}
+
+impl DirectLiftParameters {
+    /// The paper's set: no direct lift control.
+    pub fn paper() -> Self {
+        Self {
+            enabled: false,
+            ..Self::default()
+        }
+    }
+
+    /// Checks every value: gains 0–10, authority (0, 0.5], time constant 0.01–2 s, rate
+    /// limit (0, 20] per second.
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        const SECTION: &str = "control.direct_lift";
+        Bounds::closed(0.0, 10.0).check(SECTION, "height_gain_per_m", self.height_gain_per_m)?;
+        Bounds::closed(0.0, 10.0).check(
+            SECTION,
+            "height_rate_gain_s_per_m",
+            self.height_rate_gain_s_per_m,
+        )?;
+        Bounds::positive_up_to(0.5).check(
+            SECTION,
+            "max_lift_coefficient_increment",
+            self.max_lift_coefficient_increment,
+        )?;
+        Bounds::closed(0.01, 2.0).check(SECTION, "time_constant_s", self.time_constant_s)?;
+        Bounds::positive_up_to(20.0).check(SECTION, "rate_limit_per_s", self.rate_limit_per_s)
+    }
+
+    /// The commanded lift-coefficient increment for the hook's height error `error_m`
+    /// (m, positive below the path) and its rate (m/s); full authority up in a wave-off.
+    #[inline]
+    pub fn command(&self, error_m: f64, error_rate_mps: f64, wave_off: bool) -> f64 {
+        let limit = self.max_lift_coefficient_increment;
+        if wave_off {
+            return limit;
+        }
+        (self.height_gain_per_m * error_m + self.height_rate_gain_s_per_m * error_rate_mps)
+            .clamp(-limit, limit)
+    }
+
+    /// The rate of the lift-coefficient increment `increment` towards `command` (1/s):
+    /// the first-order lag, rate-limited.
+    #[inline]
+    pub fn increment_rate(&self, increment: f64, command: f64) -> f64 {
+        ((command - increment) / self.time_constant_s)
+            .clamp(-self.rate_limit_per_s, self.rate_limit_per_s)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn below_the_path_commands_more_lift_and_the_command_saturates() {
+        let dlc = DirectLiftParameters::default();
+        // 0.1 m below the path and sinking away from it at 0.1 m/s: 0.15·0.1 + 0.3·0.1.
+        assert!((dlc.command(0.1, 0.1, false) - 0.045).abs() < 1e-15);
+        assert!(dlc.command(-0.1, 0.0, false) < 0.0);
+        assert_eq!(dlc.command(10.0, 0.0, false), 0.15);
+        assert_eq!(dlc.command(-10.0, 0.0, false), -0.15);
+        assert_eq!(dlc.command(-10.0, 0.0, true), 0.15);
+    }
+
+    #[test]
+    fn the_surfaces_lag_and_are_rate_limited() {
+        let dlc = DirectLiftParameters::default();
+        // A small step: (0.01 − 0)/0.1 s = 0.1 per second, inside the limit.
+        assert!((dlc.increment_rate(0.0, 0.01) - 0.1).abs() < 1e-15);
+        // A full-authority step would ask 1.5 per second: held at 1.0.
+        assert_eq!(dlc.increment_rate(0.0, 0.15), 1.0);
+        assert_eq!(dlc.increment_rate(0.15, -0.15), -1.0);
+    }
+
+    #[test]
+    fn values_outside_their_range_are_named() {
+        let mut dlc = DirectLiftParameters {
+            max_lift_coefficient_increment: 0.0,
+            ..DirectLiftParameters::default()
+        };
+        let error = dlc.validate().expect_err("no authority is refused");
+        assert!(error
+            .to_string()
+            .contains("control.direct_lift.max_lift_coefficient_increment"));
+        dlc.max_lift_coefficient_increment = 0.15;
+        dlc.time_constant_s = f64::NAN;
+        assert!(dlc
+            .validate()
+            .expect_err("NaN is refused")
+            .to_string()
+            .contains("time_constant_s"));
+    }
+}

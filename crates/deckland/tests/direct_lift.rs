@@ -1,0 +1,97 @@
+//! Direct lift control (docs/model.md §5.9, opt-in) in the closed loop: it tightens the
+//! touchdowns in a moderate sea, it is absent unless enabled, and its increment stays
+//! within its authority.
+
+#![allow(clippy::unwrap_used)] // tests fail loudly by design
+
+use deckland::recording::{SummaryRecorder, TimeSeriesRecorder};
+use deckland::scenario::Scenario;
+use deckland::simulation::Simulation;
+
+/// The default (realistic) scenario in the moderate sea of docs/model.md §3.6.
+fn moderate_sea(seed: u64, direct_lift: bool) -> Scenario {
+    let mut scenario = Scenario {
+        seed,
+        ..Scenario::default()
+    };
+    scenario.environment.ship.heave_rms_m = 1.0;
+    scenario.environment.ship.pitch_rms_deg = 0.75;
+    scenario.control.direct_lift.enabled = direct_lift;
+    scenario
+}
+
+/// Standard deviation of the touchdown distances of seeds 1–40, over the runs that
+/// touched down.
+fn touchdown_spread(direct_lift: bool) -> (f64, usize) {
+    let distances: Vec<f64> = (1..=40)
+        .filter_map(|seed| {
+            let summary = Simulation::new(&moderate_sea(seed, direct_lift))
+                .unwrap()
+                .run(&mut SummaryRecorder);
+            summary.touchdown.map(|t| t.distance_from_aim_m)
+        })
+        .collect();
+    let n = distances.len() as f64;
+    let mean = distances.iter().sum::<f64>() / n;
+    let variance = distances.iter().map(|d| (d - mean).powi(2)).sum::<f64>() / (n - 1.0);
+    (variance.sqrt(), distances.len())
+}
+
+/// Over 1000 runs the moderate sea's touchdown σ falls from 10.1 m to 7.0 m with direct
+/// lift's default gains (docs/no-oracle-results.md); over 40 seeds the test asks for
+/// 15 % less.
+#[test]
+fn direct_lift_tightens_the_touchdowns_in_a_moderate_sea() {
+    let (with, n_with) = touchdown_spread(true);
+    let (without, n_without) = touchdown_spread(false);
+    assert!(n_with >= 30 && n_without >= 30, "{n_with}, {n_without}");
+    assert!(
+        with < 0.85 * without,
+        "touchdown σ {with:.2} m with direct lift against {without:.2} m without"
+    );
+}
+
+#[test]
+fn the_increment_stays_within_its_authority_and_returns_towards_zero() {
+    let scenario = moderate_sea(2, true);
+    let limit = scenario.control.direct_lift.max_lift_coefficient_increment;
+    let mut recorder = TimeSeriesRecorder::every(0.01);
+    Simulation::new(&scenario).unwrap().run(&mut recorder);
+    let increments: Vec<f64> = recorder
+        .samples
+        .iter()
+        .map(|s| s.direct_lift_coefficient.unwrap())
+        .collect();
+    assert!(increments.iter().all(|c| c.abs() <= limit + 1e-12));
+    // It works: the increment is used, but on the steady path far out (the first 10 s,
+    // before the deck-motion compensation) it stays small.
+    assert!(increments.iter().any(|c| c.abs() > 0.01));
+    let far_out = &increments[..1000];
+    assert!(
+        far_out.iter().all(|c| c.abs() < 0.5 * limit),
+        "largest far out: {}",
+        far_out.iter().fold(0.0_f64, |m, c| m.max(c.abs()))
+    );
+}
+
+#[test]
+fn it_flies_only_where_enabled() {
+    // Off in both hardware sets: no state, no signal.
+    for scenario in [Scenario::default(), Scenario::paper()] {
+        assert!(!scenario.control.direct_lift.enabled);
+        let simulation = Simulation::new(&scenario).unwrap();
+        assert_eq!(simulation.system().layout().direct_lift.len, 0);
+    }
+    let mut recorder = TimeSeriesRecorder::every(0.1);
+    Simulation::new(&Scenario::default())
+        .unwrap()
+        .run(&mut recorder);
+    assert!(recorder
+        .samples
+        .iter()
+        .all(|s| s.direct_lift_coefficient.is_none() && s.direct_lift_command.is_none()));
+    // Enabled, an approach has one state of its own.
+    let enabled = moderate_sea(1, true);
+    let simulation = Simulation::new(&enabled).unwrap();
+    assert_eq!(simulation.system().layout().direct_lift.len, 1);
+}
