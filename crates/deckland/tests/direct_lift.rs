@@ -1,6 +1,6 @@
-//! Direct lift control (docs/model.md §5.9, opt-in) in the closed loop: it tightens the
-//! touchdowns in a moderate sea, it is absent unless enabled, and its increment stays
-//! within its authority.
+//! Direct lift control (docs/model.md §5.9) in the closed loop: it tightens the touchdowns
+//! in a moderate sea, the paper's set flies without it, and its increment stays within
+//! its authority.
 
 #![allow(clippy::unwrap_used)] // tests fail loudly by design
 
@@ -75,23 +75,36 @@ fn the_increment_stays_within_its_authority_and_returns_towards_zero() {
 }
 
 #[test]
-fn it_flies_only_where_enabled() {
-    // Off in both hardware sets: no state, no signal.
-    for scenario in [Scenario::default(), Scenario::paper()] {
-        assert!(!scenario.control.direct_lift.enabled);
-        let simulation = Simulation::new(&scenario).unwrap();
-        assert_eq!(simulation.system().layout().direct_lift.len, 0);
-    }
+fn the_realistic_set_flies_it_and_the_papers_does_not() {
+    let default = Simulation::new(&Scenario::default()).unwrap();
+    assert_eq!(default.system().layout().direct_lift.len, 1);
+    let paper = Scenario::paper();
+    assert!(!paper.control.direct_lift.enabled);
+    assert_eq!(
+        Simulation::new(&paper)
+            .unwrap()
+            .system()
+            .layout()
+            .direct_lift
+            .len,
+        0
+    );
     let mut recorder = TimeSeriesRecorder::every(0.1);
-    Simulation::new(&Scenario::default())
-        .unwrap()
-        .run(&mut recorder);
+    Simulation::new(&paper).unwrap().run(&mut recorder);
     assert!(recorder
         .samples
         .iter()
         .all(|s| s.direct_lift_coefficient.is_none() && s.direct_lift_command.is_none()));
-    // Enabled, an approach has one state of its own.
-    let enabled = moderate_sea(1, true);
-    let simulation = Simulation::new(&enabled).unwrap();
-    assert_eq!(simulation.system().layout().direct_lift.len, 1);
+    // Nor does a pitch step, which has no glide path.
+    let mut step = Scenario::default();
+    step.mission = deckland::scenario::Mission::pitch_step(2.0, 6.0, Default::default());
+    assert_eq!(
+        Simulation::new(&step)
+            .unwrap()
+            .system()
+            .layout()
+            .direct_lift
+            .len,
+        0
+    );
 }

@@ -28,9 +28,8 @@ use crate::parameters::{Bounds, ParameterError};
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct DirectLiftParameters {
-    /// Whether the approach flies with direct lift control; off in both hardware sets
-    /// (opt-in: with it no design yet meets both the loop margins and the safety outcomes
-    /// of the default, docs/no-oracle-results.md).
+    /// Whether the approach flies with direct lift control; on in the realistic set, off
+    /// in the paper's (the paper has none).
     pub enabled: bool,
     /// Lift-coefficient increment per metre of hook height error to the glide path,
     /// K_h (1/m); 0.15, the largest with every loop of the cascade at ≥ 45° and ≥ 6 dB
@@ -51,7 +50,7 @@ pub struct DirectLiftParameters {
 impl Default for DirectLiftParameters {
     fn default() -> Self {
         Self {
-            enabled: false,
+            enabled: true,
             height_gain_per_m: 0.15,
             height_rate_gain_s_per_m: 0.3,
             max_lift_coefficient_increment: 0.15,
