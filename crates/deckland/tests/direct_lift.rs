@@ -96,8 +96,10 @@ fn the_realistic_set_flies_it_and_the_papers_does_not() {
         .iter()
         .all(|s| s.direct_lift_coefficient.is_none() && s.direct_lift_command.is_none()));
     // Nor does a pitch step, which has no glide path.
-    let mut step = Scenario::default();
-    step.mission = deckland::scenario::Mission::pitch_step(2.0, 6.0, Default::default());
+    let step = Scenario {
+        mission: deckland::scenario::Mission::pitch_step(2.0, 6.0, Default::default()),
+        ..Scenario::default()
+    };
     assert_eq!(
         Simulation::new(&step)
             .unwrap()
