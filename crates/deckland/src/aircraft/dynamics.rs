@@ -253,25 +253,13 @@ impl Aircraft {
     ) -> AircraftState {
         let (sin_t, cos_t) = state.theta_rad.sin_cos();
         let air = self.air_data_trig(state.u_mps, state.w_mps, sin_t, cos_t, wind);
-        self.derivative_from(state, commands, &air, sin_t, cos_t)
+        self.derivative_with_direct_lift(state, commands, &air, sin_t, cos_t, 0.0)
     }
 
     /// As [`Aircraft::derivative`], with the air data (computed with the same wind) and
-    /// sin θ, cos θ already at hand: the closed loop needs them for its own signals too.
-    #[inline]
-    pub fn derivative_from(
-        &self,
-        state: &AircraftState,
-        commands: &AircraftCommands,
-        air: &AirData,
-        sin_t: f64,
-        cos_t: f64,
-    ) -> AircraftState {
-        self.derivative_with_direct_lift(state, commands, air, sin_t, cos_t, 0.0)
-    }
-
-    /// As [`Aircraft::derivative_from`], with a lift-coefficient increment ΔC_L (–) from
-    /// direct lift control added to the wing's (docs/model.md §5.9).
+    /// sin θ, cos θ already at hand (the closed loop needs them for its own signals too),
+    /// and a lift-coefficient increment ΔC_L (–) from direct lift control added to the
+    /// wing's (docs/model.md §5.9; 0 without it).
     #[inline]
     pub fn derivative_with_direct_lift(
         &self,

@@ -332,10 +332,21 @@ impl ClosedLoop {
             let command = taps.direct_lift_command(match held.commands {
                 Some(commands) => commands.direct_lift,
                 None => {
+                    // The path moves with its anchor by the compensation weight
+                    // (FlightPathGenerator): on the unfiltered anchor it is this much higher.
+                    let unfiltered_shift_m = held
+                        .deck
+                        .and_then(|d| d.unfiltered_aim_h_m.map(|h| h - d.aim.h_m));
+                    let error_m = match (outer.path, unfiltered_shift_m) {
+                        (Some(path), Some(shift)) => {
+                            outer.height_error_m + path.compensation_weight * shift
+                        }
+                        _ => outer.height_error_m,
+                    };
                     let error_rate = outer
                         .path
                         .map_or(0.0, |p| p.climb_rate_mps - hook_climb_rate_mps);
-                    law.command(outer.direct_lift_height_error_m, error_rate, held.wave_off)
+                    law.command(error_m, error_rate, held.wave_off)
                 }
             });
             rate[layout.direct_lift.offset] = law.increment_rate(increment, command);

@@ -82,9 +82,6 @@ pub(crate) struct OuterLoopOutputs {
     pub height_error_m: f64,
     /// Climb-rate error (m/s), 0 without a sink-rate loop.
     pub climb_rate_error_mps: f64,
-    /// Height error of the hook to the path anchored on the estimator's unfiltered
-    /// anchor (m), which direct lift control flies; `height_error_m` where there is none.
-    pub direct_lift_height_error_m: f64,
 }
 
 impl OuterLoops {
@@ -166,15 +163,7 @@ impl OuterLoops {
                     (theta, command, Some(path), height_error, error)
                 }
             };
-        // The path moves with its anchor by the compensation weight (FlightPathGenerator):
-        // anchored on the unfiltered anchor it is this much higher.
-        let unfiltered_shift_m = deck.and_then(|d| d.unfiltered_aim_h_m.map(|h| h - d.aim.h_m));
-        let direct_lift_height_error_m = match (path, unfiltered_shift_m) {
-            (Some(path), Some(shift)) => height_error_m + path.compensation_weight * shift,
-            _ => height_error_m,
-        };
         OuterLoopOutputs {
-            direct_lift_height_error_m,
             theta_ref_rad: taps.pitch_command(theta_ref_rad),
             theta_ref_rate_radps: reference_rate,
             theta_ref_acceleration_radps2: reference_acceleration,
