@@ -114,6 +114,11 @@ pub struct FlightPathParameters {
     /// nominal clearance, keeping it lifts the path so often that a moderate sea boards
     /// 86 % instead of 95 %; docs/model.md §5.7).
     pub ramp_clearance_margin_m: f64,
+    /// With `ramp_aware`, shed the anchor's raise between the ramp and the aim point: the
+    /// path crosses the predicted ramp with the margin, then descends on a steeper last
+    /// segment to the predicted landing point instead of landing raise/tan Γ long
+    /// (docs/model.md §5.7); on in the realistic set.
+    pub descend_after_ramp: bool,
     /// Touchdown-point correction (m along the deck, positive forward): the path aims
     /// this far from the aim point, to cancel the air wake's systematic push of the
     /// touchdown forward (docs/model.md §5.7); measured in calm water. 0 in the paper's
@@ -139,6 +144,7 @@ impl Default for FlightPathParameters {
             anchor_filter_frequency_radps: 1.0,
             ramp_aware: true,
             ramp_clearance_margin_m: 2.5,
+            descend_after_ramp: true,
             touchdown_correction_m: 0.0,
             wake_feedforward: true,
         }
@@ -154,6 +160,7 @@ impl FlightPathParameters {
             deck_motion_predictor: DeckMotionPredictor::Oracle,
             compensation_blend: CompensationBlend::Linear,
             ramp_aware: false,
+            descend_after_ramp: false,
             touchdown_correction_m: 0.0,
             wake_feedforward: false,
             ..Self::default()

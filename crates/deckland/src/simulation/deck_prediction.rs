@@ -35,6 +35,10 @@ pub struct EstimatorPredictor {
     estimate: ShipMotionEstimate,
     /// The smoothed anchor height (m) and its rate (m/s); `None` before the first step.
     anchor: Option<(f64, f64)>,
+    /// The smoothed ramp-aware raise of the anchor (m) and its rate (m/s), through the
+    /// same filter, so that the path can shed it after the ramp; `None` before the first
+    /// step.
+    raise: Option<(f64, f64)>,
     anchor_frequency_radps: f64,
 }
 
@@ -54,6 +58,7 @@ impl EstimatorPredictor {
             predictor,
             estimate,
             anchor: None,
+            raise: None,
             anchor_frequency_radps,
         }
     }
@@ -67,21 +72,40 @@ impl EstimatorPredictor {
     /// exact solution of ä = ω²(target − a) − 2ω·ȧ (critically damped), so stable at
     /// any step.
     fn smooth_anchor(&mut self, target_m: f64, dt: f64) -> (f64, f64) {
-        let (height, rate) = match self.anchor {
-            None => (target_m, 0.0),
-            Some((height, rate)) => {
-                let omega = self.anchor_frequency_radps;
-                let error = height - target_m;
-                let b = rate + omega * error;
-                let decay = (-omega * dt).exp();
-                (
-                    target_m + (error + b * dt) * decay,
-                    (rate - omega * b * dt) * decay,
-                )
-            }
-        };
-        self.anchor = Some((height, rate));
-        (height, rate)
+        let next = critically_damped_step(self.anchor, target_m, self.anchor_frequency_radps, dt);
+        self.anchor = Some(next);
+        next
+    }
+
+    /// Moves the smoothed ramp-aware raise over `dt` towards `target_m`, through the
+    /// anchor's filter.
+    fn smooth_raise(&mut self, target_m: f64, dt: f64) -> (f64, f64) {
+        let next = critically_damped_step(self.raise, target_m, self.anchor_frequency_radps, dt);
+        self.raise = Some(next);
+        next
+    }
+}
+
+/// One step `dt` of the critically damped filter ä = ω²(target − a) − 2ω·ȧ from
+/// `state` (height, rate) towards `target_m` held over the step, by its exact solution;
+/// `None` starts on the target at rest.
+fn critically_damped_step(
+    state: Option<(f64, f64)>,
+    target_m: f64,
+    omega: f64,
+    dt: f64,
+) -> (f64, f64) {
+    match state {
+        None => (target_m, 0.0),
+        Some((height, rate)) => {
+            let error = height - target_m;
+            let b = rate + omega * error;
+            let decay = (-omega * dt).exp();
+            (
+                target_m + (error + b * dt) * decay,
+                (rate - omega * b * dt) * decay,
+            )
+        }
     }
 }
 
@@ -241,13 +265,23 @@ impl DeckPredictor {
                     closure,
                     deck,
                 );
-                let anchor_h = ramp_aware_anchor(parameters, flight_path, deck, &forecast);
+                let raised_h = ramp_aware_anchor(parameters, flight_path, deck, &forecast);
+                let raise_m = raised_h - forecast.landing_point_height_m;
+                let (share, share_rate) =
+                    raise_share(parameters, deck, aim_x_m - hook.x_m, closure);
                 (
                     EarthPoint {
                         x_m: mean_aim.x_m,
-                        h_m: anchor_h,
+                        h_m: if share < 1.0 {
+                            forecast.landing_point_height_m + share * raise_m
+                        } else {
+                            raised_h
+                        },
                     },
-                    mean_aim_velocity,
+                    EarthVelocity {
+                        x_mps: mean_aim_velocity.x_mps,
+                        h_mps: share_rate * raise_m,
+                    },
                     Some(forecast),
                 )
             }
@@ -264,8 +298,21 @@ impl DeckPredictor {
                     deck,
                 );
                 let target = ramp_aware_anchor(parameters, flight_path, deck, &forecast);
-                unfiltered_aim_h_m = Some(target);
-                let (anchor_h, anchor_rate) = block.smooth_anchor(target, hook.dt);
+                let (mut anchor_h, mut anchor_rate) = block.smooth_anchor(target, hook.dt);
+                let mut unfiltered = target;
+                if parameters.ramp_aware && parameters.descend_after_ramp {
+                    // The raise is filtered on its own (the filter is linear, so the
+                    // anchor's filter carries the landing point's and the raise's parts)
+                    // and shed between the ramp and the aim point.
+                    let raise_m = target - forecast.landing_point_height_m;
+                    let (raise_f, raise_rate) = block.smooth_raise(raise_m, hook.dt);
+                    let (share, share_rate) =
+                        raise_share(parameters, deck, aim_x_m - hook.x_m, closure);
+                    anchor_h -= (1.0 - share) * raise_f;
+                    anchor_rate += share_rate * raise_f - (1.0 - share) * raise_rate;
+                    unfiltered -= (1.0 - share) * raise_m;
+                }
+                unfiltered_aim_h_m = Some(unfiltered);
                 (
                     EarthPoint {
                         x_m: mean_aim.x_m,
@@ -355,77 +402,28 @@ fn ramp_aware_anchor(
     forecast.landing_point_height_m.max(floor_m)
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::control::FlightPathParameters;
-    use crate::environment::{ShipMotionParameters, ShipMotionPredictor};
-    use crate::random::RandomStreams;
-    use crate::sensors::ShipMotionSensingParameters;
-
-    fn estimator_block(frequency_radps: f64) -> EstimatorPredictor {
-        let ship = ShipMotion::new(ShipMotionParameters::default()).unwrap();
-        let sensing = ShipMotionSensingParameters::default();
-        EstimatorPredictor::new(
-            ShipMotionSensor::new(sensing, &RandomStreams::new(1)).unwrap(),
-            DeckMotionEstimator::new(&ship, &sensing),
-            ShipMotionPredictor::new(1.0),
-            frequency_radps,
-        )
-    }
-
-    /// The anchor filter's step response is the critically damped one,
-    /// a(t) = u − (u − a₀)·(1 + ωt)·e^(−ωt) from rest, whatever the step: one 0.5-s step
-    /// and 500 steps of 1 ms land on the closed form (by hand: ω = 4, t = 0.5 gives
-    /// 1 − 3·e⁻² = 0.593994 of the way to the target).
-    #[test]
-    fn the_anchor_filter_follows_the_critically_damped_step_response_at_any_step() {
-        let expected = 1.0 - 3.0 * (-2.0_f64).exp();
-        for steps in [1_u32, 500] {
-            let mut block = estimator_block(4.0);
-            block.smooth_anchor(0.0, 0.001); // starts at rest on 0
-            let dt = 0.5 / f64::from(steps);
-            let mut last = (0.0, 0.0);
-            for _ in 0..steps {
-                last = block.smooth_anchor(1.0, dt);
-            }
-            assert!((last.0 - expected).abs() < 1e-12, "{steps}: {last:?}");
-            // Rate: u·ω²·t·e^(−ωt) = 16·0.5·e⁻² = 1.082682 m/s.
-            assert!((last.1 - 8.0 * (-2.0_f64).exp()).abs() < 1e-12, "{last:?}");
-        }
-    }
-
-    fn forecast(landing_point_height_m: f64, ramp_height_m: f64) -> DeckForecast {
-        DeckForecast {
-            ramp_height_m,
-            landing_point_climb_rate_mps: 0.0,
-            landing_point_height_m,
-            pitch_rad: 0.0,
-        }
-    }
-
-    /// On a level deck the path already clears the ramp by 60·tan 3.5° = 3.6698 m > 2.5 m:
-    /// the anchor stays on the landing point. With the ramp 2 m higher than the landing
-    /// point (the ship bow down about 1.9°), the anchor rises to
-    /// ramp + 2.5 − 3.6698 = landing point + 0.8302 m.
-    #[test]
-    fn the_ramp_aware_anchor_rises_only_when_the_ramp_would_come_too_close() {
-        let deck = DeckGeometry::default();
-        let parameters = FlightPathParameters::default();
-        let generator = FlightPathGenerator::new(parameters).unwrap();
-        let rise = 60.0 * 3.5_f64.to_radians().tan();
-        let level = ramp_aware_anchor(&parameters, &generator, &deck, &forecast(20.0, 20.0));
-        assert_eq!(level, 20.0);
-        let pitched = ramp_aware_anchor(&parameters, &generator, &deck, &forecast(22.0, 24.0));
-        assert!((pitched - (24.0 + 2.5 - rise)).abs() < 1e-12, "{pitched}");
-        assert!((pitched - 22.0 - 0.8302).abs() < 1e-4, "{pitched}");
-        let unaware = FlightPathParameters {
-            ramp_aware: false,
-            ..parameters
-        };
-        assert_eq!(
-            ramp_aware_anchor(&unaware, &generator, &deck, &forecast(22.0, 24.0)),
-            22.0
-        );
+/// The share of the ramp-aware raise the path keeps for a hook `range_m` before the
+/// aim point, closing at `closure_mps`, and its rate (1/s). With `descend_after_ramp`
+/// the path keeps all of it up to the ramp and sheds it linearly from the ramp to the
+/// aim point: it crosses the ramp with the margin and still reaches the predicted landing
+/// point, on a steeper last segment, instead of landing raise/tan Γ long. Without, it
+/// keeps all of it.
+fn raise_share(
+    parameters: &FlightPathParameters,
+    deck: &DeckGeometry,
+    range_m: f64,
+    closure_mps: f64,
+) -> (f64, f64) {
+    let ramp_range_m = deck.ramp_aft_of_aim_point_m + parameters.touchdown_correction_m;
+    if !parameters.descend_after_ramp || range_m >= ramp_range_m || ramp_range_m <= 0.0 {
+        (1.0, 0.0)
+    } else if range_m <= 0.0 {
+        (0.0, 0.0)
+    } else {
+        (range_m / ramp_range_m, -closure_mps / ramp_range_m)
     }
 }
+
+#[cfg(test)]
+#[path = "deck_prediction_tests.rs"]
+mod tests;

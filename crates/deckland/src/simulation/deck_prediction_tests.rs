@@ -1,0 +1,108 @@
+//! Tests of the deck-motion predictor block (`deck_prediction.rs`).
+
+use super::*;
+use crate::control::FlightPathParameters;
+use crate::environment::{ShipMotionParameters, ShipMotionPredictor};
+use crate::random::RandomStreams;
+use crate::sensors::ShipMotionSensingParameters;
+
+fn estimator_block(frequency_radps: f64) -> EstimatorPredictor {
+    let ship = ShipMotion::new(ShipMotionParameters::default()).unwrap();
+    let sensing = ShipMotionSensingParameters::default();
+    EstimatorPredictor::new(
+        ShipMotionSensor::new(sensing, &RandomStreams::new(1)).unwrap(),
+        DeckMotionEstimator::new(&ship, &sensing),
+        ShipMotionPredictor::new(1.0),
+        frequency_radps,
+    )
+}
+
+/// The anchor filter's step response is the critically damped one,
+/// a(t) = u − (u − a₀)·(1 + ωt)·e^(−ωt) from rest, whatever the step: one 0.5-s step
+/// and 500 steps of 1 ms land on the closed form (by hand: ω = 4, t = 0.5 gives
+/// 1 − 3·e⁻² = 0.593994 of the way to the target).
+#[test]
+fn the_anchor_filter_follows_the_critically_damped_step_response_at_any_step() {
+    let expected = 1.0 - 3.0 * (-2.0_f64).exp();
+    for steps in [1_u32, 500] {
+        let mut block = estimator_block(4.0);
+        block.smooth_anchor(0.0, 0.001); // starts at rest on 0
+        let dt = 0.5 / f64::from(steps);
+        let mut last = (0.0, 0.0);
+        for _ in 0..steps {
+            last = block.smooth_anchor(1.0, dt);
+        }
+        assert!((last.0 - expected).abs() < 1e-12, "{steps}: {last:?}");
+        // Rate: u·ω²·t·e^(−ωt) = 16·0.5·e⁻² = 1.082682 m/s.
+        assert!((last.1 - 8.0 * (-2.0_f64).exp()).abs() < 1e-12, "{last:?}");
+    }
+}
+
+fn forecast(landing_point_height_m: f64, ramp_height_m: f64) -> DeckForecast {
+    DeckForecast {
+        ramp_height_m,
+        landing_point_climb_rate_mps: 0.0,
+        landing_point_height_m,
+        pitch_rad: 0.0,
+    }
+}
+
+/// On a level deck the path already clears the ramp by 60·tan 3.5° = 3.6698 m > 2.5 m:
+/// the anchor stays on the landing point. With the ramp 2 m higher than the landing
+/// point (the ship bow down about 1.9°), the anchor rises to
+/// ramp + 2.5 − 3.6698 = landing point + 0.8302 m.
+#[test]
+fn the_ramp_aware_anchor_rises_only_when_the_ramp_would_come_too_close() {
+    let deck = DeckGeometry::default();
+    let parameters = FlightPathParameters::default();
+    let generator = FlightPathGenerator::new(parameters).unwrap();
+    let rise = 60.0 * 3.5_f64.to_radians().tan();
+    let level = ramp_aware_anchor(&parameters, &generator, &deck, &forecast(20.0, 20.0));
+    assert_eq!(level, 20.0);
+    let pitched = ramp_aware_anchor(&parameters, &generator, &deck, &forecast(22.0, 24.0));
+    assert!((pitched - (24.0 + 2.5 - rise)).abs() < 1e-12, "{pitched}");
+    assert!((pitched - 22.0 - 0.8302).abs() < 1e-4, "{pitched}");
+    let unaware = FlightPathParameters {
+        ramp_aware: false,
+        ..parameters
+    };
+    assert_eq!(
+        ramp_aware_anchor(&unaware, &generator, &deck, &forecast(22.0, 24.0)),
+        22.0
+    );
+}
+
+/// With `descend_after_ramp`, the path of a raised anchor (the ramp 2 m above the
+/// landing point: raise r = 2 + 2.5 − 60·tan 3.5° = 0.8302 m) still crosses the ramp
+/// 2.5 m above it, then reaches the landing point itself: by hand, at the ramp
+/// (d = 60 m) the path stands LP + 0.8302 + 3.6698 = ramp + 2.5, half-way (d = 30 m)
+/// LP + 0.4151 + 1.8349 = LP + 2.25, at the aim point LP; the share sheds at
+/// closure/60 = 0.9 per s for a 54-m/s closure. Without it the raise is kept all the
+/// way (touchdown r/tan 3.5° = 13.6 m long).
+#[test]
+fn the_path_sheds_its_raise_between_the_ramp_and_the_aim_point() {
+    let deck = DeckGeometry::default();
+    let parameters = FlightPathParameters::default();
+    assert!(parameters.ramp_aware && parameters.descend_after_ramp);
+    let generator = FlightPathGenerator::new(parameters).unwrap();
+    let tan = generator.tan_slope();
+    let raised = ramp_aware_anchor(&parameters, &generator, &deck, &forecast(22.0, 24.0));
+    let raise = raised - 22.0;
+    let path_at = |d: f64| {
+        let (share, _) = raise_share(&parameters, &deck, d, 54.0);
+        22.0 + share * raise + d * tan
+    };
+    assert!((path_at(60.0) - 26.5).abs() < 1e-12, "{}", path_at(60.0));
+    assert!((path_at(120.0) - (26.5 + 60.0 * tan)).abs() < 1e-12);
+    assert!((path_at(30.0) - 24.25).abs() < 1e-12, "{}", path_at(30.0));
+    assert_eq!(path_at(0.0), 22.0);
+    assert_eq!(path_at(-5.0), 22.0 - 5.0 * tan);
+    assert_eq!(raise_share(&parameters, &deck, 30.0, 54.0), (0.5, -0.9));
+    assert_eq!(raise_share(&parameters, &deck, 90.0, 54.0), (1.0, 0.0));
+    let keep = FlightPathParameters {
+        descend_after_ramp: false,
+        ..parameters
+    };
+    assert_eq!(raise_share(&keep, &deck, 30.0, 54.0), (1.0, 0.0));
+    assert!((raise / tan - 13.57).abs() < 0.01, "{}", raise / tan);
+}
