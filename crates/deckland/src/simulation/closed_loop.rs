@@ -346,7 +346,17 @@ impl ClosedLoop {
                     let error_rate = outer
                         .path
                         .map_or(0.0, |p| p.climb_rate_mps - hook_climb_rate_mps);
-                    law.command(error_m, error_rate, held.wave_off)
+                    let command = law.command(error_m, error_rate, held.wave_off);
+                    // The flare on the deck forecast: the landing point's predicted climb
+                    // rate at touchdown less the hook's.
+                    match (outer.path, held.deck.and_then(|d| d.forecast)) {
+                        (Some(path), Some(forecast)) if !held.wave_off => law.flare(
+                            command,
+                            path.time_to_go_s,
+                            forecast.landing_point_climb_rate_mps - hook_climb_rate_mps,
+                        ),
+                        _ => command,
+                    }
                 }
             });
             rate[layout.direct_lift.offset] = law.increment_rate(increment, command);
