@@ -61,6 +61,10 @@ pub struct DirectLiftParameters {
     /// Lift-coefficient increment per m/s of predicted sink rate over the flare's limit
     /// (s/m); 0.3 (full authority at 0.5 m/s over).
     pub flare_gain_s_per_m: f64,
+    /// Share of the path's vertical acceleration fed forward as the lift that makes it,
+    /// ΔC_L,ff = f·m·ḧ_path/(q̄S) (–); 1, the exact inversion of the lift's effect, 0 none
+    /// (docs/model.md §5.9).
+    pub acceleration_feedforward: f64,
 }
 
 impl Default for DirectLiftParameters {
@@ -75,6 +79,7 @@ impl Default for DirectLiftParameters {
             flare_time_to_go_s: 2.0,
             flare_sink_rate_mps: 5.0,
             flare_gain_s_per_m: 0.3,
+            acceleration_feedforward: 1.0,
         }
     }
 }
@@ -89,7 +94,8 @@ impl DirectLiftParameters {
     }
 
     /// Checks every value: gains 0–10, authority (0, 0.5], time constant 0.01–2 s, rate
-    /// limit (0, 20] per second; the flare's window 0–10 s, limit (0, 20] m/s, gain 0–10.
+    /// limit (0, 20] per second; the flare's window 0–10 s, limit (0, 20] m/s, gain 0–10;
+    /// the acceleration feed-forward 0–2.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "control.direct_lift";
         Bounds::closed(0.0, 10.0).check(SECTION, "height_gain_per_m", self.height_gain_per_m)?;
@@ -111,19 +117,49 @@ impl DirectLiftParameters {
             "flare_sink_rate_mps",
             self.flare_sink_rate_mps,
         )?;
-        Bounds::closed(0.0, 10.0).check(SECTION, "flare_gain_s_per_m", self.flare_gain_s_per_m)
+        Bounds::closed(0.0, 10.0).check(SECTION, "flare_gain_s_per_m", self.flare_gain_s_per_m)?;
+        Bounds::closed(0.0, 2.0).check(
+            SECTION,
+            "acceleration_feedforward",
+            self.acceleration_feedforward,
+        )
     }
 
     /// The commanded lift-coefficient increment for the hook's height error `error_m`
-    /// (m, positive below the path) and its rate (m/s); full authority up in a wave-off.
+    /// (m, positive below the path) and its rate (m/s), with `feedforward` (the
+    /// increment that makes the path's acceleration, [`Self::feedforward`]) added; full
+    /// authority up in a wave-off.
     #[inline]
-    pub fn command(&self, error_m: f64, error_rate_mps: f64, wave_off: bool) -> f64 {
+    pub fn command(
+        &self,
+        error_m: f64,
+        error_rate_mps: f64,
+        feedforward: f64,
+        wave_off: bool,
+    ) -> f64 {
         let limit = self.max_lift_coefficient_increment;
         if wave_off {
             return limit;
         }
-        (self.height_gain_per_m * error_m + self.height_rate_gain_s_per_m * error_rate_mps)
+        (self.height_gain_per_m * error_m
+            + self.height_rate_gain_s_per_m * error_rate_mps
+            + feedforward)
             .clamp(-limit, limit)
+    }
+
+    /// The feed-forward increment for a path accelerating at `path_acceleration_mps2`
+    /// (m/s², up): f·m·ḧ/(q̄S) for an aircraft of `mass_kg` at dynamic pressure
+    /// `dynamic_pressure_pa` on `wing_area_m2`.
+    #[inline]
+    pub fn feedforward(
+        &self,
+        path_acceleration_mps2: f64,
+        mass_kg: f64,
+        dynamic_pressure_pa: f64,
+        wing_area_m2: f64,
+    ) -> f64 {
+        self.acceleration_feedforward * mass_kg * path_acceleration_mps2
+            / (dynamic_pressure_pa * wing_area_m2)
     }
 
     /// The flare on `command`: with `time_to_go_s` below the flare's window and the
@@ -157,11 +193,29 @@ mod tests {
     fn below_the_path_commands_more_lift_and_the_command_saturates() {
         let dlc = DirectLiftParameters::default();
         // 0.1 m below the path and sinking away from it at 0.1 m/s: 0.15·0.1 + 0.3·0.1.
-        assert!((dlc.command(0.1, 0.1, false) - 0.045).abs() < 1e-15);
-        assert!(dlc.command(-0.1, 0.0, false) < 0.0);
-        assert_eq!(dlc.command(10.0, 0.0, false), 0.15);
-        assert_eq!(dlc.command(-10.0, 0.0, false), -0.15);
-        assert_eq!(dlc.command(-10.0, 0.0, true), 0.15);
+        assert!((dlc.command(0.1, 0.1, 0.0, false) - 0.045).abs() < 1e-15);
+        assert!(dlc.command(-0.1, 0.0, 0.0, false) < 0.0);
+        assert_eq!(dlc.command(10.0, 0.0, 0.0, false), 0.15);
+        assert_eq!(dlc.command(-10.0, 0.0, 0.0, false), -0.15);
+        assert_eq!(dlc.command(-10.0, 0.0, 0.0, true), 0.15);
+    }
+
+    /// The feed-forward by hand: 15 000 kg accelerating at 1 m/s² needs 15 000 N of lift;
+    /// at q̄ = ½·1.33·69.1² = 3175.3 Pa on 37.16 m² that is ΔC_L = 0.12712; it adds to
+    /// the feedback within the authority, and a share of 0 removes it.
+    #[test]
+    fn the_feedforward_is_the_lift_that_makes_the_acceleration() {
+        let dlc = DirectLiftParameters::default();
+        let q = 0.5 * 1.33 * 69.1 * 69.1;
+        let ff = dlc.feedforward(1.0, 15_000.0, q, 37.16);
+        assert!((ff - 0.12712).abs() < 1e-5, "{ff}");
+        assert!((dlc.command(0.1, 0.0, ff, false) - (0.015 + ff)).abs() < 1e-15);
+        assert_eq!(dlc.command(0.5, 0.0, ff, false), 0.15);
+        let none = DirectLiftParameters {
+            acceleration_feedforward: 0.0,
+            ..dlc
+        };
+        assert_eq!(none.feedforward(1.0, 15_000.0, q, 37.16), 0.0);
     }
 
     /// The flare by hand: 1.5 s to go, 6 m/s predicted against the 5-m/s limit asks

@@ -251,6 +251,9 @@ pub struct DeckReference {
     /// The estimator's anchor height before its anchor filter (m), which direct lift
     /// control flies to (docs/model.md §5.9); `None` for the other predictors.
     pub unfiltered_aim_h_m: Option<f64>,
+    /// The estimator's filtered anchor's vertical acceleration (m/s², up), for direct
+    /// lift's feed-forward (docs/model.md §5.9); 0 for the other predictors.
+    pub aim_acceleration_mps2: f64,
 }
 
 /// What a model-based predictor expects the deck to do while the hook closes on it (the

@@ -21,6 +21,7 @@ fn deck(aim_h: f64, aim_h_rate: f64) -> DeckReference {
         },
         forecast: None,
         unfiltered_aim_h_m: None,
+        aim_acceleration_mps2: 0.0,
     }
 }
 

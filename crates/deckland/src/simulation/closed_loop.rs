@@ -346,7 +346,20 @@ impl ClosedLoop {
                     let error_rate = outer
                         .path
                         .map_or(0.0, |p| p.climb_rate_mps - hook_climb_rate_mps);
-                    let command = law.command(error_m, error_rate, held.wave_off);
+                    // The path accelerates with its anchor, by the compensation weight.
+                    let feedforward = match (outer.path, held.deck) {
+                        (Some(path), Some(deck)) => {
+                            let p = self.aircraft.parameters();
+                            law.feedforward(
+                                path.compensation_weight * deck.aim_acceleration_mps2,
+                                p.mass_kg,
+                                air.dynamic_pressure_pa,
+                                p.wing_area_m2,
+                            )
+                        }
+                        _ => 0.0,
+                    };
+                    let command = law.command(error_m, error_rate, feedforward, held.wave_off);
                     // The flare on the deck forecast: the landing point's predicted climb
                     // rate at touchdown less the hook's.
                     match (outer.path, held.deck.and_then(|d| d.forecast)) {

@@ -109,6 +109,11 @@ fn critically_damped_step(
     }
 }
 
+/// The filter's acceleration at (height, rate) towards `target_m` (m/s²).
+fn critically_damped_acceleration(state: (f64, f64), target_m: f64, omega: f64) -> f64 {
+    omega * omega * (target_m - state.0) - 2.0 * omega * state.1
+}
+
 /// How the landing point is predicted for the glide path, with the predictor's own state.
 #[derive(Debug, Clone)]
 pub enum DeckPredictor {
@@ -234,6 +239,7 @@ impl DeckPredictor {
             flight_path.time_to_go_s(hook.x_m, hook.x_rate_mps, aim_x_m, mean_aim_velocity.x_mps);
         // The estimator's anchor before its filter, for direct lift control.
         let mut unfiltered_aim_h_m = None;
+        let mut aim_acceleration_mps2 = 0.0;
         let (aim, aim_velocity, forecast) = match self {
             Self::Oracle {
                 predictor,
@@ -299,6 +305,9 @@ impl DeckPredictor {
                 );
                 let target = ramp_aware_anchor(parameters, flight_path, deck, &forecast);
                 let (mut anchor_h, mut anchor_rate) = block.smooth_anchor(target, hook.dt);
+                let omega = block.anchor_frequency_radps;
+                aim_acceleration_mps2 =
+                    critically_damped_acceleration((anchor_h, anchor_rate), target, omega);
                 let mut unfiltered = target;
                 if parameters.ramp_aware && parameters.descend_after_ramp {
                     // The raise is filtered on its own (the filter is linear, so the
@@ -310,6 +319,10 @@ impl DeckPredictor {
                         raise_share(parameters, deck, aim_x_m - hook.x_m, closure);
                     anchor_h -= (1.0 - share) * raise_f;
                     anchor_rate += share_rate * raise_f - (1.0 - share) * raise_rate;
+                    let raise_acceleration =
+                        critically_damped_acceleration((raise_f, raise_rate), raise_m, omega);
+                    aim_acceleration_mps2 +=
+                        2.0 * share_rate * raise_rate - (1.0 - share) * raise_acceleration;
                     unfiltered -= (1.0 - share) * raise_m;
                 }
                 unfiltered_aim_h_m = Some(unfiltered);
@@ -347,6 +360,7 @@ impl DeckPredictor {
             aim_velocity,
             forecast,
             unfiltered_aim_h_m,
+            aim_acceleration_mps2,
         }
     }
 }
