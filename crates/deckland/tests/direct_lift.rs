@@ -20,12 +20,14 @@ fn moderate_sea(seed: u64, direct_lift: bool) -> Scenario {
     scenario
 }
 
-/// Standard deviation of the touchdown distances of seeds 1–40, over the runs that
-/// touched down.
-fn touchdown_spread(direct_lift: bool) -> (f64, usize) {
+/// Standard deviation of the touchdown distances of seeds 1–40 in the moderate sea, with
+/// direct lift on or off and `configure` applied, over the runs that touched down.
+fn touchdown_spread(direct_lift: bool, configure: impl Fn(&mut Scenario)) -> (f64, usize) {
     let distances: Vec<f64> = (1..=40)
         .filter_map(|seed| {
-            let summary = Simulation::new(&moderate_sea(seed, direct_lift))
+            let mut scenario = moderate_sea(seed, direct_lift);
+            configure(&mut scenario);
+            let summary = Simulation::new(&scenario)
                 .unwrap()
                 .run(&mut SummaryRecorder);
             summary.touchdown.map(|t| t.distance_from_aim_m)
@@ -42,8 +44,8 @@ fn touchdown_spread(direct_lift: bool) -> (f64, usize) {
 /// 15 % less.
 #[test]
 fn direct_lift_tightens_the_touchdowns_in_a_moderate_sea() {
-    let (with, n_with) = touchdown_spread(true);
-    let (without, n_without) = touchdown_spread(false);
+    let (with, n_with) = touchdown_spread(true, |_| ());
+    let (without, n_without) = touchdown_spread(false, |_| ());
     assert!(n_with >= 30 && n_without >= 30, "{n_with}, {n_without}");
     assert!(
         with < 0.85 * without,
@@ -192,20 +194,10 @@ fn the_flare_lowers_the_hardest_touchdowns_in_the_papers_sea() {
 #[test]
 fn the_acceleration_feedforward_tightens_the_touchdowns_in_a_moderate_sea() {
     let spread = |share: f64| {
-        let distances: Vec<f64> = (1..=40)
-            .filter_map(|seed| {
-                let mut scenario = moderate_sea(seed, true);
-                scenario.control.direct_lift.acceleration_feedforward = share;
-                Simulation::new(&scenario)
-                    .unwrap()
-                    .run(&mut SummaryRecorder)
-                    .touchdown
-                    .map(|t| t.distance_from_aim_m)
-            })
-            .collect();
-        let n = distances.len() as f64;
-        let mean = distances.iter().sum::<f64>() / n;
-        (distances.iter().map(|d| (d - mean).powi(2)).sum::<f64>() / (n - 1.0)).sqrt()
+        touchdown_spread(true, |scenario| {
+            scenario.control.direct_lift.acceleration_feedforward = share;
+        })
+        .0
     };
     let (with, without) = (spread(1.0), spread(0.0));
     assert!(
