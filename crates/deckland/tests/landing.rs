@@ -258,3 +258,36 @@ fn regression_the_paper_set_flies_bit_for_bit_what_it_flew_before_the_estimator(
         );
     }
 }
+
+/// The steady air wake (an updraft of 1 m/s at the ship fading aft) floats the hook past
+/// the aim point; its feed-forward Δθ = W_z/V takes most of that out, and a lead of 2 s
+/// on it (the flight path's lag behind pitch) the rest (docs/model.md §5.7). Reference:
+/// the same approach with no wake at all. Still air otherwise, no deck motion, default
+/// hardware with direct lift.
+#[test]
+fn the_wake_feedforward_and_its_lead_take_the_float_out_of_the_steady_wake() {
+    let touchdown = |wake: bool, feedforward: bool, lead_s: f64| {
+        let mut scenario = Scenario::default();
+        scenario.environment.ship.heave_rms_m = 0.0;
+        scenario.environment.ship.pitch_rms_deg = 0.0;
+        scenario.environment.wind.turbulence = false;
+        scenario.environment.wind.periodic_wake = false;
+        scenario.environment.wind.steady_wake = wake;
+        scenario.control.flight_path.wake_feedforward = feedforward;
+        scenario.control.flight_path.wake_feedforward_lead_s = lead_s;
+        fly(&scenario).touchdown.unwrap().distance_from_aim_m
+    };
+    let reference = touchdown(false, true, 0.0);
+    let without = touchdown(true, false, 0.0) - reference;
+    let fed = touchdown(true, true, 0.0) - reference;
+    let led = touchdown(true, true, 2.0) - reference;
+    assert!(without > 2.0, "no feed-forward: {without:.2} m long");
+    assert!(
+        fed.abs() < 0.4 * without,
+        "feed-forward: {fed:.2} m against {without:.2}"
+    );
+    assert!(
+        led.abs() < 0.5 * fed.abs(),
+        "with the lead: {led:.2} m against {fed:.2}"
+    );
+}

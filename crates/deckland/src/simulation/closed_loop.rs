@@ -86,8 +86,9 @@ pub struct ClosedLoop {
     pub(crate) airspeed_reference_mps: f64,
     pub(crate) computer: Option<FlightComputer>,
     pub(crate) wave_off: WaveOffParameters,
-    /// Whether the steady air wake is fed forward into the pitch command.
-    pub(crate) wake_feedforward: bool,
+    /// The steady air wake fed forward into the pitch command, with this lead (s);
+    /// `None` when it is not.
+    pub(crate) wake_feedforward_lead_s: Option<f64>,
     /// Direct lift control, in an approach that flies it (docs/model.md §5.9).
     pub(crate) direct_lift: Option<DirectLiftParameters>,
     /// The wave-off decision, once taken: its time (s) and why.
@@ -266,14 +267,19 @@ impl ClosedLoop {
             hook_climb_rate_mps,
             sink_rate_integral_m: layout.sink_rate.scalar(x),
             guidance_integral_m_s: layout.guidance.scalar(x),
-            wake_pitch_feedforward_rad: if self.wake_feedforward {
-                // Δθ = W_z/V: air sinking (W_z > 0) is climbed against (docs/model.md §5.7).
-                steady_wake(distance_aft_m).z_mps
-                    * self.wind.parameters().wake_weight(distance_aft_m)
-                    / air.airspeed_mps
-            } else {
-                0.0
-            },
+            wake_pitch_feedforward_rad: self.wake_feedforward_lead_s.map_or(0.0, |lead_s| {
+                // Δθ = (W_z + τ·dW_z/dt)/V: air sinking (W_z > 0) is climbed against, led
+                // by the path's lag behind pitch (docs/model.md §5.7).
+                let wake_z = |d: f64| steady_wake(d).z_mps * self.wind.parameters().wake_weight(d);
+                let mut feedforward = wake_z(distance_aft_m);
+                if lead_s > 0.0 {
+                    let (x_rate_mps, _) = a.earth_velocity_trig(sin_t, cos_t);
+                    let distance_rate_mps = pose_rate.pitch_centre_x_rate_mps - x_rate_mps;
+                    let slope = wake_z(distance_aft_m + 0.5) - wake_z(distance_aft_m - 0.5);
+                    feedforward += lead_s * slope * distance_rate_mps;
+                }
+                feedforward / air.airspeed_mps
+            }),
         };
         let outer = self
             .outer

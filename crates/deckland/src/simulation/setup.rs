@@ -447,9 +447,10 @@ pub(crate) fn build(
             .flight_computer_rate_hz
             .map(|rate| FlightComputer::new(rate, initial.len())),
         wave_off: scenario.control.wave_off,
-        wake_feedforward: scenario.mission == Mission::Approach
+        wake_feedforward_lead_s: (scenario.mission == Mission::Approach
             && flight_path.wake_feedforward
-            && env.wind.steady_wake,
+            && env.wind.steady_wake)
+            .then_some(flight_path.wake_feedforward_lead_s),
         waved_off: None,
         unreported_wave_off: None,
         direct_lift,
