@@ -40,8 +40,9 @@ pub struct WaveOffParameters {
     /// Time to go (s) after which the aircraft is committed; 2.5 s, about 1.4 s before
     /// the hook crosses the ramp (a project choice: engines spool with a 0.625-s lag, and
     /// pitching up first swings the hook, 7 m aft of the CG, down, so a wave-off begun
-    /// within a second of the ramp brings the hook closer to it: with 1.5 s, all 10 ramp
-    /// strikes in 1000 approaches in the paper's sea followed a wave-off decision, against
+    /// within a second of the ramp brings the hook closer to it: with 1.5 s (and the
+    /// descent after the ramp), all 10 ramp strikes in 1000 approaches in the paper's sea
+    /// followed a wave-off decision, against
     /// 3 strikes, none after one, with 2.5 s; over 3000 approaches 23 against 21, with
     /// half the wave-offs; docs/no-oracle-results.md).
     pub decision_time_to_go_s: f64,

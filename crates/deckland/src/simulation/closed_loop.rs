@@ -254,7 +254,7 @@ impl ClosedLoop {
             .air_data_trig(a.u_mps, a.w_mps, sin_t, cos_t, &wind);
         let (hook_x_m, hook_h_m) = self.hook.position_trig(a, sin_t, cos_t);
         let (hook_x_rate_mps, hook_climb_rate_mps) = self.hook.velocity_trig(a, sin_t, cos_t);
-        let (_, climb_rate_mps) = a.earth_velocity_trig(sin_t, cos_t);
+        let (x_rate_mps, climb_rate_mps) = a.earth_velocity_trig(sin_t, cos_t);
 
         // Outer loops: flight path → guidance → sink rate → θ_ref (docs/model.md §5).
         let outer_inputs = OuterLoopInputs {
@@ -273,7 +273,6 @@ impl ClosedLoop {
                 let wake_z = |d: f64| steady_wake(d).z_mps * self.wind.parameters().wake_weight(d);
                 let mut feedforward = wake_z(distance_aft_m);
                 if lead_s > 0.0 {
-                    let (x_rate_mps, _) = a.earth_velocity_trig(sin_t, cos_t);
                     let distance_rate_mps = pose_rate.pitch_centre_x_rate_mps - x_rate_mps;
                     let slope = wake_z(distance_aft_m + 0.5) - wake_z(distance_aft_m - 0.5);
                     feedforward += lead_s * slope * distance_rate_mps;
@@ -338,43 +337,38 @@ impl ClosedLoop {
             let command = taps.direct_lift_command(match held.commands {
                 Some(commands) => commands.direct_lift,
                 None => {
-                    // The path moves with its anchor by the compensation weight
-                    // (FlightPathGenerator): on the unfiltered anchor it is this much higher.
-                    let unfiltered_shift_m = held
-                        .deck
-                        .and_then(|d| d.unfiltered_aim_h_m.map(|h| h - d.aim.h_m));
-                    let error_m = match (outer.path, unfiltered_shift_m) {
-                        (Some(path), Some(shift)) => {
-                            outer.height_error_m + path.compensation_weight * shift
-                        }
-                        _ => outer.height_error_m,
-                    };
                     let error_rate = outer
                         .path
                         .map_or(0.0, |p| p.climb_rate_mps - hook_climb_rate_mps);
-                    // The path accelerates with its anchor, by the compensation weight.
-                    let feedforward = match (outer.path, held.deck) {
+                    match (outer.path, held.deck) {
                         (Some(path), Some(deck)) => {
+                            // The path moves with its anchor by the compensation weight
+                            // (FlightPathGenerator): on the unfiltered anchor it is this
+                            // much higher, and it accelerates with the filtered one.
+                            let error_m = outer.height_error_m
+                                + deck
+                                    .unfiltered_aim_h_m
+                                    .map_or(0.0, |h| path.compensation_weight * (h - deck.aim.h_m));
                             let p = self.aircraft.parameters();
-                            law.feedforward(
+                            let feedforward = law.feedforward(
                                 path.compensation_weight * deck.aim_acceleration_mps2,
                                 p.mass_kg,
                                 air.dynamic_pressure_pa,
                                 p.wing_area_m2,
-                            )
+                            );
+                            let command =
+                                law.command(error_m, error_rate, feedforward, held.wave_off);
+                            // The flare on the deck forecast: the landing point's predicted
+                            // climb rate at touchdown less the hook's.
+                            deck.forecast.map_or(command, |forecast| {
+                                law.flare(
+                                    command,
+                                    path.time_to_go_s,
+                                    forecast.landing_point_climb_rate_mps - hook_climb_rate_mps,
+                                )
+                            })
                         }
-                        _ => 0.0,
-                    };
-                    let command = law.command(error_m, error_rate, feedforward, held.wave_off);
-                    // The flare on the deck forecast: the landing point's predicted climb
-                    // rate at touchdown less the hook's.
-                    match (outer.path, held.deck.and_then(|d| d.forecast)) {
-                        (Some(path), Some(forecast)) if !held.wave_off => law.flare(
-                            command,
-                            path.time_to_go_s,
-                            forecast.landing_point_climb_rate_mps - hook_climb_rate_mps,
-                        ),
-                        _ => command,
+                        _ => law.command(outer.height_error_m, error_rate, 0.0, held.wave_off),
                     }
                 }
             });
