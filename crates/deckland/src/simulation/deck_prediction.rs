@@ -6,12 +6,14 @@
 //!   its estimate at the hook's touchdown and ramp-crossing times, the data link's
 //!   latency added to the horizon. The anchor passes through a critically damped filter
 //!   so that each 50-Hz update moves the path smoothly.
-//! - `oracle`: the same forecast from the ship model's *true* state (studies only).
+//! - `oracle`: the same forecast and the same anchor from the ship model's *true* state
+//!   (studies only: the two differ only in what they know).
 //! - `filter_lead`: a low-pass filter on the landing point's height with a lead.
 //!
 //! With `ramp_aware` the predicted anchor is raised, where needed, so that the path
 //! crosses the predicted ramp `ramp_clearance_margin_m` above it.
 
+use super::anchor_shaping::AnchorShaping;
 use crate::control::{
     DeckForecast, DeckMotionFilter, DeckReference, FlightPathGenerator, FlightPathParameters,
 };
@@ -33,13 +35,7 @@ pub struct EstimatorPredictor {
     estimator: DeckMotionEstimator,
     predictor: ShipMotionPredictor,
     estimate: ShipMotionEstimate,
-    /// The smoothed anchor height (m) and its rate (m/s); `None` before the first step.
-    anchor: Option<(f64, f64)>,
-    /// The smoothed ramp-aware raise of the anchor (m) and its rate (m/s), through the
-    /// same filter, so that the path can shed it after the ramp; `None` before the first
-    /// step.
-    raise: Option<(f64, f64)>,
-    anchor_frequency_radps: f64,
+    shaping: AnchorShaping,
 }
 
 impl EstimatorPredictor {
@@ -57,9 +53,7 @@ impl EstimatorPredictor {
             estimator,
             predictor,
             estimate,
-            anchor: None,
-            raise: None,
-            anchor_frequency_radps,
+            shaping: AnchorShaping::new(anchor_frequency_radps),
         }
     }
 
@@ -67,51 +61,6 @@ impl EstimatorPredictor {
     pub fn estimator(&self) -> &DeckMotionEstimator {
         &self.estimator
     }
-
-    /// Moves the smoothed anchor over `dt` towards `target_m`, held over the step: the
-    /// exact solution of ä = ω²(target − a) − 2ω·ȧ (critically damped), so stable at
-    /// any step.
-    fn smooth_anchor(&mut self, target_m: f64, dt: f64) -> (f64, f64) {
-        let next = critically_damped_step(self.anchor, target_m, self.anchor_frequency_radps, dt);
-        self.anchor = Some(next);
-        next
-    }
-
-    /// Moves the smoothed ramp-aware raise over `dt` towards `target_m`, through the
-    /// anchor's filter.
-    fn smooth_raise(&mut self, target_m: f64, dt: f64) -> (f64, f64) {
-        let next = critically_damped_step(self.raise, target_m, self.anchor_frequency_radps, dt);
-        self.raise = Some(next);
-        next
-    }
-}
-
-/// One step `dt` of the critically damped filter ä = ω²(target − a) − 2ω·ȧ from
-/// `state` (height, rate) towards `target_m` held over the step, by its exact solution;
-/// `None` starts on the target at rest.
-fn critically_damped_step(
-    state: Option<(f64, f64)>,
-    target_m: f64,
-    omega: f64,
-    dt: f64,
-) -> (f64, f64) {
-    match state {
-        None => (target_m, 0.0),
-        Some((height, rate)) => {
-            let error = height - target_m;
-            let b = rate + omega * error;
-            let decay = (-omega * dt).exp();
-            (
-                target_m + (error + b * dt) * decay,
-                (rate - omega * b * dt) * decay,
-            )
-        }
-    }
-}
-
-/// The filter's acceleration at (height, rate) towards `target_m` (m/s²).
-fn critically_damped_acceleration(state: (f64, f64), target_m: f64, omega: f64) -> f64 {
-    omega * omega * (target_m - state.0) - 2.0 * omega * state.1
 }
 
 /// How the landing point is predicted for the glide path, with the predictor's own state.
@@ -120,13 +69,15 @@ pub enum DeckPredictor {
     /// The Kalman estimate of the sensed ship motion, forecast to touchdown.
     Estimator(Box<EstimatorPredictor>),
     /// The minimum-variance prediction at the estimated touchdown time from the ship
-    /// model's *true* state: an oracle, no state of its own. `forecasting` also gives the
-    /// ramp and the deck's rate (for ramp-aware guidance and the wave-off decision).
+    /// model's *true* state: an oracle. With `shaping` it also forecasts the ramp and the
+    /// deck's rate (for ramp-aware guidance and the wave-off decision) and shapes the
+    /// anchor as the estimator does; without, it is the paper's (the prediction itself,
+    /// with rate zero).
     Oracle {
         /// The tabulated transitions.
         predictor: ShipMotionPredictor,
-        /// Whether to forecast the ramp and the deck's rate.
-        forecasting: bool,
+        /// The estimator's anchor shaping, or `None` for the paper's oracle.
+        shaping: Option<AnchorShaping>,
     },
     /// A critically damped low-pass filter on the landing point's height (two states)
     /// with a linear lead.
@@ -233,17 +184,31 @@ impl DeckPredictor {
             x_mps: rate.pitch_centre_x_rate_mps,
             h_mps: 0.0,
         };
-        let parameters = flight_path.parameters();
-        let aim_x_m = mean_aim.x_m + parameters.touchdown_correction_m;
+        let aim_x_m = mean_aim.x_m + flight_path.parameters().touchdown_correction_m;
         let time_to_go_s =
             flight_path.time_to_go_s(hook.x_m, hook.x_rate_mps, aim_x_m, mean_aim_velocity.x_mps);
-        // The estimator's anchor before its filter, for direct lift control.
-        let mut unfiltered_aim_h_m = None;
-        let mut aim_acceleration_mps2 = 0.0;
-        let (aim, aim_velocity, forecast) = match self {
+        let unshaped = |aim, aim_velocity| DeckReference {
+            mean_aim,
+            mean_aim_velocity,
+            aim,
+            aim_velocity,
+            forecast: None,
+            unfiltered_aim_h_m: None,
+            aim_acceleration_mps2: 0.0,
+        };
+        let approach = ApproachGeometry {
+            view,
+            flight_path,
+            hook,
+            time_to_go_s,
+            aim_x_m,
+            mean_aim,
+            mean_aim_velocity,
+        };
+        match self {
             Self::Oracle {
                 predictor,
-                forecasting: false,
+                shaping: None,
             } => {
                 let predicted = predictor.predict(view.ship_model, view.ship_state, time_to_go_s);
                 let predicted_pose = ShipPose {
@@ -251,116 +216,94 @@ impl DeckPredictor {
                     pitch_rad: predicted.pitch_rad,
                     ..*pose
                 };
-                (deck.aim_point(&predicted_pose), mean_aim_velocity, None)
+                unshaped(deck.aim_point(&predicted_pose), mean_aim_velocity)
             }
             Self::Oracle {
                 predictor,
-                forecasting: true,
+                shaping: Some(shaping),
             } => {
                 let truth = ShipMotionEstimate {
                     mean: *view.ship_state,
                     ..ShipMotionEstimate::default()
                 };
-                let closure = hook.x_rate_mps - mean_aim_velocity.x_mps;
-                let forecast = forecast_deck(
-                    predictor,
-                    view.ship_model,
-                    &truth,
-                    0.0,
-                    time_to_go_s,
-                    closure,
-                    deck,
-                );
-                let raised_h = ramp_aware_anchor(parameters, flight_path, deck, &forecast);
-                let raise_m = raised_h - forecast.landing_point_height_m;
-                let (share, share_rate) =
-                    raise_share(parameters, deck, aim_x_m - hook.x_m, closure);
-                (
-                    EarthPoint {
-                        x_m: mean_aim.x_m,
-                        h_m: if share < 1.0 {
-                            forecast.landing_point_height_m + share * raise_m
-                        } else {
-                            raised_h
-                        },
-                    },
-                    EarthVelocity {
-                        x_mps: mean_aim_velocity.x_mps,
-                        h_mps: share_rate * raise_m,
-                    },
-                    Some(forecast),
-                )
+                approach.shaped_reference(predictor, &truth, 0.0, shaping)
             }
             Self::Estimator(block) => {
                 let age_s = hook.time_s - block.estimator.time_s();
-                let closure = hook.x_rate_mps - mean_aim_velocity.x_mps;
-                let forecast = forecast_deck(
+                approach.shaped_reference(
                     &block.predictor,
-                    view.ship_model,
                     &block.estimate,
                     age_s,
-                    time_to_go_s,
-                    closure,
-                    deck,
-                );
-                let target = ramp_aware_anchor(parameters, flight_path, deck, &forecast);
-                let (mut anchor_h, mut anchor_rate) = block.smooth_anchor(target, hook.dt);
-                let omega = block.anchor_frequency_radps;
-                aim_acceleration_mps2 =
-                    critically_damped_acceleration((anchor_h, anchor_rate), target, omega);
-                let mut unfiltered = target;
-                if parameters.ramp_aware && parameters.descend_after_ramp {
-                    // The raise is filtered on its own (the filter is linear, so the
-                    // anchor's filter carries the landing point's and the raise's parts)
-                    // and shed between the ramp and the aim point.
-                    let raise_m = target - forecast.landing_point_height_m;
-                    let (raise_f, raise_rate) = block.smooth_raise(raise_m, hook.dt);
-                    let (share, share_rate) =
-                        raise_share(parameters, deck, aim_x_m - hook.x_m, closure);
-                    anchor_h -= (1.0 - share) * raise_f;
-                    anchor_rate += share_rate * raise_f - (1.0 - share) * raise_rate;
-                    let raise_acceleration =
-                        critically_damped_acceleration((raise_f, raise_rate), raise_m, omega);
-                    aim_acceleration_mps2 +=
-                        2.0 * share_rate * raise_rate - (1.0 - share) * raise_acceleration;
-                    unfiltered -= (1.0 - share) * raise_m;
-                }
-                unfiltered_aim_h_m = Some(unfiltered);
-                (
-                    EarthPoint {
-                        x_m: mean_aim.x_m,
-                        h_m: anchor_h,
-                    },
-                    EarthVelocity {
-                        x_mps: mean_aim_velocity.x_mps,
-                        h_mps: anchor_rate,
-                    },
-                    Some(forecast),
+                    &mut block.shaping,
                 )
             }
-            Self::FilterLead(_) => {
-                let aim = deck.aim_point(pose);
-                (
-                    EarthPoint {
-                        x_m: aim.x_m,
-                        h_m: state[0],
-                    },
-                    EarthVelocity {
-                        x_mps: deck.velocity_along_deck(pose, rate, 0.0).x_mps,
-                        h_mps: state[1],
-                    },
-                    None,
-                )
-            }
-        };
+            Self::FilterLead(_) => unshaped(
+                EarthPoint {
+                    x_m: deck.aim_point(pose).x_m,
+                    h_m: state[0],
+                },
+                EarthVelocity {
+                    x_mps: deck.velocity_along_deck(pose, rate, 0.0).x_mps,
+                    h_mps: state[1],
+                },
+            ),
+        }
+    }
+}
+
+/// Where the hook is on its approach to the deck, for one step's reference.
+struct ApproachGeometry<'a> {
+    view: &'a DeckView<'a>,
+    flight_path: &'a FlightPathGenerator,
+    hook: &'a HookTrack,
+    time_to_go_s: f64,
+    /// The aim point's x with the touchdown correction (m).
+    aim_x_m: f64,
+    mean_aim: EarthPoint,
+    mean_aim_velocity: EarthVelocity,
+}
+
+impl ApproachGeometry<'_> {
+    /// The reference from a forecast of `estimate` (`age_s` old) by `predictor`, the
+    /// anchor ramp-aware and shaped by `shaping`: the `estimator`'s design, and the
+    /// `oracle`'s with the true state for the estimate.
+    fn shaped_reference(
+        &self,
+        predictor: &ShipMotionPredictor,
+        estimate: &ShipMotionEstimate,
+        age_s: f64,
+        shaping: &mut AnchorShaping,
+    ) -> DeckReference {
+        let (deck, hook) = (self.view.deck, self.hook);
+        let parameters = self.flight_path.parameters();
+        let closure = hook.x_rate_mps - self.mean_aim_velocity.x_mps;
+        let forecast = forecast_deck(
+            predictor,
+            self.view.ship_model,
+            estimate,
+            age_s,
+            self.time_to_go_s,
+            closure,
+            deck,
+        );
+        let target = ramp_aware_anchor(parameters, self.flight_path, deck, &forecast);
+        let descent = (parameters.ramp_aware && parameters.descend_after_ramp)
+            .then(|| raise_share(parameters, deck, self.aim_x_m - hook.x_m, closure));
+        let shaped = shaping.step(target, forecast.landing_point_height_m, descent, hook.dt);
         DeckReference {
-            mean_aim,
-            mean_aim_velocity,
-            aim,
-            aim_velocity,
-            forecast,
-            unfiltered_aim_h_m,
-            aim_acceleration_mps2,
+            mean_aim: self.mean_aim,
+            mean_aim_velocity: self.mean_aim_velocity,
+            aim: EarthPoint {
+                x_m: self.mean_aim.x_m,
+                h_m: shaped.height_m,
+            },
+            aim_velocity: EarthVelocity {
+                x_mps: self.mean_aim_velocity.x_mps,
+                h_mps: shaped.rate_mps,
+            },
+            forecast: Some(forecast),
+            unfiltered_aim_h_m: Some(shaped.unfiltered_m),
+            aim_acceleration_mps2: shaped.acceleration_mps2,
         }
     }
 }

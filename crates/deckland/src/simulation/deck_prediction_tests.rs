@@ -2,41 +2,6 @@
 
 use super::*;
 use crate::control::FlightPathParameters;
-use crate::environment::{ShipMotionParameters, ShipMotionPredictor};
-use crate::random::RandomStreams;
-use crate::sensors::ShipMotionSensingParameters;
-
-fn estimator_block(frequency_radps: f64) -> EstimatorPredictor {
-    let ship = ShipMotion::new(ShipMotionParameters::default()).unwrap();
-    let sensing = ShipMotionSensingParameters::default();
-    EstimatorPredictor::new(
-        ShipMotionSensor::new(sensing, &RandomStreams::new(1)).unwrap(),
-        DeckMotionEstimator::new(&ship, &sensing),
-        ShipMotionPredictor::new(1.0),
-        frequency_radps,
-    )
-}
-
-/// The anchor filter's step response is the critically damped one,
-/// a(t) = u − (u − a₀)·(1 + ωt)·e^(−ωt) from rest, whatever the step: one 0.5-s step
-/// and 500 steps of 1 ms land on the closed form (by hand: ω = 4, t = 0.5 gives
-/// 1 − 3·e⁻² = 0.593994 of the way to the target).
-#[test]
-fn the_anchor_filter_follows_the_critically_damped_step_response_at_any_step() {
-    let expected = 1.0 - 3.0 * (-2.0_f64).exp();
-    for steps in [1_u32, 500] {
-        let mut block = estimator_block(4.0);
-        block.smooth_anchor(0.0, 0.001); // starts at rest on 0
-        let dt = 0.5 / f64::from(steps);
-        let mut last = (0.0, 0.0);
-        for _ in 0..steps {
-            last = block.smooth_anchor(1.0, dt);
-        }
-        assert!((last.0 - expected).abs() < 1e-12, "{steps}: {last:?}");
-        // Rate: u·ω²·t·e^(−ωt) = 16·0.5·e⁻² = 1.082682 m/s.
-        assert!((last.1 - 8.0 * (-2.0_f64).exp()).abs() < 1e-12, "{last:?}");
-    }
-}
 
 fn forecast(landing_point_height_m: f64, ramp_height_m: f64) -> DeckForecast {
     DeckForecast {

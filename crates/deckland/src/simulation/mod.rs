@@ -12,6 +12,7 @@
 //!   integration loop.
 
 mod activity;
+mod anchor_shaping;
 mod closed_loop;
 mod deck_prediction;
 mod events;

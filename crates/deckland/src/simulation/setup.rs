@@ -1,6 +1,7 @@
 //! Building the closed loop from a scenario: models, trim, linearisation, controllers and
 //! the initial state.
 
+use super::anchor_shaping::AnchorShaping;
 use super::closed_loop::{ClosedLoop, LoopLayout, StepStreams};
 use super::deck_prediction::{DeckPredictor, DeckView, EstimatorPredictor};
 use super::flight_computer::FlightComputer;
@@ -350,7 +351,8 @@ pub(crate) fn build(
     let deck_predictor = match flight_path.deck_motion_predictor {
         DeckMotionPredictor::Oracle => DeckPredictor::Oracle {
             predictor: ShipMotionPredictor::new(horizon_s),
-            forecasting: flight_path.ramp_aware || scenario.control.wave_off.enabled,
+            shaping: (flight_path.ramp_aware || scenario.control.wave_off.enabled)
+                .then(|| AnchorShaping::new(flight_path.anchor_filter_frequency_radps)),
         },
         DeckMotionPredictor::Estimator => {
             let sensing = env.ship_sensing;
