@@ -100,8 +100,9 @@ pub struct FlightPathParameters {
     /// Shape of the blend-in of compensation; `smooth` (realistic), `linear` (paper).
     pub compensation_blend: CompensationBlend,
     /// Natural frequency (rad/s) of the critically damped filter through which the
-    /// `estimator`'s predicted anchor passes, so that each 50-Hz update of the estimate
-    /// moves the glide path smoothly; 1 rad/s (docs/model.md §5.7: against 4 rad/s it
+    /// `estimator`'s predicted anchor passes (and the realistic set's `oracle`'s, which
+    /// flies the same design), so that each 50-Hz update of the estimate moves the glide
+    /// path smoothly; 1 rad/s (docs/model.md §5.7: against 4 rad/s it
     /// halves the hard landings in the paper's sea and keeps the stabilator off its rate
     /// limit, 0.1 % of the approach against 7 %, docs/no-oracle-results.md).
     pub anchor_filter_frequency_radps: f64,
