@@ -42,6 +42,7 @@ impl AnchorShaping {
     /// Moves the smoothed anchor over `dt` towards `target_m`, held over the step: the
     /// exact solution of ä = ω²(target − a) − 2ω·ȧ (critically damped), so stable at
     /// any step.
+    #[inline]
     pub(crate) fn smooth_anchor(&mut self, target_m: f64, dt: f64) -> (f64, f64) {
         let next = critically_damped_step(self.anchor, target_m, self.frequency_radps, dt);
         self.anchor = Some(next);
@@ -50,6 +51,7 @@ impl AnchorShaping {
 
     /// Moves the smoothed ramp-aware raise over `dt` towards `target_m`, through the
     /// anchor's filter.
+    #[inline]
     fn smooth_raise(&mut self, target_m: f64, dt: f64) -> (f64, f64) {
         let next = critically_damped_step(self.raise, target_m, self.frequency_radps, dt);
         self.raise = Some(next);
@@ -59,6 +61,7 @@ impl AnchorShaping {
     /// One step `dt` towards the ramp-aware `target_m` above the forecast landing point
     /// `landing_point_m`; with `descend_after_ramp` the path keeps `share` of the raise
     /// (rate `share_rate`, 1/s; [`raise_share`]).
+    #[inline]
     pub(crate) fn step(
         &mut self,
         target_m: f64,
@@ -96,6 +99,7 @@ impl AnchorShaping {
 /// One step `dt` of the critically damped filter ä = ω²(target − a) − 2ω·ȧ from
 /// `state` (height, rate) towards `target_m` held over the step, by its exact solution;
 /// `None` starts on the target at rest.
+#[inline]
 fn critically_damped_step(
     state: Option<(f64, f64)>,
     target_m: f64,
@@ -117,6 +121,7 @@ fn critically_damped_step(
 }
 
 /// The filter's acceleration at (height, rate) towards `target_m` (m/s²).
+#[inline]
 fn critically_damped_acceleration(state: (f64, f64), target_m: f64, omega: f64) -> f64 {
     omega * omega * (target_m - state.0) - 2.0 * omega * state.1
 }
