@@ -18,7 +18,7 @@ use deckland::sensors::{ShipMotionSensingParameters, ShipMotionSensor};
 /// The landing point's lever arm aft of the pitch centre (m, docs/model.md §2.7).
 const LANDING_ARM_M: f64 = 81.0;
 /// Horizons (s).
-const HORIZONS_S: [f64; 7] = [0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0];
+const HORIZONS_S: [f64; 9] = [0.1, 0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0];
 /// Integration step of the ship (s) and the spacing of the predictions compared (s).
 const STEP_S: f64 = 0.002;
 const EVERY_S: f64 = 0.1;
