@@ -85,7 +85,7 @@ fn every_json_document_is_documented_key_for_key() {
         ("`--json` adds to the trim document (under", linearize),
         (
             "`--json` prints the summary:",
-            // Seed 3 touches down (seed 1 waves off: no `touchdown` keys).
+            // Seed 3 touches down (seed 1 flies over the last wire: no `touchdown` keys).
             json_keys(&stdout_of(&[
                 "land", "--seed", "3", "--json", "--out", out, "--force",
             ])),

@@ -87,7 +87,7 @@ fn render(chromium: &Path, page: &Path) -> String {
 fn land_report_html_renders_the_summary_numbers_in_a_browser() {
     let Some(chromium) = chromium() else { return };
     let dir = scratch("html-land");
-    // Seed 3 touches down (seed 1 waves off, with no touchdown to show).
+    // Seed 3 touches down (seed 1 flies over the last wire, with no touchdown to show).
     let output = deckland(["land", "--seed", "3", "--out", dir.to_str().unwrap()]);
     assert!(
         output.status.success(),

@@ -33,6 +33,8 @@ pub mod stream_names {
     pub const SHIP_SENSOR_PITCH: &str = "ship_sensor_pitch";
     /// Noise of the ship's pitch-rate measurement (docs/model.md §3.5).
     pub const SHIP_SENSOR_PITCH_RATE: &str = "ship_sensor_pitch_rate";
+    /// The deck-motion estimator's error at a converged start (docs/model.md §3.5).
+    pub const SHIP_ESTIMATE_START: &str = "ship_estimate_start";
 }
 
 /// The 64-bit FNV-1a hash of `bytes` (Fowler–Noll–Vo, offset basis

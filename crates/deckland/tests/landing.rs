@@ -61,10 +61,13 @@ fn adverse_approaches_trap_or_wave_off_on_the_estimator() {
         summary.glide_path_error_rms_m.unwrap() > 0.05,
         "disturbances must show"
     );
-    // In seed 1 the deck rises into a hook that dived below the path: the forecast
-    // hook-to-ramp clearance falls under the 1.5 m limit and the aircraft waves off,
-    // clearing the ramp and climbing away over the deck.
-    let summary = fly(&Scenario::default());
+    // In seed 6 the ramp rises with the ship's pitch towards the hook's path: the
+    // forecast hook-to-ramp clearance falls under the 1.5 m limit and the aircraft waves
+    // off, clearing the ramp and climbing away over the deck.
+    let summary = fly(&Scenario {
+        seed: 6,
+        ..Scenario::default()
+    });
     assert_eq!(summary.outcome, Outcome::WaveOff, "{summary:?}");
     assert!(summary.touchdown.is_none());
     assert!(summary.ramp_clearance_m.unwrap() > 0.0, "{summary:?}");

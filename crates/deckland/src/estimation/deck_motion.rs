@@ -17,19 +17,23 @@
 //!   P ← (I − K H) P (I − K H)ᵀ + K R Kᵀ (Joseph form, symmetric and positive by
 //!   construction).
 //!
-//! The filter starts knowing nothing but the model: ẑ = 0, P = q P∞ (the stationary
-//! distribution the ship starts from). Its estimate stands for the time of the last
+//! By default the filter starts as it stands after tracking the ship since long before
+//! the run ([`DeckMotionEstimator::converged`]): its covariance the steady-state prior of
+//! the discrete Riccati equation (solved by doubling), its error drawn from that
+//! covariance given the ship's true state. A `cold` start knows nothing but the model:
+//! ẑ = 0, P = q P∞ (the stationary distribution the ship starts from). Its estimate stands for the time of the last
 //! measurement received, so a prediction T seconds ahead of *now* is a prediction
 //! (now − that time) + T ahead of the estimate: the data link's latency adds to the
 //! horizon ([`crate::environment::ShipMotionPredictor::forecast`] gives the mean and the
 //! error variance).
 
-use nalgebra::{Matrix2, Matrix2x4, Matrix4, Vector2, Vector4};
+use nalgebra::{Cholesky, Matrix2, Matrix2x4, Matrix4, Vector2, Vector4};
 
 use crate::environment::{
     shaping_filter_companion, unit_intensity_state_covariance, Matrix4Array, ShipMotion,
     ShipMotionEstimate, ShipMotionState, HEAVE_FILTER_GAIN, PITCH_FILTER_GAIN,
 };
+use crate::random::NoiseStream;
 use crate::sensors::{ShipMotionMeasurement, ShipMotionSensingParameters};
 
 fn to_array(m: &Matrix4<f64>) -> Matrix4Array {
@@ -87,7 +91,75 @@ impl Channel {
             + gain * self.measurement_covariance * gain.transpose();
         self.covariance = (covariance + covariance.transpose()) * 0.5;
     }
+
+    /// The steady-state prior covariance of this channel measured every `step`: the
+    /// solution P of the filter's discrete Riccati equation
+    /// P = Φ P Φᵀ − Φ P Hᵀ (H P Hᵀ + R)⁻¹ H P Φᵀ + Q_d, by the structure-preserving
+    /// doubling algorithm (Chu, Fan & Lin, Linear Algebra Appl. 396, 2005) on its dual
+    /// control form A = Φᵀ, G = Hᵀ R⁻¹ H, H₀ = Q_d: each iteration doubles the horizon,
+    /// where the plain recursion needs about 50 000 steps for the pitch filter's slow
+    /// state. `None` if a matrix to invert is singular.
+    fn steady_state_prior(&self, step: &Transition) -> Option<Matrix4<f64>> {
+        let r_inverse = self.measurement_covariance.try_inverse()?;
+        let mut a = step.transition.transpose();
+        let mut g = self.observation.transpose() * r_inverse * self.observation;
+        let mut x = step.unit_noise * self.intensity;
+        for _ in 0..STEADY_STATE_MAX_DOUBLINGS {
+            let w = (Matrix4::identity() + g * x).try_inverse()?;
+            let next_x = x + a.transpose() * x * w * a;
+            let next_g = g + a * w * g * a.transpose();
+            a = a * w * a;
+            let change = (next_x - x).abs().max();
+            x = (next_x + next_x.transpose()) * 0.5;
+            g = (next_g + next_g.transpose()) * 0.5;
+            if change <= STEADY_STATE_TOLERANCE * x.abs().max() {
+                return Some(x);
+            }
+        }
+        Some(x)
+    }
+
+    /// Starts the channel at the steady-state prior `prior`, its mean the true state
+    /// `truth` less an error drawn from the error's distribution given the truth:
+    /// e | z ~ N(P P∞⁻¹ z, P − P P∞⁻¹ P), with P∞ = q·`stationary` (the truth and the
+    /// estimate of a converged filter are jointly Gaussian, e ⊥ ẑ, so cov(z, e) = P).
+    /// Draws four numbers from `stream`; keeps the cold start if P∞ is singular (no
+    /// motion).
+    fn start_converged(
+        &mut self,
+        prior: Matrix4<f64>,
+        stationary: &Matrix4<f64>,
+        truth: &[f64; 4],
+        stream: &mut NoiseStream,
+    ) {
+        let draws = Vector4::from_fn(|_, _| stream.standard_normal());
+        let Some(stationary_inverse) = (stationary * self.intensity).try_inverse() else {
+            return;
+        };
+        let z = Vector4::from_column_slice(truth);
+        let gain = prior * stationary_inverse;
+        let conditional = prior - gain * prior;
+        let conditional = (conditional + conditional.transpose()) * 0.5;
+        // Positive semi-definite up to rounding: add the least jitter that factors it.
+        let scale = conditional.diagonal().abs().max().max(f64::MIN_POSITIVE);
+        let factor = std::iter::once(0.0)
+            .chain((0..10).map(|k| 1e-14 * scale * 10_f64.powi(k)))
+            .find_map(|jitter| {
+                Cholesky::new(conditional + Matrix4::identity() * jitter).map(|c| c.l())
+            });
+        let Some(factor) = factor else {
+            return;
+        };
+        let error = gain * z + factor * draws;
+        self.mean = z - error;
+        self.covariance = prior;
+    }
 }
+
+/// Most doublings of [`Channel::steady_state_prior`]: 2⁶⁰ steps, never reached.
+const STEADY_STATE_MAX_DOUBLINGS: usize = 60;
+/// Relative change of the doubling's iterate below which it has converged.
+const STEADY_STATE_TOLERANCE: f64 = 1e-13;
 
 /// e^{AΔ} and the unit-intensity process noise P∞ − e^{AΔ} P∞ e^{AᵀΔ} over one interval.
 #[derive(Debug, Clone, PartialEq)]
@@ -159,6 +231,39 @@ impl DeckMotionEstimator {
         }
     }
 
+    /// The filter as it stands at t = 0 after tracking the ship, sampled at the sensing's
+    /// rate, since long before (docs/model.md §3.5): each channel at its steady-state
+    /// prior covariance, its estimate the true state `truth` less an error drawn from
+    /// that covariance given the truth (four numbers per moving channel from `stream`).
+    /// The aircraft's guidance computer receives the ship's motion over the data link
+    /// during the whole approach, not only from the scenario's start 1500 m out. A
+    /// channel with no motion starts cold.
+    pub fn converged(
+        ship: &ShipMotion,
+        sensing: &ShipMotionSensingParameters,
+        truth: &ShipMotionState,
+        stream: &mut NoiseStream,
+    ) -> Self {
+        let mut filter = Self::new(ship, sensing);
+        let step = Transition::new(
+            1.0 / sensing.sample_rate_hz,
+            &filter.companion,
+            &filter.stationary,
+        );
+        for (channel, state) in [
+            (&mut filter.heave, &truth.heave_filter),
+            (&mut filter.pitch, &truth.pitch_filter),
+        ] {
+            if channel.intensity <= 0.0 {
+                continue; // no motion: nothing to have tracked
+            }
+            if let Some(prior) = channel.steady_state_prior(&step) {
+                channel.start_converged(prior, &filter.stationary, state, stream);
+            }
+        }
+        filter
+    }
+
     /// The time the estimate stands for (s): that of the last measurement, 0 before any.
     pub fn time_s(&self) -> f64 {
         self.time_s
@@ -219,125 +324,5 @@ impl DeckMotionEstimator {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::environment::{ShipMotionParameters, ShipMotionPredictor, ShipMotionSimulator};
-    use crate::random::RandomStreams;
-    use crate::sensors::ShipMotionSensor;
-
-    /// Steady-state a-posteriori covariances of the two channels at 50 Hz with the
-    /// default sensing, in the paper's sea (heave 2 m, pitch 1.5° RMS), diagonal only, in
-    /// filter units. Computed independently with `scipy.linalg.solve_discrete_are` on
-    /// the same model (`tests/reference/deck_motion_kalman.py`, which prints them).
-    const HEAVE_POSTERIOR_DIAGONAL: [f64; 4] =
-        [3.3473845e-05, 1.7568108e-04, 2.3447115e-03, 1.8105740e-02];
-    const PITCH_POSTERIOR_DIAGONAL: [f64; 4] =
-        [1.2119720e-03, 3.3924175e-07, 1.3916212e-08, 2.0238543e-07];
-
-    fn converged() -> DeckMotionEstimator {
-        let ship = ShipMotion::new(ShipMotionParameters::default()).unwrap();
-        let mut estimator =
-            DeckMotionEstimator::new(&ship, &ShipMotionSensingParameters::default());
-        // 1000 s of measurements with arbitrary values (the covariance does not depend on
-        // them): the pitch filter's z₁, the double integral of pitch, is observed only
-        // through the dynamics and its variance settles slowly (within 1e-4 after about
-        // 50 000 updates; the plain Riccati recursion in numpy does the same).
-        for k in 1..=50_000 {
-            estimator.update(&ShipMotionMeasurement {
-                time_s: f64::from(k) * 0.02,
-                ..ShipMotionMeasurement::default()
-            });
-        }
-        estimator
-    }
-
-    #[test]
-    fn steady_state_covariance_matches_an_independent_riccati_solution() {
-        let estimate = converged().estimate();
-        for (name, covariance, reference) in [
-            ("heave", estimate.heave_covariance, HEAVE_POSTERIOR_DIAGONAL),
-            ("pitch", estimate.pitch_covariance, PITCH_POSTERIOR_DIAGONAL),
-        ] {
-            for i in 0..4 {
-                let relative = covariance[i][i] / reference[i] - 1.0;
-                assert!(
-                    relative.abs() < 1e-4,
-                    "{name} P[{i}][{i}] = {:e}, Riccati {:e}",
-                    covariance[i][i],
-                    reference[i]
-                );
-            }
-        }
-    }
-
-    /// The filter's claimed error covariance must be its actual error: fly the ship for a
-    /// long time, measure it with the sensor, and compare the empirical mean square of
-    /// (estimate − truth) with the filter's own P, at the measurement times.
-    #[test]
-    fn actual_estimation_error_matches_the_filters_covariance() {
-        let parameters = ShipMotionParameters::default();
-        let sensing = ShipMotionSensingParameters {
-            latency_s: 0.0,
-            ..ShipMotionSensingParameters::default()
-        };
-        let streams = RandomStreams::new(5);
-        let mut ship = ShipMotionSimulator::new(parameters, &streams, 0.0).unwrap();
-        let mut sensor = ShipMotionSensor::new(sensing, &streams).unwrap();
-        let mut estimator = DeckMotionEstimator::new(ship.model(), &sensing);
-        let predictor = ShipMotionPredictor::new(5.0);
-        let dt = 0.002;
-        // Errors of the heave (m) and pitch (rad) estimates, and of their 2-s predictions.
-        let (mut heave, mut pitch, mut claimed_heave, mut claimed_pitch, mut n) =
-            (0.0, 0.0, 0.0, 0.0, 0.0);
-        let mut predictions = std::collections::VecDeque::new();
-        let (mut predicted_error, mut predicted_claim, mut m) = (0.0, 0.0, 0.0);
-        for k in 0..1_000_000_u32 {
-            let t = f64::from(k) * dt;
-            let truth = ship.outputs();
-            while let Some((due, heave_predicted, claim)) = predictions.front().copied() {
-                if due > t + 1e-9 {
-                    break;
-                }
-                predictions.pop_front();
-                let error: f64 = heave_predicted - truth.heave_m;
-                predicted_error += error * error;
-                predicted_claim += claim;
-                m += 1.0;
-            }
-            sensor.sample(t, &truth);
-            while let Some(measurement) = sensor.receive(t) {
-                estimator.update(&measurement);
-                if t > 100.0 {
-                    let estimate = estimator.estimate();
-                    let now = predictor.forecast(ship.model(), &estimate, 0.0);
-                    heave += (now.heave_m - truth.heave_m).powi(2);
-                    pitch += (now.pitch_rad - truth.pitch_rad).powi(2);
-                    claimed_heave += now.heave_variance_m2;
-                    claimed_pitch += now.pitch_variance_rad2;
-                    n += 1.0;
-                    if k % 100 == 0 {
-                        let ahead = predictor.forecast(ship.model(), &estimate, 2.0);
-                        predictions.push_back((t + 2.0, ahead.heave_m, ahead.heave_variance_m2));
-                    }
-                }
-            }
-            ship.step(dt);
-        }
-        // About 95 000 strongly correlated samples (the heave error's correlation time is
-        // a few samples); the variance ratios are known to a few per cent.
-        for (name, actual, claimed) in [
-            ("heave", heave / n, claimed_heave / n),
-            ("pitch", pitch / n, claimed_pitch / n),
-            (
-                "2-s heave prediction",
-                predicted_error / m,
-                predicted_claim / m,
-            ),
-        ] {
-            assert!(
-                (actual / claimed - 1.0).abs() < 0.1,
-                "{name}: actual mean square {actual:e}, filter's variance {claimed:e}"
-            );
-        }
-    }
-}
+#[path = "deck_motion_tests.rs"]
+mod tests;

@@ -4,4 +4,6 @@ mod pitch;
 mod ship_motion;
 
 pub use pitch::{PitchNoiseParameters, PitchSensor};
-pub use ship_motion::{ShipMotionMeasurement, ShipMotionSensingParameters, ShipMotionSensor};
+pub use ship_motion::{
+    EstimatorStart, ShipMotionMeasurement, ShipMotionSensingParameters, ShipMotionSensor,
+};

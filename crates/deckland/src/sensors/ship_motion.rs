@@ -40,6 +40,23 @@ pub struct ShipMotionSensingParameters {
     pub sample_rate_hz: f64,
     /// Delay from a sample to its arrival at the aircraft (s); assumption: 0.1.
     pub latency_s: f64,
+    /// How the deck-motion estimator starts: `converged` (it has tracked the ship over
+    /// the data link since long before the run; the default) or `cold` (knowing only
+    /// the model; docs/model.md §3.5).
+    pub estimator_start: EstimatorStart,
+}
+
+/// How the deck-motion estimator starts (docs/model.md §3.5).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum EstimatorStart {
+    /// At its steady state, as after tracking the ship since long before the run: the
+    /// guidance computer receives the ship's motion during the whole approach, and the
+    /// pitch filter's slowest state takes about 1000 s to settle. The default.
+    #[default]
+    Converged,
+    /// Knowing only the model: estimate 0, covariance the stationary one.
+    Cold,
 }
 
 impl Default for ShipMotionSensingParameters {
@@ -51,6 +68,7 @@ impl Default for ShipMotionSensingParameters {
             pitch_rate_sigma_degps: 0.02,
             sample_rate_hz: 50.0,
             latency_s: 0.1,
+            estimator_start: EstimatorStart::Converged,
         }
     }
 }

@@ -25,7 +25,7 @@ use crate::estimation::DeckMotionEstimator;
 use crate::parameters::ParameterError;
 use crate::random::{stream_names, RandomStreams};
 use crate::scenario::{Mission, PitchCommand, Scenario};
-use crate::sensors::{PitchSensor, ShipMotionSensor};
+use crate::sensors::{EstimatorStart, PitchSensor, ShipMotionSensor};
 
 /// Builds a user's own pitch law for the plant and hardware of a run (called once per
 /// run, after trim, so that a campaign can fly it over dispersed scenarios).
@@ -358,7 +358,15 @@ pub(crate) fn build(
             let sensing = env.ship_sensing;
             DeckPredictor::Estimator(Box::new(EstimatorPredictor::new(
                 ShipMotionSensor::new(sensing, &streams)?,
-                DeckMotionEstimator::new(&ship, &sensing),
+                match sensing.estimator_start {
+                    EstimatorStart::Converged => DeckMotionEstimator::converged(
+                        &ship,
+                        &sensing,
+                        &ship_state,
+                        &mut streams.stream(stream_names::SHIP_ESTIMATE_START),
+                    ),
+                    EstimatorStart::Cold => DeckMotionEstimator::new(&ship, &sensing),
+                },
                 ShipMotionPredictor::new(horizon_s + sensing.latency_s + 1.0),
                 flight_path.anchor_filter_frequency_radps,
             )))
