@@ -40,6 +40,9 @@ pub enum OuterLoops {
         flight_path: FlightPathGenerator,
         /// The climb rate commanded in a wave-off (m/s); `None` without wave-offs.
         wave_off_climb_rate_mps: Option<f64>,
+        /// The ramp's distance aft of the landing point (m): once the hook is past it, a
+        /// wave-off holds at least the approach attitude.
+        ramp_aft_of_aim_point_m: f64,
         /// Guidance: height error → climb-rate command.
         guidance: LoopController,
         /// The sink-rate loop: climb-rate error → pitch command.
@@ -139,6 +142,7 @@ impl OuterLoops {
                     guidance,
                     sink_rate,
                     wave_off_climb_rate_mps,
+                    ramp_aft_of_aim_point_m,
                 } => {
                     let deck = deck.expect("an approach always holds a deck reference");
                     let path = flight_path.reference(inputs.hook_x_m, inputs.hook_x_rate_mps, deck);
@@ -160,6 +164,17 @@ impl OuterLoops {
                     let theta = trim_theta
                         + sink_rate.output(error, inputs.sink_rate_integral_m, 0.0)
                         + inputs.wake_pitch_feedforward_rad;
+                    // Past the ramp a wave-off holds at least the approach attitude
+                    // (docs/model.md §9): at full thrust the climb overshoots its command,
+                    // and pushing over took α below −5° in the heavy sea's wake. Before
+                    // the ramp the law is left alone: pitching up there swings the hook
+                    // down towards the ramp.
+                    let past_ramp = inputs.hook_x_m > deck.mean_aim.x_m - ramp_aft_of_aim_point_m;
+                    let theta = if wave_off && past_ramp {
+                        theta.max(trim_theta)
+                    } else {
+                        theta
+                    };
                     (theta, command, Some(path), height_error, error)
                 }
             };

@@ -94,6 +94,7 @@ fn outer_loops(
                     .wave_off
                     .enabled
                     .then_some(control.wave_off.climb_rate_mps),
+                ramp_aft_of_aim_point_m: scenario.environment.deck.ramp_aft_of_aim_point_m,
                 guidance: control.guidance.controller(),
                 sink_rate: control.sink_rate.controller(),
             };
