@@ -12,7 +12,7 @@ use deckland::environment::{
     ShipMotionEstimate, ShipMotionParameters, ShipMotionPredictor, ShipMotionSimulator,
 };
 use deckland::estimation::DeckMotionEstimator;
-use deckland::random::RandomStreams;
+use deckland::random::{stream_names, RandomStreams};
 use deckland::sensors::{ShipMotionSensingParameters, ShipMotionSensor};
 
 /// The landing point's lever arm aft of the pitch centre (m, docs/model.md §2.7).
@@ -34,7 +34,13 @@ fn study(parameters: ShipMotionParameters, seconds: f64, seed: u64) -> Vec<[f64;
     let streams = RandomStreams::new(seed);
     let mut ship = ShipMotionSimulator::new(parameters, &streams, 0.0).expect("valid sea");
     let mut sensor = ShipMotionSensor::new(sensing, &streams).expect("valid sensing");
-    let mut estimator = DeckMotionEstimator::new(ship.model(), &sensing);
+    // Converged at the start, as in the closed loop (docs/model.md §3.5).
+    let mut estimator = DeckMotionEstimator::converged(
+        ship.model(),
+        &sensing,
+        ship.state(),
+        &mut streams.stream(stream_names::SHIP_ESTIMATE_START),
+    );
     let predictor = ShipMotionPredictor::new(HORIZONS_S[HORIZONS_S.len() - 1] + 1.0);
     let mut pending: VecDeque<Pending> = VecDeque::new();
     let mut sums = vec![[0.0; 4]; HORIZONS_S.len()];
