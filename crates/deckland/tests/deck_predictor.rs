@@ -4,21 +4,17 @@
 
 #![allow(clippy::unwrap_used)] // tests fail loudly by design
 
+mod common;
+
 use deckland::control::DeckMotionPredictor;
-use deckland::recording::{SummaryRecorder, TimeSeriesRecorder};
+use deckland::recording::TimeSeriesRecorder;
 use deckland::scenario::Scenario;
 use deckland::sensors::EstimatorStart;
 use deckland::simulation::Simulation;
 
-/// The default (realistic) scenario in the moderate sea of docs/model.md §3.6 with
-/// `predictor`.
+/// The moderate sea flown with `predictor`.
 fn moderate_sea(seed: u64, predictor: DeckMotionPredictor) -> Scenario {
-    let mut scenario = Scenario {
-        seed,
-        ..Scenario::default()
-    };
-    scenario.environment.ship.heave_rms_m = 1.0;
-    scenario.environment.ship.pitch_rms_deg = 0.75;
+    let mut scenario = common::moderate_sea(seed);
     scenario.control.flight_path.deck_motion_predictor = predictor;
     scenario
 }
@@ -56,26 +52,9 @@ fn the_oracle_flies_the_estimators_smooth_path() {
     }
 }
 
-/// Standard deviation of the touchdown distances of seeds 1–40 in the moderate sea with
-/// `predictor`, over the runs that touched down.
+/// Touchdown σ of seeds 1–40 in the moderate sea with `predictor` (m).
 fn touchdown_spread(predictor: DeckMotionPredictor) -> f64 {
-    touchdown_spread_of(|seed| moderate_sea(seed, predictor))
-}
-
-/// The same of the scenarios `scenario(seed)`.
-fn touchdown_spread_of(scenario: impl Fn(u64) -> Scenario) -> f64 {
-    let distances: Vec<f64> = (1..=40)
-        .filter_map(|seed| {
-            let summary = Simulation::new(&scenario(seed))
-                .unwrap()
-                .run(&mut SummaryRecorder);
-            summary.touchdown.map(|t| t.distance_from_aim_m)
-        })
-        .collect();
-    let n = distances.len() as f64;
-    let mean = distances.iter().sum::<f64>() / n;
-    let variance = distances.iter().map(|d| (d - mean).powi(2)).sum::<f64>() / (n - 1.0);
-    variance.sqrt()
+    common::touchdown_spread(|seed| moderate_sea(seed, predictor)).0
 }
 
 /// Knowing the ship's true state can only help the same design: over 1000 runs the

@@ -4,39 +4,27 @@
 
 #![allow(clippy::unwrap_used)] // tests fail loudly by design
 
+mod common;
+
 use deckland::recording::{SummaryRecorder, TimeSeriesRecorder};
 use deckland::scenario::Scenario;
 use deckland::simulation::Simulation;
 
-/// The default (realistic) scenario in the moderate sea of docs/model.md §3.6.
+/// The moderate sea, with direct lift on or off.
 fn moderate_sea(seed: u64, direct_lift: bool) -> Scenario {
-    let mut scenario = Scenario {
-        seed,
-        ..Scenario::default()
-    };
-    scenario.environment.ship.heave_rms_m = 1.0;
-    scenario.environment.ship.pitch_rms_deg = 0.75;
+    let mut scenario = common::moderate_sea(seed);
     scenario.control.direct_lift.enabled = direct_lift;
     scenario
 }
 
-/// Standard deviation of the touchdown distances of seeds 1–40 in the moderate sea, with
-/// direct lift on or off and `configure` applied, over the runs that touched down.
+/// Touchdown σ of seeds 1–40 in the moderate sea, with direct lift on or off and
+/// `configure` applied, and the number of runs that touched down.
 fn touchdown_spread(direct_lift: bool, configure: impl Fn(&mut Scenario)) -> (f64, usize) {
-    let distances: Vec<f64> = (1..=40)
-        .filter_map(|seed| {
-            let mut scenario = moderate_sea(seed, direct_lift);
-            configure(&mut scenario);
-            let summary = Simulation::new(&scenario)
-                .unwrap()
-                .run(&mut SummaryRecorder);
-            summary.touchdown.map(|t| t.distance_from_aim_m)
-        })
-        .collect();
-    let n = distances.len() as f64;
-    let mean = distances.iter().sum::<f64>() / n;
-    let variance = distances.iter().map(|d| (d - mean).powi(2)).sum::<f64>() / (n - 1.0);
-    (variance.sqrt(), distances.len())
+    common::touchdown_spread(|seed| {
+        let mut scenario = moderate_sea(seed, direct_lift);
+        configure(&mut scenario);
+        scenario
+    })
 }
 
 /// Over 1000 runs the moderate sea's touchdown σ falls from 10.1 m to 7.0 m with direct

@@ -43,7 +43,7 @@ impl AnchorShaping {
     /// exact solution of ä = ω²(target − a) − 2ω·ȧ (critically damped), so stable at
     /// any step.
     #[inline]
-    pub(crate) fn smooth_anchor(&mut self, target_m: f64, dt: f64) -> (f64, f64) {
+    fn smooth_anchor(&mut self, target_m: f64, dt: f64) -> (f64, f64) {
         let next = critically_damped_step(self.anchor, target_m, self.frequency_radps, dt);
         self.anchor = Some(next);
         next
@@ -59,8 +59,8 @@ impl AnchorShaping {
     }
 
     /// One step `dt` towards the ramp-aware `target_m` above the forecast landing point
-    /// `landing_point_m`; with `descend_after_ramp` the path keeps `share` of the raise
-    /// (rate `share_rate`, 1/s; [`raise_share`]).
+    /// `landing_point_m`; with `descend_after_ramp` = (share, share's rate in 1/s) the
+    /// path keeps that share of the raise (the path's descent after the ramp).
     #[inline]
     pub(crate) fn step(
         &mut self,

@@ -162,9 +162,10 @@ impl DeckPredictor {
 
     /// The deck reference for the flight-path generator: the mean landing point and the
     /// predicted moving one (the forecast at the touchdown time, raised above the ramp
-    /// when ramp-aware, with rate zero for the oracle and the smoothed rate for the
-    /// estimator; or the filtered height and rate), and the forecast of the ramp and the
-    /// deck's rate. Called once per step (the estimator's anchor moves by `hook.dt`).
+    /// when ramp-aware and shaped by [`AnchorShaping`] for the estimator and the realistic
+    /// oracle; the paper's oracle's prediction with rate zero; or the filtered height and
+    /// rate), and the forecast of the ramp and the deck's rate. Called once per step (the
+    /// shaped anchor moves by `hook.dt`).
     #[inline]
     pub(crate) fn deck_reference(
         &mut self,

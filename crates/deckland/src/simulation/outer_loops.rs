@@ -169,8 +169,9 @@ impl OuterLoops {
                     // and pushing over took α below −5° in the heavy sea's wake. Before
                     // the ramp the law is left alone: pitching up there swings the hook
                     // down towards the ramp.
-                    let past_ramp = inputs.hook_x_m > deck.mean_aim.x_m - ramp_aft_of_aim_point_m;
-                    let theta = if wave_off && past_ramp {
+                    let theta = if wave_off
+                        && inputs.hook_x_m > deck.mean_aim.x_m - ramp_aft_of_aim_point_m
+                    {
                         theta.max(trim_theta)
                     } else {
                         theta
