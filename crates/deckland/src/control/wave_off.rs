@@ -20,7 +20,10 @@
 //!
 //! The wave-off is flown by the outer loops: full thrust of both engines, and a climb
 //! rate of `climb_rate_mps` commanded to the sink-rate loop, whose pitch authority
-//! limits the rotation (pitching up swings the hook, 7 m aft of the CG, down).
+//! limits the rotation (pitching up swings the hook, 7 m aft of the CG, down); the pitch
+//! command is kept at or above the air-relative flight path plus `min_alpha_deg`, and
+//! past the ramp at or above the approach attitude
+//! ([`crate::simulation::WaveOffFlight`]).
 
 use serde::{Deserialize, Serialize};
 
@@ -69,6 +72,13 @@ pub struct WaveOffParameters {
     pub max_landing_point_displacement_m: f64,
     /// Climb rate commanded in the wave-off (m/s, up); 5 m/s.
     pub climb_rate_mps: f64,
+    /// Smallest angle of attack the wave-off flies (deg); 2°. At full thrust the climb
+    /// overshoots its command and the sink-rate loop pushes the nose over; in the heavy
+    /// sea's wake that took α below the aerodynamic model's −5° (29 approaches in 1000
+    /// diverged so, docs/no-oracle-results.md). The pitch command is kept at or above
+    /// the air-relative flight-path angle plus this, an α limiter as fly-by-wire control
+    /// laws have; the approach flies α ≈ 7°.
+    pub min_alpha_deg: f64,
 }
 
 impl Default for WaveOffParameters {
@@ -84,6 +94,7 @@ impl Default for WaveOffParameters {
             max_deck_pitch_deg: 3.5,
             max_landing_point_displacement_m: 5.35,
             climb_rate_mps: 5.0,
+            min_alpha_deg: 2.0,
         }
     }
 }
@@ -99,7 +110,9 @@ impl WaveOffParameters {
 
     /// Checks every limit: window 0–30 s, decision point 0–30 s and not after the window
     /// opens, clearance 0–20 m, sink rate (0, 20] m/s, glide-path error (0, 50] m and
-    /// (0, 50] m/s, deck pitch (0, 30]°, displacement (0, 50] m, climb rate (0, 30] m/s.
+    /// (0, 50] m/s, deck pitch (0, 30]°, displacement (0, 50] m, climb rate (0, 30] m/s,
+    /// smallest α −5°–15° (the aerodynamic model's lower end to the stall's side of the
+    /// approach).
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "control.wave_off";
         Bounds::closed(0.0, 30.0).check(
@@ -142,7 +155,8 @@ impl WaveOffParameters {
             "max_landing_point_displacement_m",
             self.max_landing_point_displacement_m,
         )?;
-        Bounds::positive_up_to(30.0).check(SECTION, "climb_rate_mps", self.climb_rate_mps)
+        Bounds::positive_up_to(30.0).check(SECTION, "climb_rate_mps", self.climb_rate_mps)?;
+        Bounds::closed(-5.0, 15.0).check(SECTION, "min_alpha_deg", self.min_alpha_deg)
     }
 }
 

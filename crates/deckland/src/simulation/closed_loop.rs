@@ -261,6 +261,7 @@ impl ClosedLoop {
             time_s: t,
             theta_trim_rad: self.trim.theta_rad,
             climb_rate_mps,
+            air_path_angle_rad: a.theta_rad - air.alpha_rad,
             hook_x_m,
             hook_h_m,
             hook_x_rate_mps,

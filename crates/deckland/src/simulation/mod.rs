@@ -34,7 +34,7 @@ pub use events::PROBE_RANGE_AFT_OF_RAMP_M;
 pub use flight_computer::HeldCommands;
 pub use layout::{BlockStates, Slot, StateLayout};
 pub use outcome::{Divergence, EndReason, Event, LandingRules, Outcome, RunSummary, Touchdown};
-pub use outer_loops::OuterLoops;
+pub use outer_loops::{OuterLoops, WaveOffFlight};
 pub use recorder::{GlidePathStatistics, Recorder};
 pub use runner::{Simulation, Stop};
 pub use setup::{approach_flight_path_angle, PitchLawFactory, SetupError};

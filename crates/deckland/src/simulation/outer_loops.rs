@@ -38,16 +38,53 @@ pub enum OuterLoops {
     Approach {
         /// The glide-path generator.
         flight_path: FlightPathGenerator,
-        /// The climb rate commanded in a wave-off (m/s); `None` without wave-offs.
-        wave_off_climb_rate_mps: Option<f64>,
-        /// The ramp's distance aft of the landing point (m): once the hook is past it, a
-        /// wave-off holds at least the approach attitude.
-        ramp_aft_of_aim_point_m: f64,
+        /// How a wave-off is flown; `None` without wave-offs.
+        wave_off: Option<WaveOffFlight>,
         /// Guidance: height error → climb-rate command.
         guidance: LoopController,
         /// The sink-rate loop: climb-rate error → pitch command.
         sink_rate: LoopController,
     },
+}
+
+/// How the outer loops fly a wave-off (docs/model.md §9): a commanded climb through the
+/// sink-rate loop, with two floors under its pitch command.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct WaveOffFlight {
+    /// The climb rate commanded (m/s, up).
+    pub climb_rate_mps: f64,
+    /// The smallest angle of attack flown (rad): the pitch command is at least the
+    /// air-relative flight-path angle plus this.
+    pub min_alpha_rad: f64,
+    /// The ramp's distance aft of the landing point (m): once the hook is past it, the
+    /// pitch command is at least the approach attitude.
+    pub ramp_aft_of_aim_point_m: f64,
+}
+
+impl WaveOffFlight {
+    /// The pitch command `theta_rad` of the sink-rate loop with the wave-off's floors,
+    /// and whether a floor raised it. At full thrust the climb overshoots its command,
+    /// and the sink-rate loop pushes over: in the heavy sea's wake that took α below the
+    /// aerodynamic model's −5°. The attitude floor waits for the ramp (pitching up
+    /// before it swings the hook down towards it); the α floor does not, as losing the
+    /// wing is worse.
+    #[inline(always)]
+    fn floored_pitch(
+        &self,
+        theta_rad: f64,
+        inputs: &OuterLoopInputs,
+        deck: &DeckReference,
+    ) -> (f64, bool) {
+        let mut floor = inputs.air_path_angle_rad + self.min_alpha_rad;
+        if inputs.hook_x_m > deck.mean_aim.x_m - self.ramp_aft_of_aim_point_m {
+            floor = floor.max(inputs.theta_trim_rad);
+        }
+        if theta_rad < floor {
+            (floor, true)
+        } else {
+            (theta_rad, false)
+        }
+    }
 }
 
 /// The hook's kinematics and the aircraft's climb rate, as the outer loops read them.
@@ -56,6 +93,8 @@ pub(crate) struct OuterLoopInputs {
     pub time_s: f64,
     pub theta_trim_rad: f64,
     pub climb_rate_mps: f64,
+    /// The air-relative flight-path angle θ − α (rad).
+    pub air_path_angle_rad: f64,
     pub hook_x_m: f64,
     pub hook_h_m: f64,
     pub hook_x_rate_mps: f64,
@@ -85,6 +124,9 @@ pub(crate) struct OuterLoopOutputs {
     pub height_error_m: f64,
     /// Climb-rate error (m/s), 0 without a sink-rate loop.
     pub climb_rate_error_mps: f64,
+    /// Whether a wave-off's floor raised the pitch command (the sink-rate integrator
+    /// then holds).
+    pub pitch_floored: bool,
 }
 
 impl OuterLoops {
@@ -100,6 +142,7 @@ impl OuterLoops {
     ) -> OuterLoopOutputs {
         let trim_theta = inputs.theta_trim_rad;
         let (mut reference_rate, mut reference_acceleration) = (0.0, 0.0);
+        let mut pitch_floored = false;
         let (theta_ref_rad, climb_rate_command_mps, path, height_error_m, climb_rate_error_mps) =
             match self {
                 Self::PitchStep {
@@ -141,17 +184,17 @@ impl OuterLoops {
                     flight_path,
                     guidance,
                     sink_rate,
-                    wave_off_climb_rate_mps,
-                    ramp_aft_of_aim_point_m,
+                    wave_off: flight,
                 } => {
                     let deck = deck.expect("an approach always holds a deck reference");
                     let path = flight_path.reference(inputs.hook_x_m, inputs.hook_x_rate_mps, deck);
                     let height_error = path.height_m - inputs.hook_h_m;
                     let height_error_rate = path.climb_rate_mps - inputs.hook_climb_rate_mps;
                     // A wave-off commands its climb; the guidance no longer flies the path.
-                    let command = taps.climb_rate_command(match wave_off_climb_rate_mps {
-                        Some(climb) if wave_off => *climb,
-                        _ => {
+                    let flight = flight.filter(|_| wave_off);
+                    let command = taps.climb_rate_command(match flight {
+                        Some(flight) => flight.climb_rate_mps,
+                        None => {
                             path.climb_rate_mps
                                 + guidance.output(
                                     height_error,
@@ -164,17 +207,13 @@ impl OuterLoops {
                     let theta = trim_theta
                         + sink_rate.output(error, inputs.sink_rate_integral_m, 0.0)
                         + inputs.wake_pitch_feedforward_rad;
-                    // Past the ramp a wave-off holds at least the approach attitude
-                    // (docs/model.md §9): at full thrust the climb overshoots its command,
-                    // and pushing over took α below −5° in the heavy sea's wake. Before
-                    // the ramp the law is left alone: pitching up there swings the hook
-                    // down towards the ramp.
-                    let theta = if wave_off
-                        && inputs.hook_x_m > deck.mean_aim.x_m - ramp_aft_of_aim_point_m
-                    {
-                        theta.max(trim_theta)
-                    } else {
-                        theta
+                    let theta = match flight {
+                        Some(flight) => {
+                            let (theta, floored) = flight.floored_pitch(theta, inputs, deck);
+                            pitch_floored = floored;
+                            theta
+                        }
+                        None => theta,
                     };
                     (theta, command, Some(path), height_error, error)
                 }
@@ -187,6 +226,7 @@ impl OuterLoops {
             path,
             height_error_m,
             climb_rate_error_mps,
+            pitch_floored,
         }
     }
 
@@ -213,11 +253,17 @@ impl OuterLoops {
                 sink_rate,
                 ..
             } => (
-                sink_rate.integral_rate(
-                    outputs.climb_rate_error_mps,
-                    inputs.sink_rate_integral_m,
-                    0.0,
-                ),
+                // The sink-rate integrator holds while a wave-off's floor holds the pitch
+                // command up, so that it does not wind the command further down.
+                if outputs.pitch_floored {
+                    0.0
+                } else {
+                    sink_rate.integral_rate(
+                        outputs.climb_rate_error_mps,
+                        inputs.sink_rate_integral_m,
+                        0.0,
+                    )
+                },
                 // The guidance integrator holds in a wave-off.
                 if wave_off {
                     0.0

@@ -5,7 +5,7 @@ use super::anchor_shaping::AnchorShaping;
 use super::closed_loop::{ClosedLoop, LoopLayout, StepStreams};
 use super::deck_prediction::{DeckPredictor, DeckView, EstimatorPredictor};
 use super::flight_computer::FlightComputer;
-use super::outer_loops::OuterLoops;
+use super::outer_loops::{OuterLoops, WaveOffFlight};
 use crate::aircraft::{linearize, trim, Aircraft, LinearModel, TrimError, TrimPoint, TrimRequest};
 use crate::control::pitch::command_shaping::JerkLimitedStep;
 use crate::control::pitch::design::{
@@ -90,11 +90,11 @@ fn outer_loops(
             );
             let loops = OuterLoops::Approach {
                 flight_path: FlightPathGenerator::new(control.flight_path)?,
-                wave_off_climb_rate_mps: control
-                    .wave_off
-                    .enabled
-                    .then_some(control.wave_off.climb_rate_mps),
-                ramp_aft_of_aim_point_m: scenario.environment.deck.ramp_aft_of_aim_point_m,
+                wave_off: control.wave_off.enabled.then_some(WaveOffFlight {
+                    climb_rate_mps: control.wave_off.climb_rate_mps,
+                    min_alpha_rad: control.wave_off.min_alpha_deg.to_radians(),
+                    ramp_aft_of_aim_point_m: scenario.environment.deck.ramp_aft_of_aim_point_m,
+                }),
                 guidance: control.guidance.controller(),
                 sink_rate: control.sink_rate.controller(),
             };
