@@ -36,7 +36,7 @@ pub struct EnvironmentArgs {
         allow_negative_numbers = true
     )]
     pub(crate) airspeed_mps: f64,
-    /// Output folder (default: a new runs/environment-<UTC timestamp>).
+    /// Output folder (default: a new `runs/environment-<UTC time>`).
     #[arg(long)]
     pub(crate) out: Option<PathBuf>,
     /// Replace the results of an earlier deckland run in the `--out` folder (only the

@@ -19,7 +19,7 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct ElevatorActuatorParameters {
-    /// Natural frequency ω_n (rad/s); 30.74 rad/s (paper §3.6, ref. [13]).
+    /// Natural frequency ω_n (rad/s); 30.74 rad/s (paper §3.6, ref. \[13\]).
     pub natural_frequency_rad_s: f64,
     /// Damping ratio ζ (–); 0.509 (paper §3.6).
     pub damping_ratio: f64,

@@ -11,7 +11,7 @@ pub struct EngineParameters {
     /// (paper Table 2: F404-GE-400, 16000 lbf).
     pub max_thrust_per_engine_n: f64,
     /// Time constant of the first-order lag from commanded to actual thrust (s);
-    /// 0.625 s, the slower non-afterburning value of the paper's reference [13].
+    /// 0.625 s, the slower non-afterburning value of the paper's reference \[13\].
     pub time_constant_s: f64,
 }
 

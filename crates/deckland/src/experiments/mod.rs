@@ -9,7 +9,7 @@
 //! - [`fly_seeds`] and [`OutcomeCounts`]: one scenario over many seeds, in parallel;
 //! - campaigns with dispersions and confidence intervals: [`crate::monte_carlo`].
 //!
-//! Every function takes a complete [`Scenario`] (choose its conditions with
+//! Every function takes a complete [`Scenario`](crate::scenario::Scenario) (choose its conditions with
 //! [`Conditions`]) and returns an [`ExperimentError`] naming what could not be set up or
 //! measured.
 

@@ -21,7 +21,7 @@
 //! 2. **Feedback.** The error dynamics' settling time T_2% (ζ = 1), the observer's ε and
 //!    the attitude fed back (measured or estimated) are searched on a grid; a candidate
 //!    is admissible when, on the reduced linear loop with the actuator
-//!    ([`PitchLoopModel`]), the phase and gain margins at the elevator command meet their
+//!    ([`loop_model::PitchLoopModel`]), the phase and gain margins at the elevator command meet their
 //!    targets, the closed loop θ/θ_ref lags the outer (sink-rate) loop's crossover by no
 //!    more than the allowed phase, and the elevator rate driven by the sensor noise (its
 //!    white part and its sinusoid) stays within a fraction of the rate limit, and the
@@ -219,7 +219,8 @@ pub enum PitchDesignError {
 }
 
 /// A pitch law in its linear limit, with the scenario parameter that sets its speed (for
-/// the message of [`check_rate_limit`]).
+/// the message with which setup refuses a tuning the hardware cannot fly,
+/// `control.rate_limit_check`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LinearisedLaw {
     /// The law on the reduced pitch loop.
