@@ -22,8 +22,7 @@
 //! rate of `climb_rate_mps` commanded to the sink-rate loop, whose pitch authority
 //! limits the rotation (pitching up swings the hook, 7 m aft of the CG, down); the pitch
 //! command is kept at or above the air-relative flight path plus `min_alpha_deg`, and
-//! past the ramp at or above the approach attitude
-//! ([`crate::simulation::WaveOffFlight`]).
+//! past the ramp at or above the approach attitude (the simulation's `WaveOffFlight`).
 
 use serde::{Deserialize, Serialize};
 
