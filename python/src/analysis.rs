@@ -46,17 +46,19 @@ pub struct Trim {
 
 impl Trim {
     fn new(py: Python<'_>, configuration: ConfigurationName, point: &TrimPoint) -> PyResult<Self> {
+        // The degrees and names of `deckland trim --json`, from the library.
+        let report = point.report(configuration);
         Ok(Self {
-            configuration: configuration.to_string(),
-            speed_mps: point.speed_mps,
-            gamma_deg: point.flight_path_angle_rad.to_degrees(),
-            alpha_deg: point.alpha_rad.to_degrees(),
-            theta_deg: point.theta_rad.to_degrees(),
-            elevator_deg: point.elevator_rad.to_degrees(),
-            thrust_n: point.thrust_n,
-            throttle: point.throttle,
-            residuals: to_python(py, &point.residuals)?,
-            iterations: point.iterations,
+            residuals: to_python(py, &report.residuals)?,
+            configuration: report.configuration,
+            speed_mps: report.speed_mps,
+            gamma_deg: report.gamma_deg,
+            alpha_deg: report.alpha_deg,
+            theta_deg: report.theta_deg,
+            elevator_deg: report.elevator_deg,
+            thrust_n: report.thrust_n,
+            throttle: report.throttle,
+            iterations: report.iterations,
         })
     }
 }
@@ -233,24 +235,6 @@ impl LinearModel {
     }
 }
 
-/// One mode as `deckland linearize --json` writes it.
-#[derive(serde::Serialize)]
-struct ModeReport {
-    name: &'static str,
-    eigenvalue: Eigenvalue,
-    natural_frequency_rad_s: f64,
-    damping_ratio: f64,
-    period_s: Option<f64>,
-    time_to_half_s: Option<f64>,
-    time_to_double_s: Option<f64>,
-}
-
-#[derive(serde::Serialize)]
-struct Eigenvalue {
-    re: f64,
-    im: f64,
-}
-
 /// Linearises the F/A-18 about the trim `deckland.trim` finds for the same arguments
 /// (`deckland linearize`): the airframe alone, in still air, by central differences.
 #[pyfunction]
@@ -269,21 +253,7 @@ pub fn linearize(
             .collect()
     };
     let eigenvalues = model.eigenvalues();
-    let modes: Vec<ModeReport> = identify_modes(&eigenvalues)
-        .iter()
-        .map(|mode| ModeReport {
-            name: mode.kind.name(),
-            eigenvalue: Eigenvalue {
-                re: mode.eigenvalue.re,
-                im: mode.eigenvalue.im,
-            },
-            natural_frequency_rad_s: mode.natural_frequency_rad_s,
-            damping_ratio: mode.damping_ratio,
-            period_s: mode.period_s,
-            time_to_half_s: mode.time_to_half_s,
-            time_to_double_s: mode.time_to_double_s,
-        })
-        .collect();
+    let modes = identify_modes(&eigenvalues);
     Ok(LinearModel {
         a: rows(&|i, j| model.a[(i, j)], STATE_NAMES.len()),
         b: rows(&|i, j| model.b[(i, j)], INPUT_NAMES.len()),

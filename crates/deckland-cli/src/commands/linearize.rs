@@ -1,8 +1,9 @@
 //! `deckland linearize`: the paper's Eq. (14) linear model about a trim point, its
 //! eigenvalues and modes.
 
-use super::trim::{print_trim_table, TrimArgs, TrimReport};
+use super::trim::{print_trim_table, TrimArgs};
 use anyhow::Result;
+use deckland::aircraft::TrimReport;
 use deckland::analysis::{
     identify_modes, linearize, LinearModel, Mode, INPUT_NAMES, INPUT_UNITS, STATE_NAMES,
     STATE_UNITS,
@@ -16,34 +17,6 @@ struct Eigenvalue {
 }
 
 #[derive(Debug, Serialize)]
-struct ModeReport {
-    name: &'static str,
-    eigenvalue: Eigenvalue,
-    natural_frequency_rad_s: f64,
-    damping_ratio: f64,
-    period_s: Option<f64>,
-    time_to_half_s: Option<f64>,
-    time_to_double_s: Option<f64>,
-}
-
-impl From<&Mode> for ModeReport {
-    fn from(mode: &Mode) -> Self {
-        Self {
-            name: mode.kind.name(),
-            eigenvalue: Eigenvalue {
-                re: mode.eigenvalue.re,
-                im: mode.eigenvalue.im,
-            },
-            natural_frequency_rad_s: mode.natural_frequency_rad_s,
-            damping_ratio: mode.damping_ratio,
-            period_s: mode.period_s,
-            time_to_half_s: mode.time_to_half_s,
-            time_to_double_s: mode.time_to_double_s,
-        }
-    }
-}
-
-#[derive(Debug, Serialize)]
 struct LinearizeReport {
     trim: TrimReport,
     state_names: [&'static str; 4],
@@ -53,7 +26,7 @@ struct LinearizeReport {
     a: Vec<Vec<f64>>,
     b: Vec<Vec<f64>>,
     eigenvalues: Vec<Eigenvalue>,
-    modes: Vec<ModeReport>,
+    modes: Vec<Mode>,
 }
 
 fn rows<const R: usize, const C: usize>(m: &nalgebra::SMatrix<f64, R, C>) -> Vec<Vec<f64>> {
@@ -150,7 +123,7 @@ pub fn run(args: &TrimArgs) -> Result<()> {
     let modes = identify_modes(&eigenvalues);
     if args.json {
         let report = LinearizeReport {
-            trim: TrimReport::new(args.configuration, &point),
+            trim: point.report(args.configuration),
             state_names: STATE_NAMES,
             state_units: STATE_UNITS,
             input_names: INPUT_NAMES,
@@ -161,7 +134,7 @@ pub fn run(args: &TrimArgs) -> Result<()> {
                 .iter()
                 .map(|l| Eigenvalue { re: l.re, im: l.im })
                 .collect(),
-            modes: modes.iter().map(ModeReport::from).collect(),
+            modes,
         };
         outln!("{}", serde_json::to_string_pretty(&report)?)?;
     } else {

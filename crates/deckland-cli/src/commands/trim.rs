@@ -3,8 +3,7 @@
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use deckland::aircraft::{AerodynamicConfiguration, Aircraft, ConfigurationName};
-use deckland::analysis::{trim, TrimError, TrimPoint, TrimRequest, TrimResiduals};
-use serde::Serialize;
+use deckland::analysis::{trim, TrimError, TrimPoint, TrimRequest};
 
 /// Options shared by `trim` and `linearize`.
 #[derive(Debug, Clone, Args)]
@@ -71,39 +70,6 @@ impl TrimArgs {
     }
 }
 
-/// The trim as written to JSON (degrees at the edge, names carry units).
-#[derive(Debug, Serialize)]
-pub struct TrimReport {
-    configuration: String,
-    speed_mps: f64,
-    gamma_deg: f64,
-    alpha_deg: f64,
-    theta_deg: f64,
-    elevator_deg: f64,
-    thrust_n: f64,
-    throttle: f64,
-    residuals: TrimResiduals,
-    iterations: usize,
-}
-
-impl TrimReport {
-    /// Converts a trim point for output.
-    pub fn new(configuration: ConfigurationName, point: &TrimPoint) -> Self {
-        Self {
-            configuration: configuration.to_string(),
-            speed_mps: point.speed_mps,
-            gamma_deg: point.flight_path_angle_rad.to_degrees(),
-            alpha_deg: point.alpha_rad.to_degrees(),
-            theta_deg: point.theta_rad.to_degrees(),
-            elevator_deg: point.elevator_rad.to_degrees(),
-            thrust_n: point.thrust_n,
-            throttle: point.throttle,
-            residuals: point.residuals,
-            iterations: point.iterations,
-        }
-    }
-}
-
 /// Prints a trim point as a readable table.
 pub fn print_trim_table(
     configuration: ConfigurationName,
@@ -148,7 +114,7 @@ pub fn run(args: &TrimArgs) -> Result<()> {
     if args.json {
         outln!(
             "{}",
-            serde_json::to_string_pretty(&TrimReport::new(args.configuration, &point))?
+            serde_json::to_string_pretty(&point.report(args.configuration))?
         )?;
     } else {
         print_trim_table(

@@ -29,4 +29,4 @@ pub use hook::HookGeometry;
 pub use linearize::{linearize, LinearModel, INPUT_NAMES, INPUT_UNITS, STATE_NAMES, STATE_UNITS};
 pub use parameters::AircraftParameters;
 pub use state::AircraftState;
-pub use trim::{trim, TrimError, TrimPoint, TrimRequest, TrimResiduals};
+pub use trim::{trim, TrimError, TrimPoint, TrimReport, TrimRequest, TrimResiduals};

@@ -50,6 +50,32 @@ impl TrimResiduals {
     }
 }
 
+/// A trim point as the front ends write it (`deckland trim --json`, Python's
+/// `Trim.to_dict()`): angles in degrees, names carrying their units.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TrimReport {
+    /// Aerodynamic configuration: `landing` or `clean`.
+    pub configuration: String,
+    /// True airspeed (m/s).
+    pub speed_mps: f64,
+    /// Flight-path angle (deg), positive climbing.
+    pub gamma_deg: f64,
+    /// Angle of attack α (deg).
+    pub alpha_deg: f64,
+    /// Pitch angle θ (deg).
+    pub theta_deg: f64,
+    /// Elevator δe (deg), positive trailing edge down.
+    pub elevator_deg: f64,
+    /// Total thrust of both engines (N).
+    pub thrust_n: f64,
+    /// Thrust as a fraction of the total maximum thrust (–).
+    pub throttle: f64,
+    /// Rates left at the solution.
+    pub residuals: TrimResiduals,
+    /// Newton iterations taken.
+    pub iterations: usize,
+}
+
 /// A trimmed flight condition.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TrimPoint {
@@ -74,6 +100,22 @@ pub struct TrimPoint {
 }
 
 impl TrimPoint {
+    /// This trim point as the front ends write it, for the aerodynamic `configuration`.
+    pub fn report(&self, configuration: impl std::fmt::Display) -> TrimReport {
+        TrimReport {
+            configuration: configuration.to_string(),
+            speed_mps: self.speed_mps,
+            gamma_deg: self.flight_path_angle_rad.to_degrees(),
+            alpha_deg: self.alpha_rad.to_degrees(),
+            theta_deg: self.theta_rad.to_degrees(),
+            elevator_deg: self.elevator_rad.to_degrees(),
+            thrust_n: self.thrust_n,
+            throttle: self.throttle,
+            residuals: self.residuals,
+            iterations: self.iterations,
+        }
+    }
+
     /// The plant state at this trim point at position (`x_m`, `h_m`), flying in a steady
     /// uniform `wind`: the air-relative velocity is the trim's, the inertial velocity is
     /// that plus the wind; engines and actuator sit at their trim values.

@@ -34,12 +34,15 @@ impl ModeKind {
     }
 }
 
-/// One mode of the linear model.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// One mode of the linear model. It serialises as `deckland linearize --json` writes
+/// it: `name`, `eigenvalue` as `{re, im}`, then the figures.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Mode {
     /// What the mode is.
+    #[serde(rename = "name")]
     pub kind: ModeKind,
     /// The eigenvalue with non-negative imaginary part (1/s).
+    #[serde(serialize_with = "real_and_imaginary")]
     pub eigenvalue: Complex<f64>,
     /// Natural frequency ω_n = |λ| (rad/s).
     pub natural_frequency_rad_s: f64,
@@ -51,6 +54,18 @@ pub struct Mode {
     pub time_to_half_s: Option<f64>,
     /// Time to double amplitude ln 2/Re λ (s), for unstable modes.
     pub time_to_double_s: Option<f64>,
+}
+
+/// A complex number as `{"re": …, "im": …}`.
+fn real_and_imaginary<S: serde::Serializer>(
+    z: &Complex<f64>,
+    serializer: S,
+) -> Result<S::Ok, S::Error> {
+    use serde::ser::SerializeStruct;
+    let mut parts = serializer.serialize_struct("Eigenvalue", 2)?;
+    parts.serialize_field("re", &z.re)?;
+    parts.serialize_field("im", &z.im)?;
+    parts.end()
 }
 
 impl Mode {
@@ -130,6 +145,26 @@ mod tests {
         assert_eq!(ph.kind, ModeKind::Phugoid);
         assert!(ph.damping_ratio < 0.0);
         assert!((ph.time_to_double_s.unwrap() - std::f64::consts::LN_2 / 0.01).abs() < 1e-9);
+    }
+
+    /// The JSON shape both front ends write (`deckland linearize --json`, Python's
+    /// `LinearModel.modes`): λ = −3 + 4i, the faster of two pairs, gives |λ| = 5, ζ = 0.6, period 2π/4.
+    #[test]
+    fn a_mode_serialises_with_its_name_and_the_eigenvalue_as_re_and_im() {
+        let modes = identify_modes(&[
+            Complex::new(-3.0, 4.0),
+            Complex::new(-3.0, -4.0),
+            Complex::new(-0.01, 0.1),
+            Complex::new(-0.01, -0.1),
+        ]);
+        let json = serde_json::to_string(&modes[0]).unwrap_or_default();
+        assert!(
+            json.starts_with(
+                r#"{"name":"short_period","eigenvalue":{"re":-3.0,"im":4.0},"natural_frequency_rad_s":5.0,"damping_ratio":0.6,"period_s":1.5707963267948966,"time_to_half_s":"#
+            ),
+            "{json}"
+        );
+        assert!(json.ends_with(r#","time_to_double_s":null}"#), "{json}");
     }
 
     #[test]
