@@ -334,7 +334,7 @@ fn past_the_ramp_a_wave_off_holds_at_least_the_approach_attitude() {
 
 /// A wave-off keeps α off the aerodynamic model's −5° floor (docs/model.md §9,
 /// `control.wave_off.min_alpha_deg`). Run 144 of `deckland campaign
-/// scenarios/heavy-sea.toml --runs 1000 --seed 1` waves off 2.7 s before the deck: at full
+/// scenarios/heavy-sea.toml --runs 1000 --seed 1` waves off (at t = 24.06 s, on deck pitch): at full
 /// thrust the climb overshoots its 5 m/s, the sink-rate loop pushes the nose over and the
 /// wake's downdraft takes α below −5° (the run ends diverged, as 29 of those 1000 did
 /// before the α floor). With the pitch command kept at or above the air-relative flight

@@ -253,9 +253,12 @@ impl OuterLoops {
                 sink_rate,
                 ..
             } => (
-                // The sink-rate integrator holds while a wave-off's floor holds the pitch
-                // command up, so that it does not wind the command further down.
-                if outputs.pitch_floored {
+                // While a wave-off's floor holds the pitch command up, the sink-rate
+                // integrator does not wind the loop's own command further down (the
+                // conditional integration of LoopController, with the floor as the limit).
+                if outputs.pitch_floored
+                    && outputs.climb_rate_error_mps * sink_rate.gains.integral < 0.0
+                {
                     0.0
                 } else {
                     sink_rate.integral_rate(
