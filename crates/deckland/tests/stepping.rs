@@ -215,8 +215,5 @@ fn a_wave_off_is_an_event_then_the_end() {
             decision
         }
     );
-    assert_eq!(
-        simulation.system().wave_off_decision(),
-        Some((time_s, decision))
-    );
+    assert_eq!(simulation.wave_off_decision(), Some((time_s, decision)));
 }

@@ -56,6 +56,9 @@ pub struct HeldInputs {
     pub frame_starts: bool,
     /// Whether the aircraft is waving off (docs/model.md §9): full thrust and a climb.
     pub wave_off: bool,
+    /// A wave-off decided by the supervisor at this step's start (its time (s) and
+    /// why): an event for the run loop to report and to fly from now on.
+    pub wave_off_decided: Option<(f64, WaveOffDecision)>,
 }
 
 /// The random streams the loop draws from step by step.
@@ -91,10 +94,6 @@ pub struct ClosedLoop {
     pub(crate) wake_feedforward_lead_s: Option<f64>,
     /// Direct lift control, in an approach that flies it (docs/model.md §5.9).
     pub(crate) direct_lift: Option<DirectLiftParameters>,
-    /// The wave-off decision, once taken: its time (s) and why.
-    pub(crate) waved_off: Option<(f64, WaveOffDecision)>,
-    /// A decision taken while holding the inputs of a step, not yet reported as an event.
-    pub(crate) unreported_wave_off: Option<(f64, WaveOffDecision)>,
 }
 
 impl ClosedLoop {
@@ -152,17 +151,28 @@ impl ClosedLoop {
 
     /// Draws and samples the inputs held over the step from `t`: the ship filters' white
     /// noise and the pitch sensor's error (each from its own stream, docs/model.md §3.4), the
-    /// wind at the aircraft and, in an approach, the deck reference and whether the
-    /// aircraft waves off (the guidance computer's step).
-    pub fn hold(&mut self, t: f64, x: &[f64], streams: &mut StepStreams, dt: f64) -> HeldInputs {
+    /// wind at the aircraft and, in an approach, the deck reference (the guidance
+    /// computer's step). `waving_off` says whether a wave-off was decided before this
+    /// step; if not, the wave-off supervisor may decide one now, which the held inputs
+    /// carry out as an event ([`HeldInputs::wave_off_decided`]) and fly from this step.
+    pub fn hold(
+        &mut self,
+        t: f64,
+        x: &[f64],
+        streams: &mut StepStreams,
+        dt: f64,
+        waving_off: bool,
+    ) -> HeldInputs {
         let ship_state = self.ship_state(x);
         let aircraft = self.aircraft_state(x);
         let (pose, _) = self.ship_pose(x, t);
         let wind = self
             .wind
             .wind(t, pose.distance_aft_of_pitch_centre_m(aircraft.x_m));
-        let deck = self.guidance_computer_step(t, x, &aircraft, &ship_state, dt);
-        let wave_off = self.waved_off.is_some();
+        let (deck, decision) =
+            self.guidance_computer_step(t, x, &aircraft, &ship_state, dt, waving_off);
+        let wave_off_decided = decision.map(|decision| (t, decision));
+        let wave_off = waving_off || wave_off_decided.is_some();
         let ship_noise = self
             .ship
             .draw_noise(&mut streams.ship_heave, &mut streams.ship_pitch, dt);
@@ -176,6 +186,7 @@ impl ClosedLoop {
                 theta_read: None,
                 frame_starts: false,
                 wave_off,
+                wave_off_decided,
             };
         };
         // A frame of the flight-control computer: read the sensor (the mean of its samples
@@ -193,6 +204,7 @@ impl ClosedLoop {
             theta_read: Some((computer.theta_read_rad, computer.theta_read_time_s)),
             frame_starts,
             wave_off,
+            wave_off_decided,
         };
         self.computer = Some(computer);
         held
@@ -444,17 +456,6 @@ impl ClosedLoop {
             direct_lift_coefficient: direct_lift.map(|(increment, _)| increment),
             direct_lift_command: direct_lift.map(|(_, command)| command),
         }
-    }
-
-    /// The wave-off decision, once taken: its time (s) and why.
-    pub fn wave_off_decision(&self) -> Option<(f64, WaveOffDecision)> {
-        self.waved_off
-    }
-
-    /// The wave-off decision taken since the last call, if any (for the run loop to
-    /// report it as an event once).
-    pub(crate) fn take_unreported_wave_off(&mut self) -> Option<(f64, WaveOffDecision)> {
-        self.unreported_wave_off.take()
     }
 
     /// Holds the elevator actuator at its stops after a step.

@@ -17,6 +17,7 @@ use super::setup::{build, SetupError};
 use super::signals::{Signals, SIGNAL_MAGNITUDE_LIMIT};
 use super::taps::{NoTaps, Taps};
 use crate::aircraft::{ALPHA_MAX_RAD, ALPHA_MIN_RAD};
+use crate::control::WaveOffDecision;
 use crate::integration::Rk4Workspace;
 use crate::scenario::Scenario;
 
@@ -54,6 +55,8 @@ pub struct Simulation {
     statistics: GlidePathStatistics,
     activity: ActivityStatistics,
     ramp_clearance_m: Option<f64>,
+    /// The wave-off decision, once the supervisor has emitted it: its time (s) and why.
+    wave_off: Option<(f64, WaveOffDecision)>,
     pending: VecDeque<Stop>,
     summary: Option<RunSummary>,
     end: Option<EndReason>,
@@ -101,6 +104,7 @@ impl Simulation {
             statistics: GlidePathStatistics::default(),
             activity,
             ramp_clearance_m: None,
+            wave_off: None,
             pending: VecDeque::with_capacity(4),
             summary: None,
             end: None,
@@ -139,7 +143,13 @@ impl Simulation {
             // Drawn from copies of the random streams: looking changes nothing.
             let mut system = self.system.clone();
             let mut streams = self.streams.clone();
-            let mut held = system.hold(self.time_s, &self.state, &mut streams, self.dt);
+            let mut held = system.hold(
+                self.time_s,
+                &self.state,
+                &mut streams,
+                self.dt,
+                self.wave_off.is_some(),
+            );
             system.compute_frame(self.time_s, &self.state, &mut held, &NoTaps);
             held
         };
@@ -155,9 +165,13 @@ impl Simulation {
     /// inputs of the last step. For observations between steps and for analyses.
     pub fn next_step_inputs(&mut self) -> HeldInputs {
         if self.end.is_none() && !self.held_for_next_step {
-            self.held = self
-                .system
-                .hold(self.time_s, &self.state, &mut self.streams, self.dt);
+            self.held = self.system.hold(
+                self.time_s,
+                &self.state,
+                &mut self.streams,
+                self.dt,
+                self.wave_off.is_some(),
+            );
             self.system
                 .compute_frame(self.time_s, &self.state, &mut self.held, &NoTaps);
             self.inputs_held = true;
@@ -169,6 +183,11 @@ impl Simulation {
     /// The result, once the run has ended.
     pub fn summary(&self) -> Option<&RunSummary> {
         self.summary.as_ref()
+    }
+
+    /// The wave-off decision, once the supervisor has taken it: its time (s) and why.
+    pub fn wave_off_decision(&self) -> Option<(f64, WaveOffDecision)> {
+        self.wave_off
     }
 
     /// Why the run ended, once it has.
@@ -206,12 +225,20 @@ impl Simulation {
         }
         let t = self.time_s;
         if !self.held_for_next_step {
-            self.held = self.system.hold(t, &self.state, &mut self.streams, self.dt);
+            self.held = self.system.hold(
+                t,
+                &self.state,
+                &mut self.streams,
+                self.dt,
+                self.wave_off.is_some(),
+            );
             self.inputs_held = true;
         }
         self.held_for_next_step = false;
-        // A wave-off decided while holding this step's inputs is an event of this step.
-        if let Some((time_s, decision)) = self.system.take_unreported_wave_off() {
+        // A wave-off the supervisor decided while holding this step's inputs is an event
+        // of this step, flown from now on.
+        if let Some((time_s, decision)) = self.held.wave_off_decided.take() {
+            self.wave_off = Some((time_s, decision));
             let event = Event::WaveOff { time_s, decision };
             recorder.event(&event);
             self.pending.push_back(Stop::Event(event));
@@ -229,7 +256,7 @@ impl Simulation {
         }
         if approach && end.is_none() {
             // The glide-path statistics cover the approach, not a wave-off's climb.
-            if self.system.wave_off_decision().is_none() {
+            if self.wave_off.is_none() {
                 self.statistics.sample(&signals);
             }
             for event in self.detector.detect(&signals).iter() {
@@ -238,7 +265,7 @@ impl Simulation {
                 }
                 recorder.event(event);
                 self.pending.push_back(Stop::Event(*event));
-                let judged = match self.system.wave_off_decision() {
+                let judged = match self.wave_off {
                     Some((decided_at_s, decision)) => {
                         self.rules.judge_in_wave_off(event, decided_at_s, decision)
                     }

@@ -462,8 +462,6 @@ pub(crate) fn build(
             && flight_path.wake_feedforward
             && env.wind.steady_wake)
             .then_some(flight_path.wake_feedforward_lead_s),
-        waved_off: None,
-        unreported_wave_off: None,
         direct_lift,
     };
     Ok(Setup {

@@ -16,7 +16,8 @@ use crate::environment::{DeckGeometry, ShipMotionState};
 impl ClosedLoop {
     /// The guidance computer at the start of a step from `t` (state `x`): the deck
     /// predictor observes the ship, and in an approach gives the deck reference held over
-    /// the step, on which the wave-off is decided (once).
+    /// the step, on which the wave-off supervisor decides (unless `waving_off` already):
+    /// the reference and the decision, if one is taken now.
     pub(crate) fn guidance_computer_step(
         &mut self,
         t: f64,
@@ -24,7 +25,8 @@ impl ClosedLoop {
         aircraft: &AircraftState,
         ship_state: &ShipMotionState,
         dt: f64,
-    ) -> Option<DeckReference> {
+        waving_off: bool,
+    ) -> (Option<DeckReference>, Option<WaveOffDecision>) {
         let (pose, rate) = self.ship_pose(x, t);
         let view = DeckView {
             ship_model: &self.ship,
@@ -35,7 +37,7 @@ impl ClosedLoop {
         };
         self.deck_predictor.observe(t, &view);
         let OuterLoops::Approach { flight_path, .. } = &self.outer else {
-            return None;
+            return (None, None);
         };
         let (sin_t, cos_t) = aircraft.theta_rad.sin_cos();
         let (hook_x_m, hook_h_m) = self.hook.position_trig(aircraft, sin_t, cos_t);
@@ -53,21 +55,17 @@ impl ClosedLoop {
             flight_path,
             &track,
         );
-        if self.waved_off.is_none() {
-            let hook = HookKinematics {
-                x_m: hook_x_m,
-                h_m: hook_h_m,
-                x_rate_mps: hook_x_rate_mps,
-                climb_rate_mps: hook_climb_rate_mps,
-            };
-            if let Some(decision) =
-                assess(&self.wave_off, flight_path, &self.deck, &reference, &hook)
-            {
-                self.waved_off = Some((t, decision));
-                self.unreported_wave_off = Some((t, decision));
-            }
+        if waving_off {
+            return (Some(reference), None);
         }
-        Some(reference)
+        let hook = HookKinematics {
+            x_m: hook_x_m,
+            h_m: hook_h_m,
+            x_rate_mps: hook_x_rate_mps,
+            climb_rate_mps: hook_climb_rate_mps,
+        };
+        let decision = assess(&self.wave_off, flight_path, &self.deck, &reference, &hook);
+        (Some(reference), decision)
     }
 }
 
