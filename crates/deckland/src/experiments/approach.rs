@@ -1,11 +1,13 @@
 //! One approach to the deck, recorded.
 
-use serde::Serialize;
+use serde::ser::{Serialize, SerializeStruct, Serializer};
 
 use super::ExperimentError;
 use crate::recording::TimeSeriesRecorder;
 use crate::scenario::{Mission, Scenario};
-use crate::simulation::{Event, PitchLawFactory, RunSummary, Signals, Simulation};
+use crate::simulation::{
+    Event, PitchLawFactory, RecordedColumn, RunSummary, SignalId, Signals, Simulation,
+};
 
 /// How often an approach's time series is recorded (s of simulated time): every 10 ms.
 pub const APPROACH_RECORD_INTERVAL_S: f64 = 0.01;
@@ -54,88 +56,66 @@ fn record(simulation: Simulation) -> Result<ApproachRun, ExperimentError> {
     })
 }
 
-/// One recorded instant of an approach as a flat row (SI units, angles in degrees): the
-/// columns of the CLI's `approach.csv` and of the Python package's time series.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+/// The columns of an approach's time series (the CLI's `approach.csv`, the Python
+/// package's `fly()`), in order: registered signals ([`crate::simulation::SIGNALS`])
+/// under their column names, angles in degrees.
+pub const APPROACH_COLUMNS: [RecordedColumn; 24] = [
+    RecordedColumn::si("time_s", SignalId::Time),
+    RecordedColumn::si("x_m", SignalId::X),
+    RecordedColumn::si("altitude_m", SignalId::Altitude),
+    RecordedColumn::si("hook_height_m", SignalId::HookHeight),
+    RecordedColumn::si("glide_path_height_m", SignalId::PathHeight),
+    RecordedColumn::si("glide_path_error_m", SignalId::GlidePathError),
+    RecordedColumn::si("landing_point_height_m", SignalId::AimHeight),
+    RecordedColumn::si("airspeed_mps", SignalId::Airspeed),
+    RecordedColumn::degrees("alpha_deg", SignalId::Alpha),
+    RecordedColumn::degrees("theta_deg", SignalId::Theta),
+    RecordedColumn::degrees("theta_command_deg", SignalId::ThetaRef),
+    RecordedColumn::degrees("theta_measured_deg", SignalId::ThetaMeasured),
+    RecordedColumn::si("climb_rate_mps", SignalId::ClimbRate),
+    RecordedColumn::si("climb_rate_command_mps", SignalId::ClimbRateCommand),
+    RecordedColumn::degrees("elevator_deg", SignalId::Elevator),
+    RecordedColumn::degrees("elevator_command_deg", SignalId::ElevatorCommand),
+    RecordedColumn::si("thrust_n", SignalId::Thrust),
+    RecordedColumn::si("thrust_command_n", SignalId::ThrustCommand),
+    RecordedColumn::si("wind_x_mps", SignalId::WindX),
+    RecordedColumn::si("wind_z_mps", SignalId::WindZ),
+    RecordedColumn::si("distance_aft_m", SignalId::DistanceAft),
+    RecordedColumn::si("ship_heave_m", SignalId::ShipHeave),
+    RecordedColumn::degrees("ship_pitch_deg", SignalId::ShipPitch),
+    RecordedColumn::si("disturbance_estimate_radps2", SignalId::DisturbanceEstimate),
+];
+
+/// One recorded instant of an approach as a flat row of [`APPROACH_COLUMNS`]: it
+/// serialises as a struct with those fields (an empty CSV field where a signal does not
+/// apply).
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ApproachRow {
-    /// Time (s).
-    pub time_s: f64,
-    /// CG earth x (m).
-    pub x_m: f64,
-    /// CG altitude (m).
-    pub altitude_m: f64,
-    /// Hook height (m).
-    pub hook_height_m: f64,
-    /// Reference height of the hook on the glide path (m); none before the path is
-    /// captured.
-    pub glide_path_height_m: Option<f64>,
-    /// Glide-path error h_ref − h_hook (m), positive when below the path.
-    pub glide_path_error_m: f64,
-    /// Height of the moving landing point (m).
-    pub landing_point_height_m: f64,
-    /// True airspeed (m/s).
-    pub airspeed_mps: f64,
-    /// Angle of attack (deg).
-    pub alpha_deg: f64,
-    /// Pitch angle (deg).
-    pub theta_deg: f64,
-    /// Pitch command θ_ref (deg).
-    pub theta_command_deg: f64,
-    /// Measured pitch angle (deg).
-    pub theta_measured_deg: f64,
-    /// CG climb rate (m/s).
-    pub climb_rate_mps: f64,
-    /// Climb-rate command (m/s); none where no sink-rate loop flies.
-    pub climb_rate_command_mps: Option<f64>,
-    /// Elevator position (deg).
-    pub elevator_deg: f64,
-    /// Elevator command (deg).
-    pub elevator_command_deg: f64,
-    /// Total actual thrust (N).
-    pub thrust_n: f64,
-    /// Total thrust command (N).
-    pub thrust_command_n: f64,
-    /// Wind at the aircraft, x positive forward (m/s).
-    pub wind_x_mps: f64,
-    /// Wind at the aircraft, z positive down (m/s).
-    pub wind_z_mps: f64,
-    /// Distance of the CG aft of the ship's pitch centre (m).
-    pub distance_aft_m: f64,
-    /// Ship heave (m).
-    pub ship_heave_m: f64,
-    /// Ship pitch (deg).
-    pub ship_pitch_deg: f64,
-    /// The pitch law's disturbance estimate (rad/s²), if it has one.
-    pub disturbance_estimate_radps2: Option<f64>,
+    values: [Option<f64>; APPROACH_COLUMNS.len()],
+}
+
+impl ApproachRow {
+    /// The row's value of each column, in order.
+    pub fn values(&self) -> &[Option<f64>] {
+        &self.values
+    }
 }
 
 impl From<&Signals> for ApproachRow {
     fn from(s: &Signals) -> Self {
         Self {
-            time_s: s.time_s,
-            x_m: s.x_m,
-            altitude_m: s.h_m,
-            hook_height_m: s.hook_h_m,
-            glide_path_height_m: s.path_height_m,
-            glide_path_error_m: s.glide_path_error_m,
-            landing_point_height_m: s.aim_point.h_m,
-            airspeed_mps: s.airspeed_mps,
-            alpha_deg: s.alpha_rad.to_degrees(),
-            theta_deg: s.theta_rad.to_degrees(),
-            theta_command_deg: s.theta_ref_rad.to_degrees(),
-            theta_measured_deg: s.theta_measured_rad.to_degrees(),
-            climb_rate_mps: s.climb_rate_mps,
-            climb_rate_command_mps: s.climb_rate_command_mps,
-            elevator_deg: s.elevator_rad.to_degrees(),
-            elevator_command_deg: s.elevator_command_rad.to_degrees(),
-            thrust_n: s.thrust_n,
-            thrust_command_n: s.thrust_command_n,
-            wind_x_mps: s.wind.x_mps,
-            wind_z_mps: s.wind.z_mps,
-            distance_aft_m: s.distance_aft_m,
-            ship_heave_m: s.ship.heave_m,
-            ship_pitch_deg: s.ship.pitch_rad.to_degrees(),
-            disturbance_estimate_radps2: s.disturbance_estimate_radps2,
+            values: APPROACH_COLUMNS.map(|column| column.value(s)),
         }
+    }
+}
+
+impl Serialize for ApproachRow {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut row = serializer.serialize_struct("ApproachRow", APPROACH_COLUMNS.len())?;
+        // `Some(v)` serialises as `v` does (CSV, the columnar front ends' cells).
+        for (column, value) in APPROACH_COLUMNS.iter().zip(self.values) {
+            row.serialize_field(column.name, &value)?;
+        }
+        row.end()
     }
 }

@@ -21,7 +21,8 @@ mod sink_rate;
 mod sweep;
 
 pub use approach::{
-    fly_approach, fly_approach_with_law, ApproachRow, ApproachRun, APPROACH_RECORD_INTERVAL_S,
+    fly_approach, fly_approach_with_law, ApproachRow, ApproachRun, APPROACH_COLUMNS,
+    APPROACH_RECORD_INTERVAL_S,
 };
 pub use conditions::Conditions;
 pub use environment::{record_environment, EnvironmentRecord, EnvironmentSample};

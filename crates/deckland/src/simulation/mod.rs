@@ -38,5 +38,8 @@ pub use outer_loops::{OuterLoops, WaveOffFlight};
 pub use recorder::{GlidePathStatistics, Recorder};
 pub use runner::{Simulation, Stop};
 pub use setup::{approach_flight_path_angle, PitchLawFactory, SetupError};
-pub use signals::{Signals, SIGNAL_MAGNITUDE_LIMIT};
+pub use signals::{
+    Conversion, RecordedColumn, SignalId, SignalSpec, Signals, SIGNALS, SIGNAL_COUNT,
+    SIGNAL_MAGNITUDE_LIMIT,
+};
 pub use taps::{LoopBreak, LoopCut, NoTaps, Overrides, Taps};

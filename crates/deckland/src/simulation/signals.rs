@@ -86,60 +86,162 @@ pub struct Signals {
     pub direct_lift_command: Option<f64>,
 }
 
+/// One signal of the loop, declared once in [`SIGNALS`]: its name, its unit (SI, the
+/// unit the code computes in) and how to read it from [`Signals`]. Every list of
+/// signals — the divergence check, the recorded columns ([`RecordedColumn`]), the loop's
+/// taps ([`super::LoopBreak::signal`]) — refers to this registry.
+#[derive(Clone, Copy)]
+pub struct SignalSpec {
+    /// The signal's identifier.
+    pub id: SignalId,
+    /// Its name (dotted for a component of a structured signal: `wind.x_mps`).
+    pub name: &'static str,
+    /// Its unit (SI; `-` for a dimensionless quantity).
+    pub unit: &'static str,
+    /// What it is.
+    pub description: &'static str,
+    /// Its value in a [`Signals`]; `None` where it does not apply.
+    pub value: fn(&Signals) -> Option<f64>,
+}
+
+impl std::fmt::Debug for SignalSpec {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("SignalSpec")
+            .field("name", &self.name)
+            .field("unit", &self.unit)
+            .finish()
+    }
+}
+
+/// Declares the registry: one line per signal, `Id = "name" ["unit"] |s| value`.
+macro_rules! signal_registry {
+    ($( $(#[doc = $doc:literal])+ $id:ident = $name:literal [$unit:literal] |$s:ident| $get:expr; )+) => {
+        /// A signal of the loop, by identifier (see [`SIGNALS`]).
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+        pub enum SignalId {
+            $( $(#[doc = $doc])+ $id, )+
+        }
+
+        /// The number of registered signals.
+        pub const SIGNAL_COUNT: usize = <[&str]>::len(&[$($name),+]);
+
+        /// Every signal of the loop with its name and unit, in the order of the
+        /// divergence check (the first out of range is the one named).
+        pub const SIGNALS: [SignalSpec; SIGNAL_COUNT] = [
+            $( SignalSpec {
+                id: SignalId::$id,
+                name: $name,
+                unit: $unit,
+                description: concat!($($doc),+),
+                value: |$s: &Signals| -> Option<f64> { $get },
+            }, )+
+        ];
+    };
+}
+
+signal_registry! {
+    /// Time.
+    Time = "time_s" ["s"] |s| Some(s.time_s);
+    /// CG earth x.
+    X = "x_m" ["m"] |s| Some(s.x_m);
+    /// CG altitude.
+    Altitude = "h_m" ["m"] |s| Some(s.h_m);
+    /// Hook earth x.
+    HookX = "hook_x_m" ["m"] |s| Some(s.hook_x_m);
+    /// Hook height.
+    HookHeight = "hook_h_m" ["m"] |s| Some(s.hook_h_m);
+    /// Hook climb rate.
+    HookClimbRate = "hook_climb_rate_mps" ["m/s"] |s| Some(s.hook_climb_rate_mps);
+    /// Hook earth x rate.
+    HookXRate = "hook_x_rate_mps" ["m/s"] |s| Some(s.hook_x_rate_mps);
+    /// Reference height of the hook on the glide path.
+    PathHeight = "path_height_m" ["m"] |s| s.path_height_m;
+    /// Glide-path error h_ref − h_hook, positive below the path.
+    GlidePathError = "glide_path_error_m" ["m"] |s| Some(s.glide_path_error_m);
+    /// Time to touchdown estimated by the glide-path generator.
+    TimeToGo = "time_to_go_s" ["s"] |s| s.time_to_go_s;
+    /// Weight of the moving deck in the glide-path anchor.
+    CompensationWeight = "compensation_weight" ["-"] |s| Some(s.compensation_weight);
+    /// True airspeed.
+    Airspeed = "airspeed_mps" ["m/s"] |s| Some(s.airspeed_mps);
+    /// Angle of attack.
+    Alpha = "alpha_rad" ["rad"] |s| Some(s.alpha_rad);
+    /// Pitch angle.
+    Theta = "theta_rad" ["rad"] |s| Some(s.theta_rad);
+    /// Measured pitch angle.
+    ThetaMeasured = "theta_measured_rad" ["rad"] |s| Some(s.theta_measured_rad);
+    /// Pitch command θ_ref.
+    ThetaRef = "theta_ref_rad" ["rad"] |s| Some(s.theta_ref_rad);
+    /// Pitch rate.
+    PitchRate = "q_radps" ["rad/s"] |s| Some(s.q_radps);
+    /// CG climb rate ḣ.
+    ClimbRate = "climb_rate_mps" ["m/s"] |s| Some(s.climb_rate_mps);
+    /// Climb-rate command.
+    ClimbRateCommand = "climb_rate_command_mps" ["m/s"] |s| s.climb_rate_command_mps;
+    /// Elevator position.
+    Elevator = "elevator_rad" ["rad"] |s| Some(s.elevator_rad);
+    /// Elevator command.
+    ElevatorCommand = "elevator_command_rad" ["rad"] |s| Some(s.elevator_command_rad);
+    /// Total actual thrust.
+    Thrust = "thrust_n" ["N"] |s| Some(s.thrust_n);
+    /// Total thrust command.
+    ThrustCommand = "thrust_command_n" ["N"] |s| Some(s.thrust_command_n);
+    /// Wind at the aircraft, x (positive forward).
+    WindX = "wind.x_mps" ["m/s"] |s| Some(s.wind.x_mps);
+    /// Wind at the aircraft, z (positive down).
+    WindZ = "wind.z_mps" ["m/s"] |s| Some(s.wind.z_mps);
+    /// Distance of the CG aft of the ship's pitch centre.
+    DistanceAft = "distance_aft_m" ["m"] |s| Some(s.distance_aft_m);
+    /// Earth x of the ship's pitch centre.
+    ShipX = "ship.pitch_centre_x_m" ["m"] |s| Some(s.ship.pitch_centre_x_m);
+    /// Ship heave (positive up).
+    ShipHeave = "ship.heave_m" ["m"] |s| Some(s.ship.heave_m);
+    /// Ship pitch (positive bow-up).
+    ShipPitch = "ship.pitch_rad" ["rad"] |s| Some(s.ship.pitch_rad);
+    /// The ship's forward speed.
+    ShipXRate = "ship_rate.pitch_centre_x_rate_mps" ["m/s"] |s| Some(s.ship_rate.pitch_centre_x_rate_mps);
+    /// Ship heave rate.
+    ShipHeaveRate = "ship_rate.heave_rate_mps" ["m/s"] |s| Some(s.ship_rate.heave_rate_mps);
+    /// Ship pitch rate.
+    ShipPitchRate = "ship_rate.pitch_rate_radps" ["rad/s"] |s| Some(s.ship_rate.pitch_rate_radps);
+    /// Earth x of the moving landing point.
+    AimX = "aim_point.x_m" ["m"] |s| Some(s.aim_point.x_m);
+    /// Height of the moving landing point.
+    AimHeight = "aim_point.h_m" ["m"] |s| Some(s.aim_point.h_m);
+    /// The pitch law's disturbance estimate.
+    DisturbanceEstimate = "disturbance_estimate_radps2" ["rad/s²"] |s| s.disturbance_estimate_radps2;
+    /// Direct lift control's lift-coefficient increment ΔC_L.
+    DirectLiftCoefficient = "direct_lift_coefficient" ["-"] |s| s.direct_lift_coefficient;
+    /// Direct lift control's command.
+    DirectLiftCommand = "direct_lift_command" ["-"] |s| s.direct_lift_command;
+}
+
+impl SignalId {
+    /// The signal's entry in the registry.
+    pub fn spec(self) -> &'static SignalSpec {
+        &SIGNALS[self as usize]
+    }
+
+    /// The signal with this name, if one is registered.
+    pub fn from_name(name: &str) -> Option<Self> {
+        SIGNALS
+            .iter()
+            .find(|spec| spec.name == name)
+            .map(|spec| spec.id)
+    }
+}
+
 impl Signals {
-    /// Every numeric signal with its name, `None` for those that do not apply.
-    pub fn named_values(&self) -> [(&'static str, Option<f64>); 37] {
-        [
-            ("time_s", Some(self.time_s)),
-            ("x_m", Some(self.x_m)),
-            ("h_m", Some(self.h_m)),
-            ("hook_x_m", Some(self.hook_x_m)),
-            ("hook_h_m", Some(self.hook_h_m)),
-            ("hook_climb_rate_mps", Some(self.hook_climb_rate_mps)),
-            ("hook_x_rate_mps", Some(self.hook_x_rate_mps)),
-            ("path_height_m", self.path_height_m),
-            ("glide_path_error_m", Some(self.glide_path_error_m)),
-            ("time_to_go_s", self.time_to_go_s),
-            ("compensation_weight", Some(self.compensation_weight)),
-            ("airspeed_mps", Some(self.airspeed_mps)),
-            ("alpha_rad", Some(self.alpha_rad)),
-            ("theta_rad", Some(self.theta_rad)),
-            ("theta_measured_rad", Some(self.theta_measured_rad)),
-            ("theta_ref_rad", Some(self.theta_ref_rad)),
-            ("q_radps", Some(self.q_radps)),
-            ("climb_rate_mps", Some(self.climb_rate_mps)),
-            ("climb_rate_command_mps", self.climb_rate_command_mps),
-            ("elevator_rad", Some(self.elevator_rad)),
-            ("elevator_command_rad", Some(self.elevator_command_rad)),
-            ("thrust_n", Some(self.thrust_n)),
-            ("thrust_command_n", Some(self.thrust_command_n)),
-            ("wind.x_mps", Some(self.wind.x_mps)),
-            ("wind.z_mps", Some(self.wind.z_mps)),
-            ("distance_aft_m", Some(self.distance_aft_m)),
-            ("ship.pitch_centre_x_m", Some(self.ship.pitch_centre_x_m)),
-            ("ship.heave_m", Some(self.ship.heave_m)),
-            ("ship.pitch_rad", Some(self.ship.pitch_rad)),
-            (
-                "ship_rate.pitch_centre_x_rate_mps",
-                Some(self.ship_rate.pitch_centre_x_rate_mps),
-            ),
-            (
-                "ship_rate.heave_rate_mps",
-                Some(self.ship_rate.heave_rate_mps),
-            ),
-            (
-                "ship_rate.pitch_rate_radps",
-                Some(self.ship_rate.pitch_rate_radps),
-            ),
-            ("aim_point.x_m", Some(self.aim_point.x_m)),
-            ("aim_point.h_m", Some(self.aim_point.h_m)),
-            (
-                "disturbance_estimate_radps2",
-                self.disturbance_estimate_radps2,
-            ),
-            ("direct_lift_coefficient", self.direct_lift_coefficient),
-            ("direct_lift_command", self.direct_lift_command),
-        ]
+    /// The value of one registered signal, `None` where it does not apply.
+    #[inline]
+    pub fn get(&self, id: SignalId) -> Option<f64> {
+        (SIGNALS[id as usize].value)(self)
+    }
+
+    /// Every registered signal with its name, `None` for those that do not apply.
+    #[inline(always)]
+    pub fn named_values(&self) -> [(&'static str, Option<f64>); SIGNAL_COUNT] {
+        std::array::from_fn(|i| (SIGNALS[i].name, (SIGNALS[i].value)(self)))
     }
 
     /// The first signal that is NaN, infinite or beyond ±[`SIGNAL_MAGNITUDE_LIMIT`], with
@@ -158,6 +260,65 @@ impl Signals {
         values
             .into_iter()
             .find_map(|(name, value)| value.filter(|v| !in_range(*v)).map(|v| (name, v)))
+    }
+}
+
+/// How a recorded column shows its signal.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Conversion {
+    /// As computed, in its SI unit.
+    Identity,
+    /// An angle (rad) in degrees.
+    Degrees,
+}
+
+/// A column of a recorded table (a CSV file, Parquet, numpy arrays): one registered
+/// signal under the column's name, in the column's unit.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RecordedColumn {
+    /// The column's name.
+    pub name: &'static str,
+    /// The signal it holds.
+    pub signal: SignalId,
+    /// How the signal's value becomes the column's.
+    pub conversion: Conversion,
+}
+
+impl RecordedColumn {
+    /// The signal as computed, under `name`.
+    pub const fn si(name: &'static str, signal: SignalId) -> Self {
+        Self {
+            name,
+            signal,
+            conversion: Conversion::Identity,
+        }
+    }
+
+    /// An angle signal in degrees, under `name`.
+    pub const fn degrees(name: &'static str, signal: SignalId) -> Self {
+        Self {
+            name,
+            signal,
+            conversion: Conversion::Degrees,
+        }
+    }
+
+    /// The column's unit, from its signal's.
+    pub fn unit(&self) -> &'static str {
+        match self.conversion {
+            Conversion::Identity => self.signal.spec().unit,
+            Conversion::Degrees => "deg",
+        }
+    }
+
+    /// The column's value in `signals`.
+    #[inline]
+    pub fn value(&self, signals: &Signals) -> Option<f64> {
+        let value = signals.get(self.signal);
+        match self.conversion {
+            Conversion::Identity => value,
+            Conversion::Degrees => value.map(f64::to_degrees),
+        }
     }
 }
 
@@ -189,5 +350,83 @@ mod tests {
         signals.climb_rate_command_mps = None;
         signals.path_height_m = None;
         assert_eq!(signals.first_out_of_range(), None);
+    }
+
+    #[test]
+    fn the_registry_names_each_signal_once_in_the_order_of_its_identifiers() {
+        let mut names = std::collections::HashSet::new();
+        for (index, spec) in SIGNALS.iter().enumerate() {
+            assert_eq!(spec.id as usize, index, "{} out of order", spec.name);
+            assert!(names.insert(spec.name), "{} registered twice", spec.name);
+            assert_eq!(SignalId::from_name(spec.name), Some(spec.id));
+            assert!(!spec.unit.is_empty() && !spec.description.is_empty());
+        }
+        assert_eq!(SignalId::from_name("no_such_signal"), None);
+    }
+
+    #[test]
+    fn each_registered_signal_reads_its_own_field() {
+        // Every field set to a distinct value: each registered accessor must find the
+        // value of the field its name names (a swapped accessor would read another).
+        let s = Signals {
+            time_s: 1.0,
+            x_m: 2.0,
+            h_m: 3.0,
+            hook_x_m: 4.0,
+            hook_h_m: 5.0,
+            hook_climb_rate_mps: 6.0,
+            hook_x_rate_mps: 7.0,
+            path_height_m: Some(8.0),
+            glide_path_error_m: 9.0,
+            time_to_go_s: Some(10.0),
+            compensation_weight: 11.0,
+            airspeed_mps: 12.0,
+            alpha_rad: 13.0,
+            theta_rad: 14.0,
+            theta_measured_rad: 15.0,
+            theta_ref_rad: 16.0,
+            q_radps: 17.0,
+            climb_rate_mps: 18.0,
+            climb_rate_command_mps: Some(19.0),
+            elevator_rad: 20.0,
+            elevator_rate_radps: 0.0,
+            elevator_command_rad: 21.0,
+            thrust_n: 22.0,
+            thrust_command_n: 23.0,
+            wind: Wind {
+                x_mps: 24.0,
+                z_mps: 25.0,
+            },
+            distance_aft_m: 26.0,
+            ship: ShipPose {
+                pitch_centre_x_m: 27.0,
+                heave_m: 28.0,
+                pitch_rad: 29.0,
+            },
+            ship_rate: ShipPoseRate {
+                pitch_centre_x_rate_mps: 30.0,
+                heave_rate_mps: 31.0,
+                pitch_rate_radps: 32.0,
+            },
+            aim_point: EarthPoint {
+                x_m: 33.0,
+                h_m: 34.0,
+            },
+            disturbance_estimate_radps2: Some(35.0),
+            direct_lift_coefficient: Some(36.0),
+            direct_lift_command: Some(37.0),
+        };
+        let values: Vec<f64> = s
+            .named_values()
+            .iter()
+            .map(|(_, v)| v.expect("set"))
+            .collect();
+        let expected: Vec<f64> = (1..=SIGNAL_COUNT).map(|i| i as f64).collect();
+        assert_eq!(values, expected);
+        assert_eq!(s.get(SignalId::WindZ), Some(25.0));
+        let column = RecordedColumn::degrees("theta_deg", SignalId::Theta);
+        assert_eq!(column.value(&s), Some(14.0_f64.to_degrees()));
+        assert_eq!(column.unit(), "deg");
+        assert_eq!(RecordedColumn::si("x", SignalId::Thrust).unit(), "N");
     }
 }
