@@ -12,7 +12,7 @@ use super::flight_computer::{FlightComputer, HeldCommands};
 pub use super::layout::LoopLayout;
 use super::outer_loops::{OuterLoopInputs, OuterLoops};
 use super::signals::Signals;
-use super::taps::Taps;
+use super::taps::{LoopBreak, Taps};
 use crate::aircraft::{Aircraft, AircraftCommands, AircraftState, HookGeometry, TrimPoint};
 use crate::control::pitch::{BuiltPitchLaw, ElevatorSaturation, PitchLaw, PitchLawInputs};
 use crate::control::{
@@ -321,10 +321,13 @@ impl ClosedLoop {
             ),
         };
         let pitch_state = layout.pitch_law.of(x);
-        let elevator_command_rad = taps.elevator_command(match held.commands {
-            Some(commands) => commands.elevator_rad,
-            None => self.pitch.elevator_command_rad(pitch_state, &pitch_inputs),
-        });
+        let elevator_command_rad = taps.tap(
+            LoopBreak::ElevatorCommand,
+            match held.commands {
+                Some(commands) => commands.elevator_rad,
+                None => self.pitch.elevator_command_rad(pitch_state, &pitch_inputs),
+            },
+        );
 
         // Speed loop (docs/model.md §5).
         let speed_state = layout.speed.of(x);
@@ -332,12 +335,15 @@ impl ClosedLoop {
             - self
                 .speed
                 .feedback_airspeed_mps(speed_state, air.airspeed_mps);
-        let thrust_command_n = taps.thrust_command(match held.commands {
-            Some(commands) => commands.thrust_n,
-            // A wave-off: full thrust of both engines (docs/model.md §9).
-            None if held.wave_off => self.aircraft.engines().max_total_thrust_n(),
-            None => self.speed.thrust_command_n(speed_error, speed_state[0]),
-        });
+        let thrust_command_n = taps.tap(
+            LoopBreak::ThrustCommand,
+            match held.commands {
+                Some(commands) => commands.thrust_n,
+                // A wave-off: full thrust of both engines (docs/model.md §9).
+                None if held.wave_off => self.aircraft.engines().max_total_thrust_n(),
+                None => self.speed.thrust_command_n(speed_error, speed_state[0]),
+            },
+        );
 
         // Rates, block by block.
         let commands = AircraftCommands {
@@ -347,44 +353,47 @@ impl ClosedLoop {
         // Direct lift control on the hook's height error to the path (docs/model.md §5.9).
         let direct_lift = self.direct_lift.map(|law| {
             let increment = layout.direct_lift.scalar(x);
-            let command = taps.direct_lift_command(match held.commands {
-                Some(commands) => commands.direct_lift,
-                None => {
-                    let error_rate = outer
-                        .path
-                        .map_or(0.0, |p| p.climb_rate_mps - hook_climb_rate_mps);
-                    match (outer.path, held.deck) {
-                        (Some(path), Some(deck)) => {
-                            // The path moves with its anchor by the compensation weight
-                            // (FlightPathGenerator): on the unfiltered anchor it is this
-                            // much higher, and it accelerates with the filtered one.
-                            let error_m = outer.height_error_m
-                                + deck
-                                    .unfiltered_aim_h_m
-                                    .map_or(0.0, |h| path.compensation_weight * (h - deck.aim.h_m));
-                            let p = self.aircraft.parameters();
-                            let feedforward = law.feedforward(
-                                path.compensation_weight * deck.aim_acceleration_mps2,
-                                p.mass_kg,
-                                air.dynamic_pressure_pa,
-                                p.wing_area_m2,
-                            );
-                            let command =
-                                law.command(error_m, error_rate, feedforward, held.wave_off);
-                            // The flare on the deck forecast: the landing point's predicted
-                            // climb rate at touchdown less the hook's.
-                            deck.forecast.map_or(command, |forecast| {
-                                law.flare(
-                                    command,
-                                    path.time_to_go_s,
-                                    forecast.landing_point_climb_rate_mps - hook_climb_rate_mps,
-                                )
-                            })
+            let command = taps.tap(
+                LoopBreak::DirectLiftCommand,
+                match held.commands {
+                    Some(commands) => commands.direct_lift,
+                    None => {
+                        let error_rate = outer
+                            .path
+                            .map_or(0.0, |p| p.climb_rate_mps - hook_climb_rate_mps);
+                        match (outer.path, held.deck) {
+                            (Some(path), Some(deck)) => {
+                                // The path moves with its anchor by the compensation weight
+                                // (FlightPathGenerator): on the unfiltered anchor it is this
+                                // much higher, and it accelerates with the filtered one.
+                                let error_m = outer.height_error_m
+                                    + deck.unfiltered_aim_h_m.map_or(0.0, |h| {
+                                        path.compensation_weight * (h - deck.aim.h_m)
+                                    });
+                                let p = self.aircraft.parameters();
+                                let feedforward = law.feedforward(
+                                    path.compensation_weight * deck.aim_acceleration_mps2,
+                                    p.mass_kg,
+                                    air.dynamic_pressure_pa,
+                                    p.wing_area_m2,
+                                );
+                                let command =
+                                    law.command(error_m, error_rate, feedforward, held.wave_off);
+                                // The flare on the deck forecast: the landing point's predicted
+                                // climb rate at touchdown less the hook's.
+                                deck.forecast.map_or(command, |forecast| {
+                                    law.flare(
+                                        command,
+                                        path.time_to_go_s,
+                                        forecast.landing_point_climb_rate_mps - hook_climb_rate_mps,
+                                    )
+                                })
+                            }
+                            _ => law.command(outer.height_error_m, error_rate, 0.0, held.wave_off),
                         }
-                        _ => law.command(outer.height_error_m, error_rate, 0.0, held.wave_off),
                     }
-                }
-            });
+                },
+            );
             rate[layout.direct_lift.offset] = law.increment_rate(increment, command);
             (increment, command)
         });

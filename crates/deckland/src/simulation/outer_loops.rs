@@ -2,7 +2,7 @@
 //! step, a climb-rate program through the sink-rate loop, or the full approach cascade
 //! flight path → guidance → sink rate.
 
-use super::taps::Taps;
+use super::taps::{LoopBreak, Taps};
 use crate::control::pitch::command_shaping::JerkLimitedStep;
 use crate::control::{
     CommandRamp, DeckReference, FlightPathGenerator, LoopController, PathReference,
@@ -192,17 +192,20 @@ impl OuterLoops {
                     let height_error_rate = path.climb_rate_mps - inputs.hook_climb_rate_mps;
                     // A wave-off commands its climb; the guidance no longer flies the path.
                     let flight = flight.filter(|_| wave_off);
-                    let command = taps.climb_rate_command(match flight {
-                        Some(flight) => flight.climb_rate_mps,
-                        None => {
-                            path.climb_rate_mps
-                                + guidance.output(
-                                    height_error,
-                                    inputs.guidance_integral_m_s,
-                                    height_error_rate,
-                                )
-                        }
-                    });
+                    let command = taps.tap(
+                        LoopBreak::ClimbRateCommand,
+                        match flight {
+                            Some(flight) => flight.climb_rate_mps,
+                            None => {
+                                path.climb_rate_mps
+                                    + guidance.output(
+                                        height_error,
+                                        inputs.guidance_integral_m_s,
+                                        height_error_rate,
+                                    )
+                            }
+                        },
+                    );
                     let error = command - inputs.climb_rate_mps;
                     let theta = trim_theta
                         + sink_rate.output(error, inputs.sink_rate_integral_m, 0.0)
@@ -219,7 +222,7 @@ impl OuterLoops {
                 }
             };
         OuterLoopOutputs {
-            theta_ref_rad: taps.pitch_command(theta_ref_rad),
+            theta_ref_rad: taps.tap(LoopBreak::PitchCommand, theta_ref_rad),
             theta_ref_rate_radps: reference_rate,
             theta_ref_acceleration_radps2: reference_acceleration,
             climb_rate_command_mps,

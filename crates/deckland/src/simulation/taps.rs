@@ -8,8 +8,11 @@
 
 use std::cell::Cell;
 
+use super::signals::SignalId;
+
 /// A point where a loop of the cascade can be cut (docs/model.md §5: margins on the
-/// linearised cascade) or its command replaced.
+/// linearised cascade) or its command replaced: each is a registered command signal
+/// ([`LoopBreak::signal`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum LoopBreak {
     /// The elevator command (rad): the pitch loop.
@@ -24,36 +27,35 @@ pub enum LoopBreak {
     DirectLiftCommand,
 }
 
-/// What the loop does with the command it computed at each tap point; every method
-/// returns the value used downstream. The defaults pass the computed value on.
+impl LoopBreak {
+    /// Every tap point, from the outermost loop in.
+    pub const ALL: [LoopBreak; 5] = [
+        LoopBreak::ClimbRateCommand,
+        LoopBreak::PitchCommand,
+        LoopBreak::ElevatorCommand,
+        LoopBreak::ThrustCommand,
+        LoopBreak::DirectLiftCommand,
+    ];
+
+    /// The command signal at this point (its name and unit are in the registry).
+    pub const fn signal(self) -> SignalId {
+        match self {
+            LoopBreak::ElevatorCommand => SignalId::ElevatorCommand,
+            LoopBreak::PitchCommand => SignalId::ThetaRef,
+            LoopBreak::ClimbRateCommand => SignalId::ClimbRateCommand,
+            LoopBreak::ThrustCommand => SignalId::ThrustCommand,
+            LoopBreak::DirectLiftCommand => SignalId::DirectLiftCommand,
+        }
+    }
+}
+
+/// What the loop does with the command it computed at each tap point: [`Taps::tap`]
+/// returns the value used downstream. The default passes the computed value on.
 pub trait Taps {
-    /// The climb-rate command (m/s) from guidance, in an approach.
+    /// The command used downstream of `at`, given the one its loop `computed`.
     #[inline(always)]
-    fn climb_rate_command(&self, computed: f64) -> f64 {
-        computed
-    }
-
-    /// The pitch command θ_ref (rad) from the sink-rate loop or a step.
-    #[inline(always)]
-    fn pitch_command(&self, computed: f64) -> f64 {
-        computed
-    }
-
-    /// The elevator command (rad) from the pitch law.
-    #[inline(always)]
-    fn elevator_command(&self, computed: f64) -> f64 {
-        computed
-    }
-
-    /// The total thrust command (N) from the speed loop.
-    #[inline(always)]
-    fn thrust_command(&self, computed: f64) -> f64 {
-        computed
-    }
-
-    /// Direct lift control's lift-coefficient command (–).
-    #[inline(always)]
-    fn direct_lift_command(&self, computed: f64) -> f64 {
+    fn tap(&self, at: LoopBreak, computed: f64) -> f64 {
+        let _ = at;
         computed
     }
 }
@@ -80,18 +82,14 @@ pub struct Overrides {
 
 impl Taps for Overrides {
     #[inline]
-    fn pitch_command(&self, computed: f64) -> f64 {
-        self.pitch_command_rad.unwrap_or(computed)
-    }
-
-    #[inline]
-    fn elevator_command(&self, computed: f64) -> f64 {
-        self.elevator_rad.unwrap_or(computed)
-    }
-
-    #[inline]
-    fn thrust_command(&self, computed: f64) -> f64 {
-        self.thrust_n.unwrap_or(computed)
+    fn tap(&self, at: LoopBreak, computed: f64) -> f64 {
+        let replacement = match at {
+            LoopBreak::PitchCommand => self.pitch_command_rad,
+            LoopBreak::ElevatorCommand => self.elevator_rad,
+            LoopBreak::ThrustCommand => self.thrust_n,
+            LoopBreak::ClimbRateCommand | LoopBreak::DirectLiftCommand => None,
+        };
+        replacement.unwrap_or(computed)
     }
 }
 
@@ -120,7 +118,9 @@ impl LoopCut {
     pub fn computed(&self) -> f64 {
         self.computed.get()
     }
+}
 
+impl Taps for LoopCut {
     fn tap(&self, here: LoopBreak, computed: f64) -> f64 {
         if self.at == here {
             self.computed.set(computed);
@@ -131,28 +131,6 @@ impl LoopCut {
     }
 }
 
-impl Taps for LoopCut {
-    fn climb_rate_command(&self, computed: f64) -> f64 {
-        self.tap(LoopBreak::ClimbRateCommand, computed)
-    }
-
-    fn pitch_command(&self, computed: f64) -> f64 {
-        self.tap(LoopBreak::PitchCommand, computed)
-    }
-
-    fn elevator_command(&self, computed: f64) -> f64 {
-        self.tap(LoopBreak::ElevatorCommand, computed)
-    }
-
-    fn thrust_command(&self, computed: f64) -> f64 {
-        self.tap(LoopBreak::ThrustCommand, computed)
-    }
-
-    fn direct_lift_command(&self, computed: f64) -> f64 {
-        self.tap(LoopBreak::DirectLiftCommand, computed)
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -160,10 +138,10 @@ mod tests {
     #[test]
     fn a_cut_injects_at_its_point_only_and_records_the_computed_value() {
         let cut = LoopCut::new(LoopBreak::PitchCommand, 0.5);
-        assert_eq!(cut.climb_rate_command(1.0), 1.0);
-        assert_eq!(cut.pitch_command(0.1), 0.5);
+        assert_eq!(cut.tap(LoopBreak::ClimbRateCommand, 1.0), 1.0);
+        assert_eq!(cut.tap(LoopBreak::PitchCommand, 0.1), 0.5);
         assert_eq!(cut.computed(), 0.1);
-        assert_eq!(cut.elevator_command(-0.2), -0.2);
+        assert_eq!(cut.tap(LoopBreak::ElevatorCommand, -0.2), -0.2);
     }
 
     #[test]
@@ -172,8 +150,19 @@ mod tests {
             thrust_n: Some(1000.0),
             ..Overrides::default()
         };
-        assert_eq!(overrides.thrust_command(5.0), 1000.0);
-        assert_eq!(overrides.pitch_command(0.1), 0.1);
-        assert_eq!(NoTaps.elevator_command(0.3), 0.3);
+        assert_eq!(overrides.tap(LoopBreak::ThrustCommand, 5.0), 1000.0);
+        assert_eq!(overrides.tap(LoopBreak::PitchCommand, 0.1), 0.1);
+        assert_eq!(NoTaps.tap(LoopBreak::ElevatorCommand, 0.3), 0.3);
+    }
+
+    #[test]
+    fn every_tap_point_is_a_registered_command_signal() {
+        for point in LoopBreak::ALL {
+            let spec = point.signal().spec();
+            assert!(
+                spec.name.contains("command") || spec.name == "theta_ref_rad",
+                "{point:?}"
+            );
+        }
     }
 }
