@@ -102,6 +102,8 @@ pub struct SignalSpec {
     pub description: &'static str,
     /// Its value in a [`Signals`]; `None` where it does not apply.
     pub value: fn(&Signals) -> Option<f64>,
+    /// Writes its value into a [`Signals`] (for a block on the bus).
+    pub set: fn(&mut Signals, f64),
 }
 
 impl std::fmt::Debug for SignalSpec {
@@ -113,9 +115,27 @@ impl std::fmt::Debug for SignalSpec {
     }
 }
 
-/// Declares the registry: one line per signal, `Id = "name" ["unit"] |s| value`.
+/// Reads a registered field: `value` fields always apply, `option` fields may not.
+macro_rules! signal_field {
+    (value, $s:ident . $($field:ident).+) => {
+        Some($s.$($field).+)
+    };
+    (option, $s:ident . $($field:ident).+) => {
+        $s.$($field).+
+    };
+    (value, $s:ident . $($field:ident).+ = $v:ident) => {
+        $s.$($field).+ = $v
+    };
+    (option, $s:ident . $($field:ident).+ = $v:ident) => {
+        $s.$($field).+ = Some($v)
+    };
+}
+
+/// Declares the registry: one line per signal, `Id = "name" ["unit"] kind(field)`, the
+/// field of [`Signals`] that holds it (`value`: always applies; `option`: `None` where
+/// it does not).
 macro_rules! signal_registry {
-    ($( $(#[doc = $doc:literal])+ $id:ident = $name:literal [$unit:literal] |$s:ident| $get:expr; )+) => {
+    ($( $(#[doc = $doc:literal])+ $id:ident = $name:literal [$unit:literal] $kind:ident ( $($field:ident).+ ); )+) => {
         /// A signal of the loop, by identifier (see [`SIGNALS`]).
         #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
         pub enum SignalId {
@@ -133,87 +153,108 @@ macro_rules! signal_registry {
                 name: $name,
                 unit: $unit,
                 description: concat!($($doc),+),
-                value: |$s: &Signals| -> Option<f64> { $get },
+                value: |s: &Signals| -> Option<f64> { signal_field!($kind, s.$($field).+) },
+                set: |s: &mut Signals, v: f64| { signal_field!($kind, s.$($field).+ = v) },
             }, )+
         ];
+
+        impl Signals {
+            /// The value of one registered signal, `None` where it does not apply.
+            #[inline]
+            pub fn get(&self, id: SignalId) -> Option<f64> {
+                let s = self;
+                match id {
+                    $( SignalId::$id => signal_field!($kind, s.$($field).+), )+
+                }
+            }
+
+            /// Every registered signal with its name, `None` for those that do not
+            /// apply (in the registry's order; written out, not through the table, as
+            /// the run loop checks them at every step).
+            #[inline(always)]
+            pub fn named_values(&self) -> [(&'static str, Option<f64>); SIGNAL_COUNT] {
+                let s = self;
+                [ $( ($name, signal_field!($kind, s.$($field).+)), )+ ]
+            }
+        }
     };
 }
 
 signal_registry! {
     /// Time.
-    Time = "time_s" ["s"] |s| Some(s.time_s);
+    Time = "time_s" ["s"] value(time_s);
     /// CG earth x.
-    X = "x_m" ["m"] |s| Some(s.x_m);
+    X = "x_m" ["m"] value(x_m);
     /// CG altitude.
-    Altitude = "h_m" ["m"] |s| Some(s.h_m);
+    Altitude = "h_m" ["m"] value(h_m);
     /// Hook earth x.
-    HookX = "hook_x_m" ["m"] |s| Some(s.hook_x_m);
+    HookX = "hook_x_m" ["m"] value(hook_x_m);
     /// Hook height.
-    HookHeight = "hook_h_m" ["m"] |s| Some(s.hook_h_m);
+    HookHeight = "hook_h_m" ["m"] value(hook_h_m);
     /// Hook climb rate.
-    HookClimbRate = "hook_climb_rate_mps" ["m/s"] |s| Some(s.hook_climb_rate_mps);
+    HookClimbRate = "hook_climb_rate_mps" ["m/s"] value(hook_climb_rate_mps);
     /// Hook earth x rate.
-    HookXRate = "hook_x_rate_mps" ["m/s"] |s| Some(s.hook_x_rate_mps);
+    HookXRate = "hook_x_rate_mps" ["m/s"] value(hook_x_rate_mps);
     /// Reference height of the hook on the glide path.
-    PathHeight = "path_height_m" ["m"] |s| s.path_height_m;
+    PathHeight = "path_height_m" ["m"] option(path_height_m);
     /// Glide-path error h_ref − h_hook, positive below the path.
-    GlidePathError = "glide_path_error_m" ["m"] |s| Some(s.glide_path_error_m);
+    GlidePathError = "glide_path_error_m" ["m"] value(glide_path_error_m);
     /// Time to touchdown estimated by the glide-path generator.
-    TimeToGo = "time_to_go_s" ["s"] |s| s.time_to_go_s;
+    TimeToGo = "time_to_go_s" ["s"] option(time_to_go_s);
     /// Weight of the moving deck in the glide-path anchor.
-    CompensationWeight = "compensation_weight" ["-"] |s| Some(s.compensation_weight);
+    CompensationWeight = "compensation_weight" ["-"] value(compensation_weight);
     /// True airspeed.
-    Airspeed = "airspeed_mps" ["m/s"] |s| Some(s.airspeed_mps);
+    Airspeed = "airspeed_mps" ["m/s"] value(airspeed_mps);
     /// Angle of attack.
-    Alpha = "alpha_rad" ["rad"] |s| Some(s.alpha_rad);
+    Alpha = "alpha_rad" ["rad"] value(alpha_rad);
     /// Pitch angle.
-    Theta = "theta_rad" ["rad"] |s| Some(s.theta_rad);
+    Theta = "theta_rad" ["rad"] value(theta_rad);
     /// Measured pitch angle.
-    ThetaMeasured = "theta_measured_rad" ["rad"] |s| Some(s.theta_measured_rad);
+    ThetaMeasured = "theta_measured_rad" ["rad"] value(theta_measured_rad);
     /// Pitch command θ_ref.
-    ThetaRef = "theta_ref_rad" ["rad"] |s| Some(s.theta_ref_rad);
+    ThetaRef = "theta_ref_rad" ["rad"] value(theta_ref_rad);
     /// Pitch rate.
-    PitchRate = "q_radps" ["rad/s"] |s| Some(s.q_radps);
+    PitchRate = "q_radps" ["rad/s"] value(q_radps);
     /// CG climb rate ḣ.
-    ClimbRate = "climb_rate_mps" ["m/s"] |s| Some(s.climb_rate_mps);
+    ClimbRate = "climb_rate_mps" ["m/s"] value(climb_rate_mps);
     /// Climb-rate command.
-    ClimbRateCommand = "climb_rate_command_mps" ["m/s"] |s| s.climb_rate_command_mps;
+    ClimbRateCommand = "climb_rate_command_mps" ["m/s"] option(climb_rate_command_mps);
     /// Elevator position.
-    Elevator = "elevator_rad" ["rad"] |s| Some(s.elevator_rad);
+    Elevator = "elevator_rad" ["rad"] value(elevator_rad);
     /// Elevator command.
-    ElevatorCommand = "elevator_command_rad" ["rad"] |s| Some(s.elevator_command_rad);
+    ElevatorCommand = "elevator_command_rad" ["rad"] value(elevator_command_rad);
     /// Total actual thrust.
-    Thrust = "thrust_n" ["N"] |s| Some(s.thrust_n);
+    Thrust = "thrust_n" ["N"] value(thrust_n);
     /// Total thrust command.
-    ThrustCommand = "thrust_command_n" ["N"] |s| Some(s.thrust_command_n);
+    ThrustCommand = "thrust_command_n" ["N"] value(thrust_command_n);
     /// Wind at the aircraft, x (positive forward).
-    WindX = "wind.x_mps" ["m/s"] |s| Some(s.wind.x_mps);
+    WindX = "wind.x_mps" ["m/s"] value(wind.x_mps);
     /// Wind at the aircraft, z (positive down).
-    WindZ = "wind.z_mps" ["m/s"] |s| Some(s.wind.z_mps);
+    WindZ = "wind.z_mps" ["m/s"] value(wind.z_mps);
     /// Distance of the CG aft of the ship's pitch centre.
-    DistanceAft = "distance_aft_m" ["m"] |s| Some(s.distance_aft_m);
+    DistanceAft = "distance_aft_m" ["m"] value(distance_aft_m);
     /// Earth x of the ship's pitch centre.
-    ShipX = "ship.pitch_centre_x_m" ["m"] |s| Some(s.ship.pitch_centre_x_m);
+    ShipX = "ship.pitch_centre_x_m" ["m"] value(ship.pitch_centre_x_m);
     /// Ship heave (positive up).
-    ShipHeave = "ship.heave_m" ["m"] |s| Some(s.ship.heave_m);
+    ShipHeave = "ship.heave_m" ["m"] value(ship.heave_m);
     /// Ship pitch (positive bow-up).
-    ShipPitch = "ship.pitch_rad" ["rad"] |s| Some(s.ship.pitch_rad);
+    ShipPitch = "ship.pitch_rad" ["rad"] value(ship.pitch_rad);
     /// The ship's forward speed.
-    ShipXRate = "ship_rate.pitch_centre_x_rate_mps" ["m/s"] |s| Some(s.ship_rate.pitch_centre_x_rate_mps);
+    ShipXRate = "ship_rate.pitch_centre_x_rate_mps" ["m/s"] value(ship_rate.pitch_centre_x_rate_mps);
     /// Ship heave rate.
-    ShipHeaveRate = "ship_rate.heave_rate_mps" ["m/s"] |s| Some(s.ship_rate.heave_rate_mps);
+    ShipHeaveRate = "ship_rate.heave_rate_mps" ["m/s"] value(ship_rate.heave_rate_mps);
     /// Ship pitch rate.
-    ShipPitchRate = "ship_rate.pitch_rate_radps" ["rad/s"] |s| Some(s.ship_rate.pitch_rate_radps);
+    ShipPitchRate = "ship_rate.pitch_rate_radps" ["rad/s"] value(ship_rate.pitch_rate_radps);
     /// Earth x of the moving landing point.
-    AimX = "aim_point.x_m" ["m"] |s| Some(s.aim_point.x_m);
+    AimX = "aim_point.x_m" ["m"] value(aim_point.x_m);
     /// Height of the moving landing point.
-    AimHeight = "aim_point.h_m" ["m"] |s| Some(s.aim_point.h_m);
+    AimHeight = "aim_point.h_m" ["m"] value(aim_point.h_m);
     /// The pitch law's disturbance estimate.
-    DisturbanceEstimate = "disturbance_estimate_radps2" ["rad/s²"] |s| s.disturbance_estimate_radps2;
+    DisturbanceEstimate = "disturbance_estimate_radps2" ["rad/s²"] option(disturbance_estimate_radps2);
     /// Direct lift control's lift-coefficient increment ΔC_L.
-    DirectLiftCoefficient = "direct_lift_coefficient" ["-"] |s| s.direct_lift_coefficient;
+    DirectLiftCoefficient = "direct_lift_coefficient" ["-"] option(direct_lift_coefficient);
     /// Direct lift control's command.
-    DirectLiftCommand = "direct_lift_command" ["-"] |s| s.direct_lift_command;
+    DirectLiftCommand = "direct_lift_command" ["-"] option(direct_lift_command);
 }
 
 impl SignalId {
@@ -232,16 +273,10 @@ impl SignalId {
 }
 
 impl Signals {
-    /// The value of one registered signal, `None` where it does not apply.
+    /// Writes one registered signal (a block on the loop's bus replacing or producing it).
     #[inline]
-    pub fn get(&self, id: SignalId) -> Option<f64> {
-        (SIGNALS[id as usize].value)(self)
-    }
-
-    /// Every registered signal with its name, `None` for those that do not apply.
-    #[inline(always)]
-    pub fn named_values(&self) -> [(&'static str, Option<f64>); SIGNAL_COUNT] {
-        std::array::from_fn(|i| (SIGNALS[i].name, (SIGNALS[i].value)(self)))
+    pub fn set(&mut self, id: SignalId, value: f64) {
+        (SIGNALS[id as usize].set)(self, value)
     }
 
     /// The first signal that is NaN, infinite or beyond ±[`SIGNAL_MAGNITUDE_LIMIT`], with
@@ -424,6 +459,12 @@ mod tests {
         let expected: Vec<f64> = (1..=SIGNAL_COUNT).map(|i| i as f64).collect();
         assert_eq!(values, expected);
         assert_eq!(s.get(SignalId::WindZ), Some(25.0));
+        let mut written = Signals::default();
+        for spec in &SIGNALS {
+            written.set(spec.id, (spec.value)(&s).expect("set"));
+        }
+        written.elevator_rate_radps = s.elevator_rate_radps;
+        assert_eq!(written, s);
         let column = RecordedColumn::degrees("theta_deg", SignalId::Theta);
         assert_eq!(column.value(&s), Some(14.0_f64.to_degrees()));
         assert_eq!(column.unit(), "deg");
