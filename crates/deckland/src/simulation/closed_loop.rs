@@ -1,26 +1,26 @@
-//! The closed loop as a composition of blocks: plant, ship motion, wind, pitch sensor,
-//! deck-motion predictor, pitch law, speed loop and outer loops (docs/model.md §5–6).
+//! The closed loop: the ordered list of blocks of [`super::blocks`] over the signal bus
+//! (docs/model.md §5–6).
 //!
 //! Each block with continuous dynamics owns a named slot of the state vector
-//! ([`LoopLayout`]); the loop evaluates the blocks in the order the signals flow and
-//! writes each block's rate into its slot. Random samples and sampled signals are drawn
+//! ([`LoopLayout`]); the loop evaluates the blocks in the list's order, the order the
+//! signals flow, and writes each block's rate into its slot. Random samples and sampled signals are drawn
 //! once per step by [`ClosedLoop::hold`] and passed to [`ClosedLoop::evaluate`]
 //! explicitly ([`HeldInputs`]), which is a pure function of time, state and held inputs.
 
+use super::blocks::{direct_lift, plant, wake_feedforward, BlockPosition, PlacedBlock};
 use super::deck_prediction::DeckPredictor;
 use super::flight_computer::{FlightComputer, HeldCommands};
 pub use super::layout::LoopLayout;
 use super::outer_loops::{OuterLoopInputs, OuterLoops};
 use super::signals::Signals;
 use super::taps::{LoopBreak, Taps};
-use crate::aircraft::{Aircraft, AircraftCommands, AircraftState, HookGeometry, TrimPoint};
+use crate::aircraft::{Aircraft, AircraftState, HookGeometry, TrimPoint};
 use crate::control::pitch::{BuiltPitchLaw, ElevatorSaturation, PitchLaw, PitchLawInputs};
 use crate::control::{
     DeckReference, DirectLiftParameters, SpeedController, WaveOffDecision, WaveOffParameters,
 };
 use crate::environment::{
-    steady_wake, DeckGeometry, ShipMotion, ShipMotionState, ShipNoise, ShipPose, ShipPoseRate,
-    Wind, WindModel,
+    DeckGeometry, ShipMotion, ShipMotionState, ShipNoise, ShipPose, ShipPoseRate, Wind, WindModel,
 };
 use crate::integration::VectorSystem;
 use crate::random::NoiseStream;
@@ -94,6 +94,8 @@ pub struct ClosedLoop {
     pub(crate) wake_feedforward_lead_s: Option<f64>,
     /// Direct lift control, in an approach that flies it (docs/model.md §5.9).
     pub(crate) direct_lift: Option<DirectLiftParameters>,
+    /// Users' blocks, each at its position in the list.
+    pub(crate) user_blocks: Vec<PlacedBlock>,
 }
 
 impl ClosedLoop {
@@ -240,7 +242,9 @@ impl ClosedLoop {
     }
 
     /// Writes the derivative of the loop at (t, x) with the held inputs into `rate` and
-    /// returns every signal. Always inlined, so that in the RK4 stages, which drop the
+    /// returns every signal: the blocks of [`super::blocks::BUILT_IN_BLOCKS`] compute their outputs onto
+    /// the bus in the list's order, users' blocks at their positions, then every block
+    /// writes its state rate. Always inlined, so that in the RK4 stages, which drop the
     /// signals, the work done only for them is optimised away.
     #[inline(always)]
     pub fn evaluate<T: Taps>(
@@ -251,91 +255,143 @@ impl ClosedLoop {
         taps: &T,
         rate: &mut [f64],
     ) -> Signals {
+        // Without users' blocks the bus never leaves the function (no cost over a loop
+        // written by hand); with them it is passed to each.
+        if self.user_blocks.is_empty() {
+            self.evaluate_blocks::<T, false>(t, x, held, taps, rate)
+        } else {
+            self.evaluate_blocks::<T, true>(t, x, held, taps, rate)
+        }
+    }
+
+    /// The users' blocks at `position`: their outputs onto `bus`.
+    #[inline(never)]
+    fn user_outputs(&self, position: BlockPosition, t: f64, x: &[f64], bus: &mut Signals) {
+        for placed in self.user_blocks.iter().filter(|b| b.position == position) {
+            placed.block.outputs(t, placed.slot.of(x), bus);
+        }
+    }
+
+    /// The evaluation, with (`USER_BLOCKS`) or without users' blocks.
+    #[inline(always)]
+    fn evaluate_blocks<T: Taps, const USER_BLOCKS: bool>(
+        &self,
+        t: f64,
+        x: &[f64],
+        held: &HeldInputs,
+        taps: &T,
+        rate: &mut [f64],
+    ) -> Signals {
         let layout = &self.layout;
-        let a = &self.aircraft_state(x);
+        let mut bus = Signals {
+            time_s: t,
+            ..Signals::default()
+        };
+
+        // ship: the deck's pose and rate, the moving landing point.
         let ship_state = self.ship_state(x);
-        let pose = self.ship.pose(&ship_state, self.ship_initial_x_m, t);
-        let pose_rate = self.ship.pose_rate(&ship_state);
-        let distance_aft_m = pose.distance_aft_of_pitch_centre_m(a.x_m);
-        let wind = held.wind;
+        bus.ship = self.ship.pose(&ship_state, self.ship_initial_x_m, t);
+        bus.ship_rate = self.ship.pose_rate(&ship_state);
+        bus.aim_point = self.deck.aim_point(&bus.ship);
 
-        // Plant kinematics and air data.
-        let (sin_t, cos_t) = a.theta_rad.sin_cos();
-        let air = self
-            .aircraft
-            .air_data_trig(a.u_mps, a.w_mps, sin_t, cos_t, &wind);
-        let (hook_x_m, hook_h_m) = self.hook.position_trig(a, sin_t, cos_t);
-        let (hook_x_rate_mps, hook_climb_rate_mps) = self.hook.velocity_trig(a, sin_t, cos_t);
-        let (x_rate_mps, climb_rate_mps) = a.earth_velocity_trig(sin_t, cos_t);
+        // aircraft: position, attitude, the hook.
+        let kinematics = plant::kinematics(&self.hook, self.aircraft_state(x), &mut bus);
 
-        // Outer loops: flight path → guidance → sink rate → θ_ref (docs/model.md §5).
+        // wind: the air mass at the aircraft, sampled at the step's start.
+        bus.wind = held.wind;
+        if USER_BLOCKS {
+            self.user_outputs(BlockPosition::AirMass, t, x, &mut bus);
+        }
+
+        // air_data: airspeed and angle of attack in that wind.
+        let plant = plant::air_data(&self.aircraft, kinematics, &mut bus);
+
+        // pitch_sensor: the attitude the pitch law reads (docs/model.md §3.3).
+        let measurement_age_s = match held.theta_read {
+            Some((read, read_time)) => {
+                bus.theta_measured_rad = read;
+                t - read_time
+            }
+            None => {
+                bus.theta_measured_rad = bus.theta_rad + held.pitch_noise_rad;
+                0.0
+            }
+        };
+        if USER_BLOCKS {
+            self.user_outputs(BlockPosition::Sensors, t, x, &mut bus);
+        }
+
+        // wake_feedforward and outer_loops: flight path → guidance → sink rate → θ_ref
+        // (docs/model.md §5).
         let outer_inputs = OuterLoopInputs {
             time_s: t,
             theta_trim_rad: self.trim.theta_rad,
-            climb_rate_mps,
-            air_path_angle_rad: a.theta_rad - air.alpha_rad,
-            hook_x_m,
-            hook_h_m,
-            hook_x_rate_mps,
-            hook_climb_rate_mps,
+            climb_rate_mps: bus.climb_rate_mps,
+            air_path_angle_rad: bus.theta_rad - bus.alpha_rad,
+            hook_x_m: bus.hook_x_m,
+            hook_h_m: bus.hook_h_m,
+            hook_x_rate_mps: bus.hook_x_rate_mps,
+            hook_climb_rate_mps: bus.hook_climb_rate_mps,
             sink_rate_integral_m: layout.sink_rate.scalar(x),
             guidance_integral_m_s: layout.guidance.scalar(x),
             wake_pitch_feedforward_rad: self.wake_feedforward_lead_s.map_or(0.0, |lead_s| {
-                // Δθ = (W_z + τ·dW_z/dt)/V: air sinking (W_z > 0) is climbed against, led
-                // by the path's lag behind pitch (docs/model.md §5.7).
-                let wake_z = |d: f64| steady_wake(d).z_mps * self.wind.parameters().wake_weight(d);
-                let mut feedforward = wake_z(distance_aft_m);
-                if lead_s > 0.0 {
-                    let distance_rate_mps = pose_rate.pitch_centre_x_rate_mps - x_rate_mps;
-                    let slope = wake_z(distance_aft_m + 0.5) - wake_z(distance_aft_m - 0.5);
-                    feedforward += lead_s * slope * distance_rate_mps;
-                }
-                feedforward / air.airspeed_mps
+                wake_feedforward::pitch_feedforward_rad(
+                    lead_s,
+                    self.wind.parameters(),
+                    &bus,
+                    plant.x_rate_mps,
+                )
             }),
         };
         let outer = self
             .outer
             .outputs(&outer_inputs, held.deck.as_ref(), held.wave_off, taps);
+        let path = outer.path;
+        bus.path_height_m = path.map(|p| p.height_m);
+        bus.glide_path_error_m = outer.height_error_m;
+        bus.time_to_go_s = path.map(|p| p.time_to_go_s);
+        bus.compensation_weight = path.map_or(0.0, |p| p.compensation_weight);
+        bus.theta_ref_rad = outer.theta_ref_rad;
+        // A pitch step has no climb-rate loop: not applicable, rather than NaN.
+        bus.climb_rate_command_mps = (!matches!(self.outer, OuterLoops::PitchStep { .. }))
+            .then_some(outer.climb_rate_command_mps);
 
-        // Pitch law on the measured attitude (docs/model.md §3.3, §4).
-        let (theta_measured_rad, measurement_age_s) = match held.theta_read {
-            Some((read, read_time)) => (read, t - read_time),
-            None => (a.theta_rad + held.pitch_noise_rad, 0.0),
-        };
+        // pitch_law: θ_ref → elevator command (docs/model.md §4).
         let actuator = self.aircraft.actuator();
         let pitch_inputs = PitchLawInputs {
-            theta_ref_rad: outer.theta_ref_rad,
+            theta_ref_rad: bus.theta_ref_rad,
             theta_ref_rate_radps: outer.theta_ref_rate_radps,
             theta_ref_acceleration_radps2: outer.theta_ref_acceleration_radps2,
-            theta_measured_rad,
+            theta_measured_rad: bus.theta_measured_rad,
             measurement_age_s,
-            pitch_rate_measured_radps: a.q_radps,
-            elevator_actual_rad: a.elevator_rad,
+            pitch_rate_measured_radps: bus.q_radps,
+            elevator_actual_rad: bus.elevator_rad,
             theta_trim_rad: self.trim.theta_rad,
             elevator_trim_rad: self.trim.elevator_rad,
             elevator_saturation: ElevatorSaturation::from_position(
-                a.elevator_rad,
+                bus.elevator_rad,
                 actuator.min_rad(),
                 actuator.max_rad(),
                 SATURATION_TOLERANCE_RAD,
             ),
         };
         let pitch_state = layout.pitch_law.of(x);
-        let elevator_command_rad = taps.tap(
+        bus.elevator_command_rad = taps.tap(
             LoopBreak::ElevatorCommand,
             match held.commands {
                 Some(commands) => commands.elevator_rad,
                 None => self.pitch.elevator_command_rad(pitch_state, &pitch_inputs),
             },
         );
+        bus.disturbance_estimate_radps2 = self.pitch.disturbance_estimate_radps2(pitch_state);
 
-        // Speed loop (docs/model.md §5).
+        // speed: airspeed → thrust command (docs/model.md §5).
         let speed_state = layout.speed.of(x);
         let speed_error = self.airspeed_reference_mps
             - self
                 .speed
-                .feedback_airspeed_mps(speed_state, air.airspeed_mps);
-        let thrust_command_n = taps.tap(
+                .feedback_airspeed_mps(speed_state, bus.airspeed_mps);
+        bus.thrust_command_n = taps.tap(
             LoopBreak::ThrustCommand,
             match held.commands {
                 Some(commands) => commands.thrust_n,
@@ -345,126 +401,66 @@ impl ClosedLoop {
             },
         );
 
-        // Rates, block by block.
-        let commands = AircraftCommands {
-            elevator_rad: elevator_command_rad,
-            thrust_n: thrust_command_n,
-        };
-        // Direct lift control on the hook's height error to the path (docs/model.md §5.9).
-        let direct_lift = self.direct_lift.map(|law| {
-            let increment = layout.direct_lift.scalar(x);
-            let command = taps.tap(
+        // direct_lift: the hook's height error to the path → lift (docs/model.md §5.9).
+        if let Some(law) = &self.direct_lift {
+            bus.direct_lift_coefficient = Some(layout.direct_lift.scalar(x));
+            bus.direct_lift_command = Some(taps.tap(
                 LoopBreak::DirectLiftCommand,
                 match held.commands {
                     Some(commands) => commands.direct_lift,
-                    None => {
-                        let error_rate = outer
-                            .path
-                            .map_or(0.0, |p| p.climb_rate_mps - hook_climb_rate_mps);
-                        match (outer.path, held.deck) {
-                            (Some(path), Some(deck)) => {
-                                // The path moves with its anchor by the compensation weight
-                                // (FlightPathGenerator): on the unfiltered anchor it is this
-                                // much higher, and it accelerates with the filtered one.
-                                let error_m = outer.height_error_m
-                                    + deck.unfiltered_aim_h_m.map_or(0.0, |h| {
-                                        path.compensation_weight * (h - deck.aim.h_m)
-                                    });
-                                let p = self.aircraft.parameters();
-                                let feedforward = law.feedforward(
-                                    path.compensation_weight * deck.aim_acceleration_mps2,
-                                    p.mass_kg,
-                                    air.dynamic_pressure_pa,
-                                    p.wing_area_m2,
-                                );
-                                let command =
-                                    law.command(error_m, error_rate, feedforward, held.wave_off);
-                                // The flare on the deck forecast: the landing point's predicted
-                                // climb rate at touchdown less the hook's.
-                                deck.forecast.map_or(command, |forecast| {
-                                    law.flare(
-                                        command,
-                                        path.time_to_go_s,
-                                        forecast.landing_point_climb_rate_mps - hook_climb_rate_mps,
-                                    )
-                                })
-                            }
-                            _ => law.command(outer.height_error_m, error_rate, 0.0, held.wave_off),
-                        }
-                    }
+                    None => direct_lift::command(
+                        law,
+                        &outer,
+                        held,
+                        &plant,
+                        self.aircraft.parameters(),
+                        &bus,
+                    ),
                 },
-            );
-            rate[layout.direct_lift.offset] = law.increment_rate(increment, command);
-            (increment, command)
-        });
-        let aircraft_rate = self.aircraft.derivative_with_direct_lift(
-            a,
-            &commands,
-            &air,
-            sin_t,
-            cos_t,
-            direct_lift.map_or(0.0, |(increment, _)| increment),
-        );
-        layout.aircraft.write_array(rate, &aircraft_rate.to_array());
+            ));
+        }
+        if USER_BLOCKS {
+            self.user_outputs(BlockPosition::Commands, t, x, &mut bus);
+        }
+
+        // The rates, block by block.
         let ship_rate = self.ship.derivative(&ship_state, held.ship_noise);
         layout.ship.write_array(rate, &ship_rate.to_array());
-        self.pitch
-            .derivative(pitch_state, &pitch_inputs, layout.pitch_law.of_mut(rate));
-        self.speed.derivative(
-            speed_state,
-            speed_error,
-            air.airspeed_mps,
-            layout.speed.of_mut(rate),
-        );
+        let aircraft_rate = plant::derivative(&self.aircraft, &plant, &bus);
+        layout.aircraft.write_array(rate, &aircraft_rate.to_array());
         let (sink_integral_rate, guidance_integral_rate) =
             self.outer
                 .integral_rates(&outer_inputs, &outer, held.wave_off);
         rate[layout.sink_rate.offset] = sink_integral_rate;
         rate[layout.guidance.offset] = guidance_integral_rate;
-        let aim_point = self.deck.aim_point(&pose);
+        self.pitch
+            .derivative(pitch_state, &pitch_inputs, layout.pitch_law.of_mut(rate));
+        self.speed.derivative(
+            speed_state,
+            speed_error,
+            bus.airspeed_mps,
+            layout.speed.of_mut(rate),
+        );
+        if let (Some(law), Some(increment), Some(command)) = (
+            &self.direct_lift,
+            bus.direct_lift_coefficient,
+            bus.direct_lift_command,
+        ) {
+            rate[layout.direct_lift.offset] = law.increment_rate(increment, command);
+        }
         self.deck_predictor.derivative(
             layout.deck_predictor.of(x),
-            aim_point.h_m,
+            bus.aim_point.h_m,
             layout.deck_predictor.of_mut(rate),
         );
-
-        let path = outer.path;
-        Signals {
-            time_s: t,
-            x_m: a.x_m,
-            h_m: a.h_m,
-            hook_x_m,
-            hook_h_m,
-            hook_climb_rate_mps,
-            hook_x_rate_mps,
-            path_height_m: path.map(|p| p.height_m),
-            glide_path_error_m: outer.height_error_m,
-            time_to_go_s: path.map(|p| p.time_to_go_s),
-            compensation_weight: path.map_or(0.0, |p| p.compensation_weight),
-            airspeed_mps: air.airspeed_mps,
-            alpha_rad: air.alpha_rad,
-            theta_rad: a.theta_rad,
-            theta_measured_rad,
-            theta_ref_rad: outer.theta_ref_rad,
-            q_radps: a.q_radps,
-            climb_rate_mps,
-            // A pitch step has no climb-rate loop: not applicable, rather than NaN.
-            climb_rate_command_mps: (!matches!(self.outer, OuterLoops::PitchStep { .. }))
-                .then_some(outer.climb_rate_command_mps),
-            elevator_rad: a.elevator_rad,
-            elevator_rate_radps: a.elevator_rate_radps,
-            elevator_command_rad,
-            thrust_n: a.total_thrust_n(),
-            thrust_command_n,
-            wind,
-            distance_aft_m,
-            ship: pose,
-            ship_rate: pose_rate,
-            aim_point,
-            disturbance_estimate_radps2: self.pitch.disturbance_estimate_radps2(pitch_state),
-            direct_lift_coefficient: direct_lift.map(|(increment, _)| increment),
-            direct_lift_command: direct_lift.map(|(_, command)| command),
+        if USER_BLOCKS {
+            for placed in &self.user_blocks {
+                placed
+                    .block
+                    .derivative(t, placed.slot.of(x), &bus, placed.slot.of_mut(rate));
+            }
         }
+        bus
     }
 
     /// Holds the elevator actuator at its stops after a step.

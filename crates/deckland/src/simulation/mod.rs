@@ -13,6 +13,7 @@
 
 mod activity;
 mod anchor_shaping;
+pub mod blocks;
 mod closed_loop;
 mod deck_prediction;
 mod events;
@@ -28,6 +29,7 @@ mod taps;
 mod wave_off;
 
 pub use activity::ActuatorActivity;
+pub use blocks::{Block, BlockDeclaration, BlockPlacementError, BlockPosition, BUILT_IN_BLOCKS};
 pub use closed_loop::{ClosedLoop, HeldInputs, LoopLayout, StepStreams};
 pub use deck_prediction::DeckPredictor;
 pub use events::PROBE_RANGE_AFT_OF_RAMP_M;
@@ -36,7 +38,7 @@ pub use layout::{BlockStates, Slot, StateLayout};
 pub use outcome::{Divergence, EndReason, Event, LandingRules, Outcome, RunSummary, Touchdown};
 pub use outer_loops::{OuterLoops, WaveOffFlight};
 pub use recorder::{GlidePathStatistics, Recorder};
-pub use runner::{Simulation, Stop};
+pub use runner::{Simulation, SimulationBuilder, Stop};
 pub use setup::{approach_flight_path_angle, PitchLawFactory, SetupError};
 pub use signals::{
     Conversion, RecordedColumn, SignalId, SignalSpec, Signals, SIGNALS, SIGNAL_COUNT,

@@ -7,6 +7,9 @@
 //! advances the state and the discrete parts (turbulence) follow.
 
 use std::collections::VecDeque;
+use std::sync::Arc;
+
+use super::blocks::{Block, BlockPosition};
 
 use super::activity::ActivityStatistics;
 use super::closed_loop::{ClosedLoop, HeldInputs, HeldLoop, StepStreams};
@@ -20,6 +23,34 @@ use crate::aircraft::{ALPHA_MAX_RAD, ALPHA_MIN_RAD};
 use crate::control::WaveOffDecision;
 use crate::integration::Rk4Workspace;
 use crate::scenario::Scenario;
+
+/// A run set up with a user's own pitch law and blocks ([`Simulation::builder`]).
+pub struct SimulationBuilder<'a> {
+    scenario: &'a Scenario,
+    pitch_law: Option<&'a super::PitchLawFactory>,
+    blocks: Vec<(BlockPosition, Arc<dyn Block>)>,
+}
+
+impl<'a> SimulationBuilder<'a> {
+    /// Flies `factory`'s law instead of the scenario's pitch law.
+    pub fn pitch_law(mut self, factory: &'a super::PitchLawFactory) -> Self {
+        self.pitch_law = Some(factory);
+        self
+    }
+
+    /// Adds `block` to the loop at `position` (after the blocks already there).
+    pub fn block(mut self, position: BlockPosition, block: Arc<dyn Block>) -> Self {
+        self.blocks.push((position, block));
+        self
+    }
+
+    /// Sets the run up: validates the scenario, trims, linearises, builds the loop; a
+    /// block that reads a signal not yet written at its position is refused, naming it.
+    pub fn build(self) -> Result<Simulation, SetupError> {
+        let setup = build(self.scenario, self.pitch_law, &self.blocks)?;
+        Ok(Simulation::from_setup(setup, self.scenario))
+    }
+}
 
 /// Why [`Simulation::step`] returned.
 #[derive(Debug, Clone, PartialEq)]
@@ -65,7 +96,7 @@ pub struct Simulation {
 impl Simulation {
     /// Sets up a run of `scenario`: validates it, trims, linearises, builds the loop.
     pub fn new(scenario: &Scenario) -> Result<Self, SetupError> {
-        Ok(Self::from_setup(build(scenario, None)?, scenario))
+        Ok(Self::from_setup(build(scenario, None, &[])?, scenario))
     }
 
     /// As [`Simulation::new`], with `pitch_law` flying instead of the scenario's
@@ -75,9 +106,19 @@ impl Simulation {
         pitch_law: &super::PitchLawFactory,
     ) -> Result<Self, SetupError> {
         Ok(Self::from_setup(
-            build(scenario, Some(pitch_law))?,
+            build(scenario, Some(pitch_law), &[])?,
             scenario,
         ))
+    }
+
+    /// A run of `scenario` with more to it than the scenario file says: a user's own
+    /// pitch law, users' own blocks on the bus ([`SimulationBuilder`]).
+    pub fn builder(scenario: &Scenario) -> SimulationBuilder<'_> {
+        SimulationBuilder {
+            scenario,
+            pitch_law: None,
+            blocks: Vec::new(),
+        }
     }
 
     fn from_setup(setup: super::setup::Setup, scenario: &Scenario) -> Self {

@@ -1,7 +1,10 @@
 //! Building the closed loop from a scenario: models, trim, linearisation, controllers and
 //! the initial state.
 
+use std::sync::Arc;
+
 use super::anchor_shaping::AnchorShaping;
+use super::blocks::{check_placement, Block, BlockPlacementError, BlockPosition, PlacedBlock};
 use super::closed_loop::{ClosedLoop, LoopLayout, StepStreams};
 use super::deck_prediction::{DeckPredictor, DeckView, EstimatorPredictor};
 use super::flight_computer::FlightComputer;
@@ -41,6 +44,9 @@ pub enum SetupError {
     /// The start condition cannot be trimmed.
     #[error("cannot trim the start condition: {0}")]
     Trim(#[from] TrimError),
+    /// A user's block reads a signal no block before it writes.
+    #[error("{0}")]
+    Block(#[from] BlockPlacementError),
 }
 
 /// Everything [`super::Simulation`] needs to start.
@@ -283,10 +289,11 @@ fn refuse_infeasible_pitch_tuning(
 }
 
 /// Builds the loop for `scenario`, with `pitch_law` flying instead of the scenario's
-/// pitch law when given.
+/// pitch law when given, and the users' `blocks` at their positions.
 pub(crate) fn build(
     scenario: &Scenario,
     pitch_law: Option<&PitchLawFactory>,
+    blocks: &[(BlockPosition, Arc<dyn Block>)],
 ) -> Result<Setup, SetupError> {
     scenario.validate()?;
     let section = &scenario.aircraft;
@@ -402,13 +409,27 @@ pub(crate) fn build(
     let direct_lift = (scenario.mission == Mission::Approach
         && scenario.control.direct_lift.enabled)
         .then_some(scenario.control.direct_lift);
-    let layout = LoopLayout::new(
+    let mut layout = LoopLayout::new(
         pitch.state_names(),
         speed.state_names(),
         deck_predictor.state_names(),
         direct_lift.is_some(),
     );
+    // Users' blocks, their states after the built-in blocks'.
+    let mut user_blocks: Vec<PlacedBlock> = Vec::with_capacity(blocks.len());
+    for (position, block) in blocks {
+        check_placement(block.as_ref(), *position, &user_blocks)?;
+        let slot = layout.states.add(block.name(), block.state_names());
+        user_blocks.push(PlacedBlock {
+            position: *position,
+            block: Arc::clone(block),
+            slot,
+        });
+    }
     let mut initial = vec![0.0; layout.dimension()];
+    for placed in &user_blocks {
+        placed.block.initial_state(placed.slot.of_mut(&mut initial));
+    }
     layout
         .aircraft
         .of_mut(&mut initial)
@@ -463,6 +484,7 @@ pub(crate) fn build(
             && env.wind.steady_wake)
             .then_some(flight_path.wake_feedforward_lead_s),
         direct_lift,
+        user_blocks,
     };
     Ok(Setup {
         system,

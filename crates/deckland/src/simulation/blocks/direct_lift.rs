@@ -1,0 +1,55 @@
+//! The direct-lift block: lift at constant attitude on the hook's height error to the
+//! path, the path's acceleration fed forward, and the flare on the deck forecast
+//! (docs/model.md §5.9).
+
+use super::plant::PlantOutputs;
+use crate::aircraft::AircraftParameters;
+use crate::control::DirectLiftParameters;
+use crate::simulation::closed_loop::HeldInputs;
+use crate::simulation::outer_loops::OuterLoopOutputs;
+use crate::simulation::Signals;
+
+/// The direct-lift command (–) the law computes this instant from the outer loops'
+/// `outer` outputs and the held deck reference (before any tap or frame hold).
+#[inline(always)]
+pub(crate) fn command(
+    law: &DirectLiftParameters,
+    outer: &OuterLoopOutputs,
+    held: &HeldInputs,
+    plant: &PlantOutputs,
+    aircraft: &AircraftParameters,
+    bus: &Signals,
+) -> f64 {
+    let hook_climb_rate_mps = bus.hook_climb_rate_mps;
+    let error_rate = outer
+        .path
+        .map_or(0.0, |p| p.climb_rate_mps - hook_climb_rate_mps);
+    match (outer.path, held.deck) {
+        (Some(path), Some(deck)) => {
+            // The path moves with its anchor by the compensation weight
+            // (FlightPathGenerator): on the unfiltered anchor it is this much higher, and
+            // it accelerates with the filtered one.
+            let error_m = bus.glide_path_error_m
+                + deck
+                    .unfiltered_aim_h_m
+                    .map_or(0.0, |h| path.compensation_weight * (h - deck.aim.h_m));
+            let feedforward = law.feedforward(
+                path.compensation_weight * deck.aim_acceleration_mps2,
+                aircraft.mass_kg,
+                plant.air.dynamic_pressure_pa,
+                aircraft.wing_area_m2,
+            );
+            let command = law.command(error_m, error_rate, feedforward, held.wave_off);
+            // The flare on the deck forecast: the landing point's predicted climb rate at
+            // touchdown less the hook's.
+            deck.forecast.map_or(command, |forecast| {
+                law.flare(
+                    command,
+                    path.time_to_go_s,
+                    forecast.landing_point_climb_rate_mps - hook_climb_rate_mps,
+                )
+            })
+        }
+        _ => law.command(bus.glide_path_error_m, error_rate, 0.0, held.wave_off),
+    }
+}
