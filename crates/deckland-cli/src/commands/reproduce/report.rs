@@ -1,18 +1,21 @@
 //! `REPORT.md` (and the tables of `report.html`): every number the paper states beside
-//! this run's, one function per section. The paper's values come from [`super::paper`];
-//! every note is computed from what this run flew, so that the report is byte-identical
-//! for the same inputs and never states a result it did not measure.
+//! this run's, one function per section. The paper's values come from the library's
+//! `experiments::reproduction::paper`, the measurements from its studies; every note
+//! formats what this run flew, so that the report is byte-identical for the same inputs
+//! and never states a result it did not measure.
 
 use std::fmt::Write as _;
 
 use deckland::aircraft::AerodynamicConfiguration;
 use deckland::analysis::{Mode, ModeKind};
 use deckland::control::pitch::{ObserverPdParameters, PidParameters};
-use deckland::monte_carlo::Proportion;
+use deckland::experiments::reproduction::paper::{self, PAPER_A, PAPER_B, PAPER_GUIDANCE_GAINS};
+use deckland::experiments::reproduction::{
+    PitchStepSeeds, PITCH_STEP_DEG, SEED, SINK_RAMP_S, SINK_RATE_MPS,
+};
 use deckland::scenario::Scenario;
 
-use super::paper::{self, stated, PAPER_A, PAPER_B, PAPER_GUIDANCE_GAINS};
-use super::{Findings, PITCH_STEP_DEG, SEED, SINK_RAMP_S, SINK_RATE_MPS, THROTTLE_STEP};
+use super::Findings;
 use crate::commands::step::ControllerResult;
 
 /// One row of the comparison table.
@@ -56,6 +59,16 @@ fn number(value: f64, decimals: usize) -> String {
     crate::html::number(value, decimals)
 }
 
+/// The claim called `key` as the paper writes it, with where: "88.89 (§4.2.2)".
+fn stated(key: &str) -> String {
+    let c = paper::claim(key);
+    if c.source.is_empty() || c.source == "—" {
+        c.text.to_string()
+    } else {
+        format!("{} ({})", c.text, c.source)
+    }
+}
+
 /// "used as given" when ours equals the paper's number, else how far it is.
 fn given(key: &str, ours: f64) -> String {
     let paper = paper::value(key);
@@ -76,10 +89,6 @@ fn complex(mode: Option<&Mode>) -> String {
     )
 }
 
-fn mode(modes: &[Mode], kind: ModeKind) -> Option<&Mode> {
-    modes.iter().find(|m| m.kind == kind)
-}
-
 fn settling(result: Option<&ControllerResult>) -> String {
     match result {
         Some(r) if r.settled => r
@@ -95,27 +104,6 @@ fn settling(result: Option<&ControllerResult>) -> String {
 
 fn settled_time(result: Option<&ControllerResult>) -> Option<f64> {
     result.filter(|r| r.settled).and_then(|r| r.settling_time_s)
-}
-
-/// The median of the finite `values` (NaN without any).
-fn median(values: impl IntoIterator<Item = f64>) -> f64 {
-    let mut sorted: Vec<f64> = values.into_iter().filter(|v| v.is_finite()).collect();
-    sorted.sort_by(f64::total_cmp);
-    match sorted.len() {
-        0 => f64::NAN,
-        n if n % 2 == 1 => sorted[n / 2],
-        n => 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]),
-    }
-}
-
-/// How many of `results` settled, and their median settling time.
-fn settled_summary(results: &[ControllerResult]) -> (usize, f64) {
-    let times: Vec<f64> = results
-        .iter()
-        .filter(|r| r.settled)
-        .filter_map(|r| r.settling_time_s)
-        .collect();
-    (times.len(), median(times))
 }
 
 /// "seeds 1–N" of a study.
@@ -141,8 +129,9 @@ pub(crate) fn sections(f: &Findings) -> Vec<Section> {
 
 /// Paper Table 2.
 fn constants(f: &Findings) -> Section {
-    let p = f.aircraft.parameters();
-    let per_engine = f.aircraft.engines().max_total_thrust_n() / 2.0;
+    let aircraft = &f.reproduction.linear_model.aircraft;
+    let p = aircraft.parameters();
+    let per_engine = aircraft.engines().max_total_thrust_n() / 2.0;
     Section {
         title: "Constants (paper Table 2)",
         rows: vec![
@@ -198,7 +187,7 @@ fn constants(f: &Findings) -> Section {
 
 /// Paper Table 3.
 fn trim(f: &Findings) -> Section {
-    let t = &f.trim;
+    let t = &f.reproduction.linear_model.trim;
     let landing = AerodynamicConfiguration::LANDING;
     let theta_deg = t.theta_rad.to_degrees();
     Section {
@@ -249,11 +238,11 @@ fn trim(f: &Findings) -> Section {
             row(
                 "α* with the clean (no-flap) data the paper says it uses (deg)",
                 stated("trim_alpha"),
-                match &f.clean_trim {
+                match &f.reproduction.linear_model.clean_trim {
                     Ok(clean) => format!("{:.2}", clean.alpha_rad.to_degrees()),
                     Err(error) => format!("no trim: {error}"),
                 },
-                match &f.clean_trim {
+                match &f.reproduction.linear_model.clean_trim {
                     Ok(clean) => format!(
                         "**large**: the clean polynomials need {:.1}° more α for L = mg at \
                          {:.1} m/s; the paper's trim cannot come from them. Hence the \
@@ -284,11 +273,12 @@ fn difference_note(paper: f64, ours: f64) -> String {
 
 /// Paper Eq. 14: A, B, the modes, and the open-loop check of Fig. 6.
 fn linear_model(f: &Findings) -> Section {
-    let p = f.aircraft.parameters();
+    let study = &f.reproduction.linear_model;
+    let p = study.aircraft.parameters();
     let g = p.gravity_mps2;
-    let t = &f.trim;
-    let a = &f.model.a;
-    let b = &f.model.b;
+    let t = &study.trim;
+    let a = &study.model.a;
+    let b = &study.model.b;
     let landing = AerodynamicConfiguration::LANDING;
     let states = ["V_T", "θ", "α", "q"];
     let rates = ["V̇_T", "θ̇", "α̇", "q̇"];
@@ -336,15 +326,7 @@ fn linear_model(f: &Findings) -> Section {
         }
     }
     // The δe column: how many times the data's entries exceed the paper's.
-    let ratios: Vec<f64> = (0..4)
-        .filter(|&i| PAPER_B[i][0] != 0.0)
-        .map(|i| (b[(i, 0)] / PAPER_B[i][0]).abs())
-        .collect();
-    let (low, high) = ratios
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), r| {
-            (l.min(*r), h.max(*r))
-        });
+    let (low, high) = study.elevator_column_ratio_range();
     for (i, paper_row) in PAPER_B.iter().enumerate() {
         for (j, &paper) in paper_row.iter().enumerate() {
             let ours = b[(i, j)];
@@ -365,7 +347,7 @@ fn linear_model(f: &Findings) -> Section {
                 (0, 1) => format!(
                     "per unit throttle of both engines ({:.0} kN): T_max·2·cos α*/m; the \
                      paper's unit of δT is not stated",
-                    f.aircraft.engines().max_total_thrust_n() / 1000.0
+                    study.aircraft.engines().max_total_thrust_n() / 1000.0
                 ),
                 _ => difference_note(paper, ours),
             };
@@ -377,21 +359,17 @@ fn linear_model(f: &Findings) -> Section {
             ));
         }
     }
-    let ours_sp = mode(&f.modes, ModeKind::ShortPeriod);
-    let ours_ph = mode(&f.modes, ModeKind::Phugoid);
-    let printed_sp = mode(&f.paper_a_modes, ModeKind::ShortPeriod);
-    let printed_ph = mode(&f.paper_a_modes, ModeKind::Phugoid);
-    let distance = |x: Option<&Mode>, y: Option<&Mode>| match (x, y) {
-        (Some(x), Some(y)) => (x.eigenvalue - y.eigenvalue).norm() / y.eigenvalue.norm(),
-        _ => f64::NAN,
-    };
+    let ours_sp = study.mode(ModeKind::ShortPeriod);
+    let ours_ph = study.mode(ModeKind::Phugoid);
+    let printed_sp = study.paper_a_mode(ModeKind::ShortPeriod);
+    let printed_ph = study.paper_a_mode(ModeKind::Phugoid);
     rows.push(row(
         "short-period eigenvalue (1/s)",
         stated("short_period"),
         complex(ours_sp),
         format!(
             "{:.0} % from the paper's printed A, which gives {} (computed here)",
-            100.0 * distance(ours_sp, printed_sp),
+            100.0 * study.distance_from_paper_a(ModeKind::ShortPeriod),
             complex(printed_sp)
         ),
     ));
@@ -413,7 +391,8 @@ fn linear_model(f: &Findings) -> Section {
         format!("{}, {}", complex(printed_sp), complex(printed_ph)),
         "a check of the paper against itself: the printed phugoid is not the printed A's",
     ));
-    let [e_v, e_theta, e_alpha, e_q] = f.open_loop_relative_error.map(|e| e * 100.0);
+    let open_loop = &f.reproduction.open_loop;
+    let [e_v, e_theta, e_alpha, e_q] = open_loop.relative_error.map(|e| e * 100.0);
     let worst = e_v.max(e_theta).max(e_alpha).max(e_q);
     rows.push(row(
         "nonlinear against linear open-loop throttle step (Fig. 6)",
@@ -421,13 +400,13 @@ fn linear_model(f: &Findings) -> Section {
         format!(
             "worst error over {:.0} s, as % of each state's excursion: V_T {e_v:.2} %, θ \
              {e_theta:.2} %, α {e_alpha:.2} %, q {e_q:.2} % (ΔV_T up to {:.2} m/s)",
-            f.lengths.open_loop_s, f.open_loop_excursion[0]
+            open_loop.seconds, open_loop.excursion[0]
         ),
         format!(
             "{} (worst {worst:.1} % of an excursion); step of {:.0} % throttle (the paper \
              gives no size)",
             if worst < 5.0 { "agrees" } else { "differs" },
-            THROTTLE_STEP * 100.0
+            open_loop.throttle_step * 100.0
         ),
     ));
     Section {
@@ -449,7 +428,8 @@ fn controllers(f: &Findings) -> Section {
         Some(reason) => format!("{} ({reason})", summary.outcome.name()),
         None => summary.outcome.name().to_string(),
     };
-    let [paper_ideal, paper_adverse] = &f.paper_gains_approaches;
+    let study = &f.reproduction.linear_model;
+    let [paper_ideal, paper_adverse] = &f.reproduction.approach.paper_gains;
     let paper_gains_result = format!(
         "{} in ideal conditions, {} in adverse conditions (seed {SEED})",
         ended(paper_ideal),
@@ -467,17 +447,17 @@ fn controllers(f: &Findings) -> Section {
             row(
                 "O-PD K_Pθ (1/s²)",
                 stated("opd_kp"),
-                format!("{:.2}", f.gains.proportional_per_s2),
+                format!("{:.2}", study.gains.proportional_per_s2),
                 "K_P = ω_n², ω_n = 4/(T_2%·ζ)",
             ),
             row(
                 "O-PD K_Dθ (1/s)",
                 stated("opd_kd"),
-                format!("{:.4}", f.gains.derivative_per_s),
+                format!("{:.4}", study.gains.derivative_per_s),
                 format!(
                     "K_D = 2ζω_n + ∂q̇/∂q with ours {:.3} /s (paper {}); Eq. 31/33 print the \
                      sign of ∂q̇/∂q the other way, the paper's number follows from this form",
-                    f.model.pitch_damping_per_s(),
+                    study.model.pitch_damping_per_s(),
                     PAPER_A[3][3]
                 ),
             ),
@@ -530,7 +510,7 @@ fn controllers(f: &Findings) -> Section {
                     "**different by design**: K_Pz = {} /s commands the sink-rate loop faster \
                      than its flight path follows ({:.1} s lag, below); see the row above",
                     PAPER_GUIDANCE_GAINS.0,
-                    f.flight_path_lag_s()
+                    study.flight_path_lag_s()
                 ),
             ),
             row(
@@ -551,11 +531,12 @@ fn environment(f: &Findings) -> Section {
     let scenario = Scenario::paper();
     let engines = scenario.aircraft.engines;
     let actuator = scenario.aircraft.elevator_actuator;
-    let environment = &f.environment;
+    let study = &f.reproduction.environment;
+    let environment = &study.parameters;
     let wind = environment.wind;
     let noise = environment.pitch_noise;
-    let record_s = f.lengths.environment_s;
-    let seeds = seeds_text(f.heave_peaks_m.len());
+    let record_s = study.record.seconds;
+    let seeds = seeds_text(study.heave_peaks_m.len());
     Section {
         title: "Actuators, simulation and environment (paper §3.3–3.7)",
         rows: vec![
@@ -603,14 +584,13 @@ fn environment(f: &Findings) -> Section {
                 stated("heave_max"),
                 format!(
                     "peak {:.2} over {record_s:.0} s (seed {SEED})",
-                    f.heave_peak_m
+                    study.heave_peak_m
                 ),
                 format!(
                     "the noise is set by the output RMS ({} m), not the paper's dB power, \
                      which depends on an unstated sample time; over {record_s:.0} s records \
                      of {seeds} the median peak is {:.2} m (docs/model.md §3.1)",
-                    environment.ship.heave_rms_m,
-                    median(f.heave_peaks_m.iter().copied())
+                    environment.ship.heave_rms_m, study.median_heave_peak_m
                 ),
             ),
             row(
@@ -618,12 +598,11 @@ fn environment(f: &Findings) -> Section {
                 stated("ship_pitch_max"),
                 format!(
                     "peak {:.2} over {record_s:.0} s (seed {SEED})",
-                    f.ship_pitch_peak_deg
+                    study.ship_pitch_peak_deg
                 ),
                 format!(
                     "RMS {}°; median {record_s:.0}-s peak of {seeds} {:.2}° (docs/model.md §3.1)",
-                    environment.ship.pitch_rms_deg,
-                    median(f.pitch_peaks_deg.iter().copied())
+                    environment.ship.pitch_rms_deg, study.median_pitch_peak_deg
                 ),
             ),
             row(
@@ -640,7 +619,7 @@ fn environment(f: &Findings) -> Section {
                 stated("landing_point_motion"),
                 format!(
                     "peak {:.2} m about the mean over {record_s:.0} s",
-                    f.landing_point_peak_m
+                    study.landing_point_peak_m
                 ),
                 "",
             ),
@@ -675,7 +654,7 @@ fn environment(f: &Findings) -> Section {
                 stated("wind_x"),
                 format!(
                     "{:.2} … {:.2} m/s (positive forward: a headwind is negative)",
-                    f.wind_x_range_mps.0, f.wind_x_range_mps.1
+                    study.wind_x_range_mps.0, study.wind_x_range_mps.1
                 ),
                 "the paper's Eq. 21–22 only make sense with X positive aft",
             ),
@@ -696,10 +675,13 @@ fn environment(f: &Findings) -> Section {
 
 /// Paper §5: the results.
 fn results(f: &Findings) -> Section {
-    let ideal_opd = f.step_ideal.first();
-    let ideal_pid = f.step_ideal.get(1);
-    let adverse_opd = f.step_adverse.first();
-    let adverse_pid = f.step_adverse.get(1);
+    let r = &f.reproduction;
+    let [ideal_opd, ideal_pid] = r.ideal_pitch_step.each_ref().map(|run| Some(&run.response));
+    let [adverse_opd, adverse_pid] = r
+        .adverse_pitch_step
+        .runs
+        .each_ref()
+        .map(|run| Some(&run.response));
     let mut rows = Vec::new();
     let bound_s = paper::value("ideal_both_converge");
     rows.push(row(
@@ -780,7 +762,11 @@ fn results(f: &Findings) -> Section {
         ),
     ));
     let band_deg = 0.02 * PITCH_STEP_DEG;
-    let (noiseless_settled, noiseless_median) = settled_summary(&f.adverse_opd_noiseless);
+    let PitchStepSeeds {
+        responses: noiseless,
+        settled: noiseless_settled,
+        median_settling_s: noiseless_median,
+    } = &r.adverse_pitch_step.observer_pd_noiseless;
     rows.push(row(
         format!("adverse step: O-PD 2 % settling time (s), seed {SEED}"),
         stated("adverse_opd_settling"),
@@ -796,9 +782,9 @@ fn results(f: &Findings) -> Section {
             } else {
                 "**large**"
             },
-            f.adverse_opd_tracking_rms_deg,
-            f.adverse_opd_noiseless.len(),
-            seeds_text(f.adverse_opd_noiseless.len()),
+            r.adverse_pitch_step.observer_pd_tracking_rms_deg,
+            noiseless.len(),
+            seeds_text(noiseless.len()),
             if noiseless_median.is_finite() {
                 format!("{noiseless_median:.2} s")
             } else {
@@ -815,7 +801,11 @@ fn results(f: &Findings) -> Section {
         },
         "follows from the row above",
     ));
-    let (pid_settled, pid_median) = settled_summary(&f.adverse_pid_seeds);
+    let PitchStepSeeds {
+        responses: pid_seeds,
+        settled: pid_settled,
+        median_settling_s: pid_median,
+    } = &r.adverse_pitch_step.pid_seeds;
     rows.push(row(
         format!("adverse step: PID, seed {SEED}"),
         stated("adverse_pid"),
@@ -823,13 +813,13 @@ fn results(f: &Findings) -> Section {
         format!(
             "{}: the PID settled in {pid_settled} of {} adverse runs ({}, {PITCH_STEP_DEG}° \
              step), median {}; the paper gives no detail that would explain its failure",
-            if pid_settled == f.adverse_pid_seeds.len() {
+            if *pid_settled == pid_seeds.len() {
                 "**different**"
             } else {
                 "partly different"
             },
-            f.adverse_pid_seeds.len(),
-            seeds_text(f.adverse_pid_seeds.len()),
+            pid_seeds.len(),
+            seeds_text(pid_seeds.len()),
             if pid_median.is_finite() {
                 format!("{pid_median:.2} s")
             } else {
@@ -837,14 +827,14 @@ fn results(f: &Findings) -> Section {
             }
         ),
     ));
-    let lag_s = f.flight_path_lag_s();
-    let sink_step = &f.sink_step;
+    let lag_s = r.linear_model.flight_path_lag_s();
+    let sink_step = &r.sink_rate.step.summary;
     rows.push(row(
         format!("sink rate {SINK_RATE_MPS} m/s commanded as a step: convergence"),
         stated("sink_convergence"),
         match &sink_step.reason {
-            Some(reason) => format!("{}: {reason}", sink_step.outcome),
-            None => sink_step.outcome.to_string(),
+            Some(reason) => format!("{}: {reason}", sink_step.outcome.name()),
+            None => sink_step.outcome.name().to_string(),
         },
         format!(
             "**large**: the flight path lags pitch by {lag_s:.1} s (1/|∂α̇/∂α| of the linear \
@@ -853,13 +843,13 @@ fn results(f: &Findings) -> Section {
             paper::value("sink_convergence")
         ),
     ));
-    let ramp = &f.sink_ramp;
+    let ramp = &r.sink_rate.ramp;
     let ramp_settling = ramp.metrics.as_ref().map_or_else(
         || {
             format!(
                 "{}: {}",
-                ramp.outcome,
-                ramp.reason.clone().unwrap_or_default()
+                ramp.summary.outcome.name(),
+                ramp.summary.reason.clone().unwrap_or_default()
             )
         },
         |m| match m.settling_time_s {
@@ -888,7 +878,7 @@ fn results(f: &Findings) -> Section {
             .map_or_else(|| "—".to_string(), |e| format!("{e:.3}")),
         "mean over the last second of the ramped run",
     ));
-    let a = &f.approach;
+    let a = &r.approach.run.summary;
     rows.push(row(
         format!("position error to the glide path (Fig. 14), adverse, seed {SEED}"),
         stated("glide_path_error"),
@@ -901,7 +891,10 @@ fn results(f: &Findings) -> Section {
     rows.push(row(
         format!("pitch tracking on the approach (Fig. 15), seed {SEED}"),
         stated("pitch_tracking"),
-        format!("RMS θ − θ_ref {}°", number(f.pitch_tracking_rms_deg, 3)),
+        format!(
+            "RMS θ − θ_ref {}°",
+            number(r.approach.pitch_tracking_rms_deg, 3)
+        ),
         "",
     ));
     rows.push(row(
@@ -918,14 +911,10 @@ fn results(f: &Findings) -> Section {
         },
         "",
     ));
-    let runs = u64::try_from(f.boarding_runs).unwrap_or(0);
-    let boarded = u64::try_from(f.boarded).unwrap_or(0);
-    let rate = Proportion::new(boarded, runs);
+    let rate = &r.boarding.boarding_rate;
+    let (boarded, runs) = (rate.count, r.boarding.counts.runs);
     rows.push(row(
-        format!(
-            "boarding rate, adverse, O-PD, {}",
-            seeds_text(f.boarding_runs)
-        ),
+        format!("boarding rate, adverse, O-PD, {}", seeds_text(runs)),
         stated("boarding_rate"),
         format!("{boarded}/{runs} ({} %)", number(100.0 * rate.rate, 0)),
         format!(
@@ -944,14 +933,19 @@ fn results(f: &Findings) -> Section {
 /// The large differences, each computed from this run.
 pub(crate) fn large_differences(f: &Findings) -> Vec<String> {
     let landing = AerodynamicConfiguration::LANDING;
-    let clean_alpha = match &f.clean_trim {
+    let clean_alpha = match &f.reproduction.linear_model.clean_trim {
         Ok(clean) => format!("about {:.1}°", clean.alpha_rad.to_degrees()),
         Err(_) => "more α than the model covers".to_string(),
     };
-    let adverse_opd = f.step_adverse.first();
-    let adverse_pid = f.step_adverse.get(1);
-    let ramp_settling = f
-        .sink_ramp
+    let r = &f.reproduction;
+    let [adverse_opd, adverse_pid] = r
+        .adverse_pitch_step
+        .runs
+        .each_ref()
+        .map(|run| Some(&run.response));
+    let ramp_settling = r
+        .sink_rate
+        .ramp
         .metrics
         .as_ref()
         .and_then(|m| m.settling_time_s.filter(|_| m.settled));
@@ -963,7 +957,7 @@ pub(crate) fn large_differences(f: &Findings) -> Vec<String> {
              CG {}·c̄ ahead of the data's reference (docs/model.md §2.3); `clean` stays selectable \
              (`deckland trim --config clean`).",
             paper::claim("trim_alpha").text,
-            f.trim.speed_mps,
+            r.linear_model.trim.speed_mps,
             landing.lift_coefficient_increment,
             landing.drag_coefficient_increment,
             landing.cg_ahead_of_reference_chords
@@ -975,9 +969,9 @@ pub(crate) fn large_differences(f: &Findings) -> Vec<String> {
              give ({:.2} s⁻²); the O-PD gains depend only on ∂q̇/∂q and come out at K_Pθ = \
              {:.2}, K_Dθ = {:.4} (paper {}, {}).",
             PAPER_B[3][0],
-            f.model.b[(3, 0)],
-            f.gains.proportional_per_s2,
-            f.gains.derivative_per_s,
+            r.linear_model.model.b[(3, 0)],
+            r.linear_model.gains.proportional_per_s2,
+            r.linear_model.gains.derivative_per_s,
             paper::claim("opd_kp").text,
             paper::claim("opd_kd").text
         ),
@@ -1004,14 +998,14 @@ pub(crate) fn large_differences(f: &Findings) -> Vec<String> {
              {} here. A {SINK_RAMP_S} s ramp {}. With the paper's sink and guidance gains an \
              approach ends {} in ideal and {} in adverse conditions (docs/model.md §5).",
             paper::value("sink_convergence"),
-            f.flight_path_lag_s(),
-            f.sink_step.outcome,
+            r.linear_model.flight_path_lag_s(),
+            r.sink_rate.step.summary.outcome.name(),
             ramp_settling.map_or_else(
                 || "does not settle".to_string(),
                 |t| format!("settles in {t:.1} s")
             ),
-            f.paper_gains_approaches[0].outcome.name(),
-            f.paper_gains_approaches[1].outcome.name()
+            r.approach.paper_gains[0].outcome.name(),
+            r.approach.paper_gains[1].outcome.name()
         ),
     ]
 }
@@ -1128,10 +1122,10 @@ mod tests {
     use super::*;
 
     #[test]
-    fn median_of_odd_even_and_empty() {
-        assert_eq!(median([3.0, 1.0, 2.0]), 2.0);
-        assert_eq!(median([4.0, 1.0, 2.0, 3.0]), 2.5);
-        assert!(median([f64::NAN]).is_nan());
+    fn stated_quotes_a_claim_with_where_the_paper_states_it() {
+        assert_eq!(stated("opd_kp"), "88.89 (§4.2.2)");
+        assert_eq!(stated("landing_outcome"), "not stated");
+        assert_eq!(stated("nonexistent"), paper::MISSING);
     }
 
     #[test]
