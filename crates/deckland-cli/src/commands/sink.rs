@@ -138,8 +138,8 @@ pub(crate) fn fly_tracking(
     Ok(sink_run(run, controller, conditions, seed, tracking))
 }
 
-/// A run flown by the library as `controller` in `conditions` with `seed` flew
-/// `tracking`, with its report.
+/// The library's `run` of `tracking`, flown with `controller` in `conditions` and
+/// `seed`, with its report as `summary.json` holds it.
 pub(crate) fn sink_run(
     run: SinkRateRun,
     controller: ControllerChoice,
