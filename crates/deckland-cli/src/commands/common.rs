@@ -84,11 +84,6 @@ impl ControllerChoice {
         }
     }
 
-    /// The controller's parameters on the default scenario of `hardware`.
-    pub fn parameters(self, hardware: HardwareSet) -> PitchControllerParameters {
-        self.parameters_for(&hardware.scenario())
-    }
-
     /// Short label for tables, legends and file names.
     pub fn label(self) -> &'static str {
         match self {

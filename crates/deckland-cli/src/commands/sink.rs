@@ -13,7 +13,8 @@ use crate::plot::{Figure, Panel};
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use deckland::experiments::{
-    fly_sink_rate, SinkRateSample as Row, SinkRateTracking, SINK_COMMAND_TIME_S as COMMAND_TIME_S,
+    fly_sink_rate, SinkRateRun, SinkRateSample as Row, SinkRateTracking,
+    SINK_COMMAND_TIME_S as COMMAND_TIME_S,
 };
 use deckland::metrics::StepResponseMetrics;
 use deckland::scenario::{Mission, Scenario};
@@ -134,6 +135,18 @@ pub(crate) fn fly_tracking(
     let mut scenario = conditions.conditions().apply(*base, seed);
     scenario.control.pitch = controller.parameters_for(base);
     let run = fly_sink_rate(&scenario, tracking).context("cannot set up the sink-rate run")?;
+    Ok(sink_run(run, controller, conditions, seed, tracking))
+}
+
+/// The library's `run` of `tracking`, flown with `controller` in `conditions` and
+/// `seed`, with its report as `summary.json` holds it.
+pub(crate) fn sink_run(
+    run: SinkRateRun,
+    controller: ControllerChoice,
+    conditions: Conditions,
+    seed: u64,
+    tracking: &SinkRateTracking,
+) -> SinkRun {
     let summary = run.summary;
     let report = SinkReport {
         controller: controller.label(),
@@ -147,10 +160,10 @@ pub(crate) fn fly_tracking(
         max_pitch_change_deg: run.max_pitch_change_deg,
         altitude_lost_m: run.altitude_lost_m,
     };
-    Ok(SinkRun {
+    SinkRun {
         rows: run.samples,
         report,
-    })
+    }
 }
 
 /// How the run ended, in words: "settled (±2 %) 12.54 s after the command", "diverged at

@@ -7,6 +7,7 @@
 //! - [`fly_sink_rate`]: a commanded sink rate, ramped in, with its convergence (Fig. 13);
 //! - [`record_environment`]: the ship motion and the wind alone (Fig. 7, 8);
 //! - [`fly_seeds`] and [`OutcomeCounts`]: one scenario over many seeds, in parallel;
+//! - [`reproduction`]: every study of the paper's reproduction (`deckland reproduce`);
 //! - campaigns with dispersions and confidence intervals: [`crate::monte_carlo`].
 //!
 //! Every function takes a complete [`Scenario`](crate::scenario::Scenario) (choose its conditions with
@@ -17,6 +18,7 @@ mod approach;
 mod conditions;
 mod environment;
 mod pitch_step;
+pub mod reproduction;
 mod sink_rate;
 mod sweep;
 

@@ -1,5 +1,6 @@
-//! Performance metrics of recorded signals: step-response figures of merit and
-//! actuator activity (paper §5 compares controllers by settling time and elevator use).
+//! Performance metrics of recorded signals: step-response figures of merit, actuator
+//! activity (paper §5 compares controllers by settling time and elevator use), and the
+//! root mean square and median of a set of values.
 //!
 //! Every function takes plain slices `(time, signal)` so it works on any recorded
 //! channel. Invalid records (empty, mismatched lengths, non-finite samples, time not
@@ -8,6 +9,7 @@
 //! ([`StepResponseMetrics::settled`] and the reason), not as an error.
 
 mod actuator_activity;
+mod statistics;
 mod step_response;
 
 use thiserror::Error;
@@ -15,6 +17,7 @@ use thiserror::Error;
 pub use actuator_activity::{
     actuator_activity, peak_abs, time_at_limits_s, total_variation, ActuatorActivity, LimitTime,
 };
+pub use statistics::{median, root_mean_square};
 pub use step_response::{step_response_metrics, Settling, StepResponseMetrics, StepResponseSpec};
 
 /// Why a record or a metric specification could not be evaluated.

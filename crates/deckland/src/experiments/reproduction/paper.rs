@@ -1,17 +1,18 @@
-//! The values the paper states (Kistyarev & Wang), as data: the report sets each beside
-//! this run's. Nothing here is a result of deckland.
+//! The values the paper states (Kistyarev & Wang), as data: the reproduction report sets
+//! each beside what deckland measures, and the studies fly the paper's own gains and
+//! linear model from here. Nothing here is a result of deckland.
 
 /// One value the paper states.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Claim {
+pub struct Claim {
     /// The name the report looks it up by.
-    pub(crate) key: &'static str,
+    pub key: &'static str,
     /// As the paper writes it.
-    pub(crate) text: &'static str,
+    pub text: &'static str,
     /// As a number, where the report computes with it.
-    pub(crate) value: Option<f64>,
+    pub value: Option<f64>,
     /// Where the paper states it.
-    pub(crate) source: &'static str,
+    pub source: &'static str,
 }
 
 const fn text(key: &'static str, text: &'static str, source: &'static str) -> Claim {
@@ -33,7 +34,7 @@ const fn number(key: &'static str, text: &'static str, value: f64, source: &'sta
 }
 
 /// Every value of the paper the report compares with.
-pub(crate) const CLAIMS: &[Claim] = &[
+pub const CLAIMS: &[Claim] = &[
     number("mass", "15000", 15000.0, "Table 2"),
     number("air_density", "1.33", 1.33, "Table 2"),
     number("gravity", "9.75", 9.75, "Table 2"),
@@ -110,29 +111,29 @@ pub(crate) const CLAIMS: &[Claim] = &[
 ];
 
 /// The printed A of the paper's Eq. 14 (states V_T, θ, α, q).
-pub(crate) const PAPER_A: [[f64; 4]; 4] = [
+pub const PAPER_A: [[f64; 4]; 4] = [
     [-0.18, -9.81, -0.274, 0.0],
     [0.0, 0.0, 0.0, 1.0],
     [-0.0041, 0.0, -0.59, 1.0],
     [0.0, 0.0, -0.26, -0.15],
 ];
 /// The printed B of the paper's Eq. 14 (inputs δe, δT).
-pub(crate) const PAPER_B: [[f64; 2]; 4] = [
+pub const PAPER_B: [[f64; 2]; 4] = [
     [-0.001, 9.85],
     [0.0, 0.0],
     [-0.00075, -0.018],
     [-0.015, 0.0],
 ];
 /// The paper's sink-rate gains K_Ps (rad/(m/s)), K_Is (rad/m), §4.4.
-pub(crate) const PAPER_SINK_GAINS: (f64, f64) = (0.0061, 0.018);
+pub const PAPER_SINK_GAINS: (f64, f64) = (0.0061, 0.018);
 /// The paper's guidance gains K_Pz (1/s), K_Iz (1/s²), K_Dz (–), §4.5.
-pub(crate) const PAPER_GUIDANCE_GAINS: (f64, f64, f64) = (1.0, 0.5, 0.01);
+pub const PAPER_GUIDANCE_GAINS: (f64, f64, f64) = (1.0, 0.5, 0.01);
 
-/// Marks a key with no claim, so that a test finds it in the report.
-pub(crate) const MISSING: &str = "(no such paper value)";
+/// The text of a key with no claim, so that a test finds it in the report.
+pub const MISSING: &str = "(no such paper value)";
 
 /// The claim called `key`.
-pub(crate) fn claim(key: &str) -> Claim {
+pub fn claim(key: &str) -> Claim {
     CLAIMS
         .iter()
         .copied()
@@ -145,19 +146,9 @@ pub(crate) fn claim(key: &str) -> Claim {
         })
 }
 
-/// The claim called `key` as the paper writes it, with where: "88.89 (§4.2.2)".
-pub(crate) fn stated(key: &str) -> String {
-    let c = claim(key);
-    if c.source.is_empty() || c.source == "—" {
-        c.text.to_string()
-    } else {
-        format!("{} ({})", c.text, c.source)
-    }
-}
-
 /// The number of the claim called `key` (NaN when it has none; the report then writes
 /// "—").
-pub(crate) fn value(key: &str) -> f64 {
+pub fn value(key: &str) -> f64 {
     claim(key).value.unwrap_or(f64::NAN)
 }
 
@@ -175,8 +166,9 @@ mod tests {
             );
             assert!(!c.source.is_empty(), "{}", c.key);
         }
-        assert_eq!(stated("nonexistent"), MISSING);
-        assert_eq!(stated("opd_kp"), "88.89 (§4.2.2)");
+        assert_eq!(claim("nonexistent").text, MISSING);
+        assert!(value("nonexistent").is_nan());
+        assert_eq!(claim("opd_kp").source, "§4.2.2");
         assert!(value("opd_kp") == 88.89);
     }
 }
