@@ -9,7 +9,7 @@
 use std::collections::VecDeque;
 
 use deckland::environment::{
-    ShipMotionEstimate, ShipMotionParameters, ShipMotionPredictor, ShipMotionSimulator,
+    ShipMotionEstimate, ShipMotionParameters, ShipMotionPropagator, ShipMotionSimulator,
 };
 use deckland::estimation::DeckMotionEstimator;
 use deckland::random::{stream_names, RandomStreams};
@@ -41,7 +41,7 @@ fn study(parameters: ShipMotionParameters, seconds: f64, seed: u64) -> Vec<[f64;
         ship.state(),
         &mut streams.stream(stream_names::SHIP_ESTIMATE_START),
     );
-    let predictor = ShipMotionPredictor::new(HORIZONS_S[HORIZONS_S.len() - 1] + 1.0);
+    let predictor = ShipMotionPropagator::new(HORIZONS_S[HORIZONS_S.len() - 1] + 1.0);
     let mut pending: VecDeque<Pending> = VecDeque::new();
     let mut sums = vec![[0.0; 4]; HORIZONS_S.len()];
     let mut counts = vec![0.0; HORIZONS_S.len()];

@@ -3,7 +3,7 @@
 //! gains and deck-motion predictors, plus the paper's gain set in ideal conditions.
 //! `cargo run --release -p deckland --example outer_loop_sweep [N]` (default 50).
 
-use deckland::control::{DeckMotionPredictor, GuidanceParameters, SinkRateControllerParameters};
+use deckland::control::{DeckPredictorKind, GuidanceParameters, SinkRateControllerParameters};
 use deckland::experiments::fly_seeds;
 use deckland::recording::SummaryRecorder;
 use deckland::scenario::Scenario;
@@ -39,9 +39,9 @@ fn main() -> Result<(), SetupError> {
     println!("| configuration (adverse, O-PD, seeds 1–{count}) | trap | bolter | ramp strike | hard | diverged | wave-off | touchdown from aim (m) |");
     println!("|---|---|---|---|---|---|---|---|");
     for predictor in [
-        DeckMotionPredictor::Estimator,
-        DeckMotionPredictor::Oracle,
-        DeckMotionPredictor::FilterLead,
+        DeckPredictorKind::Estimator,
+        DeckPredictorKind::Oracle,
+        DeckPredictorKind::FilterLead,
     ] {
         for (kps, kis) in [(0.05, 0.02), (0.035, 0.012), (0.025, 0.008)] {
             for kpz in [0.3, 0.5] {

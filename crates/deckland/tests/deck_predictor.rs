@@ -6,14 +6,14 @@
 
 mod common;
 
-use deckland::control::DeckMotionPredictor;
+use deckland::control::DeckPredictorKind;
 use deckland::recording::TimeSeriesRecorder;
 use deckland::scenario::Scenario;
 use deckland::sensors::EstimatorStart;
 use deckland::simulation::Simulation;
 
 /// The moderate sea flown with `predictor`.
-fn moderate_sea(seed: u64, predictor: DeckMotionPredictor) -> Scenario {
+fn moderate_sea(seed: u64, predictor: DeckPredictorKind) -> Scenario {
     let mut scenario = common::moderate_sea(seed);
     scenario.control.flight_path.deck_motion_predictor = predictor;
     scenario
@@ -45,7 +45,7 @@ fn largest_path_rate_jump(scenario: &Scenario) -> f64 {
 #[test]
 fn the_oracle_flies_the_estimators_smooth_path() {
     for seed in 1..=5 {
-        for predictor in [DeckMotionPredictor::Estimator, DeckMotionPredictor::Oracle] {
+        for predictor in [DeckPredictorKind::Estimator, DeckPredictorKind::Oracle] {
             let jump = largest_path_rate_jump(&moderate_sea(seed, predictor));
             assert!(jump < 5.0, "seed {seed}, {predictor:?}: {jump:.2} m/s");
         }
@@ -53,7 +53,7 @@ fn the_oracle_flies_the_estimators_smooth_path() {
 }
 
 /// Touchdown σ of seeds 1–40 in the moderate sea with `predictor` (m).
-fn touchdown_spread(predictor: DeckMotionPredictor) -> f64 {
+fn touchdown_spread(predictor: DeckPredictorKind) -> f64 {
     common::touchdown_spread(|seed| moderate_sea(seed, predictor)).0
 }
 
@@ -65,8 +65,8 @@ fn touchdown_spread(predictor: DeckMotionPredictor) -> f64 {
 /// that estimation cost nothing.
 #[test]
 fn perfect_knowledge_of_the_ship_tightens_the_same_designs_touchdowns() {
-    let estimator = touchdown_spread(DeckMotionPredictor::Estimator);
-    let oracle = touchdown_spread(DeckMotionPredictor::Oracle);
+    let estimator = touchdown_spread(DeckPredictorKind::Estimator);
+    let oracle = touchdown_spread(DeckPredictorKind::Oracle);
     assert!(
         oracle < 0.95 * estimator,
         "touchdown σ {oracle:.2} m on the oracle against {estimator:.2} m on the estimator"
@@ -79,7 +79,7 @@ fn perfect_knowledge_of_the_ship_tightens_the_same_designs_touchdowns() {
 #[test]
 fn the_estimators_start_changes_the_flight_not_the_sea() {
     let fly = |start: EstimatorStart| {
-        let mut scenario = moderate_sea(3, DeckMotionPredictor::Estimator);
+        let mut scenario = moderate_sea(3, DeckPredictorKind::Estimator);
         scenario.environment.ship_sensing.estimator_start = start;
         let mut recorder = TimeSeriesRecorder::every(0.1);
         Simulation::new(&scenario).unwrap().run(&mut recorder);

@@ -103,7 +103,7 @@ fn every_shipped_scenario_loads_and_flies_one_approach() {
     );
     assert_eq!(
         moderate.control.flight_path.deck_motion_predictor,
-        deckland::control::DeckMotionPredictor::Estimator
+        deckland::control::DeckPredictorKind::Estimator
     );
 }
 

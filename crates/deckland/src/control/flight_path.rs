@@ -13,7 +13,7 @@
 //! step in the reference. The rate fed forward is ĥ̇_L (the prediction's own
 //! acceleration term is left out).
 //!
-//! Three predictors of the landing point are offered ([`DeckMotionPredictor`]; the
+//! Three predictors of the landing point are offered ([`DeckPredictorKind`]; the
 //! blocks are in `simulation::deck_prediction`):
 //!
 //! - `estimator` (default): the minimum-variance prediction of the landing point's height
@@ -43,7 +43,7 @@ use serde::{Deserialize, Serialize};
 /// How the landing point is predicted for deck-motion compensation (docs/model.md §5.7).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
-pub enum DeckMotionPredictor {
+pub enum DeckPredictorKind {
     /// Minimum-variance prediction at the touchdown time from a Kalman filter's estimate
     /// of the ship-motion state, fed by the sensed ship motion (docs/model.md §3.5): what
     /// an aircraft can fly with. The default.
@@ -58,7 +58,7 @@ pub enum DeckMotionPredictor {
     FilterLead,
 }
 
-impl DeckMotionPredictor {
+impl DeckPredictorKind {
     /// Whether this predictor forecasts the deck from the ship-motion model (and so gives
     /// the ramp and the deck's rate at a future time, with their error σ).
     pub fn forecasts(self) -> bool {
@@ -88,7 +88,7 @@ pub struct FlightPathParameters {
     /// Follow the moving landing point in the last seconds (paper §2.1); on by default.
     pub deck_motion_compensation: bool,
     /// How the landing point is predicted; `model` by default.
-    pub deck_motion_predictor: DeckMotionPredictor,
+    pub deck_motion_predictor: DeckPredictorKind,
     /// How long before touchdown compensation starts (s); 12 s (paper §2.1).
     pub compensation_window_s: f64,
     /// How long the anchor takes to move from the mean to the moving deck (s); 2 s.
@@ -142,7 +142,7 @@ impl Default for FlightPathParameters {
         Self {
             glide_slope_deg: 3.5,
             deck_motion_compensation: true,
-            deck_motion_predictor: DeckMotionPredictor::Estimator,
+            deck_motion_predictor: DeckPredictorKind::Estimator,
             compensation_window_s: 12.0,
             compensation_blend_s: 2.0,
             deck_motion_lead_s: 1.0,
@@ -165,7 +165,7 @@ impl FlightPathParameters {
     /// §2.6).
     pub fn paper() -> Self {
         Self {
-            deck_motion_predictor: DeckMotionPredictor::Oracle,
+            deck_motion_predictor: DeckPredictorKind::Oracle,
             compensation_blend: CompensationBlend::Linear,
             ramp_aware: false,
             descend_after_ramp: false,
@@ -260,7 +260,7 @@ pub struct DeckReference {
     /// Its velocity (filtered estimate).
     pub aim_velocity: EarthVelocity,
     /// The deck forecast at the hook's ramp crossing and touchdown, from predictors that
-    /// forecast the ship's motion ([`DeckMotionPredictor::forecasts`]); for the wave-off
+    /// forecast the ship's motion ([`DeckPredictorKind::forecasts`]); for the wave-off
     /// decision.
     pub forecast: Option<DeckForecast>,
     /// The estimator's anchor height before its anchor filter (m), which direct lift
@@ -273,7 +273,7 @@ pub struct DeckReference {
 
 /// What a model-based predictor expects the deck to do while the hook closes on it (the
 /// means: the loop does not need the error variances every step;
-/// [`crate::environment::ShipMotionPredictor::forecast`] gives them).
+/// [`crate::environment::ShipMotionPropagator::forecast`] gives them).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct DeckForecast {
     /// Predicted ramp height when the hook crosses it (m).
@@ -384,8 +384,8 @@ impl FlightPathGenerator {
             (0.0, 0.0)
         };
         let lead_s = match p.deck_motion_predictor {
-            DeckMotionPredictor::Estimator | DeckMotionPredictor::Oracle => 0.0,
-            DeckMotionPredictor::FilterLead => p.deck_motion_lead_s,
+            DeckPredictorKind::Estimator | DeckPredictorKind::Oracle => 0.0,
+            DeckPredictorKind::FilterLead => p.deck_motion_lead_s,
         };
         let predicted = deck.aim.h_m + lead_s * deck.aim_velocity.h_mps;
         let offset = predicted - deck.mean_aim.h_m;

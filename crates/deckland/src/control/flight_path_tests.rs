@@ -39,7 +39,7 @@ fn far_out_the_path_is_anchored_on_the_mean_deck() {
 #[test]
 fn close_in_the_path_follows_the_predicted_moving_deck() {
     let generator = FlightPathGenerator::new(FlightPathParameters {
-        deck_motion_predictor: DeckMotionPredictor::FilterLead,
+        deck_motion_predictor: DeckPredictorKind::FilterLead,
         ..Default::default()
     })
     .unwrap();

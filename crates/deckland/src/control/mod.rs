@@ -17,7 +17,7 @@ mod wave_off;
 pub use command_ramp::CommandRamp;
 pub use direct_lift::DirectLiftParameters;
 pub use flight_path::{
-    CompensationBlend, DeckForecast, DeckMotionFilter, DeckMotionPredictor, DeckReference,
+    CompensationBlend, DeckForecast, DeckMotionFilter, DeckPredictorKind, DeckReference,
     FlightPathGenerator, FlightPathParameters, PathReference,
 };
 pub use guidance::GuidanceParameters;

@@ -31,7 +31,7 @@ pub type Matrix4Array = [[f64; 4]; 4];
 
 /// Tabulated transitions e^{AT} of the ship's shaping filters.
 #[derive(Debug, Clone, PartialEq)]
-pub struct ShipMotionPredictor {
+pub struct ShipMotionPropagator {
     transitions: Vec<Matrix4Array>,
     stationary: Matrix4Array,
 }
@@ -109,7 +109,7 @@ fn quadratic_form(row: &[f64; 4], p: &Matrix4Array) -> f64 {
     sum
 }
 
-impl ShipMotionPredictor {
+impl ShipMotionPropagator {
     /// Tabulates the transitions for horizons from 0 to `max_horizon_s` (s); longer
     /// horizons are clamped to it.
     pub fn new(max_horizon_s: f64) -> Self {
@@ -180,7 +180,7 @@ impl ShipMotionPredictor {
         }
     }
 
-    /// As [`ShipMotionPredictor::forecast`] without the error variances (left zero): the
+    /// As [`ShipMotionPropagator::forecast`] without the error variances (left zero): the
     /// mean alone, for the loop's every step (a third of the work).
     #[inline]
     pub fn forecast_mean(
@@ -261,7 +261,7 @@ mod tests {
             heave_filter: [0.5, -0.2, 0.1, 0.05],
             pitch_filter: [0.3, 0.1, -0.02, 0.04],
         };
-        let predictor = ShipMotionPredictor::new(15.0);
+        let predictor = ShipMotionPropagator::new(15.0);
         let system = Free(ship.clone());
         let mut x = state.to_array();
         let dt = 0.001;
@@ -295,7 +295,7 @@ mod tests {
             },
             ..ShipMotionEstimate::default()
         };
-        let predictor = ShipMotionPredictor::new(5.0);
+        let predictor = ShipMotionPropagator::new(5.0);
         for lead in [0.0, 0.37, 2.0, 9.0] {
             let full = predictor.forecast(&ship, &estimate, lead);
             let mean = predictor.forecast_mean(&ship, &estimate, lead);
@@ -324,7 +324,7 @@ mod tests {
     #[test]
     fn the_oracles_error_is_the_physics_floor_of_the_specification() {
         let ship = ShipMotion::new(ShipMotionParameters::default()).unwrap();
-        let predictor = ShipMotionPredictor::new(10.0);
+        let predictor = ShipMotionPropagator::new(10.0);
         let tan = 3.5_f64.to_radians().tan();
         for (horizon, scatter_m) in [(0.5, 5.3), (1.0, 10.4), (2.0, 14.5), (3.0, 15.5)] {
             let forecast = predictor.forecast(&ship, &ShipMotionEstimate::default(), horizon);

@@ -24,7 +24,7 @@
 //! ẑ = 0, P = q P∞ (the stationary distribution the ship starts from). Its estimate stands for the time of the last
 //! measurement received, so a prediction T seconds ahead of *now* is a prediction
 //! (now − that time) + T ahead of the estimate: the data link's latency adds to the
-//! horizon ([`crate::environment::ShipMotionPredictor::forecast`] gives the mean and the
+//! horizon ([`crate::environment::ShipMotionPropagator::forecast`] gives the mean and the
 //! error variance).
 
 use nalgebra::{Cholesky, Matrix2, Matrix2x4, Matrix4, Vector2, Vector4};

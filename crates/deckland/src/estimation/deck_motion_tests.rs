@@ -1,7 +1,7 @@
 //! Tests of the deck-motion estimator (`deck_motion.rs`).
 
 use super::*;
-use crate::environment::{ShipMotionParameters, ShipMotionPredictor, ShipMotionSimulator};
+use crate::environment::{ShipMotionParameters, ShipMotionPropagator, ShipMotionSimulator};
 use crate::random::RandomStreams;
 use crate::sensors::ShipMotionSensor;
 
@@ -145,7 +145,7 @@ fn actual_estimation_error_matches_the_filters_covariance() {
     let mut ship = ShipMotionSimulator::new(parameters, &streams, 0.0).unwrap();
     let mut sensor = ShipMotionSensor::new(sensing, &streams).unwrap();
     let mut estimator = DeckMotionEstimator::new(ship.model(), &sensing);
-    let predictor = ShipMotionPredictor::new(5.0);
+    let predictor = ShipMotionPropagator::new(5.0);
     let dt = 0.002;
     // Errors of the heave (m) and pitch (rad) estimates, and of their 2-s predictions.
     let (mut heave, mut pitch, mut claimed_heave, mut claimed_pitch, mut n) =

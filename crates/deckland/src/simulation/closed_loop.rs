@@ -8,7 +8,7 @@
 //! explicitly ([`HeldInputs`]), which is a pure function of time, state and held inputs.
 
 use super::blocks::{direct_lift, plant, wake_feedforward, BlockPosition, PlacedBlock};
-use super::deck_prediction::DeckPredictor;
+use super::deck_predictor::BuiltDeckPredictor;
 use super::flight_computer::{FlightComputer, HeldCommands};
 pub use super::layout::LoopLayout;
 use super::outer_loops::{OuterLoopInputs, OuterLoops};
@@ -81,7 +81,7 @@ pub struct ClosedLoop {
     pub(crate) ship_initial_x_m: f64,
     pub(crate) wind: WindModel,
     pub(crate) sensor: PitchSensor,
-    pub(crate) deck_predictor: DeckPredictor,
+    pub(crate) deck_predictor: BuiltDeckPredictor,
     pub(crate) pitch: BuiltPitchLaw,
     pub(crate) speed: SpeedController,
     pub(crate) outer: OuterLoops,

@@ -13,10 +13,11 @@ use super::blocks::{Block, BlockPosition};
 
 use super::activity::ActivityStatistics;
 use super::closed_loop::{ClosedLoop, HeldInputs, HeldLoop, StepStreams};
+use super::deck_predictor::DeckPredictor;
 use super::events::EventDetector;
 use super::outcome::{Divergence, EndReason, Event, LandingRules, RunSummary};
 use super::recorder::{GlidePathStatistics, Recorder};
-use super::setup::{build, SetupError};
+use super::setup::{build, SetupError, UserParts};
 use super::signals::{Signals, SIGNAL_MAGNITUDE_LIMIT};
 use super::taps::{NoTaps, Taps};
 use crate::aircraft::{ALPHA_MAX_RAD, ALPHA_MIN_RAD};
@@ -28,6 +29,7 @@ use crate::scenario::Scenario;
 pub struct SimulationBuilder<'a> {
     scenario: &'a Scenario,
     pitch_law: Option<&'a super::PitchLawFactory>,
+    deck_predictor: Option<&'a dyn DeckPredictor>,
     blocks: Vec<(BlockPosition, Arc<dyn Block>)>,
 }
 
@@ -35,6 +37,13 @@ impl<'a> SimulationBuilder<'a> {
     /// Flies `factory`'s law instead of the scenario's pitch law.
     pub fn pitch_law(mut self, factory: &'a super::PitchLawFactory) -> Self {
         self.pitch_law = Some(factory);
+        self
+    }
+
+    /// Flies `predictor` (a copy of it as it is) instead of the scenario's deck
+    /// predictor.
+    pub fn deck_predictor(mut self, predictor: &'a dyn DeckPredictor) -> Self {
+        self.deck_predictor = Some(predictor);
         self
     }
 
@@ -47,7 +56,14 @@ impl<'a> SimulationBuilder<'a> {
     /// Sets the run up: validates the scenario, trims, linearises, builds the loop; a
     /// block that reads a signal not yet written at its position is refused, naming it.
     pub fn build(self) -> Result<Simulation, SetupError> {
-        let setup = build(self.scenario, self.pitch_law, &self.blocks)?;
+        let setup = build(
+            self.scenario,
+            UserParts {
+                pitch_law: self.pitch_law,
+                deck_predictor: self.deck_predictor,
+                blocks: &self.blocks,
+            },
+        )?;
         Ok(Simulation::from_setup(setup, self.scenario))
     }
 }
@@ -96,7 +112,10 @@ pub struct Simulation {
 impl Simulation {
     /// Sets up a run of `scenario`: validates it, trims, linearises, builds the loop.
     pub fn new(scenario: &Scenario) -> Result<Self, SetupError> {
-        Ok(Self::from_setup(build(scenario, None, &[])?, scenario))
+        Ok(Self::from_setup(
+            build(scenario, UserParts::default())?,
+            scenario,
+        ))
     }
 
     /// As [`Simulation::new`], with `pitch_law` flying instead of the scenario's
@@ -106,7 +125,13 @@ impl Simulation {
         pitch_law: &super::PitchLawFactory,
     ) -> Result<Self, SetupError> {
         Ok(Self::from_setup(
-            build(scenario, Some(pitch_law), &[])?,
+            build(
+                scenario,
+                UserParts {
+                    pitch_law: Some(pitch_law),
+                    ..UserParts::default()
+                },
+            )?,
             scenario,
         ))
     }
@@ -117,6 +142,7 @@ impl Simulation {
         SimulationBuilder {
             scenario,
             pitch_law: None,
+            deck_predictor: None,
             blocks: Vec::new(),
         }
     }

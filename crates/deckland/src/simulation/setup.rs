@@ -6,7 +6,9 @@ use std::sync::Arc;
 use super::anchor_shaping::AnchorShaping;
 use super::blocks::{check_placement, Block, BlockPlacementError, BlockPosition, PlacedBlock};
 use super::closed_loop::{ClosedLoop, LoopLayout, StepStreams};
-use super::deck_prediction::{DeckPredictor, DeckView, EstimatorPredictor};
+use super::deck_predictor::{
+    estimator, filter_lead, oracle, BuiltDeckPredictor, DeckPredictor, DeckView,
+};
 use super::flight_computer::FlightComputer;
 use super::outer_loops::{OuterLoops, WaveOffFlight};
 use crate::aircraft::{linearize, trim, Aircraft, LinearModel, TrimError, TrimPoint, TrimRequest};
@@ -19,10 +21,10 @@ use crate::control::pitch::{
     BuiltPitchLaw, PitchDesignContext, PitchLaw, PitchLawInputs, PitchPlantDerivatives,
 };
 use crate::control::{
-    CommandRamp, DeckMotionFilter, DeckMotionPredictor, FlightPathGenerator, SpeedController,
+    CommandRamp, DeckMotionFilter, DeckPredictorKind, FlightPathGenerator, SpeedController,
 };
 use crate::environment::{
-    mean_wind, ShipMotion, ShipMotionPredictor, ShipMotionState, Wind, WindModel,
+    mean_wind, ShipMotion, ShipMotionPropagator, ShipMotionState, Wind, WindModel,
 };
 use crate::estimation::DeckMotionEstimator;
 use crate::parameters::ParameterError;
@@ -288,13 +290,23 @@ fn refuse_infeasible_pitch_tuning(
     .into())
 }
 
-/// Builds the loop for `scenario`, with `pitch_law` flying instead of the scenario's
-/// pitch law when given, and the users' `blocks` at their positions.
-pub(crate) fn build(
-    scenario: &Scenario,
-    pitch_law: Option<&PitchLawFactory>,
-    blocks: &[(BlockPosition, Arc<dyn Block>)],
-) -> Result<Setup, SetupError> {
+/// What a run flies beyond its scenario: a user's own pitch law, deck predictor and
+/// blocks.
+#[derive(Default)]
+pub(crate) struct UserParts<'a> {
+    pub pitch_law: Option<&'a PitchLawFactory>,
+    pub deck_predictor: Option<&'a dyn DeckPredictor>,
+    pub blocks: &'a [(BlockPosition, Arc<dyn Block>)],
+}
+
+/// Builds the loop for `scenario`, with the user's parts flying instead of the
+/// scenario's where given, and the users' blocks at their positions.
+pub(crate) fn build(scenario: &Scenario, user: UserParts<'_>) -> Result<Setup, SetupError> {
+    let UserParts {
+        pitch_law,
+        deck_predictor: user_deck_predictor,
+        blocks,
+    } = user;
     scenario.validate()?;
     let section = &scenario.aircraft;
     let aircraft = Aircraft::new(
@@ -357,14 +369,14 @@ pub(crate) fn build(
     // latency for the estimator.
     let horizon_s = flight_path.compensation_window_s + flight_path.compensation_blend_s;
     let deck_predictor = match flight_path.deck_motion_predictor {
-        DeckMotionPredictor::Oracle => DeckPredictor::Oracle {
-            predictor: ShipMotionPredictor::new(horizon_s),
-            shaping: (flight_path.ramp_aware || scenario.control.wave_off.enabled)
+        DeckPredictorKind::Oracle => BuiltDeckPredictor::Oracle(oracle::Oracle::new(
+            ShipMotionPropagator::new(horizon_s),
+            (flight_path.ramp_aware || scenario.control.wave_off.enabled)
                 .then(|| AnchorShaping::new(flight_path.anchor_filter_frequency_radps)),
-        },
-        DeckMotionPredictor::Estimator => {
+        )),
+        DeckPredictorKind::Estimator => {
             let sensing = env.ship_sensing;
-            DeckPredictor::Estimator(Box::new(EstimatorPredictor::new(
+            BuiltDeckPredictor::Estimator(Box::new(estimator::Estimator::new(
                 ShipMotionSensor::new(sensing, &streams)?,
                 match sensing.estimator_start {
                     EstimatorStart::Converged => DeckMotionEstimator::converged(
@@ -375,13 +387,19 @@ pub(crate) fn build(
                     ),
                     EstimatorStart::Cold => DeckMotionEstimator::new(&ship, &sensing),
                 },
-                ShipMotionPredictor::new(horizon_s + sensing.latency_s + 1.0),
+                ShipMotionPropagator::new(horizon_s + sensing.latency_s + 1.0),
                 flight_path.anchor_filter_frequency_radps,
             )))
         }
-        DeckMotionPredictor::FilterLead => DeckPredictor::FilterLead(DeckMotionFilter::new(
-            flight_path.deck_filter_frequency_radps,
-        )),
+        DeckPredictorKind::FilterLead => {
+            BuiltDeckPredictor::FilterLead(filter_lead::FilterLead::new(DeckMotionFilter::new(
+                flight_path.deck_filter_frequency_radps,
+            )))
+        }
+    };
+    let deck_predictor = match user_deck_predictor {
+        Some(custom) => BuiltDeckPredictor::Custom(custom.clone_box()),
+        None => deck_predictor,
     };
 
     // Initial position.

@@ -5,7 +5,7 @@
 //! forecast.
 
 use super::closed_loop::ClosedLoop;
-use super::deck_prediction::{DeckView, HookTrack};
+use super::deck_predictor::{DeckView, HookTrack};
 use super::outer_loops::OuterLoops;
 use crate::aircraft::AircraftState;
 use crate::control::{

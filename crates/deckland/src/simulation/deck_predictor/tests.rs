@@ -1,4 +1,4 @@
-//! Tests of the deck-motion predictor block (`deck_prediction.rs`).
+//! Tests of the deck predictors' shared geometry (`deck_predictor/mod.rs`).
 
 use super::*;
 use crate::control::FlightPathParameters;

@@ -1,0 +1,364 @@
+//! Deck predictors: where the glide path expects the landing point to be
+//! (docs/model.md §5.7, deck-motion compensation; see [`crate::control::FlightPathGenerator`]).
+//!
+//! Every predictor implements [`DeckPredictor`]; the scenario's three
+//! ([`crate::control::DeckPredictorKind`]) are one module each:
+//!
+//! - [`estimator`] (default): the ship's sensed motion (docs/model.md §3.5) feeds a Kalman
+//!   filter ([`crate::estimation::DeckMotionEstimator`]); the landing point and the ramp
+//!   are forecast from its estimate at the hook's touchdown and ramp-crossing times, the
+//!   data link's latency added to the horizon. The anchor passes through a critically
+//!   damped filter so that each 50-Hz update moves the path smoothly.
+//! - [`oracle`]: the same forecast and the same anchor from the ship model's *true* state
+//!   (studies only: the two differ only in what they know); or, in the paper's set, the
+//!   prediction itself.
+//! - [`filter_lead`]: a low-pass filter on the landing point's height with a lead.
+//!
+//! With `ramp_aware` the forecast anchor is raised, where needed, so that the path crosses
+//! the predicted ramp `ramp_clearance_margin_m` above it.
+//!
+//! A user's own predictor is one type implementing [`DeckPredictor`], flown with
+//! `Simulation::builder(&scenario).deck_predictor(..)` (see
+//! `tests/custom_deck_predictor.rs`). The loop calls the scenario's through
+//! [`BuiltDeckPredictor`], an enum without dynamic dispatch.
+
+pub mod estimator;
+pub mod filter_lead;
+pub mod oracle;
+
+use std::fmt::Debug;
+
+use super::anchor_shaping::AnchorShaping;
+use crate::control::{DeckForecast, DeckReference, FlightPathGenerator, FlightPathParameters};
+use crate::environment::{
+    DeckGeometry, EarthPoint, EarthVelocity, ShipMotion, ShipMotionEstimate, ShipMotionForecast,
+    ShipMotionPropagator, ShipMotionState, ShipPose, ShipPoseRate,
+};
+use crate::estimation::DeckMotionEstimator;
+
+/// The ship's motion at one instant, as a predictor reads it.
+#[derive(Debug, Clone, Copy)]
+pub struct DeckView<'a> {
+    /// The ship-motion model (the shaping filters).
+    pub ship_model: &'a ShipMotion,
+    /// The model's true state (an oracle's knowledge; a real predictor reads the sensed
+    /// motion instead).
+    pub ship_state: &'a ShipMotionState,
+    /// The deck's geometry.
+    pub deck: &'a DeckGeometry,
+    /// The ship's pose now.
+    pub pose: &'a ShipPose,
+    /// Its rate.
+    pub rate: &'a ShipPoseRate,
+}
+
+/// Where the hook is, for the predictor.
+#[derive(Debug, Clone, Copy)]
+pub struct HookTrack {
+    /// Now (s).
+    pub time_s: f64,
+    /// The hook's earth x (m).
+    pub x_m: f64,
+    /// Its rate (m/s).
+    pub x_rate_mps: f64,
+    /// The integration step (s): a smoothed anchor moves once per step.
+    pub dt: f64,
+}
+
+/// A deck predictor: observes the ship once per step and gives the glide path its deck
+/// reference; it may have continuous states (a filter), which the loop integrates.
+pub trait DeckPredictor: Debug + Send + Sync {
+    /// Names of its continuous states (none by default).
+    fn state_names(&self) -> &'static [&'static str] {
+        &[]
+    }
+
+    /// Its continuous state at the start (zero by default).
+    fn initial_state(&self, view: &DeckView<'_>, state: &mut [f64]) {
+        let _ = view;
+        state.fill(0.0);
+    }
+
+    /// Once per step, at its start: what the aircraft learns of the ship (nothing by
+    /// default).
+    fn observe(&mut self, time_s: f64, view: &DeckView<'_>) {
+        let _ = (time_s, view);
+    }
+
+    /// The deck reference for the flight-path generator this step, with `state` its
+    /// continuous state (called once per step).
+    fn deck_reference(&mut self, query: &DeckQuery<'_>, state: &[f64]) -> DeckReference;
+
+    /// The rate of its continuous state, given the landing point's true height (m)
+    /// (nothing by default).
+    fn derivative(&self, state: &[f64], aim_height_m: f64, rate: &mut [f64]) {
+        let _ = (state, aim_height_m);
+        rate.fill(0.0);
+    }
+
+    /// Its Kalman filter, if it has one (for analyses).
+    fn estimator(&self) -> Option<&DeckMotionEstimator> {
+        None
+    }
+
+    /// A copy of it, as it is now (a simulation is cloned to look ahead).
+    fn clone_box(&self) -> Box<dyn DeckPredictor>;
+}
+
+impl Clone for Box<dyn DeckPredictor> {
+    fn clone(&self) -> Self {
+        self.clone_box()
+    }
+}
+
+/// The predictor of a run: the scenario's, called without dynamic dispatch, or a user's.
+#[derive(Debug, Clone)]
+pub enum BuiltDeckPredictor {
+    /// The Kalman estimate of the sensed ship motion, forecast to touchdown.
+    Estimator(Box<estimator::Estimator>),
+    /// The forecast from the ship model's true state.
+    Oracle(oracle::Oracle),
+    /// The filtered landing point with a lead.
+    FilterLead(filter_lead::FilterLead),
+    /// A user's own.
+    Custom(Box<dyn DeckPredictor>),
+}
+
+/// Calls `$call` on the predictor inside, whichever it is.
+macro_rules! each {
+    ($self:expr, $p:ident => $call:expr) => {
+        match $self {
+            BuiltDeckPredictor::Estimator($p) => $call,
+            BuiltDeckPredictor::Oracle($p) => $call,
+            BuiltDeckPredictor::FilterLead($p) => $call,
+            BuiltDeckPredictor::Custom($p) => $call,
+        }
+    };
+}
+
+impl BuiltDeckPredictor {
+    /// Names of the predictor's continuous states.
+    pub fn state_names(&self) -> &'static [&'static str] {
+        each!(self, p => p.state_names())
+    }
+
+    /// The Kalman filter, for the `estimator`.
+    pub fn estimator(&self) -> Option<&DeckMotionEstimator> {
+        each!(self, p => p.estimator())
+    }
+
+    /// The state at the start.
+    pub(crate) fn initial_state(&self, view: &DeckView<'_>, state: &mut [f64]) {
+        each!(self, p => p.initial_state(view, state))
+    }
+
+    /// Once per step, at its start: the predictor observes the ship.
+    pub(crate) fn observe(&mut self, time_s: f64, view: &DeckView<'_>) {
+        each!(self, p => p.observe(time_s, view))
+    }
+
+    /// The predictor's state rate, given the landing point's true height (m).
+    #[inline(always)]
+    pub(crate) fn derivative(&self, state: &[f64], aim_height_m: f64, rate: &mut [f64]) {
+        if let Self::FilterLead(filter) = self {
+            filter.derivative(state, aim_height_m, rate);
+        } else if let Self::Custom(custom) = self {
+            custom.derivative(state, aim_height_m, rate);
+        }
+    }
+
+    /// The deck reference for the flight-path generator: the mean landing point and the
+    /// predicted one (see each predictor), and the forecast of the ramp and the deck's
+    /// rate where the predictor gives one. Called once per step.
+    #[inline]
+    pub(crate) fn deck_reference(
+        &mut self,
+        view: &DeckView<'_>,
+        state: &[f64],
+        flight_path: &FlightPathGenerator,
+        hook: &HookTrack,
+    ) -> DeckReference {
+        let (pose, rate, deck) = (view.pose, view.rate, view.deck);
+        // Ship level and at its mean height: the aim point sits 81 m aft of the pitch
+        // centre at deck height (no trigonometry needed).
+        let mean_aim = EarthPoint {
+            x_m: pose.pitch_centre_x_m - deck.landing_point_aft_of_pitch_centre_m,
+            h_m: deck.deck_height_m,
+        };
+        let mean_aim_velocity = EarthVelocity {
+            x_mps: rate.pitch_centre_x_rate_mps,
+            h_mps: 0.0,
+        };
+        let aim_x_m = mean_aim.x_m + flight_path.parameters().touchdown_correction_m;
+        let time_to_go_s =
+            flight_path.time_to_go_s(hook.x_m, hook.x_rate_mps, aim_x_m, mean_aim_velocity.x_mps);
+        let query = DeckQuery {
+            view,
+            flight_path,
+            hook,
+            time_to_go_s,
+            aim_x_m,
+            mean_aim,
+            mean_aim_velocity,
+        };
+        each!(self, p => p.deck_reference(&query, state))
+    }
+}
+
+/// What the glide path asks a deck predictor at one step: where the hook is on its
+/// approach to the deck, the deck's mean position, and the estimated time to touchdown.
+#[derive(Debug, Clone, Copy)]
+pub struct DeckQuery<'a> {
+    /// The ship's motion now.
+    pub view: &'a DeckView<'a>,
+    /// The glide-path generator.
+    pub flight_path: &'a FlightPathGenerator,
+    /// Where the hook is.
+    pub hook: &'a HookTrack,
+    /// The estimated time to touchdown (s).
+    pub time_to_go_s: f64,
+    /// The aim point's x with the touchdown correction (m).
+    pub aim_x_m: f64,
+    /// The landing point with the ship level at its mean height.
+    pub mean_aim: EarthPoint,
+    /// Its velocity (the ship's forward speed; no vertical motion).
+    pub mean_aim_velocity: EarthVelocity,
+}
+
+impl DeckQuery<'_> {
+    /// A reference that anchors the path on `aim` moving at `aim_velocity`, with no
+    /// forecast (so no ramp-aware raise and no wave-off), as the paper's predictors.
+    pub fn unshaped(&self, aim: EarthPoint, aim_velocity: EarthVelocity) -> DeckReference {
+        DeckReference {
+            mean_aim: self.mean_aim,
+            mean_aim_velocity: self.mean_aim_velocity,
+            aim,
+            aim_velocity,
+            forecast: None,
+            unfiltered_aim_h_m: None,
+            aim_acceleration_mps2: 0.0,
+        }
+    }
+
+    /// The reference from a forecast of `estimate` (`age_s` old) by `predictor`, the
+    /// anchor ramp-aware and shaped by `shaping`: the `estimator`'s design, and the
+    /// `oracle`'s with the true state for the estimate. Inlined into the step as the code
+    /// it replaced was: called, it cost 0.8 % more instructions per simulated second
+    /// (callgrind, BENCHMARKS.md).
+    #[inline(always)]
+    pub(crate) fn shaped_reference(
+        &self,
+        predictor: &ShipMotionPropagator,
+        estimate: &ShipMotionEstimate,
+        age_s: f64,
+        shaping: &mut AnchorShaping,
+    ) -> DeckReference {
+        let (deck, hook) = (self.view.deck, self.hook);
+        let parameters = self.flight_path.parameters();
+        let closure = hook.x_rate_mps - self.mean_aim_velocity.x_mps;
+        let forecast = forecast_deck(
+            predictor,
+            self.view.ship_model,
+            estimate,
+            age_s,
+            self.time_to_go_s,
+            closure,
+            deck,
+        );
+        let target = ramp_aware_anchor(parameters, self.flight_path, deck, &forecast);
+        let descent = (parameters.ramp_aware && parameters.descend_after_ramp)
+            .then(|| raise_share(parameters, deck, self.aim_x_m - hook.x_m, closure));
+        let shaped = shaping.step(target, forecast.landing_point_height_m, descent, hook.dt);
+        DeckReference {
+            mean_aim: self.mean_aim,
+            mean_aim_velocity: self.mean_aim_velocity,
+            aim: EarthPoint {
+                x_m: self.mean_aim.x_m,
+                h_m: shaped.height_m,
+            },
+            aim_velocity: EarthVelocity {
+                x_mps: self.mean_aim_velocity.x_mps,
+                h_mps: shaped.rate_mps,
+            },
+            forecast: Some(forecast),
+            unfiltered_aim_h_m: Some(shaped.unfiltered_m),
+            aim_acceleration_mps2: shaped.acceleration_mps2,
+        }
+    }
+}
+
+/// The forecast of the deck for a hook `time_to_go_s` from touchdown closing at
+/// `closure_mps`, from `estimate` whose time lies `age_s` in the past: the landing point
+/// at touchdown, the ramp when the hook crosses it (`ramp_aft_of_aim_point_m` / closure
+/// earlier).
+pub(crate) fn forecast_deck(
+    predictor: &ShipMotionPropagator,
+    ship: &ShipMotion,
+    estimate: &ShipMotionEstimate,
+    age_s: f64,
+    time_to_go_s: f64,
+    closure_mps: f64,
+    deck: &DeckGeometry,
+) -> DeckForecast {
+    let landing_arm_m = deck.landing_point_aft_of_pitch_centre_m;
+    let ramp_arm_m = landing_arm_m + deck.ramp_aft_of_aim_point_m;
+    let ramp_time_s = if closure_mps > 0.0 {
+        (time_to_go_s - deck.ramp_aft_of_aim_point_m / closure_mps).max(0.0)
+    } else {
+        time_to_go_s
+    };
+    let at_touchdown: ShipMotionForecast =
+        predictor.forecast_mean(ship, estimate, age_s + time_to_go_s.max(0.0));
+    let at_ramp = predictor.forecast_mean(ship, estimate, age_s + ramp_time_s);
+    DeckForecast {
+        ramp_height_m: deck.deck_height_m + at_ramp.deck_point_height_m(ramp_arm_m),
+        landing_point_climb_rate_mps: at_touchdown.deck_point_climb_rate_mps(landing_arm_m),
+        landing_point_height_m: deck.deck_height_m
+            + at_touchdown.deck_point_height_m(landing_arm_m),
+        pitch_rad: at_touchdown.pitch_rad,
+    }
+}
+
+/// The anchor height: the forecast landing point, raised where the ramp-aware path needs
+/// it so that the path crosses the predicted ramp `ramp_clearance_margin_m` above it.
+/// The path passes the ramp (ramp_aft_of_aim_point + touchdown correction)·tan Γ above
+/// its anchor.
+pub(crate) fn ramp_aware_anchor(
+    parameters: &FlightPathParameters,
+    flight_path: &FlightPathGenerator,
+    deck: &DeckGeometry,
+    forecast: &DeckForecast,
+) -> f64 {
+    if !parameters.ramp_aware {
+        return forecast.landing_point_height_m;
+    }
+    let rise_to_ramp_m = (deck.ramp_aft_of_aim_point_m + parameters.touchdown_correction_m)
+        * flight_path.tan_slope();
+    let floor_m = forecast.ramp_height_m + parameters.ramp_clearance_margin_m - rise_to_ramp_m;
+    forecast.landing_point_height_m.max(floor_m)
+}
+
+/// The share of the ramp-aware raise the path keeps for a hook `range_m` before the
+/// aim point, closing at `closure_mps`, and its rate (1/s). With `descend_after_ramp`
+/// the path keeps all of it up to the ramp and sheds it linearly from the ramp to the
+/// aim point: it crosses the ramp with the margin and still reaches the predicted landing
+/// point, on a steeper last segment, instead of landing raise/tan Γ long. Without, it
+/// keeps all of it.
+pub(crate) fn raise_share(
+    parameters: &FlightPathParameters,
+    deck: &DeckGeometry,
+    range_m: f64,
+    closure_mps: f64,
+) -> (f64, f64) {
+    let ramp_range_m = deck.ramp_aft_of_aim_point_m + parameters.touchdown_correction_m;
+    if !parameters.descend_after_ramp || range_m >= ramp_range_m || ramp_range_m <= 0.0 {
+        (1.0, 0.0)
+    } else if range_m <= 0.0 {
+        (0.0, 0.0)
+    } else {
+        (range_m / ramp_range_m, -closure_mps / ramp_range_m)
+    }
+}
+
+#[cfg(test)]
+mod tests;
