@@ -18,7 +18,7 @@
 use std::sync::atomic::AtomicBool;
 use std::sync::Arc;
 
-use deckland::control::pitch::{PitchDesignContext, PitchLaw, PitchLawInputs};
+use deckland::control::pitch::{AxisLaw, PitchDesignContext, PitchLaw, PitchLawInputs};
 use deckland::experiments::{fly_approach, fly_approach_with_law};
 use deckland::monte_carlo::{run_campaign, CampaignSpec, ControllerVariant};
 use deckland::parameters::ParameterError;
@@ -49,7 +49,9 @@ impl FilteredPid {
     }
 }
 
-impl PitchLaw for FilteredPid {
+impl AxisLaw for FilteredPid {
+    type Inputs = PitchLawInputs;
+
     fn label(&self) -> &str {
         "filtered PID"
     }
@@ -63,7 +65,7 @@ impl PitchLaw for FilteredPid {
         state[1] = 0.0;
     }
 
-    fn elevator_command_rad(&self, state: &[f64], inputs: &PitchLawInputs) -> f64 {
+    fn surface_command_rad(&self, state: &[f64], inputs: &PitchLawInputs) -> f64 {
         let error = inputs.theta_ref_rad - state[0];
         let equivalent_control = self.proportional_per_s2 * error + self.integral_per_s3 * state[1]
             - self.derivative_per_s * inputs.pitch_rate_measured_radps;

@@ -8,8 +8,8 @@ use std::sync::atomic::AtomicBool;
 use std::sync::Arc;
 
 use deckland::control::pitch::{
-    ElevatorSaturation, PidParameters, PitchControllerParameters, PitchDesignContext, PitchLaw,
-    PitchLawInputs,
+    AxisLaw, ElevatorSaturation, PidParameters, PitchControllerParameters, PitchDesignContext,
+    PitchLaw, PitchLawInputs,
 };
 use deckland::experiments::{fly_approach, fly_approach_with_law};
 use deckland::monte_carlo::{run_campaign, CampaignSpec, ControllerVariant};
@@ -24,7 +24,9 @@ struct HandWrittenPid {
     dqdot_delevator_per_s2: f64,
 }
 
-impl PitchLaw for HandWrittenPid {
+impl AxisLaw for HandWrittenPid {
+    type Inputs = PitchLawInputs;
+
     fn label(&self) -> &str {
         "hand-written PID"
     }
@@ -33,7 +35,7 @@ impl PitchLaw for HandWrittenPid {
         &["integral"]
     }
 
-    fn elevator_command_rad(&self, state: &[f64], inputs: &PitchLawInputs) -> f64 {
+    fn surface_command_rad(&self, state: &[f64], inputs: &PitchLawInputs) -> f64 {
         let error = inputs.theta_ref_rad - inputs.theta_measured_rad;
         let u = self.gains.proportional_per_s2 * error + self.gains.integral_per_s3 * state[0]
             - self.gains.derivative_per_s * inputs.pitch_rate_measured_radps;

@@ -14,7 +14,7 @@ use super::outer_loops::{OuterLoopInputs, OuterLoops};
 use super::signals::Signals;
 use super::taps::Taps;
 use crate::aircraft::{Aircraft, AircraftCommands, AircraftState, HookGeometry, TrimPoint};
-use crate::control::pitch::{BuiltPitchLaw, ElevatorSaturation, PitchLaw, PitchLawInputs};
+use crate::control::pitch::{AxisLaw, BuiltPitchLaw, ElevatorSaturation, PitchLawInputs};
 use crate::control::{
     DeckReference, DirectLiftParameters, SpeedController, WaveOffDecision, WaveOffParameters,
 };
@@ -311,7 +311,7 @@ impl ClosedLoop {
         let pitch_state = layout.pitch_law.of(x);
         let elevator_command_rad = taps.elevator_command(match held.commands {
             Some(commands) => commands.elevator_rad,
-            None => self.pitch.elevator_command_rad(pitch_state, &pitch_inputs),
+            None => self.pitch.surface_command_rad(pitch_state, &pitch_inputs),
         });
 
         // Speed loop (docs/model.md §5).

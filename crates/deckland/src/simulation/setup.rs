@@ -13,7 +13,7 @@ use crate::control::pitch::design::{
     PitchTuningProblem,
 };
 use crate::control::pitch::{
-    BuiltPitchLaw, PitchDesignContext, PitchLaw, PitchLawInputs, PitchPlantDerivatives,
+    AxisLaw, BuiltPitchLaw, PitchDesignContext, PitchLaw, PitchLawInputs, PitchPlantDerivatives,
 };
 use crate::control::{
     CommandRamp, DeckMotionFilter, DeckMotionPredictor, FlightPathGenerator, SpeedController,

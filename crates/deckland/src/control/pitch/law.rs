@@ -1,52 +1,19 @@
-//! The pitch-law interface: what every pitch controller reads, owns and produces, and how
-//! the registered laws are listed (docs/model.md §4–5; paper Eq. 26–37).
-
-use std::fmt;
+//! The pitch axis's part of the law interface: what a pitch law reads
+//! ([`PitchLawInputs`]), what it is designed from ([`PitchDesignContext`]), how its
+//! scenario parameters build it ([`PitchLawDesign`]), and how the registered laws are
+//! listed (docs/model.md §4–5; paper Eq. 26–37). The axis-generic part is
+//! [`crate::control::AxisLaw`].
 
 use serde::{Deserialize, Serialize};
 
+use super::design::{LinearisedLaw, PitchPlantDerivatives};
 use crate::aircraft::ElevatorActuatorParameters;
+use crate::control::AxisLaw;
 use crate::parameters::ParameterError;
 use crate::sensors::PitchNoiseParameters;
 
-/// Pitch-plant derivatives from the linearisation at trim (paper Eq. 26; docs/model.md §4:
-/// taken from the linearisation, not hard-coded).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct PitchPlantDerivatives {
-    /// Pitch damping ∂q̇/∂q (1/s), negative for a stable airframe (paper: −0.15).
-    pub dqdot_dq_per_s: f64,
-    /// Elevator effectiveness ∂q̇/∂δe (1/s²), negative for positive trailing-edge-down
-    /// elevator (about −1.9 at the landing trim); must be nonzero.
-    pub dqdot_delevator_per_s2: f64,
-}
-
-impl PitchPlantDerivatives {
-    /// The name under which the derivatives appear in errors: they are not set in a
-    /// scenario but computed from the linearisation at trim.
-    pub const SECTION: &'static str = "linearisation at trim";
-
-    /// Checks that both derivatives are finite and ∂q̇/∂δe ≠ 0.
-    pub fn validate(&self) -> Result<(), ParameterError> {
-        if !self.dqdot_dq_per_s.is_finite() {
-            return Err(ParameterError::new(
-                Self::SECTION,
-                "dqdot_dq_per_s",
-                self.dqdot_dq_per_s,
-                "a finite pitch damping",
-            ));
-        }
-        if !(self.dqdot_delevator_per_s2.is_finite() && self.dqdot_delevator_per_s2 != 0.0) {
-            return Err(ParameterError::new(
-                Self::SECTION,
-                "dqdot_delevator_per_s2",
-                self.dqdot_delevator_per_s2,
-                "a finite, nonzero elevator effectiveness",
-            ));
-        }
-        Ok(())
-    }
-}
+/// Where the pitch law sits in a scenario file.
+pub const SECTION: &str = "control.pitch";
 
 /// Which position limit the elevator actuator sits on (docs/model.md §2.6: −25°…+10°).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -108,38 +75,13 @@ pub struct PitchLawInputs {
     pub elevator_saturation: ElevatorSaturation,
 }
 
-/// A pitch-attitude control law: θ_ref → elevator command. The O-PD, the PID and a
-/// user's own law are peers behind this trait.
-///
-/// A law owns a continuous state of `state_names().len()` numbers, which the simulation
-/// integrates with the plant (RK4, all stages): it calls
-/// [`PitchLaw::elevator_command_rad`] for the actuator command and
-/// [`PitchLaw::derivative`] for the state's rate, both with the same state and inputs.
-/// Both must be pure functions of their arguments (no interior mutability), so that a
-/// run is reproducible.
-pub trait PitchLaw: fmt::Debug + Send + Sync {
-    /// Short label for tables and plots, e.g. `O-PD`.
-    fn label(&self) -> &str;
+/// A pitch-attitude control law: an [`AxisLaw`] that reads [`PitchLawInputs`] and
+/// commands the elevator (θ_ref → δe). Every such law is one, without a line of its own:
+/// implement [`AxisLaw`] with `type Inputs = PitchLawInputs`. `dyn PitchLaw` holds a
+/// user's own law ([`super::BuiltPitchLaw::Custom`]).
+pub trait PitchLaw: AxisLaw<Inputs = PitchLawInputs> {}
 
-    /// Names of the law's continuous states (their number is the state's dimension).
-    fn state_names(&self) -> &'static [&'static str];
-
-    /// The state for a start in trim; the default is all zeros.
-    fn initial_state(&self, _inputs: &PitchLawInputs, state: &mut [f64]) {
-        state.fill(0.0);
-    }
-
-    /// The elevator command δe (rad), not limited: the actuator applies its limits.
-    fn elevator_command_rad(&self, state: &[f64], inputs: &PitchLawInputs) -> f64;
-
-    /// The time derivative of the state, written into `rate`.
-    fn derivative(&self, state: &[f64], inputs: &PitchLawInputs, rate: &mut [f64]);
-
-    /// The law's estimate of the pitch disturbance d_θ (rad/s²), if it has one.
-    fn disturbance_estimate_radps2(&self, _state: &[f64]) -> Option<f64> {
-        None
-    }
-}
+impl<T: AxisLaw<Inputs = PitchLawInputs> + ?Sized> PitchLaw for T {}
 
 /// What a pitch law is designed from: the plant at trim, the hardware and the sensor.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -155,8 +97,9 @@ pub struct PitchDesignContext {
 }
 
 /// The parameters of a registered pitch law: how they are checked and how the law is
-/// built from them. Implemented once per law, beside the law.
-pub trait PitchLawDesign {
+/// built from them. Implemented once per law, beside the law; [`Default`] is the law's
+/// tuning for the realistic hardware set.
+pub trait PitchLawDesign: Default {
     /// The law these parameters build.
     type Law: PitchLaw + Clone;
 
@@ -169,45 +112,97 @@ pub trait PitchLawDesign {
     /// Builds the law for a plant and its hardware.
     fn build(&self, context: &PitchDesignContext) -> Result<Self::Law, ParameterError>;
 
+    /// The law's tuning for the paper's hardware set; the default: [`Default`].
+    fn paper_tuning() -> Self {
+        Self::default()
+    }
+
     /// The law in its linear limit on the reduced pitch loop, with the parameter that sets
     /// its speed, for the check that the stabilator's rate limit can follow it
     /// ([`super::design::check_pitch_tuning`]); `None` (the default): not checked.
-    fn linear_law(&self, _plant: PitchPlantDerivatives) -> Option<super::design::LinearisedLaw> {
+    fn linear_law(&self, _plant: PitchPlantDerivatives) -> Option<LinearisedLaw> {
         None
     }
 }
 
-/// Lists the registered pitch laws: one line each, `Variant("type name", Parameters)`,
-/// where `Parameters: PitchLawDesign`. Generates the scenario's tagged
-/// [`super::PitchControllerParameters`] (`type = "type name"`) and [`super::BuiltPitchLaw`],
-/// which dispatches to the registered laws without dynamic calls and holds a user's own
-/// law as a trait object.
+/// Which tuning of a law a hardware set flies.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LawTuning {
+    /// The realistic hardware set's: the parameters' [`Default`].
+    Realistic,
+    /// The paper's hardware set's: [`PitchLawDesign::paper_tuning`].
+    Paper,
+}
+
+/// Lists the registered pitch laws: one line each, `Variant("type name", module::Parameters)`,
+/// where `Parameters: PitchLawDesign`, optionally behind one `#[cfg(...)]`. Declares each
+/// law's module (its file beside the registry) and generates the scenario's tagged
+/// [`super::PitchControllerParameters`] (`type = "type name"`) and
+/// [`super::BuiltPitchLaw`], which dispatches to the registered laws without dynamic calls
+/// and holds a user's own law as a trait object. These are the only `match`es over the
+/// registered laws: code elsewhere names a law by its type name.
 macro_rules! pitch_laws {
-    ($( $(#[$doc:meta])* $variant:ident($name:literal, $module:ident :: $parameters:ident) ),+ $(,)?) => {
-        $( pub mod $module; )+
+    ($( $(#[doc = $doc:literal])* $(#[cfg($cfg:meta)])? $variant:ident($name:literal, $module:ident :: $parameters:ident) ),+ $(,)?) => {
+        $( $(#[cfg($cfg)])? pub mod $module; )+
 
         /// Choice and tuning of the pitch law, as written in a scenario (`type` names it).
         #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
         #[serde(tag = "type", deny_unknown_fields)]
         pub enum PitchControllerParameters {
-            $( $(#[$doc])* #[serde(rename = $name)] $variant($module::$parameters), )+
+            $( $(#[doc = $doc])* $(#[cfg($cfg)])? #[serde(rename = $name)] $variant($module::$parameters), )+
         }
 
         impl PitchControllerParameters {
             /// The `type` names of the registered laws, as written in a scenario.
-            pub const TYPE_NAMES: &'static [&'static str] = &[$($name),+];
+            pub const TYPE_NAMES: &'static [&'static str] = &[$( $(#[cfg($cfg)])? $name ),+];
+
+            /// The `type` name of the chosen law, as written in a scenario.
+            pub fn type_name(&self) -> &'static str {
+                match self {
+                    $( $(#[cfg($cfg)])? Self::$variant(_) => $name, )+
+                }
+            }
+
+            /// The registered law named `type_name` with the given tuning; `None` when no
+            /// law of that name is registered.
+            pub fn registered(type_name: &str, tuning: $crate::control::pitch::LawTuning) -> Option<Self> {
+                $(
+                    $(#[cfg($cfg)])?
+                    if type_name == $name {
+                        return Some(Self::$variant(match tuning {
+                            $crate::control::pitch::LawTuning::Realistic => Default::default(),
+                            $crate::control::pitch::LawTuning::Paper => {
+                                <$module::$parameters as $crate::control::pitch::PitchLawDesign>::paper_tuning()
+                            }
+                        }));
+                    }
+                )+
+                None
+            }
+
+            /// The same law with the given tuning.
+            pub fn retuned(&self, tuning: $crate::control::pitch::LawTuning) -> Self {
+                match self {
+                    $( $(#[cfg($cfg)])? Self::$variant(_) => Self::$variant(match tuning {
+                        $crate::control::pitch::LawTuning::Realistic => Default::default(),
+                        $crate::control::pitch::LawTuning::Paper => {
+                            <$module::$parameters as $crate::control::pitch::PitchLawDesign>::paper_tuning()
+                        }
+                    }), )+
+                }
+            }
 
             /// Short label for tables and plots, e.g. `O-PD`.
             pub fn label(&self) -> &'static str {
                 match self {
-                    $( Self::$variant(_) => <$module::$parameters as $crate::control::pitch::PitchLawDesign>::LABEL, )+
+                    $( $(#[cfg($cfg)])? Self::$variant(_) => <$module::$parameters as $crate::control::pitch::PitchLawDesign>::LABEL, )+
                 }
             }
 
             /// Checks every parameter of the chosen law (section `control.pitch`).
             pub fn validate(&self) -> Result<(), $crate::parameters::ParameterError> {
                 match self {
-                    $( Self::$variant(p) => $crate::control::pitch::PitchLawDesign::validate(p, Self::SECTION), )+
+                    $( $(#[cfg($cfg)])? Self::$variant(p) => $crate::control::pitch::PitchLawDesign::validate(p, Self::SECTION), )+
                 }
             }
 
@@ -218,7 +213,7 @@ macro_rules! pitch_laws {
                 plant: $crate::control::pitch::PitchPlantDerivatives,
             ) -> Option<$crate::control::pitch::design::LinearisedLaw> {
                 match self {
-                    $( Self::$variant(p) => $crate::control::pitch::PitchLawDesign::linear_law(p, plant), )+
+                    $( $(#[cfg($cfg)])? Self::$variant(p) => $crate::control::pitch::PitchLawDesign::linear_law(p, plant), )+
                 }
             }
 
@@ -228,7 +223,7 @@ macro_rules! pitch_laws {
                 context: &$crate::control::pitch::PitchDesignContext,
             ) -> Result<BuiltPitchLaw, $crate::parameters::ParameterError> {
                 Ok(match self {
-                    $( Self::$variant(p) => BuiltPitchLaw::$variant(
+                    $( $(#[cfg($cfg)])? Self::$variant(p) => BuiltPitchLaw::$variant(
                         $crate::control::pitch::PitchLawDesign::build(p, context)?,
                     ), )+
                 })
@@ -239,45 +234,47 @@ macro_rules! pitch_laws {
         /// user's own.
         #[derive(Debug, Clone)]
         pub enum BuiltPitchLaw {
-            $( $(#[$doc])* $variant(<$module::$parameters as $crate::control::pitch::PitchLawDesign>::Law), )+
+            $( $(#[doc = $doc])* $(#[cfg($cfg)])? $variant(<$module::$parameters as $crate::control::pitch::PitchLawDesign>::Law), )+
             /// A user's own law.
             Custom(std::sync::Arc<dyn PitchLaw>),
         }
 
-        impl PitchLaw for BuiltPitchLaw {
+        impl $crate::control::AxisLaw for BuiltPitchLaw {
+            type Inputs = PitchLawInputs;
+
             fn label(&self) -> &str {
                 match self {
-                    $( Self::$variant(law) => PitchLaw::label(law), )+
+                    $( $(#[cfg($cfg)])? Self::$variant(law) => $crate::control::AxisLaw::label(law), )+
                     Self::Custom(law) => law.label(),
                 }
             }
 
             fn state_names(&self) -> &'static [&'static str] {
                 match self {
-                    $( Self::$variant(law) => PitchLaw::state_names(law), )+
+                    $( $(#[cfg($cfg)])? Self::$variant(law) => $crate::control::AxisLaw::state_names(law), )+
                     Self::Custom(law) => law.state_names(),
                 }
             }
 
             fn initial_state(&self, inputs: &PitchLawInputs, state: &mut [f64]) {
                 match self {
-                    $( Self::$variant(law) => PitchLaw::initial_state(law, inputs, state), )+
+                    $( $(#[cfg($cfg)])? Self::$variant(law) => $crate::control::AxisLaw::initial_state(law, inputs, state), )+
                     Self::Custom(law) => law.initial_state(inputs, state),
                 }
             }
 
             #[inline]
-            fn elevator_command_rad(&self, state: &[f64], inputs: &PitchLawInputs) -> f64 {
+            fn surface_command_rad(&self, state: &[f64], inputs: &PitchLawInputs) -> f64 {
                 match self {
-                    $( Self::$variant(law) => PitchLaw::elevator_command_rad(law, state, inputs), )+
-                    Self::Custom(law) => law.elevator_command_rad(state, inputs),
+                    $( $(#[cfg($cfg)])? Self::$variant(law) => $crate::control::AxisLaw::surface_command_rad(law, state, inputs), )+
+                    Self::Custom(law) => law.surface_command_rad(state, inputs),
                 }
             }
 
             #[inline]
             fn derivative(&self, state: &[f64], inputs: &PitchLawInputs, rate: &mut [f64]) {
                 match self {
-                    $( Self::$variant(law) => PitchLaw::derivative(law, state, inputs, rate), )+
+                    $( $(#[cfg($cfg)])? Self::$variant(law) => $crate::control::AxisLaw::derivative(law, state, inputs, rate), )+
                     Self::Custom(law) => law.derivative(state, inputs, rate),
                 }
             }
@@ -285,8 +282,15 @@ macro_rules! pitch_laws {
             #[inline]
             fn disturbance_estimate_radps2(&self, state: &[f64]) -> Option<f64> {
                 match self {
-                    $( Self::$variant(law) => PitchLaw::disturbance_estimate_radps2(law, state), )+
+                    $( $(#[cfg($cfg)])? Self::$variant(law) => $crate::control::AxisLaw::disturbance_estimate_radps2(law, state), )+
                     Self::Custom(law) => law.disturbance_estimate_radps2(state),
+                }
+            }
+
+            fn linear_law(&self) -> Option<$crate::control::LinearLaw> {
+                match self {
+                    $( $(#[cfg($cfg)])? Self::$variant(law) => $crate::control::AxisLaw::linear_law(law), )+
+                    Self::Custom(law) => law.linear_law(),
                 }
             }
         }
@@ -298,26 +302,6 @@ pub(crate) use pitch_laws;
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn zero_elevator_effectiveness_is_rejected() {
-        let plant = PitchPlantDerivatives {
-            dqdot_dq_per_s: -0.15,
-            dqdot_delevator_per_s2: 0.0,
-        };
-        let error = plant.validate().expect_err("zero");
-        assert!(error.path.ends_with("dqdot_delevator_per_s2"), "{error}");
-    }
-
-    #[test]
-    fn non_finite_damping_derivative_is_named() {
-        let plant = PitchPlantDerivatives {
-            dqdot_dq_per_s: f64::NAN,
-            dqdot_delevator_per_s2: -1.9,
-        };
-        let message = plant.validate().expect_err("NaN").to_string();
-        assert!(message.contains("dqdot_dq_per_s"), "{message}");
-    }
 
     #[test]
     fn saturation_is_classified_against_the_limits() {

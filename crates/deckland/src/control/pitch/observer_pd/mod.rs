@@ -21,7 +21,9 @@ use crate::parameters::{Bounds, ParameterError};
 
 mod design;
 
-pub use design::{assess_feedback, design_observer_pd, FeedbackAssessment, PitchDesign};
+pub use design::{
+    assess_feedback, design_observer_pd, linear_observer_pd, FeedbackAssessment, PitchDesign,
+};
 
 /// Which pitch attitude the O-PD proportional term compares with θ_ref.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -129,53 +131,6 @@ impl PitchLawDesign for ObserverPdParameters {
             speed_value: self.settling_time_s,
             speed_advice: "a longer settling_time_s",
         })
-    }
-}
-
-/// The O-PD in its linear limit about trim (docs/model.md §4–5 with the observer's
-/// α1 → 1, the same k1, k2, k3, ε), as the design code's [`LinearLaw`]: states x1, x2, x3,
-///
-/// ```text
-/// e = x1 − y;  ẋ1 = x2 − β1·e;  ẋ2 = x3 + M_q·x2 + M_δ·δ − β2·e;  ẋ3 = −β3·e
-/// u = (K_P·(r − θ_fb) − K_D·x2 − x3)/M_δ,  θ_fb = y or x1
-/// β1 = k3/ε, β2 = k2/ε², β3 = k1/ε³
-/// ```
-pub fn linear_observer_pd(
-    gains: &ObserverPdGains,
-    observer: &ObserverParameters,
-    feedback: PitchFeedback,
-    plant: PitchPlantDerivatives,
-) -> LinearLaw {
-    let (mq, md) = (plant.dqdot_dq_per_s, plant.dqdot_delevator_per_s2);
-    let eps = observer.epsilon;
-    let betas = [
-        observer.k3 / eps,
-        observer.k2 / (eps * eps),
-        observer.k1 / (eps * eps * eps),
-    ];
-    let (kp, kd) = (gains.proportional_per_s2, gains.derivative_per_s);
-    // Each observer state sees −β·(x1 − y); the estimate's rate x2 also sees M_q·x2 + M_δ·δ.
-    let mut input_matrix = [[0.0; LinearLaw::INPUTS]; LinearLaw::MAX_STATES];
-    for (row, beta) in input_matrix.iter_mut().zip(betas) {
-        row[LinearLaw::MEASURED_ANGLE] = beta;
-    }
-    input_matrix[1][LinearLaw::SURFACE] = md;
-    let mut output_inputs = [0.0; LinearLaw::INPUTS];
-    output_inputs[LinearLaw::COMMAND] = kp / md;
-    let mut output_states = [0.0, -kd / md, -1.0 / md];
-    match feedback {
-        PitchFeedback::Measured => output_inputs[LinearLaw::MEASURED_ANGLE] = -kp / md,
-        PitchFeedback::ObserverEstimate => output_states[0] = -kp / md,
-    }
-    LinearLaw {
-        state_matrix: [
-            [-betas[0], 1.0, 0.0],
-            [-betas[1], mq, 1.0],
-            [-betas[2], 0.0, 0.0],
-        ],
-        input_matrix,
-        output_states,
-        output_inputs,
     }
 }
 
