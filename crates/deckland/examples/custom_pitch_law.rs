@@ -2,12 +2,16 @@
 //!
 //! `cargo run --release -p deckland --example custom_pitch_law [RUNS]` (default 40).
 //!
-//! Everything a pitch law needs is in this one file. It implements
-//! [`deckland::control::pitch::PitchLaw`]: it names its states, gives the elevator
-//! command from them and the signals of the instant ([`PitchLawInputs`]: the pitch
-//! command, the measured attitude and rate, the trim), and the states' derivatives,
-//! which the simulation integrates with the aircraft (RK4, 1 ms). A factory builds it for
-//! each run from the plant derivatives at that run's trim ([`PitchDesignContext`]).
+//! Everything a pitch law needs is in this one file; a law outside the library needs no
+//! registration. It implements [`deckland::control::AxisLaw`] for the pitch axis
+//! (`type Inputs = PitchLawInputs`, which makes it a [`PitchLaw`]): it names its states,
+//! gives the elevator command from them and the signals of the instant
+//! ([`PitchLawInputs`]: the pitch command, the measured attitude and rate, the trim), and
+//! the states' derivatives, which the simulation integrates with the aircraft (RK4,
+//! 1 ms). It also describes itself in its linear limit ([`LinearLaw`]), the form in which
+//! the design code (`control::pitch::design::assess_loop`: margins, noise, the rate
+//! limit's limit cycle) assesses any law. A factory builds it for each run from the plant
+//! derivatives at that run's trim ([`PitchDesignContext`]).
 //!
 //! The law here is a filtered PID designed like the O-PD, from the plant: the measured
 //! attitude goes through a first-order filter (time constant `filter_s`) that keeps the
@@ -18,7 +22,7 @@
 use std::sync::atomic::AtomicBool;
 use std::sync::Arc;
 
-use deckland::control::pitch::{AxisLaw, PitchDesignContext, PitchLaw, PitchLawInputs};
+use deckland::control::pitch::{AxisLaw, LinearLaw, PitchDesignContext, PitchLaw, PitchLawInputs};
 use deckland::experiments::{fly_approach, fly_approach_with_law};
 use deckland::monte_carlo::{run_campaign, CampaignSpec, ControllerVariant};
 use deckland::parameters::ParameterError;
@@ -75,6 +79,27 @@ impl AxisLaw for FilteredPid {
     fn derivative(&self, state: &[f64], inputs: &PitchLawInputs, rate: &mut [f64]) {
         rate[0] = (inputs.theta_measured_rad - state[0]) / self.filter_s;
         rate[1] = inputs.theta_ref_rad - state[0];
+    }
+
+    /// About trim, over the inputs [r, y, q, δ]: ẋ0 = (y − x0)/T, ẋ1 = r − x0,
+    /// u = (K_P·(r − x0) + K_I·x1 − K_D·q)/M_δ; the third state is a placeholder.
+    fn linear_law(&self) -> Option<LinearLaw> {
+        let (md, t) = (self.dqdot_delevator_per_s2, self.filter_s);
+        Some(LinearLaw {
+            state_matrix: [[-1.0 / t, 0.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, -1.0]],
+            input_matrix: [[0.0, 1.0 / t, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0], [0.0; 4]],
+            output_states: [
+                -self.proportional_per_s2 / md,
+                self.integral_per_s3 / md,
+                0.0,
+            ],
+            output_inputs: [
+                self.proportional_per_s2 / md,
+                0.0,
+                -self.derivative_per_s / md,
+                0.0,
+            ],
+        })
     }
 }
 

@@ -3,7 +3,7 @@
 //! control surface and describes itself in its linear limit for the design code.
 //!
 //! What differs between axes is only what a law reads at one instant ([`AxisLaw::Inputs`]:
-//! [`super::pitch::PitchLawInputs`] for the pitch axis) and the plant its linear
+//! `PitchLawInputs` for the pitch axis) and the plant its linear
 //! description is formed for. Everything else — its label, its state's names, its initial
 //! state, the surface command, the state's derivative, the disturbance estimate and the
 //! [`LinearLaw`] — is the same interface on every axis.

@@ -43,7 +43,7 @@ impl PitchLawDesign for ProportionalParameters {
     }
 
     fn build(&self, context: &PitchDesignContext) -> Result<ProportionalLaw, ParameterError> {
-        self.validate(super::PitchControllerParameters::SECTION)?;
+        self.validate(super::law::SECTION)?;
         context.plant.validate()?;
         Ok(ProportionalLaw {
             gains: *self,

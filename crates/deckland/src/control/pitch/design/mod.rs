@@ -23,7 +23,7 @@
 //!
 //! A law's own design procedure sits beside the law and calls these: the O-PD's search
 //! over its settling time, ε and fed-back attitude is
-//! [`super::observer_pd::design_observer_pd`]. The plant, the actuator and the sensor are
+//! `observer_pd::design_observer_pd`. The plant, the actuator and the sensor are
 //! named for the pitch axis; a roll or yaw loop has the same structure (angle, rate,
 //! surface) with its own derivatives.
 
