@@ -2,23 +2,32 @@
 //!
 //! `cargo run --release -p deckland --example custom_pitch_law [RUNS]` (default 40).
 //!
-//! Everything a pitch law needs is in this one file. It implements
-//! [`deckland::control::pitch::PitchLaw`]: it names its states, gives the elevator
-//! command from them and the signals of the instant ([`PitchLawInputs`]: the pitch
-//! command, the measured attitude and rate, the trim), and the states' derivatives,
-//! which the simulation integrates with the aircraft (RK4, 1 ms). A factory builds it for
-//! each run from the plant derivatives at that run's trim ([`PitchDesignContext`]).
+//! Everything a pitch law needs is in this one file; a law outside the library needs no
+//! registration. It implements [`deckland::control::AxisLaw`] for the pitch axis
+//! (`type Inputs = PitchLawInputs`, which makes it a [`PitchLaw`]): it names its states,
+//! gives the elevator command from them and the signals of the instant
+//! ([`PitchLawInputs`]: the pitch command, the measured attitude and rate, the trim), and
+//! the states' derivatives, which the simulation integrates with the aircraft (RK4,
+//! 1 ms). It also describes itself in its linear limit ([`LinearLaw`]), the form in which
+//! the design code (`control::pitch::design::assess_loop`: margins, noise, the rate
+//! limit's limit cycle) assesses any law. A factory builds it for each run from the plant
+//! derivatives at that run's trim ([`PitchDesignContext`]).
 //!
 //! The law here is a filtered PID designed like the O-PD, from the plant: the measured
 //! attitude goes through a first-order filter (time constant `filter_s`) that keeps the
 //! sensor's white noise off the elevator; the error dynamics are placed at ω_n, ζ with
-//! K_P = ω_n², K_D = 2ζω_n + ∂q̇/∂q (docs/model.md §5.2's rule), and a slow integral trims
-//! out steady disturbances.
+//! K_P = ω_n², K_D = 2ζω_n + ∂q̇/∂q (docs/model.md §5.2's rule), and a slow integral
+//! K_I = 0.016·ω_n³ trims out steady disturbances. ω_n = 2.5 rad/s, ζ = 1 are the error
+//! dynamics of the realistic O-PD design (T_2% = 1.6 s), which the stabilator's 40 °/s
+//! rate limit can follow; K_I is then the realistic PID's 0.25 s⁻³. Faster gains
+//! (ω_n = 4 rad/s, ζ = 0.9, K_I = 0.1·ω_n³) diverged in all 4 approaches of
+//! `cargo run -p deckland --example custom_pitch_law 4`; these board as often as the
+//! O-PD there (3 of 4).
 
 use std::sync::atomic::AtomicBool;
 use std::sync::Arc;
 
-use deckland::control::pitch::{PitchDesignContext, PitchLaw, PitchLawInputs};
+use deckland::control::pitch::{AxisLaw, LinearLaw, PitchDesignContext, PitchLaw, PitchLawInputs};
 use deckland::experiments::{fly_approach, fly_approach_with_law};
 use deckland::monte_carlo::{run_campaign, CampaignSpec, ControllerVariant};
 use deckland::parameters::ParameterError;
@@ -41,7 +50,7 @@ impl FilteredPid {
     fn design(context: &PitchDesignContext, omega_radps: f64, zeta: f64) -> Self {
         Self {
             proportional_per_s2: omega_radps * omega_radps,
-            integral_per_s3: 0.1 * omega_radps.powi(3),
+            integral_per_s3: 0.016 * omega_radps.powi(3),
             derivative_per_s: 2.0 * zeta * omega_radps + context.plant.dqdot_dq_per_s,
             filter_s: 0.05,
             dqdot_delevator_per_s2: context.plant.dqdot_delevator_per_s2,
@@ -49,7 +58,9 @@ impl FilteredPid {
     }
 }
 
-impl PitchLaw for FilteredPid {
+impl AxisLaw for FilteredPid {
+    type Inputs = PitchLawInputs;
+
     fn label(&self) -> &str {
         "filtered PID"
     }
@@ -63,7 +74,7 @@ impl PitchLaw for FilteredPid {
         state[1] = 0.0;
     }
 
-    fn elevator_command_rad(&self, state: &[f64], inputs: &PitchLawInputs) -> f64 {
+    fn surface_command_rad(&self, state: &[f64], inputs: &PitchLawInputs) -> f64 {
         let error = inputs.theta_ref_rad - state[0];
         let equivalent_control = self.proportional_per_s2 * error + self.integral_per_s3 * state[1]
             - self.derivative_per_s * inputs.pitch_rate_measured_radps;
@@ -74,13 +85,34 @@ impl PitchLaw for FilteredPid {
         rate[0] = (inputs.theta_measured_rad - state[0]) / self.filter_s;
         rate[1] = inputs.theta_ref_rad - state[0];
     }
+
+    /// About trim, over the inputs [r, y, q, δ]: ẋ0 = (y − x0)/T, ẋ1 = r − x0,
+    /// u = (K_P·(r − x0) + K_I·x1 − K_D·q)/M_δ; the third state is a placeholder.
+    fn linear_law(&self) -> Option<LinearLaw> {
+        let (md, t) = (self.dqdot_delevator_per_s2, self.filter_s);
+        Some(LinearLaw {
+            state_matrix: [[-1.0 / t, 0.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, -1.0]],
+            input_matrix: [[0.0, 1.0 / t, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0], [0.0; 4]],
+            output_states: [
+                -self.proportional_per_s2 / md,
+                self.integral_per_s3 / md,
+                0.0,
+            ],
+            output_inputs: [
+                self.proportional_per_s2 / md,
+                0.0,
+                -self.derivative_per_s / md,
+                0.0,
+            ],
+        })
+    }
 }
 
-/// Builds the law for each run: ω_n = 4 rad/s, ζ = 0.9.
+/// Builds the law for each run: ω_n = 2.5 rad/s, ζ = 1.
 fn factory() -> Arc<PitchLawFactory> {
     Arc::new(
         |context: &PitchDesignContext| -> Result<Box<dyn PitchLaw>, ParameterError> {
-            Ok(Box::new(FilteredPid::design(context, 4.0, 0.9)))
+            Ok(Box::new(FilteredPid::design(context, 2.5, 1.0)))
         },
     )
 }

@@ -1,20 +1,26 @@
 //! A user's own pitch law flies through the public API exactly as a registered one: the
-//! paper's PID (Eq. 37) written again outside the library, as a `PitchLaw` with its own
-//! state, gives bit-identical runs and campaigns to the registered PID. The comparison is
-//! independent of any number the program prints: two separately written implementations
-//! of the same law must agree to the last bit.
+//! paper's PID (Eq. 37) written again outside the library, as an `AxisLaw` on the pitch
+//! axis with its own state, gives bit-identical runs and campaigns to the registered PID,
+//! and its linear description, written from the same equations, is assessed by the design
+//! code like the registered PID's. The comparison is independent of any number the
+//! program prints: two separately written implementations of the same law must agree to
+//! the last bit. Such a law needs no registration: this is how a law outside the library
+//! flies (a law inside it is one file plus one registry line, see `control::pitch`).
 
 use std::sync::atomic::AtomicBool;
 use std::sync::Arc;
 
+use deckland::aircraft::ElevatorActuatorParameters;
+use deckland::control::pitch::design::{assess_loop, PitchHardware, PitchSensorNoise};
 use deckland::control::pitch::{
-    ElevatorSaturation, PidParameters, PitchControllerParameters, PitchDesignContext, PitchLaw,
-    PitchLawInputs,
+    AxisLaw, ElevatorSaturation, LinearLaw, PidParameters, PitchControllerParameters,
+    PitchDesignContext, PitchLaw, PitchLawInputs, PitchPlantDerivatives,
 };
 use deckland::experiments::{fly_approach, fly_approach_with_law};
 use deckland::monte_carlo::{run_campaign, CampaignSpec, ControllerVariant};
 use deckland::parameters::ParameterError;
 use deckland::scenario::Scenario;
+use deckland::sensors::PitchNoiseParameters;
 use deckland::simulation::{PitchLawFactory, Simulation};
 
 /// Paper Eq. 37 with conditional-integration anti-windup, written from the equations.
@@ -24,7 +30,9 @@ struct HandWrittenPid {
     dqdot_delevator_per_s2: f64,
 }
 
-impl PitchLaw for HandWrittenPid {
+impl AxisLaw for HandWrittenPid {
+    type Inputs = PitchLawInputs;
+
     fn label(&self) -> &str {
         "hand-written PID"
     }
@@ -33,7 +41,7 @@ impl PitchLaw for HandWrittenPid {
         &["integral"]
     }
 
-    fn elevator_command_rad(&self, state: &[f64], inputs: &PitchLawInputs) -> f64 {
+    fn surface_command_rad(&self, state: &[f64], inputs: &PitchLawInputs) -> f64 {
         let error = inputs.theta_ref_rad - inputs.theta_measured_rad;
         let u = self.gains.proportional_per_s2 * error + self.gains.integral_per_s3 * state[0]
             - self.gains.derivative_per_s * inputs.pitch_rate_measured_radps;
@@ -49,6 +57,24 @@ impl PitchLaw for HandWrittenPid {
             ElevatorSaturation::AtUpperLimit => drift > 0.0,
         };
         rate[0] = if frozen { 0.0 } else { error };
+    }
+
+    /// Eq. 37 in its linear limit, written from the equations: ż = r − y,
+    /// u = (K_P·(r − y) + K_I·z − K_D·q)/M_δ; the two unused states are placeholders.
+    fn linear_law(&self) -> Option<LinearLaw> {
+        let md = self.dqdot_delevator_per_s2;
+        let g = &self.gains;
+        Some(LinearLaw {
+            state_matrix: [[0.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, -1.0]],
+            input_matrix: [[1.0, -1.0, 0.0, 0.0], [0.0; 4], [0.0; 4]],
+            output_states: [g.integral_per_s3 / md, 0.0, 0.0],
+            output_inputs: [
+                g.proportional_per_s2 / md,
+                -g.proportional_per_s2 / md,
+                -g.derivative_per_s / md,
+                0.0,
+            ],
+        })
     }
 }
 
@@ -87,6 +113,42 @@ fn a_hand_written_pid_flies_bit_identical_to_the_registered_one() {
             last.1.map(|s| s.elevator_rad)
         );
     }
+}
+
+/// The design code assesses a user's law from its linear description alone, exactly as
+/// the registered PID's.
+#[test]
+fn the_design_code_assesses_a_user_law_like_the_registered_one() {
+    let context = PitchDesignContext {
+        plant: PitchPlantDerivatives {
+            dqdot_dq_per_s: -0.1891,
+            dqdot_delevator_per_s2: -1.9675,
+        },
+        actuator: ElevatorActuatorParameters::default(),
+        pitch_noise: PitchNoiseParameters::default(),
+        time_step_s: 0.001,
+    };
+    let own = HandWrittenPid {
+        gains: PidParameters::default(),
+        dqdot_delevator_per_s2: context.plant.dqdot_delevator_per_s2,
+    };
+    let registered = PitchControllerParameters::Pid(PidParameters::default())
+        .build(&context)
+        .expect("valid");
+    let (own_law, registered_law) = (own.linear_law(), registered.linear_law());
+    assert_eq!(own_law, registered_law);
+    let hardware = PitchHardware {
+        actuator: context.actuator,
+        elevator_trim_rad: (-8.17f64).to_radians(),
+        plant: context.plant,
+        coupling: None,
+        control_delay_s: 1.5 / 80.0,
+    };
+    let noise = PitchSensorNoise::from_parameters(&context.pitch_noise, 0.001);
+    let assessed = assess_loop(&hardware, &noise, &own_law.expect("linear"), 1.2);
+    assert!(assessed.closed_loop_max_real_part < 0.0, "{assessed:?}");
+    let margin = assessed.margins.phase_margin_deg.expect("a crossover");
+    assert!(margin > 0.0, "{assessed:?}");
 }
 
 #[test]

@@ -10,8 +10,8 @@
 //! metric; the paper reports 1.11 s for the O-PD (Fig. 10).
 
 use deckland::control::pitch::{
-    BuiltPitchLaw, ElevatorSaturation, ObserverPdParameters, PidParameters,
-    PitchControllerParameters, PitchDesignContext, PitchLaw, PitchLawInputs, PitchPlantDerivatives,
+    AxisLaw, BuiltPitchLaw, ElevatorSaturation, ObserverPdParameters, PidParameters,
+    PitchControllerParameters, PitchDesignContext, PitchLawInputs, PitchPlantDerivatives,
 };
 use deckland::integration::{rk4_step, OdeSystem};
 use deckland::metrics::{step_response_metrics, StepResponseMetrics, StepResponseSpec};
@@ -101,7 +101,7 @@ impl PitchLoop {
 
     fn command(&self, inputs: &PitchLawInputs, x: &[f64; 7]) -> f64 {
         self.controller
-            .elevator_command_rad(self.controller_state(x), inputs)
+            .surface_command_rad(self.controller_state(x), inputs)
     }
 
     /// Actuator position rate and acceleration, held at a limit it pushes into.

@@ -473,7 +473,7 @@ pub fn run(args: &StepArgs) -> Result<()> {
     let flight = StepFlight::of(args)?;
     let epsilon = match controller_parameters(&flight.base, ControllerChoice::Opd, args.epsilon) {
         PitchControllerParameters::ObserverPd(opd) => opd.observer.epsilon,
-        PitchControllerParameters::Pid(_) => f64::NAN,
+        _ => f64::NAN,
     };
     let runs = flight.fly(&args.controller.choices())?;
     let output = OutputDir::prepare("step", args.output.out.as_deref(), args.output.force)?;

@@ -3,11 +3,15 @@
 //! Cascade: flight-path generator → guidance → sink-rate controller → [`pitch`]
 //! controller → elevator; in parallel the speed controller → thrust and, in the
 //! realistic set, direct lift control from the glide-path error → lift.
+//!
+//! The laws of an axis share one interface, [`AxisLaw`], and describe themselves to the
+//! design code in one data form, [`LinearLaw`]; the pitch laws are its first instances.
 
 mod command_ramp;
 mod direct_lift;
 mod flight_path;
 mod guidance;
+mod law;
 mod loop_controller;
 pub mod pitch;
 mod sink_rate;
@@ -21,6 +25,7 @@ pub use flight_path::{
     FlightPathGenerator, FlightPathParameters, PathReference,
 };
 pub use guidance::GuidanceParameters;
+pub use law::{AxisLaw, LinearLaw};
 pub use loop_controller::{LoopController, LoopGains};
 pub use sink_rate::SinkRateControllerParameters;
 pub use speed::{SpeedController, SpeedControllerParameters};

@@ -14,6 +14,7 @@ mod ship_prediction;
 mod ship_simulator;
 mod turbulence;
 mod wind;
+mod wind_model;
 
 pub use deck::{DeckGeometry, EarthPoint, EarthVelocity, ShipPose, ShipPoseRate};
 pub use ship::{
@@ -27,9 +28,10 @@ pub use ship_prediction::{
 pub use ship_simulator::ShipMotionSimulator;
 pub use turbulence::Turbulence;
 pub use wind::{
-    mean_wind, periodic_wake, steady_wake, Wind, WindComponents, WindModel, WindParameters,
+    mean_wind, periodic_wake, steady_wake, Wind, WindComponents, WindParameters,
     STEADY_WAKE_EXTENT_M, WAKE_TAPER_M,
 };
+pub use wind_model::WindModel;
 
 #[cfg(test)]
 mod tests;

@@ -9,7 +9,7 @@ use rayon::prelude::*;
 use super::seeds::run_seed;
 use super::shard::Shard;
 use super::statistics::CampaignStatistics;
-use crate::control::pitch::{ObserverPdParameters, PidParameters, PitchControllerParameters};
+use crate::control::pitch::PitchControllerParameters;
 use crate::random::RandomStreams;
 use crate::recording::SummaryRecorder;
 use crate::scenario::{DispersionSample, Mission, Scenario};
@@ -103,27 +103,29 @@ impl CampaignSpec {
         Self { shard, ..self }
     }
 
-    /// The same campaign under O-PD and PID, in that order: the scenario's own controller
-    /// keeps its tuning, the other takes its defaults in the scenario's hardware set.
+    /// The same campaign under the compared laws
+    /// ([`PitchControllerParameters::COMPARISON`]: O-PD and PID, in that order): the
+    /// scenario's own law keeps its tuning, each other takes its tuning for the scenario's
+    /// hardware set. A scenario flying a law outside the comparison flies it first.
     pub fn comparing_pitch_controllers(mut self) -> Self {
-        // The other controller takes the defaults of the scenario's hardware set.
-        let paper = self.scenario.hardware == crate::scenario::HardwareSet::Paper;
-        let (default_opd, default_pid) = if paper {
-            (ObserverPdParameters::paper(), PidParameters::paper())
-        } else {
-            (ObserverPdParameters::default(), PidParameters::default())
-        };
-        let (observer_pd, pid) = match self.scenario.control.pitch {
-            PitchControllerParameters::ObserverPd(p) => (p, default_pid),
-            PitchControllerParameters::Pid(p) => (default_opd, p),
-        };
-        self.controllers = [
-            PitchControllerParameters::ObserverPd(observer_pd),
-            PitchControllerParameters::Pid(pid),
-        ]
-        .into_iter()
-        .map(ControllerVariant::registered)
-        .collect();
+        let own = self.scenario.control.pitch;
+        let tuning = self.scenario.hardware.law_tuning();
+        let compared = PitchControllerParameters::COMPARISON
+            .into_iter()
+            .filter_map(|name| {
+                if name == own.type_name() {
+                    Some(own)
+                } else {
+                    PitchControllerParameters::registered(name, tuning)
+                }
+            });
+        let outside = !PitchControllerParameters::COMPARISON.contains(&own.type_name());
+        self.controllers = outside
+            .then_some(own)
+            .into_iter()
+            .chain(compared)
+            .map(ControllerVariant::registered)
+            .collect();
         self
     }
 
@@ -366,4 +368,73 @@ pub fn run_campaign(
         controller_labels: spec.controllers.iter().map(|c| c.label.clone()).collect(),
         partial,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use std::sync::atomic::AtomicBool;
+
+    use super::*;
+    use crate::control::pitch::{ObserverPdParameters, PidParameters};
+    use crate::scenario::load_scenario;
+
+    /// The law that the test build registers with one file and one registry line
+    /// (`control/pitch/proportional.rs`) is named in a scenario file, tuned by the paper's
+    /// set by name, and flown by a campaign first, then the compared O-PD and PID.
+    #[test]
+    fn a_law_registered_with_one_line_flies_in_a_comparison() {
+        let text = "[control.pitch]\ntype = \"proportional\"\nderivative_per_s = 5.0\n";
+        let scenario = load_scenario(text, "pd.toml").expect("a valid scenario");
+        assert_eq!(scenario.control.pitch.label(), "PD");
+        let paper = load_scenario(
+            "hardware = \"paper\"\n[control.pitch]\ntype = \"proportional\"\n",
+            "pd-paper.toml",
+        )
+        .expect("a valid scenario");
+        assert_eq!(paper.control.pitch.type_name(), "proportional");
+
+        let spec = CampaignSpec::new(scenario, 2, 11).comparing_pitch_controllers();
+        let labels: Vec<&str> = spec.controllers.iter().map(|c| c.label.as_str()).collect();
+        assert_eq!(labels, ["PD", "O-PD", "PID"]);
+        assert_eq!(spec.controllers[0].pitch, scenario.control.pitch);
+        let result = run_campaign(&spec, 1, &|_| {}, &AtomicBool::new(false)).expect("valid");
+        assert_eq!(result.records.len(), 6);
+        for record in result.records.iter().filter(|r| r.controller == 0) {
+            // It holds the glide path down to the deck.
+            let summary = record.result.as_ref().expect("the law flies");
+            let clearance = summary.ramp_clearance_m.expect("reaches the ramp");
+            let error = summary.glide_path_error_rms_m.expect("on the path");
+            assert!(clearance > 0.0 && error < 1.0, "{summary:?}");
+        }
+    }
+
+    /// The comparison keeps the scenario's own law and tunes the other for its hardware
+    /// set, by name.
+    #[test]
+    fn a_comparison_keeps_the_own_law_and_tunes_the_other_for_the_set() {
+        let mut scenario = Scenario::paper();
+        let own = PidParameters {
+            anti_windup: false,
+            ..PidParameters::paper()
+        };
+        scenario.control.pitch = PitchControllerParameters::Pid(own);
+        let spec = CampaignSpec::new(scenario, 1, 1).comparing_pitch_controllers();
+        let laws: Vec<_> = spec.controllers.iter().map(|c| c.pitch).collect();
+        assert_eq!(
+            laws,
+            [
+                PitchControllerParameters::ObserverPd(ObserverPdParameters::paper()),
+                PitchControllerParameters::Pid(own),
+            ]
+        );
+        let realistic = CampaignSpec::new(Scenario::default(), 1, 1).comparing_pitch_controllers();
+        let laws: Vec<_> = realistic.controllers.iter().map(|c| c.pitch).collect();
+        assert_eq!(
+            laws,
+            [
+                PitchControllerParameters::default(),
+                PitchControllerParameters::Pid(PidParameters::default()),
+            ]
+        );
+    }
 }

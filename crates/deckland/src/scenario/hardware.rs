@@ -21,7 +21,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::{Mission, PitchCommand, Scenario};
-use crate::control::pitch::{PidParameters, PitchControllerParameters};
+use crate::control::pitch::LawTuning;
 use crate::control::{
     DirectLiftParameters, FlightPathParameters, SinkRateControllerParameters,
     SpeedControllerParameters, WaveOffParameters,
@@ -57,6 +57,14 @@ impl HardwareSet {
         }
     }
 
+    /// The tuning of a pitch law this set flies (a law is chosen by its `type` name).
+    pub fn law_tuning(self) -> LawTuning {
+        match self {
+            Self::Realistic => LawTuning::Realistic,
+            Self::Paper => LawTuning::Paper,
+        }
+    }
+
     /// The default scenario of this set.
     pub fn scenario(self) -> Scenario {
         match self {
@@ -89,15 +97,7 @@ impl Scenario {
     /// tuning of it) and mission (with the set's pitch command).
     fn defaults_for(&self, set: HardwareSet) -> Self {
         let mut base = set.scenario();
-        base.control.pitch = match set {
-            HardwareSet::Realistic => match self.control.pitch {
-                PitchControllerParameters::ObserverPd(_) => PitchControllerParameters::default(),
-                PitchControllerParameters::Pid(_) => {
-                    PitchControllerParameters::Pid(PidParameters::default())
-                }
-            },
-            HardwareSet::Paper => self.control.pitch.paper_tuning(),
-        };
+        base.control.pitch = self.control.pitch.retuned(set.law_tuning());
         base.mission = self.mission;
         if let Mission::PitchStep { command, .. } = &mut base.mission {
             *command = set.pitch_command();

@@ -15,7 +15,7 @@ use super::outer_loops::{OuterLoopInputs, OuterLoops};
 use super::signals::Signals;
 use super::taps::{LoopBreak, Taps};
 use crate::aircraft::{Aircraft, AircraftState, HookGeometry, TrimPoint};
-use crate::control::pitch::{BuiltPitchLaw, ElevatorSaturation, PitchLaw, PitchLawInputs};
+use crate::control::pitch::{AxisLaw, BuiltPitchLaw, ElevatorSaturation, PitchLawInputs};
 use crate::control::{
     DeckReference, DirectLiftParameters, SpeedController, WaveOffDecision, WaveOffParameters,
 };
@@ -380,7 +380,7 @@ impl ClosedLoop {
             LoopBreak::ElevatorCommand,
             match held.commands {
                 Some(commands) => commands.elevator_rad,
-                None => self.pitch.elevator_command_rad(pitch_state, &pitch_inputs),
+                None => self.pitch.surface_command_rad(pitch_state, &pitch_inputs),
             },
         );
         bus.disturbance_estimate_radps2 = self.pitch.disturbance_estimate_radps2(pitch_state);

@@ -18,7 +18,7 @@ use crate::control::pitch::design::{
     PitchTuningProblem,
 };
 use crate::control::pitch::{
-    BuiltPitchLaw, PitchDesignContext, PitchLaw, PitchLawInputs, PitchPlantDerivatives,
+    AxisLaw, BuiltPitchLaw, PitchDesignContext, PitchLaw, PitchLawInputs, PitchPlantDerivatives,
 };
 use crate::control::{
     CommandRamp, DeckMotionFilter, DeckPredictorKind, FlightPathGenerator, SpeedController,

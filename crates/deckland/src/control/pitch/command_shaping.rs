@@ -5,7 +5,7 @@
 //! |M_δ|·R, its pitch *acceleration* by |M_δ| times the travel left to the stops. A step
 //! in θ_ref asks for infinite jerk; fed to a stiff loop it drives the elevator onto its
 //! rate limit, where the rate limit's phase lag can sustain an oscillation
-//! ([`super::design::rate_limit`]). This module replaces the step by the fastest
+//! (the describing function of `design::rate_limit`). This module replaces the step by the fastest
 //! rest-to-rest pitch trajectory within a jerk bound J and an acceleration bound A: the
 //! classical jerk-limited ("S-curve") profile, four jerk phases ±J of length τ_j with,
 //! when A is reached, two constant-acceleration phases of length τ_a between them:

@@ -12,13 +12,10 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::law::{
-    ElevatorSaturation, PitchDesignContext, PitchLaw, PitchLawDesign, PitchLawInputs,
-    PitchPlantDerivatives,
-};
+use super::design::{LinearisedLaw, PitchPlantDerivatives};
+use super::law::{ElevatorSaturation, PitchDesignContext, PitchLawDesign, PitchLawInputs, SECTION};
+use crate::control::{AxisLaw, LinearLaw};
 use crate::parameters::{Bounds, ParameterError};
-use super::design::loop_model::LinearPitchLaw;
-use super::design::LinearisedLaw;
 
 /// PID gains and options (paper Eq. 37; gains as printed in paper §4.2.3).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -84,14 +81,43 @@ impl PitchLawDesign for PidParameters {
         PidController::new(self, context.plant)
     }
 
-    fn linear_law(&self, _plant: PitchPlantDerivatives) -> Option<LinearisedLaw> {
+    fn paper_tuning() -> Self {
+        PidParameters::paper()
+    }
+
+    fn linear_law(&self, plant: PitchPlantDerivatives) -> Option<LinearisedLaw> {
         Some(LinearisedLaw {
-            law: LinearPitchLaw::Pid(*self),
+            law: linear_pid(self, plant),
             speed_key: "proportional_per_s2",
             speed_value: self.proportional_per_s2,
             speed_advice: "smaller gains",
         })
     }
+}
+
+/// The PID in its linear limit about trim, as the design code's [`LinearLaw`]: one
+/// state, the integral z (the other two are placeholders), on the measured attitude,
+/// with the derivative on the (noise-free) pitch rate,
+///
+/// ```text
+/// ż = r − y;  u = (K_P·(r − y) + K_I·z − K_D·q)/M_δ
+/// ```
+pub fn linear_pid(parameters: &PidParameters, plant: PitchPlantDerivatives) -> LinearLaw {
+    let md = plant.dqdot_delevator_per_s2;
+    let (kp, ki, kd) = (
+        parameters.proportional_per_s2,
+        parameters.integral_per_s3,
+        parameters.derivative_per_s,
+    );
+    let mut law = LinearLaw::without_states();
+    law.state_matrix[0][0] = 0.0;
+    law.input_matrix[0][LinearLaw::COMMAND] = 1.0;
+    law.input_matrix[0][LinearLaw::MEASURED_ANGLE] = -1.0;
+    law.output_states[0] = ki / md;
+    law.output_inputs[LinearLaw::COMMAND] = kp / md;
+    law.output_inputs[LinearLaw::MEASURED_ANGLE] = -kp / md;
+    law.output_inputs[LinearLaw::RATE] = -kd / md;
+    law
 }
 
 /// State of the PID pitch controller (paper Eq. 37).
@@ -114,7 +140,7 @@ impl PidController {
         parameters: &PidParameters,
         plant: PitchPlantDerivatives,
     ) -> Result<Self, ParameterError> {
-        parameters.validate(super::PitchControllerParameters::SECTION)?;
+        parameters.validate(SECTION)?;
         plant.validate()?;
         Ok(Self {
             parameters: *parameters,
@@ -185,7 +211,9 @@ impl PidController {
     }
 }
 
-impl PitchLaw for PidController {
+impl AxisLaw for PidController {
+    type Inputs = PitchLawInputs;
+
     fn label(&self) -> &str {
         "PID"
     }
@@ -195,7 +223,7 @@ impl PitchLaw for PidController {
     }
 
     #[inline]
-    fn elevator_command_rad(&self, state: &[f64], inputs: &PitchLawInputs) -> f64 {
+    fn surface_command_rad(&self, state: &[f64], inputs: &PitchLawInputs) -> f64 {
         let state = PidState {
             pitch_error_integral_rad_s: state[0],
         };
@@ -208,6 +236,10 @@ impl PitchLaw for PidController {
             pitch_error_integral_rad_s: state[0],
         };
         rate[0] = PidController::derivative(self, &state, inputs).pitch_error_integral_rad_s;
+    }
+
+    fn linear_law(&self) -> Option<LinearLaw> {
+        Some(linear_pid(&self.parameters, self.plant))
     }
 }
 

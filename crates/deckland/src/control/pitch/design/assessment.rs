@@ -1,17 +1,14 @@
-//! Assessing one O-PD feedback on the reduced linear pitch loop: margins with the
-//! actuator and the computer's delay, the θ/θ_ref lag seen by the outer loop, the sensor
-//! noise at the elevator, and the rate limit's limit cycle.
+//! Assessing any law, given in its linear limit, on the reduced linear pitch loop: margins
+//! with the actuator and the computer's delay, the θ/θ_ref lag seen by the outer loop, the
+//! sensor noise at the elevator, and the rate limit's limit cycle.
 
 use nalgebra::Complex;
 use serde::Serialize;
 
-use super::loop_model::{
-    log_grid, margins_of, LinearActuator, LinearPitchLaw, LoopInput, LoopOutput, Margins,
-    PitchLoopModel,
-};
+use super::loop_model::{log_grid, margins_of, LoopInput, LoopOutput, Margins, PitchLoopModel};
 use super::rate_limit::rate_limit_cycles;
-use super::{PitchDesignRequest, PitchHardware, PitchSensorNoise};
-use crate::control::pitch::observer_pd::{ObserverPdGains, ObserverPdParameters};
+use super::{LinearActuator, PitchDesignRequest, PitchHardware, PitchSensorNoise};
+use crate::control::LinearLaw;
 
 /// How the sensor noise reaches the elevator and the attitude (reduced linear loop).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -30,13 +27,9 @@ pub struct NoiseBudget {
     pub pitch_white_rms_rad: f64,
 }
 
-/// What a candidate feedback achieves on the reduced linear loop.
+/// What a law achieves on the reduced linear loop.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct FeedbackAssessment {
-    /// The O-PD parameters assessed.
-    pub parameters: ObserverPdParameters,
-    /// K_P, K_D from them.
-    pub gains: ObserverPdGains,
+pub struct LoopAssessment {
     /// Margins at the elevator command.
     pub margins: Margins,
     /// Phase lag of θ/θ_ref at the outer loop's crossover (deg, positive lagging).
@@ -51,29 +44,19 @@ pub struct FeedbackAssessment {
     pub limit_cycle_amplitude_rad: f64,
 }
 
-/// Assesses one O-PD feedback on the reduced linear loop (see the module docs).
-pub fn assess_feedback(
+/// Assesses `law` on the reduced linear loop of `hardware` with the sensor `noise`, the
+/// outer loop crossing over at `outer_loop_crossover_radps` (see the module docs).
+pub fn assess_loop(
     hardware: &PitchHardware,
     noise: &PitchSensorNoise,
-    parameters: &ObserverPdParameters,
+    law: &LinearLaw,
     outer_loop_crossover_radps: f64,
-) -> Option<FeedbackAssessment> {
-    let gains = ObserverPdGains::design(
-        parameters.settling_time_s,
-        parameters.damping_ratio,
-        hardware.plant.dqdot_dq_per_s,
-    )
-    .ok()?;
-    let law = LinearPitchLaw::ObserverPd {
-        gains,
-        observer: parameters.observer,
-        feedback: parameters.pitch_feedback,
-    };
+) -> LoopAssessment {
     let actuator = LinearActuator {
         natural_frequency_radps: hardware.actuator.natural_frequency_rad_s,
         damping_ratio: hardware.actuator.damping_ratio,
     };
-    let model = PitchLoopModel::new(hardware.plant, hardware.coupling, actuator, &law);
+    let model = PitchLoopModel::new(hardware.plant, hardware.coupling, actuator, law);
     let delayed =
         |w: f64| model.loop_gain(w) * Complex::from_polar(1.0, -w * hardware.control_delay_s);
     let omegas = log_grid(0.01, 300.0, 800);
@@ -120,9 +103,7 @@ pub fn assess_feedback(
         * model
             .closed_loop(LoopInput::SensorNoise, LoopOutput::Pitch, omega)
             .norm();
-    Some(FeedbackAssessment {
-        parameters: *parameters,
-        gains,
+    LoopAssessment {
         margins,
         outer_loop_lag_deg: lag,
         noise: NoiseBudget {
@@ -135,13 +116,14 @@ pub fn assess_feedback(
         },
         closed_loop_max_real_part: model.closed_loop_max_real_part(),
         limit_cycle_amplitude_rad,
-    })
+    }
 }
 
-/// How far a candidate is from meeting each requirement: (field, achieved, required,
+/// How far an assessed law is from meeting each requirement of `request`, for a rate
+/// limit (rad/s) and a travel to the nearer stop (rad): (field, achieved, required,
 /// shortfall ≥ 0 as a fraction of the requirement).
-pub(super) fn shortfalls(
-    candidate: &FeedbackAssessment,
+pub fn shortfalls(
+    candidate: &LoopAssessment,
     request: &PitchDesignRequest,
     rate_limit_radps: f64,
     travel_rad: f64,

@@ -1,71 +1,34 @@
 //! A reduced linear model of the pitch loop for design: pitch plant, elevator actuator,
-//! the controller (O-PD with its augmented observer in its linear limit, or the PID), and
-//! the pitch-measurement noise (docs/model.md §2.6, §3.3, §4, §5).
+//! the pitch-measurement noise and any law in its linear limit ([`LinearLaw`])
+//! (docs/model.md §2.6, §3.3, §4, §5).
 //!
 //! ```text
 //! plant:     θ̇ = q,  q̇ = M_q·q + M_δ·δ + M_α·α      (M_q = ∂q̇/∂q, M_δ = ∂q̇/∂δe)
 //!            α̇ = Z_α·α + q + Z_δ·δ                 (optional short-period coupling)
 //! actuator:  δ̈ = ω_a²(u − δ) − 2ζ_a·ω_a·δ̇          (second order, no limits)
 //! sensor:    y = θ + n
-//! O-PD:      e = x1 − y;  ẋ1 = x2 − β1·e;  ẋ2 = x3 + M_q·x2 + M_δ·δ − β2·e;  ẋ3 = −β3·e
-//!            u = (K_P·(r − θ_fb) − K_D·x2 − x3)/M_δ,  θ_fb = y or x1
-//!            β1 = k3/ε, β2 = k2/ε², β3 = k1/ε³      (α1 → 1: the linear observer)
-//! PID:       ż = r − y;  u = (K_P·(r − y) + K_I·z − K_D·q)/M_δ
+//! law:       ẋ_c = A_c·x_c + B_c·[r, y, q, δ],  u = C_c·x_c + D_c·[r, y, q, δ]
 //! ```
 //!
-//! The angle of attack is optional ([`AngleOfAttackCoupling`]). Without it the observer's
-//! model is exact, its estimates follow the plant whatever ε, and the loop gain is the
-//! ideal PD's; with it the observer must estimate M_α·Δα as a disturbance, which is what
-//! makes ε matter for the margins (at the approach trim M_α = −0.26 s⁻², Z_α = −0.53 s⁻¹).
-//! The model answers the questions the design needs quickly and in closed form —
-//! loop gain cut at the elevator command (the cut of `analysis::cascade_margins`),
-//! closed-loop transfer functions from the command and from the sensor noise — and the
-//! full nonlinear linearisation stays the check (docs/stabilator-design.md compares them).
-//! All quantities are deviations from trim, in rad, rad/s, s.
+//! The laws give their own A_c, B_c, C_c, D_c: the O-PD with its augmented observer in its
+//! linear limit (`observer_pd::linear_observer_pd`), the PID (`pid::linear_pid`), a
+//! user's law through [`crate::control::AxisLaw::linear_law`].
+//!
+//! The angle of attack is optional ([`AngleOfAttackCoupling`]). Without it an observer's
+//! model is exact, its estimates follow the plant whatever ε, and the O-PD's loop gain is
+//! the ideal PD's; with it the observer must estimate M_α·Δα as a disturbance, which is
+//! what makes ε matter for the margins (at the approach trim M_α = −0.26 s⁻²,
+//! Z_α = −0.53 s⁻¹). The model answers the questions the design needs quickly and in
+//! closed form — loop gain cut at the elevator command (the cut of
+//! `analysis::cascade_margins`), closed-loop transfer functions from the command and from
+//! the sensor noise — and the full nonlinear linearisation stays the check
+//! (docs/stabilator-design.md compares them). All quantities are deviations from trim, in
+//! rad, rad/s, s.
 
 use nalgebra::{Complex, SMatrix, SVector};
 
-use crate::control::pitch::observer_pd::{ObserverPdGains, PitchFeedback};
-use crate::control::pitch::pid::PidParameters;
-use crate::control::pitch::PitchPlantDerivatives;
-use crate::estimation::ObserverParameters;
-
-/// Linear second-order elevator actuator (docs/model.md §2.6) without its limits.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LinearActuator {
-    /// Natural frequency ω_a (rad/s).
-    pub natural_frequency_radps: f64,
-    /// Damping ratio ζ_a (–).
-    pub damping_ratio: f64,
-}
-
-/// The short-period coupling through the angle of attack, from the linearisation at trim
-/// (`deckland linearize`: the α̇ and q̇ rows).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct AngleOfAttackCoupling {
-    /// ∂α̇/∂α = Z_α (1/s), negative (lift curve slope).
-    pub dalphadot_dalpha_per_s: f64,
-    /// ∂α̇/∂δe = Z_δ (1/s).
-    pub dalphadot_delevator_per_s: f64,
-    /// ∂q̇/∂α = M_α (1/s²), negative for a statically stable airframe.
-    pub dqdot_dalpha_per_s2: f64,
-}
-
-/// The pitch control law of the reduced model.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum LinearPitchLaw {
-    /// O-PD with the observer in its linear limit (α1 → 1, same k1, k2, k3, ε).
-    ObserverPd {
-        /// K_P, K_D.
-        gains: ObserverPdGains,
-        /// k1, k2, k3, ε (α1 is ignored).
-        observer: ObserverParameters,
-        /// Which attitude the proportional term uses.
-        feedback: PitchFeedback,
-    },
-    /// PID on the measured attitude, derivative on the (noise-free) pitch rate.
-    Pid(PidParameters),
-}
+use super::plant::{AngleOfAttackCoupling, LinearActuator, PitchPlantDerivatives};
+use crate::control::LinearLaw;
 
 /// Which signal a closed-loop transfer function ends at.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -115,6 +78,8 @@ pub struct PitchLoopModel {
 }
 
 const N: usize = 8;
+/// Index of the law's first state.
+const CONTROLLER: usize = 4;
 type Matrix = SMatrix<f64, N, N>;
 type Vector = SVector<f64, N>;
 
@@ -124,7 +89,7 @@ impl PitchLoopModel {
         plant: PitchPlantDerivatives,
         coupling: Option<AngleOfAttackCoupling>,
         actuator: LinearActuator,
-        law: &LinearPitchLaw,
+        law: &LinearLaw,
     ) -> Self {
         let (mq, md) = (plant.dqdot_dq_per_s, plant.dqdot_delevator_per_s2);
         let (wa, za) = (actuator.natural_frequency_radps, actuator.damping_ratio);
@@ -132,7 +97,6 @@ impl PitchLoopModel {
         let mut b = Vector::zeros();
         let mut g = SMatrix::<f64, N, 2>::zeros();
         let mut c = Vector::zeros();
-        let mut h = [0.0; 2];
         a[(0, 1)] = 1.0;
         a[(1, 1)] = mq;
         a[(1, 2)] = md;
@@ -150,54 +114,29 @@ impl PitchLoopModel {
             // A decoupled, stable placeholder: α never reaches the pitch dynamics.
             None => a[(7, 7)] = -1.0,
         }
-        match *law {
-            LinearPitchLaw::ObserverPd {
-                gains,
-                observer,
-                feedback,
-            } => {
-                let eps = observer.epsilon;
-                let betas = [
-                    observer.k3 / eps,
-                    observer.k2 / (eps * eps),
-                    observer.k1 / (eps * eps * eps),
-                ];
-                // Each observer state sees −β·(x1 − θ − n).
-                for (row, beta) in (4..7).zip(betas) {
-                    a[(row, 4)] -= beta;
-                    a[(row, 0)] += beta;
-                    g[(row, 1)] += beta;
-                }
-                a[(4, 5)] += 1.0;
-                a[(5, 6)] += 1.0;
-                a[(5, 5)] += mq;
-                a[(5, 2)] += md;
-                let (kp, kd) = (gains.proportional_per_s2, gains.derivative_per_s);
-                match feedback {
-                    PitchFeedback::Measured => {
-                        c[0] = -kp / md;
-                        h[1] = -kp / md;
-                    }
-                    PitchFeedback::ObserverEstimate => c[4] = -kp / md,
-                }
-                c[5] = -kd / md;
-                c[6] = -1.0 / md;
-                h[0] = kp / md;
+        // The law's states are rows and columns 4, 5, 6; it sees the command r and the
+        // sensor error n through G and H, θ (in y = θ + n), q and δ through A and C.
+        for i in 0..LinearLaw::MAX_STATES {
+            let row = CONTROLLER + i;
+            for j in 0..LinearLaw::MAX_STATES {
+                a[(row, CONTROLLER + j)] = law.state_matrix[i][j];
             }
-            LinearPitchLaw::Pid(p) => {
-                // c1 = ∫(r − θ − n); c2, c3 unused (stable placeholders).
-                a[(4, 0)] = -1.0;
-                a[(5, 5)] = -1.0;
-                a[(6, 6)] = -1.0;
-                g[(4, 0)] = 1.0;
-                g[(4, 1)] = -1.0;
-                let (kp, ki, kd) = (p.proportional_per_s2, p.integral_per_s3, p.derivative_per_s);
-                c[0] = -kp / md;
-                c[1] = -kd / md;
-                c[4] = ki / md;
-                h = [kp / md, -kp / md];
-            }
+            let input = law.input_matrix[i];
+            g[(row, 0)] = input[LinearLaw::COMMAND];
+            a[(row, 0)] = input[LinearLaw::MEASURED_ANGLE];
+            g[(row, 1)] = input[LinearLaw::MEASURED_ANGLE];
+            a[(row, 1)] = input[LinearLaw::RATE];
+            a[(row, 2)] = input[LinearLaw::SURFACE];
+            c[row] = law.output_states[i];
         }
+        let direct = law.output_inputs;
+        let h = [
+            direct[LinearLaw::COMMAND],
+            direct[LinearLaw::MEASURED_ANGLE],
+        ];
+        c[0] = direct[LinearLaw::MEASURED_ANGLE];
+        c[1] = direct[LinearLaw::RATE];
+        c[2] = direct[LinearLaw::SURFACE];
         let closed = a + b * c.transpose();
         Self {
             a,
@@ -371,55 +310,27 @@ mod tests {
         damping_ratio: 0.509,
     };
 
-    /// With a very fast observer the O-PD tends to its ideal form: L(s) = (K_P + K_D s)·
-    /// A(s)/(s(s − M_q)), A the actuator. At ω = 10 rad/s with K_P = 16, K_D = 7.81:
-    /// hand-computed L = (16 + 78.1j)·A(10j)/(10j·(10j + 0.1891)).
+    /// A law without states, the ideal PD u = (K_P·(r − y) − K_D·q)/M_δ, gives
+    /// L(s) = (K_P + K_D s)·A(s)/(s(s − M_q)), A the actuator. At ω = 10 rad/s with
+    /// K_P = 16, K_D = 7.81: L = (16 + 78.1j)·A(10j)/(10j·(10j + 0.1891)), by hand.
     #[test]
-    fn fast_observer_gives_the_ideal_pd_loop() {
-        let gains = ObserverPdGains::design(1.0, 1.0, PLANT.dqdot_dq_per_s).expect("valid");
-        let law = LinearPitchLaw::ObserverPd {
-            gains,
-            observer: ObserverParameters {
-                epsilon: 0.0005,
-                ..ObserverParameters::default()
-            },
-            feedback: PitchFeedback::Measured,
-        };
+    fn a_law_given_as_data_closes_the_loop_it_describes() {
+        let (kp, kd, md) = (16.0, 7.81, PLANT.dqdot_delevator_per_s2);
+        let mut law = LinearLaw::without_states();
+        law.output_inputs = [kp / md, -kp / md, -kd / md, 0.0];
         let model = PitchLoopModel::new(PLANT, None, ACTUATOR, &law);
         let s = Complex::new(0.0, 10.0);
         let wa2 = 30.74 * 30.74;
         let actuator = wa2 / (s * s + 2.0 * 0.509 * 30.74 * s + wa2);
-        let expected = (gains.proportional_per_s2 + gains.derivative_per_s * s) * actuator
-            / (s * (s + 0.1891));
+        let expected = (kp + kd * s) * actuator / (s * (s + 0.1891));
         let got = model.loop_gain(10.0);
         assert!(
-            (got - expected).norm() < 2e-3 * expected.norm(),
+            (got - expected).norm() < 1e-9 * expected.norm(),
             "{got} vs {expected}"
         );
-    }
-
-    /// Command to pitch at low frequency is 1 (no steady error) for both laws, and the
-    /// closed loop is stable.
-    #[test]
-    fn both_laws_track_slow_commands() {
-        let gains = ObserverPdGains::design(1.0, 1.0, PLANT.dqdot_dq_per_s).expect("valid");
-        let laws = [
-            LinearPitchLaw::ObserverPd {
-                gains,
-                observer: ObserverParameters {
-                    epsilon: 0.1,
-                    ..ObserverParameters::default()
-                },
-                feedback: PitchFeedback::ObserverEstimate,
-            },
-            LinearPitchLaw::Pid(PidParameters::default()),
-        ];
-        for law in laws {
-            let model = PitchLoopModel::new(PLANT, None, ACTUATOR, &law);
-            assert!(model.closed_loop_max_real_part() < 0.0, "{law:?}");
-            let t = model.closed_loop(LoopInput::Command, LoopOutput::Pitch, 1e-3);
-            assert!((t - 1.0).norm() < 1e-2, "{law:?}: {t}");
-        }
+        assert!(model.closed_loop_max_real_part() < 0.0);
+        let t = model.closed_loop(LoopInput::Command, LoopOutput::Pitch, 1e-3);
+        assert!((t - 1.0).norm() < 1e-2, "{t}");
     }
 
     /// White noise straight to the output (H = 1 at all frequencies is not available, so

@@ -1,62 +1,54 @@
-//! O-PD design for the real stabilator: gains, observer bandwidth and command shaping
-//! chosen from the elevator's rate and travel, the sensor noise and the loop margins with
-//! the actuator in the loop (docs/stabilator-design.md; docs/model.md §2.6, §3.3, §4–5).
+//! The design code of a pitch loop, which works for any law that describes itself in its
+//! linear limit ([`LinearLaw`]) and never names a concrete law (docs/stabilator-design.md;
+//! docs/model.md §2.6, §3.3, §4–5):
 //!
-//! The paper's rule (Eq. 31–34) picks K_P, K_D from a settling time alone and ignores the
-//! elevator. Here the structure stays the paper's — augmented observer, PD on the
-//! attitude error, cancellation of the estimated disturbance (Eq. 30–36) — and three
-//! things are designed for the hardware:
+//! - [`loop_model`]: the reduced linear loop — plant, actuator, sensor noise and the law's
+//!   [`LinearLaw`] — with its loop gain at the elevator command and its closed-loop
+//!   transfer functions;
+//! - [`assess_loop`]: a law's margins with the actuator and the computer's delay, the
+//!   θ/θ_ref lag seen by the outer loop, the sensor noise at the elevator and the rate
+//!   limit's limit cycle ([`rate_limit`], describing function), and [`shortfalls`], how far
+//!   that is from a [`PitchDesignRequest`];
+//! - [`design_command`]: the jerk-limited command the elevator's rate and travel allow
+//!   ([`JerkLimitedStep`] with the feed-forward of
+//!   [`super::command_shaping::reference_equivalent_control`]). The feed-forward elevator
+//!   δ_ff = (q̇_r − M_q·q_r)/M_δ may use a fraction η of the rate limit R and a fraction κ
+//!   of the travel to the nearer stop:
+//!   A = κ·|M_δ|·min(δe* − δ_min, δ_max − δe*),  J = η·R·|M_δ| − |M_q|·A.
+//!   **Criterion** (the one a request can fail): the command settling time of a design
+//!   step Δθ is the trajectory's duration plus the actuator's lag 2ζ_a/ω_a; a requested
+//!   settling time below it is refused, naming the rate limit (when the jerk bound sets
+//!   the duration) or the stop (when the acceleration bound does);
+//! - [`check_pitch_tuning`]: setup's refusal of a tuning the hardware cannot fly.
 //!
-//! 1. **Command shaping.** A θ_ref step is flown as the jerk-limited trajectory of
-//!    [`JerkLimitedStep`] with the O-PD's feed-forward
-//!    ([`super::command_shaping::reference_equivalent_control`]). Its jerk and
-//!    acceleration bounds come from the elevator: the feed-forward elevator
-//!    δ_ff = (q̇_r − M_q·q_r)/M_δ may use a fraction η of the rate limit R and a fraction κ
-//!    of the travel to the nearer stop:
-//!    A = κ·|M_δ|·min(δe* − δ_min, δ_max − δe*),  J = η·R·|M_δ| − |M_q|·A.
-//!    **Criterion** (the one a request can fail): the command settling time of a design
-//!    step Δθ is the trajectory's duration plus the actuator's lag 2ζ_a/ω_a; a requested
-//!    settling time below it is refused, naming the rate limit (when the jerk bound sets
-//!    the duration) or the stop (when the acceleration bound does).
-//! 2. **Feedback.** The error dynamics' settling time T_2% (ζ = 1), the observer's ε and
-//!    the attitude fed back (measured or estimated) are searched on a grid; a candidate
-//!    is admissible when, on the reduced linear loop with the actuator
-//!    ([`loop_model::PitchLoopModel`]), the phase and gain margins at the elevator command meet their
-//!    targets, the closed loop θ/θ_ref lags the outer (sink-rate) loop's crossover by no
-//!    more than the allowed phase, and the elevator rate driven by the sensor noise (its
-//!    white part and its sinusoid) stays within a fraction of the rate limit, and the
-//!    describing function of the rate limit ([`rate_limit`])
-//!    predicts no limit cycle below a multiple of the travel to the nearer stop (the
-//!    smallest such cycle is the excitation threshold of a rate-limit oscillation; the
-//!    default multiple 3 separates the gains that diverged in adverse approaches from
-//!    those that did not, docs/stabilator-design.md). Among the admissible candidates
-//!    the fastest error dynamics (smallest T_2%) win, then the least noise-driven
-//!    elevator rate.
-//! 3. **Refusal.** When no candidate is admissible the error names the requirement that
-//!    failed for the candidate closest to meeting all of them.
+//! A law's own design procedure sits beside the law and calls these: the O-PD's search
+//! over its settling time, ε and fed-back attitude is
+//! `observer_pd::design_observer_pd`. The plant, the actuator and the sensor are
+//! named for the pitch axis; a roll or yaw loop has the same structure (angle, rate,
+//! surface) with its own derivatives.
 
 use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
+#[cfg(doc)]
 use super::command_shaping::JerkLimitedStep;
-use super::observer_pd::{ObserverPdParameters, PitchFeedback};
-use super::PitchPlantDerivatives;
 use crate::aircraft::ElevatorActuatorParameters;
+pub use crate::control::LinearLaw;
 use crate::estimation::ObserverParameters;
 use crate::sensors::PitchNoiseParameters;
 
 mod assessment;
 mod command;
 pub mod loop_model;
+mod plant;
 pub mod rate_limit;
 #[cfg(test)]
 mod tests;
 
-use assessment::shortfalls;
-pub use assessment::{assess_feedback, FeedbackAssessment, NoiseBudget};
+pub use assessment::{assess_loop, shortfalls, LoopAssessment, NoiseBudget};
 pub use command::{command_bounds, design_command, nearer_stop_travel_rad};
 use loop_model::log_grid;
-pub use loop_model::{AngleOfAttackCoupling, LinearPitchLaw};
+pub use plant::{AngleOfAttackCoupling, LinearActuator, PitchPlantDerivatives};
 
 /// The hardware the pitch loop flies: elevator actuator (with its rate limit and stops),
 /// trim elevator and the pitch-plant derivatives at trim.
@@ -156,17 +148,6 @@ impl Default for PitchDesignRequest {
     }
 }
 
-/// The designed pitch loop.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PitchDesign {
-    /// The feedback chosen, with its assessment.
-    pub feedback: FeedbackAssessment,
-    /// The design step's shaped trajectory (jerk, acceleration bounds inside).
-    pub command: JerkLimitedStep,
-    /// Its settling time: trajectory duration plus the actuator's lag 2ζ_a/ω_a (s).
-    pub command_settling_time_s: f64,
-}
-
 /// Why a request cannot be met by the hardware.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum PitchDesignError {
@@ -224,7 +205,7 @@ pub enum PitchDesignError {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LinearisedLaw {
     /// The law on the reduced pitch loop.
-    pub law: LinearPitchLaw,
+    pub law: LinearLaw,
     /// The key in `control.pitch` of the parameter that sets the loop's speed.
     pub speed_key: &'static str,
     /// Its value.
@@ -275,10 +256,10 @@ fn check_grid() -> &'static [f64] {
 /// with the same trim pay for it once (about 0.3 ms otherwise).
 pub fn check_pitch_tuning(
     hardware: &PitchHardware,
-    law: &LinearPitchLaw,
+    law: &LinearLaw,
     min_travel_ratio: f64,
 ) -> Result<(), PitchTuningProblem> {
-    type Key = (PitchHardware, LinearPitchLaw, f64);
+    type Key = (PitchHardware, LinearLaw, f64);
     type Answer = Result<(), PitchTuningProblem>;
     thread_local! {
         static LAST: std::cell::Cell<Option<(Key, Answer)>> = const { std::cell::Cell::new(None) };
@@ -289,7 +270,7 @@ pub fn check_pitch_tuning(
             return answer;
         }
     }
-    let actuator = loop_model::LinearActuator {
+    let actuator = LinearActuator {
         natural_frequency_radps: hardware.actuator.natural_frequency_rad_s,
         damping_ratio: hardware.actuator.damping_ratio,
     };
@@ -333,14 +314,8 @@ pub fn check_pitch_tuning(
     answer
 }
 
-/// Error-dynamics settling times T_2% searched (s).
-const SETTLING_TIMES_S: [f64; 14] = [
-    0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.2, 1.4, 1.6, 1.8, 2.0, 2.2, 2.5, 3.0,
-];
-/// Observer bandwidth parameters ε searched.
-const EPSILONS: [f64; 7] = [0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.5];
-
-pub(super) fn check(
+/// `Ok` when `value` is finite and `ok`; otherwise the error naming `field`.
+pub(crate) fn check(
     field: &'static str,
     value: f64,
     ok: bool,
@@ -357,12 +332,12 @@ pub(super) fn check(
     }
 }
 
-/// Designs the O-PD for `hardware` and `noise` to meet `request` (module docs).
-pub fn design_observer_pd(
+/// Checks the hardware's plant and every field of `request` that a design reads, naming
+/// the first one out of its range.
+pub fn check_request(
     hardware: &PitchHardware,
-    noise: &PitchSensorNoise,
     request: &PitchDesignRequest,
-) -> Result<PitchDesign, PitchDesignError> {
+) -> Result<(), PitchDesignError> {
     hardware
         .plant
         .validate()
@@ -404,71 +379,5 @@ pub fn design_observer_pd(
     if let Some(t) = request.command_settling_time_s {
         check("command_settling_time_s", t, t > 0.0, "> 0")?;
     }
-    let (command, command_settling_time_s) = design_command(hardware, request)?;
-    let rate_limit_radps = hardware
-        .actuator
-        .rate_limit_degps
-        .map_or(f64::INFINITY, f64::to_radians);
-    let travel_rad = nearer_stop_travel_rad(hardware);
-    let mut best: Option<(f64, FeedbackAssessment)> = None;
-    let mut closest: Option<(f64, FeedbackAssessment)> = None;
-    for settling_time_s in SETTLING_TIMES_S {
-        for epsilon in EPSILONS {
-            for pitch_feedback in [PitchFeedback::ObserverEstimate, PitchFeedback::Measured] {
-                let parameters = ObserverPdParameters {
-                    settling_time_s,
-                    damping_ratio: 1.0,
-                    pitch_feedback,
-                    observer: ObserverParameters {
-                        epsilon,
-                        ..request.observer
-                    },
-                };
-                let Some(candidate) = assess_feedback(
-                    hardware,
-                    noise,
-                    &parameters,
-                    request.outer_loop_crossover_radps,
-                ) else {
-                    continue;
-                };
-                if candidate.closed_loop_max_real_part >= 0.0 {
-                    continue;
-                }
-                let gaps = shortfalls(&candidate, request, rate_limit_radps, travel_rad);
-                let total: f64 = gaps.iter().map(|g| g.3).sum();
-                if total == 0.0 {
-                    // Fastest first (T_2% dominates), then quietest.
-                    let score = settling_time_s * 1e3 + candidate.noise.elevator_rate_rms_radps;
-                    if best.is_none_or(|(s, _)| score < s) {
-                        best = Some((score, candidate));
-                    }
-                } else if closest.is_none_or(|(s, _)| total < s) {
-                    closest = Some((total, candidate));
-                }
-            }
-        }
-    }
-    if let Some((_, feedback)) = best {
-        return Ok(PitchDesign {
-            feedback,
-            command,
-            command_settling_time_s,
-        });
-    }
-    let Some((_, candidate)) = closest else {
-        return Err(PitchDesignError::NoFeasibleFeedback {
-            limiting: "closed-loop stability",
-            best: f64::NAN,
-            required: 0.0,
-        });
-    };
-    let worst = shortfalls(&candidate, request, rate_limit_radps, travel_rad)
-        .into_iter()
-        .fold(("", 0.0, 0.0, -1.0), |w, g| if g.3 > w.3 { g } else { w });
-    Err(PitchDesignError::NoFeasibleFeedback {
-        limiting: worst.0,
-        best: worst.1,
-        required: worst.2,
-    })
+    Ok(())
 }

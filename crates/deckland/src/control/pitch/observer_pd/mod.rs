@@ -13,13 +13,17 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::law::{
-    PitchDesignContext, PitchLaw, PitchLawDesign, PitchLawInputs, PitchPlantDerivatives,
-};
+use super::design::{LinearisedLaw, PitchPlantDerivatives};
+use super::law::{PitchDesignContext, PitchLawDesign, PitchLawInputs, SECTION};
+use crate::control::{AxisLaw, LinearLaw};
 use crate::estimation::{AugmentedObserver, ObserverParameters, ObserverState};
-use super::design::loop_model::LinearPitchLaw;
-use super::design::LinearisedLaw;
 use crate::parameters::{Bounds, ParameterError};
+
+mod design;
+
+pub use design::{
+    assess_feedback, design_observer_pd, linear_observer_pd, FeedbackAssessment, PitchDesign,
+};
 
 /// Which pitch attitude the O-PD proportional term compares with θ_ref.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -63,7 +67,7 @@ pub struct ObserverPdParameters {
 impl Default for ObserverPdParameters {
     /// The design for the realistic stabilator (40 °/s; docs/pitch-step.md): T_2% = 1.6 s,
     /// ζ = 1, the observer's attitude fed back, observer ε = 0.2
-    /// ([`crate::control::pitch::design::design_observer_pd`] finds it admissible).
+    /// ([`design_observer_pd`] finds it admissible).
     fn default() -> Self {
         Self {
             settling_time_s: 1.6,
@@ -113,16 +117,16 @@ impl PitchLawDesign for ObserverPdParameters {
         ObserverPdController::new(self, context.plant)
     }
 
+    fn paper_tuning() -> Self {
+        ObserverPdParameters::paper()
+    }
+
     fn linear_law(&self, plant: PitchPlantDerivatives) -> Option<LinearisedLaw> {
         let gains =
             ObserverPdGains::design(self.settling_time_s, self.damping_ratio, plant.dqdot_dq_per_s)
                 .ok()?;
         Some(LinearisedLaw {
-            law: LinearPitchLaw::ObserverPd {
-                gains,
-                observer: self.observer,
-                feedback: self.pitch_feedback,
-            },
+            law: linear_observer_pd(&gains, &self.observer, self.pitch_feedback, plant),
             speed_key: "settling_time_s",
             speed_value: self.settling_time_s,
             speed_advice: "a longer settling_time_s",
@@ -194,7 +198,7 @@ impl ObserverPdController {
         parameters: &ObserverPdParameters,
         plant: PitchPlantDerivatives,
     ) -> Result<Self, ParameterError> {
-        parameters.validate(super::PitchControllerParameters::SECTION)?;
+        parameters.validate(SECTION)?;
         plant.validate()?;
         let gains = ObserverPdGains::design(
             parameters.settling_time_s,
@@ -299,7 +303,9 @@ fn observer_state(state: &[f64]) -> ObserverState {
     }
 }
 
-impl PitchLaw for ObserverPdController {
+impl AxisLaw for ObserverPdController {
+    type Inputs = PitchLawInputs;
+
     fn label(&self) -> &str {
         "O-PD"
     }
@@ -318,7 +324,7 @@ impl PitchLaw for ObserverPdController {
     }
 
     #[inline]
-    fn elevator_command_rad(&self, state: &[f64], inputs: &PitchLawInputs) -> f64 {
+    fn surface_command_rad(&self, state: &[f64], inputs: &PitchLawInputs) -> f64 {
         ObserverPdController::elevator_command_rad(self, &observer_state(state), inputs)
     }
 
@@ -330,6 +336,15 @@ impl PitchLaw for ObserverPdController {
 
     fn disturbance_estimate_radps2(&self, state: &[f64]) -> Option<f64> {
         Some(state[2])
+    }
+
+    fn linear_law(&self) -> Option<LinearLaw> {
+        Some(linear_observer_pd(
+            &self.gains,
+            self.observer.parameters(),
+            self.pitch_feedback,
+            self.plant,
+        ))
     }
 }
 
