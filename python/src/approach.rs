@@ -31,8 +31,16 @@ use crate::stepping::{parse_action, python_law_label, EventRecorder, Stepper};
 ///   law tracks θ.
 /// - `{"elevator_rad": δe, "thrust_n": T}`: replaces every loop (elevator command in rad,
 ///   positive trailing edge down; total thrust command of both engines in N). Either key
-///   alone replaces only its loop. The actuator and engines still apply their limits
-///   and dynamics.
+///   alone replaces only its loop. The actuator and engines still apply their
+///   dynamics.
+///
+/// Each key has a physical range (`action_ranges`): `pitch_command_rad` within ±π/2
+/// (the pitch attitude's range), `elevator_rad` within the stabilator's travel
+/// (`aircraft.elevator_actuator`, −25° to +10° by default), `thrust_n` from 0 to the
+/// maximum thrust of both engines. A value beyond its range, or not finite, raises
+/// `ValueError` naming the key, the value and the range.
+/// The built-in law's `elevator_command_rad` can lie beyond the travel (the actuator
+/// saturates it): limit it to the range before sending it back as an action.
 ///
 /// A replaced loop keeps running in the background on the aircraft's response, so
 /// control can be handed back at any interval.
@@ -184,7 +192,7 @@ impl Approach {
         py: Python<'py>,
         action: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyDict>> {
-        let mut overrides = parse_action(action)?;
+        let mut overrides = parse_action(action, self.stepper.ranges())?;
         if let Some(law) = &self.pitch_law {
             overrides = self.stepper.law_overrides(law.bind(py), Some(overrides))?;
         }
@@ -276,6 +284,18 @@ impl Approach {
             "max_thrust_n",
             system.aircraft().engines().max_total_thrust_n(),
         )?;
+        Ok(dict)
+    }
+
+    /// The physical range of each action key, `{key: (low, high)}`: `pitch_command_rad`
+    /// the pitch attitude's range (±π/2 rad), `elevator_rad` the stabilator's travel
+    /// (rad), `thrust_n` from none to the maximum total thrust of both engines (N).
+    #[getter]
+    fn action_ranges<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let dict = PyDict::new(py);
+        for (key, range, ..) in self.stepper.ranges().described() {
+            dict.set_item(key, range)?;
+        }
         Ok(dict)
     }
 

@@ -5,7 +5,7 @@
 //! - [`scenario`]: `Scenario`, read and set by dotted path, checked on every change;
 //! - [`analysis`]: `trim` and `linearize`;
 //! - [`stepping`]: an approach advanced one control interval at a time by the library's
-//!   step, and a Python callable as the pitch law;
+//!   step, the actions' ranges, and a Python callable as the pitch law;
 //! - [`flight`]: `fly`, one recorded approach; [`outputs`]: its summary, time series
 //!   and events as Python objects;
 //! - [`approach`]: `Approach`, the stepping API;

@@ -1,6 +1,6 @@
 //! An approach flown one control interval at a time, by the library's own step
-//! ([`Simulation::step_with`]); the actions it takes; and a Python callable as the
-//! pitch law.
+//! ([`Simulation::step_with`]); the actions it takes, checked against their physical
+//! ranges; and a Python callable as the pitch law.
 //!
 //! One control interval is a whole number of integration steps; the action's commands
 //! replace the loops' through [`Overrides`] and are held over the interval. With no
@@ -8,6 +8,8 @@
 //! end with no action ends with the same summary, bit for bit. What the next step starts
 //! from is the library's [`Simulation::signals`], with the inputs it will hold drawn
 //! early by [`Simulation::next_step_inputs`] (the same draws in the same order).
+
+use std::f64::consts::FRAC_PI_2;
 
 use deckland::scenario::Scenario as RustScenario;
 use deckland::simulation::{EndReason, Event, Overrides, Recorder, Signals, Simulation, Stop};
@@ -21,6 +23,11 @@ use crate::errors::{argument_error, value_error};
 /// The longest control interval (s).
 const MAX_CONTROL_INTERVAL_S: f64 = 10.0;
 
+/// The pitch command's envelope (rad): the range of the pitch attitude θ, ±90°. The
+/// sink-rate loop, the wake feed-forward and the wave-off command within it; beyond it a
+/// command is no pitch attitude (and a law fed 10³⁰⁸ rad overflows to ∞).
+pub(crate) const PITCH_COMMAND_RANGE_RAD: (f64, f64) = (-FRAC_PI_2, FRAC_PI_2);
+
 /// Keeps the events of a run (no signals).
 #[derive(Debug, Default)]
 pub(crate) struct EventRecorder {
@@ -33,9 +40,88 @@ impl Recorder for EventRecorder {
     }
 }
 
+/// The physical range of each action key, from the aircraft flown.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct ActionRanges {
+    /// The pitch command's envelope (rad): [`PITCH_COMMAND_RANGE_RAD`].
+    pub pitch_command_rad: (f64, f64),
+    /// The stabilator's travel (rad): its actuator's deflection limits.
+    pub elevator_rad: (f64, f64),
+    /// The total thrust command (N): from none to the maximum of both engines.
+    pub thrust_n: (f64, f64),
+}
+
+impl ActionRanges {
+    /// The ranges of the aircraft `simulation` flies.
+    fn of(simulation: &Simulation) -> Self {
+        let aircraft = simulation.system().aircraft();
+        let actuator = aircraft.actuator();
+        Self {
+            pitch_command_rad: PITCH_COMMAND_RANGE_RAD,
+            elevator_rad: (actuator.min_rad(), actuator.max_rad()),
+            thrust_n: (0.0, aircraft.engines().max_total_thrust_n()),
+        }
+    }
+
+    /// Each key with its range, unit and what the range is, in the order of the keys.
+    pub fn described(&self) -> [(&'static str, (f64, f64), &'static str, &'static str); 3] {
+        [
+            (
+                "pitch_command_rad",
+                self.pitch_command_rad,
+                "rad",
+                "the pitch attitude's range, ±90°",
+            ),
+            (
+                "elevator_rad",
+                self.elevator_rad,
+                "rad",
+                "the stabilator's travel, aircraft.elevator_actuator.min_deflection_deg \
+                 to max_deflection_deg",
+            ),
+            (
+                "thrust_n",
+                self.thrust_n,
+                "N",
+                "no thrust to the maximum of both engines, \
+                 2 × aircraft.engines.max_thrust_per_engine_n",
+            ),
+        ]
+    }
+
+    /// `value` of action `key` if within the key's range, else `ValueError` naming the
+    /// key, the value and the range (a non-finite value is never within it).
+    fn check(&self, key: &str, value: f64) -> PyResult<f64> {
+        let Some((_, (low, high), unit, what)) =
+            self.described().into_iter().find(|(name, ..)| *name == key)
+        else {
+            return Err(unknown_action(key));
+        };
+        if (low..=high).contains(&value) {
+            return Ok(value);
+        }
+        Err(argument_error(
+            &format!("action {key}"),
+            format_args!("{value:?}"),
+            format_args!("a number in [{low}, {high}] {unit} ({what})"),
+        ))
+    }
+}
+
+/// The error of an action key that is none of the commands.
+fn unknown_action(key: &str) -> PyErr {
+    value_error(format!(
+        "action `{key}` is not a command: expected pitch_command_rad, elevator_rad or thrust_n"
+    ))
+}
+
 /// The action's commands: `None`, or a dict with any of `pitch_command_rad`,
-/// `elevator_rad` and `thrust_n` (a value of None leaves that loop in charge).
-pub(crate) fn parse_action(action: Option<&Bound<'_, PyAny>>) -> PyResult<Overrides> {
+/// `elevator_rad` and `thrust_n` (a value of None leaves that loop in charge), each
+/// within its range of `ranges`.
+pub(crate) fn parse_action(
+    action: Option<&Bound<'_, PyAny>>,
+    ranges: &ActionRanges,
+) -> PyResult<Overrides> {
     let mut overrides = Overrides::default();
     let Some(action) = action.filter(|a| !a.is_none()) else {
         return Ok(overrides);
@@ -56,12 +142,7 @@ pub(crate) fn parse_action(action: Option<&Bound<'_, PyAny>>) -> PyResult<Overri
             "pitch_command_rad" => &mut overrides.pitch_command_rad,
             "elevator_rad" => &mut overrides.elevator_rad,
             "thrust_n" => &mut overrides.thrust_n,
-            other => {
-                return Err(value_error(format!(
-                    "action `{other}` is not a command: expected pitch_command_rad, \
-                     elevator_rad or thrust_n"
-                )))
-            }
+            other => return Err(unknown_action(other)),
         };
         if value.is_none() {
             continue;
@@ -69,14 +150,7 @@ pub(crate) fn parse_action(action: Option<&Bound<'_, PyAny>>) -> PyResult<Overri
         let number: f64 = value.extract().map_err(|_| {
             PyTypeError::new_err(format!("action `{key}` must be a float, got {value}"))
         })?;
-        if !number.is_finite() {
-            return Err(argument_error(
-                &format!("action {key}"),
-                format_args!("{number:?}"),
-                "a finite number",
-            ));
-        }
-        *slot = Some(number);
+        *slot = Some(ranges.check(key, number)?);
     }
     Ok(overrides)
 }
@@ -101,6 +175,7 @@ pub(crate) struct Stepper {
     end: Option<EndReason>,
     /// What the next step starts from, once looked at.
     look: Option<Look>,
+    ranges: ActionRanges,
 }
 
 /// The number of integration steps of `control_interval_s`, which must be a whole
@@ -134,6 +209,7 @@ impl Stepper {
         let simulation = Simulation::new(scenario)
             .map_err(|error| value_error(format!("cannot set up the approach: {error}")))?;
         Ok(Self {
+            ranges: ActionRanges::of(&simulation),
             simulation,
             steps_per_interval,
             steps: 0,
@@ -145,6 +221,11 @@ impl Stepper {
     /// The simulation flown.
     pub fn simulation(&self) -> &Simulation {
         &self.simulation
+    }
+
+    /// The physical range of each action key.
+    pub fn ranges(&self) -> &ActionRanges {
+        &self.ranges
     }
 
     /// The control interval (s).
