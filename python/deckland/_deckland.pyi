@@ -10,6 +10,7 @@ __version__: str
 STATE_NAMES: List[str]
 INPUT_NAMES: List[str]
 MAX_SEED: int
+MAX_RUNS: int
 
 PitchLaw = Callable[[Dict[str, float]], float]
 

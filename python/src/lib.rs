@@ -52,6 +52,7 @@ mod _deckland {
         module.add("STATE_NAMES", deckland::aircraft::STATE_NAMES.to_vec())?;
         module.add("INPUT_NAMES", deckland::aircraft::INPUT_NAMES.to_vec())?;
         module.add("MAX_SEED", deckland::scenario::MAX_SEED)?;
+        module.add("MAX_RUNS", super::campaign::MAX_RUNS)?;
         Ok(())
     }
 }

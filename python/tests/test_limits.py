@@ -1,12 +1,13 @@
-"""Inputs beyond their physical range raise ``ValueError`` naming the field, the value
-and the range: never an infinity.
+"""Inputs beyond their physical range or the campaign's limits raise ``ValueError``
+naming the field, the value and the range: never a panic, an abort or an infinity.
 
 The ranges are computed here from the scenario's own parameters in degrees and per
 engine (not read back from the package), and the regression tests are named after the
-defects they pin (the hardening round's D10)."""
+defects they pin (the hardening round's D1, D2 and D10)."""
 
 from __future__ import annotations
 
+import json
 import math
 import re
 
@@ -14,6 +15,10 @@ import numpy as np
 import pytest
 
 import deckland
+import deckland._deckland as core
+
+#: The campaign's limit on runs, as `deckland campaign --runs` documents it.
+CLI_MAX_RUNS = 100_000
 
 
 def physical_ranges(scenario):
@@ -113,3 +118,60 @@ def test_a_pitch_span_beyond_the_pitch_range_is_refused():
     environment = pytest.importorskip("deckland.env")
     with pytest.raises(ValueError, match="`pitch_command_span_rad` = 2.0 is not allowed"):
         environment.CarrierLandingEnv(pitch_command_span_rad=2.0)
+
+
+@pytest.mark.parametrize("runs", [2**40, CLI_MAX_RUNS + 1])
+def test_regression_d2_a_campaign_beyond_the_run_limit_is_refused(runs):
+    with pytest.raises(ValueError) as raised:
+        deckland.campaign(deckland.Scenario.default(), runs=runs)
+    assert f"`runs` = {runs} is not allowed" in str(raised.value)
+    assert f"[1, {CLI_MAX_RUNS}]" in str(raised.value)
+    with pytest.raises(ValueError, match=f"`runs` = {runs}"):
+        core.campaign_shard(deckland.Scenario.default(), runs, 0, 2)
+    with pytest.raises(ValueError, match="`count` = 100000000000000"):
+        core.campaign_shard(deckland.Scenario.default(), 4, 0, 10**14)
+
+
+@pytest.fixture(scope="module")
+def shard_texts():
+    scenario = deckland.Scenario.default()
+    return [core.campaign_shard(scenario, 3, index, 2, seed=5) for index in range(2)]
+
+
+def test_regression_d1_a_shard_with_a_huge_count_is_refused(shard_texts):
+    forged = json.loads(shard_texts[0])
+    forged["shard"] = "0/100000000000000"
+    with pytest.raises(ValueError, match=r"shard count M` = 100000000000000 .*\[1, 100000\]"):
+        core.merge_shards_text([json.dumps(forged)])
+    forged = json.loads(shard_texts[0])
+    forged["requested_runs"] = 2**40
+    with pytest.raises(ValueError, match="`requested_runs` = 1099511627776"):
+        core.merge_shards_text([json.dumps(forged), shard_texts[1]])
+
+
+def hostile_variants(text):
+    """Shards tampered field by field with values no campaign writes."""
+    payload = json.loads(text)
+    values = [None, -1, 0, 2**64, 1e308, math.nan, "", "x", [], {}, True, "0/0", "3/2", "1/18446744073709551615"]
+    for key in payload:
+        for value in values:
+            yield key, json.dumps(dict(payload, **{key: value}))
+    rows = payload["runs_csv"].splitlines()
+    for cut in (1, len(rows[1]) // 2):
+        yield "runs_csv cut", json.dumps(dict(payload, runs_csv="\n".join(rows[:1] + [rows[1][:cut]])))
+    yield "runs_csv crash", json.dumps(dict(payload, runs_csv=payload["runs_csv"].replace(",trap,", ",crash,")))
+    yield "controllers empty", json.dumps(dict(payload, controllers=[], runs_csv=rows[0] + "\n"))
+    yield "not json", text[: len(text) // 2]
+
+
+def test_a_tampered_shard_raises_value_error_and_never_panics(shard_texts):
+    tried = 0
+    for name, forged in hostile_variants(shard_texts[0]):
+        tried += 1
+        try:
+            core.merge_shards_text([forged, shard_texts[1]])
+        except ValueError:
+            pass
+        except BaseException as error:  # PanicException is a BaseException
+            pytest.fail(f"{name}: {type(error).__name__}: {error}")
+    assert tried > 100
