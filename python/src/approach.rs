@@ -2,9 +2,9 @@
 //! built-in cascade flying or the user replacing its loops (the stepping itself is
 //! [`crate::stepping`]'s).
 
-use deckland::scenario::Scenario as RustScenario;
 use std::time::Instant;
 
+use deckland::scenario::Scenario as RustScenario;
 use deckland::simulation::{Overrides, RunSummary};
 use pyo3::intern;
 use pyo3::prelude::*;
