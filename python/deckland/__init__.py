@@ -25,12 +25,13 @@ from dataclasses import dataclass, field
 from typing import Any, Callable, Dict, Iterator, List, Optional
 
 from . import _deckland
-from ._deckland import Approach, LinearModel, Scenario, Trim, linearize, trim
+from ._deckland import MAX_RUNS, Approach, LinearModel, Scenario, Trim, linearize, trim
 from ._tables import table
 
 __version__ = _deckland.__version__
 
 __all__ = [
+    "MAX_RUNS",
     "Approach",
     "Campaign",
     "Flight",
@@ -151,7 +152,8 @@ def campaign(
     Run ``i`` flies seed SplitMix64(``seed``, i) with the scenario's dispersions drawn
     from it; ``seed`` defaults to the scenario's. ``threads`` defaults to the number of
     CPUs; the result does not depend on it. ``compare=True`` flies the same runs under
-    O-PD and PID. The rows are those of ``runs.csv``, bit for bit.
+    O-PD and PID. The rows are those of ``runs.csv``, bit for bit. ``runs`` is 1 to
+    :data:`MAX_RUNS` (100 000, as ``deckland campaign --runs``); beyond, ``ValueError``.
     """
     columns, summary = _deckland.campaign(scenario, runs, seed, threads, compare)
     return Campaign(runs=table(columns), summary=summary)

@@ -10,6 +10,7 @@ __version__: str
 STATE_NAMES: List[str]
 INPUT_NAMES: List[str]
 MAX_SEED: int
+MAX_RUNS: int
 
 PitchLaw = Callable[[Dict[str, float]], float]
 
@@ -99,6 +100,8 @@ class Approach:
     def scenario(self) -> Scenario: ...
     @property
     def trim(self) -> Dict[str, float]: ...
+    @property
+    def action_ranges(self) -> Dict[str, Tuple[float, float]]: ...
 
 def trim(speed_mps: float = 69.1, gamma_deg: float = 0.0, configuration: str = "landing") -> Trim: ...
 def linearize(speed_mps: float = 69.1, gamma_deg: float = 0.0, configuration: str = "landing") -> LinearModel: ...

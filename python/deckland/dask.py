@@ -59,8 +59,8 @@ def campaign(
     the shards. Raises ``ValueError`` if a shard comes back partial (a worker stopped)
     or does not belong to the campaign.
     """
-    if not isinstance(runs, int) or isinstance(runs, bool) or runs < 1:
-        raise ValueError(f"runs = {runs!r}: expected a whole number ≥ 1")
+    if not isinstance(runs, int) or isinstance(runs, bool) or not 1 <= runs <= _deckland.MAX_RUNS:
+        raise ValueError(f"`runs` = {runs!r} is not allowed: expected a whole number in [1, {_deckland.MAX_RUNS}]")
     if shards is None:
         shards = max(1, sum(client.nthreads().values()))
     if not isinstance(shards, int) or isinstance(shards, bool) or shards < 1:

@@ -13,8 +13,11 @@ loop, the speed loop's job and the deck-motion compensation are the agent's.
   (a quarter of the maximum thrust of both engines by default), limited to
   [0, T_max] by the engines.
 
-Zero is the trim of the approach. :meth:`CarrierLandingEnv.action_for` turns a pitch
-command (rad) and a thrust (N) into an action.
+Zero is the trim of the approach. An action outside the space, or not finite, raises
+``ValueError`` naming the action, its value and the range (it is not clipped), and the
+pitch commands the space reaches must lie within the pitch attitude's range (±90°).
+:meth:`CarrierLandingEnv.action_for` turns a pitch command (rad) and a thrust (N) into
+an action.
 
 **Observation** ``Box((11,), float32)``, in the order of :data:`OBSERVATION_NAMES`
 and within :data:`OBSERVATION_BOUNDS`: the glide-path error (m, positive below the
@@ -141,6 +144,15 @@ class CarrierLandingEnv(gymnasium.Env):
         self.thrust_span_n = float(0.25 * self._max_thrust if thrust_span_n is None else thrust_span_n)
         if not (np.isfinite(self.thrust_span_n) and self.thrust_span_n > 0):
             raise ValueError(f"`thrust_span_n` = {thrust_span_n!r} is not allowed: expected a positive number")
+        self.action_ranges = self.approach.action_ranges
+        low, high = self.action_ranges["pitch_command_rad"]
+        reach = min(self._theta_trim - low, high - self._theta_trim)
+        if not self.pitch_command_span_rad <= reach:
+            raise ValueError(
+                f"`pitch_command_span_rad` = {pitch_command_span_rad!r} is not allowed: expected at "
+                f"most {reach!r} rad, so that the trim pitch ± the span stays within the pitch "
+                f"command's range [{low!r}, {high!r}] rad"
+            )
         self.wave_off_error_m = float(wave_off_error_m)
         self.rewards = dict(REWARDS if rewards is None else rewards)
         scenario_now = self.approach.scenario
@@ -151,8 +163,20 @@ class CarrierLandingEnv(gymnasium.Env):
         self._ended = False
 
     def action_for(self, pitch_command_rad: float, thrust_n: float) -> np.ndarray:
-        """The action that commands ``pitch_command_rad`` and ``thrust_n`` (clipped to
-        the action space)."""
+        """The action that commands ``pitch_command_rad`` and ``thrust_n``.
+
+        Each must lie within its physical range, as an action of :class:`deckland.Approach`
+        (:attr:`action_ranges`: the pitch attitude's range, from no thrust to the maximum
+        of both engines), else ``ValueError`` names it, its value and the range. A command
+        within it but beyond what the action space reaches (θ_trim ±
+        ``pitch_command_span_rad``, T_trim ± ``thrust_span_n``) is clipped to the space's
+        edge."""
+        for name, value in (("pitch_command_rad", pitch_command_rad), ("thrust_n", thrust_n)):
+            low, high = self.action_ranges[name]
+            if not low <= value <= high:
+                raise ValueError(
+                    f"`{name}` = {value!r} is not allowed: expected a number in [{low!r}, {high!r}]"
+                )
         action = np.array(
             [
                 (pitch_command_rad - self._theta_trim) / self.pitch_command_span_rad,
@@ -162,10 +186,16 @@ class CarrierLandingEnv(gymnasium.Env):
         return np.clip(action, -1.0, 1.0).astype(np.float32)
 
     def commands(self, action: np.ndarray) -> Dict[str, float]:
-        """The Approach action (pitch command in rad, thrust in N) of an env action."""
-        a = np.clip(np.asarray(action, dtype=np.float64), -1.0, 1.0)
-        if a.shape != (2,) or not np.all(np.isfinite(a)):
-            raise ValueError(f"`action` = {action!r} is not allowed: expected two finite numbers in [-1, 1]")
+        """The Approach action (pitch command in rad, thrust in N) of an env action, which
+        must lie in the action space (two numbers in [-1, 1]), else ``ValueError``."""
+        try:
+            a = np.asarray(action, dtype=np.float64)
+        except (TypeError, ValueError):
+            a = None
+        if a is None or a.shape != (2,) or not np.all((a >= -1.0) & (a <= 1.0)):
+            raise ValueError(
+                f"`action` = {action!r} is not allowed: expected two numbers in [-1, 1] (the action space)"
+            )
         return {
             "pitch_command_rad": self._theta_trim + a[0] * self.pitch_command_span_rad,
             "thrust_n": float(np.clip(self._thrust_trim + a[1] * self.thrust_span_n, 0.0, self._max_thrust)),

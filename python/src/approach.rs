@@ -1,259 +1,18 @@
 //! `deckland.Approach`: an approach stepped one control interval at a time, with the
-//! built-in cascade flying or the user replacing its loops; and a Python callable as the
-//! pitch law.
-//!
-//! One control interval is a whole number of integration steps
-//! ([`Simulation::step_with`]); the action's commands replace the loops' through
-//! [`Overrides`] and are held over the interval. With no action the loop is exactly the
-//! one `fly()` integrates, so an approach stepped to the end with `action=None` ends
-//! with the same summary, bit for bit.
+//! built-in cascade flying or the user replacing its loops (the stepping itself is
+//! [`crate::stepping`]'s).
 
 use std::time::Instant;
 
 use deckland::scenario::Scenario as RustScenario;
-use deckland::simulation::{
-    EndReason, Event, HeldInputs, NoTaps, Overrides, Recorder, RunSummary, Signals, Simulation,
-    Stop,
-};
-use pyo3::exceptions::PyTypeError;
+use deckland::simulation::{Overrides, RunSummary};
 use pyo3::intern;
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList, PyString};
+use pyo3::types::{PyDict, PyList};
 
-use crate::errors::{argument_error, value_error};
-use crate::flight::{events_list, flight_scenario, summary_dict};
-use crate::scenario::{scenario_or_default, Scenario};
-
-/// The longest control interval (s).
-const MAX_CONTROL_INTERVAL_S: f64 = 10.0;
-
-/// Keeps the events of a run (no signals).
-#[derive(Debug, Default)]
-pub(crate) struct EventRecorder {
-    pub events: Vec<Event>,
-}
-
-impl Recorder for EventRecorder {
-    fn event(&mut self, event: &Event) {
-        self.events.push(*event);
-    }
-}
-
-/// A simulation advanced one control interval at a time.
-pub(crate) struct Stepper {
-    simulation: Simulation,
-    steps_per_interval: u64,
-    /// Integration steps taken.
-    steps: u64,
-    /// The inputs the next step will hold and the signals it starts from.
-    held: HeldInputs,
-    signals: Signals,
-    /// Room for the loop's derivative when evaluating the signals.
-    rate: Vec<f64>,
-    end: Option<EndReason>,
-}
-
-/// The number of integration steps of `control_interval_s`, which must be a whole
-/// multiple of the scenario's integration step.
-fn steps_per_interval(control_interval_s: f64, time_step_s: f64) -> PyResult<u64> {
-    let steps = (control_interval_s / time_step_s).round();
-    let whole = (steps * time_step_s - control_interval_s).abs() <= 1e-9 * control_interval_s;
-    if !(control_interval_s.is_finite()
-        && control_interval_s > 0.0
-        && control_interval_s <= MAX_CONTROL_INTERVAL_S
-        && steps >= 1.0
-        && whole)
-    {
-        return Err(argument_error(
-            "control_interval_s",
-            format_args!("{control_interval_s:?}"),
-            format_args!(
-                "a whole multiple of the integration step time_step_s = {time_step_s} s, \
-                 at most {MAX_CONTROL_INTERVAL_S} s"
-            ),
-        ));
-    }
-    Ok(steps as u64)
-}
-
-impl Stepper {
-    /// Sets up `scenario` (an approach) to be flown in steps of `control_interval_s`.
-    pub fn new(scenario: &RustScenario, control_interval_s: f64) -> PyResult<Self> {
-        let steps_per_interval = steps_per_interval(control_interval_s, scenario.time_step_s)?;
-        let simulation = Simulation::new(scenario)
-            .map_err(|error| value_error(format!("cannot set up the approach: {error}")))?;
-        let mut stepper = Self {
-            rate: vec![0.0; simulation.state().len()],
-            simulation,
-            steps_per_interval,
-            steps: 0,
-            held: HeldInputs::default(),
-            signals: Signals::default(),
-            end: None,
-        };
-        stepper.look();
-        Ok(stepper)
-    }
-
-    /// Computes the signals the next step starts from (as `fly()` records them), with
-    /// the inputs it will hold; the run is unchanged.
-    fn look(&mut self) {
-        self.held = self.simulation.next_step_inputs();
-        let simulation = &self.simulation;
-        self.signals = simulation.system().evaluate(
-            simulation.time_s(),
-            simulation.state(),
-            &self.held,
-            &NoTaps,
-            &mut self.rate,
-        );
-    }
-
-    /// Whether the approach has ended.
-    pub fn ended(&self) -> bool {
-        self.end.is_some()
-    }
-
-    /// Advances one control interval (or to the end) with `overrides` held.
-    pub fn advance<R: Recorder>(&mut self, recorder: &mut R, overrides: &Overrides) {
-        if self.end.is_some() {
-            return;
-        }
-        let target = self.steps + self.steps_per_interval;
-        // `Simulation::time_s` is exactly `steps as f64 * dt`.
-        let target_time_s = target as f64 * self.simulation.time_step_s();
-        loop {
-            if let Stop::Ended(reason) = self.simulation.step_with(recorder, overrides) {
-                self.end = Some(reason);
-                break;
-            }
-            if self.simulation.time_s() >= target_time_s {
-                break;
-            }
-        }
-        self.steps = target;
-        self.look();
-    }
-
-    /// The overrides of an interval with a Python pitch law flying: the law's elevator
-    /// command, unless `action` sets the elevator itself.
-    pub fn law_overrides(
-        &self,
-        law: &Bound<'_, PyAny>,
-        action: Option<Overrides>,
-    ) -> PyResult<Overrides> {
-        let mut overrides = action.unwrap_or_default();
-        if overrides.elevator_rad.is_none() && !self.ended() {
-            overrides.elevator_rad = Some(self.call_law(law, overrides.pitch_command_rad)?);
-        }
-        Ok(overrides)
-    }
-
-    /// Calls the Python pitch law once with the signals at the current state.
-    fn call_law(&self, law: &Bound<'_, PyAny>, pitch_command_rad: Option<f64>) -> PyResult<f64> {
-        let py = law.py();
-        let s = &self.signals;
-        let trim = self.simulation.system().trim();
-        let inputs = PyDict::new(py);
-        inputs.set_item(intern!(py, "time_s"), s.time_s)?;
-        inputs.set_item(
-            intern!(py, "theta_ref_rad"),
-            pitch_command_rad.unwrap_or(s.theta_ref_rad),
-        )?;
-        inputs.set_item(intern!(py, "theta_measured_rad"), s.theta_measured_rad)?;
-        inputs.set_item(intern!(py, "pitch_rate_radps"), s.q_radps)?;
-        inputs.set_item(intern!(py, "elevator_rad"), s.elevator_rad)?;
-        inputs.set_item(intern!(py, "theta_trim_rad"), trim.theta_rad)?;
-        inputs.set_item(intern!(py, "elevator_trim_rad"), trim.elevator_rad)?;
-        inputs.set_item(
-            intern!(py, "interval_s"),
-            self.steps_per_interval as f64 * self.simulation.time_step_s(),
-        )?;
-        let command = law.call1((inputs,))?;
-        let command: f64 = command.extract().map_err(|_| {
-            PyTypeError::new_err(format!(
-                "the pitch law returned {}, expected the elevator command in rad (a float)",
-                command
-                    .repr()
-                    .map_or_else(|_| "?".to_owned(), |r| r.to_string())
-            ))
-        })?;
-        if !command.is_finite() {
-            return Err(argument_error(
-                "pitch law elevator command",
-                format_args!("{command:?}"),
-                "a finite number (rad)",
-            ));
-        }
-        Ok(command)
-    }
-}
-
-/// The label of a Python pitch law in summaries: its `label` attribute, else its
-/// `__name__`, else `python`.
-pub(crate) fn python_law_label(law: &Bound<'_, PyAny>) -> PyResult<String> {
-    if !law.is_callable() {
-        return Err(PyTypeError::new_err(
-            "pitch_law must be callable: inputs dict -> elevator command (rad)",
-        ));
-    }
-    for attribute in ["label", "__name__"] {
-        if let Ok(value) = law.getattr(attribute) {
-            if let Ok(text) = value.extract::<String>() {
-                return Ok(text);
-            }
-        }
-    }
-    Ok("python".to_owned())
-}
-
-/// The action's commands: `None`, or a dict with any of `pitch_command_rad`,
-/// `elevator_rad` and `thrust_n` (a value of None leaves that loop in charge).
-fn parse_action(action: Option<&Bound<'_, PyAny>>) -> PyResult<Overrides> {
-    let mut overrides = Overrides::default();
-    let Some(action) = action.filter(|a| !a.is_none()) else {
-        return Ok(overrides);
-    };
-    let dict = action.cast::<PyDict>().map_err(|_| {
-        PyTypeError::new_err(
-            "action must be None or a dict with any of pitch_command_rad, elevator_rad, thrust_n",
-        )
-    })?;
-    for (key, value) in dict.iter() {
-        let key = key.cast::<PyString>().map_err(|_| {
-            PyTypeError::new_err(
-                "action keys must be str: pitch_command_rad, elevator_rad, thrust_n",
-            )
-        })?;
-        let key = key.to_str()?;
-        let slot = match key {
-            "pitch_command_rad" => &mut overrides.pitch_command_rad,
-            "elevator_rad" => &mut overrides.elevator_rad,
-            "thrust_n" => &mut overrides.thrust_n,
-            other => {
-                return Err(value_error(format!(
-                    "action `{other}` is not a command: expected pitch_command_rad, \
-                     elevator_rad or thrust_n"
-                )))
-            }
-        };
-        if value.is_none() {
-            continue;
-        }
-        let number: f64 = value.extract().map_err(|_| {
-            PyTypeError::new_err(format!("action `{key}` must be a float, got {value}"))
-        })?;
-        if !number.is_finite() {
-            return Err(argument_error(
-                &format!("action {key}"),
-                format_args!("{number:?}"),
-                "a finite number",
-            ));
-        }
-        *slot = Some(number);
-    }
-    Ok(overrides)
-}
+use crate::outputs::{events_list, summary_dict};
+use crate::scenario::{flown_scenario, scenario_or_default, with_seed, Scenario};
+use crate::stepping::{parse_action, python_law_label, EventRecorder, Stepper};
 
 /// An approach flown one control interval at a time (the stepping API).
 ///
@@ -272,8 +31,16 @@ fn parse_action(action: Option<&Bound<'_, PyAny>>) -> PyResult<Overrides> {
 ///   law tracks θ.
 /// - `{"elevator_rad": δe, "thrust_n": T}`: replaces every loop (elevator command in rad,
 ///   positive trailing edge down; total thrust command of both engines in N). Either key
-///   alone replaces only its loop. The actuator and engines still apply their limits
-///   and dynamics.
+///   alone replaces only its loop. The actuator and engines still apply their
+///   dynamics.
+///
+/// Each key has a physical range (`action_ranges`): `pitch_command_rad` within ±π/2
+/// (the pitch attitude's range), `elevator_rad` within the stabilator's travel
+/// (`aircraft.elevator_actuator`, −25° to +10° by default), `thrust_n` from 0 to the
+/// maximum thrust of both engines. A value beyond its range, or not finite, raises
+/// `ValueError` naming the key, the value and the range.
+/// The built-in law's `elevator_command_rad` can lie beyond the travel (the actuator
+/// saturates it): limit it to the range before sending it back as an action.
 ///
 /// A replaced loop keeps running in the background on the aircraft's response, so
 /// control can be handed back at any interval.
@@ -325,9 +92,10 @@ pub struct Approach {
 
 impl Approach {
     /// The observation dict at the current state.
-    fn observe<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let s = &self.stepper.signals;
-        let predicted = self.stepper.held.deck.map_or(f64::NAN, |deck| deck.aim.h_m);
+    fn observe<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let look = self.stepper.look();
+        let s = &look.signals;
+        let predicted = look.predicted_deck_height_m;
         let obs = PyDict::new(py);
         obs.set_item(intern!(py, "time_s"), s.time_s)?;
         obs.set_item(intern!(py, "glide_path_error_m"), s.glide_path_error_m)?;
@@ -355,7 +123,7 @@ impl Approach {
         obs.set_item(intern!(py, "predicted_deck_height_m"), predicted)?;
         obs.set_item(intern!(py, "wind_x_mps"), s.wind.x_mps)?;
         obs.set_item(intern!(py, "wind_z_mps"), s.wind.z_mps)?;
-        let summary = self.stepper.simulation.summary();
+        let summary = self.stepper.simulation().summary();
         obs.set_item(intern!(py, "done"), self.stepper.ended())?;
         obs.set_item(intern!(py, "outcome"), summary.map(|s| s.outcome.name()))?;
         obs.set_item(intern!(py, "wire"), summary.and_then(|s| s.wire))?;
@@ -367,7 +135,7 @@ impl Approach {
     }
 
     fn summary(&self) -> Option<&RunSummary> {
-        self.stepper.simulation.summary()
+        self.stepper.simulation().summary()
     }
 
     fn controller_label(&self, py: Python<'_>) -> PyResult<String> {
@@ -389,7 +157,7 @@ impl Approach {
         pitch_law: Option<Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
         let base = scenario_or_default(scenario);
-        let flown = flight_scenario(&base.scenario, seed, false)?;
+        let flown = flown_scenario(&base.scenario, seed, false)?;
         if let Some(law) = &pitch_law {
             python_law_label(law)?;
         }
@@ -408,7 +176,7 @@ impl Approach {
     /// seed: the same episode) and returns the observation.
     #[pyo3(signature = (seed = None))]
     fn reset<'py>(&mut self, py: Python<'py>, seed: Option<i128>) -> PyResult<Bound<'py, PyDict>> {
-        let scenario = crate::scenario::with_seed(self.base, seed.or(Some(self.seed.into())))?;
+        let scenario = with_seed(self.base, seed.or(Some(self.seed.into())))?;
         self.stepper = Stepper::new(&scenario, self.control_interval_s)?;
         self.base = scenario;
         self.seed = scenario.seed;
@@ -424,7 +192,7 @@ impl Approach {
         py: Python<'py>,
         action: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyDict>> {
-        let mut overrides = parse_action(action)?;
+        let mut overrides = parse_action(action, self.stepper.ranges())?;
         if let Some(law) = &self.pitch_law {
             overrides = self.stepper.law_overrides(law.bind(py), Some(overrides))?;
         }
@@ -433,7 +201,7 @@ impl Approach {
     }
 
     /// The observation at the current state (without stepping).
-    fn observation<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+    fn observation<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         self.observe(py)
     }
 
@@ -471,7 +239,7 @@ impl Approach {
     /// Simulated time (s).
     #[getter]
     fn time_s(&self) -> f64 {
-        self.stepper.simulation.time_s()
+        self.stepper.simulation().time_s()
     }
 
     /// The seed of the current episode.
@@ -489,7 +257,7 @@ impl Approach {
     /// The integration step (s).
     #[getter]
     fn time_step_s(&self) -> f64 {
-        self.stepper.simulation.time_step_s()
+        self.stepper.simulation().time_step_s()
     }
 
     /// The scenario flown (a copy; its seed is the episode's).
@@ -505,7 +273,7 @@ impl Approach {
     /// `elevator_rad`, `thrust_n`, and `max_thrust_n` (both engines).
     #[getter]
     fn trim<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let system = self.stepper.simulation.system();
+        let system = self.stepper.simulation().system();
         let trim = system.trim();
         let dict = PyDict::new(py);
         dict.set_item("alpha_rad", trim.alpha_rad)?;
@@ -516,6 +284,18 @@ impl Approach {
             "max_thrust_n",
             system.aircraft().engines().max_total_thrust_n(),
         )?;
+        Ok(dict)
+    }
+
+    /// The physical range of each action key, `{key: (low, high)}`: `pitch_command_rad`
+    /// the pitch attitude's range (±π/2 rad), `elevator_rad` the stabilator's travel
+    /// (rad), `thrust_n` from none to the maximum total thrust of both engines (N).
+    #[getter]
+    fn action_ranges<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let dict = PyDict::new(py);
+        for (key, range, ..) in self.stepper.ranges().described() {
+            dict.set_item(key, range)?;
+        }
         Ok(dict)
     }
 
@@ -540,7 +320,7 @@ impl Approach {
             self.name,
             self.seed,
             self.control_interval_s,
-            self.stepper.simulation.time_s(),
+            self.stepper.simulation().time_s(),
             self.stepper.ended()
         )
     }
@@ -559,26 +339,16 @@ pub fn bench_stepping(
     control_interval_s: f64,
 ) -> PyResult<(u64, f64)> {
     let base = scenario_or_default(scenario);
-    let flown = flight_scenario(&base.scenario, seed, false)?;
-    let per_interval = steps_per_interval(control_interval_s, flown.time_step_s)?;
-    let mut simulation = Simulation::new(&flown)
-        .map_err(|error| value_error(format!("cannot set up the approach: {error}")))?;
+    let flown = flown_scenario(&base.scenario, seed, false)?;
+    let mut stepper = Stepper::new(&flown, control_interval_s)?;
     Ok(py.detach(|| {
         let mut recorder = EventRecorder::default();
         let overrides = Overrides::default();
         let started = Instant::now();
         let mut intervals = 0;
-        'run: loop {
+        while !stepper.ended() {
             intervals += 1;
-            let target_time_s = (intervals * per_interval) as f64 * simulation.time_step_s();
-            loop {
-                if let Stop::Ended(_) = simulation.step_with(&mut recorder, &overrides) {
-                    break 'run;
-                }
-                if simulation.time_s() >= target_time_s {
-                    break;
-                }
-            }
+            stepper.advance(&mut recorder, &overrides);
         }
         (intervals, started.elapsed().as_secs_f64())
     }))

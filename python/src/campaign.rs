@@ -11,6 +11,7 @@
 //! `merge_shards` into the campaign flown whole. `deckland.dask` maps shards over a
 //! Dask cluster with them.
 
+use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
@@ -42,7 +43,13 @@ struct CampaignReport<'a> {
     merged_from: Vec<String>,
 }
 
-/// A whole number argument ≥ `min`, else `ValueError` naming it.
+/// The most approaches of one campaign (per controller), and so the most shards: the
+/// limit of `deckland campaign --runs` (a record of each run is kept, about 0.3 kB; 100 000
+/// runs already give a rate to ±0.3 points).
+// The CLI's documented limit, until the library holds the campaign's limit as one constant.
+pub(crate) const MAX_RUNS: u64 = 100_000;
+
+/// A whole number argument in [`min`, `max`], else `ValueError` naming it and the range.
 fn whole(name: &str, value: i128, min: i128, max: u64) -> PyResult<u64> {
     match u64::try_from(value) {
         Ok(v) if value >= min && v <= max => Ok(v),
@@ -67,7 +74,7 @@ pub fn campaign<'py>(
     threads: Option<i128>,
     compare: bool,
 ) -> PyResult<(Bound<'py, PyDict>, Py<PyAny>)> {
-    let runs = whole("runs", runs, 1, u64::MAX)?;
+    let runs = whole("runs", runs, 1, MAX_RUNS)?;
     let seed = match seed {
         Some(seed) => whole("seed", seed, 0, u64::MAX)?,
         None => scenario.scenario.seed,
@@ -165,8 +172,8 @@ pub fn campaign_shard(
     threads: i128,
     compare: bool,
 ) -> PyResult<String> {
-    let runs = whole("runs", runs, 1, u64::MAX)?;
-    let count = whole("count", count, 1, u64::MAX)?;
+    let runs = whole("runs", runs, 1, MAX_RUNS)?;
+    let count = whole("count", count, 1, MAX_RUNS)?;
     let index = whole("index", index, 0, count - 1)?;
     let shard = Shard::new(index, count).map_err(value_error)?;
     let seed = match seed {
@@ -205,7 +212,8 @@ pub fn campaign_shard(
 
 /// Merges shards made by `campaign_shard` (every shard of one campaign, in any order)
 /// into the campaign flown whole; returns `(runs, summary)` as `campaign` does. A shard
-/// of another campaign, a missing, repeated or partial shard raises `ValueError` naming it.
+/// that is not one (its text, its run or shard count beyond the campaign's limits), of
+/// another campaign, a missing, repeated or partial shard raises `ValueError` naming it.
 #[pyfunction]
 pub fn merge_shards_text<'py>(
     py: Python<'py>,
@@ -217,7 +225,18 @@ pub fn merge_shards_text<'py>(
     for (position, text) in shards.iter().enumerate() {
         let payload: ShardPayload = serde_json::from_str(text)
             .map_err(|e| value_error(format!("shard {position} is not a shard: {e}")))?;
-        let shard: Shard = payload.shard.parse().map_err(value_error)?;
+        let shard: Shard = payload
+            .shard
+            .parse()
+            .map_err(|e| value_error(format!("shard {position} is not a shard: {e}")))?;
+        // Within the limits a campaign can be flown with: a forged count or run count
+        // would size the merge's tables (10¹⁴ shards ask for petabytes).
+        let within = |name: &str, value: u64| {
+            whole(name, value.into(), 1, MAX_RUNS)
+                .map_err(|e| value_error(format!("shard {position} ({shard}): {e}")))
+        };
+        within("shard count M", shard.count())?;
+        within("requested_runs", payload.requested_runs)?;
         if shard.index() == 0 {
             scenario_name = payload.scenario_name.clone();
         }
@@ -238,8 +257,25 @@ pub fn merge_shards_text<'py>(
             rows,
         });
     }
-    let merged = merge_shards(parts).map_err(|e| value_error(format!("cannot merge: {e}")))?;
-    let summary = CampaignSummary::of_merged(&merged, DEFAULT_TARGET_RATE);
+    // Whatever a tampered shard does inside the library, it is a ValueError here, never
+    // a PanicException.
+    let (merged, summary) = catch_unwind(AssertUnwindSafe(|| {
+        merge_shards(parts).map(|merged| {
+            let summary = CampaignSummary::of_merged(&merged, DEFAULT_TARGET_RATE);
+            (merged, summary)
+        })
+    }))
+    .map_err(|payload| {
+        let message = payload
+            .downcast_ref::<&str>()
+            .map(|s| (*s).to_owned())
+            .or_else(|| payload.downcast_ref::<String>().cloned())
+            .unwrap_or_else(|| "unknown".to_owned());
+        value_error(format!(
+            "cannot merge: the shards are not a campaign ({message})"
+        ))
+    })?
+    .map_err(|e| value_error(format!("cannot merge: {e}")))?;
     let mut table = Columns::with_capacity(merged.rows.len());
     for row in &merged.rows {
         table.push(row).map_err(value_error)?;

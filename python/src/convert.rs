@@ -107,7 +107,7 @@ pub(crate) fn python_to_toml(value: &Bound<'_, PyAny>, path: &str) -> PyResult<t
             let key: String = key.extract().map_err(|_| {
                 PyTypeError::new_err(format!("field `{path}`: table keys must be str"))
             })?;
-            let child = crate::scenario::join(path, &key);
+            let child = deckland::parameters::join(path, &key);
             table.insert(key, python_to_toml(&item, &child)?);
         }
         return Ok(Value::Table(table));

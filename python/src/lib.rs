@@ -4,8 +4,11 @@
 //!
 //! - [`scenario`]: `Scenario`, read and set by dotted path, checked on every change;
 //! - [`analysis`]: `trim` and `linearize`;
-//! - [`flight`]: `fly`, one recorded approach;
-//! - [`approach`]: `Approach`, the stepping API, and a Python callable as the pitch law;
+//! - [`stepping`]: an approach advanced one control interval at a time by the library's
+//!   step, the actions' ranges, and a Python callable as the pitch law;
+//! - [`flight`]: `fly`, one recorded approach; [`outputs`]: its summary, time series
+//!   and events as Python objects;
+//! - [`approach`]: `Approach`, the stepping API;
 //! - [`campaign`]: `campaign`, Monte Carlo approaches in parallel;
 //! - [`columns`] and [`convert`]: rows of the CLI's CSV files as columns of numpy
 //!   arrays, and serde values as Python objects.
@@ -21,7 +24,9 @@ mod columns;
 mod convert;
 mod errors;
 mod flight;
+mod outputs;
 mod scenario;
+mod stepping;
 
 use pyo3::prelude::*;
 
@@ -47,6 +52,7 @@ mod _deckland {
         module.add("STATE_NAMES", deckland::aircraft::STATE_NAMES.to_vec())?;
         module.add("INPUT_NAMES", deckland::aircraft::INPUT_NAMES.to_vec())?;
         module.add("MAX_SEED", deckland::scenario::MAX_SEED)?;
+        module.add("MAX_RUNS", super::campaign::MAX_RUNS)?;
         Ok(())
     }
 }

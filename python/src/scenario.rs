@@ -8,6 +8,8 @@
 
 use std::path::PathBuf;
 
+use deckland::monte_carlo::dispersed_run_scenario;
+use deckland::parameters::join;
 use deckland::scenario::{load_scenario, Mission, Scenario as RustScenario};
 use pyo3::exceptions::{PyFileNotFoundError, PyKeyError, PyOSError};
 use pyo3::prelude::*;
@@ -19,11 +21,6 @@ use crate::errors::{first_line, value_error};
 /// The label of the default scenario in summaries (`conditions`), as `deckland land`
 /// writes it.
 pub(crate) const DEFAULT_NAME: &str = "adverse";
-
-/// `section.key`, or `key` when `section` is empty.
-pub(crate) fn join(section: &str, key: &str) -> String {
-    deckland::parameters::join(section, key)
-}
 
 /// Every parameter of one run (the scenario file, as an object).
 ///
@@ -101,6 +98,24 @@ pub(crate) fn with_seed(scenario: RustScenario, seed: Option<i128>) -> PyResult<
             format_args!("an integer in [0, {max}] (2⁶³ − 1)"),
         )),
     }
+}
+
+/// The scenario a flight flies, as an approach: with `seed` (else the scenario's own),
+/// and when `disperse`, with the dispersions the campaign run of that seed draws
+/// ([`dispersed_run_scenario`]).
+pub(crate) fn flown_scenario(
+    scenario: &RustScenario,
+    seed: Option<i128>,
+    disperse: bool,
+) -> PyResult<RustScenario> {
+    let mut scenario = with_seed(*scenario, seed)?;
+    if disperse {
+        scenario = dispersed_run_scenario(&scenario, scenario.seed).0;
+    }
+    Ok(RustScenario {
+        mission: Mission::Approach,
+        ..scenario
+    })
 }
 
 #[pymethods]

@@ -54,7 +54,7 @@ def test_the_default_shards_are_the_workers_and_the_seed_the_scenarios(client):
 
 def test_bad_arguments_and_foreign_shards_are_refused(client):
     scenario = deckland.Scenario.from_file(SCENARIOS / "heavy-sea.toml")
-    for runs in (0, -3, 2.5, True):
+    for runs in (0, -3, 2.5, True, deckland.MAX_RUNS + 1):
         with pytest.raises(ValueError, match="runs"):
             deckland.dask.campaign(client, scenario, runs)
     with pytest.raises(ValueError, match="shards"):

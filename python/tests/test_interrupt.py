@@ -13,7 +13,7 @@ import sys
 import deckland
 print("started", flush=True)
 try:
-    deckland.campaign(deckland.Scenario.default(), 1_000_000, threads=1)
+    deckland.campaign(deckland.Scenario.default(), deckland.MAX_RUNS, threads=1)
 except KeyboardInterrupt:
     print("interrupted", flush=True)
     sys.exit(3)
@@ -29,8 +29,8 @@ def test_ctrl_c_stops_a_campaign_with_keyboard_interrupt():
         assert child.stdout.readline().strip() == "started"
         time.sleep(0.5)
         child.send_signal(signal.SIGINT)
-        # A million approaches take hours: only the interrupt ends it this soon (the
-        # timeout only keeps a broken stop from hanging the suite).
+        # 100 000 approaches on one thread take hours: only the interrupt ends it
+        # this soon (the timeout only keeps a broken stop from hanging the suite).
         out, err = child.communicate(timeout=120)
     finally:
         if child.poll() is None:

@@ -28,6 +28,7 @@ mod campaign;
 mod merge;
 mod rare_events;
 mod row;
+mod run_scenario;
 mod seeds;
 mod shard;
 mod statistics;
@@ -43,6 +44,7 @@ pub use rare_events::{
     RunsNeeded, DEFAULT_TARGET_RATE, UPPER_BOUND_CONFIDENCE, UPPER_BOUND_METHOD,
 };
 pub use row::RunRow;
+pub use run_scenario::dispersed_run_scenario;
 pub use seeds::{run_seed, splitmix64_mix, SPLITMIX64_GAMMA};
 pub use shard::{Shard, ShardError, SHARD_SCHEME};
 pub use statistics::{

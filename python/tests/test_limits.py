@@ -1,0 +1,177 @@
+"""Inputs beyond their physical range or the campaign's limits raise ``ValueError``
+naming the field, the value and the range: never a panic, an abort or an infinity.
+
+The ranges are computed here from the scenario's own parameters in degrees and per
+engine (not read back from the package), and the regression tests are named after the
+defects they pin (the hardening round's D1, D2 and D10)."""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+
+import numpy as np
+import pytest
+
+import deckland
+import deckland._deckland as core
+
+#: The campaign's limit on runs, as `deckland campaign --runs` documents it.
+CLI_MAX_RUNS = 100_000
+
+
+def physical_ranges(scenario):
+    """Each action key's range from the scenario's parameters (degrees, per engine)."""
+    return {
+        "pitch_command_rad": (-math.pi / 2, math.pi / 2),
+        "elevator_rad": (
+            math.radians(scenario["aircraft.elevator_actuator.min_deflection_deg"]),
+            math.radians(scenario["aircraft.elevator_actuator.max_deflection_deg"]),
+        ),
+        "thrust_n": (0.0, 2 * scenario["aircraft.engines.max_thrust_per_engine_n"]),
+    }
+
+
+def test_the_action_ranges_are_the_surfaces_travel_and_the_commands_envelope():
+    scenario = deckland.Scenario.default()
+    scenario["aircraft.elevator_actuator.min_deflection_deg"] = -20.0
+    approach = deckland.Approach(scenario)
+    expected = physical_ranges(scenario)
+    assert approach.action_ranges.keys() == expected.keys()
+    for key, (low, high) in expected.items():
+        assert approach.action_ranges[key] == pytest.approx((low, high), rel=1e-15), key
+
+
+BEYOND = [
+    ("pitch_command_rad", 1e308),  # D10: gave elevator_command_rad = -inf
+    ("pitch_command_rad", -2.0),
+    ("elevator_rad", 5.0),  # D10: 286° was taken without a word
+    ("elevator_rad", math.radians(-25.5)),
+    ("thrust_n", -1.0),
+    ("thrust_n", 1e9),
+    ("thrust_n", math.inf),
+    ("pitch_command_rad", -math.inf),
+    ("elevator_rad", math.nan),
+]
+
+
+@pytest.mark.parametrize("key,value", BEYOND)
+def test_regression_d10_an_action_beyond_its_range_is_refused_naming_it(key, value):
+    approach = deckland.Approach(seed=1)
+    approach.reset()
+    low, high = physical_ranges(approach.scenario)[key]
+    with pytest.raises(ValueError) as raised:
+        approach.step({key: value})
+    message = str(raised.value)
+    shown = re.search(rf"`action {key}` = (\S+) is not allowed", message)
+    assert shown, message
+    assert float(shown.group(1)) == value or (math.isnan(value) and math.isnan(float(shown.group(1))))
+    bounds = re.search(r"in \[(\S+), (\S+)\]", message)
+    assert bounds, message
+    assert (float(bounds.group(1)), float(bounds.group(2))) == pytest.approx((low, high), rel=1e-15)
+    # The approach did not move.
+    assert approach.time_s == 0.0
+
+
+def test_actions_at_the_edges_of_their_ranges_fly_without_infinities():
+    for key in ("pitch_command_rad", "elevator_rad", "thrust_n"):
+        for edge in (0, 1):
+            approach = deckland.Approach(seed=1)
+            approach.reset()
+            value = physical_ranges(approach.scenario)[key][edge]
+            for _ in range(100):
+                observation = approach.step({key: value})
+            numbers = [v for v in observation.values() if isinstance(v, float)]
+            assert not any(math.isinf(v) for v in numbers), (key, value, observation)
+
+
+def test_regression_d10_action_for_refuses_commands_beyond_their_range():
+    env = pytest.importorskip("deckland.env").CarrierLandingEnv()
+    env.reset(seed=1)
+    trim = env.approach.trim
+    for pitch, thrust, named in [
+        (math.nan, math.inf, "pitch_command_rad"),
+        (trim["theta_rad"], math.inf, "thrust_n"),
+        (2.0, trim["thrust_n"], "pitch_command_rad"),
+        (trim["theta_rad"], -5.0, "thrust_n"),
+    ]:
+        with pytest.raises(ValueError, match=f"`{named}` = "):
+            env.action_for(pitch, thrust)
+    # Within the physical range but beyond the space's reach: the space's edge.
+    action = env.action_for(trim["theta_rad"] + 0.5, trim["max_thrust_n"])
+    assert action.tolist() == [1.0, 1.0]
+
+
+def test_regression_d10_the_environment_refuses_actions_outside_its_space():
+    env = pytest.importorskip("deckland.env").CarrierLandingEnv()
+    env.reset(seed=1)
+    for action in ([1.5, 0.0], [0.0, -1.01], [math.nan, 0.0], [0.0, math.inf], [0.0], "up"):
+        with pytest.raises(ValueError, match=r"`action` = .*\[-1, 1\]"):
+            env.step(np.asarray(action, dtype=object) if isinstance(action, str) else np.array(action))
+    assert env.approach.time_s == 0.0
+    # The edges are in the space.
+    env.step(np.array([1.0, -1.0], dtype=np.float32))
+
+
+def test_a_pitch_span_beyond_the_pitch_range_is_refused():
+    environment = pytest.importorskip("deckland.env")
+    with pytest.raises(ValueError, match="`pitch_command_span_rad` = 2.0 is not allowed"):
+        environment.CarrierLandingEnv(pitch_command_span_rad=2.0)
+
+
+@pytest.mark.parametrize("runs", [2**40, CLI_MAX_RUNS + 1])
+def test_regression_d2_a_campaign_beyond_the_run_limit_is_refused(runs):
+    with pytest.raises(ValueError) as raised:
+        deckland.campaign(deckland.Scenario.default(), runs=runs)
+    assert f"`runs` = {runs} is not allowed" in str(raised.value)
+    assert f"[1, {CLI_MAX_RUNS}]" in str(raised.value)
+    with pytest.raises(ValueError, match=f"`runs` = {runs}"):
+        core.campaign_shard(deckland.Scenario.default(), runs, 0, 2)
+    with pytest.raises(ValueError, match="`count` = 100000000000000"):
+        core.campaign_shard(deckland.Scenario.default(), 4, 0, 10**14)
+
+
+@pytest.fixture(scope="module")
+def shard_texts():
+    scenario = deckland.Scenario.default()
+    return [core.campaign_shard(scenario, 3, index, 2, seed=5) for index in range(2)]
+
+
+def test_regression_d1_a_shard_with_a_huge_count_is_refused(shard_texts):
+    forged = json.loads(shard_texts[0])
+    forged["shard"] = "0/100000000000000"
+    with pytest.raises(ValueError, match=r"shard count M` = 100000000000000 .*\[1, 100000\]"):
+        core.merge_shards_text([json.dumps(forged)])
+    forged = json.loads(shard_texts[0])
+    forged["requested_runs"] = 2**40
+    with pytest.raises(ValueError, match="`requested_runs` = 1099511627776"):
+        core.merge_shards_text([json.dumps(forged), shard_texts[1]])
+
+
+def hostile_variants(text):
+    """Shards tampered field by field with values no campaign writes."""
+    payload = json.loads(text)
+    values = [None, -1, 0, 2**64, 1e308, math.nan, "", "x", [], {}, True, "0/0", "3/2", "1/18446744073709551615"]
+    for key in payload:
+        for value in values:
+            yield key, json.dumps(dict(payload, **{key: value}))
+    rows = payload["runs_csv"].splitlines()
+    for cut in (1, len(rows[1]) // 2):
+        yield "runs_csv cut", json.dumps(dict(payload, runs_csv="\n".join(rows[:1] + [rows[1][:cut]])))
+    yield "runs_csv crash", json.dumps(dict(payload, runs_csv=payload["runs_csv"].replace(",trap,", ",crash,")))
+    yield "controllers empty", json.dumps(dict(payload, controllers=[], runs_csv=rows[0] + "\n"))
+    yield "not json", text[: len(text) // 2]
+
+
+def test_a_tampered_shard_raises_value_error_and_never_panics(shard_texts):
+    tried = 0
+    for name, forged in hostile_variants(shard_texts[0]):
+        tried += 1
+        try:
+            core.merge_shards_text([forged, shard_texts[1]])
+        except ValueError:
+            pass
+        except BaseException as error:  # PanicException is a BaseException
+            pytest.fail(f"{name}: {type(error).__name__}: {error}")
+    assert tried > 100
