@@ -3,12 +3,9 @@
 
 use std::sync::Arc;
 
-use super::anchor_shaping::AnchorShaping;
 use super::blocks::{check_placement, Block, BlockPlacementError, BlockPosition, PlacedBlock};
 use super::closed_loop::{ClosedLoop, LoopLayout, StepStreams};
-use super::deck_predictor::{
-    estimator, filter_lead, oracle, BuiltDeckPredictor, DeckPredictor, DeckView,
-};
+use super::deck_predictor::{BuiltDeckPredictor, DeckPredictor, DeckView};
 use super::flight_computer::FlightComputer;
 use super::outer_loops::{OuterLoops, WaveOffFlight};
 use crate::aircraft::{linearize, trim, Aircraft, LinearModel, TrimError, TrimPoint, TrimRequest};
@@ -20,17 +17,12 @@ use crate::control::pitch::design::{
 use crate::control::pitch::{
     AxisLaw, BuiltPitchLaw, PitchDesignContext, PitchLaw, PitchLawInputs, PitchPlantDerivatives,
 };
-use crate::control::{
-    CommandRamp, DeckMotionFilter, DeckPredictorKind, FlightPathGenerator, SpeedController,
-};
-use crate::environment::{
-    mean_wind, ShipMotion, ShipMotionPropagator, ShipMotionState, Wind, WindModel,
-};
-use crate::estimation::DeckMotionEstimator;
+use crate::control::{CommandRamp, FlightPathGenerator, SpeedController};
+use crate::environment::{mean_wind, ShipMotion, ShipMotionState, Wind, WindModel};
 use crate::parameters::ParameterError;
 use crate::random::{stream_names, RandomStreams};
 use crate::scenario::{Mission, PitchCommand, Scenario};
-use crate::sensors::{EstimatorStart, PitchSensor, ShipMotionSensor};
+use crate::sensors::PitchSensor;
 
 /// Builds a user's own pitch law for the plant and hardware of a run (called once per
 /// run, after trim, so that a campaign can fly it over dispersed scenarios).
@@ -365,38 +357,7 @@ pub(crate) fn build(scenario: &Scenario, user: UserParts<'_>) -> Result<Setup, S
         aircraft.engines().max_total_thrust_n(),
     );
     let flight_path = &scenario.control.flight_path;
-    // The forecasts reach the compensation window and the blend, plus the data link's
-    // latency for the estimator.
-    let horizon_s = flight_path.compensation_window_s + flight_path.compensation_blend_s;
-    let deck_predictor = match flight_path.deck_motion_predictor {
-        DeckPredictorKind::Oracle => BuiltDeckPredictor::Oracle(oracle::Oracle::new(
-            ShipMotionPropagator::new(horizon_s),
-            (flight_path.ramp_aware || scenario.control.wave_off.enabled)
-                .then(|| AnchorShaping::new(flight_path.anchor_filter_frequency_radps)),
-        )),
-        DeckPredictorKind::Estimator => {
-            let sensing = env.ship_sensing;
-            BuiltDeckPredictor::Estimator(Box::new(estimator::Estimator::new(
-                ShipMotionSensor::new(sensing, &streams)?,
-                match sensing.estimator_start {
-                    EstimatorStart::Converged => DeckMotionEstimator::converged(
-                        &ship,
-                        &sensing,
-                        &ship_state,
-                        &mut streams.stream(stream_names::SHIP_ESTIMATE_START),
-                    ),
-                    EstimatorStart::Cold => DeckMotionEstimator::new(&ship, &sensing),
-                },
-                ShipMotionPropagator::new(horizon_s + sensing.latency_s + 1.0),
-                flight_path.anchor_filter_frequency_radps,
-            )))
-        }
-        DeckPredictorKind::FilterLead => {
-            BuiltDeckPredictor::FilterLead(filter_lead::FilterLead::new(DeckMotionFilter::new(
-                flight_path.deck_filter_frequency_radps,
-            )))
-        }
-    };
+    let deck_predictor = BuiltDeckPredictor::for_scenario(scenario, &ship, &ship_state, &streams)?;
     let deck_predictor = match user_deck_predictor {
         Some(custom) => BuiltDeckPredictor::Custom(custom.clone_box()),
         None => deck_predictor,

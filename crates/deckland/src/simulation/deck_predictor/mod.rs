@@ -29,12 +29,19 @@ pub mod oracle;
 use std::fmt::Debug;
 
 use super::anchor_shaping::AnchorShaping;
-use crate::control::{DeckForecast, DeckReference, FlightPathGenerator, FlightPathParameters};
+use crate::control::{
+    DeckForecast, DeckMotionFilter, DeckPredictorKind, DeckReference, FlightPathGenerator,
+    FlightPathParameters,
+};
 use crate::environment::{
     DeckGeometry, EarthPoint, EarthVelocity, ShipMotion, ShipMotionEstimate, ShipMotionForecast,
     ShipMotionPropagator, ShipMotionState, ShipPose, ShipPoseRate,
 };
 use crate::estimation::DeckMotionEstimator;
+use crate::parameters::ParameterError;
+use crate::random::{stream_names, RandomStreams};
+use crate::scenario::Scenario;
+use crate::sensors::{EstimatorStart, ShipMotionSensor};
 
 /// The ship's motion at one instant, as a predictor reads it.
 #[derive(Debug, Clone, Copy)]
@@ -137,6 +144,47 @@ macro_rules! each {
 }
 
 impl BuiltDeckPredictor {
+    /// The scenario's predictor (`control.flight_path.deck_motion_predictor`), for the
+    /// ship model `ship` starting at `ship_state`.
+    pub(crate) fn for_scenario(
+        scenario: &Scenario,
+        ship: &ShipMotion,
+        ship_state: &ShipMotionState,
+        streams: &RandomStreams,
+    ) -> Result<Self, ParameterError> {
+        let flight_path = &scenario.control.flight_path;
+        // The forecasts reach the compensation window and the blend, plus the data link's
+        // latency for the estimator.
+        let horizon_s = flight_path.compensation_window_s + flight_path.compensation_blend_s;
+        Ok(match flight_path.deck_motion_predictor {
+            DeckPredictorKind::Oracle => Self::Oracle(oracle::Oracle::new(
+                ShipMotionPropagator::new(horizon_s),
+                (flight_path.ramp_aware || scenario.control.wave_off.enabled)
+                    .then(|| AnchorShaping::new(flight_path.anchor_filter_frequency_radps)),
+            )),
+            DeckPredictorKind::Estimator => {
+                let sensing = scenario.environment.ship_sensing;
+                Self::Estimator(Box::new(estimator::Estimator::new(
+                    ShipMotionSensor::new(sensing, streams)?,
+                    match sensing.estimator_start {
+                        EstimatorStart::Converged => DeckMotionEstimator::converged(
+                            ship,
+                            &sensing,
+                            ship_state,
+                            &mut streams.stream(stream_names::SHIP_ESTIMATE_START),
+                        ),
+                        EstimatorStart::Cold => DeckMotionEstimator::new(ship, &sensing),
+                    },
+                    ShipMotionPropagator::new(horizon_s + sensing.latency_s + 1.0),
+                    flight_path.anchor_filter_frequency_radps,
+                )))
+            }
+            DeckPredictorKind::FilterLead => Self::FilterLead(filter_lead::FilterLead::new(
+                DeckMotionFilter::new(flight_path.deck_filter_frequency_radps),
+            )),
+        })
+    }
+
     /// Names of the predictor's continuous states.
     pub fn state_names(&self) -> &'static [&'static str] {
         each!(self, p => p.state_names())
