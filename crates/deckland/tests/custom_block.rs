@@ -3,6 +3,8 @@
 
 use std::sync::Arc;
 
+mod common;
+
 use deckland::recording::TimeSeriesRecorder;
 use deckland::scenario::Scenario;
 use deckland::simulation::{
@@ -92,12 +94,7 @@ impl Block for AttitudeFilter {
     }
 }
 
-fn fly(simulation: Simulation) -> TimeSeriesRecorder {
-    let mut recorder = TimeSeriesRecorder::every(0.01);
-    let summary = simulation.run(&mut recorder);
-    recorder.summary = Some(summary);
-    recorder
-}
+use common::fly_recorded as fly;
 
 #[test]
 fn a_block_that_changes_nothing_flies_bit_for_bit_as_the_loop_without_it() {

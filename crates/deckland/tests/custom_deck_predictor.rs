@@ -1,9 +1,10 @@
 //! A user's own deck predictor (`simulation::DeckPredictor`): one type and one line
 //! (`Simulation::builder(..).deck_predictor(..)`), flown here.
 
+mod common;
+
 use deckland::control::{DeckPredictorKind, DeckReference};
 use deckland::environment::{ShipMotionPropagator, ShipPose};
-use deckland::recording::TimeSeriesRecorder;
 use deckland::scenario::Scenario;
 use deckland::simulation::{DeckPredictor, DeckQuery, Simulation};
 
@@ -58,12 +59,7 @@ fn paper_oracle_scenario() -> Scenario {
     scenario
 }
 
-fn fly(simulation: Simulation) -> TimeSeriesRecorder {
-    let mut recorder = TimeSeriesRecorder::every(0.01);
-    let summary = simulation.run(&mut recorder);
-    recorder.summary = Some(summary);
-    recorder
-}
+use common::fly_recorded as fly;
 
 #[test]
 fn a_users_oracle_flies_bit_for_bit_as_the_built_in_one() {

@@ -12,6 +12,8 @@
 //! facade's own, and then the sub-module depends on the facade, which depends on every
 //! sub-module it declares.
 
+mod common;
+
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
@@ -170,26 +172,7 @@ fn graph_of(relative: &str, module_path: &str) -> BTreeMap<String, BTreeSet<Stri
     graph
 }
 
-/// A cycle through the last node of `path`, if there is one (depth-first search).
-fn cycle_from(
-    graph: &BTreeMap<String, BTreeSet<String>>,
-    path: &mut Vec<String>,
-) -> Option<Vec<String>> {
-    let current = path.last()?.clone();
-    for next in graph.get(&current).into_iter().flatten() {
-        if let Some(position) = path.iter().position(|m| m == next) {
-            let mut cycle = path[position..].to_vec();
-            cycle.push(next.clone());
-            return Some(cycle);
-        }
-        path.push(next.clone());
-        if let Some(cycle) = cycle_from(graph, path) {
-            return Some(cycle);
-        }
-        path.pop();
-    }
-    None
-}
+use common::cycle_from;
 
 fn assert_acyclic(relative: &str, module_path: &str) -> BTreeMap<String, BTreeSet<String>> {
     let graph = graph_of(relative, module_path);

@@ -3,6 +3,8 @@
 //! round a loop), and no source file grows past 500 lines. A dependency is any mention of
 //! `crate::<module>` in a module's files (code or doc links).
 
+mod common;
+
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
@@ -63,26 +65,7 @@ fn dependency_graph() -> BTreeMap<String, BTreeSet<String>> {
     graph
 }
 
-/// A cycle through `start`, if there is one (depth-first search).
-fn cycle_from(
-    graph: &BTreeMap<String, BTreeSet<String>>,
-    path: &mut Vec<String>,
-) -> Option<Vec<String>> {
-    let current = path.last()?.clone();
-    for next in graph.get(&current).into_iter().flatten() {
-        if let Some(position) = path.iter().position(|m| m == next) {
-            let mut cycle = path[position..].to_vec();
-            cycle.push(next.clone());
-            return Some(cycle);
-        }
-        path.push(next.clone());
-        if let Some(cycle) = cycle_from(graph, path) {
-            return Some(cycle);
-        }
-        path.pop();
-    }
-    None
-}
+use common::cycle_from;
 
 #[test]
 fn the_top_level_modules_import_each_other_in_no_cycle() {

@@ -1,6 +1,9 @@
-//! Helpers shared by the closed-loop tests of the moderate sea.
+//! Helpers shared by the integration tests: the moderate sea, a recorded flight, module
+//! graphs.
 
 #![allow(clippy::unwrap_used)] // tests fail loudly by design
+// Each test file that shares this module uses some of its helpers.
+#![allow(dead_code)]
 
 use deckland::recording::SummaryRecorder;
 use deckland::scenario::Scenario;
@@ -33,4 +36,34 @@ pub fn touchdown_spread(scenario: impl Fn(u64) -> Scenario) -> (f64, usize) {
     let mean = distances.iter().sum::<f64>() / n;
     let variance = distances.iter().map(|d| (d - mean).powi(2)).sum::<f64>() / (n - 1.0);
     (variance.sqrt(), distances.len())
+}
+
+/// Flies `simulation` to the end, recording every signal each 10 ms, with its summary.
+pub fn fly_recorded(simulation: Simulation) -> deckland::recording::TimeSeriesRecorder {
+    let mut recorder = deckland::recording::TimeSeriesRecorder::every(0.01);
+    let summary = simulation.run(&mut recorder);
+    recorder.summary = Some(summary);
+    recorder
+}
+
+/// A cycle through the last node of `path` in a module graph, if there is one
+/// (depth-first search).
+pub fn cycle_from(
+    graph: &std::collections::BTreeMap<String, std::collections::BTreeSet<String>>,
+    path: &mut Vec<String>,
+) -> Option<Vec<String>> {
+    let current = path.last()?.clone();
+    for next in graph.get(&current).into_iter().flatten() {
+        if let Some(position) = path.iter().position(|m| m == next) {
+            let mut cycle = path[position..].to_vec();
+            cycle.push(next.clone());
+            return Some(cycle);
+        }
+        path.push(next.clone());
+        if let Some(cycle) = cycle_from(graph, path) {
+            return Some(cycle);
+        }
+        path.pop();
+    }
+    None
 }

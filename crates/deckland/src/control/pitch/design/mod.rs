@@ -43,7 +43,7 @@ pub mod loop_model;
 mod plant;
 pub mod rate_limit;
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;
 
 pub use assessment::{assess_loop, shortfalls, LoopAssessment, NoiseBudget};
 pub use command::{command_bounds, design_command, nearer_stop_travel_rad};

@@ -3,7 +3,7 @@
 use super::*;
 
 /// The approach trim of the landing configuration (`deckland linearize`).
-fn hardware(rate_limit_degps: Option<f64>) -> PitchHardware {
+pub(crate) fn hardware(rate_limit_degps: Option<f64>) -> PitchHardware {
     PitchHardware {
         actuator: ElevatorActuatorParameters {
             rate_limit_degps,
@@ -23,7 +23,8 @@ fn hardware(rate_limit_degps: Option<f64>) -> PitchHardware {
     }
 }
 
-fn noise() -> PitchSensorNoise {
+/// The paper's pitch-sensor noise sampled at 1 ms.
+pub(crate) fn noise() -> PitchSensorNoise {
     PitchSensorNoise::from_parameters(&PitchNoiseParameters::default(), 0.001)
 }
 

@@ -4,15 +4,13 @@
 use nalgebra::Complex;
 
 use super::*;
-use crate::aircraft::ElevatorActuatorParameters;
 use crate::control::pitch::design::loop_model::{LoopInput, LoopOutput, PitchLoopModel};
 use crate::control::pitch::design::{
-    check_pitch_tuning, AngleOfAttackCoupling, LinearActuator, PitchPlantDerivatives,
+    check_pitch_tuning, LinearActuator, PitchPlantDerivatives,
     PitchTuningProblem,
 };
 use crate::control::pitch::pid::{linear_pid, PidParameters};
 use crate::control::LinearLaw;
-use crate::sensors::PitchNoiseParameters;
 
 const PLANT: PitchPlantDerivatives = PitchPlantDerivatives {
     dqdot_dq_per_s: -0.1891,
@@ -23,30 +21,7 @@ const ACTUATOR: LinearActuator = LinearActuator {
     damping_ratio: 0.509,
 };
 
-/// The approach trim of the landing configuration (`deckland linearize`).
-fn hardware(rate_limit_degps: Option<f64>) -> PitchHardware {
-    PitchHardware {
-        actuator: ElevatorActuatorParameters {
-            rate_limit_degps,
-            ..ElevatorActuatorParameters::default()
-        },
-        elevator_trim_rad: (-8.17f64).to_radians(),
-        plant: PitchPlantDerivatives {
-            dqdot_dq_per_s: -0.1891,
-            dqdot_delevator_per_s2: -1.9675,
-        },
-        coupling: Some(AngleOfAttackCoupling {
-            dalphadot_dalpha_per_s: -0.526_839,
-            dalphadot_delevator_per_s: -0.066_65,
-            dqdot_dalpha_per_s2: -0.259_898,
-        }),
-        control_delay_s: 0.0,
-    }
-}
-
-fn noise() -> PitchSensorNoise {
-    PitchSensorNoise::from_parameters(&PitchNoiseParameters::default(), 0.001)
-}
+use crate::control::pitch::design::tests::{hardware, noise};
 
 /// With a very fast observer the O-PD tends to its ideal form: L(s) = (K_P + K_D s)·
 /// A(s)/(s(s − M_q)), A the actuator. At ω = 10 rad/s with K_P = 16, K_D = 7.81:
