@@ -6,10 +6,23 @@
 //! one campaign and cover it exactly once — every error names the shard and the field at
 //! fault — and returns the campaign's rows in run order: those of the campaign flown
 //! whole on one machine.
+//!
+//! Nothing a shard says is trusted before it is checked: its identity against the
+//! campaign's limits ([`super::limits`]) before anything is allocated by it, and every row
+//! against the row schema ([`RunRow::check`]). [`parse_runs_csv`] reads a shard's
+//! `runs.csv` text with the same checks (the exact columns, a last line that ends, every
+//! row), naming the line and the column at fault, so that every front end (the CLI's
+//! `merge`, Python, Dask) refuses the same inputs with the same words.
 
-use super::row::RunRow;
+use super::limits::{
+    check_runs, MAX_CONTROLLERS, MAX_CONTROLLER_LABEL_BYTES, MAX_RUNS, MAX_SHARDS,
+};
+use super::row::{RowError, RunRow, RUN_COLUMNS};
 use super::seeds::run_seed;
 use super::shard::Shard;
+
+/// Most missing shards a message lists one by one.
+const LISTED_MISSING: usize = 10;
 
 /// What a shard says it is part of.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -112,10 +125,12 @@ pub enum MergeError {
         other: String,
     },
     /// Shards of the campaign are not there.
-    #[error("missing shard{} {}: a merge needs every shard", if missing.len() == 1 { "" } else { "s" }, missing.iter().map(|k| format!("{k}/{count}")).collect::<Vec<_>>().join(", "))]
+    #[error("missing shard{} {}: a merge needs every shard", if *total == 1 { "" } else { "s" }, listed_missing(missing, *total, *count))]
     MissingShards {
-        /// The shards missing (K of K/M, from 0).
+        /// The first shards missing (K of K/M, from 0), at most ten.
         missing: Vec<u64>,
+        /// How many are missing.
+        total: u64,
         /// M.
         count: u64,
     },
@@ -131,6 +146,42 @@ pub enum MergeError {
         /// The row's controller.
         controller: String,
         /// What is wrong with it.
+        problem: String,
+    },
+    /// A shard's identity is beyond the campaign's limits or not one a campaign writes.
+    #[error("{location}: `{field}` is {value}: {problem}")]
+    BadIdentity {
+        /// Where the shard comes from.
+        location: String,
+        /// The field at fault (`requested_runs`, `controllers`, `shard`).
+        field: &'static str,
+        /// Its value.
+        value: String,
+        /// What is allowed.
+        problem: String,
+    },
+    /// A row no campaign can write (see [`RunRow::check`]).
+    #[error("{location}: row {row} (run {run_index}, {controller}): {error}")]
+    BadRow {
+        /// Where the shard comes from (its `runs.csv`).
+        location: String,
+        /// The row, from 1 (line `row + 1` of `runs.csv`, after its header).
+        row: u64,
+        /// The row's run index.
+        run_index: u64,
+        /// The row's controller.
+        controller: String,
+        /// The column at fault and why.
+        error: Box<RowError>,
+    },
+    /// `runs.csv` text that is not a campaign's table.
+    #[error("{location} line {line}: {problem}")]
+    RunsCsv {
+        /// Where the text comes from.
+        location: String,
+        /// The line at fault (the header is line 1).
+        line: u64,
+        /// What is wrong.
         problem: String,
     },
     /// A shard lacks runs it should hold.
@@ -149,6 +200,171 @@ pub enum MergeError {
         /// Its controller.
         controller: String,
     },
+}
+
+/// The missing shards in words: the first ten, and how many more.
+fn listed_missing(missing: &[u64], total: u64, count: u64) -> String {
+    let mut text = missing
+        .iter()
+        .map(|k| format!("{k}/{count}"))
+        .collect::<Vec<_>>()
+        .join(", ");
+    let more = total.saturating_sub(missing.len() as u64);
+    if more > 0 {
+        text.push_str(&format!(" and {more} more"));
+    }
+    text
+}
+
+/// Checks a shard's identity against the campaign's limits, before anything is allocated
+/// by it: its run count, its controllers, and a shard count no larger than its runs.
+fn check_identity(identity: &ShardIdentity) -> Result<(), MergeError> {
+    let bad = |field: &'static str, value: String, problem: String| MergeError::BadIdentity {
+        location: identity.source.clone(),
+        field,
+        value,
+        problem,
+    };
+    let runs = identity.requested_runs;
+    if let Err(error) = check_runs(runs) {
+        return Err(bad(
+            "requested_runs",
+            runs.to_string(),
+            format!("a campaign flies 1 to {MAX_RUNS} runs ({error})"),
+        ));
+    }
+    let count = identity.shard.count();
+    if count > runs.min(MAX_SHARDS) {
+        return Err(bad(
+            "shard",
+            identity.shard.to_string(),
+            format!("a campaign of {runs} runs has at most {runs} shards (one run each)"),
+        ));
+    }
+    let controllers = &identity.controllers;
+    let listed = || format!("[{}]", controllers.join(", "));
+    if controllers.is_empty() || controllers.len() > MAX_CONTROLLERS {
+        return Err(bad(
+            "controllers",
+            listed(),
+            format!("a campaign flies 1 to {MAX_CONTROLLERS} controllers"),
+        ));
+    }
+    for (position, label) in controllers.iter().enumerate() {
+        if label.is_empty()
+            || label.len() > MAX_CONTROLLER_LABEL_BYTES
+            || label.chars().any(char::is_control)
+        {
+            return Err(bad(
+                "controllers",
+                format!("{label:?}"),
+                format!(
+                    "a controller's label is 1 to {MAX_CONTROLLER_LABEL_BYTES} bytes of \
+                     printable text"
+                ),
+            ));
+        }
+        if controllers[..position].contains(label) {
+            return Err(bad(
+                "controllers",
+                listed(),
+                format!("`{label}` is listed twice"),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Reads the rows of a shard's `runs.csv` text (`location` names it in messages):
+/// exactly the columns of [`RUN_COLUMNS`] in order, a last line that ends (a file cut
+/// short is refused, even inside a row's text), and every row one a campaign can write
+/// ([`RunRow::check`]). Every error names the line and the column at fault.
+pub fn parse_runs_csv(location: &str, text: &str) -> Result<Vec<RunRow<'static>>, MergeError> {
+    let at = |line: u64, problem: String| MergeError::RunsCsv {
+        location: location.to_owned(),
+        line,
+        problem,
+    };
+    let header = text
+        .lines()
+        .next()
+        .unwrap_or_default()
+        .trim_end_matches('\r');
+    let columns: Vec<&str> = header.split(',').collect();
+    if columns != RUN_COLUMNS {
+        let position = RUN_COLUMNS
+            .iter()
+            .zip(&columns)
+            .position(|(a, b)| a != b)
+            .unwrap_or(columns.len().min(RUN_COLUMNS.len()));
+        let problem = match (RUN_COLUMNS.get(position), columns.get(position)) {
+            (Some(expected), Some(found)) => {
+                format!(
+                    "column {} is `{found}` where a campaign writes `{expected}`",
+                    position + 1
+                )
+            }
+            (Some(expected), None) => format!("the column `{expected}` is missing"),
+            (None, Some(found)) => format!("`{found}` is not a column of a campaign"),
+            (None, None) => "no header".to_owned(),
+        };
+        return Err(at(
+            1,
+            format!("{problem} (the header is `{}`)", RUN_COLUMNS.join(",")),
+        ));
+    }
+    if !text.ends_with('\n') {
+        let lines = text.lines().count() as u64;
+        return Err(at(
+            lines,
+            "the last line does not end: the file is cut short (truncated?)".to_owned(),
+        ));
+    }
+    let most_rows = MAX_RUNS * MAX_CONTROLLERS as u64;
+    let mut reader = csv::ReaderBuilder::new()
+        .has_headers(true)
+        .from_reader(text.as_bytes());
+    let mut rows = Vec::new();
+    for (position, row) in reader.deserialize::<RunRow<'static>>().enumerate() {
+        let number = position as u64 + 1;
+        if number > most_rows {
+            return Err(at(
+                number + 1,
+                format!("more than {most_rows} rows: more than a campaign has"),
+            ));
+        }
+        let row = row.map_err(|error| {
+            let line = error.position().map_or(number + 1, |p| p.line());
+            let column = match error.kind() {
+                csv::ErrorKind::Deserialize { err, .. } => err
+                    .field()
+                    .and_then(|f| RUN_COLUMNS.get(f as usize))
+                    .map(|c| format!("`{c}`: "))
+                    .unwrap_or_default(),
+                _ => String::new(),
+            };
+            let message = match error.kind() {
+                csv::ErrorKind::Deserialize { err, .. } => err.kind().to_string(),
+                csv::ErrorKind::UnequalLengths { len, .. } => format!(
+                    "{len} fields where a campaign writes {}: is the row cut short?",
+                    RUN_COLUMNS.len()
+                ),
+                _ => error.to_string(),
+            };
+            at(line, format!("{column}{message}"))
+        })?;
+        if let Err(error) = row.check() {
+            return Err(MergeError::BadRow {
+                location: location.to_owned(),
+                row: number,
+                run_index: row.run_index,
+                controller: row.controller.to_string(),
+                error: Box::new(error),
+            });
+        }
+        rows.push(row);
+    }
+    Ok(rows)
 }
 
 /// The first line where two scenario texts differ: (key or line, first value, other).
@@ -188,6 +404,9 @@ fn first_difference(first: &str, other: &str) -> (String, String, String) {
 /// controller: the rows of the campaign flown whole.
 pub fn merge_shards(mut shards: Vec<ShardRows>) -> Result<MergedCampaign, MergeError> {
     let first = shards.first().ok_or(MergeError::NoShards)?.identity.clone();
+    for shard in &shards {
+        check_identity(&shard.identity)?;
+    }
     for shard in &shards {
         let identity = &shard.identity;
         if identity.scenario_toml != first.scenario_toml {
@@ -257,11 +476,14 @@ pub fn merge_shards(mut shards: Vec<ShardRows>) -> Result<MergedCampaign, MergeE
         }
         *slot = Some(position);
     }
-    let missing: Vec<u64> = (0..count)
-        .filter(|&k| by_index.get(k as usize).is_none_or(Option::is_none))
-        .collect();
-    if !missing.is_empty() {
-        return Err(MergeError::MissingShards { missing, count });
+    let missing = (0..count).filter(|&k| by_index.get(k as usize).is_none_or(Option::is_none));
+    let total = missing.clone().count() as u64;
+    if total > 0 {
+        return Err(MergeError::MissingShards {
+            missing: missing.take(LISTED_MISSING).collect(),
+            total,
+            count,
+        });
     }
     if let Some(partial) = shards.iter().find(|s| s.identity.partial) {
         return Err(MergeError::Partial {
@@ -314,7 +536,16 @@ fn check_rows(
         controller: row.controller.to_string(),
         problem,
     };
-    for row in &shard.rows {
+    for (position, row) in shard.rows.iter().enumerate() {
+        if let Err(error) = row.check() {
+            return Err(MergeError::BadRow {
+                location: identity.source.clone(),
+                row: position as u64 + 1,
+                run_index: row.run_index,
+                controller: row.controller.to_string(),
+                error: Box::new(error),
+            });
+        }
         if row.run_index >= runs {
             return Err(foreign(
                 row,
