@@ -9,7 +9,7 @@
 //!
 //! Nothing a shard says is trusted before it is checked: its identity against the
 //! campaign's limits ([`super::limits`]) before anything is allocated by it, and every row
-//! against the row schema ([`RunRow::check`]). [`parse_runs_csv`] reads a shard's
+//! against the row schema ([`RunRow::check`]). [`super::parse_runs_csv`] reads a shard's
 //! `runs.csv` text with the same checks (the exact columns, a last line that ends, every
 //! row), naming the line and the column at fault, so that every front end (the CLI's
 //! `merge`, Python, Dask) refuses the same inputs with the same words.
@@ -17,7 +17,8 @@
 use super::limits::{
     check_runs, MAX_CONTROLLERS, MAX_CONTROLLER_LABEL_BYTES, MAX_RUNS, MAX_SHARDS,
 };
-use super::row::{RowError, RunRow, RUN_COLUMNS};
+use super::merge_error::MergeError;
+use super::row::RunRow;
 use super::seeds::run_seed;
 use super::shard::Shard;
 
@@ -67,153 +68,6 @@ pub struct MergedCampaign {
     pub rows: Vec<RunRow<'static>>,
     /// The shards' sources, by shard index (the first is shard 0).
     pub sources: Vec<String>,
-}
-
-/// Why shards cannot be merged into one campaign.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-pub enum MergeError {
-    /// Nothing to merge.
-    #[error("no shard to merge")]
-    NoShards,
-    /// Two shards flew different scenarios.
-    #[error(
-        "{other} flew another scenario than {first}: `{field}` is {other_value} there and \
-         {first_value} in {first}"
-    )]
-    DifferentScenario {
-        /// The first shard's source.
-        first: String,
-        /// The other shard's source.
-        other: String,
-        /// The first line that differs (a key of the scenario, or the line's text).
-        field: String,
-        /// That line in the first shard.
-        first_value: String,
-        /// That line in the other shard.
-        other_value: String,
-    },
-    /// A field that must agree between shards does not.
-    #[error("{other} is not a shard of the same campaign as {first}: `{field}` is {other_value} there and {first_value} in {first}")]
-    Different {
-        /// The field (`campaign_seed`, `requested_runs`, `controllers`, shard count).
-        field: &'static str,
-        /// The first shard's source.
-        first: String,
-        /// Its value there.
-        first_value: String,
-        /// The other shard's source.
-        other: String,
-        /// Its value there.
-        other_value: String,
-    },
-    /// A shard was stopped before its runs finished.
-    #[error("{location} is shard {shard} stopped before every run finished (`partial`: true); fly it again to merge it")]
-    Partial {
-        /// Where the shard comes from.
-        location: String,
-        /// The shard.
-        shard: Shard,
-    },
-    /// Two shards are the same one.
-    #[error("{first} and {other} are both shard {shard}: a shard can be merged once")]
-    Overlapping {
-        /// The shard.
-        shard: Shard,
-        /// The first source.
-        first: String,
-        /// The other source.
-        other: String,
-    },
-    /// Shards of the campaign are not there.
-    #[error("missing shard{} {}: a merge needs every shard", if *total == 1 { "" } else { "s" }, listed_missing(missing, *total, *count))]
-    MissingShards {
-        /// The first shards missing (K of K/M, from 0), at most ten.
-        missing: Vec<u64>,
-        /// How many are missing.
-        total: u64,
-        /// M.
-        count: u64,
-    },
-    /// A row that is not one of the shard's runs, or whose seed is not its run's.
-    #[error("{location} (shard {shard}): run {run_index} ({controller}) {problem}")]
-    ForeignRow {
-        /// Where the shard comes from.
-        location: String,
-        /// The shard.
-        shard: Shard,
-        /// The row's run index.
-        run_index: u64,
-        /// The row's controller.
-        controller: String,
-        /// What is wrong with it.
-        problem: String,
-    },
-    /// A shard's identity is beyond the campaign's limits or not one a campaign writes.
-    #[error("{location}: `{field}` is {value}: {problem}")]
-    BadIdentity {
-        /// Where the shard comes from.
-        location: String,
-        /// The field at fault (`requested_runs`, `controllers`, `shard`).
-        field: &'static str,
-        /// Its value.
-        value: String,
-        /// What is allowed.
-        problem: String,
-    },
-    /// A row no campaign can write (see [`RunRow::check`]).
-    #[error("{location}: row {row} (run {run_index}, {controller}): {error}")]
-    BadRow {
-        /// Where the shard comes from (its `runs.csv`).
-        location: String,
-        /// The row, from 1 (line `row + 1` of `runs.csv`, after its header).
-        row: u64,
-        /// The row's run index.
-        run_index: u64,
-        /// The row's controller.
-        controller: String,
-        /// The column at fault and why.
-        error: Box<RowError>,
-    },
-    /// `runs.csv` text that is not a campaign's table.
-    #[error("{location} line {line}: {problem}")]
-    RunsCsv {
-        /// Where the text comes from.
-        location: String,
-        /// The line at fault (the header is line 1).
-        line: u64,
-        /// What is wrong.
-        problem: String,
-    },
-    /// A shard lacks runs it should hold.
-    #[error("{location} (shard {shard}) holds {found} of its {expected} rows; the first missing is run {first_missing} ({controller}): is its runs.csv truncated?")]
-    MissingRuns {
-        /// Where the shard comes from.
-        location: String,
-        /// The shard.
-        shard: Shard,
-        /// Rows expected (runs × controllers).
-        expected: u64,
-        /// Rows found.
-        found: u64,
-        /// The first run missing.
-        first_missing: u64,
-        /// Its controller.
-        controller: String,
-    },
-}
-
-/// The missing shards in words: the first ten, and how many more.
-fn listed_missing(missing: &[u64], total: u64, count: u64) -> String {
-    let mut text = missing
-        .iter()
-        .map(|k| format!("{k}/{count}"))
-        .collect::<Vec<_>>()
-        .join(", ");
-    let more = total.saturating_sub(missing.len() as u64);
-    if more > 0 {
-        text.push_str(&format!(" and {more} more"));
-    }
-    text
 }
 
 /// Checks a shard's identity against the campaign's limits, before anything is allocated
@@ -273,98 +127,6 @@ fn check_identity(identity: &ShardIdentity) -> Result<(), MergeError> {
         }
     }
     Ok(())
-}
-
-/// Reads the rows of a shard's `runs.csv` text (`location` names it in messages):
-/// exactly the columns of [`RUN_COLUMNS`] in order, a last line that ends (a file cut
-/// short is refused, even inside a row's text), and every row one a campaign can write
-/// ([`RunRow::check`]). Every error names the line and the column at fault.
-pub fn parse_runs_csv(location: &str, text: &str) -> Result<Vec<RunRow<'static>>, MergeError> {
-    let at = |line: u64, problem: String| MergeError::RunsCsv {
-        location: location.to_owned(),
-        line,
-        problem,
-    };
-    let header = text
-        .lines()
-        .next()
-        .unwrap_or_default()
-        .trim_end_matches('\r');
-    let columns: Vec<&str> = header.split(',').collect();
-    if columns != RUN_COLUMNS {
-        let position = RUN_COLUMNS
-            .iter()
-            .zip(&columns)
-            .position(|(a, b)| a != b)
-            .unwrap_or(columns.len().min(RUN_COLUMNS.len()));
-        let problem = match (RUN_COLUMNS.get(position), columns.get(position)) {
-            (Some(expected), Some(found)) => {
-                format!(
-                    "column {} is `{found}` where a campaign writes `{expected}`",
-                    position + 1
-                )
-            }
-            (Some(expected), None) => format!("the column `{expected}` is missing"),
-            (None, Some(found)) => format!("`{found}` is not a column of a campaign"),
-            (None, None) => "no header".to_owned(),
-        };
-        return Err(at(
-            1,
-            format!("{problem} (the header is `{}`)", RUN_COLUMNS.join(",")),
-        ));
-    }
-    if !text.ends_with('\n') {
-        let lines = text.lines().count() as u64;
-        return Err(at(
-            lines,
-            "the last line does not end: the file is cut short (truncated?)".to_owned(),
-        ));
-    }
-    let most_rows = MAX_RUNS * MAX_CONTROLLERS as u64;
-    let mut reader = csv::ReaderBuilder::new()
-        .has_headers(true)
-        .from_reader(text.as_bytes());
-    let mut rows = Vec::new();
-    for (position, row) in reader.deserialize::<RunRow<'static>>().enumerate() {
-        let number = position as u64 + 1;
-        if number > most_rows {
-            return Err(at(
-                number + 1,
-                format!("more than {most_rows} rows: more than a campaign has"),
-            ));
-        }
-        let row = row.map_err(|error| {
-            let line = error.position().map_or(number + 1, |p| p.line());
-            let column = match error.kind() {
-                csv::ErrorKind::Deserialize { err, .. } => err
-                    .field()
-                    .and_then(|f| RUN_COLUMNS.get(f as usize))
-                    .map(|c| format!("`{c}`: "))
-                    .unwrap_or_default(),
-                _ => String::new(),
-            };
-            let message = match error.kind() {
-                csv::ErrorKind::Deserialize { err, .. } => err.kind().to_string(),
-                csv::ErrorKind::UnequalLengths { len, .. } => format!(
-                    "{len} fields where a campaign writes {}: is the row cut short?",
-                    RUN_COLUMNS.len()
-                ),
-                _ => error.to_string(),
-            };
-            at(line, format!("{column}{message}"))
-        })?;
-        if let Err(error) = row.check() {
-            return Err(MergeError::BadRow {
-                location: location.to_owned(),
-                row: number,
-                run_index: row.run_index,
-                controller: row.controller.to_string(),
-                error: Box::new(error),
-            });
-        }
-        rows.push(row);
-    }
-    Ok(rows)
 }
 
 /// The first line where two scenario texts differ: (key or line, first value, other).

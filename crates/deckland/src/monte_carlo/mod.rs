@@ -31,8 +31,10 @@
 mod campaign;
 mod limits;
 mod merge;
+mod merge_error;
 mod rare_events;
 mod row;
+mod runs_csv;
 mod seeds;
 mod shard;
 mod statistics;
@@ -46,14 +48,14 @@ pub use limits::{
     check_runs, LimitError, MAX_CONTROLLERS, MAX_CONTROLLER_LABEL_BYTES, MAX_RUNS,
     MAX_RUNS_CSV_BYTES, MAX_SHARDS, MAX_SUMMARY_JSON_BYTES,
 };
-pub use merge::{
-    merge_shards, parse_runs_csv, MergeError, MergedCampaign, ShardIdentity, ShardRows,
-};
+pub use merge::{merge_shards, MergedCampaign, ShardIdentity, ShardRows};
+pub use merge_error::MergeError;
 pub use rare_events::{
     binomial_cdf, regularized_incomplete_beta, runs_to_show_below, upper_bound, RareEventTarget,
     RunsNeeded, DEFAULT_TARGET_RATE, UPPER_BOUND_CONFIDENCE, UPPER_BOUND_METHOD,
 };
 pub use row::{RowError, RunRow, CAMPAIGN_OUTCOMES, RANGES, RUN_COLUMNS};
+pub use runs_csv::parse_runs_csv;
 pub use seeds::{run_seed, splitmix64_mix, SPLITMIX64_GAMMA};
 pub use shard::{Shard, ShardError, SHARD_SCHEME};
 pub use statistics::{
