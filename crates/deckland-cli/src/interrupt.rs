@@ -6,13 +6,18 @@
 //! its finished runs) asks for [`graceful_stop`] instead: the first signal only sets the
 //! flag it returns, a second one exits at once (after the same clean-up).
 //!
-//! There is no window in which a temporary file can be left: every temporary file is
-//! created ([`create_temporary_file`]) and renamed into place or removed
-//! ([`finish_temporary_file`], [`discard_temporary_file`]) while holding the lock of the
-//! list of temporary files, and the signal handler takes that lock, removes every file
-//! on the list and exits *without releasing it*. A file is therefore either on the list
-//! when the handler runs (and removed), or not yet created (and never will be: its
-//! creation waits for the lock until the process has exited), or already renamed.
+//! There is no window in which a temporary file can be left. The signal handler takes
+//! the lock of the list of temporary files, removes every file on the list and exits
+//! *without releasing it*; every temporary file is created and renamed into place (or
+//! removed) while holding that lock. A file written through its handle
+//! ([`create_temporary_file`], [`finish_temporary_file`]) is on the list from its
+//! creation to its renaming, so it is either removed by the handler or not yet created
+//! (and never will be: its creation waits for the lock until the process has exited);
+//! writing on after the handler removed it only fills an unlinked file. A file that a
+//! writer opens by its path ([`write_by_path`]: plots, Parquet, CSV writers) is written
+//! wholly under the lock, because such a writer could re-create the file after the
+//! handler removed it: a signal meanwhile waits for that one file to be renamed into
+//! place, then exits.
 
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -76,6 +81,30 @@ pub fn create_temporary_file(path: &Path) -> std::io::Result<fs::File> {
         .open(path)?;
     files.push(path.to_path_buf());
     Ok(file)
+}
+
+/// Creates the temporary file `temporary` new (as [`create_temporary_file`]), lets
+/// `fill` write it by its path, flushes it and renames it over `final_path`, all under
+/// the lock of the list (see the module's documentation); removes it if anything fails.
+pub fn write_by_path(
+    temporary: &Path,
+    final_path: &Path,
+    fill: impl FnOnce(&Path) -> anyhow::Result<()>,
+) -> anyhow::Result<()> {
+    let _files = temporary_files();
+    fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(temporary)?;
+    let result = fill(temporary).and_then(|()| {
+        fs::File::open(temporary)?.sync_all()?;
+        fs::rename(temporary, final_path)?;
+        Ok(())
+    });
+    if result.is_err() {
+        let _ = fs::remove_file(temporary);
+    }
+    result
 }
 
 /// Renames the temporary file `temporary` over `final_path` and takes it off the list.

@@ -256,19 +256,20 @@ impl OutputDir {
 
     /// Writes `bytes` to `file_name` in the folder atomically; returns the final path.
     pub fn write_bytes(&self, file_name: &str, bytes: &[u8]) -> Result<PathBuf> {
-        self.write_with(file_name, |temporary| {
-            let mut file = fs::OpenOptions::new().write(true).open(temporary)?;
-            file.write_all(bytes)?;
-            Ok(())
-        })
+        let final_path = self.path.join(file_name);
+        self.record_written(file_name)?;
+        let temporary = self.path.join(temporary_name(file_name));
+        write_through_handle(&temporary, &final_path, bytes, true)
+            .with_context(|| format!("cannot write {}", final_path.display()))?;
+        Ok(final_path)
     }
 
     /// Lets `write` fill `file_name`'s content at a temporary path in the folder (a new,
     /// empty file of ours, with the same extension, for writers that choose the format by
     /// it), then flushes it to disk and renames it into place; the temporary file is
-    /// removed if `write` fails, and by the interrupt handler if the command is
-    /// interrupted meanwhile. The name is put on the folder's list first, so that a
-    /// temporary file a killed run leaves is known as ours.
+    /// removed if `write` fails. An interrupt meanwhile waits for the rename
+    /// ([`crate::interrupt::write_by_path`]). The name is put on the folder's list first,
+    /// so that a temporary file a killed run leaves is known as ours.
     pub fn write_with(
         &self,
         file_name: &str,
@@ -277,17 +278,8 @@ impl OutputDir {
         let final_path = self.path.join(file_name);
         self.record_written(file_name)?;
         let temporary = self.path.join(temporary_name(file_name));
-        crate::interrupt::create_temporary_file(&temporary)
-            .with_context(|| format!("cannot create the temporary file {}", temporary.display()))?;
-        let result = write(&temporary).and_then(|()| {
-            fs::File::open(&temporary)?.sync_all()?;
-            crate::interrupt::finish_temporary_file(&temporary, &final_path)?;
-            Ok(())
-        });
-        if result.is_err() {
-            crate::interrupt::discard_temporary_file(&temporary);
-        }
-        result.with_context(|| format!("cannot write {}", final_path.display()))?;
+        crate::interrupt::write_by_path(&temporary, &final_path, write)
+            .with_context(|| format!("cannot write {}", final_path.display()))?;
         Ok(final_path)
     }
 
@@ -319,16 +311,32 @@ impl OutputDir {
         }
         let final_path = self.path.join(MANIFEST);
         let temporary = self.path.join(temporary_name(MANIFEST));
-        let result = crate::interrupt::create_temporary_file(&temporary).and_then(|mut file| {
-            file.write_all(text.as_bytes())?;
-            drop(file);
-            crate::interrupt::finish_temporary_file(&temporary, &final_path)
-        });
-        if result.is_err() {
-            crate::interrupt::discard_temporary_file(&temporary);
-        }
-        result.with_context(|| format!("cannot write {}", final_path.display()))
+        write_through_handle(&temporary, &final_path, text.as_bytes(), false)
+            .with_context(|| format!("cannot write {}", final_path.display()))
     }
+}
+
+/// Writes `bytes` to the new temporary file `temporary` through its handle (flushed to
+/// disk if `sync`) and renames it over `final_path`; removes it if anything fails. An
+/// interrupt removes it meanwhile ([`crate::interrupt`]).
+fn write_through_handle(
+    temporary: &Path,
+    final_path: &Path,
+    bytes: &[u8],
+    sync: bool,
+) -> std::io::Result<()> {
+    let mut file = crate::interrupt::create_temporary_file(temporary)?;
+    let result = file
+        .write_all(bytes)
+        .and_then(|()| if sync { file.sync_all() } else { Ok(()) })
+        .and_then(|()| {
+            drop(file);
+            crate::interrupt::finish_temporary_file(temporary, final_path)
+        });
+    if result.is_err() {
+        crate::interrupt::discard_temporary_file(temporary);
+    }
+    result
 }
 
 /// A fresh temporary name for `file_name`: `.partial-<pid>-<token>.deckland-<file_name>`,
