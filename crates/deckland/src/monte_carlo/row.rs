@@ -276,6 +276,9 @@ impl<'a> RunRow<'a> {
         }
         for ((column, low, high), value) in RANGES.iter().zip(self.numbers()) {
             if let Some(value) = value {
+                if !value.is_finite() {
+                    return Err(error(column, value.to_string(), "not a finite number"));
+                }
                 if !(value >= *low && value <= *high) {
                     return Err(error(
                         column,
