@@ -277,19 +277,19 @@ impl<'a> RunRow<'a> {
         for ((column, low, high), value) in RANGES.iter().zip(self.numbers()) {
             if let Some(value) = value {
                 if !value.is_finite() {
-                    return Err(error(column, value.to_string(), "not a finite number"));
+                    return Err(error(column, format!("{value:?}"), "not a finite number"));
                 }
                 if !(value >= *low && value <= *high) {
                     return Err(error(
                         column,
-                        value.to_string(),
+                        format!("{value:?}"),
                         &format!("outside its physical range {low} to {high}"),
                     ));
                 }
             }
         }
         let shown =
-            |value: Option<f64>| value.map_or_else(|| "empty".to_owned(), |v| v.to_string());
+            |value: Option<f64>| value.map_or_else(|| "empty".to_owned(), |v| format!("{v:?}"));
         let trap = outcome == Outcome::Trap.name();
         let hard_landing = outcome == Outcome::HardLanding.name();
         match self.wire {
