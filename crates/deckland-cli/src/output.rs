@@ -10,12 +10,20 @@
 //! no list (`/dev`, a home folder, results of another tool) is refused even with
 //! `--force`.
 //!
-//! Every file is written atomically: to a temporary file `.partial-<pid>-<name>` in the
-//! same folder, flushed to disk, then renamed over the final name, so a crash never
-//! leaves a half-written file under a result's name. A temporary file left by a killed
-//! run (SIGKILL cannot be caught) is removed by the next run that prepares an output
-//! folder beside it ([`remove_stale_temporary_files`]); Ctrl-C and SIGTERM remove the
-//! current one before exiting ([`crate::interrupt`]).
+//! Every file is written atomically: to a temporary file
+//! `.partial-<pid>-<token>.deckland-<name>` in the same folder (`<token>` 16 random hex
+//! digits), flushed to disk, then renamed over the final name, so a crash never leaves a
+//! half-written file under a result's name. The temporary file is created new
+//! (`O_CREAT | O_EXCL`): a file or a symbolic link planted under its name makes the write
+//! fail, and is never followed. The name of every file is put on the folder's list
+//! before it is written.
+//!
+//! A temporary file left by a killed run (SIGKILL cannot be caught) is removed by the
+//! next run that uses the folder ([`remove_stale_temporary_files`]), and only if it is
+//! ours: named exactly as above, for a file on the folder's list, in a folder with our
+//! list, and its process gone (or older than an hour). A folder that is refused is left
+//! exactly as it was. Ctrl-C and SIGTERM remove the current temporary file before
+//! exiting, with no window ([`crate::interrupt`]).
 //!
 //! Standard output is written with [`print_stdout`] (through `outln!` and `out!`), which
 //! returns an error instead of panicking: a closed pipe ends the command quietly (see
@@ -38,6 +46,12 @@ pub const MANIFEST: &str = ".deckland-outputs";
 
 /// Prefix of the temporary files of atomic writes.
 const TEMPORARY_PREFIX: &str = ".partial-";
+
+/// What separates a temporary file's process and token from the final name.
+const TEMPORARY_MARK: &str = ".deckland-";
+
+/// Largest manifest read back (bytes): one line per file written.
+const MAX_MANIFEST_BYTES: u64 = 1024 * 1024;
 
 /// A temporary file older than this is stale whatever its process (s): a write takes
 /// seconds, never an hour.
@@ -153,14 +167,17 @@ impl OutputDir {
             bail!("--out {shown} exists and is not a folder");
         }
         check_owned_by_user(path, &metadata)?;
-        remove_stale_temporary_files(path);
+        // Nothing is changed in the folder until it is accepted.
+        let stale = stale_temporary_files(path);
         let entries: Vec<String> = fs::read_dir(path)
             .with_context(|| format!("cannot read output folder {shown}"))?
             .filter_map(|entry| entry.ok())
             .map(|entry| entry.file_name().to_string_lossy().into_owned())
+            .filter(|name| !stale.iter().any(|s| s.file_name() == Some(name.as_ref())))
             .collect();
         // Empty, or holding only the list of a run that wrote nothing: use it.
         if entries.iter().all(|name| name == MANIFEST) {
+            remove_files(&stale);
             return Ok(Self::new(command, path.to_path_buf()));
         }
         let Some((previous_command, previous_files)) = read_manifest(path) else {
@@ -176,6 +193,7 @@ impl OutputDir {
                  {previous_command}`; choose another with --out or pass --force to replace them"
             );
         }
+        remove_files(&stale);
         // Remove the earlier run's own files (and only those): its results must not stay
         // mixed with the new ones.
         for name in previous_files.iter().filter(|n| is_plain_file_name(n)) {
@@ -238,39 +256,30 @@ impl OutputDir {
 
     /// Writes `bytes` to `file_name` in the folder atomically; returns the final path.
     pub fn write_bytes(&self, file_name: &str, bytes: &[u8]) -> Result<PathBuf> {
-        self.write_with(file_name, |temporary| {
-            let mut file = fs::File::create(temporary)?;
-            file.write_all(bytes)?;
-            Ok(())
-        })
+        let final_path = self.path.join(file_name);
+        self.record_written(file_name)?;
+        let temporary = self.path.join(temporary_name(file_name));
+        write_through_handle(&temporary, &final_path, bytes, true)
+            .with_context(|| format!("cannot write {}", final_path.display()))?;
+        Ok(final_path)
     }
 
-    /// Lets `write` create `file_name`'s content at a temporary path in the folder (with the
-    /// same extension, for writers that choose the format by it), then flushes it to disk
-    /// and renames it into place; the temporary file is removed if `write` fails, and by
-    /// the interrupt handler if the command is interrupted meanwhile.
+    /// Lets `write` fill `file_name`'s content at a temporary path in the folder (a new,
+    /// empty file of ours, with the same extension, for writers that choose the format by
+    /// it), then flushes it to disk and renames it into place; the temporary file is
+    /// removed if `write` fails. An interrupt meanwhile waits for the rename
+    /// ([`crate::interrupt::write_by_path`]). The name is put on the folder's list first,
+    /// so that a temporary file a killed run leaves is known as ours.
     pub fn write_with(
         &self,
         file_name: &str,
         write: impl FnOnce(&Path) -> Result<()>,
     ) -> Result<PathBuf> {
         let final_path = self.path.join(file_name);
-        let temporary = self.path.join(format!(
-            "{TEMPORARY_PREFIX}{}-{file_name}",
-            std::process::id()
-        ));
-        crate::interrupt::register_temporary_file(&temporary);
-        let result = write(&temporary).and_then(|()| {
-            fs::File::open(&temporary)?.sync_all()?;
-            fs::rename(&temporary, &final_path)?;
-            Ok(())
-        });
-        if result.is_err() {
-            let _ = fs::remove_file(&temporary);
-        }
-        crate::interrupt::unregister_temporary_file(&temporary);
-        result.with_context(|| format!("cannot write {}", final_path.display()))?;
         self.record_written(file_name)?;
+        let temporary = self.path.join(temporary_name(file_name));
+        crate::interrupt::write_by_path(&temporary, &final_path, write)
+            .with_context(|| format!("cannot write {}", final_path.display()))?;
         Ok(final_path)
     }
 
@@ -301,23 +310,88 @@ impl OutputDir {
             text.push('\n');
         }
         let final_path = self.path.join(MANIFEST);
-        let temporary = self.path.join(format!(
-            "{TEMPORARY_PREFIX}{}-{MANIFEST}",
-            std::process::id()
-        ));
-        crate::interrupt::register_temporary_file(&temporary);
-        let result = fs::write(&temporary, text).and_then(|()| fs::rename(&temporary, &final_path));
-        if result.is_err() {
-            let _ = fs::remove_file(&temporary);
-        }
-        crate::interrupt::unregister_temporary_file(&temporary);
-        result.with_context(|| format!("cannot write {}", final_path.display()))
+        let temporary = self.path.join(temporary_name(MANIFEST));
+        write_through_handle(&temporary, &final_path, text.as_bytes(), false)
+            .with_context(|| format!("cannot write {}", final_path.display()))
     }
 }
 
-/// The command and the files listed in `folder`'s manifest, if it has one.
+/// Writes `bytes` to the new temporary file `temporary` through its handle (flushed to
+/// disk if `sync`) and renames it over `final_path`; removes it if anything fails. An
+/// interrupt removes it meanwhile ([`crate::interrupt`]).
+fn write_through_handle(
+    temporary: &Path,
+    final_path: &Path,
+    bytes: &[u8],
+    sync: bool,
+) -> std::io::Result<()> {
+    let mut file = crate::interrupt::create_temporary_file(temporary)?;
+    let result = file
+        .write_all(bytes)
+        .and_then(|()| if sync { file.sync_all() } else { Ok(()) })
+        .and_then(|()| {
+            drop(file);
+            crate::interrupt::finish_temporary_file(temporary, final_path)
+        });
+    if result.is_err() {
+        crate::interrupt::discard_temporary_file(temporary);
+    }
+    result
+}
+
+/// A fresh temporary name for `file_name`: `.partial-<pid>-<token>.deckland-<file_name>`,
+/// with 16 random hex digits (std's per-process random hash keys, a counter and the
+/// clock), so that no planted file or link can be expected under it.
+fn temporary_name(file_name: &str) -> String {
+    use std::hash::{BuildHasher, Hasher};
+    use std::sync::atomic::{AtomicU64, Ordering};
+    static COUNTER: AtomicU64 = AtomicU64::new(0);
+    let mut hasher = std::collections::hash_map::RandomState::new().build_hasher();
+    hasher.write_u64(COUNTER.fetch_add(1, Ordering::Relaxed));
+    let nanos = SystemTime::now()
+        .duration_since(UNIX_EPOCH)
+        .map_or(0, |d| d.as_nanos());
+    hasher.write_u128(nanos);
+    format!(
+        "{TEMPORARY_PREFIX}{}-{:016x}{TEMPORARY_MARK}{file_name}",
+        std::process::id(),
+        hasher.finish()
+    )
+}
+
+/// The process id and the final name of the temporary file `name`, if it is named as
+/// ours ([`temporary_name`]).
+fn parse_temporary_name(name: &str) -> Option<(u32, &str)> {
+    let rest = name.strip_prefix(TEMPORARY_PREFIX)?;
+    let (pid, rest) = rest.split_once('-')?;
+    if pid.is_empty() || !pid.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    let token = rest.get(..16)?;
+    let file_name = rest.get(16..)?.strip_prefix(TEMPORARY_MARK)?;
+    if !token.bytes().all(|b| b.is_ascii_hexdigit()) || file_name.is_empty() {
+        return None;
+    }
+    Some((pid.parse().ok()?, file_name))
+}
+
+/// Removes `files`, ignoring failures (a file that cannot be removed is no worse than
+/// before).
+fn remove_files(files: &[PathBuf]) {
+    for file in files {
+        let _ = fs::remove_file(file);
+    }
+}
+
+/// The command and the files listed in `folder`'s manifest, if it has one (a regular
+/// file of bounded size).
 fn read_manifest(folder: &Path) -> Option<(String, Vec<String>)> {
-    let text = fs::read_to_string(folder.join(MANIFEST)).ok()?;
+    let text = deckland::scenario::read_text_file(
+        &folder.join(MANIFEST),
+        MAX_MANIFEST_BYTES,
+        "list of deckland's files",
+    )
+    .ok()?;
     let mut lines = text.lines();
     let command = lines.next()?.strip_prefix("deckland ")?.to_owned();
     Some((command, lines.map(str::to_owned).collect()))
@@ -356,32 +430,51 @@ fn check_owned_by_user(_path: &Path, _metadata: &fs::Metadata) -> Result<()> {
     Ok(())
 }
 
-/// Removes the temporary files in `folder` left by runs that were killed: those whose
-/// process no longer runs, and any older than an hour. Failures are ignored (a file that
-/// cannot be removed is no worse than before).
-pub fn remove_stale_temporary_files(folder: &Path) {
-    let Ok(entries) = fs::read_dir(folder) else {
-        return;
+/// The temporary files in `folder` that runs killed earlier left, and only those that
+/// are ours: named as ours ([`temporary_name`]), for a file on the folder's list (or
+/// the list itself), not a folder, and whose process no longer runs or that are older
+/// than an hour. A folder without our list has none.
+fn stale_temporary_files(folder: &Path) -> Vec<PathBuf> {
+    let Some((_, listed)) = read_manifest(folder) else {
+        return Vec::new();
     };
+    let Ok(entries) = fs::read_dir(folder) else {
+        return Vec::new();
+    };
+    let mut stale = Vec::new();
     for entry in entries.filter_map(|e| e.ok()) {
         let name = entry.file_name().to_string_lossy().into_owned();
-        let Some(rest) = name.strip_prefix(TEMPORARY_PREFIX) else {
+        let Some((pid, file_name)) = parse_temporary_name(&name) else {
             continue;
         };
-        let pid = rest
-            .split_once('-')
-            .and_then(|(pid, _)| pid.parse::<u32>().ok());
-        let old = entry
-            .metadata()
-            .and_then(|m| m.modified())
+        if file_name != MANIFEST && !listed.iter().any(|l| l == file_name) {
+            continue;
+        }
+        // The entry itself, not what a link points to: a link is removed, never followed.
+        let Ok(metadata) = fs::symlink_metadata(entry.path()) else {
+            continue;
+        };
+        if metadata.is_dir() {
+            continue;
+        }
+        let old = metadata
+            .modified()
             .ok()
             .and_then(|modified| modified.elapsed().ok())
             .is_some_and(|age| age > STALE_AFTER);
-        let orphaned = pid.is_none_or(|pid| pid != std::process::id() && !process_is_running(pid));
+        let orphaned = pid != std::process::id() && !process_is_running(pid);
         if old || orphaned {
-            let _ = fs::remove_file(entry.path());
+            stale.push(entry.path());
         }
     }
+    stale
+}
+
+/// Removes the temporary files in `folder` left by runs that were killed, if they are
+/// ours ([`stale_temporary_files`]). Failures are ignored (a file that cannot be removed
+/// is no worse than before).
+pub fn remove_stale_temporary_files(folder: &Path) {
+    remove_files(&stale_temporary_files(folder));
 }
 
 /// Whether a process `pid` runs (signal 0 probes without sending anything).
@@ -545,18 +638,110 @@ mod tests {
     #[test]
     fn regression_stale_temporary_files_are_removed_at_the_next_run() {
         let path = scratch("stale");
-        fs::create_dir_all(&path).expect("folder");
+        let first = OutputDir::prepare("test", Some(&path), false).expect("new folder");
+        first.write_bytes("approach.csv", b"x\n").expect("written");
         // A process id that cannot run (above the kernel's maximum of 2^22).
-        let dead = path.join(format!("{TEMPORARY_PREFIX}4294967-approach.csv"));
-        let unparsable = path.join(format!("{TEMPORARY_PREFIX}x-approach.csv"));
-        let live = path.join(format!("{TEMPORARY_PREFIX}{}-a.csv", std::process::id()));
-        for file in [&dead, &unparsable, &live] {
+        let ours = |pid: u32, name: &str| {
+            path.join(format!(
+                "{TEMPORARY_PREFIX}{pid}-0123456789abcdef{TEMPORARY_MARK}{name}"
+            ))
+        };
+        let dead = ours(4_294_967, "approach.csv");
+        let dead_manifest = ours(4_294_967, MANIFEST);
+        let live = ours(std::process::id(), "approach.csv");
+        let unlisted = ours(4_294_967, "notes.txt");
+        for file in [&dead, &dead_manifest, &live, &unlisted] {
             fs::write(file, b"half").expect("written");
         }
         remove_stale_temporary_files(&path);
-        assert!(!dead.exists() && !unparsable.exists());
+        assert!(!dead.exists() && !dead_manifest.exists());
         assert!(live.exists(), "a running process's file is kept");
+        assert!(
+            unlisted.exists(),
+            "a file for a name not on the list is not ours"
+        );
         let _ = fs::remove_dir_all(&path);
+    }
+
+    /// Regression (issue 28, D6): a user's `.partial-notes.txt` was deleted, without
+    /// `--force`, in a folder that was then refused.
+    #[test]
+    fn regression_a_refused_folder_is_left_exactly_as_it_was() {
+        let path = scratch("refused");
+        fs::create_dir_all(&path).expect("folder");
+        let user_files = [
+            ".partial-notes.txt",
+            ".partial-1-approach.csv",
+            ".partial-4294967-0123456789abcdef.deckland-approach.csv",
+            "t",
+        ];
+        for name in user_files {
+            fs::write(path.join(name), b"mine").expect("user file");
+        }
+        for force in [false, true] {
+            let error = OutputDir::prepare("land", Some(&path), force).expect_err("refused");
+            assert!(error.to_string().contains("did not write"), "{error}");
+            assert_eq!(names(&path), {
+                let mut sorted = user_files.map(str::to_owned).to_vec();
+                sorted.sort();
+                sorted
+            });
+        }
+        // With our list but a run of another command, without --force: refused, untouched.
+        fs::write(path.join(MANIFEST), "deckland campaign\nrun.csv\n").expect("list");
+        let before = names(&path);
+        assert!(OutputDir::prepare("land", Some(&path), false).is_err());
+        assert_eq!(names(&path), before);
+        let _ = fs::remove_dir_all(&path);
+    }
+
+    /// Regression (issue 28, D7): a planted link named as a temporary file redirected a
+    /// write outside the folder.
+    #[cfg(unix)]
+    #[test]
+    fn regression_temporary_files_never_follow_a_planted_link() {
+        let path = scratch("link");
+        fs::create_dir_all(&path).expect("folder");
+        let victim = scratch("link-victim");
+        fs::write(&victim, b"precious").expect("victim");
+        let link = path.join(temporary_name("summary.json"));
+        std::os::unix::fs::symlink(&victim, &link).expect("link");
+        let error = crate::interrupt::create_temporary_file(&link).expect_err("refused");
+        assert_eq!(error.kind(), std::io::ErrorKind::AlreadyExists);
+        assert_eq!(fs::read(&victim).expect("victim"), b"precious");
+        // A dangling link is not followed either (O_EXCL does not create its target).
+        let dangling = path.join(temporary_name("runs.csv"));
+        let target = scratch("link-target");
+        std::os::unix::fs::symlink(&target, &dangling).expect("link");
+        assert!(crate::interrupt::create_temporary_file(&dangling).is_err());
+        assert!(!target.exists());
+        // Names are fresh on every call: a link planted under one is never met again.
+        assert_ne!(temporary_name("a.csv"), temporary_name("a.csv"));
+        let _ = fs::remove_dir_all(&path);
+        let _ = fs::remove_file(&victim);
+    }
+
+    #[test]
+    fn temporary_names_read_back_and_user_names_do_not() {
+        let name = temporary_name("touchdown_dispersion.png");
+        assert_eq!(
+            parse_temporary_name(&name),
+            Some((std::process::id(), "touchdown_dispersion.png"))
+        );
+        assert!(
+            name.ends_with(".png"),
+            "the writer chooses the format by it"
+        );
+        for user in [
+            ".partial-notes.txt",
+            ".partial-12-approach.csv",
+            ".partial-12-0123456789abcdeg.deckland-a.csv",
+            ".partial-x-0123456789abcdef.deckland-a.csv",
+            ".partial-12-0123456789abcdef.deckland-",
+            "partial-12-0123456789abcdef.deckland-a.csv",
+        ] {
+            assert_eq!(parse_temporary_name(user), None, "{user}");
+        }
     }
 
     #[test]

@@ -434,8 +434,10 @@ fn regression_kills_leave_no_temporary_files() {
     assert!(temporary_files(&out).is_empty());
 
     // What a killed run left (its process gone) is removed by the next run, in an
-    // --out folder and in the default runs/ folders.
-    let stale = ".partial-4194305-approach.csv"; // above Linux's largest process id
+    // --out folder and in the default runs/ folders: a temporary file named as ours, for
+    // a file on the folder's list (issue 28: nothing else is ever removed).
+    // 4194305 is above Linux's largest process id.
+    let stale = ".partial-4194305-0123456789abcdef.deckland-runs.csv";
     fs::write(out.join(stale), b"half").unwrap();
     let again = deckland([
         "environment",
@@ -449,6 +451,11 @@ fn regression_kills_leave_no_temporary_files() {
     assert!(temporary_files(&out).is_empty());
     let old_run = dir.join("runs").join("land-20250101T000000Z");
     fs::create_dir_all(&old_run).unwrap();
+    fs::write(
+        old_run.join(".deckland-outputs"),
+        "deckland land\nruns.csv\n",
+    )
+    .unwrap();
     fs::write(old_run.join(stale), b"half").unwrap();
     let default = deckland_in(&dir, ["environment", "--seconds", "0.1"]);
     assert!(default.status.success(), "{default:?}");

@@ -206,7 +206,7 @@ fn a_merge_refuses_shards_of_other_campaigns_missing_overlapping_or_unfinished()
     writer.flush().unwrap();
     refused(
         &[&zero, &edited],
-        "`end_time_s` is NaN, not a finite number",
+        "`end_time_s` is NaN: not a finite number",
     );
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -120,6 +120,7 @@ fn a_merge_refuses_shards_that_do_not_belong_together() {
         error,
         MergeError::MissingShards {
             missing: vec![1],
+            total: 1,
             count: 3
         }
     );

@@ -150,8 +150,12 @@ impl BaseScenarioArgs {
 /// line and the field.
 pub fn load_scenario_file(path: &std::path::Path) -> anyhow::Result<Scenario> {
     use anyhow::Context;
-    let text = std::fs::read_to_string(path)
-        .with_context(|| format!("cannot read the scenario file {}", path.display()))?;
+    let text = deckland::scenario::read_text_file(
+        path,
+        deckland::scenario::MAX_SCENARIO_FILE_BYTES,
+        "scenario file",
+    )
+    .with_context(|| format!("cannot read the scenario file {}", path.display()))?;
     Ok(deckland::scenario::load_scenario(
         &text,
         &path.display().to_string(),

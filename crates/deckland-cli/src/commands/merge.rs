@@ -13,6 +13,12 @@
 //!
 //! A folder without `summary.json` is a shard that never finished (killed before writing
 //! its results): refused, as a partial shard is.
+//!
+//! Nothing in a shard folder is trusted: its files are read as regular files only and
+//! with a size limit, its identity is checked against the campaign's limits (runs,
+//! shards, controllers) and every row of `runs.csv` against the row schema of the library
+//! (`parse_runs_csv`): an edited or damaged shard is refused, naming the file, the line
+//! and the column, before any statistic or plot is computed.
 
 use super::campaign::report::{self, CampaignFolder, CampaignReport};
 use super::common::{load_scenario_file, OutputArgs};
@@ -20,10 +26,10 @@ use crate::output::OutputDir;
 use anyhow::{anyhow, bail, Context, Result};
 use clap::Args;
 use deckland::monte_carlo::{
-    merge_shards, CampaignSummary, RunRow, Shard, ShardIdentity, ShardRows, DEFAULT_TARGET_RATE,
-    SHARD_SCHEME,
+    merge_shards, parse_runs_csv, CampaignSummary, Shard, ShardIdentity, ShardRows,
+    DEFAULT_TARGET_RATE, MAX_RUNS_CSV_BYTES, MAX_SUMMARY_JSON_BYTES, SHARD_SCHEME,
 };
-use deckland::recording::{Cell, Columns};
+use deckland::scenario::{read_text_file, MAX_SCENARIO_FILE_BYTES};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -77,8 +83,11 @@ fn read_shard(folder: &Path) -> Result<ShardFolder> {
              finished (stopped before writing its results); fly it again to merge it"
         );
     }
-    let text = std::fs::read_to_string(&summary_path)
-        .with_context(|| format!("cannot read {}", summary_path.display()))?;
+    let text = read_text_file(
+        &summary_path,
+        MAX_SUMMARY_JSON_BYTES,
+        "shard's summary.json",
+    )?;
     let summary: Value = serde_json::from_str(&text)
         .with_context(|| format!("{} is not JSON", summary_path.display()))?;
     let file = summary_path.as_path();
@@ -111,19 +120,10 @@ fn read_shard(folder: &Path) -> Result<ShardFolder> {
         .unwrap_or_default()
         .to_owned();
     let scenario_path = folder.join("scenario.toml");
-    let scenario_toml = std::fs::read_to_string(&scenario_path)
-        .with_context(|| format!("cannot read {}", scenario_path.display()))?;
+    let scenario_toml = read_text_file(&scenario_path, MAX_SCENARIO_FILE_BYTES, "scenario file")?;
     let runs_path = folder.join("runs.csv");
-    let mut reader = csv::Reader::from_path(&runs_path)
-        .with_context(|| format!("cannot read {}", runs_path.display()))?;
-    let rows = reader
-        .deserialize::<RunRow<'static>>()
-        .enumerate()
-        .map(|(line, row)| {
-            row.with_context(|| format!("{} line {}", runs_path.display(), line + 2))
-        })
-        .collect::<Result<Vec<_>>>()?;
-    check_finite(&rows, &runs_path)?;
+    let runs_text = read_text_file(&runs_path, MAX_RUNS_CSV_BYTES, "shard's runs.csv")?;
+    let rows = parse_runs_csv(&runs_path.display().to_string(), &runs_text)?;
     Ok(ShardFolder {
         rows: ShardRows {
             identity: ShardIdentity {
@@ -139,30 +139,6 @@ fn read_shard(folder: &Path) -> Result<ShardFolder> {
         },
         scenario_file,
     })
-}
-
-/// Refuses a row with a number that is not finite (an edited file: a campaign writes
-/// none), naming the file, the run and the column: nothing non-finite reaches a file.
-fn check_finite(rows: &[RunRow], file: &Path) -> Result<()> {
-    let mut table = Columns::with_capacity(rows.len());
-    for row in rows {
-        table.push(row).map_err(|e| anyhow!("{e}"))?;
-    }
-    for (name, cells) in table.into_columns() {
-        for (row, cell) in rows.iter().zip(cells) {
-            if let Cell::Float(value) = cell {
-                if !value.is_finite() {
-                    bail!(
-                        "{}: run {} ({}): `{name}` is {value}, not a finite number",
-                        file.display(),
-                        row.run_index,
-                        row.controller
-                    );
-                }
-            }
-        }
-    }
-    Ok(())
 }
 
 /// Runs `deckland merge`.

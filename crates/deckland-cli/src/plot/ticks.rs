@@ -1,5 +1,6 @@
 //! Tick labels: one precision per axis (that of the tick step), integers on count axes,
-//! and never "-0".
+//! and never "-0"; no labels at all on an axis whose range no flight produces (beyond
+//! [`LARGEST_LABELLED`], or not finite), where plotters' search for ticks would never end.
 //!
 //! plotters picks the ticks of a floating-point axis itself (steps of 1, 2 or 5 times a
 //! power of ten, at most the number of labels asked for) and hands each value to the label
@@ -12,6 +13,19 @@ use std::ops::Range;
 pub(crate) const X_LABELS: usize = 10;
 /// Labels asked for on a vertical axis.
 pub(crate) const Y_LABELS: usize = 8;
+
+/// Largest axis end (in magnitude) that is labelled. plotters 0.3.7 searches the ticks of
+/// a range near `f64::MAX` forever (`compute_f64_key_points`: issue 28, D3, a touchdown
+/// distance of 1.8e308); no plotted quantity comes near 10¹⁵ (signals beyond 10¹² end a
+/// run as diverged), and an axis asked for no labels gets no tick search at all.
+pub(crate) const LARGEST_LABELLED: f64 = 1e15;
+
+/// Whether plotters can label `range`: both ends finite and within [`LARGEST_LABELLED`].
+pub(crate) fn labelled(range: &Range<f64>) -> bool {
+    [range.start, range.end]
+        .iter()
+        .all(|end| end.is_finite() && end.abs() <= LARGEST_LABELLED)
+}
 
 /// The step plotters chooses between the labelled ticks of `range` when asked for at most
 /// `max_points` of them (plotters 0.3, `compute_f64_key_points`); `None` for an empty or
@@ -91,6 +105,13 @@ impl AxisLabels {
     /// The labels of an axis over `range`, at most `count` of them; `integers` for counts,
     /// whose ticks are whole numbers.
     pub(crate) fn new(range: &Range<f64>, count: usize, integers: bool) -> Self {
+        if !labelled(range) {
+            return Self {
+                count: 0,
+                decimals: 1,
+                integers,
+            };
+        }
         let count = if integers {
             // A step below 1 would need more ticks than integers in the range.
             let whole = (range.end.floor() - range.start.ceil()).max(0.0) as usize + 1;
@@ -143,6 +164,49 @@ mod tests {
         assert_eq!(symmetric.format(-1e-17), "0.0");
         assert_eq!(symmetric.format(-0.4), "\u{2212}0.4");
         assert_eq!(format_tick(f64::NAN, 2), "");
+    }
+
+    /// Regression (issue 28, D3): `merge` hung in plotters' tick search on a touchdown
+    /// distance of 1.7976931348623157e308. Such an axis asks for no labels, and plotters
+    /// then draws it without searching.
+    #[test]
+    fn regression_ranges_no_flight_produces_get_no_tick_search() {
+        use plotters::prelude::*;
+        for range in [
+            0.0..f64::MAX,
+            -6.0..1.797_693_134_862_315_7e308,
+            -1e300..1e300,
+            0.0..f64::INFINITY,
+            f64::NAN..1.0,
+        ] {
+            let labels = AxisLabels::new(&range, X_LABELS, false);
+            assert_eq!(labels.count, 0, "{range:?}");
+            if range.start.is_nan() {
+                continue;
+            }
+            let mut svg = String::new();
+            {
+                let area = SVGBackend::with_string(&mut svg, (320, 240)).into_drawing_area();
+                let mut chart = ChartBuilder::on(&area)
+                    .x_label_area_size(30)
+                    .y_label_area_size(30)
+                    .build_cartesian_2d(range.clone(), 0.0..1.0)
+                    .expect("chart");
+                chart
+                    .configure_mesh()
+                    .x_labels(labels.count)
+                    .y_labels(Y_LABELS)
+                    .max_light_lines(4)
+                    .draw()
+                    .expect("drawn");
+            }
+            assert!(svg.contains("<svg"), "{range:?}");
+        }
+        assert!(labelled(&(-400.0..1e15)));
+        assert_eq!(
+            AxisLabels::new(&(-400.0..400.0), X_LABELS, false).count,
+            X_LABELS
+        );
     }
 
     #[test]

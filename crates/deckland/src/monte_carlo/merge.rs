@@ -6,10 +6,24 @@
 //! one campaign and cover it exactly once — every error names the shard and the field at
 //! fault — and returns the campaign's rows in run order: those of the campaign flown
 //! whole on one machine.
+//!
+//! Nothing a shard says is trusted before it is checked: its identity against the
+//! campaign's limits ([`super::limits`]) before anything is allocated by it, and every row
+//! against the row schema ([`RunRow::check`]). [`super::parse_runs_csv`] reads a shard's
+//! `runs.csv` text with the same checks (the exact columns, a last line that ends, every
+//! row), naming the line and the column at fault, so that every front end (the CLI's
+//! `merge`, Python, Dask) refuses the same inputs with the same words.
 
+use super::limits::{
+    check_runs, MAX_CONTROLLERS, MAX_CONTROLLER_LABEL_BYTES, MAX_RUNS, MAX_SHARDS,
+};
+use super::merge_error::MergeError;
 use super::row::RunRow;
 use super::seeds::run_seed;
 use super::shard::Shard;
+
+/// Most missing shards a message lists one by one.
+const LISTED_MISSING: usize = 10;
 
 /// What a shard says it is part of.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -56,99 +70,63 @@ pub struct MergedCampaign {
     pub sources: Vec<String>,
 }
 
-/// Why shards cannot be merged into one campaign.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-pub enum MergeError {
-    /// Nothing to merge.
-    #[error("no shard to merge")]
-    NoShards,
-    /// Two shards flew different scenarios.
-    #[error(
-        "{other} flew another scenario than {first}: `{field}` is {other_value} there and \
-         {first_value} in {first}"
-    )]
-    DifferentScenario {
-        /// The first shard's source.
-        first: String,
-        /// The other shard's source.
-        other: String,
-        /// The first line that differs (a key of the scenario, or the line's text).
-        field: String,
-        /// That line in the first shard.
-        first_value: String,
-        /// That line in the other shard.
-        other_value: String,
-    },
-    /// A field that must agree between shards does not.
-    #[error("{other} is not a shard of the same campaign as {first}: `{field}` is {other_value} there and {first_value} in {first}")]
-    Different {
-        /// The field (`campaign_seed`, `requested_runs`, `controllers`, shard count).
-        field: &'static str,
-        /// The first shard's source.
-        first: String,
-        /// Its value there.
-        first_value: String,
-        /// The other shard's source.
-        other: String,
-        /// Its value there.
-        other_value: String,
-    },
-    /// A shard was stopped before its runs finished.
-    #[error("{location} is shard {shard} stopped before every run finished (`partial`: true); fly it again to merge it")]
-    Partial {
-        /// Where the shard comes from.
-        location: String,
-        /// The shard.
-        shard: Shard,
-    },
-    /// Two shards are the same one.
-    #[error("{first} and {other} are both shard {shard}: a shard can be merged once")]
-    Overlapping {
-        /// The shard.
-        shard: Shard,
-        /// The first source.
-        first: String,
-        /// The other source.
-        other: String,
-    },
-    /// Shards of the campaign are not there.
-    #[error("missing shard{} {}: a merge needs every shard", if missing.len() == 1 { "" } else { "s" }, missing.iter().map(|k| format!("{k}/{count}")).collect::<Vec<_>>().join(", "))]
-    MissingShards {
-        /// The shards missing (K of K/M, from 0).
-        missing: Vec<u64>,
-        /// M.
-        count: u64,
-    },
-    /// A row that is not one of the shard's runs, or whose seed is not its run's.
-    #[error("{location} (shard {shard}): run {run_index} ({controller}) {problem}")]
-    ForeignRow {
-        /// Where the shard comes from.
-        location: String,
-        /// The shard.
-        shard: Shard,
-        /// The row's run index.
-        run_index: u64,
-        /// The row's controller.
-        controller: String,
-        /// What is wrong with it.
-        problem: String,
-    },
-    /// A shard lacks runs it should hold.
-    #[error("{location} (shard {shard}) holds {found} of its {expected} rows; the first missing is run {first_missing} ({controller}): is its runs.csv truncated?")]
-    MissingRuns {
-        /// Where the shard comes from.
-        location: String,
-        /// The shard.
-        shard: Shard,
-        /// Rows expected (runs × controllers).
-        expected: u64,
-        /// Rows found.
-        found: u64,
-        /// The first run missing.
-        first_missing: u64,
-        /// Its controller.
-        controller: String,
-    },
+/// Checks a shard's identity against the campaign's limits, before anything is allocated
+/// by it: its run count, its controllers, and a shard count no larger than its runs.
+fn check_identity(identity: &ShardIdentity) -> Result<(), MergeError> {
+    let bad = |field: &'static str, value: String, problem: String| MergeError::BadIdentity {
+        location: identity.source.clone(),
+        field,
+        value,
+        problem,
+    };
+    let runs = identity.requested_runs;
+    if let Err(error) = check_runs(runs) {
+        return Err(bad(
+            "requested_runs",
+            runs.to_string(),
+            format!("a campaign flies 1 to {MAX_RUNS} runs ({error})"),
+        ));
+    }
+    let count = identity.shard.count();
+    if count > runs.min(MAX_SHARDS) {
+        return Err(bad(
+            "shard",
+            identity.shard.to_string(),
+            format!("a campaign of {runs} runs has at most {runs} shards (one run each)"),
+        ));
+    }
+    let controllers = &identity.controllers;
+    let listed = || format!("[{}]", controllers.join(", "));
+    if controllers.is_empty() || controllers.len() > MAX_CONTROLLERS {
+        return Err(bad(
+            "controllers",
+            listed(),
+            format!("a campaign flies 1 to {MAX_CONTROLLERS} controllers"),
+        ));
+    }
+    for (position, label) in controllers.iter().enumerate() {
+        if label.is_empty()
+            || label.len() > MAX_CONTROLLER_LABEL_BYTES
+            || label.chars().any(char::is_control)
+        {
+            return Err(bad(
+                "controllers",
+                format!("{label:?}"),
+                format!(
+                    "a controller's label is 1 to {MAX_CONTROLLER_LABEL_BYTES} bytes of \
+                     printable text"
+                ),
+            ));
+        }
+        if controllers[..position].contains(label) {
+            return Err(bad(
+                "controllers",
+                listed(),
+                format!("`{label}` is listed twice"),
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// The first line where two scenario texts differ: (key or line, first value, other).
@@ -188,6 +166,9 @@ fn first_difference(first: &str, other: &str) -> (String, String, String) {
 /// controller: the rows of the campaign flown whole.
 pub fn merge_shards(mut shards: Vec<ShardRows>) -> Result<MergedCampaign, MergeError> {
     let first = shards.first().ok_or(MergeError::NoShards)?.identity.clone();
+    for shard in &shards {
+        check_identity(&shard.identity)?;
+    }
     for shard in &shards {
         let identity = &shard.identity;
         if identity.scenario_toml != first.scenario_toml {
@@ -257,11 +238,14 @@ pub fn merge_shards(mut shards: Vec<ShardRows>) -> Result<MergedCampaign, MergeE
         }
         *slot = Some(position);
     }
-    let missing: Vec<u64> = (0..count)
-        .filter(|&k| by_index.get(k as usize).is_none_or(Option::is_none))
-        .collect();
-    if !missing.is_empty() {
-        return Err(MergeError::MissingShards { missing, count });
+    let missing = (0..count).filter(|&k| by_index.get(k as usize).is_none_or(Option::is_none));
+    let total = missing.clone().count() as u64;
+    if total > 0 {
+        return Err(MergeError::MissingShards {
+            missing: missing.take(LISTED_MISSING).collect(),
+            total,
+            count,
+        });
     }
     if let Some(partial) = shards.iter().find(|s| s.identity.partial) {
         return Err(MergeError::Partial {
@@ -314,7 +298,16 @@ fn check_rows(
         controller: row.controller.to_string(),
         problem,
     };
-    for row in &shard.rows {
+    for (position, row) in shard.rows.iter().enumerate() {
+        if let Err(error) = row.check() {
+            return Err(MergeError::BadRow {
+                location: identity.source.clone(),
+                row: position as u64 + 1,
+                run_index: row.run_index,
+                controller: row.controller.to_string(),
+                error: Box::new(error),
+            });
+        }
         if row.run_index >= runs {
             return Err(foreign(
                 row,

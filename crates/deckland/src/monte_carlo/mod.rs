@@ -16,7 +16,11 @@
 //! - Shards: a [`Shard`] K/M of a campaign flies the runs i with i mod M = K; since a
 //!   run depends only on the campaign seed and its index, [`merge_shards`] puts the M
 //!   shards' rows (`runs.csv`, [`RunRow`]) together into the campaign flown whole,
-//!   refusing shards that do not belong together ([`MergeError`]).
+//!   refusing shards that do not belong together and rows no campaign writes
+//!   ([`MergeError`], [`RunRow::check`]).
+//! - Limits: runs, shards and controllers have one set of bounds for every front end
+//!   ([`MAX_RUNS`], [`MAX_SHARDS`], [`MAX_CONTROLLERS`]), and a shard's files a size
+//!   limit ([`MAX_RUNS_CSV_BYTES`], [`MAX_SUMMARY_JSON_BYTES`]).
 //! - Statistics: rates with 95 % Wilson score intervals and exact one-sided upper bounds
 //!   for rare events ([`upper_bound`], [`runs_to_show_below`]), computed from the rows, so
 //!   a merged campaign's statistics are those of the whole campaign.
@@ -25,10 +29,13 @@
 //!   campaign early with the runs that finished ([`CampaignResult::partial`]).
 
 mod campaign;
+mod limits;
 mod merge;
+mod merge_error;
 mod rare_events;
 mod row;
 mod run_scenario;
+mod runs_csv;
 mod seeds;
 mod shard;
 mod statistics;
@@ -38,13 +45,19 @@ pub use campaign::{
     controller_label, run_campaign, CampaignError, CampaignResult, CampaignSpec, ControllerVariant,
     RunFailure, RunRecord, SharedPitchLaw,
 };
-pub use merge::{merge_shards, MergeError, MergedCampaign, ShardIdentity, ShardRows};
+pub use limits::{
+    check_runs, LimitError, MAX_CONTROLLERS, MAX_CONTROLLER_LABEL_BYTES, MAX_RUNS,
+    MAX_RUNS_CSV_BYTES, MAX_SHARDS, MAX_SUMMARY_JSON_BYTES,
+};
+pub use merge::{merge_shards, MergedCampaign, ShardIdentity, ShardRows};
+pub use merge_error::MergeError;
 pub use rare_events::{
     binomial_cdf, regularized_incomplete_beta, runs_to_show_below, upper_bound, RareEventTarget,
     RunsNeeded, DEFAULT_TARGET_RATE, UPPER_BOUND_CONFIDENCE, UPPER_BOUND_METHOD,
 };
-pub use row::RunRow;
+pub use row::{RowError, RunRow, CAMPAIGN_OUTCOMES, RANGES, RUN_COLUMNS};
 pub use run_scenario::dispersed_run_scenario;
+pub use runs_csv::parse_runs_csv;
 pub use seeds::{run_seed, splitmix64_mix, SPLITMIX64_GAMMA};
 pub use shard::{Shard, ShardError, SHARD_SCHEME};
 pub use statistics::{

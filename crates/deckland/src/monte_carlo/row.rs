@@ -2,12 +2,135 @@
 //! Python package's campaign table, defined once. A row reads back from `runs.csv`
 //! exactly (`Deserialize`: numbers are written in their shortest round-trip form), which
 //! is what lets shards be merged into the campaign they are part of.
+//!
+//! The row's schema ([`RunRow::check`]) is what a campaign can write, so that a merge
+//! refuses any row no campaign wrote (an edited or damaged file) before it reaches the
+//! statistics or a plot:
+//! - the outcome is one of [`CAMPAIGN_OUTCOMES`];
+//! - a wire (1–4) is given for a trap, may be for a hard landing, and for no other
+//!   outcome;
+//! - the fields an outcome requires are present: a flown run (every outcome but
+//!   `invalid` and `panicked`) has its end time and actuator activity, a setup that
+//!   failed has none of them; a trap or a hard landing has its touchdown (all four
+//!   touchdown fields or none); a ramp strike has a negative ramp clearance; every
+//!   outcome but a trap has its reason, a trap none;
+//! - every number is finite and within its physical range ([`RANGES`]).
 
 use std::borrow::Cow;
 
 use serde::{Deserialize, Serialize};
 
 use super::campaign::RunRecord;
+use crate::simulation::{Outcome, SIGNAL_MAGNITUDE_LIMIT};
+
+/// The columns of `runs.csv`, in order (the fields of [`RunRow`]).
+pub const RUN_COLUMNS: [&str; 23] = [
+    "run_index",
+    "controller",
+    "seed",
+    "outcome",
+    "wire",
+    "touchdown_distance_m",
+    "touchdown_sink_rate_mps",
+    "touchdown_pitch_deg",
+    "touchdown_airspeed_mps",
+    "ramp_clearance_m",
+    "glide_path_error_rms_m",
+    "glide_path_error_max_m",
+    "end_time_s",
+    "elevator_rate_rms_degps",
+    "time_on_rate_limit_pct",
+    "time_on_stops_pct",
+    "elevator_travel_deg",
+    "thrust_rate_rms_knps",
+    "start_height_offset_dispersion_m",
+    "airspeed_dispersion_mps",
+    "sea_state_scale",
+    "wind_over_deck_dispersion_mps",
+    "reason",
+];
+
+/// The outcomes a campaign's row can hold: an approach's [`Outcome`] (a campaign flies
+/// approaches, never a fixed-length `completed` run), `invalid` (the dispersed scenario
+/// could not be set up) or `panicked`.
+pub const CAMPAIGN_OUTCOMES: [&str; 9] = [
+    "trap",
+    "bolter",
+    "ramp_strike",
+    "hard_landing",
+    "wave_off",
+    "diverged",
+    "timeout",
+    "invalid",
+    "panicked",
+];
+
+/// Longest distance or height in a row (m): twice the longest approach a scenario can
+/// start (`approach.start_range_m` ≤ 10 km).
+const LENGTH_LIMIT_M: f64 = 20_000.0;
+
+/// Largest speed in a row (m/s): about Mach 3, beyond any flight of the model (airspeed
+/// ≤ 150 m/s at the start).
+const SPEED_LIMIT_MPS: f64 = 1000.0;
+
+/// Longest run (s): twice the longest time limit (`max_time_s` ≤ 3600 s).
+const TIME_LIMIT_S: f64 = 7200.0;
+
+/// How many of the largest allowed standard deviations a dispersion may reach: a normal
+/// draw beyond 50 σ has probability below 10⁻⁵⁴⁰.
+const DISPERSION_SIGMAS: f64 = 50.0;
+
+/// The physical range of every number of a row: (column, lowest, highest), inclusive.
+/// The dispersions' are [`DISPERSION_SIGMAS`] times the largest standard deviations a
+/// scenario allows (start height 20 m, airspeed and wind 10 m/s, log sea state 1).
+pub const RANGES: [(&str, f64, f64); 17] = [
+    ("touchdown_distance_m", -LENGTH_LIMIT_M, LENGTH_LIMIT_M),
+    ("touchdown_sink_rate_mps", -SPEED_LIMIT_MPS, SPEED_LIMIT_MPS),
+    ("touchdown_pitch_deg", -180.0, 180.0),
+    ("touchdown_airspeed_mps", 0.0, SPEED_LIMIT_MPS),
+    ("ramp_clearance_m", -LENGTH_LIMIT_M, LENGTH_LIMIT_M),
+    ("glide_path_error_rms_m", 0.0, LENGTH_LIMIT_M),
+    ("glide_path_error_max_m", 0.0, LENGTH_LIMIT_M),
+    ("end_time_s", 0.0, TIME_LIMIT_S),
+    ("elevator_rate_rms_degps", 0.0, SIGNAL_MAGNITUDE_LIMIT),
+    ("time_on_rate_limit_pct", 0.0, 100.0),
+    ("time_on_stops_pct", 0.0, 100.0),
+    ("elevator_travel_deg", 0.0, SIGNAL_MAGNITUDE_LIMIT),
+    ("thrust_rate_rms_knps", 0.0, SIGNAL_MAGNITUDE_LIMIT),
+    (
+        "start_height_offset_dispersion_m",
+        -DISPERSION_SIGMAS * 20.0,
+        DISPERSION_SIGMAS * 20.0,
+    ),
+    (
+        "airspeed_dispersion_mps",
+        -DISPERSION_SIGMAS * 10.0,
+        DISPERSION_SIGMAS * 10.0,
+    ),
+    // exp(±50 σ) with σ = 1: e^±50.
+    (
+        "sea_state_scale",
+        1.928_749_847_963_918e-22,
+        5.184_705_528_587_072e21,
+    ),
+    (
+        "wind_over_deck_dispersion_mps",
+        -DISPERSION_SIGMAS * 10.0,
+        DISPERSION_SIGMAS * 10.0,
+    ),
+];
+
+/// Why a row is not one a campaign can write: the column and its value.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("`{column}` is {value}: {problem}")]
+pub struct RowError {
+    /// The column at fault.
+    pub column: &'static str,
+    /// Its value as found (`empty` when absent).
+    pub value: String,
+    /// What a campaign writes there.
+    pub problem: String,
+}
 
 /// One run of a campaign under one controller, flattened (outcome, wire, touchdown, ramp
 /// clearance, glide-path error, the actuators' activity, the dispersions drawn, the failure reason). Fields that
@@ -107,5 +230,171 @@ impl<'a> RunRow<'a> {
     /// time.
     pub fn flown(&self) -> bool {
         self.end_time_s.is_some()
+    }
+
+    /// The row's numbers by column, in [`RANGES`] order (`None`: empty).
+    fn numbers(&self) -> [Option<f64>; 17] {
+        [
+            self.touchdown_distance_m,
+            self.touchdown_sink_rate_mps,
+            self.touchdown_pitch_deg,
+            self.touchdown_airspeed_mps,
+            self.ramp_clearance_m,
+            self.glide_path_error_rms_m,
+            self.glide_path_error_max_m,
+            self.end_time_s,
+            self.elevator_rate_rms_degps,
+            self.time_on_rate_limit_pct,
+            self.time_on_stops_pct,
+            self.elevator_travel_deg,
+            self.thrust_rate_rms_knps,
+            Some(self.start_height_offset_dispersion_m),
+            Some(self.airspeed_dispersion_mps),
+            Some(self.sea_state_scale),
+            Some(self.wind_over_deck_dispersion_mps),
+        ]
+    }
+
+    /// Checks that a campaign can have written this row (the module's schema); the error
+    /// names the first column at fault and its value.
+    pub fn check(&self) -> Result<(), RowError> {
+        let error = |column: &'static str, value: String, problem: &str| RowError {
+            column,
+            value,
+            problem: problem.to_owned(),
+        };
+        let outcome = self.outcome.as_ref();
+        if !CAMPAIGN_OUTCOMES.contains(&outcome) {
+            return Err(error(
+                "outcome",
+                format!("`{outcome}`"),
+                &format!(
+                    "not an outcome of a campaign ({})",
+                    CAMPAIGN_OUTCOMES.join(", ")
+                ),
+            ));
+        }
+        for ((column, low, high), value) in RANGES.iter().zip(self.numbers()) {
+            if let Some(value) = value {
+                if !value.is_finite() {
+                    return Err(error(column, format!("{value:?}"), "not a finite number"));
+                }
+                if !(value >= *low && value <= *high) {
+                    return Err(error(
+                        column,
+                        format!("{value:?}"),
+                        &format!("outside its physical range {low} to {high}"),
+                    ));
+                }
+            }
+        }
+        let shown =
+            |value: Option<f64>| value.map_or_else(|| "empty".to_owned(), |v| format!("{v:?}"));
+        let trap = outcome == Outcome::Trap.name();
+        let hard_landing = outcome == Outcome::HardLanding.name();
+        match self.wire {
+            Some(wire) if !(1..=4).contains(&wire) => {
+                return Err(error("wire", wire.to_string(), "wires are numbered 1 to 4"));
+            }
+            Some(wire) if !trap && !hard_landing => {
+                return Err(error(
+                    "wire",
+                    wire.to_string(),
+                    &format!("a `{outcome}` catches no wire: only a trap or a hard landing does"),
+                ));
+            }
+            None if trap => {
+                return Err(error(
+                    "wire",
+                    "empty".to_owned(),
+                    "a trap catches a wire (1 to 4)",
+                ));
+            }
+            _ => {}
+        }
+        let set_up = !matches!(outcome, "invalid" | "panicked");
+        let flight = [
+            ("end_time_s", self.end_time_s),
+            ("elevator_rate_rms_degps", self.elevator_rate_rms_degps),
+            ("time_on_rate_limit_pct", self.time_on_rate_limit_pct),
+            ("time_on_stops_pct", self.time_on_stops_pct),
+            ("elevator_travel_deg", self.elevator_travel_deg),
+            ("thrust_rate_rms_knps", self.thrust_rate_rms_knps),
+        ];
+        for (column, value) in flight {
+            if value.is_some() != set_up {
+                return Err(error(
+                    column,
+                    shown(value),
+                    &if set_up {
+                        format!("a flown run (`{outcome}`) has it")
+                    } else {
+                        format!("a run that never flew (`{outcome}`) has none")
+                    },
+                ));
+            }
+        }
+        if !set_up {
+            let flown_only = [
+                ("touchdown_distance_m", self.touchdown_distance_m),
+                ("ramp_clearance_m", self.ramp_clearance_m),
+                ("glide_path_error_rms_m", self.glide_path_error_rms_m),
+                ("glide_path_error_max_m", self.glide_path_error_max_m),
+            ];
+            if let Some((column, value)) = flown_only.into_iter().find(|(_, v)| v.is_some()) {
+                return Err(error(
+                    column,
+                    shown(value),
+                    &format!("a run that never flew (`{outcome}`) has none"),
+                ));
+            }
+        }
+        let touchdown = [
+            ("touchdown_distance_m", self.touchdown_distance_m),
+            ("touchdown_sink_rate_mps", self.touchdown_sink_rate_mps),
+            ("touchdown_pitch_deg", self.touchdown_pitch_deg),
+            ("touchdown_airspeed_mps", self.touchdown_airspeed_mps),
+        ];
+        let touched_down = self.touchdown_distance_m.is_some();
+        for (column, value) in touchdown {
+            if value.is_some() != touched_down || (!touched_down && (trap || hard_landing)) {
+                return Err(error(
+                    column,
+                    shown(value),
+                    &format!(
+                        "a `{outcome}` has {}",
+                        if trap || hard_landing {
+                            "its touchdown (all four touchdown columns)"
+                        } else {
+                            "all four touchdown columns or none"
+                        }
+                    ),
+                ));
+            }
+        }
+        if outcome == Outcome::RampStrike.name() && !self.ramp_clearance_m.is_some_and(|c| c < 0.0)
+        {
+            return Err(error(
+                "ramp_clearance_m",
+                shown(self.ramp_clearance_m),
+                "a ramp strike has the hook below the ramp (a negative clearance)",
+            ));
+        }
+        let reason = self.reason.as_deref().filter(|r| !r.is_empty());
+        if trap && reason.is_some() {
+            return Err(error(
+                "reason",
+                format!("{:?}", reason.unwrap_or_default()),
+                "a trap has no reason",
+            ));
+        }
+        if !trap && reason.is_none() {
+            return Err(error(
+                "reason",
+                "empty".to_owned(),
+                &format!("a `{outcome}` says why in words"),
+            ));
+        }
+        Ok(())
     }
 }

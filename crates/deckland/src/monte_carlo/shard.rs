@@ -11,11 +11,14 @@ use std::str::FromStr;
 
 use serde::Serialize;
 
+use super::limits::MAX_SHARDS;
+
 /// The sharding scheme in words, for summaries.
 pub const SHARD_SCHEME: &str = "round robin: shard K/M (K from 0 to M − 1) flies the runs i \
                                 (from 0) with i mod M = K";
 
-/// Shard `index` (0 to `count` − 1) of a campaign split into `count` shards; made only by
+/// Shard `index` (0 to `count` − 1) of a campaign split into `count` shards (1 to
+/// [`MAX_SHARDS`]); made only by
 /// [`Shard::new`] or parsed from `K/M`, so always valid.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
 pub struct Shard {
@@ -42,6 +45,14 @@ pub enum ShardError {
         /// The K given.
         index: u64,
     },
+    /// M above [`MAX_SHARDS`]: more shards than a campaign has runs.
+    #[error("shard `{index}/{count}`: the number of shards M must be at most {MAX_SHARDS} (a campaign flies at most {MAX_SHARDS} runs, one per shard at most)")]
+    TooMany {
+        /// The K given.
+        index: u64,
+        /// The M given.
+        count: u64,
+    },
     /// K ≥ M.
     #[error("shard `{index}/{count}`: K must be 0 to M − 1 = {} (shards count from 0, as run indices)", count - 1)]
     IndexOutOfRange {
@@ -60,6 +71,9 @@ impl Shard {
     pub fn new(index: u64, count: u64) -> Result<Self, ShardError> {
         if count == 0 {
             return Err(ShardError::NoShards { index });
+        }
+        if count > MAX_SHARDS {
+            return Err(ShardError::TooMany { index, count });
         }
         if index >= count {
             return Err(ShardError::IndexOutOfRange { index, count });
@@ -173,6 +187,16 @@ mod tests {
             "0/0".parse::<Shard>(),
             Err(ShardError::NoShards { index: 0 })
         );
+        // Regression (issue 28, D1): a huge M made a merge allocate petabytes.
+        assert_eq!(
+            "0/100000000000000".parse::<Shard>(),
+            Err(ShardError::TooMany {
+                index: 0,
+                count: 100_000_000_000_000
+            })
+        );
+        assert!("99999/100000".parse::<Shard>().is_ok());
+        assert!("0/100001".parse::<Shard>().is_err());
         for text in [
             "",
             "1",

@@ -1,19 +1,134 @@
 //! Scenario files: TOML text to a checked [`Scenario`], with errors that name the file,
 //! the line and the field, and state what is allowed.
 //!
-//! Loading takes the text, not a path, so the library stays free of file-system access.
+//! Loading takes the text ([`load_scenario`]); the one file-system access is
+//! [`read_text_file`], which reads a file with a size limit, regular files only (never a
+//! FIFO, a device or `/dev/zero`, which would block or never end), for every front end
+//! ([`MAX_SCENARIO_FILE_BYTES`] for scenario files).
 //! Three kinds of problem are told apart ([`ScenarioError`]): text that is not TOML,
 //! keys or values that do not fit the scenario's structure (unknown keys, wrong types,
 //! unknown names), and values outside their allowed range (every check of
 //! [`Scenario::validate`]). For the last kind the line is that of the key in the file; a
 //! value not set in the file has no line (its default was used).
 
+use std::io::Read;
 use std::ops::Range;
+use std::path::Path;
 
 use toml_edit::{ImDocument, InlineTable, Item, Table, Value};
 
 use super::{Mission, Scenario};
 use crate::parameters::{join, ParameterError};
+
+/// Largest scenario file (bytes): the commented default file is about 10 kB.
+pub const MAX_SCENARIO_FILE_BYTES: u64 = 1024 * 1024;
+
+/// Why a file could not be read as text.
+#[derive(Debug, thiserror::Error)]
+pub enum ReadError {
+    /// The file could not be opened or read.
+    #[error("cannot read {path}: {source}")]
+    Io {
+        /// The file.
+        path: String,
+        /// The system's reason.
+        source: std::io::Error,
+    },
+    /// Not a regular file (a folder, a FIFO, a device such as `/dev/zero`).
+    #[error("{path} is {kind}, not a regular file: deckland reads files only")]
+    NotAFile {
+        /// The file.
+        path: String,
+        /// What it is instead.
+        kind: &'static str,
+    },
+    /// Larger than the limit.
+    #[error("{path} is larger than {limit} bytes, more than a {what} can be")]
+    TooLarge {
+        /// The file.
+        path: String,
+        /// The limit (bytes).
+        limit: u64,
+        /// What the file was read as.
+        what: &'static str,
+    },
+    /// Not UTF-8 text.
+    #[error("{path} is not UTF-8 text ({source})")]
+    NotText {
+        /// The file.
+        path: String,
+        /// Where the text breaks.
+        source: std::string::FromUtf8Error,
+    },
+}
+
+/// What a file of type `file_type` is, in words.
+fn kind_of(file_type: std::fs::FileType) -> &'static str {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        if file_type.is_fifo() {
+            return "a FIFO";
+        }
+        if file_type.is_char_device() || file_type.is_block_device() {
+            return "a device";
+        }
+        if file_type.is_socket() {
+            return "a socket";
+        }
+    }
+    if file_type.is_dir() {
+        "a folder"
+    } else {
+        "not a regular file"
+    }
+}
+
+/// Reads the text of the regular file `path` (following links), of at most `limit`
+/// bytes; `what` names it in messages (e.g. `scenario file`). A FIFO, a device or a
+/// folder is refused before it is opened (opening a FIFO would wait for a writer), and
+/// the file opened is checked again, so a file swapped meanwhile is refused too.
+pub fn read_text_file(path: &Path, limit: u64, what: &'static str) -> Result<String, ReadError> {
+    let shown = || path.display().to_string();
+    let io = |source| ReadError::Io {
+        path: shown(),
+        source,
+    };
+    let check = |metadata: std::fs::Metadata| {
+        if !metadata.is_file() {
+            return Err(ReadError::NotAFile {
+                path: shown(),
+                kind: kind_of(metadata.file_type()),
+            });
+        }
+        if metadata.len() > limit {
+            return Err(ReadError::TooLarge {
+                path: shown(),
+                limit,
+                what,
+            });
+        }
+        Ok(())
+    };
+    check(std::fs::metadata(path).map_err(io)?)?;
+    let file = std::fs::File::open(path).map_err(io)?;
+    check(file.metadata().map_err(io)?)?;
+    let mut bytes = Vec::new();
+    file.take(limit.saturating_add(1))
+        .read_to_end(&mut bytes)
+        .map_err(io)?;
+    if bytes.len() as u64 > limit {
+        return Err(ReadError::TooLarge {
+            path: shown(),
+            limit,
+            what,
+        });
+    }
+    String::from_utf8(bytes).map_err(|source| ReadError::NotText {
+        path: shown(),
+        source,
+    })
+}
 
 /// Why a scenario file was rejected. Every variant names the file, the line (when the
 /// offending key is in the file) and the field, and says what is allowed.
@@ -300,6 +415,45 @@ fn index_value(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Regression (issue 28, D9): `/dev/zero` grew to 4.2 GB, a FIFO blocked forever.
+    #[cfg(unix)]
+    #[test]
+    fn regression_reads_are_bounded_and_of_regular_files_only() {
+        let error =
+            read_text_file(Path::new("/dev/zero"), 1024, "scenario file").expect_err("refused");
+        assert!(
+            matches!(
+                error,
+                ReadError::NotAFile {
+                    kind: "a device",
+                    ..
+                }
+            ),
+            "{error}"
+        );
+        let error = read_text_file(Path::new("/"), 1024, "scenario file").expect_err("refused");
+        assert!(error.to_string().contains("a folder"), "{error}");
+        let folder = std::env::temp_dir().join(format!("deckland-read-{}", std::process::id()));
+        std::fs::create_dir_all(&folder).expect("folder");
+        let big = folder.join("big.toml");
+        std::fs::write(&big, vec![b'#'; 2048]).expect("written");
+        let error = read_text_file(&big, 1024, "scenario file").expect_err("refused");
+        assert_eq!(
+            error.to_string(),
+            format!(
+                "{} is larger than 1024 bytes, more than a scenario file can be",
+                big.display()
+            )
+        );
+        assert_eq!(
+            read_text_file(&big, 2048, "scenario file")
+                .expect("read")
+                .len(),
+            2048
+        );
+        let _ = std::fs::remove_dir_all(&folder);
+    }
 
     #[test]
     fn an_empty_file_is_the_default_scenario() {

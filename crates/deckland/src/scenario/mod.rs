@@ -29,7 +29,7 @@ mod template;
 mod tests;
 
 pub use dispersion::{DispersionParameters, DispersionSample, DISPERSION_STREAM};
-pub use file::{load_scenario, ScenarioError};
+pub use file::{load_scenario, read_text_file, ReadError, ScenarioError, MAX_SCENARIO_FILE_BYTES};
 pub use hardware::HardwareSet;
 pub use template::DEFAULT_SCENARIO_TOML;
 

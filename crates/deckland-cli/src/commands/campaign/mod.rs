@@ -76,9 +76,9 @@ fn parse_shard(text: &str) -> Result<Shard, String> {
     text.parse::<Shard>().map_err(|e| e.to_string())
 }
 
-/// Most approaches of one campaign (per controller): a record of each is kept, about
-/// 0.3 kB, and 100 000 runs already give a rate to ±0.3 points.
-pub const MAX_RUNS: u64 = 100_000;
+/// Most approaches of one campaign (per controller): the library's limit, the same for
+/// every front end.
+pub const MAX_RUNS: u64 = deckland::monte_carlo::MAX_RUNS;
 
 /// Most worker threads: more than the cores only adds switching.
 pub const MAX_THREADS: i64 = 256;
