@@ -16,8 +16,8 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 use deckland::monte_carlo::{
-    merge_shards, run_campaign, CampaignResult, CampaignSpec, CampaignSummary, RunRecord, RunRow,
-    Shard, ShardIdentity, ShardRows, DEFAULT_TARGET_RATE, SHARD_SCHEME,
+    merge_shards, parse_runs_csv, run_campaign, CampaignResult, CampaignSpec, CampaignSummary,
+    RunRecord, RunRow, Shard, ShardIdentity, ShardRows, DEFAULT_TARGET_RATE, SHARD_SCHEME,
 };
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -46,8 +46,7 @@ struct CampaignReport<'a> {
 /// The most approaches of one campaign (per controller), and so the most shards: the
 /// limit of `deckland campaign --runs` (a record of each run is kept, about 0.3 kB; 100 000
 /// runs already give a rate to ±0.3 points).
-// The CLI's documented limit, until the library holds the campaign's limit as one constant.
-pub(crate) const MAX_RUNS: u64 = 100_000;
+pub(crate) const MAX_RUNS: u64 = deckland::monte_carlo::MAX_RUNS;
 
 /// A whole number argument in [`min`, `max`], else `ValueError` naming it and the range.
 fn whole(name: &str, value: i128, min: i128, max: u64) -> PyResult<u64> {
@@ -240,10 +239,9 @@ pub fn merge_shards_text<'py>(
         if shard.index() == 0 {
             scenario_name = payload.scenario_name.clone();
         }
-        let rows = csv::Reader::from_reader(payload.runs_csv.as_bytes())
-            .deserialize::<RunRow<'static>>()
-            .collect::<Result<Vec<_>, _>>()
-            .map_err(|e| value_error(format!("shard {shard}: {e}")))?;
+        // The library's row schema: the columns, each field's type and range.
+        let rows = parse_runs_csv(&format!("shard {shard}"), &payload.runs_csv)
+            .map_err(|e| value_error(e.to_string()))?;
         parts.push(ShardRows {
             identity: ShardIdentity {
                 source: format!("shard {shard}"),
