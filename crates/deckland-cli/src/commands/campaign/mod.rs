@@ -26,6 +26,7 @@
 //! `--runs` is at most [`MAX_RUNS`] and `--threads` at most [`MAX_THREADS`]: the records
 //! of every run are kept in memory, and threads beyond the cores buy nothing.
 
+pub mod paired;
 pub mod report;
 
 use super::common::{check_set_up, load_scenario_file, seed_parser, OutputArgs};
@@ -174,7 +175,16 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
     if args.output.json {
         outln!("{}", serde_json::to_string_pretty(&report)?)?;
     } else {
-        report::print_table(&report, &output)?;
+        report::print_statistics(&report)?;
+        let controllers: Vec<&str> = summary
+            .controllers
+            .iter()
+            .map(|s| s.controller.as_str())
+            .collect();
+        if let Some(paired) = paired::PairedComparison::of(&rows, &controllers) {
+            report::print_paired(&paired)?;
+        }
+        outln!("  results in {}", output.path().display())?;
     }
     if result.partial {
         warnln!(
