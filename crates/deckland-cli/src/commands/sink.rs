@@ -48,8 +48,9 @@ pub struct SinkArgs {
     /// not describe 20 km from the ship where the test is flown.
     #[arg(long, value_enum, default_value = "ideal")]
     pub conditions: Conditions,
-    /// Length of the run (s), more than 2 and at most 600.
-    #[arg(long, default_value_t = 20.0, allow_negative_numbers = true)]
+    /// Length of the run (s), more than 2 and at most 600; the default 30 s holds the
+    /// default command's settling (about 20 s) and its 0.5 s confirmation.
+    #[arg(long, default_value_t = 30.0, allow_negative_numbers = true)]
     pub seconds: f64,
     /// Seed of every random stream, 0 to 2⁶³ − 1.
     #[arg(long, default_value_t = 1, value_parser = seed_parser(), allow_negative_numbers = true)]

@@ -269,6 +269,15 @@ fn prefix(choice: ControllerChoice) -> &'static str {
     }
 }
 
+/// `value` with `digits` decimals and a sign, a true minus for negative values.
+fn signed_fixed(value: f64, digits: usize) -> String {
+    if value < 0.0 {
+        format!("\u{2212}{:.digits$}", -value)
+    } else {
+        format!("+{value:.digits$}")
+    }
+}
+
 fn format_option(value: Option<f64>, digits: usize, unit: &str) -> String {
     value.map_or_else(|| "—".to_string(), |v| format!("{v:.digits$} {unit}"))
 }
@@ -285,6 +294,18 @@ fn print_table(report: &StepReport, written: &[PathBuf]) -> Result<()> {
         report.seconds,
         report.epsilon
     )?;
+    let reference_s = report
+        .controllers
+        .first()
+        .map_or(0.0, |c| c.reference_duration_s);
+    if reference_s > 0.0 {
+        outln!(
+            "Command: the jerk-limited reference (prefilter) from trim to {:+}° in {reference_s:.3} s",
+            report.step_deg
+        )?;
+    } else {
+        outln!("Command: a step (no prefilter)")?;
+    }
     outln!(
         "  {:<26}{}",
         "",
@@ -311,6 +332,15 @@ fn print_table(report: &StepReport, written: &[PathBuf]) -> Result<()> {
             "not settled".to_string()
         }
     })?;
+    if reference_s > 0.0 {
+        row(
+            "  after the reference ends",
+            &|c| match c.settling_after_reference_s {
+                Some(t) if c.settled => format!("{} s", signed_fixed(t, 3)),
+                _ => "not settled".to_string(),
+            },
+        )?;
+    }
     row("overshoot", &|c| format!("{:.1} %", c.overshoot_pct))?;
     row("rise time 10–90 %", &|c| {
         format_option(c.rise_time_s, 3, "s")
@@ -349,7 +379,13 @@ fn print_table(report: &StepReport, written: &[PathBuf]) -> Result<()> {
     }
     outln!(
         "Settling time: from the step to the last entry into the ±2 % band around the target \
-         (it must stay there to the end, at least 0.5 s)."
+         (it must stay there to the end, at least 0.5 s){}.",
+        if reference_s > 0.0 {
+            "; after the reference ends: the same, less the reference's duration (negative: \
+             settled before the reference reached the target)"
+        } else {
+            ""
+        }
     )?;
     outln!("Wrote {} files to {}:", written.len(), report.output_folder)?;
     for path in written {

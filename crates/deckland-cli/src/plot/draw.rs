@@ -185,7 +185,7 @@ impl Panel {
                 2
             };
             let style = colour.stroke_width(width);
-            let dash = line.dashed.then_some((10, 6));
+            let dash = line.dashed.then_some(line.pattern.unwrap_or((10, 6)));
             match dash {
                 Some((dash, gap)) => chart
                     .draw_series(DashedLineSeries::new(points, dash, gap, style))

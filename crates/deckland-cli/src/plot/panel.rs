@@ -14,6 +14,8 @@ pub(super) struct Line {
     pub(super) points: Vec<(f64, f64)>,
     pub(super) dashed: bool,
     pub(super) colour: Option<RGBColor>,
+    /// Dash and gap (px) when dashed; `None` for the default (10, 6).
+    pub(super) pattern: Option<(u32, u32)>,
 }
 
 /// A named set of points drawn as dots.
@@ -113,6 +115,7 @@ impl Panel {
             points,
             dashed: false,
             colour: None,
+            pattern: None,
         });
         self
     }
@@ -124,6 +127,7 @@ impl Panel {
             points,
             dashed: true,
             colour: None,
+            pattern: None,
         });
         self
     }
@@ -141,6 +145,26 @@ impl Panel {
             points,
             dashed: false,
             colour: Some(colour),
+            pattern: None,
+        });
+        self
+    }
+
+    /// Adds a line series with its own colour (else the palette's) and dash pattern
+    /// (dash, gap in px; else solid): to tell apart lines that may lie on each other.
+    pub fn styled_series(
+        mut self,
+        name: impl Into<String>,
+        points: Vec<(f64, f64)>,
+        colour: Option<RGBColor>,
+        pattern: Option<(u32, u32)>,
+    ) -> Self {
+        self.lines.push(Line {
+            name: name.into(),
+            points,
+            dashed: pattern.is_some(),
+            colour,
+            pattern,
         });
         self
     }

@@ -16,7 +16,17 @@ fn series(samples: &[Signals], value: impl Fn(&Signals) -> f64) -> Vec<(f64, f64
 /// reason is in the table and the JSON document).
 fn settling_text(result: &ControllerResult) -> String {
     match (result.settled, result.settling_time_s) {
-        (true, Some(t)) => format!("settled (±2 %) in {t:.3} s"),
+        (true, Some(t)) => match result.settling_after_reference_s {
+            Some(after) if result.reference_duration_s > 0.0 => format!(
+                "settled (±2 %) in {t:.3} s, {} s after the reference ends",
+                if after < 0.0 {
+                    format!("\u{2212}{:.3}", -after)
+                } else {
+                    format!("+{after:.3}")
+                }
+            ),
+            _ => format!("settled (±2 %) in {t:.3} s"),
+        },
         _ => "not settled (±2 %)".to_string(),
     }
 }
@@ -49,18 +59,28 @@ pub(crate) fn figures(runs: &[ControllerRun], flight: &StepFlight) -> Vec<(&'sta
         "target ± {:.0} % of the step",
         SETTLING_BAND_FRACTION * 100.0
     );
+    let reference_s = runs.first().map_or(0.0, |r| r.result.reference_duration_s);
+    let command = if reference_s > 0.0 {
+        format!("jerk-limited reference over {reference_s:.2} s")
+    } else {
+        "a step".to_owned()
+    };
     let mut pitch = Panel::new(
         format!(
-            "Pitch step of {step_deg:+}° with {controllers}, {conditions_text} ({paper_pitch})"
+            "Pitch command of {step_deg:+}° ({command}) with {controllers}, {conditions_text} \
+             ({paper_pitch})"
         ),
         "time (s)",
         "pitch angle θ (deg)",
     );
-    for run in runs {
+    for (index, run) in runs.iter().enumerate() {
+        // The second controller dashed: on the ideal step both may lie on one curve.
         pitch = pitch
-            .series(
+            .styled_series(
                 format!("θ, {}", run.choice.label()),
                 series(&run.samples, |s| s.theta_rad.to_degrees()),
+                None,
+                (index > 0).then_some((10, 6)),
             )
             .note(format!(
                 "{}: {}",
@@ -69,9 +89,15 @@ pub(crate) fn figures(runs: &[ControllerRun], flight: &StepFlight) -> Vec<(&'sta
             ));
     }
     if let Some(run) = runs.first() {
-        pitch = pitch.dashed_series(
-            "reference θ_ref",
+        pitch = pitch.styled_series(
+            if reference_s > 0.0 {
+                "command (jerk-limited reference)"
+            } else {
+                "command (step)"
+            },
             series(&run.samples, |s| s.theta_ref_rad.to_degrees()),
+            None,
+            Some((3, 3)),
         );
     }
     pitch = pitch
@@ -93,10 +119,12 @@ pub(crate) fn figures(runs: &[ControllerRun], flight: &StepFlight) -> Vec<(&'sta
         "time (s)",
         "elevator δe (deg, trailing edge down)",
     );
-    for run in runs {
-        elevator = elevator.series(
+    for (index, run) in runs.iter().enumerate() {
+        elevator = elevator.styled_series(
             format!("δe, {}", run.choice.label()),
             series(&run.samples, |s| s.elevator_rad.to_degrees()),
+            None,
+            (index > 0).then_some((10, 6)),
         );
     }
     elevator = elevator
