@@ -191,6 +191,47 @@ pub(crate) fn summary_rows(report: &LandingReport) -> Vec<Vec<String>> {
     rows
 }
 
+/// The actuator block of `report.html`, as the terminal prints it.
+fn actuator_rows(report: &LandingReport) -> Vec<Vec<String>> {
+    let a = &report.summary.actuator;
+    let row = |name: &str, value: String, unit: &str| vec![name.to_owned(), value, unit.to_owned()];
+    vec![
+        row(
+            "elevator rate, RMS",
+            html::number(a.elevator_rate_rms_degps, 1),
+            "deg/s",
+        ),
+        row(
+            "time on the elevator's rate limit",
+            format!(
+                "{} ({} %)",
+                html::number(a.time_on_rate_limit_s, 2),
+                html::number(a.time_on_rate_limit_pct, 1)
+            ),
+            "s",
+        ),
+        row(
+            "time on the elevator's stops",
+            format!(
+                "{} ({} %)",
+                html::number(a.time_on_stops_s, 2),
+                html::number(a.time_on_stops_pct, 1)
+            ),
+            "s",
+        ),
+        row(
+            "elevator travel Σ|Δδe|",
+            html::number(a.elevator_travel_deg, 0),
+            "deg",
+        ),
+        row(
+            "thrust rate, RMS",
+            html::number(a.thrust_rate_rms_knps, 1),
+            "kN/s",
+        ),
+    ]
+}
+
 /// `report.html` of an approach: the summary, every plot, the scenario flown and
 /// `summary.json` itself.
 fn html_report(
@@ -209,6 +250,11 @@ fn html_report(
             "The numbers of `summary.json`, rounded (the file itself is at the end of the page).",
         )
         .table(&["quantity", "value", "unit"], summary_rows(report));
+    page.section("Actuators")
+        .paragraph(
+            "What the stabilator and the engines did over the run (`actuator` in `summary.json`).",
+        )
+        .table(&["quantity", "value", "unit"], actuator_rows(report));
     let plots_section = page.section("Plots");
     for (stem, svg) in plots {
         plots_section.figure(svg, format!("`{stem}.svg` (also `{stem}.png`)"));

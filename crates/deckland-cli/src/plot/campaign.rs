@@ -27,7 +27,24 @@ pub(crate) fn figures(folder: &CampaignFolder) -> Vec<(&'static str, Figure)> {
         let points = touchdowns(label);
         dispersion = dispersion.scatter(format!("{label} ({} touchdowns)", points.len()), points);
     }
-    dispersion = dispersion.vertical_line("ramp", -deck.ramp_aft_of_aim_point_m);
+    // The axis spans the touchdowns and the wires; the ramp only when a touchdown lies
+    // near it, else half of the axis would be empty.
+    let ramp_m = -deck.ramp_aft_of_aim_point_m;
+    let (mut low, mut high) = (deck.wire_positions_m[0], deck.wire_positions_m[3]);
+    for (x, _) in labels.iter().flat_map(|label| touchdowns(label)) {
+        (low, high) = (low.min(x), high.max(x));
+    }
+    let margin = 0.05 * (high - low).max(1.0);
+    if low - margin <= ramp_m + 10.0 {
+        dispersion = dispersion.vertical_line("ramp", ramp_m);
+        low = low.min(ramp_m);
+    } else {
+        dispersion = dispersion.note(format!(
+            "the ramp, at {} m, is left of the axis: no touchdown near it",
+            ramp_m
+        ));
+    }
+    dispersion = dispersion.x_limits((low - margin)..(high + margin));
     for (index, wire) in deck.wire_positions_m.iter().enumerate() {
         dispersion = dispersion.vertical_line(format!("wire {}", index + 1), *wire);
     }

@@ -89,7 +89,7 @@ impl Panel {
         } else {
             self.draw_bar_chart(area)?
         };
-        if !legend.is_shown() {
+        if !legend.is_shown() || self.shared_legend {
             return Ok(None);
         }
         let size = legend.size(area)?;
@@ -124,6 +124,9 @@ impl Panel {
             bottom: ys.end,
         };
         let mut occupancy = Occupancy::new(plot);
+        // One pixel in data units.
+        let pixel_x = (x_range.end - x_range.start) / f64::from((xs.end - xs.start).max(1));
+        let pixel_y = (y_range.end - y_range.start) / f64::from((ys.end - ys.start).max(1));
         let mut legend = Legend {
             notes: self.notes.clone(),
             entries: Vec::new(),
@@ -179,21 +182,34 @@ impl Panel {
             let colour = line.colour.unwrap_or(PALETTE[index % PALETTE.len()]);
             let points = finite(&line.points);
             let pixels: Vec<(i32, i32)> = points.iter().map(|p| chart.backend_coord(p)).collect();
-            let width = if !line.dashed && is_jagged(&pixels) {
-                1
-            } else {
-                2
-            };
-            let style = colour.stroke_width(width);
+            // A jagged line is drawn 1 px wide three times, offset by one pixel right and
+            // down, so that it looks as heavy as the others (2 px) without breaking up.
+            let jagged = !line.dashed && is_jagged(&pixels);
+            let width = 2;
             let dash = line.dashed.then_some(line.pattern.unwrap_or((10, 6)));
             match dash {
                 Some((dash, gap)) => chart
-                    .draw_series(DashedLineSeries::new(points, dash, gap, style))
+                    .draw_series(DashedLineSeries::new(
+                        points,
+                        dash,
+                        gap,
+                        colour.stroke_width(width),
+                    ))
+                    .map(|_| ())
                     .map_err(error)?,
+                None if jagged => {
+                    for (dx, dy) in [(0.0, 0.0), (pixel_x, 0.0), (0.0, -pixel_y)] {
+                        let shifted = points.iter().map(|(x, y)| (x + dx, y + dy));
+                        chart
+                            .draw_series(LineSeries::new(shifted, colour.stroke_width(1)))
+                            .map_err(error)?;
+                    }
+                }
                 None => chart
-                    .draw_series(LineSeries::new(points, style))
+                    .draw_series(LineSeries::new(points, colour.stroke_width(width)))
+                    .map(|_| ())
                     .map_err(error)?,
-            };
+            }
             occupancy.mark_path(&pixels, 2);
             legend.push(
                 &line.name,
@@ -239,24 +255,25 @@ impl Panel {
             let ends = [(line.x, y_range.start), (line.x, y_range.end)];
             let pixels = ends.map(|p| chart.backend_coord(&p));
             chart
-                .draw_series(DashedLineSeries::new(ends, 6, 4, style))
+                .draw_series(DashedLineSeries::new(ends, 2, 3, style))
                 .map_err(error)?;
             occupancy.mark_path(&pixels, 1);
             let (w, h) = area
                 .estimate_text_size(&line.name, &label_style)
                 .map_err(error)?;
+            let (w, h) = (i32::try_from(w).unwrap_or(0), i32::try_from(h).unwrap_or(0));
             let top = chart.backend_coord(&(line.x, y_range.end));
-            occupancy.mark_rect(PixelRect::at(
-                (top.0 + 2, top.1 + 2),
-                (
-                    i32::try_from(w).unwrap_or(0) + 4,
-                    i32::try_from(h).unwrap_or(0) + 4,
-                ),
-            ));
+            // The label right of the line, or left of it where it would leave the axes.
+            let left = if top.0 + 4 + w > plot.right {
+                top.0 - 4 - w
+            } else {
+                top.0 + 4
+            };
+            occupancy.mark_rect(PixelRect::at((left - 2, top.1 + 2), (w + 4, h + 4)));
             let base = area.get_base_pixel();
             area.draw(&Text::new(
                 line.name.clone(),
-                (top.0 + 4 - base.0, top.1 + 4 - base.1),
+                (left - base.0, top.1 + 4 - base.1),
                 label_style.clone(),
             ))
             .map_err(error)?;

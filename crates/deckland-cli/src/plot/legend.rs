@@ -300,6 +300,7 @@ impl Legend {
         };
         let mut lines = Vec::new();
         for note in &self.notes {
+            let note_start = lines.len();
             // A short token (a unit, "=") stays with the word before it: "2.008 s".
             let mut words: Vec<String> = Vec::new();
             for word in note.split_whitespace() {
@@ -326,6 +327,20 @@ impl Legend {
             }
             if !line.is_empty() {
                 lines.push(line);
+            }
+            // No lone word on a note's last line: take the previous line's last word
+            // down when both still fit ("… 0.3 m above the / deck" → "… 0.3 m above / the
+            // deck").
+            if let [.., previous, last] = &mut lines[note_start..] {
+                if !last.contains(' ') {
+                    if let Some((rest, word)) = previous.rsplit_once(' ') {
+                        let joined = format!("{word} {last}");
+                        if fits(&joined) {
+                            *last = joined;
+                            previous.truncate(rest.len());
+                        }
+                    }
+                }
             }
         }
         lines

@@ -88,6 +88,8 @@ pub struct Panel {
     pub(super) notes: Vec<String>,
     pub(super) integer_y: bool,
     pub(super) x_limits: Option<Range<f64>>,
+    /// The legend is that of another panel of the figure: none is drawn here.
+    pub(super) shared_legend: bool,
 }
 
 /// Where a panel's legend went: `Some(width)` when it needs the column beside the axes.
@@ -247,6 +249,13 @@ impl Panel {
     /// Writes `text` in bold at the top of the legend (the outcome of a run).
     pub fn note(mut self, text: impl Into<String>) -> Self {
         self.notes.push(text.into());
+        self
+    }
+
+    /// Draws no legend: the entries are those of another panel of the same figure, which
+    /// says so (its title, or the figure's).
+    pub fn shared_legend(mut self) -> Self {
+        self.shared_legend = true;
         self
     }
 

@@ -66,8 +66,9 @@ pub struct CampaignArgs {
     /// Fly the same seeds and dispersions under O-PD and PID and report them side by side.
     #[arg(long)]
     pub compare: bool,
-    /// Fly only shard K/M of the campaign (K from 0 to M − 1): the runs i with
-    /// i mod M = K. `deckland merge` puts the M shard folders together.
+    /// Fly only shard K/M of the campaign: the runs i with i mod M = K. Shards are
+    /// numbered from 0, like the runs: K from 0 to M − 1, so three shards are 0/3, 1/3
+    /// and 2/3 (3/3 is refused). `deckland merge` puts the M shard folders together.
     #[arg(long, value_parser = clap::builder::ValueParser::new(parse_shard), allow_hyphen_values = true)]
     pub shard: Option<Shard>,
 }

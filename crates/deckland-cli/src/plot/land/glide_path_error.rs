@@ -13,7 +13,7 @@ pub(super) fn figure(samples: &[Signals], title: &str) -> Figure {
         ))
         .panel(
             Panel::new(
-                "Glide-path error h_ref − h_hook (positive: below the path)",
+                "Glide-path error: path height − hook height (positive: hook below the path)",
                 TIME,
                 "error (m)",
             )

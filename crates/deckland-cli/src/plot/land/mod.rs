@@ -11,6 +11,7 @@ mod glide_path_error;
 mod pitch;
 mod wind;
 
+use deckland::environment::STEADY_WAKE_EXTENT_M;
 use deckland::experiments::ApproachRun;
 use deckland::scenario::Scenario;
 use deckland::simulation::Signals;
@@ -37,6 +38,20 @@ pub(super) fn series_where_applicable(
         .collect()
 }
 
+/// When the air wake reaches the aircraft: the first time its centre of gravity is within
+/// the wake's extent aft of the ship's pitch centre (s), if the wake blows at all.
+pub(super) fn wake_onset(samples: &[Signals], scenario: &Scenario) -> Option<(f64, f64)> {
+    let wind = &scenario.environment.wind;
+    if !(wind.steady_wake || wind.periodic_wake) {
+        return None;
+    }
+    let extent_m = wind.wake_extent_m.unwrap_or(STEADY_WAKE_EXTENT_M);
+    samples
+        .iter()
+        .find(|s| s.ship.distance_aft_of_pitch_centre_m(s.x_m) < extent_m)
+        .map(|s| (s.time_s, extent_m))
+}
+
 /// The approach's figures, each with its file stem. `flown` names the controller, the
 /// conditions and the seed.
 pub(crate) fn figures(
@@ -55,7 +70,7 @@ pub(crate) fn figures(
         ),
         ("pitch", pitch::figure(samples, &title)),
         ("controls", controls::figure(samples, scenario, &title)),
-        ("airspeed", airspeed::figure(samples, &title)),
-        ("wind", wind::figure(samples, &title)),
+        ("airspeed", airspeed::figure(samples, scenario, &title)),
+        ("wind", wind::figure(samples, scenario, &title)),
     ]
 }

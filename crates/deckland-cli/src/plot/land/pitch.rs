@@ -14,7 +14,7 @@ pub(super) fn figure(samples: &[Signals], title: &str) -> Figure {
         .panel(
             Panel::new("Pitch attitude and command", TIME, "pitch θ (deg)")
                 .series(
-                    "pitch command θ_ref",
+                    "pitch command",
                     series(samples, |s| s.theta_ref_rad.to_degrees()),
                 )
                 .series("pitch θ", series(samples, |s| s.theta_rad.to_degrees())),

@@ -2,14 +2,23 @@
 
 use deckland::simulation::Signals;
 
-use super::{series, TIME};
+use deckland::scenario::Scenario;
+
+use super::{series, wake_onset, TIME};
 use crate::plot::{Figure, Panel};
 
 /// The total wind at the aircraft in earth axes.
-pub(super) fn figure(samples: &[Signals], title: &str) -> Figure {
+pub(super) fn figure(samples: &[Signals], scenario: &Scenario, title: &str) -> Figure {
+    let onset = wake_onset(samples, scenario);
+    let mark = |panel: Panel| match onset {
+        Some((time_s, extent_m)) => {
+            panel.vertical_line(format!("air wake from {extent_m:.0} m aft"), time_s)
+        }
+        None => panel,
+    };
     Figure::new()
         .title(format!("Wind at the aircraft — {title}"))
-        .panel(
+        .panel(mark(
             Panel::new(
                 "Total wind in earth axes (mean, turbulence and air wake)",
                 TIME,
@@ -20,5 +29,5 @@ pub(super) fn figure(samples: &[Signals], title: &str) -> Figure {
                 series(samples, |s| s.wind.x_mps),
             )
             .series("z (positive down)", series(samples, |s| s.wind.z_mps)),
-        )
+        ))
 }
