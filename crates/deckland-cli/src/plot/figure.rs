@@ -90,7 +90,7 @@ impl Figure {
     /// The width of the legend column: 0 when every legend finds a free place inside its
     /// axes, else the widest of those that do not (found by drawing to a scratch SVG,
     /// again with the column, since narrower axes may push out another legend).
-    fn legend_column(&self) -> Result<i32> {
+    pub(super) fn legend_column(&self) -> Result<i32> {
         let mut column = 0;
         for _ in 0..3 {
             let mut scratch = String::new();

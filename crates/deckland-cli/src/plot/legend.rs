@@ -516,6 +516,28 @@ mod tests {
     }
 
     #[test]
+    fn a_note_never_ends_on_a_lone_word() {
+        // The outcome of seed 1 wrapped as "… 0.3 m above the" / "deck" at 300 px.
+        crate::plot::tests::register();
+        let mut svg = String::new();
+        let area = SVGBackend::with_string(&mut svg, (800, 400)).into_drawing_area();
+        let legend = Legend {
+            notes: vec![
+                "bolter: flew over the last wire 0.3 m above the deck".to_owned(),
+                "short".to_owned(),
+            ],
+            entries: Vec::new(),
+        };
+        let lines = legend.note_lines(&area);
+        assert!(lines.len() >= 3, "{lines:?}");
+        let last_of_first = &lines[lines.len() - 2];
+        assert!(last_of_first.contains(' '), "a lone word: {lines:?}");
+        assert!(last_of_first.ends_with("deck"), "{lines:?}");
+        // A one-line note stays as it is, and takes no word from the note before.
+        assert_eq!(lines.last().map(String::as_str), Some("short"));
+    }
+
+    #[test]
     fn a_full_area_has_no_place() {
         let mut grid = Occupancy::new(area());
         grid.mark_rect(area());

@@ -5,6 +5,11 @@ use super::panel::*;
 use super::style::*;
 use super::*;
 
+/// Registers the bundled font (for tests that measure text).
+pub(super) fn register() {
+    register_bundled_font().expect("the bundled font registers");
+}
+
 #[test]
 fn bundled_font_registers() {
     assert!(register_bundled_font().is_ok());
@@ -159,4 +164,26 @@ fn figure_renders_to_svg_with_its_text() {
     assert!(
         svg.contains("Two panels") && svg.contains("height (m)") && svg.contains("speed (m/s)")
     );
+}
+
+#[test]
+fn a_panel_sharing_a_legend_needs_no_legend_column() {
+    // (A legend is drawn from two entries on.) A panel full of data has no free place for its legend: alone, the figure needs a
+    // column beside the axes; when it shares the legend of the panel above, it needs none.
+    let full: Vec<(f64, f64)> = (0..10_000)
+        .map(|i| (f64::from(i % 200), f64::from(i / 200)))
+        .collect();
+    let (left, right): (Vec<_>, Vec<_>) = full.iter().partition(|(x, _)| *x < 100.0);
+    let crowded = || {
+        Panel::new("t", "x", "y")
+            .scatter("left", left.clone())
+            .scatter("right", right.clone())
+    };
+    let open = Panel::new("t", "x", "y")
+        .series("rising", vec![(0.0, 0.0), (199.0, 1.0)])
+        .series("falling", vec![(0.0, 1.0), (199.0, 0.9)]);
+    let alone = Figure::new().panel(open.clone()).panel(crowded());
+    assert!(alone.legend_column().unwrap() > 0);
+    let shared = Figure::new().panel(open).panel(crowded().shared_legend());
+    assert_eq!(shared.legend_column().unwrap(), 0);
 }
