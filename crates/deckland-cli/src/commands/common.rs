@@ -168,12 +168,10 @@ pub fn load_scenario_file(path: &std::path::Path) -> anyhow::Result<Scenario> {
     use anyhow::Context;
     let text = std::fs::read_to_string(path)
         .with_context(|| format!("cannot read the scenario file {}", path.display()))?;
-    deckland::scenario::load_scenario(&text, &path.display().to_string()).map_err(|error| {
-        // The file's only unsigned integer is the seed, whose range serde calls "u64".
-        anyhow::anyhow!(error
-            .to_string()
-            .replace("expected u64", &format!("expected {SEED_RANGE}")))
-    })
+    Ok(deckland::scenario::load_scenario(
+        &text,
+        &path.display().to_string(),
+    )?)
 }
 
 /// Where a command writes its results and how it prints them.
