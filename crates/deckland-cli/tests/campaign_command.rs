@@ -130,6 +130,86 @@ fn compare_flies_both_controllers_on_the_same_seeds() {
         assert_eq!((pair[0][1], pair[1][1]), ("O-PD", "PID"));
         assert_eq!(pair[0][2], pair[1][2], "same seed");
     }
+
+    // The paired differences, recomputed from runs.csv: PID − O-PD run by run.
+    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
+    let column = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let touchdown = column("touchdown_distance_m");
+    let differences: Vec<f64> = rows
+        .chunks(2)
+        .filter_map(|pair| {
+            let a = pair[0][touchdown].parse::<f64>().ok()?;
+            let b = pair[1][touchdown].parse::<f64>().ok()?;
+            Some(b - a)
+        })
+        .collect();
+    let mean = differences.iter().sum::<f64>() / differences.len() as f64;
+    let line = table
+        .lines()
+        .find(|l| {
+            l.trim_start()
+                .starts_with("touchdown from the aim point (m)")
+        })
+        .unwrap_or_else(|| panic!("no paired touchdown line in:\n{table}"));
+    assert!(
+        line.contains(&format!("{mean:+.2} ±")),
+        "mean paired difference {mean:+.2} not in `{line}`"
+    );
+    assert!(
+        table.contains(&format!(
+            "paired differences PID − O-PD, run by run on the same seed: {} pairs",
+            3
+        )),
+        "{table}"
+    );
+
+    // Every outcome class has a row, the safe outcomes are totalled, and a quantity
+    // with no sign (an RMS, a share of time) prints none.
+    for row in [
+        "invalid scenario",
+        "safe: trap, bolter or wave-off",
+        "wave-off (safe)",
+    ] {
+        assert!(
+            table.lines().any(|l| l.trim_start().starts_with(row)),
+            "{row}: {table}"
+        );
+    }
+    for unsigned in [
+        "touchdown sink rate (m/s): mean ± sd",
+        "elevator rate RMS (deg/s): mean ± sd",
+        "thrust rate RMS (kN/s): mean ± sd",
+    ] {
+        let line = table.lines().find(|l| l.contains(unsigned)).unwrap();
+        assert!(!line.contains('+'), "a sign on `{line}`");
+    }
+    assert!(
+        table.contains("if 1 event,") && !table.contains("1 events"),
+        "{table}"
+    );
+    let rare = table
+        .lines()
+        .skip_while(|l| !l.contains("rare failures"))
+        .skip(1)
+        .take_while(|l| !l.contains("to show p <"))
+        .collect::<Vec<_>>()
+        .join("\n");
+    assert!(
+        !rare.contains("wave-off"),
+        "a wave-off among the failures: {rare}"
+    );
+
+    // report.html holds the same: actuators, paired differences, a rare-events table.
+    let page = std::fs::read_to_string(out.join("report.html")).unwrap();
+    for part in [
+        "Actuators",
+        "elevator rate RMS (deg/s)",
+        "Paired differences",
+        "Rare events",
+        "runs with it",
+    ] {
+        assert!(page.contains(part), "report.html lacks `{part}`");
+    }
     let _ = std::fs::remove_dir_all(&dir);
 }
 

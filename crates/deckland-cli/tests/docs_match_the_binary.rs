@@ -157,3 +157,149 @@ fn the_readme_lists_every_example() {
         .collect();
     assert_eq!(listed, examples);
 }
+
+/// A line of a campaign's table with its timing masked: the threads, the seconds and the
+/// rate of "…, seed 1, 2 threads, 6.8 s (147 runs/s)" change from run to run.
+fn masked(line: &str) -> String {
+    match (line.find(" threads, "), line.rfind(" runs/s)")) {
+        (Some(threads), Some(rate)) if threads < rate => {
+            let start = line[..threads].rfind(", ").map_or(0, |i| i + 2);
+            format!(
+                "{}<threads, time and rate>{}",
+                &line[..start],
+                &line[rate + " runs/s)".len()..]
+            )
+        }
+        _ => line.trim_end().to_owned(),
+    }
+}
+
+/// The README's example outputs: each ```text block right after a line
+/// `<!-- the output of: deckland ARGS -->`, with ARGS.
+fn readme_examples() -> Vec<(String, Vec<String>)> {
+    let text = readme();
+    let marker = "<!-- the output of: deckland ";
+    let mut examples = Vec::new();
+    for (start, _) in text.match_indices(marker) {
+        let rest = &text[start + marker.len()..];
+        let args = rest[..rest.find(" -->").expect("a closed marker")].to_owned();
+        let block = rest
+            .split_once("```text\n")
+            .and_then(|(between, block)| {
+                (between.lines().count() <= 1).then(|| block.split_once("\n```").unwrap().0)
+            })
+            .unwrap_or_else(|| panic!("no ```text block right after the marker of `{args}`"));
+        examples.push((args, block.lines().map(masked).collect()));
+    }
+    examples
+}
+
+/// Every example output in the README is what the binary prints for its command, line
+/// for line (an excerpt keeps its lines in order), for the default hardware: the step,
+/// land, sink, trim, linearize and campaign tables (issue 29: the step table was the
+/// paper hardware's, the sink example did not settle).
+#[test]
+fn every_example_output_in_the_readme_is_what_the_binary_prints() {
+    let examples = readme_examples();
+    let commands: BTreeSet<&str> = examples
+        .iter()
+        .filter_map(|(args, _)| args.split_whitespace().next())
+        .collect();
+    for command in ["step", "land", "sink", "campaign", "trim", "linearize"] {
+        assert!(
+            commands.contains(command),
+            "the README shows no example output of `{command}`"
+        );
+    }
+    let dir = scratch("docs-examples");
+    for (index, (args, block)) in examples.iter().enumerate() {
+        let mut argv: Vec<String> = args.split_whitespace().map(str::to_owned).collect();
+        if ["land", "step", "sink", "campaign"].contains(&argv[0].as_str()) {
+            let out = dir.join(index.to_string());
+            argv.extend(["--out".to_owned(), out.display().to_string()]);
+        }
+        // From the repository's root, as the README runs it (scenario paths).
+        let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..");
+        let output = common::deckland_in(&root, &argv);
+        assert!(output.status.success(), "{argv:?}: {output:?}");
+        let printed: Vec<String> = String::from_utf8(output.stdout)
+            .unwrap()
+            .lines()
+            .map(masked)
+            .collect();
+        let mut from = 0;
+        for line in block {
+            match printed[from..].iter().position(|p| p == line) {
+                Some(at) => from += at + 1,
+                None => panic!(
+                    "README example of `deckland {args}`: the binary does not print, in \
+                     this order,\n  {line}\nIt prints:\n{}",
+                    printed.join("\n")
+                ),
+            }
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The long options of `deckland COMMAND --help`.
+fn options_of(command: &str) -> BTreeSet<String> {
+    stdout_of(&[command, "--help"])
+        .lines()
+        .filter(|line| line.trim_start().starts_with('-'))
+        .flat_map(|line| line.split(|c: char| c.is_whitespace() || c == ','))
+        .filter(|w| w.starts_with("--") && w.len() > 2)
+        .map(|w| w.split(['=', '<']).next().unwrap().to_owned())
+        .filter(|w| w != "--help" && w != "--version")
+        .collect()
+}
+
+/// Every synopsis in the README (the ```sh block line `cargo run --release -- COMMAND
+/// [--option …]` and its continuation lines) names exactly the options of the command's
+/// `--help` (issue 29: the step synopsis left out `--hardware`).
+#[test]
+fn every_synopsis_names_exactly_the_options_of_help() {
+    let text = readme();
+    let mut checked = BTreeSet::new();
+    let lines: Vec<&str> = text.lines().collect();
+    for (index, line) in lines.iter().enumerate() {
+        let Some(rest) = line.trim_start().strip_prefix("cargo run --release -- ") else {
+            continue;
+        };
+        let command = rest.split_whitespace().next().unwrap().to_owned();
+        // A synopsis lists options in brackets; other lines are examples.
+        if !rest.contains("[--") {
+            continue;
+        }
+        let mut synopsis = rest.trim_end_matches('\\').to_owned();
+        for next in &lines[index + 1..] {
+            let next = next.trim();
+            if next.starts_with('[') {
+                synopsis.push(' ');
+                synopsis.push_str(next.trim_end_matches('\\'));
+            } else {
+                break;
+            }
+        }
+        let named: BTreeSet<String> = synopsis
+            .split(|c: char| c.is_whitespace() || c == '[' || c == ']' || c == '|')
+            .filter(|w| w.starts_with("--") && w.len() > 2)
+            .map(str::to_owned)
+            .collect();
+        let help = options_of(&command);
+        let missing: Vec<_> = help.difference(&named).collect();
+        let unknown: Vec<_> = named.difference(&help).collect();
+        assert!(
+            missing.is_empty() && unknown.is_empty(),
+            "README synopsis of `{command}`: options of --help missing {missing:?}, \
+             options --help does not have {unknown:?}"
+        );
+        checked.insert(command);
+    }
+    for command in ["land", "step", "sink", "campaign", "trim", "environment"] {
+        assert!(
+            checked.contains(command),
+            "no synopsis of `{command}`: {checked:?}"
+        );
+    }
+}

@@ -173,12 +173,11 @@ fn regression_seeds_share_one_domain_checked_before_anything() {
             let mut args = command.clone();
             args.extend(["--seed", seed, "--out", out]);
             let output = deckland(&args);
-            let range = if seed == "-1" {
-                "invalid digit"
-            } else {
-                "0..=9223372036854775807"
-            };
-            assert_refused(&output, 2, &["--seed", range]);
+            assert_refused(
+                &output,
+                2,
+                &["--seed", "0 to 2⁶³ − 1 = 9223372036854775807"],
+            );
             assert!(!Path::new(out).exists(), "{command:?}: folder created");
         }
     }
@@ -197,6 +196,21 @@ fn regression_seeds_share_one_domain_checked_before_anything() {
     fs::write(&big, "seed = 9223372036854775808\n").unwrap();
     let check = deckland(["scenario", "--check", big.to_str().unwrap()]);
     assert_refused(&check, 1, &["seed", "line 1"]);
+    // A seed a file can hold but outside the domain, in the domain's words.
+    for (value, name) in [("-1", "negative"), ("1.5", "fraction")] {
+        let file = dir.join(format!("{name}-seed.toml"));
+        fs::write(&file, format!("seed = {value}\n")).unwrap();
+        let check = deckland(["scenario", "--check", file.to_str().unwrap()]);
+        assert_refused(
+            &check,
+            1,
+            &["seed", "line 1", "an integer from 0 to 2⁶³ − 1"],
+        );
+        assert!(
+            !String::from_utf8_lossy(&check.stderr).contains("u64"),
+            "{check:?}"
+        );
+    }
     let _ = fs::remove_dir_all(&dir);
 }
 

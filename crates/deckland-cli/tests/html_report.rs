@@ -128,6 +128,21 @@ fn land_report_html_renders_the_summary_numbers_in_a_browser() {
         expected.push(format!("{name} {:.2} m", number(&summary[field])));
     }
     expected.push(format!("integration steps {}", summary["steps"]));
+    // The actuator block, as summary.json holds it.
+    let actuator = &summary["actuator"];
+    expected.push(format!(
+        "elevator rate, RMS {:.1} deg/s",
+        number(&actuator["elevator_rate_rms_degps"])
+    ));
+    expected.push(format!(
+        "time on the elevator's rate limit {:.2} ({:.1} %) s",
+        number(&actuator["time_on_rate_limit_s"]),
+        number(&actuator["time_on_rate_limit_pct"])
+    ));
+    expected.push(format!(
+        "thrust rate, RMS {:.1} kN/s",
+        number(&actuator["thrust_rate_rms_knps"])
+    ));
     for row in expected {
         assert!(text.contains(&row), "the page does not show `{row}`");
     }
@@ -204,5 +219,29 @@ fn campaign_report_html_shows_the_outcomes_with_their_intervals() {
     );
     assert!(text.contains(&row), "the page does not show `{row}`");
     assert!(text.contains("12 runs per controller"), "title: {text}");
+    // The actuator statistics, the paired differences and the rare failures as tables;
+    // the safe outcomes totalled, and no wave-off among the failures.
+    let rate = &controllers[1]["elevator_rate_rms_degps"];
+    let row = format!(
+        "elevator rate RMS (deg/s) PID {} {:.2} {:.2}",
+        rate["count"],
+        rate["mean"].as_f64().unwrap(),
+        rate["standard_deviation"].as_f64().unwrap()
+    );
+    assert!(text.contains(&row), "the page does not show `{row}`");
+    for part in [
+        "Paired differences",
+        "touchdown from the aim point (m)",
+        "controller failure runs with it runs 95 % upper bound",
+        "safe: trap, bolter or wave-off",
+    ] {
+        assert!(text.contains(part), "the page does not show `{part}`");
+    }
+    let rare = text
+        .split("Rare events")
+        .nth(1)
+        .and_then(|rest| rest.split("Plots").next())
+        .unwrap();
+    assert!(!rare.contains("PID wave-off"), "{rare}");
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -98,3 +98,52 @@ fn unreachable_trim_fails_with_the_limit_named() {
         .unwrap()
         .contains("--speed -5.0 is not allowed"));
 }
+
+/// Regression: `linearize` printed "-0.000000" for entries that round to zero.
+#[test]
+fn linearize_prints_no_negative_zero() {
+    let output = deckland(["linearize"]);
+    assert!(output.status.success(), "{output:?}");
+    let text = String::from_utf8_lossy(&output.stdout);
+    for word in text.split_whitespace() {
+        let magnitude = word.trim_start_matches(['-', '−']);
+        let zero = !magnitude.is_empty() && magnitude.chars().all(|c| c == '0' || c == '.');
+        assert!(
+            !(zero && magnitude != word),
+            "negative zero `{word}` in:\n{text}"
+        );
+    }
+}
+
+/// Regression: `scenario --check` said only "did not converge" for an approach airspeed
+/// too low to trim, where `trim` names the angle of attack it needs. It now says that
+/// too, and the lowest airspeed that trims.
+#[test]
+fn scenario_check_explains_an_untrimmable_airspeed_as_trim_does() {
+    let dir = common::scratch("untrimmable-airspeed");
+    let file = dir.join("slow.toml");
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(&file, "[approach]\nairspeed_mps = 40.0\n").unwrap();
+    let check = deckland(["scenario", "--check", file.to_str().unwrap()]);
+    common::assert_refused(
+        &check,
+        1,
+        &[
+            "approach.airspeed_mps",
+            "trim needs angle of attack",
+            "lowest airspeed that trims",
+        ],
+    );
+    let trim = deckland(["trim", "--speed", "40", "--gamma", "-3.5"]);
+    let trim_error = String::from_utf8_lossy(&trim.stderr);
+    let reason = trim_error
+        .split("γ = -3.5°: ")
+        .nth(1)
+        .expect("trim names the speed and angle")
+        .trim();
+    assert!(
+        String::from_utf8_lossy(&check.stderr).contains(reason),
+        "{check:?} lacks `{reason}`"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -167,7 +167,7 @@ fn each_class_of_bad_input_names_the_file_line_and_field() {
             text: "# comment\nseed = -3\n",
             line: 2,
             field: "seed",
-            allowed: "u64",
+            allowed: "an integer from 0 to 2⁶³ − 1",
         },
         Case {
             what: "unknown name",

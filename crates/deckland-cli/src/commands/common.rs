@@ -29,8 +29,19 @@ impl HardwareChoice {
 /// The one seed domain of every command: 0 to 2⁶³ − 1, what a scenario file can hold
 /// (TOML integers are signed 64-bit), checked by clap before anything is flown or
 /// written; `--seed 9223372036854775808` is refused naming the option.
-pub fn seed_parser() -> clap::builder::RangedU64ValueParser<u64> {
-    clap::value_parser!(u64).range(0..=MAX_SEED)
+pub fn seed_parser() -> fn(&str) -> Result<u64, String> {
+    parse_seed
+}
+
+/// The range of a seed in words, as every seed error says it.
+pub const SEED_RANGE: &str = "an integer from 0 to 2⁶³ − 1 = 9223372036854775807";
+
+/// A seed from the command line: an integer from 0 to [`MAX_SEED`].
+fn parse_seed(text: &str) -> Result<u64, String> {
+    text.parse::<u64>()
+        .ok()
+        .filter(|seed| *seed <= MAX_SEED)
+        .ok_or_else(|| format!("expected {SEED_RANGE}"))
 }
 
 /// Sets `scenario` up as a run would (validation, trim, linearisation, controller
@@ -175,4 +186,18 @@ pub struct OutputArgs {
     /// Print the result as one JSON document instead of text.
     #[arg(long)]
     pub json: bool,
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn seeds_are_0_to_2_63_minus_1_and_errors_say_so() {
+        let parse = super::seed_parser();
+        assert_eq!(parse("0"), Ok(0));
+        assert_eq!(parse("9223372036854775807"), Ok((1 << 63) - 1));
+        for bad in ["-1", "9223372036854775808", "abc", ""] {
+            let error = parse(bad).expect_err(bad);
+            assert!(error.contains("0 to 2⁶³ − 1"), "{bad}: {error}");
+        }
+    }
 }

@@ -10,12 +10,12 @@ use super::common::{
 };
 use crate::html;
 use crate::output::OutputDir;
-use crate::plot::{Figure, MarkerShape, Panel, DECK_COLOUR};
+pub(crate) use crate::plot::land::figures;
 use anyhow::{Context, Result};
 use clap::Args;
-use deckland::experiments::{fly_approach, ApproachRow, ApproachRun};
+use deckland::experiments::{fly_approach, ApproachRow};
 use deckland::scenario::Scenario;
-use deckland::simulation::{Event, Outcome, RunSummary, Signals};
+use deckland::simulation::{Outcome, RunSummary};
 use serde::Serialize;
 
 /// Options of `deckland land`.
@@ -62,22 +62,6 @@ pub struct LandingReport<'a> {
     pub summary: &'a RunSummary,
 }
 
-/// Points (time, value) of one signal.
-fn series(samples: &[Signals], value: impl Fn(&Signals) -> f64) -> Vec<(f64, f64)> {
-    samples.iter().map(|s| (s.time_s, value(s))).collect()
-}
-
-/// Points (time, value) of a signal where it applies.
-fn series_where_applicable(
-    samples: &[Signals],
-    value: impl Fn(&Signals) -> Option<f64>,
-) -> Vec<(f64, f64)> {
-    samples
-        .iter()
-        .filter_map(|s| value(s).map(|v| (s.time_s, v)))
-        .collect()
-}
-
 /// The outcome in words, with what decided it: "trap on wire 4", "ramp strike: hook
 /// 3.29 m below the ramp".
 pub(crate) fn outcome_text(summary: &RunSummary) -> String {
@@ -87,264 +71,6 @@ pub(crate) fn outcome_text(summary: &RunSummary) -> String {
         (_, _, Some(reason)) => format!("{name}: {reason}"),
         _ => name,
     }
-}
-
-/// The hook height at `time_s`, interpolated between the recorded samples.
-fn hook_height_at(samples: &[Signals], time_s: f64) -> Option<f64> {
-    let after = samples.iter().position(|s| s.time_s >= time_s)?;
-    let b = &samples[after];
-    let Some(a) = after.checked_sub(1).map(|i| &samples[i]) else {
-        return Some(b.hook_h_m);
-    };
-    let span = b.time_s - a.time_s;
-    let fraction = if span > 0.0 {
-        (time_s - a.time_s) / span
-    } else {
-        1.0
-    };
-    Some(a.hook_h_m + fraction * (b.hook_h_m - a.hook_h_m))
-}
-
-/// Length of the final approach shown in the upper panel of `approach` (m).
-const FINAL_APPROACH_M: f64 = 1000.0;
-/// Distance aft of the ramp where the close-up over the deck starts (m).
-const CLOSE_UP_AFT_OF_RAMP_M: f64 = 190.0;
-
-/// The final approach in metres around the deck: the hook, the glide path and the
-/// landing point against the hook's distance along the deck from the aim point, heights
-/// above the deck's mean height; the ramp as the hook crossed it, the wires, the deck at
-/// touchdown and the touchdown point, with the outcome written on it. Two panels: the
-/// last 1000 m, and a close-up from 190 m aft of the ramp over the deck.
-fn approach_figure(run: &ApproachRun, scenario: &Scenario, flown: &str) -> Figure {
-    let deck = &scenario.environment.deck;
-    let samples = &run.samples;
-    let mean_deck_m = deck.deck_height_m;
-    let along = |s: &Signals| deck.distance_along_deck(&s.ship, s.hook_x_m);
-    // Points (distance along the deck, height above the mean deck) where the signal
-    // applies and the hook is at or forward of `from_m`.
-    let curve = |from_m: f64, value: &dyn Fn(&Signals) -> Option<f64>| -> Vec<(f64, f64)> {
-        samples
-            .iter()
-            .filter_map(|s| value(s).map(|v| (along(s), v - mean_deck_m)))
-            .filter(|(x, _)| *x >= from_m)
-            .collect()
-    };
-    let outcome = outcome_text(&run.summary);
-    let ramp_m = -deck.ramp_aft_of_aim_point_m;
-    let ramp_crossing = run.events.iter().find_map(|event| match event {
-        Event::RampCrossing {
-            time_s,
-            clearance_m,
-        } => hook_height_at(samples, *time_s)
-            .map(|hook| (hook - clearance_m - mean_deck_m, *clearance_m)),
-        _ => None,
-    });
-    let touchdown = run
-        .summary
-        .touchdown
-        .and_then(|t| hook_height_at(samples, t.time_s).map(|hook| (t, hook - mean_deck_m)));
-    // The deck as it stood at touchdown (or at the end of the run), ramp to bow side.
-    let deck_time_s = touchdown.map_or(run.summary.end_time_s, |(t, _)| t.time_s);
-    let deck_pose = samples
-        .iter()
-        .min_by(|a, b| {
-            (a.time_s - deck_time_s)
-                .abs()
-                .total_cmp(&(b.time_s - deck_time_s).abs())
-        })
-        .map(|s| s.ship);
-    let last_wire_m = deck.wire_positions_m[3];
-    let forward_end_m =
-        touchdown.map_or(last_wire_m, |(t, _)| t.distance_from_aim_m.max(last_wire_m)) + 20.0;
-    let deck_line: Vec<(f64, f64)> = deck_pose
-        .map(|pose| {
-            [ramp_m, forward_end_m]
-                .iter()
-                .map(|&s_m| (s_m, deck.point_along_deck(&pose, s_m).h_m - mean_deck_m))
-                .collect()
-        })
-        .unwrap_or_default();
-    let deck_name = if touchdown.is_some() {
-        "deck at touchdown"
-    } else {
-        "deck at the end of the run"
-    };
-    let panel = |title: String, from_m: f64, close_up: bool| {
-        let mut panel = Panel::new(
-            title,
-            "hook distance along the deck from the aim point (m, positive forward)",
-            "height above the mean deck (m)",
-        )
-        .x_limits(from_m..forward_end_m)
-        .series("hook", curve(from_m, &|s| Some(s.hook_h_m)))
-        .dashed_series("glide path", curve(from_m, &|s| s.path_height_m))
-        .series("landing point", curve(from_m, &|s| Some(s.aim_point.h_m)))
-        .coloured_series(deck_name, deck_line.clone(), DECK_COLOUR)
-        .vertical_line("ramp", ramp_m);
-        if let Some((height, clearance)) = ramp_crossing {
-            panel = panel.marker(
-                if clearance >= 0.0 {
-                    format!("ramp as crossed, {clearance:.2} m below the hook")
-                } else {
-                    format!("ramp as crossed, {:.2} m above the hook", -clearance)
-                },
-                (ramp_m, height),
-                MarkerShape::Triangle,
-            );
-        }
-        if let Some((t, height)) = touchdown {
-            panel = panel.marker(
-                format!(
-                    "touchdown {:+.1} m, sink {:.2} m/s",
-                    t.distance_from_aim_m, t.sink_rate_mps
-                ),
-                (t.distance_from_aim_m, height),
-                MarkerShape::Circle,
-            );
-        }
-        if close_up {
-            // Wires 12 m apart are numbered only: names would run into each other.
-            for (index, wire) in deck.wire_positions_m.iter().enumerate() {
-                panel = panel.vertical_line(format!("{}", index + 1), *wire);
-            }
-            panel = panel.note(outcome.clone());
-        }
-        panel
-    };
-    let close_up_m = ramp_m - CLOSE_UP_AFT_OF_RAMP_M;
-    Figure::new()
-        .title(format!("Final approach — {flown}: {outcome}"))
-        .panel(panel(
-            format!("The last {FINAL_APPROACH_M:.0} m"),
-            -FINAL_APPROACH_M,
-            false,
-        ))
-        .panel(panel(
-            format!(
-                "Over the deck: {:.0} m aft of the ramp to the wires (numbered 1–4)",
-                CLOSE_UP_AFT_OF_RAMP_M
-            ),
-            close_up_m,
-            true,
-        ))
-        .panel_height(440)
-}
-
-/// The approach's figures, each with its file stem: `approach` (the final approach in
-/// metres around the deck), `altitude` (the whole approach), `glide_path_error` (paper
-/// Fig. 14), `pitch` (Fig. 15), `controls`, `airspeed` and `wind`. `flown` names the
-/// controller, the conditions and the seed.
-pub(crate) fn figures(
-    run: &ApproachRun,
-    scenario: &Scenario,
-    flown: &str,
-) -> Vec<(&'static str, Figure)> {
-    let samples = &run.samples;
-    let title = format!("{flown}: {}", outcome_text(&run.summary));
-    let time = "time (s)";
-    let altitude = Figure::new()
-        .title(format!("Whole approach — {title}"))
-        .panel(
-            Panel::new(
-                "Hook height, glide path and the landing point on the deck",
-                time,
-                "height above mean sea level (m)",
-            )
-            .series("hook", series(samples, |s| s.hook_h_m))
-            .dashed_series(
-                "glide path (hook reference)",
-                series_where_applicable(samples, |s| s.path_height_m),
-            )
-            .series(
-                "landing point on the deck",
-                series(samples, |s| s.aim_point.h_m),
-            ),
-        );
-    let error = Figure::new()
-        .title(format!(
-            "Position error to the glide path (cf. paper Fig. 14) — {title}"
-        ))
-        .panel(
-            Panel::new(
-                "Glide-path error h_ref − h_hook (positive: below the path)",
-                time,
-                "error (m)",
-            )
-            .series(
-                "glide-path error",
-                series(samples, |s| s.glide_path_error_m),
-            )
-            .reference_line("on the path", 0.0),
-        );
-    let pitch = Figure::new()
-        .title(format!(
-            "Pitch angle on approach (cf. paper Fig. 15) — {title}"
-        ))
-        .panel(
-            Panel::new("Pitch attitude and command", time, "pitch θ (deg)")
-                .series(
-                    "pitch command θ_ref",
-                    series(samples, |s| s.theta_ref_rad.to_degrees()),
-                )
-                .series("pitch θ", series(samples, |s| s.theta_rad.to_degrees())),
-        );
-    let actuator = scenario.aircraft.elevator_actuator;
-    let controls = Figure::new()
-        .title(format!("Controls — {title}"))
-        .panel(
-            Panel::new(
-                "Elevator (positive trailing edge down)",
-                time,
-                "elevator δe (deg)",
-            )
-            .series("elevator", series(samples, |s| s.elevator_rad.to_degrees()))
-            .reference_line(
-                format!("lower stop {}°", signed(actuator.min_deflection_deg)),
-                actuator.min_deflection_deg,
-            )
-            .reference_line(
-                format!("upper stop {}°", signed(actuator.max_deflection_deg)),
-                actuator.max_deflection_deg,
-            ),
-        )
-        .panel(
-            Panel::new("Thrust, both engines", time, "thrust (kN)")
-                .series("command", series(samples, |s| s.thrust_command_n / 1000.0))
-                .series("actual", series(samples, |s| s.thrust_n / 1000.0)),
-        );
-    let airspeed = Figure::new()
-        .title(format!("Airspeed and angle of attack — {title}"))
-        .panel(
-            Panel::new("True airspeed", time, "airspeed (m/s)")
-                .series("airspeed", series(samples, |s| s.airspeed_mps)),
-        )
-        .panel(
-            Panel::new("Angle of attack", time, "angle of attack α (deg)")
-                .series("α", series(samples, |s| s.alpha_rad.to_degrees())),
-        );
-    let wind = Figure::new()
-        .title(format!("Wind at the aircraft — {title}"))
-        .panel(
-            Panel::new(
-                "Total wind in earth axes (mean, turbulence and air wake)",
-                time,
-                "wind (m/s)",
-            )
-            .series(
-                "x (positive forward; headwind negative)",
-                series(samples, |s| s.wind.x_mps),
-            )
-            .series("z (positive down)", series(samples, |s| s.wind.z_mps)),
-        );
-    vec![
-        ("approach", approach_figure(run, scenario, flown)),
-        ("altitude", altitude),
-        ("glide_path_error", error),
-        ("pitch", pitch),
-        ("controls", controls),
-        ("airspeed", airspeed),
-        ("wind", wind),
-    ]
 }
 
 /// `value` with its sign, a true minus for negative values: "+10", "−25".
@@ -465,6 +191,47 @@ pub(crate) fn summary_rows(report: &LandingReport) -> Vec<Vec<String>> {
     rows
 }
 
+/// The actuator block of `report.html`, as the terminal prints it.
+fn actuator_rows(report: &LandingReport) -> Vec<Vec<String>> {
+    let a = &report.summary.actuator;
+    let row = |name: &str, value: String, unit: &str| vec![name.to_owned(), value, unit.to_owned()];
+    vec![
+        row(
+            "elevator rate, RMS",
+            html::number(a.elevator_rate_rms_degps, 1),
+            "deg/s",
+        ),
+        row(
+            "time on the elevator's rate limit",
+            format!(
+                "{} ({} %)",
+                html::number(a.time_on_rate_limit_s, 2),
+                html::number(a.time_on_rate_limit_pct, 1)
+            ),
+            "s",
+        ),
+        row(
+            "time on the elevator's stops",
+            format!(
+                "{} ({} %)",
+                html::number(a.time_on_stops_s, 2),
+                html::number(a.time_on_stops_pct, 1)
+            ),
+            "s",
+        ),
+        row(
+            "elevator travel Σ|Δδe|",
+            html::number(a.elevator_travel_deg, 0),
+            "deg",
+        ),
+        row(
+            "thrust rate, RMS",
+            html::number(a.thrust_rate_rms_knps, 1),
+            "kN/s",
+        ),
+    ]
+}
+
 /// `report.html` of an approach: the summary, every plot, the scenario flown and
 /// `summary.json` itself.
 fn html_report(
@@ -483,6 +250,11 @@ fn html_report(
             "The numbers of `summary.json`, rounded (the file itself is at the end of the page).",
         )
         .table(&["quantity", "value", "unit"], summary_rows(report));
+    page.section("Actuators")
+        .paragraph(
+            "What the stabilator and the engines did over the run (`actuator` in `summary.json`).",
+        )
+        .table(&["quantity", "value", "unit"], actuator_rows(report));
     let plots_section = page.section("Plots");
     for (stem, svg) in plots {
         plots_section.figure(svg, format!("`{stem}.svg` (also `{stem}.png`)"));

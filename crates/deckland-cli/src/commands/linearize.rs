@@ -48,11 +48,21 @@ fn print_matrix<const R: usize, const C: usize>(
     for (i, state) in STATE_NAMES.iter().enumerate() {
         out!("  d{state:<15}")?;
         for j in 0..C {
-            out!("{:>23.6}", m[(i, j)])?;
+            out!("{:>23}", fixed(m[(i, j)], 6))?;
         }
         outln!()?;
     }
     Ok(())
+}
+
+/// `value` with `digits` decimals, and no minus sign on a value that rounds to zero
+/// ("0.000000", never "-0.000000").
+fn fixed(value: f64, digits: usize) -> String {
+    let text = format!("{value:.digits$}");
+    match text.strip_prefix('-') {
+        Some(magnitude) if magnitude.chars().all(|c| c == '0' || c == '.') => magnitude.to_owned(),
+        _ => text,
+    }
 }
 
 fn print_table(
@@ -102,11 +112,15 @@ fn print_table(
             _ => "neutral".to_string(),
         };
         outln!(
-            "  {:<14}{:>24}{:>12.4}{:>10.4}{:>12}{:>22}",
+            "  {:<14}{:>24}{:>12}{:>10}{:>12}{:>22}",
             mode.kind.name(),
-            format!("{:.4} ± {:.4}i", mode.eigenvalue.re, mode.eigenvalue.im),
-            mode.natural_frequency_rad_s,
-            mode.damping_ratio,
+            format!(
+                "{} ± {}i",
+                fixed(mode.eigenvalue.re, 4),
+                fixed(mode.eigenvalue.im, 4)
+            ),
+            fixed(mode.natural_frequency_rad_s, 4),
+            fixed(mode.damping_ratio, 4),
             period,
             timing
         )?;
@@ -146,4 +160,18 @@ pub fn run(args: &TrimArgs) -> Result<()> {
         )?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::fixed;
+
+    #[test]
+    fn values_that_round_to_zero_have_no_sign() {
+        assert_eq!(fixed(-1e-9, 6), "0.000000");
+        assert_eq!(fixed(-0.0, 4), "0.0000");
+        assert_eq!(fixed(-0.0000006, 6), "-0.000001");
+        assert_eq!(fixed(-0.526839, 6), "-0.526839");
+        assert_eq!(fixed(f64::NAN, 2), "NaN");
+    }
 }

@@ -1,9 +1,12 @@
 //! `deckland scenario`: the commented default scenario file, and checking a file.
 
 use super::common::{check_set_up, load_scenario_file};
-use anyhow::{Context, Result};
+use anyhow::{bail, Context, Result};
 use clap::Args;
+use deckland::aircraft::{trim, Aircraft, TrimError, TrimRequest};
+use deckland::scenario::Scenario;
 use deckland::scenario::{Mission, DEFAULT_SCENARIO_TOML};
+use deckland::simulation::{SetupError, Simulation};
 use std::path::PathBuf;
 
 /// Options of `deckland scenario`.
@@ -25,6 +28,16 @@ pub struct ScenarioArgs {
 pub fn run(args: &ScenarioArgs) -> Result<()> {
     if let Some(path) = &args.check {
         let scenario = load_scenario_file(path)?;
+        if let Err(SetupError::Trim(error @ TrimError::NoConvergence { .. })) =
+            Simulation::new(&scenario)
+        {
+            bail!(
+                "{}: the scenario cannot be flown: cannot set up the scenario: cannot trim the \
+                 start condition: {error}; {}",
+                path.display(),
+                untrimmable_airspeed(&scenario)
+            );
+        }
         check_set_up(&scenario)
             .with_context(|| format!("{}: the scenario cannot be flown", path.display()))?;
         let mission = match scenario.mission {
@@ -44,4 +57,63 @@ pub fn run(args: &ScenarioArgs) -> Result<()> {
         out!("{DEFAULT_SCENARIO_TOML}")?;
     }
     Ok(())
+}
+
+/// Why the approach airspeed of `scenario` cannot be trimmed, as precisely as `deckland
+/// trim` says it: the trim at that airspeed on the glide slope in still air (what
+/// failed, e.g. the angle of attack it needs), and the lowest airspeed that trims there.
+fn untrimmable_airspeed(scenario: &Scenario) -> String {
+    let section = &scenario.aircraft;
+    let Ok(aircraft) = Aircraft::new(
+        section.parameters,
+        section.aerodynamics(),
+        section.engines,
+        section.elevator_actuator,
+    ) else {
+        return "the aircraft section cannot be built".to_owned();
+    };
+    let airspeed = scenario.approach.airspeed_mps;
+    let gamma_deg = -scenario.control.flight_path.glide_slope_deg;
+    let trims = |speed_mps: f64| {
+        trim(
+            &aircraft,
+            &TrimRequest {
+                speed_mps,
+                flight_path_angle_rad: gamma_deg.to_radians(),
+            },
+        )
+    };
+    let at_airspeed = match trims(airspeed) {
+        Ok(_) => format!(
+            "in still air on the {}° glide slope it trims at {airspeed} m/s, so the wind over \
+             the deck makes it untrimmable",
+            -gamma_deg
+        ),
+        Err(error) => format!(
+            "in still air on the {}° glide slope (`deckland trim --speed {airspeed} --gamma \
+             {gamma_deg}`): {error}",
+            -gamma_deg
+        ),
+    };
+    // Bisection between the failing airspeed and one that trims, to 0.1 m/s.
+    let Some(mut high) = [80.0, 100.0, 150.0]
+        .into_iter()
+        .find(|&v| v > airspeed && trims(v).is_ok())
+    else {
+        return format!("{at_airspeed} (`approach.airspeed_mps` = {airspeed})");
+    };
+    let mut low = airspeed;
+    while high - low > 0.1 {
+        let middle = 0.5 * (low + high);
+        if trims(middle).is_ok() {
+            high = middle;
+        } else {
+            low = middle;
+        }
+    }
+    format!(
+        "{at_airspeed}; the lowest airspeed that trims there is about {:.1} m/s \
+         (`approach.airspeed_mps` = {airspeed})",
+        (high * 10.0).ceil() / 10.0
+    )
 }

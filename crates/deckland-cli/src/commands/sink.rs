@@ -9,7 +9,7 @@ use super::common::{
     seed_parser, validate_options, BaseScenarioArgs, Conditions, ControllerChoice, OutputArgs,
 };
 use crate::output::OutputDir;
-use crate::plot::{Figure, Panel};
+pub(crate) use crate::plot::sink::figure;
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use deckland::experiments::{
@@ -49,8 +49,9 @@ pub struct SinkArgs {
     /// not describe 20 km from the ship where the test is flown.
     #[arg(long, value_enum, default_value = "ideal")]
     pub conditions: Conditions,
-    /// Length of the run (s), more than 2 and at most 600.
-    #[arg(long, default_value_t = 20.0, allow_negative_numbers = true)]
+    /// Length of the run (s), more than 2 and at most 600; the default 30 s holds the
+    /// default command's settling (about 20 s) and its 0.5 s confirmation.
+    #[arg(long, default_value_t = 30.0, allow_negative_numbers = true)]
     pub seconds: f64,
     /// Seed of every random stream, 0 to 2⁶³ − 1.
     #[arg(long, default_value_t = 1, value_parser = seed_parser(), allow_negative_numbers = true)]
@@ -66,11 +67,11 @@ pub struct SinkArgs {
 /// The summary of a sink-rate run (`summary.json`).
 #[derive(Debug, Serialize)]
 pub(crate) struct SinkReport {
-    controller: &'static str,
-    conditions: &'static str,
+    pub(crate) controller: &'static str,
+    pub(crate) conditions: &'static str,
     seed: u64,
-    sink_rate_command_mps: f64,
-    ramp_s: f64,
+    pub(crate) sink_rate_command_mps: f64,
+    pub(crate) ramp_s: f64,
     pub(crate) outcome: &'static str,
     pub(crate) reason: Option<String>,
     /// Sink-rate response metrics (2 % band of the command).
@@ -83,7 +84,7 @@ pub(crate) struct SinkReport {
 /// A flown sink-rate run: the rows recorded every 10 ms and the report.
 pub(crate) struct SinkRun {
     /// The recorded rows.
-    rows: Vec<Row>,
+    pub(crate) rows: Vec<Row>,
     /// The summary, as in `summary.json`.
     pub(crate) report: SinkReport,
 }
@@ -182,47 +183,6 @@ pub(crate) fn outcome_text(run: &SinkRun) -> String {
         },
         (None, outcome) => outcome.replace('_', " "),
     }
-}
-
-/// The sink-rate figure (paper Fig. 13): sink rate and command, error, altitude; the
-/// title says how the command came in and how the run ended, the note why.
-pub(crate) fn figure(run: &SinkRun) -> Figure {
-    let report = &run.report;
-    let rows = &run.rows;
-    let points =
-        |f: &dyn Fn(&Row) -> f64| rows.iter().map(|r| (r.time_s, f(r))).collect::<Vec<_>>();
-    let command = if report.ramp_s > 0.0 {
-        format!(
-            "{} m/s ramped in over {} s",
-            report.sink_rate_command_mps, report.ramp_s
-        )
-    } else {
-        format!("{} m/s as a step", report.sink_rate_command_mps)
-    };
-    let title = format!(
-        "Sink-rate command {command} (cf. paper Fig. 13) — {}, {}: {}",
-        report.controller,
-        report.conditions,
-        outcome_text(run)
-    );
-    let mut sink = Panel::new("Sink rate", "time (s)", "sink rate (m/s, positive down)")
-        .dashed_series("command", points(&|r| r.sink_rate_command_mps))
-        .series("sink rate", points(&|r| r.sink_rate_mps));
-    if let Some(reason) = &report.reason {
-        sink = sink.note(format!("{}: {reason}", report.outcome));
-    }
-    Figure::new()
-        .title(title)
-        .panel(sink)
-        .panel(
-            Panel::new("Sink-rate error", "time (s)", "error (m/s)")
-                .series("command − sink rate", points(&|r| r.sink_rate_error_mps))
-                .reference_line("zero", 0.0),
-        )
-        .panel(
-            Panel::new("Trajectory", "time (s)", "altitude (m)")
-                .series("altitude", points(&|r| r.altitude_m)),
-        )
 }
 
 /// Runs `deckland sink`.

@@ -18,9 +18,8 @@ use serde::Serialize;
 use super::common::{
     seed_parser, validate_options, BaseScenarioArgs, Conditions, ControllerChoice, OutputArgs,
 };
-use super::land::signed;
 use crate::output::OutputDir;
-use crate::plot::{Figure, Panel};
+pub(crate) use crate::plot::step::figures;
 
 /// Largest |--step-deg| accepted (deg): beyond it the elevator is saturated for most of
 /// the transient and the step says little about the controller.
@@ -193,7 +192,7 @@ impl StepFlight {
     }
 
     /// The scenario flown with `choice`.
-    fn scenario(&self, choice: ControllerChoice) -> Scenario {
+    pub(crate) fn scenario(&self, choice: ControllerChoice) -> Scenario {
         let mut scenario = self.conditions.conditions().apply(self.base, self.seed);
         scenario.control.pitch = controller_parameters(&self.base, choice, self.epsilon);
         scenario
@@ -270,110 +269,13 @@ fn prefix(choice: ControllerChoice) -> &'static str {
     }
 }
 
-fn series(samples: &[Signals], value: impl Fn(&Signals) -> f64) -> Vec<(f64, f64)> {
-    samples.iter().map(|s| (s.time_s, value(s))).collect()
-}
-
-/// How a step response ended, in words: "settled in 1.150 s" or "not settled" (the
-/// reason is in the table and the JSON document).
-fn settling_text(result: &ControllerResult) -> String {
-    match (result.settled, result.settling_time_s) {
-        (true, Some(t)) => format!("settled (±2 %) in {t:.3} s"),
-        _ => "not settled (±2 %)".to_string(),
+/// `value` with `digits` decimals and a sign, a true minus for negative values.
+fn signed_fixed(value: f64, digits: usize) -> String {
+    if value < 0.0 {
+        format!("\u{2212}{:.digits$}", -value)
+    } else {
+        format!("+{value:.digits$}")
     }
-}
-
-/// The pitch figure (paper Fig. 10/11) and the elevator figure (paper Fig. 12): the
-/// controllers flown, the conditions and the seed in the title, each controller's
-/// settling written on the pitch panel.
-pub(crate) fn figures(runs: &[ControllerRun], flight: &StepFlight) -> Vec<(&'static str, Figure)> {
-    let (conditions, seed, step_deg) = (flight.conditions, flight.seed, flight.step.step_deg);
-    let controllers = runs
-        .iter()
-        .map(|r| r.choice.label())
-        .collect::<Vec<_>>()
-        .join(" and ");
-    let conditions_text = match conditions {
-        Conditions::Ideal => "no noise or wind".to_string(),
-        Conditions::Adverse => format!("noise and wind, seed {seed}"),
-    };
-    let paper_pitch = match conditions {
-        Conditions::Ideal => "cf. paper Fig. 10",
-        Conditions::Adverse => "cf. paper Fig. 11",
-    };
-    let trim_deg = runs
-        .first()
-        .and_then(|r| r.samples.first())
-        .map_or(0.0, |s| s.theta_ref_rad.to_degrees());
-    let target_deg = trim_deg + step_deg;
-    let band_deg = SETTLING_BAND_FRACTION * step_deg.abs();
-    let band_name = format!(
-        "target ± {:.0} % of the step",
-        SETTLING_BAND_FRACTION * 100.0
-    );
-    let mut pitch = Panel::new(
-        format!(
-            "Pitch step of {step_deg:+}° with {controllers}, {conditions_text} ({paper_pitch})"
-        ),
-        "time (s)",
-        "pitch angle θ (deg)",
-    );
-    for run in runs {
-        pitch = pitch
-            .series(
-                format!("θ, {}", run.choice.label()),
-                series(&run.samples, |s| s.theta_rad.to_degrees()),
-            )
-            .note(format!(
-                "{}: {}",
-                run.choice.label(),
-                settling_text(&run.result)
-            ));
-    }
-    if let Some(run) = runs.first() {
-        pitch = pitch.dashed_series(
-            "reference θ_ref",
-            series(&run.samples, |s| s.theta_ref_rad.to_degrees()),
-        );
-    }
-    pitch = pitch
-        .reference_line(band_name.clone(), target_deg + band_deg)
-        .reference_line(band_name, target_deg - band_deg);
-
-    let actuator = flight
-        .scenario(ControllerChoice::Opd)
-        .aircraft
-        .elevator_actuator;
-    let mut elevator = Panel::new(
-        format!(
-            "Elevator during the {step_deg:+}° step with {controllers}, {conditions_text}{}",
-            match conditions {
-                Conditions::Ideal => "",
-                Conditions::Adverse => " (cf. paper Fig. 12)",
-            }
-        ),
-        "time (s)",
-        "elevator δe (deg, trailing edge down)",
-    );
-    for run in runs {
-        elevator = elevator.series(
-            format!("δe, {}", run.choice.label()),
-            series(&run.samples, |s| s.elevator_rad.to_degrees()),
-        );
-    }
-    elevator = elevator
-        .reference_line(
-            format!("lower stop {}°", signed(actuator.min_deflection_deg)),
-            actuator.min_deflection_deg,
-        )
-        .reference_line(
-            format!("upper stop {}°", signed(actuator.max_deflection_deg)),
-            actuator.max_deflection_deg,
-        );
-    vec![
-        ("step_pitch", Figure::new().panel(pitch)),
-        ("step_elevator", Figure::new().panel(elevator)),
-    ]
 }
 
 fn format_option(value: Option<f64>, digits: usize, unit: &str) -> String {
@@ -392,6 +294,18 @@ fn print_table(report: &StepReport, written: &[PathBuf]) -> Result<()> {
         report.seconds,
         report.epsilon
     )?;
+    let reference_s = report
+        .controllers
+        .first()
+        .map_or(0.0, |c| c.reference_duration_s);
+    if reference_s > 0.0 {
+        outln!(
+            "Command: the jerk-limited reference (prefilter) from trim to {:+}° in {reference_s:.3} s",
+            report.step_deg
+        )?;
+    } else {
+        outln!("Command: a step (no prefilter)")?;
+    }
     outln!(
         "  {:<26}{}",
         "",
@@ -418,6 +332,15 @@ fn print_table(report: &StepReport, written: &[PathBuf]) -> Result<()> {
             "not settled".to_string()
         }
     })?;
+    if reference_s > 0.0 {
+        row(
+            "  after the reference ends",
+            &|c| match c.settling_after_reference_s {
+                Some(t) if c.settled => format!("{} s", signed_fixed(t, 3)),
+                _ => "not settled".to_string(),
+            },
+        )?;
+    }
     row("overshoot", &|c| format!("{:.1} %", c.overshoot_pct))?;
     row("rise time 10–90 %", &|c| {
         format_option(c.rise_time_s, 3, "s")
@@ -456,7 +379,13 @@ fn print_table(report: &StepReport, written: &[PathBuf]) -> Result<()> {
     }
     outln!(
         "Settling time: from the step to the last entry into the ±2 % band around the target \
-         (it must stay there to the end, at least 0.5 s)."
+         (it must stay there to the end, at least 0.5 s){}.",
+        if reference_s > 0.0 {
+            "; after the reference ends: the same, less the reference's duration (negative: \
+             settled before the reference reached the target)"
+        } else {
+            ""
+        }
     )?;
     outln!("Wrote {} files to {}:", written.len(), report.output_folder)?;
     for path in written {

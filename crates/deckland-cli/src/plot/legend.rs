@@ -300,6 +300,7 @@ impl Legend {
         };
         let mut lines = Vec::new();
         for note in &self.notes {
+            let note_start = lines.len();
             // A short token (a unit, "=") stays with the word before it: "2.008 s".
             let mut words: Vec<String> = Vec::new();
             for word in note.split_whitespace() {
@@ -326,6 +327,20 @@ impl Legend {
             }
             if !line.is_empty() {
                 lines.push(line);
+            }
+            // No lone word on a note's last line: take the previous line's last word
+            // down when both still fit ("… 0.3 m above the / deck" → "… 0.3 m above / the
+            // deck").
+            if let [.., previous, last] = &mut lines[note_start..] {
+                if !last.contains(' ') {
+                    if let Some((rest, word)) = previous.rsplit_once(' ') {
+                        let joined = format!("{word} {last}");
+                        if fits(&joined) {
+                            *last = joined;
+                            previous.truncate(rest.len());
+                        }
+                    }
+                }
             }
         }
         lines
@@ -498,6 +513,28 @@ mod tests {
             grid.free_place((200, 80)),
             Some((696, 350 - CLEARANCE - 80))
         );
+    }
+
+    #[test]
+    fn a_note_never_ends_on_a_lone_word() {
+        // The outcome of seed 1 wrapped as "… 0.3 m above the" / "deck" at 300 px.
+        crate::plot::tests::register();
+        let mut svg = String::new();
+        let area = SVGBackend::with_string(&mut svg, (800, 400)).into_drawing_area();
+        let legend = Legend {
+            notes: vec![
+                "bolter: flew over the last wire 0.3 m above the deck".to_owned(),
+                "short".to_owned(),
+            ],
+            entries: Vec::new(),
+        };
+        let lines = legend.note_lines(&area);
+        assert!(lines.len() >= 3, "{lines:?}");
+        let last_of_first = &lines[lines.len() - 2];
+        assert!(last_of_first.contains(' '), "a lone word: {lines:?}");
+        assert!(last_of_first.ends_with("deck"), "{lines:?}");
+        // A one-line note stays as it is, and takes no word from the note before.
+        assert_eq!(lines.last().map(String::as_str), Some("short"));
     }
 
     #[test]

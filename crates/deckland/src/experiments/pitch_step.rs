@@ -52,6 +52,14 @@ pub struct PitchStepResponse {
     pub controller: String,
     /// From the step to the last entry into θ* + D ± 2 % of |D| (s), when settled.
     pub settling_time_s: Option<f64>,
+    /// How long the command takes to reach θ* + D after the step (s): the duration of
+    /// the jerk-limited reference (the prefilter) on the realistic hardware, 0 for the
+    /// paper's step.
+    pub reference_duration_s: f64,
+    /// Settling measured from the end of the reference instead of the step (s): the
+    /// settling time less [`Self::reference_duration_s`] (negative when θ settles into
+    /// the band before the reference ends), when settled.
+    pub settling_after_reference_s: Option<f64>,
     /// Whether θ settled into the band for good.
     pub settled: bool,
     /// Why it did not settle (outside the band at the end, dwell too short, diverged).
@@ -134,6 +142,7 @@ pub fn fly_pitch_step(
         )
     });
     let saturation_s = activity.time_at_lower_limit_s + activity.time_at_upper_limit_s;
+    let reference_duration_s = reference_duration_s(&samples, trim_deg + step.step_deg);
     let response = match metrics {
         Ok(metrics) => {
             let not_settled_reason = diverged.or(metrics.not_settled_reason);
@@ -142,6 +151,12 @@ pub fn fly_pitch_step(
                 settled: not_settled_reason.is_none(),
                 settling_time_s: if not_settled_reason.is_none() {
                     metrics.settling_time_s
+                } else {
+                    None
+                },
+                reference_duration_s,
+                settling_after_reference_s: if not_settled_reason.is_none() {
+                    metrics.settling_time_s.map(|t| t - reference_duration_s)
                 } else {
                     None
                 },
@@ -162,6 +177,8 @@ pub fn fly_pitch_step(
         Err(error) => PitchStepResponse {
             controller: label,
             settling_time_s: None,
+            reference_duration_s,
+            settling_after_reference_s: None,
             settled: false,
             not_settled_reason: Some(diverged.unwrap_or_else(|| error.to_string())),
             overshoot_pct: f64::NAN,
@@ -180,4 +197,52 @@ pub fn fly_pitch_step(
         summary,
         response,
     })
+}
+
+/// How long after [`PITCH_STEP_TIME_S`] the recorded command θ_ref first reaches
+/// `target_deg` (within 10⁻⁹ of the step), staying there to the end (s); 0 for a step.
+fn reference_duration_s(samples: &[Signals], target_deg: f64) -> f64 {
+    let tolerance_deg = 1e-9 * target_deg.abs().max(1.0);
+    let reached = samples
+        .iter()
+        .rposition(|s| (s.theta_ref_rad.to_degrees() - target_deg).abs() > tolerance_deg)
+        .and_then(|last_off| samples.get(last_off + 1))
+        .map_or(PITCH_STEP_TIME_S, |s| s.time_s);
+    (reached - PITCH_STEP_TIME_S).max(0.0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// θ_ref (deg) at 1 ms steps: trim 5° until the step at 1 s, a ramp to 7° that ends
+    /// at 1.5 s, then 7°.
+    fn ramp_samples() -> Vec<Signals> {
+        (0..3000)
+            .map(|i| {
+                let time_s = f64::from(i) * 1e-3;
+                let theta_deg = 5.0 + 2.0 * ((time_s - 1.0) / 0.5).clamp(0.0, 1.0);
+                Signals {
+                    time_s,
+                    theta_ref_rad: theta_deg.to_radians(),
+                    ..Signals::default()
+                }
+            })
+            .collect()
+    }
+
+    #[test]
+    fn the_reference_duration_is_where_the_command_reaches_the_target() {
+        let duration = reference_duration_s(&ramp_samples(), 7.0);
+        assert!((duration - 0.5).abs() < 2e-3, "{duration}");
+        // A step reaches the target at once.
+        let step: Vec<Signals> = ramp_samples()
+            .into_iter()
+            .map(|mut s| {
+                s.theta_ref_rad = if s.time_s >= 1.0 { 7.0_f64 } else { 5.0 }.to_radians();
+                s
+            })
+            .collect();
+        assert_eq!(reference_duration_s(&step, 7.0), 0.0);
+    }
 }

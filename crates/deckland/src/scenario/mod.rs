@@ -345,6 +345,30 @@ impl Mission {
     }
 }
 
+/// A scenario's seed: an integer from 0 to 2⁶³ − 1 (what a TOML integer can hold), and
+/// an error that says so (serde's own says "expected u64").
+fn deserialize_seed<'de, D: serde::Deserializer<'de>>(deserializer: D) -> Result<u64, D::Error> {
+    use serde::de::{Error, Unexpected, Visitor};
+    struct Seed;
+    impl Visitor<'_> for Seed {
+        type Value = u64;
+        fn expecting(&self, formatter: &mut std::fmt::Formatter) -> std::fmt::Result {
+            formatter.write_str("an integer from 0 to 2⁶³ − 1")
+        }
+        fn visit_i64<E: Error>(self, value: i64) -> Result<u64, E> {
+            u64::try_from(value).map_err(|_| E::invalid_value(Unexpected::Signed(value), &self))
+        }
+        fn visit_u64<E: Error>(self, value: u64) -> Result<u64, E> {
+            if i64::try_from(value).is_ok() {
+                Ok(value)
+            } else {
+                Err(E::invalid_value(Unexpected::Unsigned(value), &self))
+            }
+        }
+    }
+    deserializer.deserialize_u64(Seed)
+}
+
 /// Every parameter of one run.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
@@ -352,7 +376,8 @@ pub struct Scenario {
     /// The hardware set: `realistic` (default) or `paper`; keys left out of a scenario
     /// file take this set's values (docs/model.md §2.6).
     pub hardware: HardwareSet,
-    /// Seed of every random stream (docs/model.md §3.4).
+    /// Seed of every random stream (docs/model.md §3.4), 0 to 2⁶³ − 1.
+    #[serde(deserialize_with = "deserialize_seed")]
     pub seed: u64,
     /// Integration step (s); 1 ms (docs/model.md §6).
     pub time_step_s: f64,

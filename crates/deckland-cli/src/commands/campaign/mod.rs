@@ -26,6 +26,7 @@
 //! `--runs` is at most [`MAX_RUNS`] and `--threads` at most [`MAX_THREADS`]: the records
 //! of every run are kept in memory, and threads beyond the cores buy nothing.
 
+pub mod paired;
 pub mod report;
 
 use super::common::{check_set_up, load_scenario_file, seed_parser, OutputArgs};
@@ -65,8 +66,9 @@ pub struct CampaignArgs {
     /// Fly the same seeds and dispersions under O-PD and PID and report them side by side.
     #[arg(long)]
     pub compare: bool,
-    /// Fly only shard K/M of the campaign (K from 0 to M − 1): the runs i with
-    /// i mod M = K. `deckland merge` puts the M shard folders together.
+    /// Fly only shard K/M of the campaign: the runs i with i mod M = K. Shards are
+    /// numbered from 0, like the runs: K from 0 to M − 1, so three shards are 0/3, 1/3
+    /// and 2/3 (3/3 is refused). `deckland merge` puts the M shard folders together.
     #[arg(long, value_parser = clap::builder::ValueParser::new(parse_shard), allow_hyphen_values = true)]
     pub shard: Option<Shard>,
 }
@@ -174,7 +176,16 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
     if args.output.json {
         outln!("{}", serde_json::to_string_pretty(&report)?)?;
     } else {
-        report::print_table(&report, &output)?;
+        report::print_statistics(&report)?;
+        let controllers: Vec<&str> = summary
+            .controllers
+            .iter()
+            .map(|s| s.controller.as_str())
+            .collect();
+        if let Some(paired) = paired::PairedComparison::of(&rows, &controllers) {
+            report::print_paired(&paired)?;
+        }
+        outln!("  results in {}", output.path().display())?;
     }
     if result.partial {
         warnln!(

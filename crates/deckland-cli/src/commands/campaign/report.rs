@@ -4,9 +4,10 @@
 //! from the rows of `runs.csv` and the library's [`CampaignSummary`], so a merged
 //! campaign's files are those of the campaign flown whole.
 
+use super::paired::PairedComparison;
 use crate::html;
 use crate::output::OutputDir;
-use crate::plot::{BarGroup, Figure, Panel};
+use crate::plot::campaign::figures;
 use anyhow::Result;
 use deckland::monte_carlo::{
     CampaignStatistics, CampaignSummary, Distribution, Proportion, RunRow, UPPER_BOUND_CONFIDENCE,
@@ -104,122 +105,44 @@ pub fn write_folder(folder: &CampaignFolder, output: &OutputDir) -> Result<()> {
     for (stem, figure) in figures(folder) {
         plots.push((stem, figure.save_with_svg(output, stem)?.1));
     }
-    let page = html_report(folder.report, &folder.title, &plots, folder.scenario_toml);
+    let controllers: Vec<&str> = folder
+        .report
+        .summary
+        .controllers
+        .iter()
+        .map(|s| s.controller.as_str())
+        .collect();
+    let paired = PairedComparison::of(folder.rows, &controllers);
+    let page = html_report(
+        folder.report,
+        paired.as_ref(),
+        &folder.title,
+        &plots,
+        folder.scenario_toml,
+    );
     output.write_bytes("report.html", page.as_bytes())?;
     Ok(())
 }
 
-/// The plots of a campaign, each with its file stem.
-fn figures(folder: &CampaignFolder) -> Vec<(&'static str, Figure)> {
-    let (scenario, title) = (folder.scenario, &folder.title);
-    let deck = &scenario.environment.deck;
-    let statistics = &folder.report.summary.controllers;
-    let labels: Vec<&str> = statistics.iter().map(|s| s.controller.as_str()).collect();
-    let touchdowns = |label: &str| -> Vec<(f64, f64)> {
-        folder
-            .rows
-            .iter()
-            .filter(|r| r.controller == label)
-            .filter_map(|r| r.touchdown_distance_m.zip(r.touchdown_sink_rate_mps))
-            .collect()
-    };
-    let mut dispersion = Panel::new(
-        "Touchdown point along the deck and sink rate relative to the deck",
-        "touchdown along the deck from the aim point (m, positive forward)",
-        "sink rate at touchdown (m/s)",
-    );
-    for label in &labels {
-        let points = touchdowns(label);
-        dispersion = dispersion.scatter(format!("{label} ({} touchdowns)", points.len()), points);
-    }
-    dispersion = dispersion.vertical_line("ramp", -deck.ramp_aft_of_aim_point_m);
-    for (index, wire) in deck.wire_positions_m.iter().enumerate() {
-        dispersion = dispersion.vertical_line(format!("wire {}", index + 1), *wire);
-    }
-    dispersion = dispersion.reference_line(
-        "hard-landing limit",
-        scenario.outcome.hard_landing_sink_rate_mps,
-    );
-
-    let bins = 30;
-    let mut sink = Panel::new(
-        "Touchdown sink rate relative to the deck",
-        "sink rate (m/s)",
-        "runs",
-    );
-    let mut distance = Panel::new(
-        "Touchdown point along the deck from the aim point",
-        "distance (m, positive forward)",
-        "runs",
-    );
-    for label in &labels {
-        let points = touchdowns(label);
-        sink = sink.histogram(
-            label.to_string(),
-            points.iter().map(|p| p.1).collect(),
-            bins,
-        );
-        distance = distance.histogram(
-            label.to_string(),
-            points.iter().map(|p| p.0).collect(),
-            bins,
-        );
-    }
-
-    let categories = [
-        "trap",
-        "bolter",
-        "wave-off",
-        "ramp strike",
-        "hard landing",
-        "diverged",
-        "timeout",
-        "invalid",
-    ];
-    let mut outcomes = Panel::new(
-        "Share of runs by outcome, with 95 % Wilson score intervals (bar labels: runs)",
-        "outcome",
-        "share of runs (%)",
-    )
-    .categories(categories.iter().map(|c| (*c).to_owned()).collect())
-    .interval_name("95 % Wilson score interval");
-    for s in statistics {
-        let classes = proportions(s);
-        outcomes = outcomes.bar_group(BarGroup {
-            name: format!("{} ({} runs)", s.controller, s.runs),
-            values: classes.iter().map(|(_, p)| 100.0 * p.rate).collect(),
-            intervals: classes
-                .iter()
-                .map(|(_, p)| (100.0 * p.ci95_low, 100.0 * p.ci95_high))
-                .collect(),
-            labels: classes.iter().map(|(_, p)| p.count.to_string()).collect(),
-        });
-    }
-    vec![
-        (
-            "touchdown_dispersion",
-            Figure::new()
-                .title(format!("Touchdown dispersion — {title}"))
-                .panel(dispersion),
-        ),
-        (
-            "touchdown_histograms",
-            Figure::new()
-                .title(format!("Touchdown histograms — {title}"))
-                .panel(sink)
-                .panel(distance),
-        ),
-        (
-            "outcomes",
-            Figure::new()
-                .title(format!("Outcomes — {title}"))
-                .panel(outcomes),
-        ),
-    ]
+/// The outcomes after which the aircraft is intact, aboard or flying: a trap, a bolter or a
+/// wave-off (docs/model.md §9), as a proportion of the runs.
+fn safe(s: &CampaignStatistics) -> Proportion {
+    Proportion::new(s.boarding.count + s.bolter.count + s.wave_off.count, s.runs)
 }
 
+/// The rows of the outcome tables: the classes, exclusive and in table order, with the
+/// safe outcomes (trap, bolter, wave-off) followed by their total.
+fn outcome_table(s: &CampaignStatistics) -> Vec<(&'static str, Proportion)> {
+    let mut rows = proportions(s).to_vec();
+    rows.insert(3, ("safe: trap, bolter or wave-off", safe(s)));
+    rows
+}
+
+/// The failures: the outcomes that are not safe, whose probability a campaign bounds.
+const FAILURES: [&str; 4] = ["ramp strike", "hard landing", "diverged", "timeout"];
+
 /// The outcome classes with their names, in table order.
-fn proportions(s: &CampaignStatistics) -> [(&'static str, Proportion); 8] {
+pub(crate) fn proportions(s: &CampaignStatistics) -> [(&'static str, Proportion); 8] {
     [
         ("boarding (trap)", s.boarding),
         ("bolter", s.bolter),
@@ -238,11 +161,11 @@ fn outcome_rows(stats: &[CampaignStatistics]) -> Vec<Vec<String>> {
     let Some(first) = stats.first() else {
         return Vec::new();
     };
-    (0..proportions(first).len())
+    (0..outcome_table(first).len())
         .map(|row| {
-            let mut cells = vec![proportions(first)[row].0.to_string()];
+            let mut cells = vec![outcome_table(first)[row].0.to_string()];
             for s in stats {
-                let (_, p) = proportions(s)[row];
+                let (_, p) = outcome_table(s)[row];
                 cells.push(p.count.to_string());
                 cells.push(format!("{} %", html::number(100.0 * p.rate, 1)));
                 cells.push(format!(
@@ -259,17 +182,82 @@ fn outcome_rows(stats: &[CampaignStatistics]) -> Vec<Vec<String>> {
 /// The touchdown statistics of `report.html`: per quantity and controller the count,
 /// mean, standard deviation, extremes and percentiles.
 fn distribution_rows(stats: &[CampaignStatistics]) -> Vec<Vec<String>> {
-    let quantities: [(&str, DistributionOf); 3] = [
-        ("touchdown from the aim point (m, positive forward)", |s| {
-            s.touchdown_distance_m
-        }),
-        ("touchdown sink rate relative to the deck (m/s)", |s| {
-            s.touchdown_sink_rate_mps
-        }),
-        ("glide-path error RMS (m)", |s| s.glide_path_error_rms_m),
-    ];
+    statistics_rows(
+        stats,
+        &[
+            ("touchdown from the aim point (m, positive forward)", |s| {
+                s.touchdown_distance_m
+            }),
+            ("touchdown sink rate relative to the deck (m/s)", |s| {
+                s.touchdown_sink_rate_mps
+            }),
+            ("glide-path error RMS (m)", |s| s.glide_path_error_rms_m),
+        ],
+    )
+}
+
+/// The actuator statistics of `report.html`, as the terminal shows them.
+fn actuator_rows(stats: &[CampaignStatistics]) -> Vec<Vec<String>> {
+    statistics_rows(
+        stats,
+        &ACTUATOR_QUANTITIES.map(|(name, _, get)| (name, get)),
+    )
+}
+
+/// The actuator quantities: name, whether it carries a sign, and where it is.
+const ACTUATOR_QUANTITIES: [(&str, bool, DistributionOf); 5] = [
+    ("elevator rate RMS (deg/s)", false, |s| {
+        s.elevator_rate_rms_degps
+    }),
+    ("on the rate limit (% of run)", false, |s| {
+        s.time_on_rate_limit_pct
+    }),
+    ("on the stops (% of run)", false, |s| s.time_on_stops_pct),
+    ("elevator total travel (deg)", false, |s| {
+        s.elevator_travel_deg
+    }),
+    ("thrust rate RMS (kN/s)", false, |s| s.thrust_rate_rms_knps),
+];
+
+/// The paired differences of `report.html`.
+fn paired_rows(paired: &PairedComparison) -> Vec<Vec<String>> {
+    paired
+        .differences
+        .iter()
+        .map(|q| {
+            let mut cells = vec![q.name.to_string()];
+            match (q.difference, q.largest_abs) {
+                (Some(d), Some(largest)) => {
+                    cells.push(d.count.to_string());
+                    cells.extend(
+                        [
+                            d.mean,
+                            d.standard_deviation,
+                            d.min,
+                            d.p5,
+                            d.p50,
+                            d.p95,
+                            d.max,
+                            largest,
+                        ]
+                        .map(|v| html::number(v, 2)),
+                    );
+                }
+                _ => cells.extend(std::iter::repeat_n("—".to_string(), 9)),
+            }
+            cells
+        })
+        .collect()
+}
+
+/// Per quantity and controller: the count, mean, standard deviation, extremes and
+/// percentiles.
+fn statistics_rows(
+    stats: &[CampaignStatistics],
+    quantities: &[(&str, DistributionOf)],
+) -> Vec<Vec<String>> {
     let mut rows = Vec::new();
-    for (name, get) in quantities {
+    for &(name, get) in quantities {
         for s in stats {
             let mut cells = vec![name.to_string(), s.controller.clone()];
             match get(s) {
@@ -300,6 +288,7 @@ fn distribution_rows(stats: &[CampaignStatistics]) -> Vec<Vec<String>> {
 /// touchdown statistics, the plots and the scenario.
 fn html_report(
     report: &CampaignReport,
+    paired: Option<&PairedComparison>,
     title: &str,
     plots: &[(&str, String)],
     scenario_toml: &str,
@@ -346,7 +335,9 @@ fn html_report(
     let header: Vec<&str> = header.iter().map(String::as_str).collect();
     page.section("Outcomes")
         .paragraph(format!(
-            "Intervals: the {}. The classes are exclusive and add up to the runs.",
+            "Intervals: the {}. The classes are exclusive and add up to the runs; the \
+             safe outcomes (trap, bolter, wave-off: the aircraft is intact) are also \
+             totalled.",
             report.summary.confidence_interval
         ))
         .table(&header, outcome_rows(stats));
@@ -382,12 +373,76 @@ fn html_report(
             &["controller", "wire 1", "wire 2", "wire 3", "wire 4"],
             wires,
         );
-    let rare = rare_event_lines(report.summary);
-    let rare_section = page.section("Rare events");
-    rare_section.paragraph(format!("Upper bounds: the {}.", report.summary.upper_bound));
-    for line in rare {
-        rare_section.paragraph(line);
+    page.section("Actuators")
+        .paragraph(format!(
+            "Over the runs flown, per run; percentiles by {}.",
+            report.summary.percentiles
+        ))
+        .table(
+            &[
+                "quantity",
+                "controller",
+                "count",
+                "mean",
+                "sd",
+                "min",
+                "p5",
+                "p50",
+                "p95",
+                "max",
+            ],
+            actuator_rows(stats),
+        );
+    if let Some(paired) = paired {
+        page.section("Paired differences")
+            .paragraph(format!(
+                "Both controllers fly every run with the same seed (the same dispersions, \
+                 turbulence and sea), so each run gives one difference {} − {}. {} runs \
+                 flown by both; the outcome or the wire differs in {}. Over the runs where \
+                 both have the quantity:",
+                paired.second, paired.first, paired.pairs, paired.different_outcomes
+            ))
+            .table(
+                &[
+                    "difference",
+                    "count",
+                    "mean",
+                    "sd",
+                    "min",
+                    "p5",
+                    "p50",
+                    "p95",
+                    "max",
+                    "largest |difference|",
+                ],
+                paired_rows(paired),
+            );
     }
+    let target = &report.summary.rare_event_target;
+    page.section("Rare events")
+        .paragraph(format!(
+            "The failures ({}) seen at most {RARE_COUNT} times, with the {} — what the \
+             runs show the probability to be below. Safe outcomes (trap, bolter, \
+             wave-off) are not failures.",
+            FAILURES.join(", "),
+            report.summary.upper_bound
+        ))
+        .table(
+            &[
+                "controller",
+                "failure",
+                "runs with it",
+                "runs",
+                "95 % upper bound",
+            ],
+            rare_event_rows(report.summary),
+        )
+        .paragraph(format!(
+            "To show a probability below {:e} at {} % takes {}.",
+            target.rate,
+            100.0 * target.confidence,
+            runs_needed(report.summary)
+        ));
     let plots_section = page.section("Plots");
     for (stem, svg) in plots {
         plots_section.figure(svg, format!("`{stem}.svg` (also `{stem}.png`)"));
@@ -401,8 +456,15 @@ fn html_report(
 /// Picks one distribution out of a controller's statistics.
 type DistributionOf = fn(&CampaignStatistics) -> Option<Distribution>;
 
-/// Prints the report as a table on stdout.
+/// Prints the report as a table on stdout, then where the results are.
 pub fn print_table(report: &CampaignReport, output: &OutputDir) -> Result<()> {
+    print_statistics(report)?;
+    outln!("  results in {}", output.path().display())?;
+    Ok(())
+}
+
+/// Prints the campaign's statistics as a table on stdout.
+pub fn print_statistics(report: &CampaignReport) -> Result<()> {
     let stats = &report.summary.controllers;
     let how = match (report.threads, report.runs_per_s) {
         (Some(threads), Some(rate)) => format!(
@@ -442,10 +504,10 @@ pub fn print_table(report: &CampaignReport, output: &OutputDir) -> Result<()> {
     }
     outln!()?;
     outln!("  outcome: count, rate [95 % Wilson score interval]")?;
-    for row in 0..7 {
-        out!("  {:<label_width$}", proportions(&stats[0])[row].0)?;
+    for row in 0..outcome_table(&stats[0]).len() {
+        out!("  {:<label_width$}", outcome_table(&stats[0])[row].0)?;
         for s in stats {
-            let (_, p) = proportions(s)[row];
+            let (_, p) = outcome_table(s)[row];
             out!(
                 "{:>width$}",
                 format!(
@@ -465,15 +527,13 @@ pub fn print_table(report: &CampaignReport, output: &OutputDir) -> Result<()> {
         out!("{:>width$}", format!("{}/{}/{}/{}", w[0], w[1], w[2], w[3]))?;
     }
     outln!()?;
-    let distribution_rows: [(&str, DistributionOf); 6] = [
-        ("touchdown from aim (m)", |s| s.touchdown_distance_m),
-        ("touchdown sink rate (m/s)", |s| s.touchdown_sink_rate_mps),
-        ("elevator rate RMS (deg/s)", |s| s.elevator_rate_rms_degps),
-        ("on the rate limit (% of run)", |s| s.time_on_rate_limit_pct),
-        ("on the stops (% of run)", |s| s.time_on_stops_pct),
-        ("thrust rate RMS (kN/s)", |s| s.thrust_rate_rms_knps),
+    let touchdown: [(&str, bool, DistributionOf); 2] = [
+        ("touchdown from aim (m)", true, |s| s.touchdown_distance_m),
+        ("touchdown sink rate (m/s)", false, |s| {
+            s.touchdown_sink_rate_mps
+        }),
     ];
-    for (name, get) in distribution_rows {
+    for (name, signed, get) in touchdown.into_iter().chain(ACTUATOR_QUANTITIES) {
         for (line, part) in [": mean ± sd", "  p5 / p50 / p95"].iter().enumerate() {
             let label = if line == 0 {
                 format!("{name}{part}")
@@ -481,11 +541,21 @@ pub fn print_table(report: &CampaignReport, output: &OutputDir) -> Result<()> {
                 (*part).to_owned()
             };
             out!("  {label:<label_width$}")?;
+            // A sign only where the quantity has one (a distance from the aim point).
+            let number = |v: f64| {
+                if signed {
+                    format!("{v:+.2}")
+                } else {
+                    format!("{v:.2}")
+                }
+            };
             for s in stats {
                 let text = match get(s) {
                     None => "–".to_owned(),
-                    Some(d) if line == 0 => format!("{:+.2} ± {:.2}", d.mean, d.standard_deviation),
-                    Some(d) => format!("{:+.2} / {:+.2} / {:+.2}", d.p5, d.p50, d.p95),
+                    Some(d) if line == 0 => {
+                        format!("{} ± {:.2}", number(d.mean), d.standard_deviation)
+                    }
+                    Some(d) => format!("{} / {} / {}", number(d.p5), number(d.p50), number(d.p95)),
                 };
                 out!("{text:>width$}")?;
             }
@@ -495,7 +565,32 @@ pub fn print_table(report: &CampaignReport, output: &OutputDir) -> Result<()> {
     for line in rare_event_lines(report.summary) {
         outln!("  {line}")?;
     }
-    outln!("  results in {}", output.path().display())?;
+    Ok(())
+}
+
+/// Prints the paired differences of `campaign --compare` on stdout.
+pub fn print_paired(paired: &PairedComparison) -> Result<()> {
+    outln!("  {}", paired.heading())?;
+    let label_width = 36;
+    outln!(
+        "  {:<label_width$}{:>16}{:>26}{:>10}",
+        "difference",
+        "mean ± sd",
+        "p5 / p50 / p95",
+        "max |Δ|"
+    )?;
+    for q in &paired.differences {
+        match (q.difference, q.largest_abs) {
+            (Some(d), Some(largest)) => outln!(
+                "  {:<label_width$}{:>16}{:>26}{:>10}",
+                q.name,
+                format!("{:+.2} ± {:.2}", d.mean, d.standard_deviation),
+                format!("{:+.2} / {:+.2} / {:+.2}", d.p5, d.p50, d.p95),
+                format!("{largest:.2}")
+            )?,
+            _ => outln!("  {:<label_width$}{:>16}", q.name, "–")?,
+        }
+    }
     Ok(())
 }
 
@@ -508,41 +603,71 @@ fn probability(p: f64) -> String {
     }
 }
 
-/// The rare-event part of the report: for every class seen at most [`RARE_COUNT`] times,
-/// its 95 % upper bound; then the runs it takes to show the target rate.
-pub fn rare_event_lines(summary: &CampaignSummary) -> Vec<String> {
-    let mut lines = vec![format!(
-        "rare events (seen at most {RARE_COUNT} times): {} % upper bound of the probability",
-        100.0 * UPPER_BOUND_CONFIDENCE
-    )];
-    for s in &summary.controllers {
-        // Every class but the trap is a failure.
-        for (name, p) in proportions(s).into_iter().skip(1) {
-            if p.count <= RARE_COUNT && s.runs > 0 {
-                lines.push(format!(
-                    "  {}: {name}: {} in {} runs, p < {}",
-                    s.controller,
-                    p.count,
-                    s.runs,
-                    probability(p.upper_bound_95)
-                ));
+/// "1 event", "2 events".
+fn events(count: u64) -> String {
+    if count == 1 {
+        "1 event".to_owned()
+    } else {
+        format!("{count} events")
+    }
+}
+
+/// The failures seen at most [`RARE_COUNT`] times, per controller: controller, failure,
+/// runs with it, runs, and its 95 % upper bound.
+pub fn rare_event_rows(summary: &CampaignSummary) -> Vec<Vec<String>> {
+    let mut rows = Vec::new();
+    for s in summary.controllers.iter().filter(|s| s.runs > 0) {
+        for (name, p) in proportions(s) {
+            if FAILURES.contains(&name) && p.count <= RARE_COUNT {
+                rows.push(vec![
+                    s.controller.clone(),
+                    name.to_owned(),
+                    p.count.to_string(),
+                    s.runs.to_string(),
+                    format!("p < {}", probability(p.upper_bound_95)),
+                ]);
             }
         }
     }
-    let target = &summary.rare_event_target;
-    let needed: Vec<String> = target
+    rows
+}
+
+/// The runs it takes to show the target rate, for 0 to 3 events.
+fn runs_needed(summary: &CampaignSummary) -> String {
+    summary
+        .rare_event_target
         .runs_needed
         .iter()
         .map(|n| match n.runs {
-            Some(runs) => format!("{runs} runs if {} events", n.events),
-            None => format!("beyond 2^62 runs if {} events", n.events),
+            Some(runs) => format!("{runs} runs if {}", events(n.events)),
+            None => format!("beyond 2^62 runs if {}", events(n.events)),
         })
-        .collect();
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// The rare-event part of the terminal report: a table of the failures seen at most
+/// [`RARE_COUNT`] times with their 95 % upper bound, then the runs it takes to show the
+/// target rate.
+pub fn rare_event_lines(summary: &CampaignSummary) -> Vec<String> {
+    let mut lines = vec![format!(
+        "rare failures (seen at most {RARE_COUNT} times; trap, bolter and wave-off are safe): {} % upper bound of the probability",
+        100.0 * UPPER_BOUND_CONFIDENCE
+    )];
+    let rows = rare_event_rows(summary);
+    let controller_width = rows.iter().map(|r| r[0].chars().count()).max().unwrap_or(0);
+    for row in rows {
+        lines.push(format!(
+            "  {:<controller_width$}  {:<13}{:>5} in {:<6}{}",
+            row[0], row[1], row[2], row[3], row[4]
+        ));
+    }
+    let target = &summary.rare_event_target;
     lines.push(format!(
         "to show p < {:e} at {} %: {} (with none, the n with (1 − p)^n ≤ {:.2}: about 3/p, the rule of three)",
         target.rate,
         100.0 * target.confidence,
-        needed.join(", "),
+        runs_needed(summary),
         1.0 - target.confidence,
     ));
     lines

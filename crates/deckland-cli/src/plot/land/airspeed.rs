@@ -1,0 +1,29 @@
+//! `airspeed`: the true airspeed and the angle of attack.
+
+use deckland::simulation::Signals;
+
+use deckland::scenario::Scenario;
+
+use super::{series, wake_onset, TIME};
+use crate::plot::{Figure, Panel};
+
+/// The true airspeed and the angle of attack.
+pub(super) fn figure(samples: &[Signals], scenario: &Scenario, title: &str) -> Figure {
+    let onset = wake_onset(samples, scenario);
+    let mark = |panel: Panel| match onset {
+        Some((time_s, extent_m)) => {
+            panel.vertical_line(format!("air wake from {extent_m:.0} m aft"), time_s)
+        }
+        None => panel,
+    };
+    Figure::new()
+        .title(format!("Airspeed and angle of attack — {title}"))
+        .panel(mark(
+            Panel::new("True airspeed", TIME, "airspeed (m/s)")
+                .series("airspeed", series(samples, |s| s.airspeed_mps)),
+        ))
+        .panel(mark(
+            Panel::new("Angle of attack", TIME, "angle of attack α (deg)")
+                .series("α", series(samples, |s| s.alpha_rad.to_degrees())),
+        ))
+}

@@ -1,0 +1,37 @@
+//! `controls`: the elevator against its stops, and the thrust commanded and delivered.
+
+use deckland::scenario::Scenario;
+
+use crate::commands::land::signed;
+use deckland::simulation::Signals;
+
+use super::{series, TIME};
+use crate::plot::{Figure, Panel};
+
+/// The elevator against its stops, and the thrust commanded and delivered.
+pub(super) fn figure(samples: &[Signals], scenario: &Scenario, title: &str) -> Figure {
+    let actuator = scenario.aircraft.elevator_actuator;
+    Figure::new()
+        .title(format!("Controls — {title}"))
+        .panel(
+            Panel::new(
+                "Elevator (positive trailing edge down)",
+                TIME,
+                "elevator δe (deg)",
+            )
+            .series("elevator", series(samples, |s| s.elevator_rad.to_degrees()))
+            .reference_line(
+                format!("lower stop {}°", signed(actuator.min_deflection_deg)),
+                actuator.min_deflection_deg,
+            )
+            .reference_line(
+                format!("upper stop {}°", signed(actuator.max_deflection_deg)),
+                actuator.max_deflection_deg,
+            ),
+        )
+        .panel(
+            Panel::new("Thrust, both engines", TIME, "thrust (kN)")
+                .series("command", series(samples, |s| s.thrust_command_n / 1000.0))
+                .series("actual", series(samples, |s| s.thrust_n / 1000.0)),
+        )
+}
