@@ -95,7 +95,7 @@ pub enum MergeError {
         /// What is allowed.
         problem: String,
     },
-    /// A row no campaign can write (see [`RunRow::check`]).
+    /// A row no campaign can write (see [`RunRow::check`](super::RunRow::check)).
     #[error("{location}: row {row} (run {run_index}, {controller}): {error}")]
     BadRow {
         /// Where the shard comes from (its `runs.csv`).

@@ -81,7 +81,7 @@ const TIME_LIMIT_S: f64 = 7200.0;
 const DISPERSION_SIGMAS: f64 = 50.0;
 
 /// The physical range of every number of a row: (column, lowest, highest), inclusive.
-/// The dispersions' are [`DISPERSION_SIGMAS`] times the largest standard deviations a
+/// The dispersions' ranges are `DISPERSION_SIGMAS` (50) times the largest standard deviations a
 /// scenario allows (start height 20 m, airspeed and wind 10 m/s, log sea state 1).
 pub const RANGES: [(&str, f64, f64); 17] = [
     ("touchdown_distance_m", -LENGTH_LIMIT_M, LENGTH_LIMIT_M),
