@@ -1,6 +1,6 @@
 //! Trim and lateral modes of the 6-DOF F/A-18 at the approach condition (69.1 m/s,
-//! landing configuration): straight and level, a 5° steady sideslip, and the crab in a
-//! 5 m/s crosswind from the left. Run with
+//! landing configuration): straight and level (and the modes on a −3.5° path), a 5°
+//! steady sideslip, and the crab in a 5 m/s crosswind from the left. Run with
 //! `cargo run --release -p deckland --example six_dof_modes`.
 
 use deckland::aircraft::six_dof::{
@@ -82,6 +82,25 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             mode.time_constant_s,
             if mode.stable { "half" } else { "double" },
             mode.time_to_half_or_double_s,
+        );
+    }
+
+    let glide = SixDofTrimRequest {
+        longitudinal: TrimRequest {
+            speed_mps: 69.1,
+            flight_path_angle_rad: (-3.5f64).to_radians(),
+        },
+        ..level
+    };
+    let glide_trim = trim_six_dof(&aircraft, &glide)?;
+    if let Some(modes) = linearize_six_dof(&aircraft, &glide_trim).lateral_modes() {
+        println!(
+            "  On a -3.5° path: Dutch roll ω_n = {:.4} rad/s, ζ = {:.4}; roll τ = {:.3} s; \
+             spiral τ = {:.3} s",
+            modes.dutch_roll.natural_frequency_radps,
+            modes.dutch_roll.damping_ratio,
+            modes.roll_subsidence.time_constant_s,
+            modes.spiral.time_constant_s,
         );
     }
 
