@@ -13,6 +13,7 @@ mod engine;
 mod hook;
 mod linearize;
 mod parameters;
+pub mod six_dof;
 mod state;
 mod trim;
 

@@ -1,0 +1,161 @@
+//! Lateral-directional F/A-18 coefficients (docs/six-dof.md).
+//!
+//! Source: the polynomial fit of Chakraborty, Seiler & Balas, *Susceptibility of F/A-18
+//! flight controllers to the falling-leaf mode*, JGCD 2011, to the NASA HARV data
+//! (NASA TM-107601), the same source as the longitudinal polynomials. α, β, δa, δr in
+//! rad; p̂ = p·b/(2V_T), r̂ = r·b/(2V_T):
+//!
+//! ```text
+//! C_l = C_lβ·β + C_lδa·δa + C_lδr·δr + C_lp·p̂ + C_lr·r̂      (positive right wing down)
+//! C_n = C_nβ·β + C_nδa·δa + C_nδr·δr + C_np·p̂ + C_nr·r̂      (positive nose right)
+//! C_Y = C_Yβ·β + C_Yδa·δa + C_Yδr·δr                         (positive to the right)
+//! ```
+//!
+//! each derivative a polynomial in α. The data are for the clean aircraft and about the
+//! data's reference point; they are used unchanged in the landing configuration (no
+//! public flap or gear increments were found), and the transfer of C_n to the CG is
+//! made by the equations of motion.
+
+/// Evaluates c0 + c1·α + c2·α² + … by Horner's rule.
+#[inline]
+fn polynomial(coefficients: &[f64], alpha: f64) -> f64 {
+    coefficients
+        .iter()
+        .rev()
+        .fold(0.0, |sum, c| sum * alpha + c)
+}
+
+const ROLL_BETA: [f64; 5] = [-0.0556, -0.4153, -0.3620, 2.3843, -1.6196];
+const ROLL_AILERON: [f64; 4] = [0.1424, -0.0516, -0.2646, 0.1989];
+const ROLL_RUDDER: [f64; 4] = [0.0129, 0.0014, 0.0083, -0.0274];
+const ROLL_P: [f64; 2] = [-0.3540, 0.2377];
+const ROLL_R: [f64; 3] = [0.1983, 0.7804, -1.0871];
+const YAW_BETA: [f64; 3] = [0.0885, 0.0329, -0.3816];
+const YAW_AILERON: [f64; 4] = [0.0104, 0.0584, -0.3413, 0.2694];
+const YAW_RUDDER: [f64; 5] = [-0.0780, -0.0176, 0.5564, -0.8980, 0.3899];
+const YAW_P: [f64; 2] = [0.0792, -0.0881];
+const YAW_R: [f64; 2] = [-0.4326, -0.1307];
+const SIDE_BETA: [f64; 3] = [-0.7344, 0.2654, -0.1926];
+const SIDE_AILERON: [f64; 4] = [-0.1656, -0.2403, 1.5317, -0.8500];
+const SIDE_RUDDER: [f64; 4] = [0.2054, 0.4082, -1.6921, 0.9351];
+
+/// The lateral stability and control derivatives at one angle of attack (per rad).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LateralDerivatives {
+    /// Dihedral effect C_lβ.
+    pub roll_beta: f64,
+    /// Aileron roll power C_lδa.
+    pub roll_aileron: f64,
+    /// Rudder rolling moment C_lδr.
+    pub roll_rudder: f64,
+    /// Roll damping C_lp.
+    pub roll_p: f64,
+    /// Roll due to yaw rate C_lr.
+    pub roll_r: f64,
+    /// Weathercock stability C_nβ.
+    pub yaw_beta: f64,
+    /// Aileron yawing moment (adverse yaw when negative) C_nδa.
+    pub yaw_aileron: f64,
+    /// Rudder power C_nδr.
+    pub yaw_rudder: f64,
+    /// Yaw due to roll rate C_np.
+    pub yaw_p: f64,
+    /// Yaw damping C_nr.
+    pub yaw_r: f64,
+    /// Side force due to sideslip C_Yβ.
+    pub side_beta: f64,
+    /// Side force due to aileron C_Yδa.
+    pub side_aileron: f64,
+    /// Side force due to rudder C_Yδr.
+    pub side_rudder: f64,
+}
+
+impl LateralDerivatives {
+    /// The derivatives at angle of attack `alpha` (rad).
+    #[inline]
+    pub fn at(alpha: f64) -> Self {
+        Self {
+            roll_beta: polynomial(&ROLL_BETA, alpha),
+            roll_aileron: polynomial(&ROLL_AILERON, alpha),
+            roll_rudder: polynomial(&ROLL_RUDDER, alpha),
+            roll_p: polynomial(&ROLL_P, alpha),
+            roll_r: polynomial(&ROLL_R, alpha),
+            yaw_beta: polynomial(&YAW_BETA, alpha),
+            yaw_aileron: polynomial(&YAW_AILERON, alpha),
+            yaw_rudder: polynomial(&YAW_RUDDER, alpha),
+            yaw_p: polynomial(&YAW_P, alpha),
+            yaw_r: polynomial(&YAW_R, alpha),
+            side_beta: polynomial(&SIDE_BETA, alpha),
+            side_aileron: polynomial(&SIDE_AILERON, alpha),
+            side_rudder: polynomial(&SIDE_RUDDER, alpha),
+        }
+    }
+}
+
+/// Rolling-, yawing-moment and side-force coefficients (–), about the data's reference
+/// point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LateralCoefficients {
+    /// Rolling-moment coefficient C_l (positive right wing down).
+    pub roll: f64,
+    /// Yawing-moment coefficient C_n (positive nose right).
+    pub yaw: f64,
+    /// Side-force coefficient C_Y along body y (positive to the right).
+    pub side: f64,
+}
+
+/// The coefficients at α, β, aileron δa, rudder δr (rad) and normalised rates p̂, r̂ (–).
+#[inline]
+pub fn lateral_coefficients(
+    alpha: f64,
+    beta: f64,
+    aileron: f64,
+    rudder: f64,
+    p_hat: f64,
+    r_hat: f64,
+) -> LateralCoefficients {
+    let d = LateralDerivatives::at(alpha);
+    LateralCoefficients {
+        roll: d.roll_beta * beta
+            + d.roll_aileron * aileron
+            + d.roll_rudder * rudder
+            + d.roll_p * p_hat
+            + d.roll_r * r_hat,
+        yaw: d.yaw_beta * beta
+            + d.yaw_aileron * aileron
+            + d.yaw_rudder * rudder
+            + d.yaw_p * p_hat
+            + d.yaw_r * r_hat,
+        side: d.side_beta * beta + d.side_aileron * aileron + d.side_rudder * rudder,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// C_lβ at α = 10° written out by hand: −0.0556 − 0.4153α − 0.3620α² + 2.3843α³
+    /// − 1.6196α⁴ with α = 0.174 533.
+    #[test]
+    fn horner_matches_the_polynomial_written_out() {
+        let a: f64 = 0.174_533;
+        let by_hand =
+            -0.0556 - 0.4153 * a - 0.3620 * a * a + 2.3843 * a * a * a - 1.6196 * a * a * a * a;
+        assert!((LateralDerivatives::at(a).roll_beta - by_hand).abs() < 1e-15);
+    }
+
+    /// The signs of docs/six-dof.md: positive aileron rolls right wing down, positive
+    /// rudder (trailing edge left) yaws the nose left with a side force to the right.
+    #[test]
+    fn control_signs_follow_the_conventions() {
+        let alpha = 7.1_f64.to_radians();
+        let aileron = lateral_coefficients(alpha, 0.0, 0.1, 0.0, 0.0, 0.0);
+        assert!(aileron.roll > 0.0);
+        let rudder = lateral_coefficients(alpha, 0.0, 0.0, 0.1, 0.0, 0.0);
+        assert!(rudder.yaw < 0.0 && rudder.side > 0.0);
+        // Sideslip from the right: the nose turns into it (C_nβ > 0), the right wing
+        // rises (C_lβ < 0), the side force pushes left (C_Yβ < 0).
+        let sideslip = lateral_coefficients(alpha, 0.1, 0.0, 0.0, 0.0, 0.0);
+        assert!(sideslip.yaw > 0.0 && sideslip.roll < 0.0 && sideslip.side < 0.0);
+    }
+}
