@@ -126,6 +126,20 @@ pub fn write_folder(folder: &CampaignFolder, output: &OutputDir) -> Result<()> {
 
 /// The outcomes after which the aircraft is intact, aboard or flying: a trap, a bolter or a
 /// wave-off (docs/model.md §9), as a proportion of the runs.
+/// The columns of a table of distributions, one row per quantity and controller.
+const DISTRIBUTION_HEADER: [&str; 10] = [
+    "quantity",
+    "controller",
+    "count",
+    "mean",
+    "sd",
+    "min",
+    "p5",
+    "p50",
+    "p95",
+    "max",
+];
+
 fn safe(s: &CampaignStatistics) -> Proportion {
     Proportion::new(s.boarding.count + s.bolter.count + s.wave_off.count, s.runs)
 }
@@ -354,21 +368,7 @@ fn html_report(
             "Over the runs that touched the deck; percentiles by {}.",
             report.summary.percentiles
         ))
-        .table(
-            &[
-                "quantity",
-                "controller",
-                "count",
-                "mean",
-                "sd",
-                "min",
-                "p5",
-                "p50",
-                "p95",
-                "max",
-            ],
-            distribution_rows(stats),
-        )
+        .table(&DISTRIBUTION_HEADER, distribution_rows(stats))
         .table(
             &["controller", "wire 1", "wire 2", "wire 3", "wire 4"],
             wires,
@@ -378,21 +378,7 @@ fn html_report(
             "Over the runs flown, per run; percentiles by {}.",
             report.summary.percentiles
         ))
-        .table(
-            &[
-                "quantity",
-                "controller",
-                "count",
-                "mean",
-                "sd",
-                "min",
-                "p5",
-                "p50",
-                "p95",
-                "max",
-            ],
-            actuator_rows(stats),
-        );
+        .table(&DISTRIBUTION_HEADER, actuator_rows(stats));
     if let Some(paired) = paired {
         page.section("Paired differences")
             .paragraph(format!(

@@ -17,7 +17,7 @@ use deckland::scenario::Scenario;
 use deckland::simulation::Signals;
 
 use crate::commands::land::outcome_text;
-use crate::plot::Figure;
+use crate::plot::{Figure, Panel};
 
 /// The x axis of the figures over time.
 const TIME: &str = "time (s)";
@@ -50,6 +50,17 @@ pub(super) fn wake_onset(samples: &[Signals], scenario: &Scenario) -> Option<(f6
         .iter()
         .find(|s| s.ship.distance_aft_of_pitch_centre_m(s.x_m) < extent_m)
         .map(|s| (s.time_s, extent_m))
+}
+
+/// `panel` with the air wake's onset marked (a vertical line at its time), if the wake
+/// reaches the aircraft in `samples`.
+pub(super) fn mark_wake_onset(panel: Panel, samples: &[Signals], scenario: &Scenario) -> Panel {
+    match wake_onset(samples, scenario) {
+        Some((time_s, extent_m)) => {
+            panel.vertical_line(format!("air wake from {extent_m:.0} m aft"), time_s)
+        }
+        None => panel,
+    }
 }
 
 /// The approach's figures, each with its file stem. `flown` names the controller, the

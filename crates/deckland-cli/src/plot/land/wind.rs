@@ -4,18 +4,12 @@ use deckland::simulation::Signals;
 
 use deckland::scenario::Scenario;
 
-use super::{series, wake_onset, TIME};
+use super::{mark_wake_onset, series, TIME};
 use crate::plot::{Figure, Panel};
 
 /// The total wind at the aircraft in earth axes.
 pub(super) fn figure(samples: &[Signals], scenario: &Scenario, title: &str) -> Figure {
-    let onset = wake_onset(samples, scenario);
-    let mark = |panel: Panel| match onset {
-        Some((time_s, extent_m)) => {
-            panel.vertical_line(format!("air wake from {extent_m:.0} m aft"), time_s)
-        }
-        None => panel,
-    };
+    let mark = |panel: Panel| mark_wake_onset(panel, samples, scenario);
     Figure::new()
         .title(format!("Wind at the aircraft — {title}"))
         .panel(mark(
