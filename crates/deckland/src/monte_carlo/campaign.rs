@@ -6,6 +6,7 @@ use std::sync::Arc;
 
 use rayon::prelude::*;
 
+use super::record::{RunFailure, RunRecord};
 use super::seeds::run_seed;
 use super::shard::Shard;
 use super::statistics::CampaignStatistics;
@@ -13,7 +14,7 @@ use crate::control::pitch::PitchControllerParameters;
 use crate::random::RandomStreams;
 use crate::recording::SummaryRecorder;
 use crate::scenario::{DispersionSample, Mission, Scenario};
-use crate::simulation::{PitchLawFactory, RunSummary, SetupError, Simulation};
+use crate::simulation::{PitchLawFactory, Simulation};
 
 /// A user's own pitch law for a campaign: built once per run, after that run's trim.
 #[derive(Clone)]
@@ -142,51 +143,6 @@ impl CampaignSpec {
         }
         let draw = scenario.dispersion.sample(&RandomStreams::new(seed));
         (draw.apply(&scenario), draw)
-    }
-}
-
-/// Why a run produced no flight.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum RunFailure {
-    /// The (dispersed) scenario could not be set up: a value out of range, or no trim.
-    #[error("invalid dispersed scenario: {0}")]
-    Invalid(#[from] SetupError),
-    /// The simulation panicked (a bug); the message is the panic's.
-    #[error("the simulation panicked: {0}")]
-    Panicked(String),
-}
-
-/// One run of a campaign: one small row, kept for every run however it ended.
-#[derive(Debug, Clone, PartialEq)]
-pub struct RunRecord {
-    /// Index of the run (from 0).
-    pub run_index: u64,
-    /// Index of the controller in [`CampaignSpec::controllers`].
-    pub controller: usize,
-    /// The run's seed.
-    pub seed: u64,
-    /// The dispersions drawn for the run.
-    pub dispersion: DispersionSample,
-    /// The run's summary, or why it could not fly.
-    pub result: Result<RunSummary, RunFailure>,
-}
-
-impl RunRecord {
-    /// The outcome's name: a [`crate::simulation::Outcome`] name, `invalid` or `panicked`.
-    pub fn outcome_name(&self) -> &'static str {
-        match &self.result {
-            Ok(summary) => summary.outcome.name(),
-            Err(RunFailure::Invalid(_)) => "invalid",
-            Err(RunFailure::Panicked(_)) => "panicked",
-        }
-    }
-
-    /// Why the run did not trap, in words (`None` for a trap).
-    pub fn failure_reason(&self) -> Option<String> {
-        match &self.result {
-            Ok(summary) => summary.reason.clone(),
-            Err(failure) => Some(failure.to_string()),
-        }
     }
 }
 

@@ -33,6 +33,7 @@ mod limits;
 mod merge;
 mod merge_error;
 mod rare_events;
+mod record;
 mod row;
 mod run_scenario;
 mod runs_csv;
@@ -43,7 +44,7 @@ mod summary;
 
 pub use campaign::{
     controller_label, run_campaign, CampaignError, CampaignResult, CampaignSpec, ControllerVariant,
-    RunFailure, RunRecord, SharedPitchLaw,
+    SharedPitchLaw,
 };
 pub use limits::{
     check_runs, LimitError, MAX_CONTROLLERS, MAX_CONTROLLER_LABEL_BYTES, MAX_RUNS,
@@ -55,6 +56,7 @@ pub use rare_events::{
     binomial_cdf, regularized_incomplete_beta, runs_to_show_below, upper_bound, RareEventTarget,
     RunsNeeded, DEFAULT_TARGET_RATE, UPPER_BOUND_CONFIDENCE, UPPER_BOUND_METHOD,
 };
+pub use record::{RunFailure, RunRecord};
 pub use row::{RowError, RunRow, CAMPAIGN_OUTCOMES, RANGES, RUN_COLUMNS};
 pub use run_scenario::dispersed_run_scenario;
 pub use runs_csv::parse_runs_csv;

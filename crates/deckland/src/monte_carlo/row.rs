@@ -20,7 +20,7 @@ use std::borrow::Cow;
 
 use serde::{Deserialize, Serialize};
 
-use super::campaign::RunRecord;
+use super::record::RunRecord;
 use crate::simulation::{Outcome, SIGNAL_MAGNITUDE_LIMIT};
 
 /// The columns of `runs.csv`, in order (the fields of [`RunRow`]).

@@ -3,8 +3,8 @@
 
 use serde::Serialize;
 
-use super::campaign::RunRecord;
 use super::rare_events::{upper_bound, UPPER_BOUND_CONFIDENCE};
+use super::record::RunRecord;
 use super::row::RunRow;
 use crate::simulation::Outcome;
 

@@ -18,6 +18,7 @@ mod closed_loop;
 pub mod deck_predictor;
 mod events;
 mod flight_computer;
+mod held;
 mod layout;
 mod outcome;
 mod outer_loops;

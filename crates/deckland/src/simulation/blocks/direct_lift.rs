@@ -5,7 +5,7 @@
 use super::plant::PlantOutputs;
 use crate::aircraft::AircraftParameters;
 use crate::control::DirectLiftParameters;
-use crate::simulation::closed_loop::HeldInputs;
+use crate::simulation::held::HeldInputs;
 use crate::simulation::outer_loops::OuterLoopOutputs;
 use crate::simulation::Signals;
 
