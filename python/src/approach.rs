@@ -4,11 +4,12 @@
 
 use std::time::Instant;
 
+use deckland::experiments::OBSERVATION_COLUMNS;
 use deckland::scenario::Scenario as RustScenario;
 use deckland::simulation::{Overrides, RunSummary};
 use pyo3::intern;
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList};
+use pyo3::types::{PyDict, PyList, PyString};
 
 use crate::outputs::{events_list, summary_dict};
 use crate::scenario::{flown_scenario, scenario_or_default, with_seed, Scenario};
@@ -95,34 +96,11 @@ impl Approach {
     fn observe<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let look = self.stepper.look();
         let s = &look.signals;
-        let predicted = look.predicted_deck_height_m;
         let obs = PyDict::new(py);
-        obs.set_item(intern!(py, "time_s"), s.time_s)?;
-        obs.set_item(intern!(py, "glide_path_error_m"), s.glide_path_error_m)?;
-        obs.set_item(intern!(py, "glide_path_height_m"), s.path_height_m)?;
-        obs.set_item(intern!(py, "hook_height_m"), s.hook_h_m)?;
-        obs.set_item(intern!(py, "sink_rate_mps"), -s.climb_rate_mps)?;
-        obs.set_item(intern!(py, "hook_sink_rate_mps"), -s.hook_climb_rate_mps)?;
-        obs.set_item(
-            intern!(py, "sink_rate_command_mps"),
-            s.climb_rate_command_mps.map(|c| -c),
-        )?;
-        obs.set_item(intern!(py, "theta_rad"), s.theta_rad)?;
-        obs.set_item(intern!(py, "theta_measured_rad"), s.theta_measured_rad)?;
-        obs.set_item(intern!(py, "theta_command_rad"), s.theta_ref_rad)?;
-        obs.set_item(intern!(py, "q_radps"), s.q_radps)?;
-        obs.set_item(intern!(py, "alpha_rad"), s.alpha_rad)?;
-        obs.set_item(intern!(py, "airspeed_mps"), s.airspeed_mps)?;
-        obs.set_item(intern!(py, "elevator_rad"), s.elevator_rad)?;
-        obs.set_item(intern!(py, "elevator_command_rad"), s.elevator_command_rad)?;
-        obs.set_item(intern!(py, "thrust_n"), s.thrust_n)?;
-        obs.set_item(intern!(py, "thrust_command_n"), s.thrust_command_n)?;
-        obs.set_item(intern!(py, "range_to_go_m"), s.aim_point.x_m - s.hook_x_m)?;
-        obs.set_item(intern!(py, "time_to_go_s"), s.time_to_go_s)?;
-        obs.set_item(intern!(py, "deck_height_m"), s.aim_point.h_m)?;
-        obs.set_item(intern!(py, "predicted_deck_height_m"), predicted)?;
-        obs.set_item(intern!(py, "wind_x_mps"), s.wind.x_mps)?;
-        obs.set_item(intern!(py, "wind_z_mps"), s.wind.z_mps)?;
+        // The registered signals the observation shows (deckland::experiments), in order.
+        for column in &OBSERVATION_COLUMNS {
+            obs.set_item(PyString::intern(py, column.name), column.value(s))?;
+        }
         let summary = self.stepper.simulation().summary();
         obs.set_item(intern!(py, "done"), self.stepper.ended())?;
         obs.set_item(intern!(py, "outcome"), summary.map(|s| s.outcome.name()))?;

@@ -161,9 +161,6 @@ pub(crate) struct Look {
     /// The signals at the current state, with the inputs the next step holds (as
     /// `fly()` records them at this time).
     pub signals: Signals,
-    /// The height of the landing point the deck-motion predictor expects (m); NaN
-    /// outside an approach.
-    pub predicted_deck_height_m: f64,
 }
 
 /// A simulation advanced one control interval at a time.
@@ -243,10 +240,11 @@ impl Stepper {
         if let Some(look) = self.look {
             return look;
         }
-        let held = self.simulation.next_step_inputs();
+        // Drawn now for the next step (the same draws it would make), so that the signals
+        // are those the step starts from.
+        self.simulation.next_step_inputs();
         let look = Look {
             signals: self.simulation.signals(),
-            predicted_deck_height_m: held.deck.map_or(f64::NAN, |deck| deck.aim.h_m),
         };
         self.look = Some(look);
         look

@@ -260,7 +260,7 @@ impl Aircraft {
     /// sin θ, cos θ already at hand (the closed loop needs them for its own signals too),
     /// and a lift-coefficient increment ΔC_L (–) from direct lift control added to the
     /// wing's (docs/model.md §5.9; 0 without it).
-    #[inline]
+    #[inline(always)]
     pub fn derivative_with_direct_lift(
         &self,
         state: &AircraftState,

@@ -86,6 +86,35 @@ pub const APPROACH_COLUMNS: [RecordedColumn; 24] = [
     RecordedColumn::si("disturbance_estimate_radps2", SignalId::DisturbanceEstimate),
 ];
 
+/// The observation of an approach between control intervals (the Python package's
+/// `Approach` and Gymnasium environment), in order: registered signals under their
+/// observation names, sink rates positive down.
+pub const OBSERVATION_COLUMNS: [RecordedColumn; 23] = [
+    RecordedColumn::si("time_s", SignalId::Time),
+    RecordedColumn::si("glide_path_error_m", SignalId::GlidePathError),
+    RecordedColumn::si("glide_path_height_m", SignalId::PathHeight),
+    RecordedColumn::si("hook_height_m", SignalId::HookHeight),
+    RecordedColumn::negated("sink_rate_mps", SignalId::ClimbRate),
+    RecordedColumn::negated("hook_sink_rate_mps", SignalId::HookClimbRate),
+    RecordedColumn::negated("sink_rate_command_mps", SignalId::ClimbRateCommand),
+    RecordedColumn::si("theta_rad", SignalId::Theta),
+    RecordedColumn::si("theta_measured_rad", SignalId::ThetaMeasured),
+    RecordedColumn::si("theta_command_rad", SignalId::ThetaRef),
+    RecordedColumn::si("q_radps", SignalId::PitchRate),
+    RecordedColumn::si("alpha_rad", SignalId::Alpha),
+    RecordedColumn::si("airspeed_mps", SignalId::Airspeed),
+    RecordedColumn::si("elevator_rad", SignalId::Elevator),
+    RecordedColumn::si("elevator_command_rad", SignalId::ElevatorCommand),
+    RecordedColumn::si("thrust_n", SignalId::Thrust),
+    RecordedColumn::si("thrust_command_n", SignalId::ThrustCommand),
+    RecordedColumn::si("range_to_go_m", SignalId::RangeToGo),
+    RecordedColumn::si("time_to_go_s", SignalId::TimeToGo),
+    RecordedColumn::si("deck_height_m", SignalId::AimHeight),
+    RecordedColumn::si("predicted_deck_height_m", SignalId::PathAnchorHeight),
+    RecordedColumn::si("wind_x_mps", SignalId::WindX),
+    RecordedColumn::si("wind_z_mps", SignalId::WindZ),
+];
+
 /// One recorded instant of an approach as a flat row of [`APPROACH_COLUMNS`]: it
 /// serialises as a struct with those fields (an empty CSV field where a signal does not
 /// apply).

@@ -312,6 +312,7 @@ impl ClosedLoop {
         // A pitch step has no climb-rate loop: not applicable, rather than NaN.
         bus.climb_rate_command_mps = (!matches!(self.outer, OuterLoops::PitchStep { .. }))
             .then_some(outer.climb_rate_command_mps);
+        bus.path_anchor_height_m = held.deck.map(|deck| deck.aim.h_m);
 
         // pitch_law: θ_ref → elevator command (docs/model.md §4).
         let actuator = self.aircraft.actuator();

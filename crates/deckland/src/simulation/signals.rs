@@ -84,6 +84,11 @@ pub struct Signals {
     pub direct_lift_coefficient: Option<f64>,
     /// Direct lift control's command (–); `None` without it.
     pub direct_lift_command: Option<f64>,
+    /// Range to go: the moving landing point's x less the hook's (m).
+    pub range_to_go_m: f64,
+    /// The landing point's height the glide path is anchored on, as the deck predictor
+    /// gives it (m); `None` outside an approach.
+    pub path_anchor_height_m: Option<f64>,
 }
 
 /// One signal of the loop, declared once in [`SIGNALS`]: its name, its unit (SI, the
@@ -255,6 +260,10 @@ signal_registry! {
     DirectLiftCoefficient = "direct_lift_coefficient" ["-"] option(direct_lift_coefficient);
     /// Direct lift control's command.
     DirectLiftCommand = "direct_lift_command" ["-"] option(direct_lift_command);
+    /// Range to go: the moving landing point's x less the hook's.
+    RangeToGo = "range_to_go_m" ["m"] value(range_to_go_m);
+    /// The landing point's height the glide path is anchored on (the deck predictor's).
+    PathAnchorHeight = "path_anchor_height_m" ["m"] option(path_anchor_height_m);
 }
 
 impl SignalId {
@@ -305,6 +314,8 @@ pub enum Conversion {
     Identity,
     /// An angle (rad) in degrees.
     Degrees,
+    /// The signal's opposite, in its unit (a sink rate from a climb rate).
+    Negated,
 }
 
 /// A column of a recorded table (a CSV file, Parquet, numpy arrays): one registered
@@ -338,10 +349,19 @@ impl RecordedColumn {
         }
     }
 
+    /// The signal's opposite, under `name` (a sink rate from a climb rate).
+    pub const fn negated(name: &'static str, signal: SignalId) -> Self {
+        Self {
+            name,
+            signal,
+            conversion: Conversion::Negated,
+        }
+    }
+
     /// The column's unit, from its signal's.
     pub fn unit(&self) -> &'static str {
         match self.conversion {
-            Conversion::Identity => self.signal.spec().unit,
+            Conversion::Identity | Conversion::Negated => self.signal.spec().unit,
             Conversion::Degrees => "deg",
         }
     }
@@ -353,6 +373,7 @@ impl RecordedColumn {
         match self.conversion {
             Conversion::Identity => value,
             Conversion::Degrees => value.map(f64::to_degrees),
+            Conversion::Negated => value.map(|v| -v),
         }
     }
 }
@@ -450,6 +471,8 @@ mod tests {
             disturbance_estimate_radps2: Some(35.0),
             direct_lift_coefficient: Some(36.0),
             direct_lift_command: Some(37.0),
+            range_to_go_m: 38.0,
+            path_anchor_height_m: Some(39.0),
         };
         let values: Vec<f64> = s
             .named_values()
@@ -469,5 +492,7 @@ mod tests {
         assert_eq!(column.value(&s), Some(14.0_f64.to_degrees()));
         assert_eq!(column.unit(), "deg");
         assert_eq!(RecordedColumn::si("x", SignalId::Thrust).unit(), "N");
+        let sink = RecordedColumn::negated("sink_rate_mps", SignalId::ClimbRate);
+        assert_eq!((sink.value(&s), sink.unit()), (Some(-18.0), "m/s"));
     }
 }

@@ -72,8 +72,15 @@ pub const BUILT_IN_BLOCKS: [BlockDeclaration; 11] = [
     },
     BlockDeclaration {
         name: "aircraft",
-        reads: &[ShipX, ElevatorCommand, ThrustCommand, DirectLiftCoefficient],
+        reads: &[
+            ShipX,
+            AimX,
+            ElevatorCommand,
+            ThrustCommand,
+            DirectLiftCoefficient,
+        ],
         writes: &[
+            RangeToGo,
             X,
             Altitude,
             HookX,
@@ -132,6 +139,7 @@ pub const BUILT_IN_BLOCKS: [BlockDeclaration; 11] = [
             CompensationWeight,
             ThetaRef,
             ClimbRateCommand,
+            PathAnchorHeight,
         ],
         followed_by: None,
     },

@@ -43,6 +43,7 @@ pub(crate) fn kinematics(
     bus.elevator_rate_radps = state.elevator_rate_radps;
     bus.thrust_n = state.total_thrust_n();
     bus.distance_aft_m = bus.ship.distance_aft_of_pitch_centre_m(state.x_m);
+    bus.range_to_go_m = bus.aim_point.x_m - hook_x_m;
     Kinematics {
         state,
         sin_theta: sin_t,
