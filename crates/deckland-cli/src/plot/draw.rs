@@ -150,16 +150,10 @@ impl Panel {
                     })
                     .collect();
                 for corners in &boxes {
-                    let (a, b) = (
+                    occupancy.mark_rect(PixelRect::spanning(
                         chart.backend_coord(&corners[0]),
                         chart.backend_coord(&corners[1]),
-                    );
-                    occupancy.mark_rect(PixelRect {
-                        left: a.0.min(b.0),
-                        top: a.1.min(b.1),
-                        right: a.0.max(b.0),
-                        bottom: a.1.max(b.1),
-                    });
+                    ));
                 }
                 chart
                     .draw_series(
@@ -387,16 +381,10 @@ impl Panel {
                 chart
                     .draw_series(std::iter::once(Rectangle::new(corners, colour.filled())))
                     .map_err(error)?;
-                let (a, b) = (
+                occupancy.mark_rect(PixelRect::spanning(
                     chart.backend_coord(&corners[0]),
                     chart.backend_coord(&corners[1]),
-                );
-                occupancy.mark_rect(PixelRect {
-                    left: a.0.min(b.0),
-                    top: a.1.min(b.1),
-                    right: a.0.max(b.0),
-                    bottom: a.1.max(b.1),
-                });
+                ));
                 let mut label_at = height;
                 if let Some(&(low, high)) = group.intervals.get(category) {
                     if low.is_finite() && high.is_finite() {

@@ -38,6 +38,16 @@ pub(crate) struct PixelRect {
 }
 
 impl PixelRect {
+    /// The rectangle with opposite corners `a` and `b` (in any order).
+    pub(crate) fn spanning(a: Pixel, b: Pixel) -> Self {
+        Self {
+            left: a.0.min(b.0),
+            top: a.1.min(b.1),
+            right: a.0.max(b.0),
+            bottom: a.1.max(b.1),
+        }
+    }
+
     /// The rectangle at `top_left` of `size`.
     pub(crate) fn at(top_left: Pixel, (width, height): (i32, i32)) -> Self {
         Self {

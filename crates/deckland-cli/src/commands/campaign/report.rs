@@ -242,26 +242,31 @@ fn paired_rows(paired: &PairedComparison) -> Vec<Vec<String>> {
             let mut cells = vec![q.name.to_string()];
             match (q.difference, q.largest_abs) {
                 (Some(d), Some(largest)) => {
-                    cells.push(d.count.to_string());
-                    cells.extend(
-                        [
-                            d.mean,
-                            d.standard_deviation,
-                            d.min,
-                            d.p5,
-                            d.p50,
-                            d.p95,
-                            d.max,
-                            largest,
-                        ]
-                        .map(|v| html::number(v, 2)),
-                    );
+                    cells.extend(distribution_cells(&d));
+                    cells.push(html::number(largest, 2));
                 }
                 _ => cells.extend(std::iter::repeat_n("—".to_string(), 9)),
             }
             cells
         })
         .collect()
+}
+
+/// A distribution's cells: its count, mean, standard deviation, minimum, p5, p50, p95
+/// and maximum.
+fn distribution_cells(d: &Distribution) -> impl Iterator<Item = String> {
+    std::iter::once(d.count.to_string()).chain(
+        [
+            d.mean,
+            d.standard_deviation,
+            d.min,
+            d.p5,
+            d.p50,
+            d.p95,
+            d.max,
+        ]
+        .map(|v| html::number(v, 2)),
+    )
 }
 
 /// Per quantity and controller: the count, mean, standard deviation, extremes and
@@ -276,19 +281,7 @@ fn statistics_rows(
             let mut cells = vec![name.to_string(), s.controller.clone()];
             match get(s) {
                 Some(d) => {
-                    cells.push(d.count.to_string());
-                    cells.extend(
-                        [
-                            d.mean,
-                            d.standard_deviation,
-                            d.min,
-                            d.p5,
-                            d.p50,
-                            d.p95,
-                            d.max,
-                        ]
-                        .map(|v| html::number(v, 2)),
-                    );
+                    cells.extend(distribution_cells(&d));
                 }
                 None => cells.extend(std::iter::repeat_n("—".to_string(), 8)),
             }
