@@ -14,6 +14,7 @@ fn plant(c: &mut Criterion) {
     let wind = Wind {
         x_mps: -10.0,
         z_mps: 0.3,
+        ..Default::default()
     };
     let state = point.state(0.0, 100.0, &wind);
     let commands = AircraftCommands {

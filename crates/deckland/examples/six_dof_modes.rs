@@ -4,10 +4,11 @@
 //! `cargo run --release -p deckland --example six_dof_modes`.
 
 use deckland::aircraft::six_dof::{
-    linearize_six_dof, trim_six_dof, SixDofAircraft, SixDofTrimPoint, SixDofTrimRequest, Wind3,
+    linearize_six_dof, trim_six_dof, SixDofAircraft, SixDofTrimPoint, SixDofTrimRequest,
     LATERAL_INPUT_NAMES, LATERAL_INPUT_UNITS, LATERAL_STATE_NAMES, LATERAL_STATE_UNITS,
 };
 use deckland::aircraft::TrimRequest;
+use deckland::environment::Wind;
 
 fn print_trim(title: &str, point: &SixDofTrimPoint) {
     println!("{title}");
@@ -115,9 +116,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     );
 
     let crab = SixDofTrimRequest {
-        wind: Wind3 {
+        wind: Wind {
             y_mps: 5.0,
-            ..Wind3::default()
+            ..Wind::default()
         },
         longitudinal: TrimRequest::default(),
         ..level

@@ -121,6 +121,7 @@ fn steady_headwind_changes_only_ground_speed() {
     let headwind = Wind {
         x_mps: -10.0,
         z_mps: 0.0,
+        ..Default::default()
     };
     let start = point.state(0.0, 100.0, &headwind);
     let commands = AircraftCommands {

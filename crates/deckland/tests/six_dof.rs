@@ -5,7 +5,7 @@
 
 use deckland::aircraft::six_dof::{
     linearize_six_dof, trim_six_dof, LateralDerivatives, OpenLoopSixDof, SixDofAircraft,
-    SixDofCommands, SixDofState, SixDofTrimError, SixDofTrimRequest, Wind3,
+    SixDofCommands, SixDofState, SixDofTrimError, SixDofTrimRequest,
 };
 use deckland::aircraft::{
     aerodynamic_coefficients, linearize, trim, Aircraft, AircraftCommands, AircraftState,
@@ -53,6 +53,7 @@ fn gusty_wind(t: f64) -> Wind {
     Wind {
         x_mps: -10.0 + 3.0 * (0.7 * t).sin() + 1.5 * (2.3 * t + 0.4).sin(),
         z_mps: 1.2 * (1.1 * t).sin() - 0.6 * (3.1 * t).cos(),
+        ..Default::default()
     }
 }
 
@@ -82,7 +83,7 @@ proptest! {
             engine_thrust_n: [thrust_1, thrust_2],
             elevator_rad: elevator, elevator_rate_radps: elevator_rate,
         };
-        let wind = Wind { x_mps: wind_x, z_mps: wind_z };
+        let wind = Wind { x_mps: wind_x, z_mps: wind_z, ..Default::default() };
         let expected = longitudinal.derivative(
             &state,
             &AircraftCommands { elevator_rad: elevator_command, thrust_n: thrust_command },
@@ -97,7 +98,7 @@ proptest! {
             rudder_rad: rudder_command,
         };
         let derivative = six.derivative(
-            &SixDofState::from_longitudinal(&state), &commands, &Wind3::from(wind));
+            &SixDofState::from_longitudinal(&state), &commands, &wind);
         let got = derivative.longitudinal().to_array();
         let scales = [1.0, 1.0, 0.01, 0.01, 1.0, 1.0, 1.0, 1.0, 0.01, 0.01];
         for (i, (a, b)) in got.iter().zip(expected.to_array()).enumerate() {
@@ -143,14 +144,14 @@ impl deckland::integration::OdeSystem<{ SixDofState::DIMENSION }> for GustySixDo
     fn derivative(&self, t: f64, x: &[f64; SixDofState::DIMENSION]) -> [f64; 20] {
         let state = SixDofState::from_array(x);
         self.aircraft
-            .derivative(&state, &self.commands, &Wind3::from(gusty_wind(t)))
+            .derivative(&state, &self.commands, &gusty_wind(t))
             .to_array()
     }
     fn constrain(&self, x: &mut [f64; SixDofState::DIMENSION]) {
         OpenLoopSixDof {
             aircraft: self.aircraft,
             commands: self.commands,
-            wind: Wind3::default(),
+            wind: Wind::default(),
         }
         .constrain(x);
     }
@@ -294,7 +295,7 @@ fn crab_in_a_steady_crosswind_heads_into_the_wind() {
             flight_path_angle_rad: gamma,
         },
         sideslip_rad: 0.0,
-        wind: Wind3 {
+        wind: Wind {
             x_mps: -12.0,
             y_mps: 5.0,
             z_mps: 0.0,
@@ -348,9 +349,9 @@ fn unreachable_sideslip_names_the_surface_and_the_excess() {
     let error = trim_six_dof(
         &aircraft,
         &SixDofTrimRequest {
-            wind: Wind3 {
+            wind: Wind {
                 y_mps: 80.0,
-                ..Wind3::default()
+                ..Wind::default()
             },
             ..SixDofTrimRequest::default()
         },
@@ -503,7 +504,7 @@ fn sideslip_factors_scale_lift_and_drag() {
         speed * alpha.sin() * beta.cos(),
     ];
     let inputs = deckland::aircraft::six_dof::SixDofInputs::default();
-    let rates = aircraft.body_rates(velocity, [0.0; 3], [0.0; 3], &inputs, &Wind3::default());
+    let rates = aircraft.body_rates(velocity, [0.0; 3], [0.0; 3], &inputs, &Wind::default());
     let c = aerodynamic_coefficients(alpha, 0.0, 0.0, aircraft.longitudinal().configuration());
     let qs = 0.5 * p.air_density_kg_m3 * speed * speed * p.wing_area_m2;
     let lift = qs * c.lift * (2.0 * beta / 3.0).cos();

@@ -127,6 +127,7 @@ fn steady_uniform_wind_acts_only_through_air_relative_velocity() {
     let wind = Wind {
         x_mps: -12.0,
         z_mps: -3.0,
+        ..Default::default()
     };
     let wind_xb = wind.x_mps * theta.cos() - wind.z_mps * theta.sin();
     let wind_zb = wind.x_mps * theta.sin() + wind.z_mps * theta.cos();

@@ -6,18 +6,22 @@ fn deck(aim_h: f64, aim_h_rate: f64) -> DeckReference {
         mean_aim: EarthPoint {
             x_m: 0.0,
             h_m: 20.0,
+            ..Default::default()
         },
         mean_aim_velocity: EarthVelocity {
             x_mps: 0.0,
             h_mps: 0.0,
+            ..Default::default()
         },
         aim: EarthPoint {
             x_m: 0.0,
             h_m: aim_h,
+            ..Default::default()
         },
         aim_velocity: EarthVelocity {
             x_mps: 0.0,
             h_mps: aim_h_rate,
+            ..Default::default()
         },
         forecast: None,
         unfiltered_aim_h_m: None,

@@ -17,15 +17,24 @@ use serde::{Deserialize, Serialize};
 
 use crate::parameters::{Bounds, ParameterError};
 
-/// Where the ship is: the inputs of Eq. 17–18 at one instant.
+/// Where the ship is, in earth axes, at one instant: the inputs of Eq. 17–18 (x_G, z_G,
+/// θ_s) and the lateral components of docs/model.md §10.5 (sway, roll, yaw). The 3-DOF
+/// approach uses the x–h part; the lateral components are zero there.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct ShipPose {
     /// Earth x of the ship's pitch centre, x_G (m); x_G(t) = x_G0 + V_ship·t.
     pub pitch_centre_x_m: f64,
+    /// Earth y of the ship's pitch centre (m, positive right of the final bearing): the
+    /// ship's sway and its drift across the bearing.
+    pub pitch_centre_y_m: f64,
     /// Heave of the pitch centre z_G (m, positive up, zero mean).
     pub heave_m: f64,
     /// Ship pitch θ_s (rad, positive bow-up).
     pub pitch_rad: f64,
+    /// Ship roll φ_s (rad, positive starboard side down).
+    pub roll_rad: f64,
+    /// Ship yaw ψ_s from its mean heading (rad, positive bow to starboard).
+    pub yaw_rad: f64,
 }
 
 impl ShipPose {
@@ -41,26 +50,38 @@ impl ShipPose {
 pub struct ShipPoseRate {
     /// ẋ_G, the ship's forward speed (m/s).
     pub pitch_centre_x_rate_mps: f64,
+    /// ẏ_G (m/s, positive right).
+    pub pitch_centre_y_rate_mps: f64,
     /// ż_G (m/s, positive up).
     pub heave_rate_mps: f64,
     /// θ̇_s (rad/s, positive bow-up).
     pub pitch_rate_radps: f64,
+    /// φ̇_s (rad/s, positive starboard side down).
+    pub roll_rate_radps: f64,
+    /// ψ̇_s (rad/s, positive bow to starboard).
+    pub yaw_rate_radps: f64,
 }
 
-/// A point in earth axes: x positive forward (m), h height above mean sea level (m, up).
+/// A point in earth axes (docs/model.md §1, §10.1): x positive forward along the final
+/// bearing (m), y positive to the right of it (m), h height above mean sea level (m, up;
+/// h = −z). The 3-DOF model flies in the x–h plane, y = 0.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct EarthPoint {
     /// Earth x (m, positive in the direction of flight).
     pub x_m: f64,
+    /// Earth y (m, positive to the right of the final bearing).
+    pub y_m: f64,
     /// Height above mean sea level (m, positive up).
     pub h_m: f64,
 }
 
-/// A velocity in earth axes (m/s): x positive forward, h positive up.
+/// A velocity in earth axes (m/s): x positive forward, y positive right, h positive up.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct EarthVelocity {
     /// ẋ (m/s, positive forward).
     pub x_mps: f64,
+    /// ẏ (m/s, positive right).
+    pub y_mps: f64,
     /// ḣ (m/s, positive up).
     pub h_mps: f64,
 }
@@ -155,6 +176,7 @@ impl DeckGeometry {
         let (sin, cos) = pose.pitch_rad.sin_cos();
         EarthPoint {
             x_m: pose.pitch_centre_x_m - r * cos,
+            y_m: pose.pitch_centre_y_m,
             h_m: self.deck_height_m + pose.heave_m - r * sin,
         }
     }
@@ -171,6 +193,7 @@ impl DeckGeometry {
         let (sin, cos) = pose.pitch_rad.sin_cos();
         EarthVelocity {
             x_mps: rate.pitch_centre_x_rate_mps + r * sin * rate.pitch_rate_radps,
+            y_mps: rate.pitch_centre_y_rate_mps,
             h_mps: rate.heave_rate_mps - r * cos * rate.pitch_rate_radps,
         }
     }
@@ -226,6 +249,7 @@ mod tests {
             pitch_centre_x_m: 1000.0,
             heave_m: 1.5,
             pitch_rad: pitch_deg.to_radians(),
+            ..Default::default()
         }
     }
 
@@ -240,14 +264,16 @@ mod tests {
             deck.aim_point(&level),
             EarthPoint {
                 x_m: 919.0,
-                h_m: 20.0
+                h_m: 20.0,
+                ..Default::default()
             }
         );
         assert_eq!(
             deck.ramp(&level),
             EarthPoint {
                 x_m: 859.0,
-                h_m: 20.0
+                h_m: 20.0,
+                ..Default::default()
             }
         );
         let wires = deck.wires(&level);
@@ -292,6 +318,7 @@ mod tests {
             pitch_centre_x_rate_mps: 5.0,
             heave_rate_mps: 0.7,
             pitch_rate_radps: 0.02,
+            ..Default::default()
         };
         let p0 = pose(1.0);
         let h = 1e-6;
@@ -299,6 +326,7 @@ mod tests {
             pitch_centre_x_m: p0.pitch_centre_x_m + rate.pitch_centre_x_rate_mps * h,
             heave_m: p0.heave_m + rate.heave_rate_mps * h,
             pitch_rad: p0.pitch_rad + rate.pitch_rate_radps * h,
+            ..Default::default()
         };
         let s = -30.0;
         let (a, b) = (deck.point_along_deck(&p0, s), deck.point_along_deck(&p1, s));

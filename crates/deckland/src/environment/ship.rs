@@ -325,6 +325,7 @@ impl ShipMotion {
             pitch_centre_x_m: initial_pitch_centre_x_m + self.parameters.forward_speed_mps * time_s,
             heave_m: outputs.heave_m,
             pitch_rad: outputs.pitch_rad,
+            ..ShipPose::default()
         }
     }
 
@@ -335,6 +336,7 @@ impl ShipMotion {
             pitch_centre_x_rate_mps: self.parameters.forward_speed_mps,
             heave_rate_mps: outputs.heave_rate_mps,
             pitch_rate_radps: outputs.pitch_rate_radps,
+            ..ShipPoseRate::default()
         }
     }
 }

@@ -111,14 +111,16 @@ fn mean_wind_is_a_headwind_of_wind_over_deck_less_ship_speed() {
         mean_wind(10.0, 0.0),
         Wind {
             x_mps: -10.0,
-            z_mps: 0.0
+            z_mps: 0.0,
+            ..Default::default()
         }
     );
     assert_eq!(
         mean_wind(15.0, 10.0),
         Wind {
             x_mps: -5.0,
-            z_mps: 0.0
+            z_mps: 0.0,
+            ..Default::default()
         }
     );
 }

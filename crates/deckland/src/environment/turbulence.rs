@@ -61,10 +61,7 @@ impl Turbulence {
 
     /// The current turbulence (u1, w1) as a wind: x positive forward, z positive down.
     pub fn wind(&self) -> Wind {
-        Wind {
-            x_mps: self.u_mps,
-            z_mps: self.w_mps,
-        }
+        Wind::longitudinal(self.u_mps, self.w_mps)
     }
 }
 

@@ -24,14 +24,28 @@ pub const STEADY_WAKE_EXTENT_M: f64 = 914.0;
 /// against the 914-m wake. A project choice (docs/model.md §3.2).
 pub const WAKE_TAPER_M: f64 = 100.0;
 
-/// A wind velocity in earth axes (m/s): x positive forward (headwind negative), z
-/// positive down (docs/model.md §1).
+/// A wind velocity in earth axes (m/s): x positive forward (headwind negative), y
+/// positive right, z positive down (docs/model.md §1, §10.1). The 3-DOF model feels the
+/// x–z part.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Wind {
     /// W_x (m/s, positive forward; a headwind is negative).
     pub x_mps: f64,
+    /// W_y (m/s, positive to the right of the final bearing: a wind from the left).
+    pub y_mps: f64,
     /// W_z (m/s, positive down).
     pub z_mps: f64,
+}
+
+impl Wind {
+    /// A wind in the x–z plane (W_y = 0), as the longitudinal models feel it.
+    pub const fn longitudinal(x_mps: f64, z_mps: f64) -> Self {
+        Self {
+            x_mps,
+            y_mps: 0.0,
+            z_mps,
+        }
+    }
 }
 
 impl Add for Wind {
@@ -39,6 +53,7 @@ impl Add for Wind {
     fn add(self, other: Wind) -> Wind {
         Wind {
             x_mps: self.x_mps + other.x_mps,
+            y_mps: self.y_mps + other.y_mps,
             z_mps: self.z_mps + other.z_mps,
         }
     }
@@ -181,10 +196,7 @@ impl WindParameters {
 /// Mean wind, W_x = −(V_wd − V_ship), W_z = 0 (docs/model.md §3.2): a headwind when the wind
 /// over the deck exceeds the ship's speed.
 pub fn mean_wind(wind_over_deck_mps: f64, ship_forward_speed_mps: f64) -> Wind {
-    Wind {
-        x_mps: -(wind_over_deck_mps - ship_forward_speed_mps),
-        z_mps: 0.0,
-    }
+    Wind::longitudinal(-(wind_over_deck_mps - ship_forward_speed_mps), 0.0)
 }
 
 /// Steady wake at X = `distance_aft_m` (m, positive aft), paper Eq. 21–22:
@@ -194,10 +206,10 @@ pub fn mean_wind(wind_over_deck_mps: f64, ship_forward_speed_mps: f64) -> Wind {
 pub fn steady_wake(distance_aft_m: f64) -> Wind {
     let x = distance_aft_m;
     let within = x < STEADY_WAKE_EXTENT_M;
-    Wind {
-        x_mps: if x > 0.0 && within { 0.002 * x } else { 0.0 },
-        z_mps: if within { -1.0 + 0.0013 * x } else { 0.0 },
-    }
+    Wind::longitudinal(
+        if x > 0.0 && within { 0.002 * x } else { 0.0 },
+        if within { -1.0 + 0.0013 * x } else { 0.0 },
+    )
 }
 
 /// Periodic wake at time `time_s` (s) and X = `distance_aft_m` (m), paper Eq. 23–25:
@@ -213,8 +225,8 @@ pub fn periodic_wake(time_s: f64, distance_aft_m: f64, parameters: &WindParamete
     let phase = parameters.periodic_wake_frequency_radps * (2.28 * time_s + x / (0.85 * v_wd));
     let c = (phase + 0.1).cos();
     let amplitude = parameters.periodic_wake_ship_pitch_rad * v_wd;
-    Wind {
-        x_mps: amplitude * (2.22 + 0.000_091 * x) * c,
-        z_mps: amplitude * (4.98 + 0.0018 * x) * c,
-    }
+    Wind::longitudinal(
+        amplitude * (2.22 + 0.000_091 * x) * c,
+        amplitude * (4.98 + 0.0018 * x) * c,
+    )
 }

@@ -55,6 +55,7 @@ impl WindModel {
         let wake = p.wake_weight(distance_aft_m);
         let scaled = |w: Wind| Wind {
             x_mps: wake * w.x_mps,
+            y_mps: wake * w.y_mps,
             z_mps: wake * w.z_mps,
         };
         WindComponents {

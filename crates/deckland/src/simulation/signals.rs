@@ -452,21 +452,25 @@ mod tests {
             wind: Wind {
                 x_mps: 24.0,
                 z_mps: 25.0,
+                ..Default::default()
             },
             distance_aft_m: 26.0,
             ship: ShipPose {
                 pitch_centre_x_m: 27.0,
                 heave_m: 28.0,
                 pitch_rad: 29.0,
+                ..Default::default()
             },
             ship_rate: ShipPoseRate {
                 pitch_centre_x_rate_mps: 30.0,
                 heave_rate_mps: 31.0,
                 pitch_rate_radps: 32.0,
+                ..Default::default()
             },
             aim_point: EarthPoint {
                 x_m: 33.0,
                 h_m: 34.0,
+                ..Default::default()
             },
             disturbance_estimate_radps2: Some(35.0),
             direct_lift_coefficient: Some(36.0),

@@ -10,29 +10,6 @@ use crate::aircraft::{aerodynamic_coefficients_trig, Aircraft, ElevatorActuator,
 use crate::integration::OdeSystem;
 use crate::parameters::ParameterError;
 
-/// The velocity of the air mass in earth axes (m/s): x along the final bearing, y to the
-/// right, z down.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct Wind3 {
-    /// W_x (m/s), positive forward (a headwind is negative).
-    pub x_mps: f64,
-    /// W_y (m/s), positive to the right (a crosswind from the left is positive).
-    pub y_mps: f64,
-    /// W_z (m/s), positive down.
-    pub z_mps: f64,
-}
-
-impl From<Wind> for Wind3 {
-    /// The longitudinal wind with no lateral component.
-    fn from(wind: Wind) -> Self {
-        Self {
-            x_mps: wind.x_mps,
-            y_mps: 0.0,
-            z_mps: wind.z_mps,
-        }
-    }
-}
-
 /// Commands to the 6-DOF plant's actuators and engines.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct SixDofCommands {
@@ -149,7 +126,7 @@ impl SixDofAircraft {
     /// The air-relative velocity in body axes for inertial body velocity (u, v, w), Euler
     /// angles (φ, θ, ψ) and an earth-axis wind: (u, v, w) − R(φ, θ, ψ)·W.
     #[inline]
-    pub fn air_velocity(&self, velocity: [f64; 3], euler: [f64; 3], wind: &Wind3) -> [f64; 3] {
+    pub fn air_velocity(&self, velocity: [f64; 3], euler: [f64; 3], wind: &Wind) -> [f64; 3] {
         let wind_body = earth_to_body(euler, [wind.x_mps, wind.y_mps, wind.z_mps]);
         [
             velocity[0] - wind_body[0],
@@ -188,7 +165,7 @@ impl SixDofAircraft {
         rates: [f64; 3],
         euler: [f64; 3],
         inputs: &SixDofInputs,
-        wind: &Wind3,
+        wind: &Wind,
     ) -> BodyRates {
         let p = self.longitudinal.parameters();
         let config = self.longitudinal.configuration();
@@ -293,7 +270,7 @@ impl SixDofAircraft {
         &self,
         state: &SixDofState,
         commands: &SixDofCommands,
-        wind: &Wind3,
+        wind: &Wind,
     ) -> SixDofState {
         let velocity = [state.u_mps, state.v_mps, state.w_mps];
         let rates = [state.p_radps, state.q_radps, state.r_radps];
@@ -370,7 +347,7 @@ pub struct OpenLoopSixDof {
     /// Commands held constant.
     pub commands: SixDofCommands,
     /// Wind held constant.
-    pub wind: Wind3,
+    pub wind: Wind,
 }
 
 impl OdeSystem<{ SixDofState::DIMENSION }> for OpenLoopSixDof {
@@ -421,7 +398,7 @@ mod tests {
             [omega.x, omega.y, omega.z],
             [0.1, 0.05, 0.3],
             &inputs,
-            &Wind3::default(),
+            &Wind::default(),
         );
         let speed = f64::hypot(u, w);
         let alpha = (w / u).atan();
@@ -471,9 +448,9 @@ mod tests {
     #[test]
     fn crosswind_from_the_left_is_negative_sideslip() {
         let aircraft = SixDofAircraft::default();
-        let wind = Wind3 {
+        let wind = Wind {
             y_mps: 5.0,
-            ..Wind3::default()
+            ..Wind::default()
         };
         let air = aircraft.air_velocity([69.0, 0.0, 8.0], [0.0, 0.12, 0.0], &wind);
         assert!(aircraft.air_data(air).beta_rad < 0.0);

@@ -8,9 +8,10 @@
 //! (β, p, r, φ; δa, δr); the longitudinal set is the block (V_T, θ, α, q; δe, δT) in the
 //! order and units of `crate::aircraft::linearize`.
 
-use super::dynamics::{SixDofAircraft, SixDofInputs, Wind3};
+use super::dynamics::{SixDofAircraft, SixDofInputs};
 use super::kinematics::euler_rates;
 use super::trim::SixDofTrimPoint;
+use crate::environment::Wind;
 use nalgebra::{Complex, SMatrix, SVector};
 
 /// Names of the lateral states, in order.
@@ -168,7 +169,7 @@ fn rates(
         aileron_rad: u[2],
         rudder_rad: u[3],
     };
-    let body = aircraft.body_rates(velocity, body_rates, euler, &inputs, &Wind3::default());
+    let body = aircraft.body_rates(velocity, body_rates, euler, &inputs, &Wind::default());
     let [ub, vb, wb] = velocity;
     let [u_dot, v_dot, w_dot] = body.velocity;
     let in_plane_squared = ub * ub + wb * wb;

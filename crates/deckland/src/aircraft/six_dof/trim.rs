@@ -11,10 +11,11 @@
 //! crab, nose into the wind). The result is checked against α's range, the three
 //! surfaces' travel and the thrust range; a failure names the limit and the excess.
 
-use super::dynamics::{SixDofAircraft, SixDofInputs, Wind3};
+use super::dynamics::{SixDofAircraft, SixDofInputs};
 use super::kinematics::body_to_earth;
 use super::state::SixDofState;
 use crate::aircraft::{trim, TrimError, TrimRequest, ALPHA_MAX_RAD, ALPHA_MIN_RAD};
+use crate::environment::Wind;
 use nalgebra::{SMatrix, SVector};
 
 /// What to trim for.
@@ -25,7 +26,7 @@ pub struct SixDofTrimRequest {
     /// Sideslip β (rad), positive with the relative wind from the right; 0 by default.
     pub sideslip_rad: f64,
     /// Steady wind in earth axes (m/s); only sets the heading ψ (the crab).
-    pub wind: Wind3,
+    pub wind: Wind,
 }
 
 /// A trimmed straight flight of the 6-DOF aircraft.
@@ -56,7 +57,7 @@ pub struct SixDofTrimPoint {
     /// Thrust as a fraction of the total maximum thrust (–).
     pub throttle: f64,
     /// The wind the heading was found for.
-    pub wind: Wind3,
+    pub wind: Wind,
     /// Largest residual left (m/s², rad/s² or –).
     pub residual: f64,
     /// Newton iterations taken.
@@ -192,7 +193,7 @@ fn residual(aircraft: &SixDofAircraft, request: &SixDofTrimRequest, x: &Unknowns
         aileron_rad: x[4],
         rudder_rad: x[5],
     };
-    let rates = aircraft.body_rates(velocity, [0.0; 3], euler, &inputs, &Wind3::default());
+    let rates = aircraft.body_rates(velocity, [0.0; 3], euler, &inputs, &Wind::default());
     let earth = body_to_earth(euler, velocity);
     Unknowns::from([
         rates.velocity[0],
@@ -290,7 +291,7 @@ pub fn trim_six_dof(
 /// The heading ψ at which the ground track has no y component: with the air-relative
 /// velocity (a_x, a_y) in the earth's horizontal plane at ψ = 0, a_x sin ψ + a_y cos ψ
 /// = −W_y, so ψ = asin(−W_y/R) − atan2(a_y, a_x), R = √(a_x² + a_y²).
-fn crab_heading(point: &SixDofTrimPoint, wind: &Wind3) -> Result<f64, SixDofTrimError> {
+fn crab_heading(point: &SixDofTrimPoint, wind: &Wind) -> Result<f64, SixDofTrimError> {
     let air = body_to_earth(
         [point.phi_rad, point.theta_rad, 0.0],
         point.air_velocity_body(),

@@ -41,10 +41,12 @@ impl DeckPredictor for FilterLead {
         query.unshaped(
             EarthPoint {
                 x_m: deck.aim_point(pose).x_m,
+                y_m: deck.aim_point(pose).y_m,
                 h_m: state[0],
             },
             EarthVelocity {
                 x_mps: deck.velocity_along_deck(pose, rate, 0.0).x_mps,
+                y_mps: deck.velocity_along_deck(pose, rate, 0.0).y_mps,
                 h_mps: state[1],
             },
         )

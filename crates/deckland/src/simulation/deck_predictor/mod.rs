@@ -231,10 +231,12 @@ impl BuiltDeckPredictor {
         // centre at deck height (no trigonometry needed).
         let mean_aim = EarthPoint {
             x_m: pose.pitch_centre_x_m - deck.landing_point_aft_of_pitch_centre_m,
+            y_m: pose.pitch_centre_y_m,
             h_m: deck.deck_height_m,
         };
         let mean_aim_velocity = EarthVelocity {
             x_mps: rate.pitch_centre_x_rate_mps,
+            y_mps: rate.pitch_centre_y_rate_mps,
             h_mps: 0.0,
         };
         let aim_x_m = mean_aim.x_m + flight_path.parameters().touchdown_correction_m;
@@ -322,10 +324,12 @@ impl DeckQuery<'_> {
             mean_aim_velocity: self.mean_aim_velocity,
             aim: EarthPoint {
                 x_m: self.mean_aim.x_m,
+                y_m: self.mean_aim.y_m,
                 h_m: shaped.height_m,
             },
             aim_velocity: EarthVelocity {
                 x_mps: self.mean_aim_velocity.x_mps,
+                y_mps: self.mean_aim_velocity.y_mps,
                 h_mps: shaped.rate_mps,
             },
             forecast: Some(forecast),
