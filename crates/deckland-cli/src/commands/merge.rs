@@ -20,7 +20,8 @@
 //! (`parse_runs_csv`): an edited or damaged shard is refused, naming the file, the line
 //! and the column, before any statistic or plot is computed.
 
-use super::campaign::report::{self, CampaignFolder, CampaignReport};
+use super::campaign::folder::{self, CampaignFolder, CampaignReport};
+use super::campaign::report;
 use super::common::{load_scenario_file, OutputArgs};
 use crate::output::OutputDir;
 use anyhow::{anyhow, bail, Context, Result};
@@ -180,7 +181,7 @@ pub fn run(args: &MergeArgs) -> Result<()> {
         scenario_toml: &merged.scenario_toml,
         rows: &merged.rows,
         report: &report,
-        title: report::title(Path::new(&scenario_file), &report),
+        title: folder::title(Path::new(&scenario_file), &report),
     };
     report::write_folder(&folder, &output)?;
     if args.output.json {

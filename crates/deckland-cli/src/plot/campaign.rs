@@ -1,7 +1,7 @@
 //! The figures of a campaign: `touchdown_dispersion`, `touchdown_histograms` and
 //! `outcomes`.
 
-use crate::commands::campaign::report::{proportions, CampaignFolder};
+use crate::commands::campaign::folder::{proportions, CampaignFolder};
 use crate::plot::{BarGroup, Figure, Panel};
 
 /// The plots of a campaign, each with its file stem.

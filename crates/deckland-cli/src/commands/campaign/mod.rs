@@ -26,6 +26,7 @@
 //! `--runs` is at most [`MAX_RUNS`] and `--threads` at most [`MAX_THREADS`]: the records
 //! of every run are kept in memory, and threads beyond the cores buy nothing.
 
+pub mod folder;
 pub mod paired;
 pub mod report;
 
@@ -38,8 +39,8 @@ use deckland::monte_carlo::{
     SHARD_SCHEME,
 };
 use deckland::scenario::Mission;
+use folder::{CampaignFolder, CampaignReport};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressState, ProgressStyle};
-use report::{CampaignFolder, CampaignReport};
 use std::io::IsTerminal;
 use std::path::PathBuf;
 use std::time::Instant;
@@ -170,7 +171,7 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
         scenario_toml: &scenario_toml,
         rows: &rows,
         report: &report,
-        title: report::title(&args.scenario, &report),
+        title: folder::title(&args.scenario, &report),
     };
     report::write_folder(&folder, &output)?;
     if args.output.json {

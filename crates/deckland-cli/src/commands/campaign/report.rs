@@ -4,81 +4,18 @@
 //! from the rows of `runs.csv` and the library's [`CampaignSummary`], so a merged
 //! campaign's files are those of the campaign flown whole.
 
+use super::folder::{proportions, CampaignFolder, CampaignReport};
 use super::paired::PairedComparison;
 use crate::html;
 use crate::output::OutputDir;
 use crate::plot::campaign::figures;
 use anyhow::Result;
 use deckland::monte_carlo::{
-    CampaignStatistics, CampaignSummary, Distribution, Proportion, RunRow, UPPER_BOUND_CONFIDENCE,
+    CampaignStatistics, CampaignSummary, Distribution, Proportion, UPPER_BOUND_CONFIDENCE,
 };
-use deckland::scenario::Scenario;
-use serde::Serialize;
 
 /// Classes seen at most this many times get their upper bound spelt out in the report.
 const RARE_COUNT: u64 = 3;
-
-/// What `summary.json` and `--json` hold: where and how the campaign was flown around
-/// the statistics ([`CampaignSummary`], flattened in the middle, so that its text is one
-/// block, the same in a merged campaign as in the campaign flown whole).
-#[derive(Debug, Serialize)]
-pub struct CampaignReport<'a> {
-    /// The scenario file given (of the first shard, for a merge).
-    pub scenario_file: String,
-    /// The statistics.
-    #[serde(flatten)]
-    pub summary: &'a CampaignSummary,
-    /// Worker threads (`None` for a merge).
-    pub threads: Option<usize>,
-    /// Wall-clock time of the command (s).
-    pub elapsed_s: f64,
-    /// Runs finished per second (`None` for a merge: nothing was flown).
-    pub runs_per_s: Option<f64>,
-    /// The part of the campaign flown, `K/M` (`0/1` for the whole campaign).
-    pub shard: String,
-    /// How shards divide the runs.
-    pub shard_scheme: &'static str,
-    /// The shard folders a merged campaign was made from, by shard index (empty when flown).
-    pub merged_from: Vec<String>,
-}
-
-/// A campaign folder's content before it is written.
-pub struct CampaignFolder<'a> {
-    /// The scenario flown.
-    pub scenario: &'a Scenario,
-    /// Its TOML text, written as `scenario.toml`.
-    pub scenario_toml: &'a str,
-    /// The rows of `runs.csv`, sorted by run index and controller.
-    pub rows: &'a [RunRow<'a>],
-    /// The report (`summary.json`).
-    pub report: &'a CampaignReport<'a>,
-    /// The title of the plots and the page.
-    pub title: String,
-}
-
-/// The title of a campaign's plots and page: scenario file name, seed, runs, shard.
-pub fn title(scenario_file: &std::path::Path, report: &CampaignReport) -> String {
-    let name = scenario_file.file_name().map_or_else(
-        || scenario_file.display().to_string(),
-        |n| n.to_string_lossy().into_owned(),
-    );
-    let statistics = &report.summary.controllers;
-    let per_controller = statistics.first().map_or(0, |s| s.runs);
-    format!(
-        "{name}, seed {}, {per_controller} runs{}{}",
-        report.summary.campaign_seed,
-        if statistics.len() > 1 {
-            " per controller"
-        } else {
-            ""
-        },
-        if report.shard == "0/1" {
-            String::new()
-        } else {
-            format!(", shard {}", report.shard)
-        }
-    )
-}
 
 /// Writes the folder's files, each atomically: `scenario.toml`, `runs.csv`,
 /// `runs.parquet` (when a run finished), `summary.json`, the plots and `report.html`.
@@ -154,20 +91,6 @@ fn outcome_table(s: &CampaignStatistics) -> Vec<(&'static str, Proportion)> {
 
 /// The failures: the outcomes that are not safe, whose probability a campaign bounds.
 const FAILURES: [&str; 4] = ["ramp strike", "hard landing", "diverged", "timeout"];
-
-/// The outcome classes with their names, in table order.
-pub(crate) fn proportions(s: &CampaignStatistics) -> [(&'static str, Proportion); 8] {
-    [
-        ("boarding (trap)", s.boarding),
-        ("bolter", s.bolter),
-        ("wave-off (safe)", s.wave_off),
-        ("ramp strike", s.ramp_strike),
-        ("hard landing", s.hard_landing),
-        ("diverged", s.divergence),
-        ("timeout", s.timeout),
-        ("invalid scenario", s.invalid),
-    ]
-}
 
 /// The outcome table of `report.html`: per class and controller the count, the rate and
 /// its 95 % Wilson score interval (%), as in `summary.json`.
