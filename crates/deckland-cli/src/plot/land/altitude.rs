@@ -1,8 +1,8 @@
 //! `altitude`: the hook height over the whole approach, against the glide path and the landing point on the deck.
 
-use deckland::simulation::Signals;
+use deckland::simulation::{SignalId, Signals};
 
-use super::{series, series_where_applicable, TIME};
+use super::{series, Shown, TIME};
 use crate::plot::{Figure, Panel};
 
 /// The hook height over the whole approach, against the glide path and the landing point on the deck.
@@ -15,14 +15,17 @@ pub(super) fn figure(samples: &[Signals], title: &str) -> Figure {
                 TIME,
                 "height above mean sea level (m)",
             )
-            .series("hook", series(samples, |s| s.hook_h_m))
+            .series(
+                "hook",
+                series(samples, SignalId::HookHeight, Shown::AsRegistered),
+            )
             .dashed_series(
                 "glide path (hook reference)",
-                series_where_applicable(samples, |s| s.path_height_m),
+                series(samples, SignalId::PathHeight, Shown::AsRegistered),
             )
             .series(
                 "landing point on the deck",
-                series(samples, |s| s.aim_point.h_m),
+                series(samples, SignalId::AimHeight, Shown::AsRegistered),
             ),
         )
 }

@@ -2,7 +2,7 @@
 
 use deckland::experiments::ApproachRun;
 use deckland::scenario::Scenario;
-use deckland::simulation::{Event, Signals};
+use deckland::simulation::{Event, SignalId, Signals};
 
 use crate::commands::land::outcome_text;
 use crate::plot::{Figure, MarkerShape, Panel, DECK_COLOUR};
@@ -60,7 +60,7 @@ pub(crate) fn figure(run: &ApproachRun, scenario: &Scenario, flown: &str) -> Fig
     // The glide path where it lies above the deck under the hook: below it, it is an aim
     // point, not a path to fly.
     let path_above_deck = |s: &Signals| {
-        s.path_height_m
+        s.get(SignalId::PathHeight)
             .filter(|path| deck_under_hook(s).is_none_or(|deck| *path >= deck))
     };
     let outcome = outcome_text(&run.summary);
@@ -117,9 +117,12 @@ pub(crate) fn figure(run: &ApproachRun, scenario: &Scenario, flown: &str) -> Fig
             "height above the mean deck (m)",
         )
         .x_limits(from_m..forward_end_m)
-        .series("hook", curve(from_m, &|s| Some(s.hook_h_m)))
+        .series("hook", curve(from_m, &|s| s.get(SignalId::HookHeight)))
         .dashed_series("glide path", curve(from_m, &path_above_deck))
-        .series("landing point", curve(from_m, &|s| Some(s.aim_point.h_m)))
+        .series(
+            "landing point",
+            curve(from_m, &|s| s.get(SignalId::AimHeight)),
+        )
         .styled_series(
             "deck under the hook, as it moved",
             curve(from_m, &deck_under_hook),

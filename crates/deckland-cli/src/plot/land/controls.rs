@@ -3,9 +3,9 @@
 use deckland::scenario::Scenario;
 
 use crate::commands::land::signed;
-use deckland::simulation::Signals;
+use deckland::simulation::{SignalId, Signals};
 
-use super::{series, TIME};
+use super::{series, Shown, TIME};
 use crate::plot::{Figure, Panel};
 
 /// The elevator against its stops, and the thrust commanded and delivered.
@@ -19,7 +19,10 @@ pub(super) fn figure(samples: &[Signals], scenario: &Scenario, title: &str) -> F
                 TIME,
                 "elevator δe (deg)",
             )
-            .series("elevator", series(samples, |s| s.elevator_rad.to_degrees()))
+            .series(
+                "elevator",
+                series(samples, SignalId::Elevator, Shown::Degrees),
+            )
             .reference_line(
                 format!("lower stop {}°", signed(actuator.min_deflection_deg)),
                 actuator.min_deflection_deg,
@@ -31,7 +34,13 @@ pub(super) fn figure(samples: &[Signals], scenario: &Scenario, title: &str) -> F
         )
         .panel(
             Panel::new("Thrust, both engines", TIME, "thrust (kN)")
-                .series("command", series(samples, |s| s.thrust_command_n / 1000.0))
-                .series("actual", series(samples, |s| s.thrust_n / 1000.0)),
+                .series(
+                    "command",
+                    series(samples, SignalId::ThrustCommand, Shown::Thousandths),
+                )
+                .series(
+                    "actual",
+                    series(samples, SignalId::Thrust, Shown::Thousandths),
+                ),
         )
 }

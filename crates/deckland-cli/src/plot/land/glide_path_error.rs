@@ -1,8 +1,8 @@
 //! `glide_path_error`: the hook's position error to the glide path (cf. paper Fig. 14).
 
-use deckland::simulation::Signals;
+use deckland::simulation::{SignalId, Signals};
 
-use super::{series, TIME};
+use super::{series, Shown, TIME};
 use crate::plot::{Figure, Panel};
 
 /// The hook's position error to the glide path (cf. paper Fig. 14).
@@ -19,7 +19,7 @@ pub(super) fn figure(samples: &[Signals], title: &str) -> Figure {
             )
             .series(
                 "glide-path error",
-                series(samples, |s| s.glide_path_error_m),
+                series(samples, SignalId::GlidePathError, Shown::AsRegistered),
             )
             .reference_line("on the path", 0.0),
         )

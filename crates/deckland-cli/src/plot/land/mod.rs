@@ -14,7 +14,7 @@ mod wind;
 use deckland::environment::STEADY_WAKE_EXTENT_M;
 use deckland::experiments::ApproachRun;
 use deckland::scenario::Scenario;
-use deckland::simulation::Signals;
+use deckland::simulation::{SignalId, Signals};
 
 use crate::commands::land::outcome_text;
 use crate::plot::{Figure, Panel};
@@ -22,19 +22,31 @@ use crate::plot::{Figure, Panel};
 /// The x axis of the figures over time.
 const TIME: &str = "time (s)";
 
-/// Points (time, value) of one signal.
-pub(super) fn series(samples: &[Signals], value: impl Fn(&Signals) -> f64) -> Vec<(f64, f64)> {
-    samples.iter().map(|s| (s.time_s, value(s))).collect()
+/// The unit a plotted series shows its registered signal in.
+#[derive(Debug, Clone, Copy)]
+pub(super) enum Shown {
+    /// The signal's own SI unit (`simulation::SIGNALS`).
+    AsRegistered,
+    /// An angle (rad) in degrees.
+    Degrees,
+    /// A thousandth: newtons in kilonewtons.
+    Thousandths,
 }
 
-/// Points (time, value) of a signal where it applies.
-pub(super) fn series_where_applicable(
-    samples: &[Signals],
-    value: impl Fn(&Signals) -> Option<f64>,
-) -> Vec<(f64, f64)> {
+/// Points (time, value) of the registered signal `signal` where it applies (an optional
+/// signal, such as the glide path's height, only where it has a value).
+pub(super) fn series(samples: &[Signals], signal: SignalId, shown: Shown) -> Vec<(f64, f64)> {
     samples
         .iter()
-        .filter_map(|s| value(s).map(|v| (s.time_s, v)))
+        .filter_map(|s| {
+            let value = s.get(signal)?;
+            let value = match shown {
+                Shown::AsRegistered => value,
+                Shown::Degrees => value.to_degrees(),
+                Shown::Thousandths => value / 1000.0,
+            };
+            Some((s.time_s, value))
+        })
         .collect()
 }
 
@@ -48,7 +60,7 @@ pub(super) fn wake_onset(samples: &[Signals], scenario: &Scenario) -> Option<(f6
     let extent_m = wind.wake_extent_m.unwrap_or(STEADY_WAKE_EXTENT_M);
     samples
         .iter()
-        .find(|s| s.ship.distance_aft_of_pitch_centre_m(s.x_m) < extent_m)
+        .find(|s| s.distance_aft_m < extent_m)
         .map(|s| (s.time_s, extent_m))
 }
 

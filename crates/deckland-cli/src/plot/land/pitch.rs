@@ -1,8 +1,8 @@
 //! `pitch`: the pitch attitude and its command on approach (cf. paper Fig. 15).
 
-use deckland::simulation::Signals;
+use deckland::simulation::{SignalId, Signals};
 
-use super::{series, TIME};
+use super::{series, Shown, TIME};
 use crate::plot::{Figure, Panel};
 
 /// The pitch attitude and its command on approach (cf. paper Fig. 15).
@@ -15,8 +15,8 @@ pub(super) fn figure(samples: &[Signals], title: &str) -> Figure {
             Panel::new("Pitch attitude and command", TIME, "pitch θ (deg)")
                 .series(
                     "pitch command",
-                    series(samples, |s| s.theta_ref_rad.to_degrees()),
+                    series(samples, SignalId::ThetaRef, Shown::Degrees),
                 )
-                .series("pitch θ", series(samples, |s| s.theta_rad.to_degrees())),
+                .series("pitch θ", series(samples, SignalId::Theta, Shown::Degrees)),
         )
 }

@@ -1,10 +1,10 @@
 //! `wind`: the total wind at the aircraft in earth axes.
 
-use deckland::simulation::Signals;
+use deckland::simulation::{SignalId, Signals};
 
 use deckland::scenario::Scenario;
 
-use super::{mark_wake_onset, series, TIME};
+use super::{mark_wake_onset, series, Shown, TIME};
 use crate::plot::{Figure, Panel};
 
 /// The total wind at the aircraft in earth axes.
@@ -20,8 +20,11 @@ pub(super) fn figure(samples: &[Signals], scenario: &Scenario, title: &str) -> F
             )
             .series(
                 "x (positive forward; headwind negative)",
-                series(samples, |s| s.wind.x_mps),
+                series(samples, SignalId::WindX, Shown::AsRegistered),
             )
-            .series("z (positive down)", series(samples, |s| s.wind.z_mps)),
+            .series(
+                "z (positive down)",
+                series(samples, SignalId::WindZ, Shown::AsRegistered),
+            ),
         ))
 }
