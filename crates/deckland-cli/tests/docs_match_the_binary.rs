@@ -80,8 +80,19 @@ fn every_json_document_is_documented_key_for_key() {
     let mut linearize = json_keys(&stdout_of(&["linearize", "--json"]));
     // `trim` holds the trim document, documented with `deckland trim`.
     linearize.retain(|k| !trim.contains(k) || k == "trim");
+    let six_dof_trim = json_keys(&stdout_of(&["trim", "--model", "6dof", "--json"]));
+    let mut six_dof_linearize = json_keys(&stdout_of(&["linearize", "--model", "6dof", "--json"]));
+    six_dof_linearize.retain(|k| !six_dof_trim.contains(k) || k == "trim");
     let cases = [
         ("it prints one JSON document with", trim.clone()),
+        (
+            "`trim --model 6dof --json` prints one JSON document with",
+            six_dof_trim,
+        ),
+        (
+            "`linearize --model 6dof --json` adds to the trim document (under",
+            six_dof_linearize,
+        ),
         ("`--json` adds to the trim document (under", linearize),
         (
             "`--json` prints the summary:",

@@ -1,7 +1,7 @@
 //! `deckland linearize`: the paper's Eq. (14) linear model about a trim point, its
 //! eigenvalues and modes.
 
-use super::trim::{print_trim_table, TrimArgs};
+use super::trim::{print_trim_table, AircraftModel, TrimArgs};
 use anyhow::Result;
 use deckland::aircraft::TrimReport;
 use deckland::analysis::{
@@ -29,7 +29,9 @@ struct LinearizeReport {
     modes: Vec<Mode>,
 }
 
-fn rows<const R: usize, const C: usize>(m: &nalgebra::SMatrix<f64, R, C>) -> Vec<Vec<f64>> {
+pub(super) fn rows<const R: usize, const C: usize>(
+    m: &nalgebra::SMatrix<f64, R, C>,
+) -> Vec<Vec<f64>> {
     (0..R)
         .map(|i| (0..C).map(|j| m[(i, j)]).collect())
         .collect()
@@ -57,7 +59,7 @@ fn print_matrix<const R: usize, const C: usize>(
 
 /// `value` with `digits` decimals, and no minus sign on a value that rounds to zero
 /// ("0.000000", never "-0.000000").
-fn fixed(value: f64, digits: usize) -> String {
+pub(super) fn fixed(value: f64, digits: usize) -> String {
     let text = format!("{value:.digits$}");
     match text.strip_prefix('-') {
         Some(magnitude) if magnitude.chars().all(|c| c == '0' || c == '.') => magnitude.to_owned(),
@@ -130,6 +132,10 @@ fn print_table(
 
 /// Runs `deckland linearize`.
 pub fn run(args: &TrimArgs) -> Result<()> {
+    args.check_model_options()?;
+    if args.model == AircraftModel::SixDof {
+        return super::six_dof::run_linearize(args);
+    }
     let aircraft = args.aircraft();
     let point = args.trim(&aircraft)?;
     let model = linearize(&aircraft, &point);

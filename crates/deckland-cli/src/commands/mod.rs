@@ -10,5 +10,6 @@ pub mod reproduce;
 pub mod run;
 pub mod scenario;
 pub mod sink;
+pub mod six_dof;
 pub mod step;
 pub mod trim;

@@ -1,7 +1,7 @@
 //! `deckland trim`: steady straight flight at a given airspeed and flight-path angle.
 
 use anyhow::{bail, Context, Result};
-use clap::Args;
+use clap::{Args, ValueEnum};
 use deckland::aircraft::{AerodynamicConfiguration, Aircraft, ConfigurationName};
 use deckland::analysis::{trim, TrimError, TrimPoint, TrimRequest};
 
@@ -31,12 +31,63 @@ pub struct TrimArgs {
         default_value = "landing"
     )]
     pub configuration: ConfigurationName,
+    /// Aircraft model: the paper's longitudinal 3-DOF model, or the 6-DOF model with
+    /// the lateral-directional axes (docs/six-dof.md).
+    #[arg(long, value_enum, default_value = "3dof")]
+    pub model: AircraftModel,
+    /// Sideslip β (deg), positive with the relative wind from the right; 6-DOF only.
+    #[arg(
+        long = "sideslip",
+        value_name = "DEG",
+        default_value_t = 0.0,
+        allow_negative_numbers = true
+    )]
+    pub sideslip_deg: f64,
+    /// Steady crosswind W_y (m/s), positive blowing to the right (from the left); the
+    /// trim heading crabs into it. 6-DOF only.
+    #[arg(
+        long = "crosswind",
+        value_name = "M_S",
+        default_value_t = 0.0,
+        allow_negative_numbers = true
+    )]
+    pub crosswind_mps: f64,
     /// Print one JSON document on stdout instead of a table.
     #[arg(long)]
     pub json: bool,
 }
 
+/// The aircraft model `trim` and `linearize` work on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum AircraftModel {
+    /// The longitudinal model of the paper (u, w, q, θ).
+    #[value(name = "3dof")]
+    ThreeDof,
+    /// The rigid-body 6-DOF model with the lateral-directional axes.
+    #[value(name = "6dof")]
+    SixDof,
+}
+
 impl TrimArgs {
+    /// Refuses the lateral options with the 3-DOF model, which has no lateral axes.
+    pub fn check_model_options(&self) -> Result<()> {
+        if self.model == AircraftModel::ThreeDof {
+            if self.sideslip_deg != 0.0 {
+                bail!(
+                    "--sideslip {:?} needs --model 6dof: the 3-DOF model has no sideslip",
+                    self.sideslip_deg
+                );
+            }
+            if self.crosswind_mps != 0.0 {
+                bail!(
+                    "--crosswind {:?} needs --model 6dof: the 3-DOF model has no lateral wind",
+                    self.crosswind_mps
+                );
+            }
+        }
+        Ok(())
+    }
+
     /// The aircraft in the requested configuration.
     pub fn aircraft(&self) -> Aircraft {
         Aircraft::with_configuration(AerodynamicConfiguration::named(self.configuration))
@@ -109,6 +160,10 @@ pub fn print_trim_table(
 
 /// Runs `deckland trim`.
 pub fn run(args: &TrimArgs) -> Result<()> {
+    args.check_model_options()?;
+    if args.model == AircraftModel::SixDof {
+        return super::six_dof::run_trim(args);
+    }
     let aircraft = args.aircraft();
     let point = args.trim(&aircraft)?;
     if args.json {
