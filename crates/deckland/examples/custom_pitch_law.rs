@@ -9,7 +9,7 @@
 //! ([`PitchLawInputs`]: the pitch command, the measured attitude and rate, the trim), and
 //! the states' derivatives, which the simulation integrates with the aircraft (RK4,
 //! 1 ms). It also describes itself in its linear limit ([`LinearLaw`]), the form in which
-//! the design code (`control::pitch::design::assess_loop`: margins, noise, the rate
+//! the design code (`control::design::assess_loop`: margins, noise, the rate
 //! limit's limit cycle) assesses any law. A factory builds it for each run from the plant
 //! derivatives at that run's trim ([`PitchDesignContext`]).
 //!
@@ -41,7 +41,7 @@ struct FilteredPid {
     integral_per_s3: f64,
     derivative_per_s: f64,
     filter_s: f64,
-    dqdot_delevator_per_s2: f64,
+    control_power_per_s2: f64,
 }
 
 impl FilteredPid {
@@ -51,9 +51,9 @@ impl FilteredPid {
         Self {
             proportional_per_s2: omega_radps * omega_radps,
             integral_per_s3: 0.016 * omega_radps.powi(3),
-            derivative_per_s: 2.0 * zeta * omega_radps + context.plant.dqdot_dq_per_s,
+            derivative_per_s: 2.0 * zeta * omega_radps + context.plant.rate_damping_per_s,
             filter_s: 0.05,
-            dqdot_delevator_per_s2: context.plant.dqdot_delevator_per_s2,
+            control_power_per_s2: context.plant.control_power_per_s2,
         }
     }
 }
@@ -78,7 +78,7 @@ impl AxisLaw for FilteredPid {
         let error = inputs.theta_ref_rad - state[0];
         let equivalent_control = self.proportional_per_s2 * error + self.integral_per_s3 * state[1]
             - self.derivative_per_s * inputs.pitch_rate_measured_radps;
-        inputs.elevator_trim_rad + equivalent_control / self.dqdot_delevator_per_s2
+        inputs.elevator_trim_rad + equivalent_control / self.control_power_per_s2
     }
 
     fn derivative(&self, state: &[f64], inputs: &PitchLawInputs, rate: &mut [f64]) {
@@ -89,7 +89,7 @@ impl AxisLaw for FilteredPid {
     /// About trim, over the inputs [r, y, q, δ]: ẋ0 = (y − x0)/T, ẋ1 = r − x0,
     /// u = (K_P·(r − x0) + K_I·x1 − K_D·q)/M_δ; the third state is a placeholder.
     fn linear_law(&self) -> Option<LinearLaw> {
-        let (md, t) = (self.dqdot_delevator_per_s2, self.filter_s);
+        let (md, t) = (self.control_power_per_s2, self.filter_s);
         Some(LinearLaw {
             state_matrix: [[-1.0 / t, 0.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, -1.0]],
             input_matrix: [[0.0, 1.0 / t, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0], [0.0; 4]],

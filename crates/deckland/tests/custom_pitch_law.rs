@@ -11,10 +11,10 @@ use std::sync::atomic::AtomicBool;
 use std::sync::Arc;
 
 use deckland::aircraft::ElevatorActuatorParameters;
-use deckland::control::pitch::design::{assess_loop, PitchHardware, PitchSensorNoise};
+use deckland::control::design::{assess_loop, ActuatorKeys, AxisHardware, SensorNoise};
 use deckland::control::pitch::{
-    AxisLaw, ElevatorSaturation, LinearLaw, PidParameters, PitchControllerParameters,
-    PitchDesignContext, PitchLaw, PitchLawInputs, PitchPlantDerivatives,
+    AxisLaw, AxisPlantDerivatives, ElevatorSaturation, LinearLaw, PidParameters,
+    PitchControllerParameters, PitchDesignContext, PitchLaw, PitchLawInputs,
 };
 use deckland::experiments::{fly_approach, fly_approach_with_law};
 use deckland::monte_carlo::{run_campaign, CampaignSpec, ControllerVariant};
@@ -27,7 +27,7 @@ use deckland::simulation::{PitchLawFactory, Simulation};
 #[derive(Debug)]
 struct HandWrittenPid {
     gains: PidParameters,
-    dqdot_delevator_per_s2: f64,
+    control_power_per_s2: f64,
 }
 
 impl AxisLaw for HandWrittenPid {
@@ -45,12 +45,12 @@ impl AxisLaw for HandWrittenPid {
         let error = inputs.theta_ref_rad - inputs.theta_measured_rad;
         let u = self.gains.proportional_per_s2 * error + self.gains.integral_per_s3 * state[0]
             - self.gains.derivative_per_s * inputs.pitch_rate_measured_radps;
-        inputs.elevator_trim_rad + u / self.dqdot_delevator_per_s2
+        inputs.elevator_trim_rad + u / self.control_power_per_s2
     }
 
     fn derivative(&self, _state: &[f64], inputs: &PitchLawInputs, rate: &mut [f64]) {
         let error = inputs.theta_ref_rad - inputs.theta_measured_rad;
-        let drift = self.gains.integral_per_s3 * error / self.dqdot_delevator_per_s2;
+        let drift = self.gains.integral_per_s3 * error / self.control_power_per_s2;
         let frozen = match inputs.elevator_saturation {
             ElevatorSaturation::NotSaturated => false,
             ElevatorSaturation::AtLowerLimit => drift < 0.0,
@@ -62,7 +62,7 @@ impl AxisLaw for HandWrittenPid {
     /// Eq. 37 in its linear limit, written from the equations: ż = r − y,
     /// u = (K_P·(r − y) + K_I·z − K_D·q)/M_δ; the two unused states are placeholders.
     fn linear_law(&self) -> Option<LinearLaw> {
-        let md = self.dqdot_delevator_per_s2;
+        let md = self.control_power_per_s2;
         let g = &self.gains;
         Some(LinearLaw {
             state_matrix: [[0.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, -1.0]],
@@ -83,7 +83,7 @@ fn factory() -> Arc<PitchLawFactory> {
         |context: &PitchDesignContext| -> Result<Box<dyn PitchLaw>, ParameterError> {
             Ok(Box::new(HandWrittenPid {
                 gains: PidParameters::default(),
-                dqdot_delevator_per_s2: context.plant.dqdot_delevator_per_s2,
+                control_power_per_s2: context.plant.control_power_per_s2,
             }))
         },
     )
@@ -120,9 +120,9 @@ fn a_hand_written_pid_flies_bit_identical_to_the_registered_one() {
 #[test]
 fn the_design_code_assesses_a_user_law_like_the_registered_one() {
     let context = PitchDesignContext {
-        plant: PitchPlantDerivatives {
-            dqdot_dq_per_s: -0.1891,
-            dqdot_delevator_per_s2: -1.9675,
+        plant: AxisPlantDerivatives {
+            rate_damping_per_s: -0.1891,
+            control_power_per_s2: -1.9675,
         },
         actuator: ElevatorActuatorParameters::default(),
         pitch_noise: PitchNoiseParameters::default(),
@@ -130,21 +130,22 @@ fn the_design_code_assesses_a_user_law_like_the_registered_one() {
     };
     let own = HandWrittenPid {
         gains: PidParameters::default(),
-        dqdot_delevator_per_s2: context.plant.dqdot_delevator_per_s2,
+        control_power_per_s2: context.plant.control_power_per_s2,
     };
     let registered = PitchControllerParameters::Pid(PidParameters::default())
         .build(&context)
         .expect("valid");
     let (own_law, registered_law) = (own.linear_law(), registered.linear_law());
     assert_eq!(own_law, registered_law);
-    let hardware = PitchHardware {
+    let hardware = AxisHardware {
         actuator: context.actuator,
-        elevator_trim_rad: (-8.17f64).to_radians(),
+        actuator_keys: ActuatorKeys::ELEVATOR,
+        surface_trim_rad: (-8.17f64).to_radians(),
         plant: context.plant,
         coupling: None,
         control_delay_s: 1.5 / 80.0,
     };
-    let noise = PitchSensorNoise::from_parameters(&context.pitch_noise, 0.001);
+    let noise = SensorNoise::from_parameters(&context.pitch_noise, 0.001);
     let assessed = assess_loop(&hardware, &noise, &own_law.expect("linear"), 1.2);
     assert!(assessed.closed_loop_max_real_part < 0.0, "{assessed:?}");
     let margin = assessed.margins.phase_margin_deg.expect("a crossover");

@@ -10,8 +10,8 @@
 //! metric; the paper reports 1.11 s for the O-PD (Fig. 10).
 
 use deckland::control::pitch::{
-    AxisLaw, BuiltPitchLaw, ElevatorSaturation, ObserverPdParameters, PidParameters,
-    PitchControllerParameters, PitchDesignContext, PitchLawInputs, PitchPlantDerivatives,
+    AxisLaw, AxisPlantDerivatives, BuiltPitchLaw, ElevatorSaturation, ObserverPdParameters,
+    PidParameters, PitchControllerParameters, PitchDesignContext, PitchLawInputs,
 };
 use deckland::integration::{rk4_step, OdeSystem};
 use deckland::metrics::{step_response_metrics, StepResponseMetrics, StepResponseSpec};
@@ -19,9 +19,9 @@ use deckland::metrics::{step_response_metrics, StepResponseMetrics, StepResponse
 const DT: f64 = 1e-3;
 const THETA_TRIM: f64 = 7.1 * std::f64::consts::PI / 180.0;
 const ELEVATOR_TRIM: f64 = -8.2 * std::f64::consts::PI / 180.0;
-const PLANT: PitchPlantDerivatives = PitchPlantDerivatives {
-    dqdot_dq_per_s: -0.15,
-    dqdot_delevator_per_s2: -1.93,
+const PLANT: AxisPlantDerivatives = AxisPlantDerivatives {
+    rate_damping_per_s: -0.15,
+    control_power_per_s2: -1.93,
 };
 const ACTUATOR_FREQUENCY: f64 = 30.74;
 const ACTUATOR_DAMPING: f64 = 0.509;
@@ -133,8 +133,8 @@ impl OdeSystem<7> for PitchLoop {
     fn derivative(&self, t: f64, x: &[f64; 7]) -> [f64; 7] {
         let (elevator, inputs) = self.elevator_and_inputs(t, x);
         let [rate, acceleration] = self.actuator_derivative(x, &inputs);
-        let pitch_acceleration = PLANT.dqdot_dq_per_s * x[1]
-            + PLANT.dqdot_delevator_per_s2 * (elevator - ELEVATOR_TRIM)
+        let pitch_acceleration = PLANT.rate_damping_per_s * x[1]
+            + PLANT.control_power_per_s2 * (elevator - ELEVATOR_TRIM)
             + (self.disturbance)(t);
         let mut controller = [0.0; 3];
         let state = self.controller_state(x);

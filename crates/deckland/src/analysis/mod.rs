@@ -15,6 +15,6 @@ pub use margins::{cascade_margins, LoopMargins};
 
 /// Rate saturation of the elevator: the rate limiter's describing function and the
 /// limit cycles it can sustain in a loop (the pitch-law design uses it too).
-pub use crate::control::pitch::design::rate_limit as rate_saturation;
+pub use crate::control::design::rate_limit as rate_saturation;
 pub use modes::{identify_modes, Mode, ModeKind};
 pub use open_loop::{open_loop_step_responses, InputStep, OpenLoopError, OpenLoopSample};

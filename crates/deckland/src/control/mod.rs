@@ -8,6 +8,7 @@
 //! design code in one data form, [`LinearLaw`]; the pitch laws are its first instances.
 
 mod command_ramp;
+pub mod design;
 mod direct_lift;
 mod flight_path;
 mod guidance;

@@ -9,13 +9,13 @@ use super::deck_predictor::{BuiltDeckPredictor, DeckPredictor, DeckView};
 use super::flight_computer::FlightComputer;
 use super::outer_loops::{OuterLoops, WaveOffFlight};
 use crate::aircraft::{linearize, trim, Aircraft, LinearModel, TrimError, TrimPoint, TrimRequest};
-use crate::control::pitch::command_shaping::JerkLimitedStep;
-use crate::control::pitch::design::{
-    check_pitch_tuning, command_bounds, AngleOfAttackCoupling, PitchDesignRequest, PitchHardware,
-    PitchTuningProblem,
+use crate::control::design::{
+    check_tuning, command_bounds, ActuatorKeys, AngleOfAttackCoupling, AxisHardware, DesignRequest,
+    TuningProblem,
 };
+use crate::control::pitch::command_shaping::JerkLimitedStep;
 use crate::control::pitch::{
-    AxisLaw, BuiltPitchLaw, PitchDesignContext, PitchLaw, PitchLawInputs, PitchPlantDerivatives,
+    AxisLaw, AxisPlantDerivatives, BuiltPitchLaw, PitchDesignContext, PitchLaw, PitchLawInputs,
 };
 use crate::control::{CommandRamp, FlightPathGenerator, SpeedController};
 use crate::environment::{mean_wind, ShipMotion, ShipMotionState, Wind, WindModel};
@@ -144,7 +144,7 @@ fn outer_loops(
 
 /// A pitch step commanded as `jerk_limited` gets its trajectory: the fastest rest-to-rest
 /// pitch motion within the jerk and acceleration the elevator can give (a share η of its
-/// rate limit and κ of its travel to the nearer stop, `control::pitch::design`).
+/// rate limit and κ of its travel to the nearer stop, `control::design`).
 fn shape_pitch_step(
     outer: OuterLoops,
     scenario: &Scenario,
@@ -166,14 +166,15 @@ fn shape_pitch_step(
     else {
         return Ok(outer);
     };
-    let hardware = PitchHardware {
+    let hardware = AxisHardware {
         actuator: context.actuator,
-        elevator_trim_rad,
+        actuator_keys: ActuatorKeys::ELEVATOR,
+        surface_trim_rad: elevator_trim_rad,
         plant: context.plant,
         coupling: None,
         control_delay_s: 0.0,
     };
-    let request = PitchDesignRequest::default();
+    let request = DesignRequest::default();
     let (jerk, acceleration, _) = command_bounds(
         &hardware,
         request.command_rate_fraction,
@@ -199,7 +200,7 @@ fn shape_pitch_step(
     })
 }
 
-/// Refuses a registered pitch law that the hardware cannot fly ([`check_pitch_tuning`]):
+/// Refuses a registered pitch law that the hardware cannot fly ([`check_tuning`]):
 /// unstable with the actuator and the flight computer's delay, or open to a rate-limit
 /// oscillation of the stabilator. The error names the parameter that sets the loop's
 /// speed and the hardware that limits it. Nothing to check on the paper's hardware (no
@@ -219,9 +220,10 @@ fn refuse_infeasible_pitch_tuning(
     let Some(linear) = scenario.control.pitch.linear_law(context.plant) else {
         return Ok(());
     };
-    let hardware = PitchHardware {
+    let hardware = AxisHardware {
         actuator: context.actuator,
-        elevator_trim_rad,
+        actuator_keys: ActuatorKeys::ELEVATOR,
+        surface_trim_rad: elevator_trim_rad,
         plant: context.plant,
         coupling: Some(AngleOfAttackCoupling {
             dalphadot_dalpha_per_s: model.a[(2, 2)],
@@ -229,10 +231,10 @@ fn refuse_infeasible_pitch_tuning(
             dqdot_dalpha_per_s2: model.pitch_stiffness_per_s2(),
         }),
         // As the design assesses a sampled computer: half a frame for the zero-order
-        // hold and one frame for the reading and the computing (control::pitch::design).
+        // hold and one frame for the reading and the computing (control::design).
         control_delay_s: computer.map_or(0.0, |rate| 1.5 / rate),
     };
-    let ratio = PitchDesignRequest::default().min_limit_cycle_travel_ratio;
+    let ratio = DesignRequest::default().min_limit_cycle_travel_ratio;
     let hardware_named = match (rate_limit, computer) {
         (Some(rate), Some(hz)) => format!(
             "aircraft.elevator_actuator.rate_limit_degps = {rate} and \
@@ -242,9 +244,9 @@ fn refuse_infeasible_pitch_tuning(
         (None, Some(hz)) => format!("control.flight_computer_rate_hz = {hz}"),
         (None, None) => String::new(),
     };
-    let why = match check_pitch_tuning(&hardware, &linear.law, ratio) {
+    let why = match check_tuning(&hardware, &linear.law, ratio) {
         Ok(()) => return Ok(()),
-        Err(PitchTuningProblem::Unstable {
+        Err(TuningProblem::Unstable {
             phase_margin_deg: Some(pm),
             crossover_radps,
         }) => format!(
@@ -253,11 +255,11 @@ fn refuse_infeasible_pitch_tuning(
              computer's delay included), so it diverges",
             crossover_radps.unwrap_or(f64::NAN)
         ),
-        Err(PitchTuningProblem::Unstable { .. }) => format!(
+        Err(TuningProblem::Unstable { .. }) => format!(
             "a pitch loop stable on this hardware: with {hardware_named} the linear loop \
              has an unstable eigenvalue"
         ),
-        Err(PitchTuningProblem::RateLimitOscillation {
+        Err(TuningProblem::RateLimitOscillation {
             amplitude_rad,
             travel_rad,
         }) => format!(
@@ -334,9 +336,9 @@ pub(crate) fn build(scenario: &Scenario, user: UserParts<'_>) -> Result<Setup, S
     )?;
     let model = linearize(&aircraft, &trim_point);
     let context = PitchDesignContext {
-        plant: PitchPlantDerivatives {
-            dqdot_dq_per_s: model.pitch_damping_per_s(),
-            dqdot_delevator_per_s2: model.elevator_effectiveness_per_s2(),
+        plant: AxisPlantDerivatives {
+            rate_damping_per_s: model.pitch_damping_per_s(),
+            control_power_per_s2: model.elevator_effectiveness_per_s2(),
         },
         actuator: section.elevator_actuator,
         pitch_noise: env.pitch_noise,

@@ -6,8 +6,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::design::{LinearisedLaw, PitchPlantDerivatives};
 use crate::aircraft::ElevatorActuatorParameters;
+use crate::control::design::{AxisPlantDerivatives, LinearisedLaw};
 use crate::control::AxisLaw;
 use crate::parameters::ParameterError;
 use crate::sensors::PitchNoiseParameters;
@@ -87,7 +87,7 @@ impl<T: AxisLaw<Inputs = PitchLawInputs> + ?Sized> PitchLaw for T {}
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PitchDesignContext {
     /// The pitch-plant derivatives at the trim point.
-    pub plant: PitchPlantDerivatives,
+    pub plant: AxisPlantDerivatives,
     /// The elevator actuator the law drives.
     pub actuator: ElevatorActuatorParameters,
     /// The pitch-attitude sensor's noise.
@@ -119,8 +119,8 @@ pub trait PitchLawDesign: Default {
 
     /// The law in its linear limit on the reduced pitch loop, with the parameter that sets
     /// its speed, for the check that the stabilator's rate limit can follow it
-    /// ([`super::design::check_pitch_tuning`]); `None` (the default): not checked.
-    fn linear_law(&self, _plant: PitchPlantDerivatives) -> Option<LinearisedLaw> {
+    /// ([`crate::control::design::check_tuning`]); `None` (the default): not checked.
+    fn linear_law(&self, _plant: AxisPlantDerivatives) -> Option<LinearisedLaw> {
         None
     }
 }
@@ -210,8 +210,8 @@ macro_rules! pitch_laws {
             /// that is not checked).
             pub fn linear_law(
                 &self,
-                plant: $crate::control::pitch::PitchPlantDerivatives,
-            ) -> Option<$crate::control::pitch::design::LinearisedLaw> {
+                plant: $crate::control::pitch::AxisPlantDerivatives,
+            ) -> Option<$crate::control::design::LinearisedLaw> {
                 match self {
                     $( $(#[cfg($cfg)])? Self::$variant(p) => $crate::control::pitch::PitchLawDesign::linear_law(p, plant), )+
                 }

@@ -6,7 +6,7 @@
 //! `examples/custom_pitch_law.rs`). A law is plant-independent: it is designed from the
 //! pitch-plant derivatives at trim and the hardware ([`PitchDesignContext`]), reads the
 //! signals of one instant and describes itself in its linear limit ([`LinearLaw`]), from
-//! which the axis-generic [`design`] code (loop model, margins, rate-limit check) assesses
+//! which the axis-generic [`crate::control::design`] code (loop model, margins, rate-limit check) assesses
 //! it without knowing which law it is.
 //!
 //! **Adding a law** to the scenario file takes one file beside this one (its parameters
@@ -18,12 +18,13 @@
 //! hand a factory to `Simulation::with_pitch_law` or a campaign's
 //! `ControllerVariant::custom`.
 
-pub mod command_shaping;
-pub mod design;
 mod law;
 
+/// The command shaping of a step, at its former path (it lives in the axis-generic
+/// [`crate::control::design`]).
+pub use crate::control::design::command_shaping;
+pub use crate::control::design::AxisPlantDerivatives;
 pub use crate::control::law::{AxisLaw, LinearLaw};
-pub use design::PitchPlantDerivatives;
 pub use law::{
     ElevatorSaturation, LawTuning, PitchDesignContext, PitchLaw, PitchLawDesign, PitchLawInputs,
 };
@@ -69,9 +70,9 @@ impl Default for PitchControllerParameters {
 mod tests {
     use super::*;
 
-    const PLANT: PitchPlantDerivatives = PitchPlantDerivatives {
-        dqdot_dq_per_s: -0.15,
-        dqdot_delevator_per_s2: -1.93,
+    const PLANT: AxisPlantDerivatives = AxisPlantDerivatives {
+        rate_damping_per_s: -0.15,
+        control_power_per_s2: -1.93,
     };
 
     fn context() -> PitchDesignContext {

@@ -12,7 +12,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::design::{LinearisedLaw, PitchPlantDerivatives};
+use crate::control::design::{LinearisedLaw, AxisPlantDerivatives};
 use super::law::{ElevatorSaturation, PitchDesignContext, PitchLawDesign, PitchLawInputs, SECTION};
 use crate::control::{AxisLaw, LinearLaw};
 use crate::parameters::{Bounds, ParameterError};
@@ -85,7 +85,7 @@ impl PitchLawDesign for PidParameters {
         PidParameters::paper()
     }
 
-    fn linear_law(&self, plant: PitchPlantDerivatives) -> Option<LinearisedLaw> {
+    fn linear_law(&self, plant: AxisPlantDerivatives) -> Option<LinearisedLaw> {
         Some(LinearisedLaw {
             law: linear_pid(self, plant),
             speed_key: "proportional_per_s2",
@@ -102,8 +102,8 @@ impl PitchLawDesign for PidParameters {
 /// ```text
 /// ż = r − y;  u = (K_P·(r − y) + K_I·z − K_D·q)/M_δ
 /// ```
-pub fn linear_pid(parameters: &PidParameters, plant: PitchPlantDerivatives) -> LinearLaw {
-    let md = plant.dqdot_delevator_per_s2;
+pub fn linear_pid(parameters: &PidParameters, plant: AxisPlantDerivatives) -> LinearLaw {
+    let md = plant.control_power_per_s2;
     let (kp, ki, kd) = (
         parameters.proportional_per_s2,
         parameters.integral_per_s3,
@@ -131,14 +131,14 @@ pub struct PidState {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PidController {
     parameters: PidParameters,
-    plant: PitchPlantDerivatives,
+    plant: AxisPlantDerivatives,
 }
 
 impl PidController {
     /// Builds the controller after validating gains and plant derivatives.
     pub fn new(
         parameters: &PidParameters,
-        plant: PitchPlantDerivatives,
+        plant: AxisPlantDerivatives,
     ) -> Result<Self, ParameterError> {
         parameters.validate(SECTION)?;
         plant.validate()?;
@@ -154,7 +154,7 @@ impl PidController {
     }
 
     /// The plant derivatives the controller was built for.
-    pub fn plant(&self) -> &PitchPlantDerivatives {
+    pub fn plant(&self) -> &AxisPlantDerivatives {
         &self.plant
     }
 
@@ -171,13 +171,13 @@ impl PidController {
         // The same feed-forward of a shaped reference as the O-PD's (zero for a plain
         // command, which leaves the paper's Eq. 37).
         let feed_forward = inputs.theta_ref_acceleration_radps2
-            - self.plant.dqdot_dq_per_s * inputs.theta_ref_rate_radps;
+            - self.plant.rate_damping_per_s * inputs.theta_ref_rate_radps;
         let equivalent_control = self.parameters.proportional_per_s2 * pitch_error_rad
             + self.parameters.integral_per_s3 * state.pitch_error_integral_rad_s
             + self.parameters.derivative_per_s
                 * (inputs.theta_ref_rate_radps - inputs.pitch_rate_measured_radps)
             + feed_forward;
-        inputs.elevator_trim_rad + equivalent_control / self.plant.dqdot_delevator_per_s2
+        inputs.elevator_trim_rad + equivalent_control / self.plant.control_power_per_s2
     }
 
     /// Integrator derivative: e_θ (rad), or 0 while anti-windup freezes it.
@@ -202,7 +202,7 @@ impl PidController {
         // Rate of change of the integral term's elevator contribution, up to a positive
         // factor: K_I·e/(∂q̇/∂δe).
         let command_drift =
-            self.parameters.integral_per_s3 * pitch_error_rad / self.plant.dqdot_delevator_per_s2;
+            self.parameters.integral_per_s3 * pitch_error_rad / self.plant.control_power_per_s2;
         match saturation {
             ElevatorSaturation::NotSaturated => false,
             ElevatorSaturation::AtLowerLimit => command_drift < 0.0,
@@ -247,9 +247,9 @@ impl AxisLaw for PidController {
 mod tests {
     use super::*;
 
-    const PLANT: PitchPlantDerivatives = PitchPlantDerivatives {
-        dqdot_dq_per_s: -0.15,
-        dqdot_delevator_per_s2: -1.93,
+    const PLANT: AxisPlantDerivatives = AxisPlantDerivatives {
+        rate_damping_per_s: -0.15,
+        control_power_per_s2: -1.93,
     };
 
     fn controller(anti_windup: bool) -> PidController {

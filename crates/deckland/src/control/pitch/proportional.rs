@@ -8,7 +8,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::design::{LinearisedLaw, PitchPlantDerivatives};
+use crate::control::design::{LinearisedLaw, AxisPlantDerivatives};
 use super::{AxisLaw, LinearLaw, PitchDesignContext, PitchLawDesign, PitchLawInputs};
 use crate::parameters::{Bounds, ParameterError};
 
@@ -51,7 +51,7 @@ impl PitchLawDesign for ProportionalParameters {
         })
     }
 
-    fn linear_law(&self, plant: PitchPlantDerivatives) -> Option<LinearisedLaw> {
+    fn linear_law(&self, plant: AxisPlantDerivatives) -> Option<LinearisedLaw> {
         Some(LinearisedLaw {
             law: linear(self, plant),
             speed_key: "proportional_per_s2",
@@ -62,8 +62,8 @@ impl PitchLawDesign for ProportionalParameters {
 }
 
 /// u = (K_P·(r − y) − K_D·q)/M_δ, no states.
-fn linear(gains: &ProportionalParameters, plant: PitchPlantDerivatives) -> LinearLaw {
-    let md = plant.dqdot_delevator_per_s2;
+fn linear(gains: &ProportionalParameters, plant: AxisPlantDerivatives) -> LinearLaw {
+    let md = plant.control_power_per_s2;
     let mut law = LinearLaw::without_states();
     law.output_inputs[LinearLaw::COMMAND] = gains.proportional_per_s2 / md;
     law.output_inputs[LinearLaw::MEASURED_ANGLE] = -gains.proportional_per_s2 / md;
@@ -75,7 +75,7 @@ fn linear(gains: &ProportionalParameters, plant: PitchPlantDerivatives) -> Linea
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ProportionalLaw {
     gains: ProportionalParameters,
-    plant: PitchPlantDerivatives,
+    plant: AxisPlantDerivatives,
 }
 
 impl AxisLaw for ProportionalLaw {
@@ -94,7 +94,7 @@ impl AxisLaw for ProportionalLaw {
             * (inputs.theta_ref_rad - inputs.theta_measured_rad)
             + self.gains.derivative_per_s
                 * (inputs.theta_ref_rate_radps - inputs.pitch_rate_measured_radps);
-        inputs.elevator_trim_rad + control / self.plant.dqdot_delevator_per_s2
+        inputs.elevator_trim_rad + control / self.plant.control_power_per_s2
     }
 
     fn derivative(&self, _state: &[f64], _inputs: &PitchLawInputs, _rate: &mut [f64]) {}

@@ -1,7 +1,7 @@
 //! The O-PD's design procedure for the real stabilator: gains, observer bandwidth and
 //! fed-back attitude chosen from the elevator's rate and travel, the sensor noise and the
 //! loop margins with the actuator in the loop (docs/stabilator-design.md; docs/model.md
-//! §2.6, §3.3, §4–5). It uses the law-agnostic design code ([`crate::control::pitch::design`])
+//! §2.6, §3.3, §4–5). It uses the law-agnostic design code ([`crate::control::design`])
 //! on the O-PD's linear form ([`super::linear_observer_pd`]).
 //!
 //! The paper's rule (Eq. 31–34) picks K_P, K_D from a settling time alone and ignores the
@@ -28,12 +28,12 @@
 //!    failed for the candidate closest to meeting all of them.
 
 use super::{ObserverPdGains, ObserverPdParameters, PitchFeedback};
-use crate::control::pitch::command_shaping::JerkLimitedStep;
+use crate::control::design::command_shaping::JerkLimitedStep;
 use crate::control::LinearLaw;
-use crate::control::pitch::design::{
+use crate::control::design::{
     assess_loop, check_request, design_command, nearer_stop_travel_rad, shortfalls,
-    LoopAssessment, PitchDesignError, PitchDesignRequest, PitchHardware, PitchPlantDerivatives,
-    PitchSensorNoise,
+    LoopAssessment, DesignError, DesignRequest, AxisHardware, AxisPlantDerivatives,
+    SensorNoise,
 };
 use crate::estimation::ObserverParameters;
 
@@ -52,9 +52,9 @@ pub fn linear_observer_pd(
     gains: &ObserverPdGains,
     observer: &ObserverParameters,
     feedback: PitchFeedback,
-    plant: PitchPlantDerivatives,
+    plant: AxisPlantDerivatives,
 ) -> LinearLaw {
-    let (mq, md) = (plant.dqdot_dq_per_s, plant.dqdot_delevator_per_s2);
+    let (mq, md) = (plant.rate_damping_per_s, plant.control_power_per_s2);
     let eps = observer.epsilon;
     let betas = [
         observer.k3 / eps,
@@ -112,15 +112,15 @@ pub struct FeedbackAssessment {
 /// Assesses one O-PD feedback on the reduced linear loop; `None` when its gains cannot be
 /// designed (a non-finite gain).
 pub fn assess_feedback(
-    hardware: &PitchHardware,
-    noise: &PitchSensorNoise,
+    hardware: &AxisHardware,
+    noise: &SensorNoise,
     parameters: &ObserverPdParameters,
     outer_loop_crossover_radps: f64,
 ) -> Option<FeedbackAssessment> {
     let gains = ObserverPdGains::design(
         parameters.settling_time_s,
         parameters.damping_ratio,
-        hardware.plant.dqdot_dq_per_s,
+        hardware.plant.rate_damping_per_s,
     )
     .ok()?;
     let law = linear_observer_pd(
@@ -145,10 +145,10 @@ const EPSILONS: [f64; 7] = [0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.5];
 
 /// Designs the O-PD for `hardware` and `noise` to meet `request` (module docs).
 pub fn design_observer_pd(
-    hardware: &PitchHardware,
-    noise: &PitchSensorNoise,
-    request: &PitchDesignRequest,
-) -> Result<PitchDesign, PitchDesignError> {
+    hardware: &AxisHardware,
+    noise: &SensorNoise,
+    request: &DesignRequest,
+) -> Result<PitchDesign, DesignError> {
     check_request(hardware, request)?;
     let (command, command_settling_time_s) = design_command(hardware, request)?;
     let rate_limit_radps = hardware
@@ -191,7 +191,7 @@ pub fn design_observer_pd(
                 if total == 0.0 {
                     // Fastest first (T_2% dominates), then quietest.
                     let score = settling_time_s * 1e3
-                        + candidate.assessment.noise.elevator_rate_rms_radps;
+                        + candidate.assessment.noise.surface_rate_rms_radps;
                     if best.is_none_or(|(s, _)| score < s) {
                         best = Some((score, candidate));
                     }
@@ -209,7 +209,7 @@ pub fn design_observer_pd(
         });
     }
     let Some((_, candidate)) = closest else {
-        return Err(PitchDesignError::NoFeasibleFeedback {
+        return Err(DesignError::NoFeasibleFeedback {
             limiting: "closed-loop stability",
             best: f64::NAN,
             required: 0.0,
@@ -223,7 +223,7 @@ pub fn design_observer_pd(
     )
         .into_iter()
         .fold(("", 0.0, 0.0, -1.0), |w, g| if g.3 > w.3 { g } else { w });
-    Err(PitchDesignError::NoFeasibleFeedback {
+    Err(DesignError::NoFeasibleFeedback {
         limiting: worst.0,
         best: worst.1,
         required: worst.2,

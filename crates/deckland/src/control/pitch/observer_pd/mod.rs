@@ -13,7 +13,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::design::{LinearisedLaw, PitchPlantDerivatives};
+use crate::control::design::{LinearisedLaw, AxisPlantDerivatives};
 use super::law::{PitchDesignContext, PitchLawDesign, PitchLawInputs, SECTION};
 use crate::control::{AxisLaw, LinearLaw};
 use crate::estimation::{AugmentedObserver, ObserverParameters, ObserverState};
@@ -121,9 +121,9 @@ impl PitchLawDesign for ObserverPdParameters {
         ObserverPdParameters::paper()
     }
 
-    fn linear_law(&self, plant: PitchPlantDerivatives) -> Option<LinearisedLaw> {
+    fn linear_law(&self, plant: AxisPlantDerivatives) -> Option<LinearisedLaw> {
         let gains =
-            ObserverPdGains::design(self.settling_time_s, self.damping_ratio, plant.dqdot_dq_per_s)
+            ObserverPdGains::design(self.settling_time_s, self.damping_ratio, plant.rate_damping_per_s)
                 .ok()?;
         Some(LinearisedLaw {
             law: linear_observer_pd(&gains, &self.observer, self.pitch_feedback, plant),
@@ -151,12 +151,12 @@ impl ObserverPdGains {
     pub fn design(
         settling_time_s: f64,
         damping_ratio: f64,
-        dqdot_dq_per_s: f64,
+        rate_damping_per_s: f64,
     ) -> Result<Self, ParameterError> {
         let natural_frequency_radps = 4.0 / (settling_time_s * damping_ratio);
         let gains = Self {
             proportional_per_s2: natural_frequency_radps * natural_frequency_radps,
-            derivative_per_s: 2.0 * damping_ratio * natural_frequency_radps + dqdot_dq_per_s,
+            derivative_per_s: 2.0 * damping_ratio * natural_frequency_radps + rate_damping_per_s,
         };
         gains.validate()?;
         Ok(gains)
@@ -186,7 +186,7 @@ impl ObserverPdGains {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ObserverPdController {
     gains: ObserverPdGains,
-    plant: PitchPlantDerivatives,
+    plant: AxisPlantDerivatives,
     observer: AugmentedObserver,
     pitch_feedback: PitchFeedback,
 }
@@ -196,14 +196,14 @@ impl ObserverPdController {
     /// derivatives, and builds the observer.
     pub fn new(
         parameters: &ObserverPdParameters,
-        plant: PitchPlantDerivatives,
+        plant: AxisPlantDerivatives,
     ) -> Result<Self, ParameterError> {
         parameters.validate(SECTION)?;
         plant.validate()?;
         let gains = ObserverPdGains::design(
             parameters.settling_time_s,
             parameters.damping_ratio,
-            plant.dqdot_dq_per_s,
+            plant.rate_damping_per_s,
         )?;
         Self::with_gains(gains, parameters.observer, parameters.pitch_feedback, plant)
     }
@@ -213,7 +213,7 @@ impl ObserverPdController {
         gains: ObserverPdGains,
         observer: ObserverParameters,
         pitch_feedback: PitchFeedback,
-        plant: PitchPlantDerivatives,
+        plant: AxisPlantDerivatives,
     ) -> Result<Self, ParameterError> {
         plant.validate()?;
         gains.validate()?;
@@ -231,7 +231,7 @@ impl ObserverPdController {
     }
 
     /// The plant derivatives the controller was built for.
-    pub fn plant(&self) -> &PitchPlantDerivatives {
+    pub fn plant(&self) -> &AxisPlantDerivatives {
         &self.plant
     }
 
@@ -263,12 +263,12 @@ impl ObserverPdController {
         let pitch_error_rate_radps = inputs.theta_ref_rate_radps - state.x2;
         // Feed-forward of a shaped reference: q̇_r − M_q·q_r (zero for a plain command).
         let feed_forward = inputs.theta_ref_acceleration_radps2
-            - self.plant.dqdot_dq_per_s * inputs.theta_ref_rate_radps;
+            - self.plant.rate_damping_per_s * inputs.theta_ref_rate_radps;
         let equivalent_control = self.gains.proportional_per_s2 * pitch_error_rad
             + self.gains.derivative_per_s * pitch_error_rate_radps
             + feed_forward;
         inputs.elevator_trim_rad
-            + (equivalent_control - state.x3) / self.plant.dqdot_delevator_per_s2
+            + (equivalent_control - state.x3) / self.plant.control_power_per_s2
     }
 
     /// Observer derivative (docs/model.md §4) with y = θ_m − θ* and
@@ -280,8 +280,8 @@ impl ObserverPdController {
         // time, x1 − age·x2: the same as the measurement brought forward by age·x2.
         let measurement = inputs.theta_measured_rad - inputs.theta_trim_rad
             + inputs.measurement_age_s * state.x2;
-        let known_input = self.plant.dqdot_dq_per_s * state.x2
-            + self.plant.dqdot_delevator_per_s2
+        let known_input = self.plant.rate_damping_per_s * state.x2
+            + self.plant.control_power_per_s2
                 * (inputs.elevator_actual_rad - inputs.elevator_trim_rad);
         self.observer.derivative(state, measurement, known_input)
     }
@@ -352,9 +352,9 @@ impl AxisLaw for ObserverPdController {
 mod tests {
     use super::*;
 
-    const PAPER_PLANT: PitchPlantDerivatives = PitchPlantDerivatives {
-        dqdot_dq_per_s: -0.15,
-        dqdot_delevator_per_s2: -1.93,
+    const PAPER_PLANT: AxisPlantDerivatives = AxisPlantDerivatives {
+        rate_damping_per_s: -0.15,
+        control_power_per_s2: -1.93,
     };
 
     /// Reference: paper §4.2.2 prints K_Pθ = 88.89 and K_Dθ = 26.5186 for T_2% = 0.3 s,
@@ -455,12 +455,12 @@ mod tests {
 
     #[test]
     fn zero_elevator_effectiveness_is_rejected() {
-        let plant = PitchPlantDerivatives {
-            dqdot_delevator_per_s2: 0.0,
+        let plant = AxisPlantDerivatives {
+            control_power_per_s2: 0.0,
             ..PAPER_PLANT
         };
         let error = ObserverPdController::new(&ObserverPdParameters::default(), plant)
             .expect_err("zero effectiveness");
-        assert!(error.path.ends_with("dqdot_delevator_per_s2"), "{error}");
+        assert!(error.path.ends_with("control_power_per_s2"), "{error}");
     }
 }

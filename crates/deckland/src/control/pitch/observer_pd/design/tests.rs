@@ -4,37 +4,37 @@
 use nalgebra::Complex;
 
 use super::*;
-use crate::control::pitch::design::loop_model::{LoopInput, LoopOutput, PitchLoopModel};
-use crate::control::pitch::design::{
-    check_pitch_tuning, LinearActuator, PitchPlantDerivatives,
-    PitchTuningProblem,
+use crate::control::design::loop_model::{LoopInput, LoopOutput, AxisLoopModel};
+use crate::control::design::{
+    check_tuning, LinearActuator, AxisPlantDerivatives,
+    TuningProblem,
 };
 use crate::control::pitch::pid::{linear_pid, PidParameters};
 use crate::control::LinearLaw;
 
-const PLANT: PitchPlantDerivatives = PitchPlantDerivatives {
-    dqdot_dq_per_s: -0.1891,
-    dqdot_delevator_per_s2: -1.9675,
+const PLANT: AxisPlantDerivatives = AxisPlantDerivatives {
+    rate_damping_per_s: -0.1891,
+    control_power_per_s2: -1.9675,
 };
 const ACTUATOR: LinearActuator = LinearActuator {
     natural_frequency_radps: 30.74,
     damping_ratio: 0.509,
 };
 
-use crate::control::pitch::design::tests::{hardware, noise};
+use crate::control::design::tests::{hardware, noise};
 
 /// With a very fast observer the O-PD tends to its ideal form: L(s) = (K_P + K_D s)·
 /// A(s)/(s(s − M_q)), A the actuator. At ω = 10 rad/s with K_P = 16, K_D = 7.81:
 /// hand-computed L = (16 + 78.1j)·A(10j)/(10j·(10j + 0.1891)).
 #[test]
 fn fast_observer_gives_the_ideal_pd_loop() {
-    let gains = ObserverPdGains::design(1.0, 1.0, PLANT.dqdot_dq_per_s).expect("valid");
+    let gains = ObserverPdGains::design(1.0, 1.0, PLANT.rate_damping_per_s).expect("valid");
     let observer = ObserverParameters {
         epsilon: 0.0005,
         ..ObserverParameters::default()
     };
     let law = linear_observer_pd(&gains, &observer, PitchFeedback::Measured, PLANT);
-    let model = PitchLoopModel::new(PLANT, None, ACTUATOR, &law);
+    let model = AxisLoopModel::new(PLANT, None, ACTUATOR, &law);
     let s = Complex::new(0.0, 10.0);
     let wa2 = 30.74 * 30.74;
     let actuator = wa2 / (s * s + 2.0 * 0.509 * 30.74 * s + wa2);
@@ -51,7 +51,7 @@ fn fast_observer_gives_the_ideal_pd_loop() {
 /// closed loop is stable.
 #[test]
 fn both_laws_track_slow_commands() {
-    let gains = ObserverPdGains::design(1.0, 1.0, PLANT.dqdot_dq_per_s).expect("valid");
+    let gains = ObserverPdGains::design(1.0, 1.0, PLANT.rate_damping_per_s).expect("valid");
     let observer = ObserverParameters {
         epsilon: 0.1,
         ..ObserverParameters::default()
@@ -61,9 +61,9 @@ fn both_laws_track_slow_commands() {
         linear_pid(&PidParameters::default(), PLANT),
     ];
     for law in laws {
-        let model = PitchLoopModel::new(PLANT, None, ACTUATOR, &law);
+        let model = AxisLoopModel::new(PLANT, None, ACTUATOR, &law);
         assert!(model.closed_loop_max_real_part() < 0.0, "{law:?}");
-        let t = model.closed_loop(LoopInput::Command, LoopOutput::Pitch, 1e-3);
+        let t = model.closed_loop(LoopInput::Command, LoopOutput::Angle, 1e-3);
         assert!((t - 1.0).norm() < 1e-2, "{law:?}: {t}");
     }
 }
@@ -75,14 +75,14 @@ fn default_design_meets_its_targets() {
     let design = design_observer_pd(
         &hardware(Some(40.0)),
         &noise(),
-        &PitchDesignRequest::default(),
+        &DesignRequest::default(),
     )
     .expect("feasible");
     let f = &design.feedback.assessment;
     assert!(f.margins.phase_margin_deg.expect("pm") >= 45.0, "{f:?}");
     assert!(f.margins.gain_margin_db.expect("gm") >= 6.0, "{f:?}");
     assert!(
-        f.noise.elevator_rate_rms_radps <= 0.25 * 40f64.to_radians(),
+        f.noise.surface_rate_rms_radps <= 0.25 * 40f64.to_radians(),
         "{f:?}"
     );
     let travel = nearer_stop_travel_rad(&hardware(Some(40.0)));
@@ -99,9 +99,9 @@ fn default_design_meets_its_targets() {
 /// requirement; an impossible gain margin is named as the limit.
 #[test]
 fn unmeetable_requests_name_the_limiting_requirement() {
-    let request = PitchDesignRequest {
+    let request = DesignRequest {
         min_gain_margin_db: 40.0,
-        ..PitchDesignRequest::default()
+        ..DesignRequest::default()
     };
     let error = design_observer_pd(&hardware(Some(40.0)), &noise(), &request).expect_err("40 dB");
     assert!(error.to_string().contains("min_gain_margin_db"), "{error}");
@@ -115,16 +115,16 @@ fn unmeetable_requests_name_the_limiting_requirement() {
         "{assessed:?}"
     );
     assert!(
-        assessed.noise.elevator_rate_rms_radps > 40f64.to_radians(),
+        assessed.noise.surface_rate_rms_radps > 40f64.to_radians(),
         "{assessed:?}"
     );
 }
 
 #[test]
 fn invalid_requests_are_named() {
-    let request = PitchDesignRequest {
+    let request = DesignRequest {
         design_step_deg: f64::NAN,
-        ..PitchDesignRequest::default()
+        ..DesignRequest::default()
     };
     let error = design_observer_pd(&hardware(Some(40.0)), &noise(), &request).expect_err("NaN");
     assert!(error.to_string().contains("design_step_deg"), "{error}");
@@ -137,7 +137,7 @@ fn opd_law(
     feedback: PitchFeedback,
 ) -> LinearLaw {
     let plant = hardware(None).plant;
-    let gains = ObserverPdGains::design(settling_time_s, damping_ratio, plant.dqdot_dq_per_s)
+    let gains = ObserverPdGains::design(settling_time_s, damping_ratio, plant.rate_damping_per_s)
         .expect("valid");
     let observer = ObserverParameters {
         epsilon,
@@ -158,22 +158,22 @@ fn opd_law(
 fn the_check_refuses_the_paper_gains_on_the_real_stabilator_and_passes_the_design() {
     let paper = opd_law(0.3, 2f64.sqrt(), 0.03, PitchFeedback::Measured);
     let continuous = hardware(Some(40.0));
-    let Err(PitchTuningProblem::RateLimitOscillation {
+    let Err(TuningProblem::RateLimitOscillation {
         amplitude_rad,
         travel_rad,
-    }) = check_pitch_tuning(&continuous, &paper, 3.0)
+    }) = check_tuning(&continuous, &paper, 3.0)
     else {
         panic!("the paper's gains pass at 40 °/s");
     };
     assert!(amplitude_rad < 0.2 * travel_rad, "{amplitude_rad} rad");
-    let sampled = PitchHardware {
+    let sampled = AxisHardware {
         control_delay_s: 1.5 / 80.0,
         ..continuous
     };
-    let Err(PitchTuningProblem::Unstable {
+    let Err(TuningProblem::Unstable {
         phase_margin_deg: Some(pm),
         crossover_radps: Some(crossover),
-    }) = check_pitch_tuning(&sampled, &paper, 3.0)
+    }) = check_tuning(&sampled, &paper, 3.0)
     else {
         panic!("the paper's gains are stable with the computer's delay");
     };
@@ -182,10 +182,10 @@ fn the_check_refuses_the_paper_gains_on_the_real_stabilator_and_passes_the_desig
         "{pm}° at {crossover}"
     );
     let design = opd_law(1.6, 1.0, 0.2, PitchFeedback::ObserverEstimate);
-    assert_eq!(check_pitch_tuning(&continuous, &design, 3.0), Ok(()));
-    assert_eq!(check_pitch_tuning(&sampled, &design, 3.0), Ok(()));
+    assert_eq!(check_tuning(&continuous, &design, 3.0), Ok(()));
+    assert_eq!(check_tuning(&sampled, &design, 3.0), Ok(()));
     // Without a rate limit nothing limits the amplitude: only stability is checked.
-    assert_eq!(check_pitch_tuning(&hardware(None), &paper, 3.0), Ok(()));
+    assert_eq!(check_tuning(&hardware(None), &paper, 3.0), Ok(()));
 }
 
 /// The check's criterion is the design procedure's: the realistic design's smallest
@@ -195,19 +195,19 @@ fn the_check_refuses_the_paper_gains_on_the_real_stabilator_and_passes_the_desig
 #[test]
 fn the_check_applies_the_requested_travel_ratio() {
     let design = opd_law(1.6, 1.0, 0.2, PitchFeedback::ObserverEstimate);
-    let sampled = PitchHardware {
+    let sampled = AxisHardware {
         control_delay_s: 1.5 / 80.0,
         ..hardware(Some(40.0))
     };
-    assert_eq!(check_pitch_tuning(&sampled, &design, 3.0), Ok(()));
-    let Err(PitchTuningProblem::RateLimitOscillation {
+    assert_eq!(check_tuning(&sampled, &design, 3.0), Ok(()));
+    let Err(TuningProblem::RateLimitOscillation {
         amplitude_rad,
         travel_rad,
-    }) = check_pitch_tuning(&sampled, &design, 4.0)
+    }) = check_tuning(&sampled, &design, 4.0)
     else {
         panic!("4 travels granted");
     };
     let ratio = amplitude_rad / travel_rad;
     assert!((3.0..4.0).contains(&ratio), "{ratio}");
-    assert_eq!(check_pitch_tuning(&sampled, &design, 3.0), Ok(()));
+    assert_eq!(check_tuning(&sampled, &design, 3.0), Ok(()));
 }

@@ -1,34 +1,34 @@
 //! The command part of the design: the jerk-limited design step the hardware allows, or
 //! the refusal naming the hardware limit.
 
-use super::{check, PitchDesignError, PitchDesignRequest, PitchHardware};
-use crate::control::pitch::command_shaping::JerkLimitedStep;
+use super::command_shaping::JerkLimitedStep;
+use super::request::{check, AxisHardware, DesignError, DesignRequest};
 
-/// Travel from the trim elevator to the nearer stop (rad).
-pub fn nearer_stop_travel_rad(hardware: &PitchHardware) -> f64 {
+/// Travel from the trim surface position to the nearer stop (rad).
+pub fn nearer_stop_travel_rad(hardware: &AxisHardware) -> f64 {
     let actuator = &hardware.actuator;
-    (hardware.elevator_trim_rad - actuator.min_deflection_deg.to_radians())
-        .min(actuator.max_deflection_deg.to_radians() - hardware.elevator_trim_rad)
+    (hardware.surface_trim_rad - actuator.min_deflection_deg.to_radians())
+        .min(actuator.max_deflection_deg.to_radians() - hardware.surface_trim_rad)
 }
 
 /// The shaped command's bounds for this hardware: (jerk J in rad/s³, acceleration A in
 /// rad/s², the stop that bounds A), from η and κ as in the module docs.
 pub fn command_bounds(
-    hardware: &PitchHardware,
+    hardware: &AxisHardware,
     rate_fraction: f64,
     travel_fraction: f64,
 ) -> (f64, f64, &'static str) {
     let actuator = &hardware.actuator;
     let (mq, md) = (
-        hardware.plant.dqdot_dq_per_s.abs(),
-        hardware.plant.dqdot_delevator_per_s2.abs(),
+        hardware.plant.rate_damping_per_s.abs(),
+        hardware.plant.control_power_per_s2.abs(),
     );
-    let up = hardware.elevator_trim_rad - actuator.min_deflection_deg.to_radians();
-    let down = actuator.max_deflection_deg.to_radians() - hardware.elevator_trim_rad;
+    let up = hardware.surface_trim_rad - actuator.min_deflection_deg.to_radians();
+    let down = actuator.max_deflection_deg.to_radians() - hardware.surface_trim_rad;
     let (travel, stop) = if up <= down {
-        (up, "aircraft.elevator_actuator.min_deflection_deg")
+        (up, hardware.actuator_keys.min_deflection)
     } else {
-        (down, "aircraft.elevator_actuator.max_deflection_deg")
+        (down, hardware.actuator_keys.max_deflection)
     };
     let acceleration = travel_fraction * md * travel;
     let rate = actuator
@@ -41,9 +41,9 @@ pub fn command_bounds(
 /// The command part of the design: the shaped design step and its settling time, or the
 /// refusal naming the hardware limit (see the module docs' criterion).
 pub fn design_command(
-    hardware: &PitchHardware,
-    request: &PitchDesignRequest,
-) -> Result<(JerkLimitedStep, f64), PitchDesignError> {
+    hardware: &AxisHardware,
+    request: &DesignRequest,
+) -> Result<(JerkLimitedStep, f64), DesignError> {
     let (jerk, acceleration, stop) = command_bounds(
         hardware,
         request.command_rate_fraction,
@@ -74,11 +74,11 @@ pub fn design_command(
             (stop, stop_deg)
         } else {
             (
-                "aircraft.elevator_actuator.rate_limit_degps",
+                hardware.actuator_keys.rate_limit,
                 actuator.rate_limit_degps.unwrap_or(f64::INFINITY),
             )
         };
-        return Err(PitchDesignError::SettlingTimeTooShort {
+        return Err(DesignError::SettlingTimeTooShort {
             step_deg: request.design_step_deg,
             requested_s,
             minimum_s,

@@ -1,18 +1,21 @@
 //! Tests of the design procedure against hand calculations.
 
 use super::*;
+use crate::aircraft::ElevatorActuatorParameters;
+use crate::sensors::PitchNoiseParameters;
 
 /// The approach trim of the landing configuration (`deckland linearize`).
-pub(crate) fn hardware(rate_limit_degps: Option<f64>) -> PitchHardware {
-    PitchHardware {
+pub(crate) fn hardware(rate_limit_degps: Option<f64>) -> AxisHardware {
+    AxisHardware {
         actuator: ElevatorActuatorParameters {
             rate_limit_degps,
             ..ElevatorActuatorParameters::default()
         },
-        elevator_trim_rad: (-8.17f64).to_radians(),
-        plant: PitchPlantDerivatives {
-            dqdot_dq_per_s: -0.1891,
-            dqdot_delevator_per_s2: -1.9675,
+        actuator_keys: ActuatorKeys::ELEVATOR,
+        surface_trim_rad: (-8.17f64).to_radians(),
+        plant: AxisPlantDerivatives {
+            rate_damping_per_s: -0.1891,
+            control_power_per_s2: -1.9675,
         },
         coupling: Some(AngleOfAttackCoupling {
             dalphadot_dalpha_per_s: -0.526_839,
@@ -24,8 +27,8 @@ pub(crate) fn hardware(rate_limit_degps: Option<f64>) -> PitchHardware {
 }
 
 /// The paper's pitch-sensor noise sampled at 1 ms.
-pub(crate) fn noise() -> PitchSensorNoise {
-    PitchSensorNoise::from_parameters(&PitchNoiseParameters::default(), 0.001)
+pub(crate) fn noise() -> SensorNoise {
+    SensorNoise::from_parameters(&PitchNoiseParameters::default(), 0.001)
 }
 
 /// Hand calculation: travel to the nearer stop 25° − 8.17° = 16.83° = 0.29374 rad;
@@ -46,12 +49,12 @@ fn command_bounds_follow_from_rate_limit_and_travel() {
 /// rate limit; 2 s is granted with a gentler trajectory.
 #[test]
 fn settling_time_below_the_rate_limit_minimum_is_refused_by_name() {
-    let request = PitchDesignRequest {
+    let request = DesignRequest {
         command_settling_time_s: Some(1.2),
-        ..PitchDesignRequest::default()
+        ..DesignRequest::default()
     };
     let error = design_command(&hardware(Some(40.0)), &request).expect_err("too fast");
-    let PitchDesignError::SettlingTimeTooShort {
+    let DesignError::SettlingTimeTooShort {
         minimum_s,
         limiting,
         ..
@@ -62,9 +65,9 @@ fn settling_time_below_the_rate_limit_minimum_is_refused_by_name() {
     assert!((minimum_s - 1.592_31).abs() < 1e-4, "{minimum_s}");
     assert_eq!(*limiting, "aircraft.elevator_actuator.rate_limit_degps");
     assert!(error.to_string().contains("rate_limit_degps"), "{error}");
-    let slower = PitchDesignRequest {
+    let slower = DesignRequest {
         command_settling_time_s: Some(2.0),
-        ..PitchDesignRequest::default()
+        ..DesignRequest::default()
     };
     let (step, settling) = design_command(&hardware(Some(40.0)), &slower).expect("ok");
     assert!((settling - 2.0).abs() < 1e-12);
@@ -76,12 +79,12 @@ fn settling_time_below_the_rate_limit_minimum_is_refused_by_name() {
 /// 0.90202 s with the actuator's lag.
 #[test]
 fn without_rate_limit_the_stop_limits() {
-    let request = PitchDesignRequest {
+    let request = DesignRequest {
         command_settling_time_s: Some(0.5),
-        ..PitchDesignRequest::default()
+        ..DesignRequest::default()
     };
     let error = design_command(&hardware(None), &request).expect_err("too fast");
-    let PitchDesignError::SettlingTimeTooShort {
+    let DesignError::SettlingTimeTooShort {
         minimum_s,
         limiting,
         ..
@@ -102,7 +105,7 @@ fn without_rate_limit_the_stop_limits() {
 #[test]
 fn a_law_given_as_data_is_assessed_and_its_noise_scales_with_the_sensor() {
     let hardware = hardware(Some(40.0));
-    let md = hardware.plant.dqdot_delevator_per_s2;
+    let md = hardware.plant.control_power_per_s2;
     let (kp, kd) = (6.25, 4.81);
     let mut law = LinearLaw::without_states();
     law.output_inputs = [kp / md, -kp / md, -kd / md, 0.0];
@@ -110,19 +113,19 @@ fn a_law_given_as_data_is_assessed_and_its_noise_scales_with_the_sensor() {
     let assessed = assess_loop(&hardware, &noisy, &law, 1.2);
     assert!(assessed.closed_loop_max_real_part < 0.0, "{assessed:?}");
     assert!(assessed.margins.phase_margin_deg.expect("pm") > 0.0);
-    let twice = PitchSensorNoise {
+    let twice = SensorNoise {
         white_sigma_rad: 2.0 * noisy.white_sigma_rad,
         ..noisy
     };
     let doubled = assess_loop(&hardware, &twice, &law, 1.2);
     let ratio =
-        doubled.noise.white_elevator_rate_rms_radps / assessed.noise.white_elevator_rate_rms_radps;
+        doubled.noise.white_surface_rate_rms_radps / assessed.noise.white_surface_rate_rms_radps;
     assert!((ratio - 2.0).abs() < 1e-12, "{ratio}");
-    let silent = PitchSensorNoise {
+    let silent = SensorNoise {
         white_sigma_rad: 0.0,
         sinusoid_amplitude_rad: 0.0,
         ..noisy
     };
     let quiet = assess_loop(&hardware, &silent, &law, 1.2);
-    assert_eq!(quiet.noise.elevator_rate_rms_radps, 0.0);
+    assert_eq!(quiet.noise.surface_rate_rms_radps, 0.0);
 }

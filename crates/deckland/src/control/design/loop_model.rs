@@ -1,6 +1,7 @@
-//! A reduced linear model of the pitch loop for design: pitch plant, elevator actuator,
-//! the pitch-measurement noise and any law in its linear limit ([`LinearLaw`])
-//! (docs/model.md §2.6, §3.3, §4, §5).
+//! A reduced linear model of an axis's attitude loop for design: plant (rate damping M_q
+//! and control power M_δ; pitch θ, q, δe — roll φ, p, δa — yaw), surface actuator, the
+//! angle-measurement noise and any law in its linear limit ([`LinearLaw`])
+//! (docs/model.md §2.6, §3.3, §4, §5). Written below in the pitch axis's symbols.
 //!
 //! ```text
 //! plant:     θ̇ = q,  q̇ = M_q·q + M_δ·δ + M_α·α      (M_q = ∂q̇/∂q, M_δ = ∂q̇/∂δe)
@@ -19,7 +20,7 @@
 //! the ideal PD's; with it the observer must estimate M_α·Δα as a disturbance, which is
 //! what makes ε matter for the margins (at the approach trim M_α = −0.26 s⁻²,
 //! Z_α = −0.53 s⁻¹). The model answers the questions the design needs quickly and in
-//! closed form — loop gain cut at the elevator command (the cut of
+//! closed form — loop gain cut at the surface command (the cut of
 //! `analysis::cascade_margins`), closed-loop transfer functions from the command and from
 //! the sensor noise — and the full nonlinear linearisation stays the check
 //! (docs/stabilator-design.md compares them). All quantities are deviations from trim, in
@@ -27,26 +28,26 @@
 
 use nalgebra::{Complex, SMatrix, SVector};
 
-use super::plant::{AngleOfAttackCoupling, LinearActuator, PitchPlantDerivatives};
+use super::plant::{AngleOfAttackCoupling, AxisPlantDerivatives, LinearActuator};
 use crate::control::LinearLaw;
 
 /// Which signal a closed-loop transfer function ends at.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum LoopOutput {
-    /// True pitch deviation θ (rad).
-    Pitch,
-    /// Elevator position δ (rad).
-    Elevator,
-    /// Elevator rate δ̇ (rad/s).
-    ElevatorRate,
+    /// True angle deviation (pitch θ, bank φ; rad).
+    Angle,
+    /// Surface position δ (rad).
+    Surface,
+    /// Surface rate δ̇ (rad/s).
+    SurfaceRate,
 }
 
 /// Which signal a closed-loop transfer function starts at.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum LoopInput {
-    /// Pitch command r (rad).
+    /// Angle command r (rad).
     Command,
-    /// Pitch-measurement error n (rad).
+    /// Angle-measurement error n (rad).
     SensorNoise,
 }
 
@@ -64,10 +65,10 @@ pub struct Margins {
     pub phase_crossover_radps: Option<f64>,
 }
 
-/// The reduced pitch loop: `x' = A x + B u + G w`, `u_c = C x + H w`, with the states
+/// The reduced loop of one axis: `x' = A x + B u + G w`, `u_c = C x + H w`, with the states
 /// `[θ, q, δ, δ̇, c1, c2, c3, α]` (c: the controller's states) and `w = [r, n]`.
 #[derive(Debug, Clone, PartialEq)]
-pub struct PitchLoopModel {
+pub struct AxisLoopModel {
     a: Matrix,
     b: Vector,
     g: SMatrix<f64, N, 2>,
@@ -83,15 +84,15 @@ const CONTROLLER: usize = 4;
 type Matrix = SMatrix<f64, N, N>;
 type Vector = SVector<f64, N>;
 
-impl PitchLoopModel {
+impl AxisLoopModel {
     /// Builds the model (docs/model.md §4–5 in their linear limit).
     pub fn new(
-        plant: PitchPlantDerivatives,
+        plant: AxisPlantDerivatives,
         coupling: Option<AngleOfAttackCoupling>,
         actuator: LinearActuator,
         law: &LinearLaw,
     ) -> Self {
-        let (mq, md) = (plant.dqdot_dq_per_s, plant.dqdot_delevator_per_s2);
+        let (mq, md) = (plant.rate_damping_per_s, plant.control_power_per_s2);
         let (wa, za) = (actuator.natural_frequency_radps, actuator.damping_ratio);
         let mut a = Matrix::zeros();
         let mut b = Vector::zeros();
@@ -148,7 +149,7 @@ impl PitchLoopModel {
         }
     }
 
-    /// Loop gain L(jω) = −C (jωI − A)⁻¹ B with the loop cut at the elevator command
+    /// Loop gain L(jω) = −C (jωI − A)⁻¹ B with the loop cut at the surface command
     /// (negative-feedback convention, as in `analysis::cascade_margins`).
     pub fn loop_gain(&self, omega_radps: f64) -> Complex<f64> {
         let x = solve(&self.a, &self.b, omega_radps);
@@ -169,9 +170,9 @@ impl PitchLoopModel {
         let forcing = Vector::from_fn(|i, _| self.g[(i, column)] + self.b[i] * self.h[column]);
         let x = solve(&self.closed, &forcing, omega_radps);
         match output {
-            LoopOutput::Pitch => x[0],
-            LoopOutput::Elevator => x[2],
-            LoopOutput::ElevatorRate => x[3],
+            LoopOutput::Angle => x[0],
+            LoopOutput::Surface => x[2],
+            LoopOutput::SurfaceRate => x[3],
         }
     }
 
@@ -184,7 +185,7 @@ impl PitchLoopModel {
             .fold(f64::NEG_INFINITY, f64::max)
     }
 
-    /// Margins of [`PitchLoopModel::loop_gain`] on `omegas` (rad/s, increasing).
+    /// Margins of [`AxisLoopModel::loop_gain`] on `omegas` (rad/s, increasing).
     pub fn margins(&self, omegas: &[f64]) -> Margins {
         let gains: Vec<Complex<f64>> = omegas.iter().map(|&w| self.loop_gain(w)).collect();
         margins_of(omegas, &gains)
@@ -301,9 +302,9 @@ pub fn margins_of(omegas: &[f64], gains: &[Complex<f64>]) -> Margins {
 mod tests {
     use super::*;
 
-    const PLANT: PitchPlantDerivatives = PitchPlantDerivatives {
-        dqdot_dq_per_s: -0.1891,
-        dqdot_delevator_per_s2: -1.9675,
+    const PLANT: AxisPlantDerivatives = AxisPlantDerivatives {
+        rate_damping_per_s: -0.1891,
+        control_power_per_s2: -1.9675,
     };
     const ACTUATOR: LinearActuator = LinearActuator {
         natural_frequency_radps: 30.74,
@@ -315,10 +316,10 @@ mod tests {
     /// K_P = 16, K_D = 7.81: L = (16 + 78.1j)·A(10j)/(10j·(10j + 0.1891)), by hand.
     #[test]
     fn a_law_given_as_data_closes_the_loop_it_describes() {
-        let (kp, kd, md) = (16.0, 7.81, PLANT.dqdot_delevator_per_s2);
+        let (kp, kd, md) = (16.0, 7.81, PLANT.control_power_per_s2);
         let mut law = LinearLaw::without_states();
         law.output_inputs = [kp / md, -kp / md, -kd / md, 0.0];
-        let model = PitchLoopModel::new(PLANT, None, ACTUATOR, &law);
+        let model = AxisLoopModel::new(PLANT, None, ACTUATOR, &law);
         let s = Complex::new(0.0, 10.0);
         let wa2 = 30.74 * 30.74;
         let actuator = wa2 / (s * s + 2.0 * 0.509 * 30.74 * s + wa2);
@@ -329,7 +330,7 @@ mod tests {
             "{got} vs {expected}"
         );
         assert!(model.closed_loop_max_real_part() < 0.0);
-        let t = model.closed_loop(LoopInput::Command, LoopOutput::Pitch, 1e-3);
+        let t = model.closed_loop(LoopInput::Command, LoopOutput::Angle, 1e-3);
         assert!((t - 1.0).norm() < 1e-2, "{t}");
     }
 

@@ -151,9 +151,9 @@ pub fn reference_equivalent_control(
     pitch_rate_estimate_radps: f64,
     proportional_per_s2: f64,
     derivative_per_s: f64,
-    dqdot_dq_per_s: f64,
+    rate_damping_per_s: f64,
 ) -> f64 {
-    reference.acceleration_radps2 - dqdot_dq_per_s * reference.rate_radps
+    reference.acceleration_radps2 - rate_damping_per_s * reference.rate_radps
         + proportional_per_s2 * pitch_error_rad
         + derivative_per_s * (reference.rate_radps - pitch_rate_estimate_radps)
 }

@@ -1,44 +1,45 @@
-//! Assessing any law, given in its linear limit, on the reduced linear pitch loop: margins
+//! Assessing any law, given in its linear limit, on the reduced linear loop of an axis: margins
 //! with the actuator and the computer's delay, the θ/θ_ref lag seen by the outer loop, the
-//! sensor noise at the elevator, and the rate limit's limit cycle.
+//! sensor noise at the surface, and the rate limit's limit cycle.
 
 use nalgebra::Complex;
 use serde::Serialize;
 
-use super::loop_model::{log_grid, margins_of, LoopInput, LoopOutput, Margins, PitchLoopModel};
+use super::loop_model::{log_grid, margins_of, AxisLoopModel, LoopInput, LoopOutput, Margins};
+use super::plant::LinearActuator;
 use super::rate_limit::rate_limit_cycles;
-use super::{LinearActuator, PitchDesignRequest, PitchHardware, PitchSensorNoise};
+use super::request::{AxisHardware, DesignRequest, SensorNoise};
 use crate::control::LinearLaw;
 
-/// How the sensor noise reaches the elevator and the attitude (reduced linear loop).
+/// How the sensor noise reaches the surface and the attitude (reduced linear loop).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct NoiseBudget {
-    /// Elevator-rate RMS from the white part (rad/s).
-    pub white_elevator_rate_rms_radps: f64,
-    /// Elevator-rate RMS from the sinusoid (rad/s): amplitude·|H(jω)|·ω/√2.
-    pub sinusoid_elevator_rate_rms_radps: f64,
+    /// Surface-rate RMS from the white part (rad/s).
+    pub white_surface_rate_rms_radps: f64,
+    /// Surface-rate RMS from the sinusoid (rad/s): amplitude·|H(jω)|·ω/√2.
+    pub sinusoid_surface_rate_rms_radps: f64,
     /// Both together (rad/s).
-    pub elevator_rate_rms_radps: f64,
-    /// Gain from the sensor error to the elevator at the sinusoid's frequency (rad/rad).
-    pub sinusoid_to_elevator_gain: f64,
+    pub surface_rate_rms_radps: f64,
+    /// Gain from the sensor error to the surface at the sinusoid's frequency (rad/rad).
+    pub sinusoid_to_surface_gain: f64,
     /// Amplitude of the true attitude's answer to the sinusoid (rad).
-    pub pitch_sinusoid_amplitude_rad: f64,
+    pub angle_sinusoid_amplitude_rad: f64,
     /// RMS of the true attitude's answer to the white part (rad).
-    pub pitch_white_rms_rad: f64,
+    pub angle_white_rms_rad: f64,
 }
 
 /// What a law achieves on the reduced linear loop.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LoopAssessment {
-    /// Margins at the elevator command.
+    /// Margins at the surface command.
     pub margins: Margins,
     /// Phase lag of θ/θ_ref at the outer loop's crossover (deg, positive lagging).
     pub outer_loop_lag_deg: f64,
-    /// Noise at the elevator and the attitude.
+    /// Noise at the surface and the attitude.
     pub noise: NoiseBudget,
     /// Largest real part of the closed loop's eigenvalues (1/s).
     pub closed_loop_max_real_part: f64,
-    /// Smallest elevator-command amplitude (rad) of a limit cycle the rate limit can
+    /// Smallest surface-command amplitude (rad) of a limit cycle the rate limit can
     /// sustain ([`rate_limit_cycles`]); infinite when none is predicted or there is no
     /// rate limit.
     pub limit_cycle_amplitude_rad: f64,
@@ -47,8 +48,8 @@ pub struct LoopAssessment {
 /// Assesses `law` on the reduced linear loop of `hardware` with the sensor `noise`, the
 /// outer loop crossing over at `outer_loop_crossover_radps` (see the module docs).
 pub fn assess_loop(
-    hardware: &PitchHardware,
-    noise: &PitchSensorNoise,
+    hardware: &AxisHardware,
+    noise: &SensorNoise,
     law: &LinearLaw,
     outer_loop_crossover_radps: f64,
 ) -> LoopAssessment {
@@ -56,7 +57,7 @@ pub fn assess_loop(
         natural_frequency_radps: hardware.actuator.natural_frequency_rad_s,
         damping_ratio: hardware.actuator.damping_ratio,
     };
-    let model = PitchLoopModel::new(hardware.plant, hardware.coupling, actuator, law);
+    let model = AxisLoopModel::new(hardware.plant, hardware.coupling, actuator, law);
     let delayed =
         |w: f64| model.loop_gain(w) * Complex::from_polar(1.0, -w * hardware.control_delay_s);
     let omegas = log_grid(0.01, 300.0, 800);
@@ -71,48 +72,48 @@ pub fn assess_loop(
     let lag = -model
         .closed_loop(
             LoopInput::Command,
-            LoopOutput::Pitch,
+            LoopOutput::Angle,
             outer_loop_crossover_radps,
         )
         .arg()
         .to_degrees();
     let omega = noise.sinusoid_frequency_radps;
-    let to_elevator = model
-        .closed_loop(LoopInput::SensorNoise, LoopOutput::Elevator, omega)
+    let to_surface = model
+        .closed_loop(LoopInput::SensorNoise, LoopOutput::Surface, omega)
         .norm();
     let white_rate = if noise.white_sigma_rad > 0.0 {
         model.white_noise_rms(
-            LoopOutput::ElevatorRate,
+            LoopOutput::SurfaceRate,
             noise.white_sigma_rad,
             noise.sample_interval_s,
         )
     } else {
         0.0
     };
-    let sinusoid_rate = noise.sinusoid_amplitude_rad * to_elevator * omega / 2f64.sqrt();
-    let white_pitch = if noise.white_sigma_rad > 0.0 {
+    let sinusoid_rate = noise.sinusoid_amplitude_rad * to_surface * omega / 2f64.sqrt();
+    let white_angle = if noise.white_sigma_rad > 0.0 {
         model.white_noise_rms(
-            LoopOutput::Pitch,
+            LoopOutput::Angle,
             noise.white_sigma_rad,
             noise.sample_interval_s,
         )
     } else {
         0.0
     };
-    let pitch_sinusoid = noise.sinusoid_amplitude_rad
+    let angle_sinusoid = noise.sinusoid_amplitude_rad
         * model
-            .closed_loop(LoopInput::SensorNoise, LoopOutput::Pitch, omega)
+            .closed_loop(LoopInput::SensorNoise, LoopOutput::Angle, omega)
             .norm();
     LoopAssessment {
         margins,
         outer_loop_lag_deg: lag,
         noise: NoiseBudget {
-            white_elevator_rate_rms_radps: white_rate,
-            sinusoid_elevator_rate_rms_radps: sinusoid_rate,
-            elevator_rate_rms_radps: white_rate.hypot(sinusoid_rate),
-            sinusoid_to_elevator_gain: to_elevator,
-            pitch_sinusoid_amplitude_rad: pitch_sinusoid,
-            pitch_white_rms_rad: white_pitch,
+            white_surface_rate_rms_radps: white_rate,
+            sinusoid_surface_rate_rms_radps: sinusoid_rate,
+            surface_rate_rms_radps: white_rate.hypot(sinusoid_rate),
+            sinusoid_to_surface_gain: to_surface,
+            angle_sinusoid_amplitude_rad: angle_sinusoid,
+            angle_white_rms_rad: white_angle,
         },
         closed_loop_max_real_part: model.closed_loop_max_real_part(),
         limit_cycle_amplitude_rad,
@@ -124,7 +125,7 @@ pub fn assess_loop(
 /// shortfall ≥ 0 as a fraction of the requirement).
 pub fn shortfalls(
     candidate: &LoopAssessment,
-    request: &PitchDesignRequest,
+    request: &DesignRequest,
     rate_limit_radps: f64,
     travel_rad: f64,
 ) -> [(&'static str, f64, f64, f64); 5] {
@@ -134,7 +135,7 @@ pub fn shortfalls(
         .phase_margin_deg
         .unwrap_or(f64::NEG_INFINITY);
     let gm = candidate.margins.gain_margin_db.unwrap_or(f64::INFINITY);
-    let noise_fraction = candidate.noise.elevator_rate_rms_radps / rate_limit_radps;
+    let noise_fraction = candidate.noise.surface_rate_rms_radps / rate_limit_radps;
     let short = |achieved: f64, required: f64, larger_is_better: bool| {
         let gap = if larger_is_better {
             required - achieved
