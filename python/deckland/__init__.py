@@ -4,7 +4,8 @@ The simulator is the Rust library `deckland` (the same code as the `deckland` co
 this package calls it directly, so every number is the CLI's, bit for bit.
 
 - :func:`trim` and :func:`linearize`: steady flight and its linear model (numpy arrays,
-  ready for ``control.ss``).
+  ready for ``control.ss``); :func:`trim_six_dof` and :func:`linearize_six_dof` the same
+  for the 6-DOF aircraft, in sideslip or a crosswind, with the lateral matrices and modes.
 - :class:`Scenario`: every parameter of a run, read and set by dotted path
   (``s["environment.ship.heave_rms_m"] = 1.0``); a bad value raises ``ValueError``.
 - :func:`fly`: one approach, with its summary and time series (a pandas DataFrame when
@@ -25,7 +26,17 @@ from dataclasses import dataclass, field
 from typing import Any, Callable, Dict, Iterator, List, Optional
 
 from . import _deckland
-from ._deckland import MAX_RUNS, Approach, LinearModel, Scenario, Trim, linearize, trim
+from ._deckland import (
+    MAX_RUNS,
+    Approach,
+    LinearModel,
+    Scenario,
+    Trim,
+    linearize,
+    linearize_six_dof,
+    trim,
+    trim_six_dof,
+)
 from ._tables import table
 
 __version__ = _deckland.__version__
@@ -41,7 +52,9 @@ __all__ = [
     "campaign",
     "fly",
     "linearize",
+    "linearize_six_dof",
     "trim",
+    "trim_six_dof",
 ]
 
 

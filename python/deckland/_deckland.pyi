@@ -105,6 +105,20 @@ class Approach:
 
 def trim(speed_mps: float = 69.1, gamma_deg: float = 0.0, configuration: str = "landing") -> Trim: ...
 def linearize(speed_mps: float = 69.1, gamma_deg: float = 0.0, configuration: str = "landing") -> LinearModel: ...
+def trim_six_dof(
+    speed_mps: float = 69.1,
+    gamma_deg: float = 0.0,
+    sideslip_deg: float = 0.0,
+    crosswind_mps: float = 0.0,
+    configuration: str = "landing",
+) -> Dict[str, Any]: ...
+def linearize_six_dof(
+    speed_mps: float = 69.1,
+    gamma_deg: float = 0.0,
+    sideslip_deg: float = 0.0,
+    crosswind_mps: float = 0.0,
+    configuration: str = "landing",
+) -> Dict[str, Any]: ...
 def fly(
     scenario: Optional[Scenario] = None,
     seed: Optional[int] = None,

@@ -26,6 +26,7 @@ mod errors;
 mod flight;
 mod outputs;
 mod scenario;
+mod six_dof;
 mod stepping;
 
 use pyo3::prelude::*;
@@ -43,6 +44,8 @@ mod _deckland {
     use super::flight::fly;
     #[pymodule_export]
     use super::scenario::Scenario;
+    #[pymodule_export]
+    use super::six_dof::{linearize_six_dof, trim_six_dof};
 
     use pyo3::prelude::*;
 

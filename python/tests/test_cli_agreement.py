@@ -49,6 +49,51 @@ def test_linearize_is_the_cli_linear_model(cli, speed, gamma, configuration):
     assert model.trim.to_dict() == expected["trim"]
 
 
+SIX_DOF_CASES = [
+    (69.1, 0.0, 0.0, 0.0, "landing"),
+    (69.1, -3.5, 5.0, 0.0, "landing"),
+    (69.1, 0.0, 0.0, 5.0, "landing"),
+    (120.0, 2.0, -3.0, 0.0, "clean"),
+]
+
+
+def six_dof_args(speed, gamma, sideslip, crosswind, configuration):
+    return [
+        "--model", "6dof", "--speed", repr(speed), "--gamma", repr(gamma),
+        "--sideslip", repr(sideslip), "--crosswind", repr(crosswind),
+        "--config", configuration, "--json",
+    ]
+
+
+@pytest.mark.parametrize("case", SIX_DOF_CASES)
+def test_six_dof_trim_is_the_cli_trim(cli, case):
+    expected = cli.json(["trim", *six_dof_args(*case)])
+    speed, gamma, sideslip, crosswind, configuration = case
+    actual = deckland.trim_six_dof(speed, gamma, sideslip, crosswind, configuration)
+    assert actual == expected
+
+
+@pytest.mark.parametrize("case", SIX_DOF_CASES)
+def test_six_dof_linear_model_is_the_cli_one(cli, case):
+    expected = cli.json(["linearize", *six_dof_args(*case)])
+    model = deckland.linearize_six_dof(*case)
+    for key in ("lateral_a", "lateral_b", "longitudinal_a", "longitudinal_b"):
+        assert np.array_equal(model[key], np.array(expected[key])), key
+    assert model["lateral_a"].shape == (4, 4) and model["lateral_b"].shape == (4, 2)
+    for key, value in expected.items():
+        if not key.endswith(("_a", "_b")):
+            assert model[key] == value, key
+
+
+def test_six_dof_bad_arguments_raise_the_cli_message():
+    with pytest.raises(ValueError, match="`sideslip_deg` = 40"):
+        deckland.trim_six_dof(sideslip_deg=40.0)
+    with pytest.raises(ValueError, match="beyond its 30.0° limit by 6.40°"):
+        deckland.trim_six_dof(sideslip_deg=25.0)
+    with pytest.raises(ValueError, match="cannot be crabbed"):
+        deckland.linearize_six_dof(crosswind_mps=90.0)
+
+
 def assert_flight_is_the_cli_run(flight, out):
     """`flight` equals the CLI's summary.json and approach.csv in `out`, bit for bit."""
     with open(out / "summary.json") as f:

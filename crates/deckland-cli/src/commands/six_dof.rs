@@ -4,10 +4,10 @@
 
 use anyhow::{bail, Context, Result};
 use deckland::aircraft::six_dof::{
-    linearize_six_dof, trim_six_dof, LateralModes, LateralParameters, RealMode, SixDofAircraft,
-    SixDofLinearModel, SixDofTrimError, SixDofTrimPoint, SixDofTrimRequest,
-    SurfaceActuatorParameters, LATERAL_INPUT_NAMES, LATERAL_INPUT_UNITS, LATERAL_STATE_NAMES,
-    LATERAL_STATE_UNITS,
+    linearize_six_dof, trim_six_dof, LateralModesReport, LateralParameters, RealMode,
+    SixDofAircraft, SixDofLinearModel, SixDofTrimError, SixDofTrimPoint, SixDofTrimReport,
+    SixDofTrimRequest, SurfaceActuatorParameters, LATERAL_INPUT_NAMES, LATERAL_INPUT_UNITS,
+    LATERAL_STATE_NAMES, LATERAL_STATE_UNITS,
 };
 use deckland::aircraft::TrimRequest;
 use deckland::analysis::{INPUT_NAMES, INPUT_UNITS, STATE_NAMES, STATE_UNITS};
@@ -16,104 +16,6 @@ use serde::Serialize;
 
 use super::linearize::{fixed, rows};
 use super::trim::TrimArgs;
-
-/// The 6-DOF trim point as `--json` prints it: angles in degrees.
-#[derive(Debug, Serialize)]
-struct SixDofTrimReport {
-    model: &'static str,
-    configuration: String,
-    speed_mps: f64,
-    gamma_deg: f64,
-    sideslip_deg: f64,
-    crosswind_mps: f64,
-    alpha_deg: f64,
-    theta_deg: f64,
-    /// Bank φ (deg), right wing down positive.
-    phi_deg: f64,
-    /// Heading ψ from the final bearing (deg), nose right positive.
-    psi_deg: f64,
-    /// Elevator δe (deg), trailing edge down positive.
-    elevator_deg: f64,
-    /// Aileron δa (deg), right-wing-down rolling moment positive.
-    aileron_deg: f64,
-    /// Rudder δr (deg), trailing edge left positive.
-    rudder_deg: f64,
-    thrust_n: f64,
-    throttle: f64,
-    /// Largest residual rate at the solution (m/s², rad/s² or –).
-    residual: f64,
-    iterations: usize,
-}
-
-impl SixDofTrimReport {
-    fn new(args: &TrimArgs, point: &SixDofTrimPoint) -> Self {
-        Self {
-            model: "6dof",
-            configuration: args.configuration.to_string(),
-            speed_mps: point.speed_mps,
-            gamma_deg: point.flight_path_angle_rad.to_degrees(),
-            sideslip_deg: point.sideslip_rad.to_degrees(),
-            crosswind_mps: point.wind.y_mps,
-            alpha_deg: point.alpha_rad.to_degrees(),
-            theta_deg: point.theta_rad.to_degrees(),
-            phi_deg: point.phi_rad.to_degrees(),
-            psi_deg: point.psi_rad.to_degrees(),
-            elevator_deg: point.elevator_rad.to_degrees(),
-            aileron_deg: point.aileron_rad.to_degrees(),
-            rudder_deg: point.rudder_rad.to_degrees(),
-            thrust_n: point.thrust_n,
-            throttle: point.throttle,
-            residual: point.residual,
-            iterations: point.iterations,
-        }
-    }
-}
-
-/// A real lateral mode as `--json` prints it.
-#[derive(Debug, Serialize)]
-struct RealModeReport {
-    eigenvalue_per_s: f64,
-    time_constant_s: f64,
-    stable: bool,
-    /// Time to half amplitude when stable, to double when not (s).
-    time_to_half_s: Option<f64>,
-    time_to_double_s: Option<f64>,
-}
-
-impl From<&RealMode> for RealModeReport {
-    fn from(mode: &RealMode) -> Self {
-        Self {
-            eigenvalue_per_s: mode.eigenvalue_per_s,
-            time_constant_s: mode.time_constant_s,
-            stable: mode.stable,
-            time_to_half_s: mode.stable.then_some(mode.time_to_half_or_double_s),
-            time_to_double_s: (!mode.stable).then_some(mode.time_to_half_or_double_s),
-        }
-    }
-}
-
-/// The lateral modes as `--json` prints them.
-#[derive(Debug, Serialize)]
-struct LateralModesReport {
-    dutch_roll_eigenvalue: [f64; 2],
-    dutch_roll_natural_frequency_radps: f64,
-    dutch_roll_damping_ratio: f64,
-    roll_subsidence: RealModeReport,
-    spiral: RealModeReport,
-}
-
-impl From<&LateralModes> for LateralModesReport {
-    fn from(modes: &LateralModes) -> Self {
-        let dutch = &modes.dutch_roll;
-        Self {
-            dutch_roll_eigenvalue: [dutch.eigenvalue.re, dutch.eigenvalue.im],
-            dutch_roll_natural_frequency_radps: dutch.natural_frequency_radps,
-            dutch_roll_damping_ratio: dutch.damping_ratio,
-            roll_subsidence: (&modes.roll_subsidence).into(),
-            spiral: (&modes.spiral).into(),
-        }
-    }
-}
 
 /// `linearize --model 6dof --json`: the trim, both blocks with names and units, the modes.
 #[derive(Debug, Serialize)]
@@ -256,7 +158,7 @@ pub fn run_trim(args: &TrimArgs) -> Result<()> {
     if args.json {
         outln!(
             "{}",
-            serde_json::to_string_pretty(&SixDofTrimReport::new(args, &point))?
+            serde_json::to_string_pretty(&point.report(args.configuration))?
         )?;
     } else {
         print_trim(args, &point)?;
@@ -353,7 +255,7 @@ pub fn run_linearize(args: &TrimArgs) -> Result<()> {
     let model = linearize_six_dof(&aircraft, &point);
     if args.json {
         let report = SixDofLinearizeReport {
-            trim: SixDofTrimReport::new(args, &point),
+            trim: point.report(args.configuration),
             lateral_state_names: LATERAL_STATE_NAMES,
             lateral_state_units: LATERAL_STATE_UNITS,
             lateral_input_names: LATERAL_INPUT_NAMES,
