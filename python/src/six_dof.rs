@@ -137,30 +137,32 @@ pub fn linearize_six_dof<'py>(
     let modes = model.lateral_modes().as_ref().map(LateralModesReport::from);
     let dict = PyDict::new(py);
     dict.set_item("trim", to_python(py, &point.report(name))?)?;
-    dict.set_item("lateral_state_names", LATERAL_STATE_NAMES.to_vec())?;
-    dict.set_item("lateral_state_units", LATERAL_STATE_UNITS.to_vec())?;
-    dict.set_item("lateral_input_names", LATERAL_INPUT_NAMES.to_vec())?;
-    dict.set_item("lateral_input_units", LATERAL_INPUT_UNITS.to_vec())?;
-    dict.set_item("lateral_a", {
-        let m = model.lateral_a();
-        array(py, m.shape(), |i, j| m[(i, j)])?
-    })?;
-    dict.set_item("lateral_b", {
-        let m = model.lateral_b();
-        array(py, m.shape(), |i, j| m[(i, j)])?
-    })?;
+    let (lateral_a, lateral_b) = (model.lateral_a(), model.lateral_b());
+    let (longitudinal_a, longitudinal_b) = (model.longitudinal_a(), model.longitudinal_b());
+    let blocks = [
+        (
+            "lateral",
+            [LATERAL_STATE_NAMES, LATERAL_STATE_UNITS],
+            [LATERAL_INPUT_NAMES, LATERAL_INPUT_UNITS],
+            array(py, lateral_a.shape(), |i, j| lateral_a[(i, j)])?,
+            array(py, lateral_b.shape(), |i, j| lateral_b[(i, j)])?,
+        ),
+        (
+            "longitudinal",
+            [STATE_NAMES, STATE_UNITS],
+            [INPUT_NAMES, INPUT_UNITS],
+            array(py, longitudinal_a.shape(), |i, j| longitudinal_a[(i, j)])?,
+            array(py, longitudinal_b.shape(), |i, j| longitudinal_b[(i, j)])?,
+        ),
+    ];
+    for (block, [state_names, state_units], [input_names, input_units], a, b) in blocks {
+        dict.set_item(format!("{block}_state_names"), state_names.to_vec())?;
+        dict.set_item(format!("{block}_state_units"), state_units.to_vec())?;
+        dict.set_item(format!("{block}_input_names"), input_names.to_vec())?;
+        dict.set_item(format!("{block}_input_units"), input_units.to_vec())?;
+        dict.set_item(format!("{block}_a"), a)?;
+        dict.set_item(format!("{block}_b"), b)?;
+    }
     dict.set_item("lateral_modes", to_python(py, &modes)?)?;
-    dict.set_item("longitudinal_state_names", STATE_NAMES.to_vec())?;
-    dict.set_item("longitudinal_state_units", STATE_UNITS.to_vec())?;
-    dict.set_item("longitudinal_input_names", INPUT_NAMES.to_vec())?;
-    dict.set_item("longitudinal_input_units", INPUT_UNITS.to_vec())?;
-    dict.set_item("longitudinal_a", {
-        let m = model.longitudinal_a();
-        array(py, m.shape(), |i, j| m[(i, j)])?
-    })?;
-    dict.set_item("longitudinal_b", {
-        let m = model.longitudinal_b();
-        array(py, m.shape(), |i, j| m[(i, j)])?
-    })?;
     Ok(dict)
 }
