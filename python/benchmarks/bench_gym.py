@@ -10,6 +10,8 @@ is counted:
    Rust, no observation, no Python);
 2. one environment, ``gymnasium.make("deckland/CarrierLanding-v1")`` (``attitude``),
    with its wrappers (the env checker, order enforcing, the time limit);
+   and the same with ``env.action_space.sample()`` as the action of each step (a
+   random agent's cost, as the issue measured it);
 3. gymnasium's ``make_vec(..., vectorization_mode="sync")`` of 2 environments;
 4. the native vectorised environment, ``make_vec(..., num_envs=--envs,
    vectorization_mode="vector_entry_point")`` (``attitude``), over every core;
@@ -63,6 +65,24 @@ def single(env, action):
         while time.perf_counter() < deadline:
             for _ in range(100):
                 _, _, terminated, truncated, _ = env.step(action)
+                if terminated or truncated:
+                    env.reset()
+            steps += 100
+        return steps
+
+    return run
+
+
+def sampled(env):
+    """One environment with a fresh ``action_space.sample()`` each step."""
+
+    def run(deadline):
+        env.reset(seed=1)
+        env.action_space.seed(1)
+        steps = 0
+        while time.perf_counter() < deadline:
+            for _ in range(100):
+                _, _, terminated, truncated, _ = env.step(env.action_space.sample())
                 if terminated or truncated:
                     env.reset()
             steps += 100
@@ -141,6 +161,7 @@ def main() -> None:
     cases = {
         "physics alone (`_bench_stepping`)": physics,
         "one env, `gymnasium.make`": single(single_env, np.zeros(3, dtype=np.float32)),
+        "one env, `gymnasium.make`, `action_space.sample()` each step": sampled(single_env),
         "`make_vec`, sync, 2 envs": vector(sync, np.zeros((2, 3), dtype=np.float32)),
         f"`make_vec`, vector_entry_point, {args.envs} envs": vector(
             native, np.zeros((args.envs, 3), dtype=np.float32)
