@@ -14,8 +14,9 @@ this package calls it directly, so every number is the CLI's, bit for bit.
   :func:`deckland.dask.campaign` flies its shards on a Dask cluster (``deckland[dask]``).
 - :class:`Approach`: the stepping API, one control interval at a time, the built-in
   cascade flying or your commands replacing its loops, or your own pitch law.
-- ``deckland/CarrierLanding-v0``: a Gymnasium environment on :class:`Approach`
-  (registered when gymnasium is installed; see :mod:`deckland.env`).
+- ``deckland/CarrierLanding-v1``: a Gymnasium environment on :class:`Approach`'s
+  simulation, with a native vectorised version (registered when gymnasium is
+  installed; see :mod:`deckland.env`).
 
 Units are SI and angles radians, except where a name says ``_deg``.
 """
@@ -173,7 +174,7 @@ def campaign(
 
 
 def _register_gymnasium() -> None:
-    """Registers ``deckland/CarrierLanding-v0`` when gymnasium is installed."""
+    """Registers ``deckland/CarrierLanding-v1`` when gymnasium is installed."""
     import importlib.util
 
     if importlib.util.find_spec("gymnasium") is None:

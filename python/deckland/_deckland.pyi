@@ -103,6 +103,52 @@ class Approach:
     @property
     def action_ranges(self) -> Dict[str, Tuple[float, float]]: ...
 
+class _Env:
+    def __init__(
+        self,
+        scenario: Optional[Scenario],
+        control: str,
+        control_interval_s: float,
+        pitch_command_span_rad: float,
+        thrust_span_n: Optional[float],
+        elevator_span_rad: float,
+        climb_rate_span_mps: float,
+        rewards: Dict[str, Any],
+        reward: str,
+        forecast: bool,
+    ) -> None: ...
+    def describe(self) -> Dict[str, Any]: ...
+    def reset(self, seed: int) -> Tuple[np.ndarray, np.ndarray, np.ndarray]: ...
+    def step(self, action: Any) -> Tuple[np.ndarray, float, bool, bool, Dict[str, Any]]: ...
+    def render(self) -> np.ndarray: ...
+    def actions(self) -> np.ndarray: ...
+    @property
+    def seed(self) -> Optional[int]: ...
+    @property
+    def time_s(self) -> float: ...
+
+class _VecEnv:
+    def __init__(
+        self,
+        num_envs: int,
+        scenario: Optional[Scenario],
+        control: str,
+        control_interval_s: float,
+        pitch_command_span_rad: float,
+        thrust_span_n: Optional[float],
+        elevator_span_rad: float,
+        climb_rate_span_mps: float,
+        rewards: Dict[str, Any],
+        reward: str,
+        forecast: bool,
+        max_episode_steps: Optional[int],
+    ) -> None: ...
+    def describe(self) -> Dict[str, Any]: ...
+    def step(
+        self, actions: np.ndarray, reset: List[bool], seeds: List[int]
+    ) -> Tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]: ...
+    def render(self, index: int) -> np.ndarray: ...
+
 def trim(speed_mps: float = 69.1, gamma_deg: float = 0.0, configuration: str = "landing") -> Trim: ...
 def linearize(speed_mps: float = 69.1, gamma_deg: float = 0.0, configuration: str = "landing") -> LinearModel: ...
 def trim_six_dof(

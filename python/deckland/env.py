@@ -1,93 +1,49 @@
-"""The Gymnasium environment ``deckland/CarrierLanding-v0``: fly the approach to the deck.
+"""The Gymnasium environment ``deckland/CarrierLanding-v1``: land the F/A-18 on the
+moving carrier deck, with the authority the ``control`` mode gives the agent.
 
-The environment wraps :class:`deckland.Approach`. One step is one control interval
-(20 ms by default); the agent commands the pitch attitude and the thrust, and the
-built-in pitch law (O-PD by default) and the engines follow. Guidance and the sink-rate
-loop, the speed loop's job and the deck-motion compensation are the agent's.
+The whole specification (modes, spaces, observation table with units and sources,
+reward term by term, seeding, vectorised stepping, rendering) is in
+``docs/rl-environment.md``; this module's objects carry it:
+:data:`CONTROL_MODES`, :data:`REWARDS`, :class:`CarrierLandingEnv`,
+:class:`CarrierLandingVecEnv`.
 
-**Action** ``Box(-1, 1, (2,), float32)``, held over the interval:
-
-- ``action[0]``: pitch command θ_ref = θ_trim + ``action[0]`` · ``pitch_command_span_rad``
-  (10° by default);
-- ``action[1]``: total thrust command T = T_trim + ``action[1]`` · ``thrust_span_n``
-  (a quarter of the maximum thrust of both engines by default), limited to
-  [0, T_max] by the engines.
-
-Zero is the trim of the approach. An action outside the space, or not finite, raises
-``ValueError`` naming the action, its value and the range (it is not clipped), and the
-pitch commands the space reaches must lie within the pitch attitude's range (±90°).
-:meth:`CarrierLandingEnv.action_for` turns a pitch command (rad) and a thrust (N) into
-an action.
-
-**Observation** ``Box((11,), float32)``, in the order of :data:`OBSERVATION_NAMES`
-and within :data:`OBSERVATION_BOUNDS`: the glide-path error (m, positive below the
-path), the sink rate (m/s, positive down), θ − θ_trim (rad), q (rad/s), α (rad), the
-airspeed error to the approach speed (m/s), the predicted height of the landing point
-above its mean (m), the range to go to the landing point (m), the time to go (s, within
-±120), the elevator position (rad) and the thrust as a fraction of the maximum. ``info``
-holds :class:`deckland.Approach`'s whole observation dict (physical units, with
-``outcome``, ``wire`` and ``reason`` at the end).
-
-**Reward**: each step −0.1 · min(e², 100) · Δt with e the glide-path error in m and Δt
-the control interval in s (about −1.2 over a good approach), and at the end:
-
-=============================  =======  =========================================
-end                            reward   episode
-=============================  =======  =========================================
-trap                           +100     terminated; plus a wire bonus: wire 3
-                                        +25, wire 2 +15, wire 4 +5, wire 1 0
-bolter                         −50      terminated
-hard landing                   −100     terminated
-ramp strike                    −200     terminated
-wave-off                       −50      terminated: \\|e\\| > ``wave_off_error_m``
-                                        (6 m by default), as a landing signal
-                                        officer would wave the aircraft off
-diverged                       −200     terminated (left the model's validity)
-time limit                     0        truncated (the scenario's ``max_time_s``)
-=============================  =======  =========================================
-
-The values are in :data:`REWARDS` and can be replaced with ``rewards=``.
-
-**Seeding**: ``reset(seed=s)`` flies the scenario with seed ``s``, the seed of every
-named random stream (ship heave and pitch, turbulence, sensor noise), so an episode
-is reproducible and ``reset(seed=s)`` with the cascade's own commands is
-``deckland.fly(seed=s)``; ``reset()`` without a seed draws the next seed from the
-environment's generator (itself seeded by the last ``reset(seed=…)``).
+In short: one step is one control interval (20 ms), stepped in Rust. The automatic
+wave-off is off in every mode: the last action entry is the agent's wave-off (> 0
+waves off, for the rest of the episode), and the outcome is the physics' alone (ramp
+crossing, touchdown, the wires; flying over the last wire after waving off is a
+``wave_off``, without it a ``bolter``). The observation is normalised (``info["raw"]``
+holds it in physical units); ``info["autopilot_action"]`` is the action the built-in
+cascade would take now (the autopilot as a policy).
 """
 
 from __future__ import annotations
 
-from typing import Any, Dict, Optional, Tuple
+import copy
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 import gymnasium
 import numpy as np
 from gymnasium import spaces
+from gymnasium.vector import AutoresetMode, VectorEnv
+from gymnasium.vector.utils import batch_space
 
-from ._deckland import MAX_SEED, Approach, Scenario
+from ._deckland import MAX_SEED, Scenario, _Env, _VecEnv
 
-ENV_ID = "deckland/CarrierLanding-v0"
+ENV_ID = "deckland/CarrierLanding-v1"
 
-#: The observation vector's entries, in order, with the bounds of the observation space
-#: (wide physical limits; a value beyond them, possible only far outside the model's
-#: validity, is clipped).
-OBSERVATION_BOUNDS = {
-    "glide_path_error_m": (-1000.0, 1000.0),
-    "sink_rate_mps": (-200.0, 200.0),
-    "theta_minus_trim_rad": (-2 * np.pi, 2 * np.pi),
-    "q_radps": (-20.0, 20.0),
-    "alpha_rad": (-np.pi, np.pi),
-    "airspeed_error_mps": (-200.0, 200.0),
-    "predicted_deck_offset_m": (-100.0, 100.0),
-    "range_to_go_m": (-2000.0, 20000.0),
-    "time_to_go_s": (-120.0, 120.0),
-    "elevator_rad": (-1.0, 1.0),
-    "thrust_fraction": (0.0, 1.0),
+#: The episode's step limit in the registration: the default scenario's time limit
+#: (60 s) in 20-ms steps.
+MAX_EPISODE_STEPS = 3000
+
+#: The control modes: what the agent commands, the action's entries in order.
+CONTROL_MODES = {
+    "surfaces": ("elevator", "thrust", "direct_lift", "wave_off"),
+    "attitude": ("pitch_command", "thrust", "wave_off"),
+    "guidance": ("climb_rate_command", "wave_off"),
 }
-OBSERVATION_NAMES = tuple(OBSERVATION_BOUNDS)
-_LOW = np.array([low for low, _ in OBSERVATION_BOUNDS.values()], dtype=np.float32)
-_HIGH = np.array([high for _, high in OBSERVATION_BOUNDS.values()], dtype=np.float32)
 
-#: The rewards at the end of an episode, and the wire bonus of a trap.
+#: The rewards: at the end per outcome, a trap's wire bonus, and the shaped reward's
+#: weight of the squared glide-path error (per second, 1/m²) with its cap (m²).
 REWARDS: Dict[str, Any] = {
     "trap": 100.0,
     "wire_bonus": {1: 0.0, 2: 15.0, 3: 25.0, 4: 5.0},
@@ -97,163 +53,327 @@ REWARDS: Dict[str, Any] = {
     "wave_off": -50.0,
     "diverged": -200.0,
     "timeout": 0.0,
+    "error_weight": 0.1,
+    "error_cap_m2": 100.0,
 }
 
-#: Weight of the squared glide-path error (1/m² per second) and its cap (m²).
-ERROR_WEIGHT = 0.1
-ERROR_SQUARED_CAP_M2 = 100.0
+
+def _options(
+    scenario: Optional[Scenario],
+    control: str,
+    control_interval_s: float,
+    pitch_command_span_rad: float,
+    thrust_span_n: Optional[float],
+    elevator_span_rad: float,
+    climb_rate_span_mps: float,
+    rewards: Optional[Dict[str, Any]],
+    reward: str,
+    forecast: bool,
+) -> Tuple[Any, ...]:
+    table = dict(REWARDS)
+    if rewards is not None:
+        table.update(rewards)
+    return (
+        scenario,
+        control,
+        float(control_interval_s),
+        float(pitch_command_span_rad),
+        None if thrust_span_n is None else float(thrust_span_n),
+        float(elevator_span_rad),
+        float(climb_rate_span_mps),
+        table,
+        reward,
+        bool(forecast),
+    )
+
+
+def _spaces(description: Dict[str, Any]) -> Tuple[spaces.Box, spaces.Box]:
+    rows = description["observations"]
+    low = np.array([row["low"] for row in rows], dtype=np.float32)
+    high = np.array([row["high"] for row in rows], dtype=np.float32)
+    actions = len(description["actions"])
+    return (
+        spaces.Box(-1.0, 1.0, shape=(actions,), dtype=np.float32),
+        spaces.Box(low, high, dtype=np.float32),
+    )
+
+
+def _check_render_mode(render_mode: Optional[str]) -> None:
+    if render_mode not in (None, "rgb_array"):
+        raise ValueError(f"`render_mode` = {render_mode!r} is not allowed: expected None or 'rgb_array'")
+
+
+def _draw_seed(generator: np.random.Generator) -> int:
+    return int(generator.integers(0, MAX_SEED, endpoint=True))
 
 
 class CarrierLandingEnv(gymnasium.Env):
-    """Land the F/A-18 on the moving carrier deck: commands are the pitch attitude and
-    the thrust (see the module's doc for the spaces, the reward and the seeding).
+    """Land the F/A-18 on the moving carrier deck (``docs/rl-environment.md``).
 
-    ``scenario`` is a :class:`deckland.Scenario` (the default: adverse conditions);
-    ``control_interval_s`` the length of a step; ``pitch_command_span_rad`` and
-    ``thrust_span_n`` scale the actions; ``wave_off_error_m`` is the glide-path error
-    that ends an episode as a wave-off; ``rewards`` replaces :data:`REWARDS`.
+    ``control`` is ``"surfaces"``, ``"attitude"`` (the default) or ``"guidance"``
+    (:data:`CONTROL_MODES`); ``scenario`` a :class:`deckland.Scenario` (the default:
+    adverse conditions; its automatic wave-off is turned off); ``control_interval_s``
+    the length of a step; the spans scale the actions (zero is the trim):
+    ``pitch_command_span_rad`` (10°), ``thrust_span_n`` (a quarter of the maximum
+    thrust), ``elevator_span_rad`` (10°), ``climb_rate_span_mps`` (5 m/s); ``reward``
+    is ``"shaped"`` or ``"sparse"``; ``rewards`` replaces entries of :data:`REWARDS`;
+    ``forecast=True`` adds the deck forecast to the observation; ``render_mode`` is
+    None or ``"rgb_array"``.
     """
 
-    metadata = {"render_modes": []}
+    metadata = {"render_modes": ["rgb_array"], "render_fps": 50}
 
     def __init__(
         self,
+        control: str = "attitude",
         scenario: Optional[Scenario] = None,
         control_interval_s: float = 0.02,
-        pitch_command_span_rad: float = np.deg2rad(10.0),
+        pitch_command_span_rad: float = float(np.deg2rad(10.0)),
         thrust_span_n: Optional[float] = None,
-        wave_off_error_m: float = 6.0,
+        elevator_span_rad: float = float(np.deg2rad(10.0)),
+        climb_rate_span_mps: float = 5.0,
         rewards: Optional[Dict[str, Any]] = None,
+        reward: str = "shaped",
+        forecast: bool = False,
         render_mode: Optional[str] = None,
     ) -> None:
         super().__init__()
-        if render_mode is not None:
-            raise ValueError(f"`render_mode` = {render_mode!r} is not allowed: expected None")
-        for name, value in (
-            ("pitch_command_span_rad", pitch_command_span_rad),
-            ("wave_off_error_m", wave_off_error_m),
-        ):
-            if not (np.isfinite(value) and value > 0):
-                raise ValueError(f"`{name}` = {value!r} is not allowed: expected a positive number")
-        self.approach = Approach(scenario, None, control_interval_s)
-        trim = self.approach.trim
-        self._theta_trim = trim["theta_rad"]
-        self._thrust_trim = trim["thrust_n"]
-        self._max_thrust = trim["max_thrust_n"]
-        self.pitch_command_span_rad = float(pitch_command_span_rad)
-        self.thrust_span_n = float(0.25 * self._max_thrust if thrust_span_n is None else thrust_span_n)
-        if not (np.isfinite(self.thrust_span_n) and self.thrust_span_n > 0):
-            raise ValueError(f"`thrust_span_n` = {thrust_span_n!r} is not allowed: expected a positive number")
-        self.action_ranges = self.approach.action_ranges
-        low, high = self.action_ranges["pitch_command_rad"]
-        reach = min(self._theta_trim - low, high - self._theta_trim)
-        if not self.pitch_command_span_rad <= reach:
-            raise ValueError(
-                f"`pitch_command_span_rad` = {pitch_command_span_rad!r} is not allowed: expected at "
-                f"most {reach!r} rad, so that the trim pitch ± the span stays within the pitch "
-                f"command's range [{low!r}, {high!r}] rad"
-            )
-        self.wave_off_error_m = float(wave_off_error_m)
-        self.rewards = dict(REWARDS if rewards is None else rewards)
-        scenario_now = self.approach.scenario
-        self._airspeed_reference = scenario_now["approach.airspeed_mps"]
-        self._mean_deck_height = scenario_now["environment.deck.deck_height_m"]
-        self.action_space = spaces.Box(-1.0, 1.0, shape=(2,), dtype=np.float32)
-        self.observation_space = spaces.Box(_LOW, _HIGH, dtype=np.float32)
-        self._ended = False
-
-    def action_for(self, pitch_command_rad: float, thrust_n: float) -> np.ndarray:
-        """The action that commands ``pitch_command_rad`` and ``thrust_n``.
-
-        Each must lie within its physical range, as an action of :class:`deckland.Approach`
-        (:attr:`action_ranges`: the pitch attitude's range, from no thrust to the maximum
-        of both engines), else ``ValueError`` names it, its value and the range. A command
-        within it but beyond what the action space reaches (θ_trim ±
-        ``pitch_command_span_rad``, T_trim ± ``thrust_span_n``) is clipped to the space's
-        edge."""
-        for name, value in (("pitch_command_rad", pitch_command_rad), ("thrust_n", thrust_n)):
-            low, high = self.action_ranges[name]
-            if not low <= value <= high:
-                raise ValueError(
-                    f"`{name}` = {value!r} is not allowed: expected a number in [{low!r}, {high!r}]"
-                )
-        action = np.array(
-            [
-                (pitch_command_rad - self._theta_trim) / self.pitch_command_span_rad,
-                (thrust_n - self._thrust_trim) / self.thrust_span_n,
-            ]
+        _check_render_mode(render_mode)
+        self._kwargs = dict(
+            control=control,
+            scenario=scenario,
+            control_interval_s=control_interval_s,
+            pitch_command_span_rad=pitch_command_span_rad,
+            thrust_span_n=thrust_span_n,
+            elevator_span_rad=elevator_span_rad,
+            climb_rate_span_mps=climb_rate_span_mps,
+            rewards=rewards,
+            reward=reward,
+            forecast=forecast,
+            render_mode=render_mode,
         )
-        return np.clip(action, -1.0, 1.0).astype(np.float32)
-
-    def commands(self, action: np.ndarray) -> Dict[str, float]:
-        """The Approach action (pitch command in rad, thrust in N) of an env action, which
-        must lie in the action space (two numbers in [-1, 1]), else ``ValueError``."""
-        try:
-            a = np.asarray(action, dtype=np.float64)
-        except (TypeError, ValueError):
-            a = None
-        if a is None or a.shape != (2,) or not np.all((a >= -1.0) & (a <= 1.0)):
-            raise ValueError(
-                f"`action` = {action!r} is not allowed: expected two numbers in [-1, 1] (the action space)"
+        self.control = control
+        self.render_mode = render_mode
+        self._core = _Env(
+            *_options(
+                scenario,
+                control,
+                control_interval_s,
+                pitch_command_span_rad,
+                thrust_span_n,
+                elevator_span_rad,
+                climb_rate_span_mps,
+                rewards,
+                reward,
+                forecast,
             )
-        return {
-            "pitch_command_rad": self._theta_trim + a[0] * self.pitch_command_span_rad,
-            "thrust_n": float(np.clip(self._thrust_trim + a[1] * self.thrust_span_n, 0.0, self._max_thrust)),
-        }
-
-    def _vector(self, o: Dict[str, Any]) -> np.ndarray:
-        predicted = o["predicted_deck_height_m"]
-        values = (
-            o["glide_path_error_m"],
-            o["sink_rate_mps"],
-            o["theta_rad"] - self._theta_trim,
-            o["q_radps"],
-            o["alpha_rad"],
-            o["airspeed_mps"] - self._airspeed_reference,
-            (predicted - self._mean_deck_height) if np.isfinite(predicted) else 0.0,
-            o["range_to_go_m"],
-            o["time_to_go_s"],
-            o["elevator_rad"],
-            o["thrust_n"] / self._max_thrust,
         )
-        vector = np.nan_to_num(np.array(values, dtype=np.float64), nan=0.0)
-        return np.clip(vector, _LOW, _HIGH).astype(np.float32)
+        self.description = self._core.describe()
+        self.observation_names = tuple(row["name"] for row in self.description["observations"])
+        self.action_names = tuple(self.description["actions"])
+        self.built_in_loops = tuple(self.description["built_in_loops"])
+        self.action_space, self.observation_space = _spaces(self.description)
+        self._episode_seed: Optional[int] = None
 
     def reset(
         self, *, seed: Optional[int] = None, options: Optional[Dict[str, Any]] = None
     ) -> Tuple[np.ndarray, Dict[str, Any]]:
+        """Starts an episode: ``seed`` flies the scenario with that seed (every random
+        stream's); without one the next seed is drawn from the environment's generator,
+        itself seeded by the last ``reset(seed=…)``."""
         super().reset(seed=seed)
         if seed is None:
-            seed = int(self.np_random.integers(0, MAX_SEED, endpoint=True))
-        self._ended = False
-        observation = self.approach.reset(seed=seed)
-        return self._vector(observation), observation
+            seed = _draw_seed(self.np_random)
+        observation, raw, pilot = self._core.reset(seed)
+        self._episode_seed = int(seed)
+        info = {
+            "raw": raw,
+            "autopilot_action": pilot,
+            "seed": int(seed),
+            "built_in_loops": self.built_in_loops,
+        }
+        return observation, info
 
     def step(self, action: np.ndarray) -> Tuple[np.ndarray, float, bool, bool, Dict[str, Any]]:
-        if self._ended:
-            raise RuntimeError("the episode has ended: call reset() first")
-        o = self.approach.step(self.commands(action))
-        error = o["glide_path_error_m"]
-        reward = -ERROR_WEIGHT * min(error * error, ERROR_SQUARED_CAP_M2) * self.approach.control_interval_s
-        terminated = truncated = False
-        if o["done"]:
-            outcome = o["outcome"]
-            if outcome == "timeout":
-                truncated = True
-            else:
-                terminated = True
-            reward += float(self.rewards.get(outcome, 0.0))
-            if outcome == "trap":
-                reward += float(self.rewards.get("wire_bonus", {}).get(o["wire"], 0.0))
-        elif not abs(error) <= self.wave_off_error_m:
-            terminated = True
-            o = dict(o, outcome="wave_off", reason=f"waved off: glide-path error {error:.1f} m")
-            reward += float(self.rewards.get("wave_off", 0.0))
-        self._ended = terminated or truncated
-        return self._vector(o), float(reward), terminated, truncated, o
+        return self._core.step(action)
+
+    def render(self) -> Optional[np.ndarray]:
+        """The side view of the approach now, a (200, 400, 3) uint8 array (with
+        ``render_mode="rgb_array"``; None otherwise)."""
+        if self.render_mode != "rgb_array":
+            return None
+        return self._core.render()
+
+    @property
+    def seed_of_episode(self) -> Optional[int]:
+        """The seed of the episode flown (None before the first reset)."""
+        return self._episode_seed
+
+    # Pickling and copying: the options, the generator, and the episode replayed from its
+    # seed with its actions (the simulation is deterministic, so the copy is the
+    # original bit for bit).
+    def __getstate__(self) -> Dict[str, Any]:
+        return {
+            "kwargs": self._kwargs,
+            "np_random": None if self._np_random is None else copy.deepcopy(self._np_random),
+            "seed": self._episode_seed,
+            "actions": self._core.actions() if self._episode_seed is not None else None,
+        }
+
+    def __setstate__(self, state: Dict[str, Any]) -> None:
+        self.__init__(**state["kwargs"])
+        if state["seed"] is not None:
+            self._core.reset(state["seed"])
+            self._episode_seed = state["seed"]
+            for action in state["actions"]:
+                self.step(action)
+        self._np_random = state["np_random"]
+
+    def __deepcopy__(self, memo: Dict[int, Any]) -> "CarrierLandingEnv":
+        clone = CarrierLandingEnv.__new__(CarrierLandingEnv)
+        clone.__setstate__(copy.deepcopy(self.__getstate__(), memo))
+        return clone
+
+
+class CarrierLandingVecEnv(VectorEnv):
+    """``num_envs`` environments of :class:`CarrierLandingEnv` stepped in one call to
+    Rust, over threads (``RAYON_NUM_THREADS``, default: every core): numpy arrays in and
+    out, no Python per environment.
+
+    Autoreset is Gymnasium's next-step mode: the step after an episode ends resets
+    that environment (its action ignored, reward 0). Seeds follow Gymnasium:
+    ``reset(seed=s)`` seeds environment i with ``s + i`` (a list gives each its own);
+    each environment then draws the seeds of its next episodes from its own generator,
+    as a single environment does, so environment i flies what a single environment
+    reset with the same seed flies, bit for bit. ``max_episode_steps`` truncates an
+    episode (the registration's 3000 by default). Same options as
+    :class:`CarrierLandingEnv`.
+    """
+
+    metadata = {
+        "render_modes": ["rgb_array"],
+        "render_fps": 50,
+        "autoreset_mode": AutoresetMode.NEXT_STEP,
+    }
+
+    def __init__(
+        self,
+        num_envs: int = 1,
+        control: str = "attitude",
+        scenario: Optional[Scenario] = None,
+        control_interval_s: float = 0.02,
+        pitch_command_span_rad: float = float(np.deg2rad(10.0)),
+        thrust_span_n: Optional[float] = None,
+        elevator_span_rad: float = float(np.deg2rad(10.0)),
+        climb_rate_span_mps: float = 5.0,
+        rewards: Optional[Dict[str, Any]] = None,
+        reward: str = "shaped",
+        forecast: bool = False,
+        render_mode: Optional[str] = None,
+        max_episode_steps: Optional[int] = MAX_EPISODE_STEPS,
+    ) -> None:
+        _check_render_mode(render_mode)
+        if max_episode_steps is not None and not (isinstance(max_episode_steps, (int, np.integer)) and max_episode_steps > 0):
+            raise ValueError(
+                f"`max_episode_steps` = {max_episode_steps!r} is not allowed: expected a positive integer or None"
+            )
+        self.num_envs = int(num_envs)
+        self.control = control
+        self.render_mode = render_mode
+        self._core = _VecEnv(
+            self.num_envs,
+            *_options(
+                scenario,
+                control,
+                control_interval_s,
+                pitch_command_span_rad,
+                thrust_span_n,
+                elevator_span_rad,
+                climb_rate_span_mps,
+                rewards,
+                reward,
+                forecast,
+            ),
+            None if max_episode_steps is None else int(max_episode_steps),
+        )
+        self.description = self._core.describe()
+        self.observation_names = tuple(row["name"] for row in self.description["observations"])
+        self.action_names = tuple(self.description["actions"])
+        self.built_in_loops = tuple(self.description["built_in_loops"])
+        self.outcomes = tuple(self.description["outcomes"])
+        self.single_action_space, self.single_observation_space = _spaces(self.description)
+        self.action_space = batch_space(self.single_action_space, self.num_envs)
+        self.observation_space = batch_space(self.single_observation_space, self.num_envs)
+        self._generators: List[Optional[np.random.Generator]] = [None] * self.num_envs
+        self._autoreset = np.zeros(self.num_envs, dtype=bool)
+        self._zeros = np.zeros((self.num_envs, len(self.action_names)), dtype=np.float32)
+
+    def _seed(self, i: int, seed: Optional[int]) -> int:
+        if seed is not None:
+            self._generators[i], _ = gymnasium.utils.seeding.np_random(int(seed))
+            return int(seed)
+        if self._generators[i] is None:
+            self._generators[i], _ = gymnasium.utils.seeding.np_random()
+        return _draw_seed(self._generators[i])
+
+    def reset(
+        self,
+        *,
+        seed: Optional[Union[int, Sequence[Optional[int]]]] = None,
+        options: Optional[Dict[str, Any]] = None,
+    ) -> Tuple[np.ndarray, Dict[str, Any]]:
+        if seed is None:
+            seeds: List[Optional[int]] = [None] * self.num_envs
+        elif isinstance(seed, (int, np.integer)):
+            seeds = [int(seed) + i for i in range(self.num_envs)]
+        else:
+            seeds = list(seed)
+            if len(seeds) != self.num_envs:
+                raise ValueError(
+                    f"`seed` = {seed!r} is not allowed: expected an int, None or {self.num_envs} seeds"
+                )
+        drawn = [self._seed(i, s) for i, s in enumerate(seeds)]
+        observation, _, _, _, raw, pilot, _, _ = self._core.step(
+            self._zeros, [True] * self.num_envs, drawn
+        )
+        self._autoreset[:] = False
+        return observation, {"raw": raw, "autopilot_action": pilot, "seed": np.array(drawn, dtype=np.int64)}
+
+    def step(
+        self, actions: np.ndarray
+    ) -> Tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, Dict[str, Any]]:
+        restart = self._autoreset
+        if restart.any():
+            seeds = [self._seed(i, None) if restart[i] else 0 for i in range(self.num_envs)]
+        else:
+            seeds = [0] * self.num_envs
+        observation, reward, terminated, truncated, raw, pilot, codes, wires = self._core.step(
+            actions, restart.tolist(), seeds
+        )
+        info: Dict[str, Any] = {"raw": raw, "autopilot_action": pilot}
+        ended = terminated | truncated
+        if ended.any():
+            names = np.array([self.outcomes[c] if c >= 0 else None for c in codes], dtype=object)
+            info["outcome"] = names
+            info["_outcome"] = ended
+            info["wire"] = wires
+            info["_wire"] = ended
+        self._autoreset = ended
+        return observation, reward, terminated, truncated, info
+
+    def render(self) -> Optional[Tuple[np.ndarray, ...]]:
+        """Each environment's side view (with ``render_mode="rgb_array"``)."""
+        if self.render_mode != "rgb_array":
+            return None
+        return tuple(self._core.render(i) for i in range(self.num_envs))
 
 
 def register() -> None:
-    """Registers :data:`ENV_ID` with gymnasium (once)."""
+    """Registers :data:`ENV_ID` with gymnasium (once), with its vector entry point."""
     if ENV_ID not in gymnasium.registry:
-        gymnasium.register(id=ENV_ID, entry_point="deckland.env:CarrierLandingEnv")
+        gymnasium.register(
+            id=ENV_ID,
+            entry_point="deckland.env:CarrierLandingEnv",
+            vector_entry_point="deckland.env:CarrierLandingVecEnv",
+            max_episode_steps=MAX_EPISODE_STEPS,
+        )

@@ -1,10 +1,11 @@
-"""Two agents fly one episode each of ``deckland/CarrierLanding-v0``: a random agent and
-a scripted one. Nothing is trained.
+"""Two agents fly one episode each of ``deckland/CarrierLanding-v1`` (``attitude``
+mode): a random agent and a scripted one. Nothing is trained.
 
-The scripted agent reads the built-in cascade's commands from ``info`` (the guidance and
-sink-rate loops' pitch command, the speed loop's thrust) and sends them as its action:
-the cascade sampled every 20 ms, a baseline an agent should beat. The random agent
-samples the action space and is soon waved off or worse.
+The scripted agent sends back ``info["autopilot_action"]``, the action the built-in
+cascade would take now (the guidance and sink-rate loops' pitch command, the speed
+loop's thrust): the cascade sampled every 20 ms, without direct lift and without the
+automatic wave-off, a baseline an agent should beat. The random agent samples the action
+space.
 
 Run: ``python gym_agents.py`` (needs ``pip install ./python[gymnasium]``).
 """
@@ -14,7 +15,7 @@ from __future__ import annotations
 import gymnasium
 import numpy as np
 
-import deckland  # noqa: F401  (registers deckland/CarrierLanding-v0)
+import deckland  # noqa: F401  (registers deckland/CarrierLanding-v1)
 
 
 def random_agent(env):
@@ -22,8 +23,7 @@ def random_agent(env):
 
 
 def scripted_agent(env):
-    unwrapped = env.unwrapped
-    return lambda observation, info: unwrapped.action_for(info["theta_command_rad"], info["thrust_command_n"])
+    return lambda observation, info: info["autopilot_action"]
 
 
 def episode(env, agent, seed):
@@ -40,15 +40,16 @@ def episode(env, agent, seed):
 
 
 def main(seed: int = 1) -> dict:
-    env = gymnasium.make("deckland/CarrierLanding-v0")
+    env = gymnasium.make("deckland/CarrierLanding-v1")
     results = {}
     for name, make_agent in (("random", random_agent), ("scripted", scripted_agent)):
         steps, total, info = episode(env, make_agent(env), seed)
-        results[name] = info["outcome"]
+        outcome = info.get("outcome", "time limit")
+        results[name] = outcome
         wire = f", wire {info['wire']}" if info.get("wire") else ""
         reason = f" ({info['reason']})" if info.get("reason") else ""
-        print(f"{name:>8} agent: {info['outcome']}{wire}{reason} after {steps} steps "
-              f"({info['time_s']:.2f} s), return {total:.1f}")
+        print(f"{name:>8} agent: {outcome}{wire}{reason} after {steps} steps "
+              f"({steps * 0.02:.2f} s), return {total:.1f}")
     env.close()
     return results
 

@@ -9,6 +9,8 @@
 //! - [`flight`]: `fly`, one recorded approach; [`outputs`]: its summary, time series
 //!   and events as Python objects;
 //! - [`approach`]: `Approach`, the stepping API;
+//! - [`gym`]: the Gymnasium environment's core, one environment or many stepped over
+//!   threads; [`render`]: its frames;
 //! - [`campaign`]: `campaign`, Monte Carlo approaches in parallel;
 //! - [`columns`] and [`convert`]: rows of the CLI's CSV files as columns of numpy
 //!   arrays, and serde values as Python objects.
@@ -24,7 +26,9 @@ mod columns;
 mod convert;
 mod errors;
 mod flight;
+mod gym;
 mod outputs;
+mod render;
 mod scenario;
 mod six_dof;
 mod stepping;
@@ -42,6 +46,8 @@ mod _deckland {
     use super::campaign::{campaign, campaign_shard, merge_shards_text};
     #[pymodule_export]
     use super::flight::fly;
+    #[pymodule_export]
+    use super::gym::{Env, VecEnv};
     #[pymodule_export]
     use super::scenario::Scenario;
     #[pymodule_export]

@@ -11,8 +11,11 @@
 
 use std::f64::consts::FRAC_PI_2;
 
+use deckland::control::DeckReference;
 use deckland::scenario::Scenario as RustScenario;
-use deckland::simulation::{EndReason, Event, Overrides, Recorder, Signals, Simulation, Stop};
+use deckland::simulation::{
+    EndReason, Event, Overrides, Recorder, Signals, Simulation, Stop, Taps,
+};
 use pyo3::exceptions::PyTypeError;
 use pyo3::intern;
 use pyo3::prelude::*;
@@ -161,6 +164,9 @@ pub(crate) struct Look {
     /// The signals at the current state, with the inputs the next step holds (as
     /// `fly()` records them at this time).
     pub signals: Signals,
+    /// The deck reference the guidance computer holds over the next step (with the
+    /// deck forecast, from predictors that forecast), `None` outside an approach.
+    pub deck: Option<DeckReference>,
 }
 
 /// A simulation advanced one control interval at a time.
@@ -242,16 +248,23 @@ impl Stepper {
         }
         // Drawn now for the next step (the same draws it would make), so that the signals
         // are those the step starts from.
-        self.simulation.next_step_inputs();
+        let held = self.simulation.next_step_inputs();
         let look = Look {
             signals: self.simulation.signals(),
+            deck: held.deck,
         };
         self.look = Some(look);
         look
     }
 
-    /// Advances one control interval (or to the end) with `overrides` held.
-    pub fn advance<R: Recorder>(&mut self, recorder: &mut R, overrides: &Overrides) {
+    /// Why the approach ended, once it has.
+    pub fn end_reason(&self) -> Option<&EndReason> {
+        self.end.as_ref()
+    }
+
+    /// Advances one control interval (or to the end) with `taps` (for example the
+    /// action's [`Overrides`]) held.
+    pub fn advance<R: Recorder, T: Taps>(&mut self, recorder: &mut R, taps: &T) {
         if self.end.is_some() {
             return;
         }
@@ -260,7 +273,7 @@ impl Stepper {
         // `Simulation::time_s` is exactly `steps as f64 * dt`.
         let target_time_s = target as f64 * self.simulation.time_step_s();
         loop {
-            if let Stop::Ended(reason) = self.simulation.step_with(recorder, overrides) {
+            if let Stop::Ended(reason) = self.simulation.step_with(recorder, taps) {
                 self.end = Some(reason);
                 break;
             }

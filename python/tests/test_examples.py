@@ -50,6 +50,25 @@ def readme_block(heading: str) -> str:
     return after[start : after.index("```\n", start)]
 
 
+def test_the_readmes_gymnasium_example_runs():
+    exec(readme_block("### Gymnasium"), {})
+
+
+def test_the_baselines_example_scores_every_mode(tmp_path):
+    result = subprocess.run(
+        [sys.executable, str(EXAMPLES / "baselines.py"), "--episodes", "3"],
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
+    assert result.returncode == 0, result.stderr
+    rows = [line for line in result.stdout.splitlines() if line.startswith("| ") and "---" not in line][1:]
+    assert [row.split(" | ")[:2] for row in rows] == [
+        [f"| {mode}", policy] for mode in ("surfaces", "attitude", "guidance") for policy in ("autopilot", "random")
+    ]
+
+
 def test_the_readmes_dask_example_runs_as_a_saved_script(tmp_path):
     pytest.importorskip("distributed")
     pytest.importorskip("pandas")
