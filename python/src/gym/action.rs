@@ -1,0 +1,120 @@
+//! The agent's action: read, checked, turned into the taps, and the autopilot's.
+
+use deckland::simulation::Signals;
+use numpy::{PyArray1, PyArrayMethods};
+use pyo3::prelude::*;
+
+use super::config::EnvConfig;
+use super::control::{AgentTaps, Control};
+use crate::errors::argument_error;
+
+impl EnvConfig {
+    pub(super) fn action_len(&self) -> usize {
+        self.control.action_names().len()
+    }
+
+    /// The taps of `action` (checked: every entry in [−1, 1]).
+    pub(super) fn taps(&self, action: &[f64], waved_off: bool) -> AgentTaps {
+        let thrust =
+            |a: f64| (self.thrust_trim_n + a * self.thrust_span_n).clamp(0.0, self.max_thrust_n);
+        let (low, high) = self.elevator_range_rad;
+        match self.control {
+            Control::Surfaces => AgentTaps {
+                control: self.control,
+                first: (self.elevator_trim_rad + action[0] * self.elevator_span_rad)
+                    .clamp(low, high),
+                thrust_n: thrust(action[1]),
+                direct_lift: action[2] * self.max_direct_lift,
+                full_thrust_n: None,
+            },
+            Control::Attitude => AgentTaps {
+                control: self.control,
+                first: self.theta_trim_rad + action[0] * self.pitch_span_rad,
+                thrust_n: thrust(action[1]),
+                direct_lift: 0.0,
+                full_thrust_n: None,
+            },
+            Control::Guidance => AgentTaps {
+                control: self.control,
+                first: self.climb_rate_trim_mps + action[0] * self.climb_rate_span_mps,
+                thrust_n: 0.0,
+                direct_lift: 0.0,
+                full_thrust_n: waved_off.then_some(self.max_thrust_n),
+            },
+        }
+    }
+
+    /// The action that commands what the built-in loops compute now (the autopilot as a
+    /// policy; it never waves off), clipped to the action space.
+    pub(super) fn autopilot_action(&self, s: &Signals, action: &mut [f32]) {
+        let values: [f64; 4] = match self.control {
+            Control::Surfaces => [
+                (s.elevator_command_rad - self.elevator_trim_rad) / self.elevator_span_rad,
+                (s.thrust_command_n - self.thrust_trim_n) / self.thrust_span_n,
+                if self.max_direct_lift > 0.0 {
+                    s.direct_lift_command.unwrap_or(0.0) / self.max_direct_lift
+                } else {
+                    0.0
+                },
+                -1.0,
+            ],
+            Control::Attitude => [
+                (s.theta_ref_rad - self.theta_trim_rad) / self.pitch_span_rad,
+                (s.thrust_command_n - self.thrust_trim_n) / self.thrust_span_n,
+                -1.0,
+                0.0,
+            ],
+            Control::Guidance => [
+                (s.climb_rate_command_mps.unwrap_or(self.climb_rate_trim_mps)
+                    - self.climb_rate_trim_mps)
+                    / self.climb_rate_span_mps,
+                -1.0,
+                0.0,
+                0.0,
+            ],
+        };
+        for (out, value) in action.iter_mut().zip(values) {
+            let value = if value.is_nan() { 0.0 } else { value };
+            *out = value.clamp(-1.0, 1.0) as f32;
+        }
+    }
+
+    /// `action` checked: `len` finite numbers in [−1, 1], else `ValueError` naming it.
+    pub(super) fn check_action(&self, action: &[f64], which: &str) -> PyResult<()> {
+        let len = self.action_len();
+        if action.len() == len && action.iter().all(|a| (-1.0..=1.0).contains(a)) {
+            return Ok(());
+        }
+        Err(argument_error(
+            which,
+            format_args!("{action:?}"),
+            format_args!(
+                "{len} numbers in [-1, 1] (the action space: {})",
+                self.control.action_names().join(", ")
+            ),
+        ))
+    }
+}
+
+/// Reads an action (a 1-d array of float32 or float64, or a sequence of numbers).
+pub(super) fn action_values(action: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
+    if let Ok(a) = action.cast::<PyArray1<f32>>() {
+        if let Ok(values) = a.to_vec() {
+            return Ok(values.into_iter().map(f64::from).collect());
+        }
+    }
+    if let Ok(a) = action.cast::<PyArray1<f64>>() {
+        if let Ok(values) = a.to_vec() {
+            return Ok(values);
+        }
+    }
+    action.extract::<Vec<f64>>().map_err(|_| {
+        argument_error(
+            "action",
+            action
+                .repr()
+                .map_or_else(|_| "?".to_owned(), |r| r.to_string()),
+            "an array of numbers in [-1, 1]",
+        )
+    })
+}

@@ -1,0 +1,81 @@
+//! The outcomes of an episode and the rewards.
+
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use crate::errors::{argument_error, value_error};
+
+/// The outcomes, in the order of their codes (`_VecEnv.step`'s `outcome` column).
+pub(crate) const OUTCOMES: [&str; 7] = [
+    "trap",
+    "bolter",
+    "hard_landing",
+    "ramp_strike",
+    "wave_off",
+    "diverged",
+    "timeout",
+];
+
+/// The rewards (see the module's doc in `deckland/env.py`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Rewards {
+    /// At the end, in the order of [`OUTCOMES`].
+    pub(super) end: [f64; 7],
+    /// A trap's bonus per wire 1–4.
+    pub(super) wire_bonus: [f64; 4],
+    /// Weight of the squared glide-path error per second (1/m²/s); 0 in the sparse
+    /// reward.
+    pub(super) error_weight: f64,
+    /// Cap of the squared error (m²).
+    pub(super) error_cap_m2: f64,
+}
+
+impl Rewards {
+    pub(super) fn from_dict(rewards: &Bound<'_, PyDict>, shaped: bool) -> PyResult<Self> {
+        let number = |key: &str| -> PyResult<f64> {
+            let value = rewards
+                .get_item(key)?
+                .ok_or_else(|| value_error(format!("`rewards` has no `{key}`")))?;
+            let v: f64 = value.extract().map_err(|_| {
+                argument_error(&format!("rewards[{key:?}]"), value.to_string(), "a number")
+            })?;
+            if v.is_finite() {
+                Ok(v)
+            } else {
+                Err(argument_error(
+                    &format!("rewards[{key:?}]"),
+                    v,
+                    "a finite number",
+                ))
+            }
+        };
+        let mut end = [0.0; 7];
+        for (slot, name) in end.iter_mut().zip(OUTCOMES) {
+            *slot = number(name)?;
+        }
+        let bonus = rewards
+            .get_item("wire_bonus")?
+            .ok_or_else(|| value_error("`rewards` has no `wire_bonus`"))?;
+        let mut wire_bonus = [0.0; 4];
+        for (i, slot) in wire_bonus.iter_mut().enumerate() {
+            let value = bonus.get_item(i + 1).map_err(|_| {
+                value_error(format!("`rewards[\"wire_bonus\"]` has no wire {}", i + 1))
+            })?;
+            *slot = value.extract().map_err(|_| {
+                argument_error(
+                    &format!("rewards[\"wire_bonus\"][{}]", i + 1),
+                    value.to_string(),
+                    "a number",
+                )
+            })?;
+        }
+        let error_weight = if shaped { number("error_weight")? } else { 0.0 };
+        let error_cap_m2 = number("error_cap_m2")?;
+        Ok(Self {
+            end,
+            wire_bonus,
+            error_weight,
+            error_cap_m2,
+        })
+    }
+}
