@@ -114,6 +114,22 @@ fn every_json_document_is_documented_key_for_key() {
             ])),
         ),
         (
+            "With `--axis roll` or `yaw`, `--json` prints",
+            json_keys(&stdout_of(&[
+                "step",
+                "--axis",
+                "roll",
+                "--step-deg",
+                "10",
+                "--seconds",
+                "2",
+                "--json",
+                "--out",
+                out,
+                "--force",
+            ])),
+        ),
+        (
             "`summary.json` (and `--json`)\nholds",
             json_keys(&stdout_of(&[
                 "sink",

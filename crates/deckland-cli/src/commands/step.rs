@@ -1,6 +1,9 @@
 //! `deckland step`: a pitch-attitude step from level trim with the O-PD and/or the PID
 //! pitch controller (paper §5, Fig. 10–12): step-response metrics, elevator activity, a
-//! CSV of the time series and plots.
+//! CSV of the time series and plots; with `--axis roll|yaw` a bank or sideslip step of
+//! the 6-DOF aircraft with the lateral laws ([`lateral`]).
+
+pub(crate) mod lateral;
 
 use std::path::PathBuf;
 
@@ -41,7 +44,7 @@ pub enum StepControllers {
 }
 
 impl StepControllers {
-    fn choices(self) -> Vec<ControllerChoice> {
+    pub(crate) fn choices(self) -> Vec<ControllerChoice> {
         match self {
             Self::Opd => vec![ControllerChoice::Opd],
             Self::Pid => vec![ControllerChoice::Pid],
@@ -50,9 +53,25 @@ impl StepControllers {
     }
 }
 
+/// Which axis the step commands.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum StepAxis {
+    /// Pitch attitude (the 3-DOF aircraft and the scenario's pitch law).
+    Pitch,
+    /// Bank angle (the 6-DOF aircraft; roll law, the yaw law holding β = 0).
+    Roll,
+    /// Sideslip (the 6-DOF aircraft; yaw law, the roll law holding φ = 0).
+    Yaw,
+}
+
 /// Options of `deckland step`.
 #[derive(Debug, clap::Args)]
 pub struct StepArgs {
+    /// The axis stepped: pitch (default), roll or yaw. Roll and yaw fly the 6-DOF
+    /// aircraft's defaults at the approach trim with the lateral laws
+    /// (docs/lateral-control.md); the hardware set or scenario file then does not apply.
+    #[arg(long, value_enum, default_value_t = StepAxis::Pitch)]
+    pub(crate) axis: StepAxis,
     /// Which pitch controller(s) fly the step.
     #[arg(long, value_enum, default_value_t = StepControllers::Both)]
     pub(crate) controller: StepControllers,
@@ -398,6 +417,11 @@ fn print_table(report: &StepReport, written: &[PathBuf]) -> Result<()> {
 
 /// Runs the command.
 pub fn run(args: &StepArgs) -> Result<()> {
+    match args.axis {
+        StepAxis::Pitch => {}
+        StepAxis::Roll => return lateral::run(args, deckland::experiments::LateralAxis::Roll),
+        StepAxis::Yaw => return lateral::run(args, deckland::experiments::LateralAxis::Yaw),
+    }
     check_arguments(args)?;
     let flight = StepFlight::of(args)?;
     let epsilon = match controller_parameters(&flight.base, ControllerChoice::Opd, args.epsilon) {

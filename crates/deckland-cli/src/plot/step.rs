@@ -1,4 +1,7 @@
-//! `step_pitch` and `step_elevator`: the pitch step (paper Fig. 10–12).
+//! `step_pitch` and `step_elevator`: the pitch step (paper Fig. 10–12); the lateral
+//! step's figures in [`lateral`].
+
+pub(crate) mod lateral;
 
 use deckland::experiments::SETTLING_BAND_FRACTION;
 use deckland::simulation::Signals;

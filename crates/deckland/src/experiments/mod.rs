@@ -17,6 +17,7 @@
 mod approach;
 mod conditions;
 mod environment;
+mod lateral_step;
 mod pitch_step;
 pub mod reproduction;
 mod sink_rate;
@@ -28,6 +29,11 @@ pub use approach::{
 };
 pub use conditions::Conditions;
 pub use environment::{record_environment, EnvironmentRecord, EnvironmentSample};
+pub use lateral_step::{
+    fly_lateral_step, CrosswindGust, LateralAxis, LateralLaws, LateralSample, LateralSetup,
+    LateralStep, LateralStepError, LateralStepResponse, LateralStepRun,
+    LATERAL_SETTLING_BAND_FRACTION, LATERAL_STEP_TIME_S,
+};
 pub use pitch_step::{
     fly_pitch_step, PitchStep, PitchStepResponse, PitchStepRun, PITCH_STEP_RECORD_INTERVAL_S,
     PITCH_STEP_TIME_S, SETTLING_BAND_FRACTION,

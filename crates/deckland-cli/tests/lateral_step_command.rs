@@ -1,0 +1,97 @@
+//! Runs `deckland step --axis roll|yaw` end to end: the JSON document, the CSV and the
+//! plots of a 10° bank step, and the errors for a bad axis and a bad step.
+#![allow(clippy::unwrap_used)]
+
+mod common;
+
+use common::{deckland, scratch};
+
+#[test]
+fn a_roll_step_writes_json_csv_and_plots() {
+    let out = scratch("lateral");
+    let out_text = out.to_str().unwrap();
+    let result = deckland([
+        "step",
+        "--axis",
+        "roll",
+        "--step-deg",
+        "10",
+        "--seconds",
+        "5",
+        "--json",
+        "--out",
+        out_text,
+        "--force",
+    ]);
+    assert!(
+        result.status.success(),
+        "stderr: {}",
+        String::from_utf8_lossy(&result.stderr)
+    );
+    let report: serde_json::Value = serde_json::from_slice(&result.stdout).unwrap();
+    assert_eq!(report["axis"], "roll");
+    assert_eq!(report["step_deg"], 10.0);
+    assert_eq!(report["settling_band_pct"], 5.0);
+    assert_eq!(report["aileron_rate_limit_degps"], 100.0);
+    let controllers = report["controllers"].as_array().unwrap();
+    assert_eq!(controllers.len(), 2);
+    let opd = controllers
+        .iter()
+        .find(|c| c["controller"] == "O-PD")
+        .unwrap();
+    assert_eq!(opd["settled"], true, "{opd}");
+    assert!(opd["settling_time_s"].as_f64().unwrap() <= 2.0, "{opd}");
+    for file in [
+        "step.csv",
+        "step_bank.png",
+        "step_bank.svg",
+        "step_surfaces.png",
+        "step_surfaces.svg",
+    ] {
+        assert!(out.join(file).is_file(), "{file} missing");
+    }
+    let csv = std::fs::read_to_string(out.join("step.csv")).unwrap();
+    let header = csv.lines().next().unwrap();
+    assert!(
+        header.starts_with("time_s,opd_bank_deg,opd_bank_command_deg,opd_sideslip_deg"),
+        "{header}"
+    );
+    assert!(header.contains("pid_aileron_rate_degps"), "{header}");
+    // 5 s every 2 ms, and the header.
+    assert_eq!(csv.lines().count(), 2502);
+    let _ = std::fs::remove_dir_all(&out);
+}
+
+#[test]
+fn a_bad_axis_is_refused_with_the_choices() {
+    let result = deckland(["step", "--axis", "bank"]);
+    assert!(!result.status.success());
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    assert!(
+        stderr.contains("invalid value 'bank' for '--axis <AXIS>'")
+            && stderr.contains("pitch, roll, yaw"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn a_lateral_step_out_of_range_is_refused_by_name() {
+    let result = deckland(["step", "--axis", "yaw", "--step-deg", "40"]);
+    assert!(!result.status.success());
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    assert!(
+        stderr.contains("--step-deg") && stderr.contains("yaw") && stderr.contains("40"),
+        "{stderr}"
+    );
+    let result = deckland([
+        "step",
+        "--axis",
+        "roll",
+        "--step-deg",
+        "10",
+        "--epsilon",
+        "0.1",
+    ]);
+    assert!(!result.status.success());
+    assert!(String::from_utf8_lossy(&result.stderr).contains("--epsilon"));
+}

@@ -1,0 +1,95 @@
+//! The lateral step's figures of issue 26 (docs/lateral-control.md): the ideal 10° bank
+//! step, the adverse one over 20 seeds (median settling time and fraction settled, the
+//! aileron's rate RMS and time on its rate limit, the largest sideslip), the sideslip
+//! step, and a 5 m/s 1 − cos crosswind gust (4 s) with the wings held level, for the
+//! O-PD and the PID. Run with
+//! `cargo run --release -p deckland --example lateral_step_study`.
+
+use deckland::experiments::{
+    fly_lateral_step, CrosswindGust, LateralAxis, LateralSetup, LateralStep, LateralStepResponse,
+};
+use deckland::metrics::median;
+
+const SEEDS: u64 = 20;
+
+fn fly(
+    setup: &LateralSetup,
+    name: &str,
+    step: &LateralStep,
+) -> Result<LateralStepResponse, Box<dyn std::error::Error>> {
+    let (roll, yaw) = setup.registered_laws(name)?;
+    Ok(fly_lateral_step(setup, step, roll.as_ref(), yaw.as_ref())?.response)
+}
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let setup = LateralSetup::approach()?;
+    for name in ["observer_pd", "pid"] {
+        println!("== {name}");
+        let ideal = fly(
+            &setup,
+            name,
+            &LateralStep::new(LateralAxis::Roll, 10.0, 8.0),
+        )?;
+        println!(
+            "ideal 10° bank: settling (±5 %) {:?} s, overshoot {:.1} %, max |β| {:.2}°, \
+             aileron rate RMS {:.1} °/s, on rate limit {:.1} %",
+            ideal.settling_time_s,
+            ideal.overshoot_pct,
+            ideal.max_sideslip_error_deg,
+            ideal.aileron_rate_rms_degps,
+            100.0 * ideal.aileron_rate_limited_fraction
+        );
+        let mut runs = Vec::new();
+        for seed in 1..=SEEDS {
+            let step = LateralStep {
+                adverse: true,
+                seed,
+                ..LateralStep::new(LateralAxis::Roll, 10.0, 8.0)
+            };
+            runs.push(fly(&setup, name, &step)?);
+        }
+        let settled: Vec<f64> = runs
+            .iter()
+            .filter(|r| r.settled)
+            .filter_map(|r| r.settling_time_s)
+            .collect();
+        let fold = |f: fn(&LateralStepResponse) -> f64| runs.iter().map(f).fold(0.0, f64::max);
+        println!(
+            "adverse 10° bank, seeds 1–{SEEDS}: settled {}/{SEEDS}, median settling {:.3} s \
+             (of the settled), aileron rate RMS median {:.1} °/s (max {:.1}), on rate limit \
+             max {:.1} %, max |β| median {:.2}° (max {:.2}°), rudder rate RMS median {:.1} °/s",
+            settled.len(),
+            median(settled.iter().copied()),
+            median(runs.iter().map(|r| r.aileron_rate_rms_degps)),
+            fold(|r| r.aileron_rate_rms_degps),
+            100.0 * fold(|r| r.aileron_rate_limited_fraction),
+            median(runs.iter().map(|r| r.max_sideslip_error_deg)),
+            fold(|r| r.max_sideslip_error_deg),
+            median(runs.iter().map(|r| r.rudder_rate_rms_degps)),
+        );
+        let sideslip = fly(&setup, name, &LateralStep::new(LateralAxis::Yaw, 2.0, 10.0))?;
+        println!(
+            "ideal 2° sideslip step: settling (±5 %) {:?} s, overshoot {:.1} %, max |φ| {:.2}°, \
+             peak rudder {:.1}°",
+            sideslip.settling_time_s,
+            sideslip.overshoot_pct,
+            sideslip.max_bank_error_deg,
+            sideslip.max_rudder_deg
+        );
+        let gust = LateralStep {
+            gust: Some(CrosswindGust {
+                peak_mps: 5.0,
+                start_s: 1.0,
+                duration_s: 4.0,
+            }),
+            ..LateralStep::new(LateralAxis::Roll, 0.0, 8.0)
+        };
+        let gust = fly(&setup, name, &gust)?;
+        println!(
+            "5 m/s crosswind gust (1 − cos, 4 s), wings level: max |β| {:.2}°, peak rudder \
+             {:.1}°, peak aileron {:.1}°\n",
+            gust.max_sideslip_error_deg, gust.max_rudder_deg, gust.max_aileron_deg
+        );
+    }
+    Ok(())
+}

@@ -1,0 +1,347 @@
+//! A bank-angle or sideslip step of the 6-DOF aircraft from the approach trim (issue 26,
+//! docs/lateral-control.md): the roll law flies the bank channel, the yaw law the sideslip
+//! channel, the 80 Hz flight computer holds both.
+//!
+//! - **Plant**: `aircraft::six_dof` at the approach trim (69.1 m/s, level, landing
+//!   configuration, 150 m), RK4 at 1 ms, the actuators' limits applied after each step.
+//!   The longitudinal axis is left at trim: elevator and thrust commands held at their
+//!   trim values (no pitch law; a 10° bank asks 1.5 % more lift, which the run's few
+//!   seconds leave as a slow sink).
+//! - **Flight computer**: every 12.5 ms (80 Hz; frames of 12 or 13 steps of 1 ms) it samples
+//!   the measurements, and the surface commands it computes from them act one frame later
+//!   and are held for a frame (sample-and-hold plus one frame of computing: the 18.75 ms
+//!   the design assumes). The laws' states are integrated with the plant on the held
+//!   inputs, the measurement's age growing from the sample.
+//! - **Command**: the step at [`LATERAL_STEP_TIME_S`], shaped as the design code shapes a
+//!   step for the channel's surface (`control::design::design_command`: 60 % of the rate
+//!   limit, 80 % of the travel), with its feed-forward; the other channel is commanded
+//!   to zero (β = 0: coordination; φ = 0).
+//! - **Adverse**: lateral turbulence (a first-order Dryden v-gust, σ_v = σ_u = 0.540 m/s,
+//!   L = 30.48 m, the project's free-air turbulence form, docs/model.md §3.2, §10.6; the
+//!   loop has no lateral turbulence of its own yet, so it is written here), bank noise of
+//!   the pitch sensor's form (white σ 0.001 rad per sample plus 0.001 rad at 7 rad/s,
+//!   docs/model.md §3.3, an assumption for the bank channel) and air-data sideslip noise
+//!   (white σ 0.2°, docs/model.md §10.7, an assumption). No law reads the heading, so a
+//!   heading sensor's noise does not enter this experiment.
+//! - **Gust**: optionally a 1 − cos crosswind gust (earth y) to test coordination.
+
+use crate::aircraft::six_dof::{
+    linearize_six_dof, SixDofAircraft, SixDofCommands, SixDofState, Wind3,
+};
+use crate::control::design::command_shaping::JerkLimitedStep;
+use crate::control::design::{design_command, DesignRequest};
+use crate::control::lateral::design::channel_hardware;
+use crate::control::lateral::{
+    ChannelInputs, LateralChannel, RollLaw, RollLawInputs, YawLaw, YawLawInputs,
+};
+use crate::control::pitch::ElevatorSaturation;
+use crate::random::{NoiseStream, RandomStreams};
+use response::measure;
+
+mod response;
+mod setup;
+mod spec;
+
+pub use response::LateralStepResponse;
+pub use setup::{LateralLaws, LateralSetup};
+pub use spec::{
+    CrosswindGust, LateralAxis, LateralSample, LateralStep, LateralStepError, LateralStepRun,
+};
+
+/// Time of the step after the start (s).
+pub const LATERAL_STEP_TIME_S: f64 = 1.0;
+/// Half-width of the settling band as a fraction of the step (issue 26: ±5 %).
+pub const LATERAL_SETTLING_BAND_FRACTION: f64 = 0.05;
+/// Integration step (s).
+const DT_S: f64 = 0.001;
+/// The flight computer's frame (s): 80 Hz.
+const FRAME_S: f64 = 1.0 / 80.0;
+/// Altitude of the run (m).
+const ALTITUDE_M: f64 = 150.0;
+/// The lateral turbulence: σ_v (m/s) and scale (m), the project's free-air values.
+const TURBULENCE_SIGMA_V_MPS: f64 = 0.540;
+const TURBULENCE_SCALE_M: f64 = 30.48;
+/// Bank sensor: white σ per sample, sinusoid amplitude (rad) and frequency (rad/s).
+const BANK_WHITE_SIGMA_RAD: f64 = 0.001;
+const BANK_SINUSOID_RAD: f64 = 0.001;
+const BANK_SINUSOID_RADPS: f64 = 7.0;
+/// Air-data sideslip: white σ per sample (rad), 0.2°.
+const SIDESLIP_WHITE_SIGMA_RAD: f64 = 0.2 * std::f64::consts::PI / 180.0;
+/// Tolerance of "on the rate limit" (deg/s).
+const RATE_LIMIT_TOLERANCE_DEGPS: f64 = 1e-6;
+
+/// The sensors and turbulence of an adverse run, each on its own stream.
+struct Disturbances {
+    turbulence_v_mps: f64,
+    turbulence: NoiseStream,
+    bank_noise: NoiseStream,
+    sideslip_noise: NoiseStream,
+}
+
+/// The lateral signals of a plant state: (φ, β, p, −r) and the air data's sideslip.
+fn sideslip_rad(aircraft: &SixDofAircraft, state: &SixDofState, wind: &Wind3) -> f64 {
+    let air = aircraft.air_velocity(
+        [state.u_mps, state.v_mps, state.w_mps],
+        [state.phi_rad, state.theta_rad, state.psi_rad],
+        wind,
+    );
+    aircraft.air_data(air).beta_rad
+}
+
+const PLANT: usize = SixDofState::DIMENSION;
+const LAW: usize = 3;
+const N: usize = PLANT + 2 * LAW;
+
+/// Flies `step` from the approach trim of `setup` with the roll law `roll` and the yaw
+/// law `yaw` (module docs), and measures the stepped channel.
+pub fn fly_lateral_step(
+    setup: &LateralSetup,
+    step: &LateralStep,
+    roll: &dyn RollLaw,
+    yaw: &dyn YawLaw,
+) -> Result<LateralStepRun, LateralStepError> {
+    let bad = |field: &str, value: f64, expected: &str| {
+        Err(LateralStepError::Setup(format!(
+            "lateral step `{field}` = {value} is out of range: expected {expected}"
+        )))
+    };
+    if !(step.step_deg.is_finite() && step.step_deg.abs() <= 30.0) {
+        return bad(
+            "step_deg",
+            step.step_deg,
+            "a bank or sideslip step within ±30°",
+        );
+    }
+    if !(step.seconds.is_finite() && step.seconds >= 2.0 && step.seconds <= 600.0) {
+        return bad("seconds", step.seconds, "in [2, 600]");
+    }
+    if roll.state_names().len() > LAW || yaw.state_names().len() > LAW {
+        return Err(LateralStepError::Setup(format!(
+            "a lateral law has at most {LAW} states"
+        )));
+    }
+    let aircraft = &setup.aircraft;
+    let trim = &setup.trim;
+    let channel = match step.axis {
+        LateralAxis::Roll => LateralChannel::Roll,
+        LateralAxis::Yaw => LateralChannel::Yaw,
+    };
+    // The shaped command, as the design code shapes a step for this channel's surface.
+    let model = linearize_six_dof(aircraft, trim);
+    let hardware = channel_hardware(aircraft, &model, channel);
+    let shaped = if step.step_deg == 0.0 {
+        JerkLimitedStep::new(0.0, 1.0, 1.0)
+    } else {
+        let request = DesignRequest {
+            design_step_deg: step.step_deg.abs(),
+            ..DesignRequest::default()
+        };
+        let (fastest, _) = design_command(&hardware, &request)
+            .map_err(|e| LateralStepError::Setup(e.to_string()))?;
+        JerkLimitedStep::new(
+            step.step_deg.to_radians(),
+            fastest.jerk_radps3,
+            fastest.acceleration_radps2,
+        )
+    };
+
+    let streams = RandomStreams::new(step.seed);
+    let mut disturbances = Disturbances {
+        turbulence_v_mps: 0.0,
+        turbulence: streams.stream("lateral_turbulence_v"),
+        bank_noise: streams.stream("bank_noise"),
+        sideslip_noise: streams.stream("sideslip_noise"),
+    };
+    if step.adverse {
+        disturbances.turbulence_v_mps =
+            TURBULENCE_SIGMA_V_MPS * disturbances.turbulence.standard_normal();
+    }
+    let plant0 = trim.state(0.0, 0.0, ALTITUDE_M);
+    let mut x = [0.0; N];
+    x[..PLANT].copy_from_slice(&plant0.to_array());
+    let commands_trim = SixDofCommands {
+        elevator_rad: trim.elevator_rad,
+        thrust_n: trim.thrust_n,
+        aileron_rad: trim.aileron_rad,
+        rudder_rad: trim.rudder_rad,
+    };
+    let mut commands = commands_trim;
+    let mut pending = commands_trim;
+    let (mut roll_inputs, mut yaw_inputs) = (RollLawInputs::default(), YawLawInputs::default());
+    let mut sample_time_s = 0.0;
+    let mut samples = Vec::new();
+    let steps = (step.seconds / DT_S).round() as usize;
+    let record_every = ((step.record_interval_s / DT_S).round() as usize).max(1);
+    let mut frame_index: i64 = -1;
+    let mut diverged = false;
+    for k in 0..=steps {
+        let t = k as f64 * DT_S;
+        let plant = SixDofState::from_array(x[..PLANT].try_into().expect("plant slice"));
+        let wind = Wind3 {
+            x_mps: 0.0,
+            y_mps: disturbances.turbulence_v_mps + step.gust.map_or(0.0, |g| g.wind_mps(t)),
+            z_mps: 0.0,
+        };
+        let beta = sideslip_rad(aircraft, &plant, &wind);
+        let reference = |at: f64| {
+            if at < LATERAL_STEP_TIME_S {
+                (0.0, 0.0, 0.0)
+            } else {
+                let r = shaped.reference(at - LATERAL_STEP_TIME_S);
+                (r.theta_rad, r.rate_radps, r.acceleration_radps2)
+            }
+        };
+        let (angle_ref, rate_ref, acceleration_ref) = reference(t);
+        let (bank_ref, beta_ref) = match step.axis {
+            LateralAxis::Roll => (trim.phi_rad + angle_ref, trim.sideslip_rad),
+            LateralAxis::Yaw => (trim.phi_rad, trim.sideslip_rad + angle_ref),
+        };
+        // The flight computer's frame: sample, compute, and act one frame later.
+        let frame = (t / FRAME_S + 1e-9).floor() as i64;
+        if frame != frame_index {
+            frame_index = frame;
+            commands = pending;
+            sample_time_s = t;
+            let (bank_noise, beta_noise) = if step.adverse {
+                (
+                    BANK_WHITE_SIGMA_RAD * disturbances.bank_noise.standard_normal()
+                        + BANK_SINUSOID_RAD * (BANK_SINUSOID_RADPS * t).sin(),
+                    SIDESLIP_WHITE_SIGMA_RAD * disturbances.sideslip_noise.standard_normal(),
+                )
+            } else {
+                (0.0, 0.0)
+            };
+            let feed = |stepped: bool| {
+                if stepped {
+                    (rate_ref, acceleration_ref)
+                } else {
+                    (0.0, 0.0)
+                }
+            };
+            let (roll_rate_ref, roll_acc_ref) = feed(step.axis == LateralAxis::Roll);
+            let (yaw_rate_ref, yaw_acc_ref) = feed(step.axis == LateralAxis::Yaw);
+            roll_inputs = RollLawInputs(ChannelInputs {
+                command_rad: bank_ref,
+                command_rate_radps: roll_rate_ref,
+                command_acceleration_radps2: roll_acc_ref,
+                measured_rad: plant.phi_rad + bank_noise,
+                measurement_age_s: 0.0,
+                rate_measured_radps: plant.p_radps,
+                surface_actual_rad: plant.aileron_rad,
+                trim_angle_rad: trim.phi_rad,
+                surface_trim_rad: trim.aileron_rad,
+                surface_saturation: saturation(aircraft.aileron(), plant.aileron_rad),
+            });
+            yaw_inputs = YawLawInputs(ChannelInputs {
+                command_rad: beta_ref,
+                command_rate_radps: yaw_rate_ref,
+                command_acceleration_radps2: yaw_acc_ref,
+                measured_rad: beta + beta_noise,
+                measurement_age_s: 0.0,
+                rate_measured_radps: -plant.r_radps,
+                surface_actual_rad: plant.rudder_rad,
+                trim_angle_rad: trim.sideslip_rad,
+                surface_trim_rad: trim.rudder_rad,
+                surface_saturation: saturation(aircraft.rudder(), plant.rudder_rad),
+            });
+            if k == 0 {
+                roll.initial_state(&roll_inputs, &mut x[PLANT..PLANT + LAW]);
+                yaw.initial_state(&yaw_inputs, &mut x[PLANT + LAW..]);
+            }
+            pending = SixDofCommands {
+                aileron_rad: roll.surface_command_rad(&x[PLANT..PLANT + LAW], &roll_inputs),
+                rudder_rad: yaw.surface_command_rad(&x[PLANT + LAW..], &yaw_inputs),
+                ..commands_trim
+            };
+            if k == 0 {
+                commands = pending;
+            }
+        }
+        if k % record_every == 0 {
+            samples.push(LateralSample {
+                time_s: t,
+                bank_command_deg: bank_ref.to_degrees(),
+                bank_deg: plant.phi_rad.to_degrees(),
+                sideslip_command_deg: beta_ref.to_degrees(),
+                sideslip_deg: beta.to_degrees(),
+                heading_deg: plant.psi_rad.to_degrees(),
+                roll_rate_degps: plant.p_radps.to_degrees(),
+                yaw_rate_degps: plant.r_radps.to_degrees(),
+                aileron_deg: plant.aileron_rad.to_degrees(),
+                aileron_rate_degps: plant.aileron_rate_radps.to_degrees(),
+                rudder_deg: plant.rudder_rad.to_degrees(),
+                rudder_rate_degps: plant.rudder_rate_radps.to_degrees(),
+                wind_y_mps: wind.y_mps,
+                altitude_m: plant.h_m,
+            });
+        }
+        if k == steps {
+            break;
+        }
+        // RK4 over the plant and both laws' states, on the held inputs and commands.
+        let age0 = t - sample_time_s;
+        let derivative = |at: f64, state: &[f64; N]| -> [f64; N] {
+            let plant = SixDofState::from_array(state[..PLANT].try_into().expect("plant"));
+            let mut rate = [0.0; N];
+            let wind_at = Wind3 {
+                y_mps: wind.y_mps - step.gust.map_or(0.0, |g| g.wind_mps(t))
+                    + step.gust.map_or(0.0, |g| g.wind_mps(at)),
+                ..wind
+            };
+            rate[..PLANT]
+                .copy_from_slice(&aircraft.derivative(&plant, &commands, &wind_at).to_array());
+            let age = age0 + (at - t);
+            let mut roll_now = roll_inputs;
+            roll_now.0.measurement_age_s = age;
+            let mut yaw_now = yaw_inputs;
+            yaw_now.0.measurement_age_s = age;
+            let (roll_rate, yaw_rate) = rate[PLANT..].split_at_mut(LAW);
+            roll.derivative(&state[PLANT..PLANT + LAW], &roll_now, roll_rate);
+            yaw.derivative(&state[PLANT + LAW..], &yaw_now, yaw_rate);
+            rate
+        };
+        let k1 = derivative(t, &x);
+        let k2 = derivative(t + 0.5 * DT_S, &add(&x, &k1, 0.5 * DT_S));
+        let k3 = derivative(t + 0.5 * DT_S, &add(&x, &k2, 0.5 * DT_S));
+        let k4 = derivative(t + DT_S, &add(&x, &k3, DT_S));
+        for i in 0..N {
+            x[i] += DT_S / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+        }
+        let mut plant = SixDofState::from_array(x[..PLANT].try_into().expect("plant"));
+        aircraft.constrain(&mut plant);
+        x[..PLANT].copy_from_slice(&plant.to_array());
+        if step.adverse {
+            let decay = (-DT_S * trim.speed_mps / TURBULENCE_SCALE_M).exp();
+            disturbances.turbulence_v_mps = decay * disturbances.turbulence_v_mps
+                + TURBULENCE_SIGMA_V_MPS
+                    * (1.0 - decay * decay).sqrt()
+                    * disturbances.turbulence.standard_normal();
+        }
+        if !x.iter().all(|v| v.is_finite()) || plant.phi_rad.abs() > 1.5 {
+            diverged = true;
+            break;
+        }
+    }
+    let mut response = measure(step, channel, &samples, &shaped, aircraft, diverged)?;
+    response.controller = match channel {
+        LateralChannel::Roll => roll.label(),
+        LateralChannel::Yaw => yaw.label(),
+    }
+    .to_owned();
+    Ok(LateralStepRun { samples, response })
+}
+
+fn add(x: &[f64; N], k: &[f64; N], h: f64) -> [f64; N] {
+    let mut out = *x;
+    for i in 0..N {
+        out[i] += h * k[i];
+    }
+    out
+}
+
+fn saturation(
+    actuator: &crate::aircraft::ElevatorActuator,
+    position_rad: f64,
+) -> ElevatorSaturation {
+    ElevatorSaturation::from_position(position_rad, actuator.min_rad(), actuator.max_rad(), 1e-8)
+}
