@@ -25,9 +25,7 @@
 //!   heading sensor's noise does not enter this experiment.
 //! - **Gust**: optionally a 1 − cos crosswind gust (earth y) to test coordination.
 
-use crate::aircraft::six_dof::{
-    linearize_six_dof, SixDofAircraft, SixDofCommands, SixDofState, Wind3,
-};
+use crate::aircraft::six_dof::{linearize_six_dof, SixDofAircraft, SixDofCommands, SixDofState};
 use crate::control::design::command_shaping::JerkLimitedStep;
 use crate::control::design::{design_command, DesignRequest};
 use crate::control::lateral::design::channel_hardware;
@@ -35,6 +33,7 @@ use crate::control::lateral::{
     ChannelInputs, LateralChannel, RollLaw, RollLawInputs, YawLaw, YawLawInputs,
 };
 use crate::control::pitch::ElevatorSaturation;
+use crate::environment::Wind;
 use crate::random::{NoiseStream, RandomStreams};
 use response::measure;
 
@@ -79,7 +78,7 @@ struct Disturbances {
 }
 
 /// The lateral signals of a plant state: (φ, β, p, −r) and the air data's sideslip.
-fn sideslip_rad(aircraft: &SixDofAircraft, state: &SixDofState, wind: &Wind3) -> f64 {
+fn sideslip_rad(aircraft: &SixDofAircraft, state: &SixDofState, wind: &Wind) -> f64 {
     let air = aircraft.air_velocity(
         [state.u_mps, state.v_mps, state.w_mps],
         [state.phi_rad, state.theta_rad, state.psi_rad],
@@ -177,7 +176,7 @@ pub fn fly_lateral_step(
     for k in 0..=steps {
         let t = k as f64 * DT_S;
         let plant = SixDofState::from_array(x[..PLANT].try_into().expect("plant slice"));
-        let wind = Wind3 {
+        let wind = Wind {
             x_mps: 0.0,
             y_mps: disturbances.turbulence_v_mps + step.gust.map_or(0.0, |g| g.wind_mps(t)),
             z_mps: 0.0,
@@ -283,7 +282,7 @@ pub fn fly_lateral_step(
         let derivative = |at: f64, state: &[f64; N]| -> [f64; N] {
             let plant = SixDofState::from_array(state[..PLANT].try_into().expect("plant"));
             let mut rate = [0.0; N];
-            let wind_at = Wind3 {
+            let wind_at = Wind {
                 y_mps: wind.y_mps - step.gust.map_or(0.0, |g| g.wind_mps(t))
                     + step.gust.map_or(0.0, |g| g.wind_mps(at)),
                 ..wind
