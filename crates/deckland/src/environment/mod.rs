@@ -5,11 +5,14 @@
 //! flying +x; heights and heave are positive up; ship pitch is positive bow-up; wind is
 //! the air mass's velocity in earth axes, x positive forward (a headwind is negative) and
 //! z positive down; X, the argument of the wake model, is the distance aft of the ship's
-//! pitch centre (positive aft).
+//! pitch centre (positive aft). In three dimensions (§3.7–3.9) y is positive to the right
+//! of the final bearing, ship roll positive starboard side down and ship yaw positive bow
+//! to starboard.
 
 mod deck;
 pub mod lyapunov;
 mod ship;
+mod ship_lateral;
 mod ship_prediction;
 mod ship_simulator;
 mod turbulence;
@@ -21,6 +24,11 @@ pub use ship::{
     heave_unit_intensity_variance, pitch_unit_intensity_variance, shaping_filter_companion,
     unit_intensity_state_covariance, ShipMotion, ShipMotionOutputs, ShipMotionParameters,
     ShipMotionState, ShipNoise, HEAVE_FILTER_GAIN, PITCH_FILTER_GAIN, SHAPING_FILTER_DENOMINATOR,
+};
+pub use ship_lateral::{
+    roll_filter_companion, roll_unit_intensity_state_covariance, LateralShipMotion,
+    LateralShipMotionOutputs, LateralShipMotionState, LateralShipNoise, LateralShipStreams,
+    ROLL_FILTER_DAMPING_RATIO, ROLL_FILTER_NATURAL_FREQUENCY_RADPS,
 };
 pub use ship_prediction::{
     Matrix4Array, PredictedShipMotion, ShipMotionEstimate, ShipMotionForecast, ShipMotionPropagator,
