@@ -9,6 +9,7 @@
 //! of the final bearing, ship roll positive starboard side down and ship yaw positive bow
 //! to starboard.
 
+mod angled_deck;
 mod deck;
 pub mod lyapunov;
 mod ship;
@@ -19,6 +20,7 @@ mod turbulence;
 mod wind;
 mod wind_model;
 
+pub use angled_deck::{DeckCentreline, EarthDirection};
 pub use deck::{DeckGeometry, EarthPoint, EarthVelocity, ShipPose, ShipPoseRate};
 pub use ship::{
     heave_unit_intensity_variance, pitch_unit_intensity_variance, shaping_filter_companion,
