@@ -6,8 +6,8 @@
 //! the air mass's velocity in earth axes, x positive forward (a headwind is negative) and
 //! z positive down; X, the argument of the wake model, is the distance aft of the ship's
 //! pitch centre (positive aft). In three dimensions (§3.7–3.9) y is positive to the right
-//! of the final bearing, ship roll positive starboard side down and ship yaw positive bow
-//! to starboard.
+//! of the final bearing, ship roll positive starboard side down, ship yaw positive bow to
+//! starboard, and W_y positive blowing to the right.
 
 mod angled_deck;
 mod deck;
@@ -17,6 +17,7 @@ mod ship_lateral;
 mod ship_prediction;
 mod ship_simulator;
 mod turbulence;
+mod turbulence_lateral;
 mod wind;
 mod wind_model;
 
@@ -37,9 +38,10 @@ pub use ship_prediction::{
 };
 pub use ship_simulator::ShipMotionSimulator;
 pub use turbulence::Turbulence;
+pub use turbulence_lateral::LateralTurbulence;
 pub use wind::{
-    mean_wind, periodic_wake, steady_wake, Wind, WindComponents, WindParameters,
-    STEADY_WAKE_EXTENT_M, WAKE_TAPER_M,
+    mean_wind, mean_wind_over_angled_deck, periodic_wake, steady_wake, Wind, WindComponents,
+    WindParameters, STEADY_WAKE_EXTENT_M, WAKE_TAPER_M,
 };
 pub use wind_model::WindModel;
 
