@@ -35,6 +35,50 @@ pub mod stream_names {
     pub const SHIP_SENSOR_PITCH_RATE: &str = "ship_sensor_pitch_rate";
     /// The deck-motion estimator's error at a converged start (docs/model.md §3.5).
     pub const SHIP_ESTIMATE_START: &str = "ship_estimate_start";
+    /// White noise driving the ship roll filter (docs/model.md §3.7).
+    pub const SHIP_ROLL: &str = "ship_roll";
+    /// White noise driving the ship yaw filter (docs/model.md §3.7).
+    pub const SHIP_YAW: &str = "ship_yaw";
+    /// White noise driving the ship sway filter (docs/model.md §3.7).
+    pub const SHIP_SWAY: &str = "ship_sway";
+    /// Free-air turbulence, lateral component v1 (docs/model.md §3.9).
+    pub const TURBULENCE_V: &str = "turbulence_v";
+    /// Noise of the ship's roll measurement (docs/model.md §3.7).
+    pub const SHIP_SENSOR_ROLL: &str = "ship_sensor_roll";
+    /// Noise of the ship's roll-rate measurement (docs/model.md §3.7).
+    pub const SHIP_SENSOR_ROLL_RATE: &str = "ship_sensor_roll_rate";
+    /// Noise of the ship's yaw measurement (docs/model.md §3.7).
+    pub const SHIP_SENSOR_YAW: &str = "ship_sensor_yaw";
+    /// Noise of the ship's yaw-rate measurement (docs/model.md §3.7).
+    pub const SHIP_SENSOR_YAW_RATE: &str = "ship_sensor_yaw_rate";
+    /// Noise of the ship's sway measurement (docs/model.md §3.7).
+    pub const SHIP_SENSOR_SWAY: &str = "ship_sensor_sway";
+    /// Noise of the ship's sway-rate measurement (docs/model.md §3.7).
+    pub const SHIP_SENSOR_SWAY_RATE: &str = "ship_sensor_sway_rate";
+
+    /// Every stream name above, for checks that they are distinct.
+    pub const ALL: [&str; 20] = [
+        SHIP_HEAVE,
+        SHIP_PITCH,
+        TURBULENCE_U,
+        TURBULENCE_W,
+        PITCH_NOISE,
+        SHIP_SENSOR_HEAVE,
+        SHIP_SENSOR_HEAVE_RATE,
+        SHIP_SENSOR_PITCH,
+        SHIP_SENSOR_PITCH_RATE,
+        SHIP_ESTIMATE_START,
+        SHIP_ROLL,
+        SHIP_YAW,
+        SHIP_SWAY,
+        TURBULENCE_V,
+        SHIP_SENSOR_ROLL,
+        SHIP_SENSOR_ROLL_RATE,
+        SHIP_SENSOR_YAW,
+        SHIP_SENSOR_YAW_RATE,
+        SHIP_SENSOR_SWAY,
+        SHIP_SENSOR_SWAY_RATE,
+    ];
 }
 
 /// The 64-bit FNV-1a hash of `bytes` (Fowler–Noll–Vo, offset basis
@@ -141,6 +185,18 @@ mod tests {
             interleaved.push(pitch.standard_normal());
         }
         assert_eq!(alone, interleaved);
+    }
+
+    #[test]
+    fn every_stream_name_has_its_own_stream_number() {
+        // Distinct names could still share an FNV-1a hash, and then a stream; they do not.
+        let mut numbers: Vec<u64> = stream_names::ALL
+            .iter()
+            .map(|name| fnv1a_64(name.as_bytes()))
+            .collect();
+        numbers.sort_unstable();
+        numbers.dedup();
+        assert_eq!(numbers.len(), stream_names::ALL.len());
     }
 
     #[test]

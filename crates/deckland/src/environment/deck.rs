@@ -115,6 +115,15 @@ pub struct DeckGeometry {
     /// Height of the flight deck above mean sea level at zero heave and pitch (m); the
     /// paper gives none: 20, a typical carrier's flight-deck height above the waterline.
     pub deck_height_m: f64,
+    /// Angle of the landing area's centreline to port of the ship's centreline (deg);
+    /// docs/model.md §3.8: 9 (Nimitz class about 9.0–9.1°). The 3-DOF approach ignores it.
+    pub deck_angle_deg: f64,
+    /// Distance of the aim point to port of the ship's centreline (m); docs/model.md
+    /// §3.8: 10 (an assumption). The 3-DOF approach ignores it.
+    pub aim_point_port_of_centreline_m: f64,
+    /// Height of the flight deck above the ship's roll axis (m); docs/model.md §3.8: 19
+    /// (an assumption). The 3-DOF approach ignores it.
+    pub deck_height_above_roll_axis_m: f64,
 }
 
 impl Default for DeckGeometry {
@@ -124,13 +133,18 @@ impl Default for DeckGeometry {
             wire_positions_m: [-18.0, -6.0, 6.0, 18.0],
             ramp_aft_of_aim_point_m: 60.0,
             deck_height_m: 20.0,
+            deck_angle_deg: 9.0,
+            aim_point_port_of_centreline_m: 10.0,
+            deck_height_above_roll_axis_m: 19.0,
         }
     }
 }
 
 impl DeckGeometry {
     /// Checks every field: lengths in [0, 400] m (ramp distance > 0), deck height in
-    /// [0, 100] m, wires finite, strictly increasing and forward of the ramp.
+    /// [0, 100] m, wires finite, strictly increasing and forward of the ramp; deck angle
+    /// in [0, 15]°, aim point −30 to 30 m to port, deck height above the roll axis in
+    /// [0, 40] m.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "environment.deck";
         Bounds::closed(0.0, 400.0).check(
@@ -145,6 +159,17 @@ impl DeckGeometry {
             self.ramp_aft_of_aim_point_m,
         )?;
         Bounds::closed(0.0, 100.0).check(SECTION, "deck_height_m", self.deck_height_m)?;
+        Bounds::closed(0.0, 15.0).check(SECTION, "deck_angle_deg", self.deck_angle_deg)?;
+        Bounds::closed(-30.0, 30.0).check(
+            SECTION,
+            "aim_point_port_of_centreline_m",
+            self.aim_point_port_of_centreline_m,
+        )?;
+        Bounds::closed(0.0, 40.0).check(
+            SECTION,
+            "deck_height_above_roll_axis_m",
+            self.deck_height_above_roll_axis_m,
+        )?;
         for &position in &self.wire_positions_m {
             Bounds::closed(-400.0, 400.0).check(SECTION, "wire_positions_m", position)?;
         }

@@ -40,6 +40,14 @@ pub struct ShipMotionParameters {
     pub pitch_rms_deg: f64,
     /// Ship forward speed along +x (m/s); docs/model.md §3.1 default 0 (paper).
     pub forward_speed_mps: f64,
+    /// Stationary RMS of roll φ_s (deg); docs/model.md §3.7 default 1.0 (an assumption).
+    pub roll_rms_deg: f64,
+    /// Stationary RMS of yaw ψ_s about the mean heading (deg); docs/model.md §3.7 default
+    /// 0.3 (an assumption).
+    pub yaw_rms_deg: f64,
+    /// Stationary RMS of sway, the sideways displacement of the ship (m); docs/model.md
+    /// §3.7 default 0.5 (an assumption).
+    pub sway_rms_m: f64,
 }
 
 impl Default for ShipMotionParameters {
@@ -49,17 +57,24 @@ impl Default for ShipMotionParameters {
             heave_rms_m: 2.0,
             pitch_rms_deg: 1.5,
             forward_speed_mps: 0.0,
+            roll_rms_deg: 1.0,
+            yaw_rms_deg: 0.3,
+            sway_rms_m: 0.5,
         }
     }
 }
 
 impl ShipMotionParameters {
-    /// Checks every field: RMS values in [0, 50] m and [0, 30]°, speed in [0, 30] m/s.
+    /// Checks every field: heave RMS in [0, 50] m, pitch RMS in [0, 30]°, speed in
+    /// [0, 30] m/s, roll RMS in [0, 30]°, yaw RMS in [0, 10]°, sway RMS in [0, 20] m.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "environment.ship";
         Bounds::closed(0.0, 50.0).check(SECTION, "heave_rms_m", self.heave_rms_m)?;
         Bounds::closed(0.0, 30.0).check(SECTION, "pitch_rms_deg", self.pitch_rms_deg)?;
         Bounds::closed(0.0, 30.0).check(SECTION, "forward_speed_mps", self.forward_speed_mps)?;
+        Bounds::closed(0.0, 30.0).check(SECTION, "roll_rms_deg", self.roll_rms_deg)?;
+        Bounds::closed(0.0, 10.0).check(SECTION, "yaw_rms_deg", self.yaw_rms_deg)?;
+        Bounds::closed(0.0, 20.0).check(SECTION, "sway_rms_m", self.sway_rms_m)?;
         Ok(())
     }
 }

@@ -108,6 +108,10 @@ pub struct WindParameters {
     /// wake everywhere), `Some(L)` fades both out over the last [`WAKE_TAPER_M`] before L
     /// (docs/model.md §3.2; realistic default 914 m, the steady wake's own bound).
     pub wake_extent_m: Option<f64>,
+    /// Steady wind across the landing area (m/s, positive blowing to the right, from the
+    /// left: W_y); docs/model.md §3.9: 0. Part of the mean wind. The 3-DOF approach does
+    /// not feel it.
+    pub crosswind_mps: f64,
 }
 
 impl Default for WindParameters {
@@ -124,13 +128,14 @@ impl Default for WindParameters {
             periodic_wake_ship_pitch_rad: 0.05,
             periodic_wake_frequency_radps: 1.25,
             wake_extent_m: Some(STEADY_WAKE_EXTENT_M),
+            crosswind_mps: 0.0,
         }
     }
 }
 
 impl WindParameters {
     /// Checks every field: speeds in [0, 40] m/s, σ in [0, 10] m/s, scale in (0, 3000] m,
-    /// θ_s in [0, 0.5] rad, ω_p in [0, 20] rad/s.
+    /// θ_s in [0, 0.5] rad, ω_p in [0, 20] rad/s, crosswind in [−10, 10] m/s.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "environment.wind";
         let sigma = Bounds::closed(0.0, 10.0);
@@ -160,6 +165,7 @@ impl WindParameters {
         if let Some(extent) = self.wake_extent_m {
             Bounds::closed(2.0 * WAKE_TAPER_M, 5000.0).check(SECTION, "wake_extent_m", extent)?;
         }
+        Bounds::closed(-10.0, 10.0).check(SECTION, "crosswind_mps", self.crosswind_mps)?;
         Ok(())
     }
 
@@ -197,6 +203,26 @@ impl WindParameters {
 /// over the deck exceeds the ship's speed.
 pub fn mean_wind(wind_over_deck_mps: f64, ship_forward_speed_mps: f64) -> Wind {
     Wind::longitudinal(-(wind_over_deck_mps - ship_forward_speed_mps), 0.0)
+}
+
+/// Mean wind over an angled deck (docs/model.md §3.9): the wind over the deck V_wd runs
+/// down the landing area's centreline (earth x; the ship steers for it) and the
+/// crosswind blows across it. The ship moves at V·(cos δ, sin δ) (its mean heading is the
+/// deck angle δ to the right of earth x), so the air's earth velocity is
+/// W = (−(V_wd − V·cos δ), V·sin δ + crosswind, 0). With δ = 0 and no crosswind it is
+/// [`mean_wind`] exactly.
+pub fn mean_wind_over_angled_deck(
+    wind_over_deck_mps: f64,
+    ship_forward_speed_mps: f64,
+    deck_angle_rad: f64,
+    crosswind_mps: f64,
+) -> Wind {
+    let (sin, cos) = deck_angle_rad.sin_cos();
+    Wind {
+        x_mps: -(wind_over_deck_mps - ship_forward_speed_mps * cos),
+        y_mps: ship_forward_speed_mps * sin + crosswind_mps,
+        z_mps: 0.0,
+    }
 }
 
 /// Steady wake at X = `distance_aft_m` (m, positive aft), paper Eq. 21–22:

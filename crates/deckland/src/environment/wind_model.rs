@@ -4,7 +4,10 @@
 //! process in [`super::turbulence`]; this module composes them.
 
 use super::turbulence::Turbulence;
-use super::wind::{mean_wind, periodic_wake, steady_wake, Wind, WindComponents, WindParameters};
+use super::turbulence_lateral::LateralTurbulence;
+use super::wind::{
+    mean_wind_over_angled_deck, periodic_wake, steady_wake, Wind, WindComponents, WindParameters,
+};
 use crate::parameters::{Bounds, ParameterError};
 use crate::random::RandomStreams;
 
@@ -15,6 +18,12 @@ pub struct WindModel {
     parameters: WindParameters,
     ship_forward_speed_mps: f64,
     turbulence: Turbulence,
+    /// The mean wind, constant: [`mean_wind_over_angled_deck`] for the deck angle δ the
+    /// model is set up for (0 for the 3-DOF approach, where it is −(V_wd − V_ship) bit
+    /// for bit), zero when the mean wind is off.
+    mean: Wind,
+    /// Lateral turbulence v1, in the three-dimensional model only.
+    lateral_turbulence: Option<LateralTurbulence>,
 }
 
 impl WindModel {
@@ -35,7 +44,41 @@ impl WindModel {
             parameters,
             ship_forward_speed_mps,
             turbulence: Turbulence::new(&parameters, streams),
+            mean: Self::mean_wind(&parameters, ship_forward_speed_mps, 0.0),
+            lateral_turbulence: None,
         })
+    }
+
+    /// The mean wind for deck angle `deck_angle_rad` (rad), zero when it is off.
+    fn mean_wind(
+        parameters: &WindParameters,
+        ship_forward_speed_mps: f64,
+        deck_angle_rad: f64,
+    ) -> Wind {
+        if !parameters.mean_wind {
+            return Wind::default();
+        }
+        mean_wind_over_angled_deck(
+            parameters.wind_over_deck_mps,
+            ship_forward_speed_mps,
+            deck_angle_rad,
+            parameters.crosswind_mps,
+        )
+    }
+
+    /// The wind in three dimensions (docs/model.md §3.9): the mean wind set up over a
+    /// deck angled `deck_angle_rad` (rad) to the final bearing
+    /// ([`super::mean_wind_over_angled_deck`]) and lateral turbulence v1 from the
+    /// `turbulence_v` stream; every other component and stream as before. Without this
+    /// call (the 3-DOF approach) the deck angle is 0 and there is no v1.
+    pub fn three_dimensional(mut self, deck_angle_rad: f64, streams: &RandomStreams) -> Self {
+        self.mean = Self::mean_wind(
+            &self.parameters,
+            self.ship_forward_speed_mps,
+            deck_angle_rad,
+        );
+        self.lateral_turbulence = Some(LateralTurbulence::new(&self.parameters, streams));
+        self
     }
 
     /// The parameters the model was built from.
@@ -47,6 +90,9 @@ impl WindModel {
     /// its time constant is τ = L/V. Call once per step, outside the RK4 stages.
     pub fn advance(&mut self, dt: f64, airspeed_mps: f64) {
         self.turbulence.advance(dt, airspeed_mps);
+        if let Some(lateral) = &mut self.lateral_turbulence {
+            lateral.advance(dt, airspeed_mps);
+        }
     }
 
     /// Every component at time `time_s` (s) and X = `distance_aft_m` (m, positive aft).
@@ -59,12 +105,11 @@ impl WindModel {
             z_mps: wake * w.z_mps,
         };
         WindComponents {
-            mean: if p.mean_wind {
-                mean_wind(p.wind_over_deck_mps, self.ship_forward_speed_mps)
-            } else {
-                Wind::default()
+            mean: self.mean,
+            turbulence: match &self.lateral_turbulence {
+                None => self.turbulence.wind(),
+                Some(lateral) => self.turbulence.wind() + lateral.wind(),
             },
-            turbulence: self.turbulence.wind(),
             steady_wake: if p.steady_wake && wake > 0.0 {
                 scaled(steady_wake(distance_aft_m))
             } else {

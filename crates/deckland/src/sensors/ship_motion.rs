@@ -44,6 +44,18 @@ pub struct ShipMotionSensingParameters {
     /// the data link since long before the run; the default) or `cold` (knowing only
     /// the model; docs/model.md §3.5).
     pub estimator_start: EstimatorStart,
+    /// Standard deviation of the roll measurement (deg); assumption: 0.02 (§3.7).
+    pub roll_sigma_deg: f64,
+    /// Standard deviation of the roll-rate measurement (deg/s); assumption: 0.02.
+    pub roll_rate_sigma_degps: f64,
+    /// Standard deviation of the yaw measurement (deg); assumption: 0.02 (§3.7).
+    pub yaw_sigma_deg: f64,
+    /// Standard deviation of the yaw-rate measurement (deg/s); assumption: 0.02.
+    pub yaw_rate_sigma_degps: f64,
+    /// Standard deviation of the sway measurement (m); assumption: 0.05 (§3.7).
+    pub sway_sigma_m: f64,
+    /// Standard deviation of the sway-rate measurement (m/s); assumption: 0.05.
+    pub sway_rate_sigma_mps: f64,
 }
 
 /// How the deck-motion estimator starts (docs/model.md §3.5).
@@ -69,6 +81,12 @@ impl Default for ShipMotionSensingParameters {
             sample_rate_hz: 50.0,
             latency_s: 0.1,
             estimator_start: EstimatorStart::Converged,
+            roll_sigma_deg: 0.02,
+            roll_rate_sigma_degps: 0.02,
+            yaw_sigma_deg: 0.02,
+            yaw_rate_sigma_degps: 0.02,
+            sway_sigma_m: 0.05,
+            sway_rate_sigma_mps: 0.05,
         }
     }
 }
@@ -78,8 +96,8 @@ impl ShipMotionSensingParameters {
     pub const SECTION: &'static str = "environment.ship_sensing";
 
     /// Checks every field: σ in (0, 5] m and m/s, (0, 5]° and °/s (a perfect sensor has
-    /// no Kalman filter: its measurement covariance must be invertible); sample rate
-    /// 1–1000 Hz; latency 0–5 s.
+    /// no Kalman filter: its measurement covariance must be invertible), the same for
+    /// roll, yaw and sway (docs/model.md §3.7); sample rate 1–1000 Hz; latency 0–5 s.
     pub fn validate(&self) -> Result<(), ParameterError> {
         let section = Self::SECTION;
         let sigma = Bounds::positive_up_to(5.0);
@@ -92,7 +110,31 @@ impl ShipMotionSensingParameters {
             self.pitch_rate_sigma_degps,
         )?;
         Bounds::closed(1.0, 1000.0).check(section, "sample_rate_hz", self.sample_rate_hz)?;
-        Bounds::closed(0.0, 5.0).check(section, "latency_s", self.latency_s)
+        Bounds::closed(0.0, 5.0).check(section, "latency_s", self.latency_s)?;
+        for (key, value) in [
+            ("roll_sigma_deg", self.roll_sigma_deg),
+            ("roll_rate_sigma_degps", self.roll_rate_sigma_degps),
+            ("yaw_sigma_deg", self.yaw_sigma_deg),
+            ("yaw_rate_sigma_degps", self.yaw_rate_sigma_degps),
+            ("sway_sigma_m", self.sway_sigma_m),
+            ("sway_rate_sigma_mps", self.sway_rate_sigma_mps),
+        ] {
+            sigma.check(section, key, value)?;
+        }
+        Ok(())
+    }
+
+    /// The lateral standard deviations in SI units: roll (rad), roll rate (rad/s), yaw
+    /// (rad), yaw rate (rad/s), sway (m), sway rate (m/s).
+    pub fn lateral_sigmas_si(&self) -> [f64; 6] {
+        [
+            self.roll_sigma_deg.to_radians(),
+            self.roll_rate_sigma_degps.to_radians(),
+            self.yaw_sigma_deg.to_radians(),
+            self.yaw_rate_sigma_degps.to_radians(),
+            self.sway_sigma_m,
+            self.sway_rate_sigma_mps,
+        ]
     }
 
     /// The standard deviations in SI units: heave (m), heave rate (m/s), pitch (rad),

@@ -1,0 +1,198 @@
+//! The ship's roll, yaw and sway as the aircraft receives them (docs/model.md §3.7;
+//! shared model §10.5).
+//!
+//! The ship's inertial navigation measures roll, yaw, sway and their rates beside heave
+//! and pitch ([`super::ShipMotionSensor`]), at the same sample rate and over the same
+//! data link with the same latency; each channel carries white noise from its own
+//! stream (`ship_sensor_roll`, `ship_sensor_roll_rate`, …; docs/model.md §3.4), so the
+//! heave and pitch channels are unchanged. The defaults are assumptions like §3.5's:
+//! roll and yaw σ 0.02° (rates 0.02 °/s), sway σ 0.05 m (rate 0.05 m/s).
+//!
+//! Sampling is on the integration grid as for heave and pitch: a sample is taken at the
+//! first step at or after each multiple of the sample period and delivered at the first
+//! step at or after its time plus the latency.
+
+use std::collections::VecDeque;
+
+use super::ShipMotionSensingParameters;
+use crate::environment::LateralShipMotionOutputs;
+use crate::parameters::ParameterError;
+use crate::random::{stream_names, NoiseStream, RandomStreams};
+
+/// One measurement of the ship's roll, yaw and sway, as sent over the data link.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct LateralShipMotionMeasurement {
+    /// The time the sample was taken (s).
+    pub time_s: f64,
+    /// Roll (rad, starboard side down).
+    pub roll_rad: f64,
+    /// Roll rate (rad/s).
+    pub roll_rate_radps: f64,
+    /// Yaw from the mean heading (rad, bow to starboard).
+    pub yaw_rad: f64,
+    /// Yaw rate (rad/s).
+    pub yaw_rate_radps: f64,
+    /// Sway (m, to starboard).
+    pub sway_m: f64,
+    /// Sway rate (m/s).
+    pub sway_rate_mps: f64,
+}
+
+/// The measurement of `truth` at `time_s` with one noise sample of σ `sigmas` (SI, in
+/// the order of [`ShipMotionSensingParameters::lateral_sigmas_si`]) from each stream.
+pub fn measure_lateral_ship_motion(
+    time_s: f64,
+    truth: &LateralShipMotionOutputs,
+    sigmas: &[f64; 6],
+    streams: &mut [NoiseStream; 6],
+) -> LateralShipMotionMeasurement {
+    let noise: [f64; 6] = std::array::from_fn(|i| sigmas[i] * streams[i].standard_normal());
+    LateralShipMotionMeasurement {
+        time_s,
+        roll_rad: truth.roll_rad + noise[0],
+        roll_rate_radps: truth.roll_rate_radps + noise[1],
+        yaw_rad: truth.yaw_rad + noise[2],
+        yaw_rate_radps: truth.yaw_rate_radps + noise[3],
+        sway_m: truth.sway_m + noise[4],
+        sway_rate_mps: truth.sway_rate_mps + noise[5],
+    }
+}
+
+/// The six lateral noise streams of the scenario, from their start.
+pub fn lateral_ship_sensor_streams(streams: &RandomStreams) -> [NoiseStream; 6] {
+    [
+        stream_names::SHIP_SENSOR_ROLL,
+        stream_names::SHIP_SENSOR_ROLL_RATE,
+        stream_names::SHIP_SENSOR_YAW,
+        stream_names::SHIP_SENSOR_YAW_RATE,
+        stream_names::SHIP_SENSOR_SWAY,
+        stream_names::SHIP_SENSOR_SWAY_RATE,
+    ]
+    .map(|name| streams.stream(name))
+}
+
+/// The lateral channels of the ship's inertial navigation and the data link: samples,
+/// noise and latency.
+#[derive(Debug, Clone)]
+pub struct LateralShipMotionSensor {
+    parameters: ShipMotionSensingParameters,
+    sigmas: [f64; 6],
+    streams: [NoiseStream; 6],
+    last_sample: Option<i64>,
+    in_transit: VecDeque<LateralShipMotionMeasurement>,
+}
+
+impl LateralShipMotionSensor {
+    /// A sensor with these parameters, its noise from the six lateral `ship_sensor_*`
+    /// streams of `streams`.
+    pub fn new(
+        parameters: ShipMotionSensingParameters,
+        streams: &RandomStreams,
+    ) -> Result<Self, ParameterError> {
+        parameters.validate()?;
+        Ok(Self {
+            parameters,
+            sigmas: parameters.lateral_sigmas_si(),
+            streams: lateral_ship_sensor_streams(streams),
+            last_sample: None,
+            in_transit: VecDeque::with_capacity(16),
+        })
+    }
+
+    /// Takes a sample of `truth` at `time_s` if one is due (as
+    /// [`super::ShipMotionSensor::sample_due`]), drawing one number from each channel's
+    /// stream, and puts it on the data link.
+    pub fn sample(&mut self, time_s: f64, truth: &LateralShipMotionOutputs) {
+        let index = (time_s * self.parameters.sample_rate_hz + 1e-9).floor() as i64;
+        if self.last_sample == Some(index) {
+            return;
+        }
+        self.last_sample = Some(index);
+        let measurement =
+            measure_lateral_ship_motion(time_s, truth, &self.sigmas, &mut self.streams);
+        self.in_transit.push_back(measurement);
+    }
+
+    /// The oldest measurement that has arrived by `time_s`, if any; call until `None`.
+    pub fn receive(&mut self, time_s: f64) -> Option<LateralShipMotionMeasurement> {
+        let arrived = self
+            .in_transit
+            .front()
+            .is_some_and(|m| m.time_s + self.parameters.latency_s <= time_s + 1e-9);
+        if arrived {
+            self.in_transit.pop_front()
+        } else {
+            None
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn noise_has_the_configured_standard_deviations_and_arrives_late() {
+        let parameters = ShipMotionSensingParameters {
+            sample_rate_hz: 1000.0,
+            ..ShipMotionSensingParameters::default()
+        };
+        let mut sensor = LateralShipMotionSensor::new(parameters, &RandomStreams::new(9))
+            .expect("defaults are valid");
+        let truth = LateralShipMotionOutputs {
+            sway_m: 1.0,
+            ..LateralShipMotionOutputs::default()
+        };
+        let n = 20_000_u32;
+        let mut sums = [0.0; 6];
+        let mut first_arrival = None;
+        for k in 0..n + 100 {
+            let t = f64::from(k) * 0.001;
+            if k < n {
+                sensor.sample(t, &truth);
+            }
+            while let Some(m) = sensor.receive(t) {
+                first_arrival.get_or_insert(t);
+                let errors = [
+                    m.roll_rad,
+                    m.roll_rate_radps,
+                    m.yaw_rad,
+                    m.yaw_rate_radps,
+                    m.sway_m - 1.0,
+                    m.sway_rate_mps,
+                ];
+                for (sum, e) in sums.iter_mut().zip(errors) {
+                    *sum += e * e;
+                }
+            }
+        }
+        // 0.1 s latency: the sample of t = 0 arrives at 0.1 s.
+        assert!((first_arrival.expect("arrivals") - 0.1).abs() < 1e-12);
+        // The sample variance of n normal draws has a relative standard error √(2/n) = 1 %.
+        let expected = [
+            0.02_f64.to_radians(),
+            0.02_f64.to_radians(),
+            0.02_f64.to_radians(),
+            0.02_f64.to_radians(),
+            0.05,
+            0.05,
+        ];
+        for (i, (sum, sigma)) in sums.iter().zip(expected).enumerate() {
+            let rms = (sum / f64::from(n)).sqrt();
+            assert!(
+                (rms / sigma - 1.0).abs() < 0.03,
+                "channel {i}: {rms} vs {sigma}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_perfect_lateral_sensor_is_refused_by_name() {
+        let parameters = ShipMotionSensingParameters {
+            sway_rate_sigma_mps: 0.0,
+            ..ShipMotionSensingParameters::default()
+        };
+        let error = parameters.validate().unwrap_err();
+        assert_eq!(error.path, "environment.ship_sensing.sway_rate_sigma_mps");
+    }
+}
