@@ -1,8 +1,10 @@
-//! One full adverse approach: 1 ms RK4, every disturbance, O-PD, summary recording only.
+//! One full adverse approach: 1 ms RK4, every disturbance, O-PD, summary recording only;
+//! with the 3-DOF aircraft (the default) and with the 6-DOF (`[aircraft] model = "6dof"`).
 
 #![allow(missing_docs)] // criterion_group! generates undocumented items
 
 use criterion::{criterion_group, criterion_main, Criterion};
+use deckland::aircraft::PlantModel;
 use deckland::recording::SummaryRecorder;
 use deckland::scenario::Scenario;
 use deckland::simulation::Simulation;
@@ -20,6 +22,15 @@ fn approach(c: &mut Criterion) {
     group.bench_function("adverse O-PD, summary only", |b| {
         b.iter(|| {
             Simulation::new(black_box(&scenario))
+                .expect("valid")
+                .run(&mut SummaryRecorder)
+        })
+    });
+    let mut six_dof = scenario;
+    six_dof.aircraft.model = PlantModel::SixDof;
+    group.bench_function("adverse O-PD, summary only, 6-DOF aircraft", |b| {
+        b.iter(|| {
+            Simulation::new(black_box(&six_dof))
                 .expect("valid")
                 .run(&mut SummaryRecorder)
         })

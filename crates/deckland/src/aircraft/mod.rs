@@ -4,6 +4,9 @@
 //! The plant's state is [`AircraftState`]; [`Aircraft::derivative`] gives its time
 //! derivative for given [`AircraftCommands`] and wind. Wind enters only through the
 //! air-relative velocity.
+//!
+//! [`Plant`] is the interface the closed loop flies: [`Aircraft`] implements it, and so
+//! does the 6-DOF aircraft ([`six_dof::SixDofAircraft`]); [`PlantModel`] names them.
 
 mod actuator;
 mod aerodynamics;
@@ -13,6 +16,7 @@ mod engine;
 mod hook;
 mod linearize;
 mod parameters;
+mod plant;
 pub mod six_dof;
 mod state;
 mod trim;
@@ -29,5 +33,9 @@ pub use engine::{EngineParameters, Engines};
 pub use hook::HookGeometry;
 pub use linearize::{linearize, LinearModel, INPUT_NAMES, INPUT_UNITS, STATE_NAMES, STATE_UNITS};
 pub use parameters::AircraftParameters;
+pub use plant::{
+    LateralKinematics, LongitudinalKinematic, Plant, PlantAirData, PlantCommands, PlantKinematics,
+    PlantModel,
+};
 pub use state::AircraftState;
 pub use trim::{trim, TrimError, TrimPoint, TrimReport, TrimRequest, TrimResiduals};

@@ -7,10 +7,7 @@
 //! [`load_scenario`] reads a scenario file and reports a bad one by file, line and field;
 //! [`DEFAULT_SCENARIO_TOML`] is the commented default file.
 
-use crate::aircraft::{
-    AerodynamicConfiguration, AircraftParameters, ConfigurationName, ElevatorActuatorParameters,
-    EngineParameters, HookGeometry,
-};
+use crate::aircraft::PlantModel;
 use crate::control::pitch::PitchControllerParameters;
 use crate::control::{
     DirectLiftParameters, FlightPathParameters, GuidanceParameters, SinkRateControllerParameters,
@@ -21,6 +18,7 @@ use crate::parameters::{Bounds, ParameterError};
 use crate::sensors::{PitchNoiseParameters, ShipMotionSensingParameters};
 use serde::{Deserialize, Serialize};
 
+mod aircraft;
 mod dispersion;
 mod file;
 mod hardware;
@@ -28,41 +26,11 @@ mod template;
 #[cfg(test)]
 mod tests;
 
+pub use aircraft::AircraftSection;
 pub use dispersion::{DispersionParameters, DispersionSample, DISPERSION_STREAM};
 pub use file::{load_scenario, read_text_file, ReadError, ScenarioError, MAX_SCENARIO_FILE_BYTES};
 pub use hardware::HardwareSet;
 pub use template::DEFAULT_SCENARIO_TOML;
-
-/// The aircraft section of a scenario.
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct AircraftSection {
-    /// Aerodynamic configuration: `landing` (default) or `clean` (docs/model.md §2.3).
-    pub configuration: ConfigurationName,
-    /// Mass, geometry, atmosphere (paper Table 2).
-    pub parameters: AircraftParameters,
-    /// Engines (docs/model.md §2.5).
-    pub engines: EngineParameters,
-    /// Elevator actuator (docs/model.md §2.6).
-    pub elevator_actuator: ElevatorActuatorParameters,
-    /// Hook point (docs/model.md §2.7).
-    pub hook: HookGeometry,
-}
-
-impl AircraftSection {
-    /// The aerodynamic increments of the named configuration.
-    pub fn aerodynamics(&self) -> AerodynamicConfiguration {
-        AerodynamicConfiguration::named(self.configuration)
-    }
-
-    /// Checks every part of the aircraft.
-    pub fn validate(&self) -> Result<(), ParameterError> {
-        self.parameters.validate()?;
-        self.engines.validate()?;
-        self.elevator_actuator.validate()?;
-        self.hook.validate()
-    }
-}
 
 /// The environment section of a scenario (docs/model.md §3; deck geometry §2.7).
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
@@ -440,6 +408,14 @@ impl Scenario {
         Bounds::closed(1.0, 3600.0).check("", "max_time_s", self.max_time_s)?;
         self.mission.validate()?;
         self.aircraft.validate()?;
+        if self.hardware == HardwareSet::Paper && self.aircraft.model != PlantModel::ThreeDof {
+            return Err(ParameterError::new(
+                "aircraft",
+                "model",
+                self.aircraft.model.name(),
+                "\"3dof\" with `hardware = \"paper\"` (the paper's set flies the 3-DOF model)",
+            ));
+        }
         self.environment.validate()?;
         self.control.validate()?;
         self.approach.validate()?;
@@ -451,15 +427,21 @@ impl Scenario {
     /// ω·dt ≤ 0.5 for the actuator and k3·dt/ε ≤ 0.5 for the observer.
     fn check_time_step_resolves_the_dynamics(&self) -> Result<(), ParameterError> {
         let dt = self.time_step_s;
-        let omega = self.aircraft.elevator_actuator.natural_frequency_rad_s;
+        let aircraft = &self.aircraft;
+        let mut omega = aircraft.elevator_actuator.natural_frequency_rad_s;
+        if aircraft.model == PlantModel::SixDof {
+            omega = omega
+                .max(aircraft.aileron_actuator.natural_frequency_rad_s)
+                .max(aircraft.rudder_actuator.natural_frequency_rad_s);
+        }
         if omega * dt > 0.5 {
             return Err(ParameterError::new(
                 "",
                 "time_step_s",
                 dt,
                 format_args!(
-                    "at most {:?} s, so that the elevator actuator (ω = {omega} rad/s) is \
-                     resolved (ω·dt ≤ 0.5)",
+                    "at most {:?} s, so that the fastest surface actuator (ω = {omega} \
+                     rad/s) is resolved (ω·dt ≤ 0.5)",
                     0.5 / omega
                 ),
             ));

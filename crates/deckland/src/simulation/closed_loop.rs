@@ -7,6 +7,7 @@
 //! once per step by [`ClosedLoop::hold`] and passed to [`ClosedLoop::evaluate`]
 //! explicitly ([`HeldInputs`]), which is a pure function of time, state and held inputs.
 
+use super::blocks::plant::BuiltPlant;
 use super::blocks::{direct_lift, plant, wake_feedforward, BlockPosition, PlacedBlock};
 use super::deck_predictor::BuiltDeckPredictor;
 use super::flight_computer::{FlightComputer, HeldCommands};
@@ -15,7 +16,8 @@ pub use super::layout::LoopLayout;
 use super::outer_loops::{OuterLoopInputs, OuterLoops};
 use super::signals::Signals;
 use super::taps::{LoopBreak, Taps};
-use crate::aircraft::{Aircraft, AircraftState, HookGeometry, TrimPoint};
+use crate::aircraft::six_dof::SixDofAircraft;
+use crate::aircraft::{Aircraft, AircraftState, HookGeometry, Plant, TrimPoint};
 use crate::control::pitch::{AxisLaw, BuiltPitchLaw, ElevatorSaturation, PitchLawInputs};
 use crate::control::{DirectLiftParameters, SpeedController, WaveOffParameters};
 use crate::environment::{
@@ -31,7 +33,7 @@ const SATURATION_TOLERANCE_RAD: f64 = 1e-9;
 #[derive(Debug, Clone)]
 pub struct ClosedLoop {
     pub(crate) layout: LoopLayout,
-    pub(crate) aircraft: Aircraft,
+    pub(crate) plant: BuiltPlant,
     pub(crate) hook: HookGeometry,
     pub(crate) ship: ShipMotion,
     pub(crate) deck: DeckGeometry,
@@ -81,15 +83,23 @@ impl ClosedLoop {
         &self.deck
     }
 
-    /// The aircraft model.
+    /// The longitudinal aircraft model (the whole plant of the 3-DOF; the one the 6-DOF
+    /// is built on).
     pub fn aircraft(&self) -> &Aircraft {
-        &self.aircraft
+        self.plant.longitudinal()
     }
 
-    /// The aircraft's state in `x`.
+    /// The plant the loop flies.
+    pub fn plant(&self) -> &BuiltPlant {
+        &self.plant
+    }
+
+    /// The longitudinal part of the aircraft's state in `x` (u, w, q, θ, x, h, engines,
+    /// elevator).
     #[inline]
     pub fn aircraft_state(&self, x: &[f64]) -> AircraftState {
-        AircraftState::from_array(&self.layout.aircraft.array(x))
+        self.plant
+            .longitudinal_state(x, self.layout.aircraft.offset)
     }
 
     /// The ship's state in `x`.
@@ -213,11 +223,21 @@ impl ClosedLoop {
         rate: &mut [f64],
     ) -> Signals {
         // Without users' blocks the bus never leaves the function (no cost over a loop
-        // written by hand); with them it is passed to each.
-        if self.user_blocks.is_empty() {
-            self.evaluate_blocks::<T, false>(t, x, held, taps, rate)
-        } else {
-            self.evaluate_blocks::<T, true>(t, x, held, taps, rate)
+        // written by hand); with them it is passed to each. Each plant has its own
+        // instantiation.
+        match (&self.plant, self.user_blocks.is_empty()) {
+            (BuiltPlant::ThreeDof(aircraft), true) => {
+                self.evaluate_blocks::<T, Aircraft, false>(aircraft, t, x, held, taps, rate)
+            }
+            (BuiltPlant::ThreeDof(aircraft), false) => {
+                self.evaluate_blocks::<T, Aircraft, true>(aircraft, t, x, held, taps, rate)
+            }
+            (BuiltPlant::SixDof(aircraft), true) => {
+                self.evaluate_blocks::<T, SixDofAircraft, false>(aircraft, t, x, held, taps, rate)
+            }
+            (BuiltPlant::SixDof(aircraft), false) => {
+                self.evaluate_blocks::<T, SixDofAircraft, true>(aircraft, t, x, held, taps, rate)
+            }
         }
     }
 
@@ -229,10 +249,12 @@ impl ClosedLoop {
         }
     }
 
-    /// The evaluation, with (`USER_BLOCKS`) or without users' blocks.
+    /// The evaluation for the plant `aircraft`, with (`USER_BLOCKS`) or without users'
+    /// blocks.
     #[inline(always)]
-    fn evaluate_blocks<T: Taps, const USER_BLOCKS: bool>(
+    fn evaluate_blocks<T: Taps, P: Plant, const USER_BLOCKS: bool>(
         &self,
+        aircraft: &P,
         t: f64,
         x: &[f64],
         held: &HeldInputs,
@@ -252,7 +274,12 @@ impl ClosedLoop {
         bus.aim_point = self.deck.aim_point(&bus.ship);
 
         // aircraft: position, attitude, the hook.
-        let kinematics = plant::kinematics(&self.hook, self.aircraft_state(x), &mut bus);
+        let kinematics = plant::kinematics(
+            aircraft,
+            &self.hook,
+            P::state_at(x, layout.aircraft.offset),
+            &mut bus,
+        );
 
         // wind: the air mass at the aircraft, sampled at the step's start.
         bus.wind = held.wind;
@@ -261,7 +288,7 @@ impl ClosedLoop {
         }
 
         // air_data: airspeed and angle of attack in that wind.
-        let plant = plant::air_data(&self.aircraft, kinematics, &mut bus);
+        let plant = plant::air_data(aircraft, kinematics, &mut bus);
 
         // pitch_sensor: the attitude the pitch law reads (docs/model.md §3.3).
         let measurement_age_s = match held.theta_read {
@@ -315,7 +342,7 @@ impl ClosedLoop {
         bus.path_anchor_height_m = held.deck.map(|deck| deck.aim.h_m);
 
         // pitch_law: θ_ref → elevator command (docs/model.md §4).
-        let actuator = self.aircraft.actuator();
+        let actuator = aircraft.longitudinal().actuator();
         let pitch_inputs = PitchLawInputs {
             theta_ref_rad: bus.theta_ref_rad,
             theta_ref_rate_radps: outer.theta_ref_rate_radps,
@@ -354,10 +381,13 @@ impl ClosedLoop {
             match held.commands {
                 Some(commands) => commands.thrust_n,
                 // A wave-off: full thrust of both engines (docs/model.md §9).
-                None if held.wave_off => self.aircraft.engines().max_total_thrust_n(),
+                None if held.wave_off => aircraft.longitudinal().engines().max_total_thrust_n(),
                 None => self.speed.thrust_command_n(speed_error, speed_state[0]),
             },
         );
+
+        // lateral_hold: the aileron and rudder commands of a lateral plant.
+        plant::lateral_hold(aircraft, &mut bus);
 
         // direct_lift: the hook's height error to the path → lift (docs/model.md §5.9).
         if let Some(law) = &self.direct_lift {
@@ -370,8 +400,8 @@ impl ClosedLoop {
                         law,
                         &outer,
                         held,
-                        &plant,
-                        self.aircraft.parameters(),
+                        plant.dynamic_pressure_pa,
+                        aircraft.longitudinal().parameters(),
                         &bus,
                     ),
                 },
@@ -384,8 +414,8 @@ impl ClosedLoop {
         // The rates, block by block.
         let ship_rate = self.ship.derivative(&ship_state, held.ship_noise);
         layout.ship.write_array(rate, &ship_rate.to_array());
-        let aircraft_rate = plant::derivative(&self.aircraft, &plant, &bus);
-        layout.aircraft.write_array(rate, &aircraft_rate.to_array());
+        let aircraft_rate = plant::derivative(aircraft, &plant, &bus);
+        P::write_state_at(&aircraft_rate, rate, layout.aircraft.offset);
         let (sink_integral_rate, guidance_integral_rate) =
             self.outer
                 .integral_rates(&outer_inputs, &outer, held.wave_off);
@@ -421,16 +451,9 @@ impl ClosedLoop {
         bus
     }
 
-    /// Holds the elevator actuator at its stops after a step.
+    /// Holds the plant's actuators at their stops after a step.
     pub fn constrain(&self, x: &mut [f64]) {
-        let slot = self.layout.aircraft.of_mut(x);
-        let (mut position, mut rate) = (
-            slot[AircraftState::ELEVATOR_INDEX],
-            slot[AircraftState::ELEVATOR_RATE_INDEX],
-        );
-        self.aircraft.actuator().constrain(&mut position, &mut rate);
-        slot[AircraftState::ELEVATOR_INDEX] = position;
-        slot[AircraftState::ELEVATOR_RATE_INDEX] = rate;
+        self.plant.constrain(self.layout.aircraft.of_mut(x));
     }
 }
 

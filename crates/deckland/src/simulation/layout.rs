@@ -6,7 +6,6 @@
 //! integral against the O-PD's three observer states, a user's own law) changes nothing
 //! else.
 
-use crate::aircraft::AircraftState;
 use crate::environment::ShipMotionState;
 
 /// A block's place in the state vector: `len` states from `offset`.
@@ -116,7 +115,7 @@ impl StateLayout {
 pub struct LoopLayout {
     /// Every block, in order, with its state names.
     pub states: StateLayout,
-    /// The aircraft plant ([`AircraftState`]).
+    /// The aircraft plant (its state vector, [`crate::aircraft::Plant::STATE_NAMES`]).
     pub aircraft: Slot,
     /// The ship's heave and pitch shaping filters ([`ShipMotionState`]).
     pub ship: Slot,
@@ -135,15 +134,17 @@ pub struct LoopLayout {
 }
 
 impl LoopLayout {
-    /// Lays out the blocks, given the state names of the blocks whose states vary.
+    /// Lays out the blocks, given the state names of the blocks whose states vary (the
+    /// plant's first).
     pub fn new(
+        aircraft: &[&'static str],
         pitch_law: &[&'static str],
         speed: &[&'static str],
         deck_predictor: &[&'static str],
         direct_lift: bool,
     ) -> Self {
         let mut states = StateLayout::new();
-        let aircraft = states.add("aircraft", &AircraftState::NAMES);
+        let aircraft = states.add("aircraft", aircraft);
         let ship = states.add("ship", &ShipMotionState::NAMES);
         let pitch_law = states.add("pitch_law", pitch_law);
         let speed = states.add("speed", speed);

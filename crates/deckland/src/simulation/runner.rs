@@ -151,7 +151,7 @@ impl Simulation {
         let dimension = setup.initial.len();
         let deck = setup.system.deck;
         let activity =
-            ActivityStatistics::new(setup.system.aircraft.actuator(), scenario.time_step_s);
+            ActivityStatistics::new(setup.system.aircraft().actuator(), scenario.time_step_s);
         Self {
             system: setup.system,
             state: setup.initial,

@@ -3,12 +3,16 @@
 
 use std::sync::Arc;
 
+use super::blocks::plant::BuiltPlant;
 use super::blocks::{check_placement, Block, BlockPlacementError, BlockPosition, PlacedBlock};
 use super::closed_loop::{ClosedLoop, LoopLayout, StepStreams};
 use super::deck_predictor::{BuiltDeckPredictor, DeckPredictor, DeckView};
 use super::flight_computer::FlightComputer;
 use super::outer_loops::{OuterLoops, WaveOffFlight};
-use crate::aircraft::{linearize, trim, Aircraft, LinearModel, TrimError, TrimPoint, TrimRequest};
+use crate::aircraft::six_dof::SixDofAircraft;
+use crate::aircraft::{
+    linearize, trim, Aircraft, LinearModel, PlantModel, TrimError, TrimPoint, TrimRequest,
+};
 use crate::control::design::{
     check_tuning, command_bounds, ActuatorKeys, AngleOfAttackCoupling, AxisHardware, DesignRequest,
     TuningProblem,
@@ -390,7 +394,19 @@ pub(crate) fn build(scenario: &Scenario, user: UserParts<'_>) -> Result<Setup, S
     let direct_lift = (scenario.mission == Mission::Approach
         && scenario.control.direct_lift.enabled)
         .then_some(scenario.control.direct_lift);
+    // The plant: the 6-DOF is built on the same longitudinal model, trimmed wings level
+    // on the bearing, where its trim is the longitudinal one.
+    let plant = match section.model {
+        PlantModel::ThreeDof => BuiltPlant::ThreeDof(aircraft),
+        PlantModel::SixDof => BuiltPlant::SixDof(SixDofAircraft::new(
+            aircraft,
+            section.lateral,
+            section.aileron_actuator,
+            section.rudder_actuator,
+        )?),
+    };
     let mut layout = LoopLayout::new(
+        plant.state_names(),
         pitch.state_names(),
         speed.state_names(),
         deck_predictor.state_names(),
@@ -411,10 +427,11 @@ pub(crate) fn build(scenario: &Scenario, user: UserParts<'_>) -> Result<Setup, S
     for placed in &user_blocks {
         placed.block.initial_state(placed.slot.of_mut(&mut initial));
     }
-    layout
-        .aircraft
-        .of_mut(&mut initial)
-        .copy_from_slice(&trim_point.state(x_m, h_m, &steady_wind).to_array());
+    plant.write_longitudinal_state(
+        &trim_point.state(x_m, h_m, &steady_wind),
+        &mut initial,
+        layout.aircraft.offset,
+    );
     layout
         .ship
         .of_mut(&mut initial)
@@ -442,7 +459,7 @@ pub(crate) fn build(scenario: &Scenario, user: UserParts<'_>) -> Result<Setup, S
 
     let system = ClosedLoop {
         layout,
-        aircraft,
+        plant,
         hook,
         ship,
         deck,

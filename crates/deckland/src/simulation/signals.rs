@@ -89,6 +89,29 @@ pub struct Signals {
     /// The landing point's height the glide path is anchored on, as the deck predictor
     /// gives it (m); `None` outside an approach.
     pub path_anchor_height_m: Option<f64>,
+    /// CG earth y, positive to the right of the final bearing (m); `None` for a
+    /// longitudinal plant (as every lateral signal below).
+    pub y_m: Option<f64>,
+    /// Hook earth y (m).
+    pub hook_y_m: Option<f64>,
+    /// Bank angle φ (rad), right wing down positive.
+    pub phi_rad: Option<f64>,
+    /// Heading ψ from the final bearing (rad), nose right positive.
+    pub psi_rad: Option<f64>,
+    /// Roll rate p (rad/s).
+    pub p_radps: Option<f64>,
+    /// Yaw rate r (rad/s).
+    pub r_radps: Option<f64>,
+    /// Sideslip β (rad), relative wind from the right positive.
+    pub beta_rad: Option<f64>,
+    /// Aileron position δa (rad), right wing down positive.
+    pub aileron_rad: Option<f64>,
+    /// Aileron command (rad).
+    pub aileron_command_rad: Option<f64>,
+    /// Rudder position δr (rad), trailing edge left positive.
+    pub rudder_rad: Option<f64>,
+    /// Rudder command (rad).
+    pub rudder_command_rad: Option<f64>,
 }
 
 /// One signal of the loop, declared once in [`SIGNALS`]: its name, its unit (SI, the
@@ -181,6 +204,15 @@ macro_rules! signal_registry {
                 let s = self;
                 [ $( ($name, signal_field!($kind, s.$($field).+)), )+ ]
             }
+
+            /// Whether every registered signal that applies is finite and within
+            /// ±[`SIGNAL_MAGNITUDE_LIMIT`]: one expression over the fields, without
+            /// branches or an array (the run loop checks it at every step).
+            #[inline(always)]
+            fn all_in_range(&self) -> bool {
+                let s = self;
+                true $( & signal_field!($kind, s.$($field).+).is_none_or(signal_in_range) )+
+            }
         }
     };
 }
@@ -264,6 +296,35 @@ signal_registry! {
     RangeToGo = "range_to_go_m" ["m"] value(range_to_go_m);
     /// The landing point's height the glide path is anchored on (the deck predictor's).
     PathAnchorHeight = "path_anchor_height_m" ["m"] option(path_anchor_height_m);
+    /// CG earth y, positive to the right of the final bearing (a lateral plant's).
+    Y = "y_m" ["m"] option(y_m);
+    /// Hook earth y.
+    HookY = "hook_y_m" ["m"] option(hook_y_m);
+    /// Bank angle φ, right wing down positive.
+    Bank = "phi_rad" ["rad"] option(phi_rad);
+    /// Heading ψ from the final bearing, nose right positive.
+    Heading = "psi_rad" ["rad"] option(psi_rad);
+    /// Roll rate p.
+    RollRate = "p_radps" ["rad/s"] option(p_radps);
+    /// Yaw rate r.
+    YawRate = "r_radps" ["rad/s"] option(r_radps);
+    /// Sideslip β, relative wind from the right positive.
+    Sideslip = "beta_rad" ["rad"] option(beta_rad);
+    /// Aileron position, right wing down positive.
+    Aileron = "aileron_rad" ["rad"] option(aileron_rad);
+    /// Aileron command.
+    AileronCommand = "aileron_command_rad" ["rad"] option(aileron_command_rad);
+    /// Rudder position, trailing edge left positive.
+    Rudder = "rudder_rad" ["rad"] option(rudder_rad);
+    /// Rudder command.
+    RudderCommand = "rudder_command_rad" ["rad"] option(rudder_command_rad);
+}
+
+/// Whether a signal's value is finite and within ±[`SIGNAL_MAGNITUDE_LIMIT`] (false for
+/// NaN).
+#[inline(always)]
+fn signal_in_range(value: f64) -> bool {
+    value.abs() <= SIGNAL_MAGNITUDE_LIMIT
 }
 
 impl SignalId {
@@ -290,20 +351,23 @@ impl Signals {
 
     /// The first signal that is NaN, infinite or beyond ±[`SIGNAL_MAGNITUDE_LIMIT`], with
     /// its value; `None` when every signal is in range.
+    #[inline(always)]
     pub fn first_out_of_range(&self) -> Option<(&'static str, f64)> {
-        let in_range = |v: f64| v.abs() <= SIGNAL_MAGNITUDE_LIMIT; // false for NaN
-        let values = self.named_values();
         // Checked every step: one pass without early exits (which the compiler can keep
         // branch-free), then the search for the name only when something is wrong.
-        let all_in_range = values
-            .iter()
-            .fold(true, |ok, (_, value)| ok & value.is_none_or(in_range));
-        if all_in_range {
+        if self.all_in_range() {
             return None;
         }
-        values
+        self.find_out_of_range()
+    }
+
+    /// The search of [`Signals::first_out_of_range`] once a signal is out of range.
+    #[cold]
+    #[inline(never)]
+    fn find_out_of_range(&self) -> Option<(&'static str, f64)> {
+        self.named_values()
             .into_iter()
-            .find_map(|(name, value)| value.filter(|v| !in_range(*v)).map(|v| (name, v)))
+            .find_map(|(name, value)| value.filter(|v| !signal_in_range(*v)).map(|v| (name, v)))
     }
 }
 
@@ -379,124 +443,5 @@ impl RecordedColumn {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn signals_out_of_range_are_named_with_their_value() {
-        let mut signals = Signals {
-            airspeed_mps: 69.1,
-            ..Signals::default()
-        };
-        assert_eq!(signals.first_out_of_range(), None);
-        signals.elevator_command_rad = f64::NEG_INFINITY;
-        assert_eq!(
-            signals.first_out_of_range(),
-            Some(("elevator_command_rad", f64::NEG_INFINITY))
-        );
-        signals.elevator_command_rad = 0.0;
-        signals.aim_point.x_m = 2e12;
-        assert_eq!(signals.first_out_of_range(), Some(("aim_point.x_m", 2e12)));
-        signals.aim_point.x_m = 0.0;
-        signals.climb_rate_command_mps = Some(f64::NAN);
-        let (name, value) = signals.first_out_of_range().expect("NaN is out of range");
-        assert_eq!(name, "climb_rate_command_mps");
-        assert!(value.is_nan());
-        // A signal that does not apply is not a divergence.
-        signals.climb_rate_command_mps = None;
-        signals.path_height_m = None;
-        assert_eq!(signals.first_out_of_range(), None);
-    }
-
-    #[test]
-    fn the_registry_names_each_signal_once_in_the_order_of_its_identifiers() {
-        let mut names = std::collections::HashSet::new();
-        for (index, spec) in SIGNALS.iter().enumerate() {
-            assert_eq!(spec.id as usize, index, "{} out of order", spec.name);
-            assert!(names.insert(spec.name), "{} registered twice", spec.name);
-            assert_eq!(SignalId::from_name(spec.name), Some(spec.id));
-            assert!(!spec.unit.is_empty() && !spec.description.is_empty());
-        }
-        assert_eq!(SignalId::from_name("no_such_signal"), None);
-    }
-
-    #[test]
-    fn each_registered_signal_reads_its_own_field() {
-        // Every field set to a distinct value: each registered accessor must find the
-        // value of the field its name names (a swapped accessor would read another).
-        let s = Signals {
-            time_s: 1.0,
-            x_m: 2.0,
-            h_m: 3.0,
-            hook_x_m: 4.0,
-            hook_h_m: 5.0,
-            hook_climb_rate_mps: 6.0,
-            hook_x_rate_mps: 7.0,
-            path_height_m: Some(8.0),
-            glide_path_error_m: 9.0,
-            time_to_go_s: Some(10.0),
-            compensation_weight: 11.0,
-            airspeed_mps: 12.0,
-            alpha_rad: 13.0,
-            theta_rad: 14.0,
-            theta_measured_rad: 15.0,
-            theta_ref_rad: 16.0,
-            q_radps: 17.0,
-            climb_rate_mps: 18.0,
-            climb_rate_command_mps: Some(19.0),
-            elevator_rad: 20.0,
-            elevator_rate_radps: 0.0,
-            elevator_command_rad: 21.0,
-            thrust_n: 22.0,
-            thrust_command_n: 23.0,
-            wind: Wind {
-                x_mps: 24.0,
-                z_mps: 25.0,
-                ..Default::default()
-            },
-            distance_aft_m: 26.0,
-            ship: ShipPose {
-                pitch_centre_x_m: 27.0,
-                heave_m: 28.0,
-                pitch_rad: 29.0,
-                ..Default::default()
-            },
-            ship_rate: ShipPoseRate {
-                pitch_centre_x_rate_mps: 30.0,
-                heave_rate_mps: 31.0,
-                pitch_rate_radps: 32.0,
-                ..Default::default()
-            },
-            aim_point: EarthPoint {
-                x_m: 33.0,
-                h_m: 34.0,
-                ..Default::default()
-            },
-            disturbance_estimate_radps2: Some(35.0),
-            direct_lift_coefficient: Some(36.0),
-            direct_lift_command: Some(37.0),
-            range_to_go_m: 38.0,
-            path_anchor_height_m: Some(39.0),
-        };
-        let values: Vec<f64> = s
-            .named_values()
-            .iter()
-            .map(|(_, v)| v.expect("set"))
-            .collect();
-        let expected: Vec<f64> = (1..=SIGNAL_COUNT).map(|i| i as f64).collect();
-        assert_eq!(values, expected);
-        assert_eq!(s.get(SignalId::WindZ), Some(25.0));
-        let mut written = Signals::default();
-        for spec in &SIGNALS {
-            written.set(spec.id, (spec.value)(&s).expect("set"));
-        }
-        written.elevator_rate_radps = s.elevator_rate_radps;
-        assert_eq!(written, s);
-        let column = RecordedColumn::degrees("theta_deg", SignalId::Theta);
-        assert_eq!(column.value(&s), Some(14.0_f64.to_degrees()));
-        assert_eq!(column.unit(), "deg");
-        assert_eq!(RecordedColumn::si("x", SignalId::Thrust).unit(), "N");
-        let sink = RecordedColumn::negated("sink_rate_mps", SignalId::ClimbRate);
-        assert_eq!((sink.value(&s), sink.unit()), (Some(-18.0), "m/s"));
-    }
-}
+#[path = "signals_tests.rs"]
+mod tests;

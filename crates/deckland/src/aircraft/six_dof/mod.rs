@@ -72,6 +72,7 @@ mod kinematics;
 mod lateral_aerodynamics;
 mod linearize;
 mod parameters;
+mod plant;
 mod report;
 mod state;
 mod trim;
@@ -86,6 +87,7 @@ pub use linearize::{
     LATERAL_INPUT_UNITS, LATERAL_STATE_NAMES, LATERAL_STATE_UNITS,
 };
 pub use parameters::{LateralParameters, SurfaceActuatorParameters};
+pub use plant::{SixDofAir, SixDofKinematic};
 pub use report::{LateralModesReport, RealModeReport, SixDofTrimReport};
 pub use state::SixDofState;
 pub use trim::{trim_six_dof, SixDofTrimError, SixDofTrimPoint, SixDofTrimRequest};

@@ -2,7 +2,6 @@
 //! path, the path's acceleration fed forward, and the flare on the deck forecast
 //! (docs/model.md §5.9).
 
-use super::plant::PlantOutputs;
 use crate::aircraft::AircraftParameters;
 use crate::control::DirectLiftParameters;
 use crate::simulation::held::HeldInputs;
@@ -10,13 +9,14 @@ use crate::simulation::outer_loops::OuterLoopOutputs;
 use crate::simulation::Signals;
 
 /// The direct-lift command (–) the law computes this instant from the outer loops'
-/// `outer` outputs and the held deck reference (before any tap or frame hold).
+/// `outer` outputs and the held deck reference (before any tap or frame hold), at
+/// dynamic pressure `dynamic_pressure_pa` (Pa).
 #[inline(always)]
 pub(crate) fn command(
     law: &DirectLiftParameters,
     outer: &OuterLoopOutputs,
     held: &HeldInputs,
-    plant: &PlantOutputs,
+    dynamic_pressure_pa: f64,
     aircraft: &AircraftParameters,
     bus: &Signals,
 ) -> f64 {
@@ -36,7 +36,7 @@ pub(crate) fn command(
             let feedforward = law.feedforward(
                 path.compensation_weight * deck.aim_acceleration_mps2,
                 aircraft.mass_kg,
-                plant.air.dynamic_pressure_pa,
+                dynamic_pressure_pa,
                 aircraft.wing_area_m2,
             );
             let command = law.command(error_m, error_rate, feedforward, held.wave_off);

@@ -10,8 +10,8 @@
 //!
 //! ```text
 //! ship ─► aircraft ─► wind ─►[air mass]─► air_data ─► pitch_sensor ─►[sensors]
-//!      ─► wake_feedforward ─► outer_loops ─► pitch_law ─► speed ─► direct_lift
-//!      ─►[commands]─► deck_predictor
+//!      ─► wake_feedforward ─► outer_loops ─► pitch_law ─► speed ─► lateral_hold
+//!      ─► direct_lift ─►[commands]─► deck_predictor
 //! ```
 //!
 //! A user's own block ([`Block`], a trait object: a disturbance, a sensor filter, a
@@ -54,7 +54,7 @@ pub struct BlockDeclaration {
 }
 
 /// The built-in blocks, in the order the loop evaluates them.
-pub const BUILT_IN_BLOCKS: [BlockDeclaration; 11] = [
+pub const BUILT_IN_BLOCKS: [BlockDeclaration; 12] = [
     BlockDeclaration {
         name: "ship",
         reads: &[],
@@ -78,6 +78,8 @@ pub const BUILT_IN_BLOCKS: [BlockDeclaration; 11] = [
             ElevatorCommand,
             ThrustCommand,
             DirectLiftCoefficient,
+            AileronCommand,
+            RudderCommand,
         ],
         writes: &[
             RangeToGo,
@@ -93,6 +95,14 @@ pub const BUILT_IN_BLOCKS: [BlockDeclaration; 11] = [
             Elevator,
             Thrust,
             DistanceAft,
+            Y,
+            HookY,
+            Bank,
+            Heading,
+            RollRate,
+            YawRate,
+            Aileron,
+            Rudder,
         ],
         followed_by: None,
     },
@@ -105,7 +115,7 @@ pub const BUILT_IN_BLOCKS: [BlockDeclaration; 11] = [
     BlockDeclaration {
         name: "air_data",
         reads: &[WindX, WindZ, Theta],
-        writes: &[Airspeed, Alpha],
+        writes: &[Airspeed, Alpha, Sideslip],
         followed_by: None,
     },
     BlockDeclaration {
@@ -153,6 +163,12 @@ pub const BUILT_IN_BLOCKS: [BlockDeclaration; 11] = [
         name: "speed",
         reads: &[Airspeed],
         writes: &[ThrustCommand],
+        followed_by: None,
+    },
+    BlockDeclaration {
+        name: "lateral_hold",
+        reads: &[],
+        writes: &[AileronCommand, RudderCommand],
         followed_by: None,
     },
     BlockDeclaration {
@@ -295,7 +311,13 @@ mod tests {
     fn every_built_in_block_reads_only_what_an_earlier_block_wrote() {
         // The aircraft's rates read the commands of this step, written after its
         // outputs: the derivatives are evaluated after every block's outputs.
-        let derivative_inputs = [ElevatorCommand, ThrustCommand, DirectLiftCoefficient];
+        let derivative_inputs = [
+            ElevatorCommand,
+            ThrustCommand,
+            DirectLiftCoefficient,
+            AileronCommand,
+            RudderCommand,
+        ];
         let mut written: Vec<SignalId> = vec![Time];
         for block in &BUILT_IN_BLOCKS {
             for read in block.reads {

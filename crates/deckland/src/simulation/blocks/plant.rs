@@ -1,19 +1,107 @@
-//! The aircraft's blocks: `aircraft`, its kinematic outputs (position, attitude, the
-//! hook, from the state alone) onto the bus and its state rate from the commands on the
-//! bus; and `air_data`, airspeed and angle of attack in the wind on the bus
-//! (docs/model.md §2).
+//! The aircraft's blocks, for any plant ([`Plant`]): `aircraft`, its kinematic outputs
+//! (position, attitude, rates, the hook, from the state alone) onto the bus and its state
+//! rate from the commands on the bus; `air_data`, airspeed, angle of attack and (for a
+//! lateral plant) sideslip in the wind on the bus (docs/model.md §2); and
+//! `lateral_hold`, the aileron and rudder commands while no lateral law flies them.
 
-use crate::aircraft::{AirData, Aircraft, AircraftCommands, AircraftState, HookGeometry};
+use crate::aircraft::six_dof::SixDofAircraft;
+use crate::aircraft::{Aircraft, AircraftState, HookGeometry, Plant, PlantCommands, PlantModel};
 use crate::simulation::Signals;
 
+/// The plant a loop flies: one of the known plants, each flown by its own
+/// monomorphic instantiation of the loop (no dynamic dispatch in the hot path).
+// One per loop: boxing the larger plant would add a pointer chase to every evaluation.
+#[allow(clippy::large_enum_variant)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum BuiltPlant {
+    /// The longitudinal F/A-18 (`model = "3dof"`).
+    ThreeDof(Aircraft),
+    /// The 6-DOF F/A-18 (`model = "6dof"`).
+    SixDof(SixDofAircraft),
+}
+
+impl BuiltPlant {
+    /// The model's name.
+    pub fn model(&self) -> PlantModel {
+        match self {
+            Self::ThreeDof(_) => Aircraft::MODEL,
+            Self::SixDof(_) => SixDofAircraft::MODEL,
+        }
+    }
+
+    /// The longitudinal model (the whole plant for the 3-DOF; the aerodynamics, engines
+    /// and stabilator the 6-DOF is built on).
+    #[inline]
+    pub fn longitudinal(&self) -> &Aircraft {
+        match self {
+            Self::ThreeDof(plant) => plant,
+            Self::SixDof(plant) => plant.longitudinal(),
+        }
+    }
+
+    /// The names of the plant's states.
+    pub fn state_names(&self) -> &'static [&'static str] {
+        match self {
+            Self::ThreeDof(_) => Aircraft::STATE_NAMES,
+            Self::SixDof(_) => SixDofAircraft::STATE_NAMES,
+        }
+    }
+
+    /// The units of the plant's states.
+    pub fn state_units(&self) -> &'static [&'static str] {
+        match self {
+            Self::ThreeDof(_) => Aircraft::STATE_UNITS,
+            Self::SixDof(_) => SixDofAircraft::STATE_UNITS,
+        }
+    }
+
+    /// The longitudinal part of the plant's state in `x` from `offset`.
+    #[inline]
+    pub fn longitudinal_state(&self, x: &[f64], offset: usize) -> AircraftState {
+        match self {
+            Self::ThreeDof(_) => Aircraft::state_at(x, offset),
+            Self::SixDof(_) => {
+                SixDofAircraft::longitudinal_state(&SixDofAircraft::state_at(x, offset))
+            }
+        }
+    }
+
+    /// Writes the plant's state of a longitudinal state into `x` from `offset`.
+    pub fn write_longitudinal_state(&self, state: &AircraftState, x: &mut [f64], offset: usize) {
+        match self {
+            Self::ThreeDof(_) => Aircraft::write_state_at(state, x, offset),
+            Self::SixDof(_) => {
+                SixDofAircraft::write_state_at(&SixDofAircraft::from_longitudinal(state), x, offset)
+            }
+        }
+    }
+
+    /// Holds the actuators at their stops (`x`: the plant's states).
+    #[inline]
+    pub fn constrain(&self, x: &mut [f64]) {
+        match self {
+            Self::ThreeDof(plant) => Plant::constrain(plant, x),
+            Self::SixDof(plant) => Plant::constrain(plant, x),
+        }
+    }
+}
+
 /// What the aircraft's outputs leave for the other blocks beside the registered signals:
-/// the state and the quantities its rate reuses.
+/// the plant's own intermediate results and the CG's earth x rate.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct PlantOutputs {
-    pub state: AircraftState,
-    pub sin_theta: f64,
-    pub cos_theta: f64,
-    pub air: AirData,
+pub(crate) struct PlantOutputs<P: Plant> {
+    pub kinematic: P::Kinematic,
+    pub air: P::Air,
+    /// The CG's earth x rate (m/s).
+    pub x_rate_mps: f64,
+    /// Dynamic pressure q̄ (Pa).
+    pub dynamic_pressure_pa: f64,
+}
+
+/// The aircraft's kinematics beside the registered signals.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Kinematics<P: Plant> {
+    pub kinematic: P::Kinematic,
     /// The CG's earth x rate (m/s).
     pub x_rate_mps: f64,
 }
@@ -21,92 +109,86 @@ pub(crate) struct PlantOutputs {
 /// The aircraft's kinematics for `state`, written onto `bus` (the ship's pose on the bus
 /// gives the distance aft of its pitch centre).
 #[inline(always)]
-pub(crate) fn kinematics(
+pub(crate) fn kinematics<P: Plant>(
+    plant: &P,
     hook: &HookGeometry,
-    state: AircraftState,
+    state: P::State,
     bus: &mut Signals,
-) -> Kinematics {
-    let (sin_t, cos_t) = state.theta_rad.sin_cos();
-    let (hook_x_m, hook_h_m) = hook.position_trig(&state, sin_t, cos_t);
-    let (hook_x_rate_mps, hook_climb_rate_mps) = hook.velocity_trig(&state, sin_t, cos_t);
-    let (x_rate_mps, climb_rate_mps) = state.earth_velocity_trig(sin_t, cos_t);
-    bus.x_m = state.x_m;
-    bus.h_m = state.h_m;
-    bus.hook_x_m = hook_x_m;
-    bus.hook_h_m = hook_h_m;
-    bus.hook_climb_rate_mps = hook_climb_rate_mps;
-    bus.hook_x_rate_mps = hook_x_rate_mps;
-    bus.theta_rad = state.theta_rad;
-    bus.q_radps = state.q_radps;
-    bus.climb_rate_mps = climb_rate_mps;
-    bus.elevator_rad = state.elevator_rad;
-    bus.elevator_rate_radps = state.elevator_rate_radps;
-    bus.thrust_n = state.total_thrust_n();
-    bus.distance_aft_m = bus.ship.distance_aft_of_pitch_centre_m(state.x_m);
-    bus.range_to_go_m = bus.aim_point.x_m - hook_x_m;
-    Kinematics {
-        state,
-        sin_theta: sin_t,
-        cos_theta: cos_t,
-        x_rate_mps,
+) -> Kinematics<P> {
+    let (kinematic, out) = plant.kinematics(hook, state);
+    bus.x_m = out.position.x_m;
+    bus.h_m = out.position.h_m;
+    bus.hook_x_m = out.hook.x_m;
+    bus.hook_h_m = out.hook.h_m;
+    bus.hook_climb_rate_mps = out.hook_velocity.h_mps;
+    bus.hook_x_rate_mps = out.hook_velocity.x_mps;
+    bus.theta_rad = out.theta_rad;
+    bus.q_radps = out.q_radps;
+    bus.climb_rate_mps = out.velocity.h_mps;
+    bus.elevator_rad = out.elevator_rad;
+    bus.elevator_rate_radps = out.elevator_rate_radps;
+    bus.thrust_n = out.thrust_n;
+    bus.distance_aft_m = bus.ship.distance_aft_of_pitch_centre_m(out.position.x_m);
+    bus.range_to_go_m = bus.aim_point.x_m - out.hook.x_m;
+    if let Some(lateral) = out.lateral {
+        bus.y_m = Some(out.position.y_m);
+        bus.hook_y_m = Some(out.hook.y_m);
+        bus.phi_rad = Some(lateral.phi_rad);
+        bus.psi_rad = Some(lateral.psi_rad);
+        bus.p_radps = Some(lateral.p_radps);
+        bus.r_radps = Some(lateral.r_radps);
+        bus.aileron_rad = Some(lateral.aileron_rad);
+        bus.rudder_rad = Some(lateral.rudder_rad);
     }
-}
-
-/// The aircraft's kinematics beside the registered signals: the state and what the air
-/// data and the rate reuse.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct Kinematics {
-    pub state: AircraftState,
-    pub sin_theta: f64,
-    pub cos_theta: f64,
-    /// The CG's earth x rate (m/s).
-    pub x_rate_mps: f64,
+    Kinematics {
+        kinematic,
+        x_rate_mps: out.velocity.x_mps,
+    }
 }
 
 /// The air data in the wind on `bus`, written onto it: the plant's outputs complete.
 #[inline(always)]
-pub(crate) fn air_data(
-    aircraft: &Aircraft,
-    kinematics: Kinematics,
+pub(crate) fn air_data<P: Plant>(
+    plant: &P,
+    kinematics: Kinematics<P>,
     bus: &mut Signals,
-) -> PlantOutputs {
-    let state = kinematics.state;
-    let air = aircraft.air_data_trig(
-        state.u_mps,
-        state.w_mps,
-        kinematics.sin_theta,
-        kinematics.cos_theta,
-        &bus.wind,
-    );
-    bus.airspeed_mps = air.airspeed_mps;
-    bus.alpha_rad = air.alpha_rad;
+) -> PlantOutputs<P> {
+    let (air, out) = plant.air_data(&kinematics.kinematic, &bus.wind);
+    bus.airspeed_mps = out.airspeed_mps;
+    bus.alpha_rad = out.alpha_rad;
+    bus.beta_rad = out.beta_rad;
     PlantOutputs {
-        state,
-        sin_theta: kinematics.sin_theta,
-        cos_theta: kinematics.cos_theta,
+        kinematic: kinematics.kinematic,
         air,
         x_rate_mps: kinematics.x_rate_mps,
+        dynamic_pressure_pa: out.dynamic_pressure_pa,
     }
 }
 
-/// The aircraft's state rate under the commands on `bus` (elevator, thrust, the direct
-/// lift increment).
+/// `lateral_hold`: the aileron and rudder commands of a plant that has them, held where
+/// the plant holds them until lateral laws fly them.
 #[inline(always)]
-pub(crate) fn derivative(
-    aircraft: &Aircraft,
-    plant: &PlantOutputs,
+pub(crate) fn lateral_hold<P: Plant>(plant: &P, bus: &mut Signals) {
+    if let Some((aileron_rad, rudder_rad)) = plant.held_lateral_commands() {
+        bus.aileron_command_rad = Some(aileron_rad);
+        bus.rudder_command_rad = Some(rudder_rad);
+    }
+}
+
+/// The aircraft's state rate under the commands on `bus` (elevator, thrust, aileron,
+/// rudder, the direct lift increment).
+#[inline(always)]
+pub(crate) fn derivative<P: Plant>(
+    plant: &P,
+    outputs: &PlantOutputs<P>,
     bus: &Signals,
-) -> AircraftState {
-    let commands = AircraftCommands {
+) -> P::State {
+    let commands = PlantCommands {
         elevator_rad: bus.elevator_command_rad,
         thrust_n: bus.thrust_command_n,
+        aileron_rad: bus.aileron_command_rad.unwrap_or(0.0),
+        rudder_rad: bus.rudder_command_rad.unwrap_or(0.0),
+        lift_coefficient_increment: bus.direct_lift_coefficient.unwrap_or(0.0),
     };
-    aircraft.derivative_with_direct_lift(
-        &plant.state,
-        &commands,
-        &plant.air,
-        plant.sin_theta,
-        plant.cos_theta,
-        bus.direct_lift_coefficient.unwrap_or(0.0),
-    )
+    plant.derivative(&outputs.kinematic, &outputs.air, &commands)
 }
