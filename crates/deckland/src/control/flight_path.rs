@@ -120,6 +120,13 @@ pub struct FlightPathParameters {
     /// segment to the predicted landing point instead of landing raise/tan Γ long
     /// (docs/model.md §5.7); on in the realistic set.
     pub descend_after_ramp: bool,
+    /// With `descend_after_ramp`, the time over which the descent's extra sink rate
+    /// blends in after the hook crosses the ramp and out before the aim point (s), as
+    /// 3x² − 2x³: the climb-rate command and its rate have no step there (a linear shed,
+    /// 0 here, stepped the command by 1.5 m/s over the ramp and drove the stabilator onto
+    /// its rate limit, docs/model.md §5.7); 0.25 s; [0, 2] s (at most half the
+    /// ramp-to-aim-point segment is used).
+    pub descent_blend_s: f64,
     /// Touchdown-point correction (m along the deck, positive forward): the path aims
     /// this far from the aim point, to cancel the air wake's systematic push of the
     /// touchdown forward (docs/model.md §5.7); measured in calm water. 0 in the paper's
@@ -152,6 +159,7 @@ impl Default for FlightPathParameters {
             ramp_aware: true,
             ramp_clearance_margin_m: 2.5,
             descend_after_ramp: true,
+            descent_blend_s: 0.25,
             touchdown_correction_m: 0.0,
             wake_feedforward: true,
             wake_feedforward_lead_s: 0.0,
@@ -178,7 +186,7 @@ impl FlightPathParameters {
 
     /// Checks the glide slope is in (0°, 10°], the compensation window in [0, 60] s, the
     /// blend in (0, 30] s, the lead in [0, 10] s, the filters in (0, 100] rad/s, the ramp
-    /// margin in [0, 20] m, the touchdown correction in [−50, 50] m and the wake
+    /// margin in [0, 20] m, the descent's blend in [0, 2] s, the touchdown correction in [−50, 50] m and the wake
     /// feed-forward's lead in [0, 10] s.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "control.flight_path";
@@ -209,6 +217,7 @@ impl FlightPathParameters {
             "ramp_clearance_margin_m",
             self.ramp_clearance_margin_m,
         )?;
+        Bounds::closed(0.0, 2.0).check(SECTION, "descent_blend_s", self.descent_blend_s)?;
         Bounds::closed(-50.0, 50.0).check(
             SECTION,
             "touchdown_correction_m",
