@@ -14,6 +14,7 @@ mod guidance;
 mod law;
 mod loop_controller;
 pub mod pitch;
+pub mod risk;
 mod sink_rate;
 mod speed;
 mod wave_off;

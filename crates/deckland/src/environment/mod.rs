@@ -23,7 +23,8 @@ pub use ship::{
     ShipMotionState, ShipNoise, HEAVE_FILTER_GAIN, PITCH_FILTER_GAIN, SHAPING_FILTER_DENOMINATOR,
 };
 pub use ship_prediction::{
-    Matrix4Array, PredictedShipMotion, ShipMotionEstimate, ShipMotionForecast, ShipMotionPropagator,
+    DeckPointUncertainty, Matrix4Array, PredictedShipMotion, ShipMotionEstimate,
+    ShipMotionForecast, ShipMotionPropagator,
 };
 pub use ship_simulator::ShipMotionSimulator;
 pub use turbulence::Turbulence;

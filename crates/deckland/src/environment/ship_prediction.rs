@@ -95,6 +95,15 @@ impl ShipMotionForecast {
     }
 }
 
+/// The standard deviations of a deck point's predicted height and climb rate.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct DeckPointUncertainty {
+    /// σ of the height prediction (m).
+    pub height_sigma_m: f64,
+    /// σ of the climb-rate prediction (m/s).
+    pub climb_rate_sigma_mps: f64,
+}
+
 /// r·P·rᵀ for a row r and a symmetric P.
 #[inline]
 fn quadratic_form(row: &[f64; 4], p: &Matrix4Array) -> f64 {
@@ -233,6 +242,48 @@ impl ShipMotionPropagator {
             pitch_variance_rad2: PITCH_FILTER_GAIN.powi(2)
                 * (quadratic_form(&rows[2], &estimate.pitch_covariance)
                     + ship.pitch_noise_intensity() * unpredictable(&rows[2], 2)),
+        }
+    }
+}
+
+impl ShipMotionPropagator {
+    /// The standard deviations of the predicted height and climb rate of a deck point
+    /// `lever_arm_m` aft of the pitch centre, `lead_s` after the time of `estimate`, with
+    /// the ship pitched `pitch_rad` (the module docs' error variance for the rows of
+    /// heave, heave rate, pitch and pitch rate; heave and pitch independent, linearised
+    /// in the pitch error as [`ShipMotionForecast::deck_point_height_sigma_m`]); zero when
+    /// the ship motion is disabled.
+    pub fn deck_point_uncertainty(
+        &self,
+        ship: &ShipMotion,
+        estimate: &ShipMotionEstimate,
+        lead_s: f64,
+        lever_arm_m: f64,
+        pitch_rad: f64,
+    ) -> DeckPointUncertainty {
+        if !ship.parameters().enabled {
+            return DeckPointUncertainty::default();
+        }
+        let grid = self.grid(lead_s);
+        let variance = |i: usize, covariance: &Matrix4Array, intensity: f64| {
+            let row = self.row(grid, i);
+            let unpredictable =
+                (self.stationary[i][i] - quadratic_form(&row, &self.stationary)).max(0.0);
+            quadratic_form(&row, covariance) + intensity * unpredictable
+        };
+        let (heave, pitch) = (
+            HEAVE_FILTER_GAIN * HEAVE_FILTER_GAIN,
+            PITCH_FILTER_GAIN * PITCH_FILTER_GAIN,
+        );
+        let (qh, qp) = (ship.heave_noise_intensity(), ship.pitch_noise_intensity());
+        let arm = lever_arm_m * pitch_rad.cos();
+        let height = heave * variance(0, &estimate.heave_covariance, qh)
+            + arm * arm * pitch * variance(2, &estimate.pitch_covariance, qp);
+        let rate = heave * variance(1, &estimate.heave_covariance, qh)
+            + arm * arm * pitch * variance(3, &estimate.pitch_covariance, qp);
+        DeckPointUncertainty {
+            height_sigma_m: height.max(0.0).sqrt(),
+            climb_rate_sigma_mps: rate.max(0.0).sqrt(),
         }
     }
 }

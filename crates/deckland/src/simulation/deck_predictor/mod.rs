@@ -156,28 +156,39 @@ impl BuiltDeckPredictor {
         // The forecasts reach the compensation window and the blend, plus the data link's
         // latency for the estimator.
         let horizon_s = flight_path.compensation_window_s + flight_path.compensation_blend_s;
+        // The forecast's σ is worked out only where the guidance or the wave-off uses it.
+        let wave_off = &scenario.control.wave_off;
+        let uncertainty = flight_path.ramp_strike_probability_limit > 0.0
+            || (wave_off.enabled
+                && (wave_off.max_ramp_strike_probability > 0.0
+                    || wave_off.max_hard_landing_probability > 0.0));
         Ok(match flight_path.deck_motion_predictor {
             DeckPredictorKind::Oracle => Self::Oracle(oracle::Oracle::new(
                 ShipMotionPropagator::new(horizon_s),
-                (flight_path.ramp_aware || scenario.control.wave_off.enabled)
-                    .then(|| AnchorShaping::new(flight_path.anchor_filter_frequency_radps)),
+                (flight_path.ramp_aware || scenario.control.wave_off.enabled).then(|| {
+                    AnchorShaping::new(flight_path.anchor_filter_frequency_radps)
+                        .with_uncertainty(uncertainty)
+                }),
             )),
             DeckPredictorKind::Estimator => {
                 let sensing = scenario.environment.ship_sensing;
-                Self::Estimator(Box::new(estimator::Estimator::new(
-                    ShipMotionSensor::new(sensing, streams)?,
-                    match sensing.estimator_start {
-                        EstimatorStart::Converged => DeckMotionEstimator::converged(
-                            ship,
-                            &sensing,
-                            ship_state,
-                            &mut streams.stream(stream_names::SHIP_ESTIMATE_START),
-                        ),
-                        EstimatorStart::Cold => DeckMotionEstimator::new(ship, &sensing),
-                    },
-                    ShipMotionPropagator::new(horizon_s + sensing.latency_s + 1.0),
-                    flight_path.anchor_filter_frequency_radps,
-                )))
+                Self::Estimator(Box::new(
+                    estimator::Estimator::new(
+                        ShipMotionSensor::new(sensing, streams)?,
+                        match sensing.estimator_start {
+                            EstimatorStart::Converged => DeckMotionEstimator::converged(
+                                ship,
+                                &sensing,
+                                ship_state,
+                                &mut streams.stream(stream_names::SHIP_ESTIMATE_START),
+                            ),
+                            EstimatorStart::Cold => DeckMotionEstimator::new(ship, &sensing),
+                        },
+                        ShipMotionPropagator::new(horizon_s + sensing.latency_s + 1.0),
+                        flight_path.anchor_filter_frequency_radps,
+                    )
+                    .with_uncertainty(uncertainty),
+                ))
             }
             DeckPredictorKind::FilterLead => Self::FilterLead(filter_lead::FilterLead::new(
                 DeckMotionFilter::new(flight_path.deck_filter_frequency_radps),
@@ -312,6 +323,7 @@ impl DeckQuery<'_> {
             self.time_to_go_s,
             closure,
             deck,
+            shaping.uncertainty,
         );
         let target = ramp_aware_anchor(parameters, self.flight_path, deck, &forecast);
         let descent = (parameters.ramp_aware && parameters.descend_after_ramp)
@@ -338,7 +350,9 @@ impl DeckQuery<'_> {
 /// The forecast of the deck for a hook `time_to_go_s` from touchdown closing at
 /// `closure_mps`, from `estimate` whose time lies `age_s` in the past: the landing point
 /// at touchdown, the ramp when the hook crosses it (`ramp_aft_of_aim_point_m` / closure
-/// earlier).
+/// earlier); with `uncertainty`, also the σ of the ramp's height at the crossing and of
+/// the landing point's climb rate at touchdown (otherwise 0).
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn forecast_deck(
     predictor: &ShipMotionPropagator,
     ship: &ShipMotion,
@@ -347,6 +361,7 @@ pub(crate) fn forecast_deck(
     time_to_go_s: f64,
     closure_mps: f64,
     deck: &DeckGeometry,
+    uncertainty: bool,
 ) -> DeckForecast {
     let landing_arm_m = deck.landing_point_aft_of_pitch_centre_m;
     let ramp_arm_m = landing_arm_m + deck.ramp_aft_of_aim_point_m;
@@ -355,20 +370,59 @@ pub(crate) fn forecast_deck(
     } else {
         time_to_go_s
     };
+    let touchdown_lead_s = age_s + time_to_go_s.max(0.0);
+    let ramp_lead_s = age_s + ramp_time_s;
     let at_touchdown: ShipMotionForecast =
-        predictor.forecast_mean(ship, estimate, age_s + time_to_go_s.max(0.0));
-    let at_ramp = predictor.forecast_mean(ship, estimate, age_s + ramp_time_s);
+        predictor.forecast_mean(ship, estimate, touchdown_lead_s);
+    let at_ramp = predictor.forecast_mean(ship, estimate, ramp_lead_s);
+    let (ramp_height_sigma_m, landing_point_climb_rate_sigma_mps) = if uncertainty {
+        (
+            predictor
+                .deck_point_uncertainty(ship, estimate, ramp_lead_s, ramp_arm_m, at_ramp.pitch_rad)
+                .height_sigma_m,
+            predictor
+                .deck_point_uncertainty(
+                    ship,
+                    estimate,
+                    touchdown_lead_s,
+                    landing_arm_m,
+                    at_touchdown.pitch_rad,
+                )
+                .climb_rate_sigma_mps,
+        )
+    } else {
+        (0.0, 0.0)
+    };
     DeckForecast {
         ramp_height_m: deck.deck_height_m + at_ramp.deck_point_height_m(ramp_arm_m),
         landing_point_climb_rate_mps: at_touchdown.deck_point_climb_rate_mps(landing_arm_m),
         landing_point_height_m: deck.deck_height_m
             + at_touchdown.deck_point_height_m(landing_arm_m),
         pitch_rad: at_touchdown.pitch_rad,
+        ramp_climb_rate_mps: at_ramp.deck_point_climb_rate_mps(ramp_arm_m),
+        ramp_height_sigma_m,
+        landing_point_climb_rate_sigma_mps,
     }
 }
 
+/// σ_c of the hook's clearance over the ramp under `forecast` (m): the ramp's predicted
+/// height σ_r, the hook's scatter about the path σ_h and the ramp's motion over the
+/// crossing time's uncertainty, √(σ_r² + σ_h² + (ṙ·σ_t)²) (docs/model.md §5.7).
+pub(crate) fn ramp_clearance_sigma_m(
+    parameters: &FlightPathParameters,
+    forecast: &DeckForecast,
+) -> f64 {
+    let timing = forecast.ramp_climb_rate_mps * parameters.ramp_crossing_time_sigma_s;
+    (forecast.ramp_height_sigma_m.powi(2)
+        + parameters.hook_height_sigma_m.powi(2)
+        + timing * timing)
+        .sqrt()
+}
+
 /// The anchor height: the forecast landing point, raised where the ramp-aware path needs
-/// it so that the path crosses the predicted ramp `ramp_clearance_margin_m` above it.
+/// it so that the path crosses the predicted ramp with the clearance m above it:
+/// m = max(`ramp_clearance_margin_m`, z·σ_c), z = Φ⁻¹(1 − p) of
+/// `ramp_strike_probability_limit` (0 when off) and σ_c from [`ramp_clearance_sigma_m`].
 /// The path passes the ramp (ramp_aft_of_aim_point + touchdown correction)·tan Γ above
 /// its anchor.
 pub(crate) fn ramp_aware_anchor(
@@ -382,7 +436,15 @@ pub(crate) fn ramp_aware_anchor(
     }
     let rise_to_ramp_m = (deck.ramp_aft_of_aim_point_m + parameters.touchdown_correction_m)
         * flight_path.tan_slope();
-    let floor_m = forecast.ramp_height_m + parameters.ramp_clearance_margin_m - rise_to_ramp_m;
+    let z = flight_path.ramp_clearance_z();
+    let margin_m = if z > 0.0 {
+        parameters
+            .ramp_clearance_margin_m
+            .max(z * ramp_clearance_sigma_m(parameters, forecast))
+    } else {
+        parameters.ramp_clearance_margin_m
+    };
+    let floor_m = forecast.ramp_height_m + margin_m - rise_to_ramp_m;
     forecast.landing_point_height_m.max(floor_m)
 }
 

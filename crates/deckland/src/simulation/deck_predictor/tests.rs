@@ -9,7 +9,53 @@ fn forecast(landing_point_height_m: f64, ramp_height_m: f64) -> DeckForecast {
         landing_point_climb_rate_mps: 0.0,
         landing_point_height_m,
         pitch_rad: 0.0,
+        ramp_climb_rate_mps: 0.0,
+        ramp_height_sigma_m: 0.0,
+        landing_point_climb_rate_sigma_mps: 0.0,
     }
+}
+
+/// The default path with a fixed 2.5-m margin (no risk-aware clearance).
+fn fixed_margin() -> FlightPathParameters {
+    FlightPathParameters {
+        ramp_clearance_margin_m: 2.5,
+        ramp_strike_probability_limit: 0.0,
+        ..FlightPathParameters::default()
+    }
+}
+
+/// The risk-aware clearance by hand (the default: p = 2 %, z = Φ⁻¹(0.98) = 2.0537 from
+/// the normal table; σ_h = 0.3 m, σ_t = 0.1 s; floor 2.0 m). The ramp forecast 2 m above
+/// the landing point with σ_r = 1 m, rising at 2 m/s: σ_c = √(1 + 0.09 + 0.04) = 1.0630 m,
+/// clearance 2.0537·1.0630 = 2.1831 m, anchor 24 + 2.1831 − 3.6698 = 22.5133 m. Known
+/// exactly (σ_r = 0), σ_c = √0.13 = 0.3606 m gives 0.74 m, under the 2-m floor: anchor
+/// 24 + 2 − 3.6698 = 22.3302 m. A larger σ_r raises it further.
+#[test]
+fn the_risk_aware_clearance_grows_with_the_forecasts_sigma_and_the_ramps_motion() {
+    let deck = DeckGeometry::default();
+    let parameters = FlightPathParameters::default();
+    assert_eq!(parameters.ramp_strike_probability_limit, 0.02);
+    let generator = FlightPathGenerator::new(parameters).unwrap();
+    assert!((generator.ramp_clearance_z() - 2.0537).abs() < 1e-4);
+    let uncertain = DeckForecast {
+        ramp_height_sigma_m: 1.0,
+        ramp_climb_rate_mps: 2.0,
+        ..forecast(22.0, 24.0)
+    };
+    assert!((ramp_clearance_sigma_m(&parameters, &uncertain) - 1.13_f64.sqrt()).abs() < 1e-12);
+    let raised = ramp_aware_anchor(&parameters, &generator, &deck, &uncertain);
+    assert!((raised - 22.5133).abs() < 1e-3, "{raised}");
+    let known = DeckForecast {
+        ramp_height_sigma_m: 0.0,
+        ..uncertain
+    };
+    let floor = ramp_aware_anchor(&parameters, &generator, &deck, &known);
+    assert!((floor - 22.3302).abs() < 1e-4, "{floor}");
+    let very_uncertain = DeckForecast {
+        ramp_height_sigma_m: 2.0,
+        ..uncertain
+    };
+    assert!(ramp_aware_anchor(&parameters, &generator, &deck, &very_uncertain) > raised + 1.0);
 }
 
 /// On a level deck the path already clears the ramp by 60·tan 3.5° = 3.6698 m > 2.5 m:
@@ -19,7 +65,7 @@ fn forecast(landing_point_height_m: f64, ramp_height_m: f64) -> DeckForecast {
 #[test]
 fn the_ramp_aware_anchor_rises_only_when_the_ramp_would_come_too_close() {
     let deck = DeckGeometry::default();
-    let parameters = FlightPathParameters::default();
+    let parameters = fixed_margin();
     let generator = FlightPathGenerator::new(parameters).unwrap();
     let rise = 60.0 * 3.5_f64.to_radians().tan();
     let level = ramp_aware_anchor(&parameters, &generator, &deck, &forecast(20.0, 20.0));
@@ -52,7 +98,7 @@ fn the_ramp_aware_anchor_rises_only_when_the_ramp_would_come_too_close() {
 #[test]
 fn the_path_sheds_its_raise_smoothly_between_the_ramp_and_the_aim_point() {
     let deck = DeckGeometry::default();
-    let parameters = FlightPathParameters::default();
+    let parameters = fixed_margin();
     assert!(parameters.ramp_aware && parameters.descend_after_ramp);
     assert_eq!(parameters.descent_blend_s, 0.25);
     let generator = FlightPathGenerator::new(parameters).unwrap();
