@@ -137,6 +137,12 @@ pub struct FlightPathParameters {
     /// near the glide-path error RMS of the default approach (0.2–0.4 m,
     /// docs/no-oracle-results.md); 0.3 m, [0, 5].
     pub hook_height_sigma_m: f64,
+    /// The shortest horizon at which the risk-aware clearance and the wave-off take the
+    /// ramp forecast's σ (s): the ramp's σ is that of the forecast at the crossing, or
+    /// this long ahead if the crossing is nearer, since the flight path cannot follow a
+    /// correction faster than it answers (about 2 s behind pitch, docs/model.md §5.5,
+    /// less with direct lift); 1.5 s; [0, 10].
+    pub ramp_sigma_min_horizon_s: f64,
     /// σ_t, the uncertainty of the time at which the hook crosses the ramp (s), which a
     /// moving ramp turns into height (ṙ·σ_t); an assumption; 0.1 s, [0, 2].
     pub ramp_crossing_time_sigma_s: f64,
@@ -182,6 +188,7 @@ impl Default for FlightPathParameters {
             descent_blend_s: 0.25,
             ramp_strike_probability_limit: 0.02,
             hook_height_sigma_m: 0.3,
+            ramp_sigma_min_horizon_s: 1.5,
             ramp_crossing_time_sigma_s: 0.1,
             touchdown_correction_m: 0.0,
             wake_feedforward: true,
@@ -211,7 +218,7 @@ impl FlightPathParameters {
 
     /// Checks the glide slope is in (0°, 10°], the compensation window in [0, 60] s, the
     /// blend in (0, 30] s, the lead in [0, 10] s, the filters in (0, 100] rad/s, the ramp
-    /// margin in [0, 20] m, the descent's blend in [0, 2] s, the ramp-strike probability limit in [0, 0.5), σ_h in [0, 5] m, σ_t in [0, 2] s, the touchdown correction in [−50, 50] m and the wake
+    /// margin in [0, 20] m, the descent's blend in [0, 2] s, the ramp-strike probability limit in [0, 0.5), σ_h in [0, 5] m, the σ's shortest horizon in [0, 10] s, σ_t in [0, 2] s, the touchdown correction in [−50, 50] m and the wake
     /// feed-forward's lead in [0, 10] s.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "control.flight_path";
@@ -249,6 +256,11 @@ impl FlightPathParameters {
             self.ramp_strike_probability_limit,
         )?;
         Bounds::closed(0.0, 5.0).check(SECTION, "hook_height_sigma_m", self.hook_height_sigma_m)?;
+        Bounds::closed(0.0, 10.0).check(
+            SECTION,
+            "ramp_sigma_min_horizon_s",
+            self.ramp_sigma_min_horizon_s,
+        )?;
         Bounds::closed(0.0, 2.0).check(
             SECTION,
             "ramp_crossing_time_sigma_s",

@@ -389,4 +389,45 @@ mod tests {
         let far = predictor.forecast(&ship, &ShipMotionEstimate::default(), 1e6);
         assert!(far.heave_variance_m2 <= 4.0 + 1e-9 && far.heave_variance_m2 > 1.0);
     }
+
+    /// The deck point's height σ is the forecast's, the same scipy-checked physics floor
+    /// above (5.3 m of touchdown scatter at 0.5 s: 5.3·tan 3.5° = 0.324 m at the landing
+    /// point); its climb-rate σ is 0 with nothing to predict, grows with the horizon and
+    /// never exceeds the stationary climb-rate σ, √(1.21²·q_h·P∞[1][1] +
+    /// 81²·0.773²·q_p·P∞[3][3]) (knowing nothing).
+    #[test]
+    fn the_deck_points_uncertainty_matches_the_forecast_and_its_limits() {
+        let ship = ShipMotion::new(ShipMotionParameters::default()).unwrap();
+        let predictor = ShipMotionPropagator::new(10.0);
+        let estimate = ShipMotionEstimate::default();
+        for horizon in [0.0, 0.5, 2.0, 5.0] {
+            let forecast = predictor.forecast(&ship, &estimate, horizon);
+            let uncertainty =
+                predictor.deck_point_uncertainty(&ship, &estimate, horizon, 81.0, 0.0);
+            let expected = forecast.deck_point_height_sigma_m(81.0);
+            assert!(
+                (uncertainty.height_sigma_m - expected).abs() < 1e-12,
+                "{horizon}"
+            );
+        }
+        let now = predictor.deck_point_uncertainty(&ship, &estimate, 0.0, 81.0, 0.0);
+        assert!(now.climb_rate_sigma_mps < 1e-9, "{now:?}");
+        let stationary = unit_intensity_state_covariance();
+        let sigma = |horizon| {
+            predictor
+                .deck_point_uncertainty(&ship, &estimate, horizon, 81.0, 0.0)
+                .climb_rate_sigma_mps
+        };
+        assert!(sigma(0.5) > 0.0 && sigma(0.5) < sigma(2.0) && sigma(2.0) < sigma(10.0));
+        let expected = (HEAVE_FILTER_GAIN.powi(2)
+            * ship.heave_noise_intensity()
+            * stationary[1][1]
+            + (81.0 * PITCH_FILTER_GAIN).powi(2) * ship.pitch_noise_intensity() * stationary[3][3])
+            .sqrt();
+        assert!(
+            sigma(10.0) <= expected,
+            "{} against {expected}",
+            sigma(10.0)
+        );
+    }
 }

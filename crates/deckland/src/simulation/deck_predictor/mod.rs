@@ -323,7 +323,9 @@ impl DeckQuery<'_> {
             self.time_to_go_s,
             closure,
             deck,
-            shaping.uncertainty,
+            shaping
+                .uncertainty
+                .then_some(parameters.ramp_sigma_min_horizon_s),
         );
         let target = ramp_aware_anchor(parameters, self.flight_path, deck, &forecast);
         let descent = (parameters.ramp_aware && parameters.descend_after_ramp)
@@ -350,8 +352,9 @@ impl DeckQuery<'_> {
 /// The forecast of the deck for a hook `time_to_go_s` from touchdown closing at
 /// `closure_mps`, from `estimate` whose time lies `age_s` in the past: the landing point
 /// at touchdown, the ramp when the hook crosses it (`ramp_aft_of_aim_point_m` / closure
-/// earlier); with `uncertainty`, also the σ of the ramp's height at the crossing and of
-/// the landing point's climb rate at touchdown (otherwise 0).
+/// earlier); with `uncertainty` = Some(h_min), also the σ of the ramp's height at the
+/// crossing (or h_min ahead, if the crossing is nearer) and of the landing point's climb
+/// rate at touchdown (otherwise 0).
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn forecast_deck(
     predictor: &ShipMotionPropagator,
@@ -361,7 +364,7 @@ pub(crate) fn forecast_deck(
     time_to_go_s: f64,
     closure_mps: f64,
     deck: &DeckGeometry,
-    uncertainty: bool,
+    uncertainty: Option<f64>,
 ) -> DeckForecast {
     let landing_arm_m = deck.landing_point_aft_of_pitch_centre_m;
     let ramp_arm_m = landing_arm_m + deck.ramp_aft_of_aim_point_m;
@@ -375,24 +378,31 @@ pub(crate) fn forecast_deck(
     let at_touchdown: ShipMotionForecast =
         predictor.forecast_mean(ship, estimate, touchdown_lead_s);
     let at_ramp = predictor.forecast_mean(ship, estimate, ramp_lead_s);
-    let (ramp_height_sigma_m, landing_point_climb_rate_sigma_mps) = if uncertainty {
-        (
-            predictor
-                .deck_point_uncertainty(ship, estimate, ramp_lead_s, ramp_arm_m, at_ramp.pitch_rad)
-                .height_sigma_m,
-            predictor
-                .deck_point_uncertainty(
-                    ship,
-                    estimate,
-                    touchdown_lead_s,
-                    landing_arm_m,
-                    at_touchdown.pitch_rad,
-                )
-                .climb_rate_sigma_mps,
-        )
-    } else {
-        (0.0, 0.0)
-    };
+    let (ramp_height_sigma_m, landing_point_climb_rate_sigma_mps) =
+        if let Some(min_horizon_s) = uncertainty {
+            (
+                predictor
+                    .deck_point_uncertainty(
+                        ship,
+                        estimate,
+                        age_s + ramp_time_s.max(min_horizon_s),
+                        ramp_arm_m,
+                        at_ramp.pitch_rad,
+                    )
+                    .height_sigma_m,
+                predictor
+                    .deck_point_uncertainty(
+                        ship,
+                        estimate,
+                        touchdown_lead_s,
+                        landing_arm_m,
+                        at_touchdown.pitch_rad,
+                    )
+                    .climb_rate_sigma_mps,
+            )
+        } else {
+            (0.0, 0.0)
+        };
     DeckForecast {
         ramp_height_m: deck.deck_height_m + at_ramp.deck_point_height_m(ramp_arm_m),
         landing_point_climb_rate_mps: at_touchdown.deck_point_climb_rate_mps(landing_arm_m),
