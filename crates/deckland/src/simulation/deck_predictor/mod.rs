@@ -373,8 +373,7 @@ pub(crate) fn forecast_deck(
     } else {
         time_to_go_s
     };
-    let touchdown_lead_s = age_s + time_to_go_s.max(0.0);
-    let ramp_lead_s = age_s + ramp_time_s;
+    let (touchdown_lead_s, ramp_lead_s) = (age_s + time_to_go_s.max(0.0), age_s + ramp_time_s);
     let at_touchdown: ShipMotionForecast =
         predictor.forecast_mean(ship, estimate, touchdown_lead_s);
     let at_ramp = predictor.forecast_mean(ship, estimate, ramp_lead_s);
@@ -415,9 +414,8 @@ pub(crate) fn forecast_deck(
     }
 }
 
-/// σ_c of the hook's clearance over the ramp under `forecast` (m): the ramp's predicted
-/// height σ_r, the hook's scatter about the path σ_h and the ramp's motion over the
-/// crossing time's uncertainty, √(σ_r² + σ_h² + (ṙ·σ_t)²) (docs/model.md §5.7).
+/// σ_c = √(σ_r² + σ_h² + (ṙ·σ_t)²) of the hook's clearance over the ramp (m), from the
+/// ramp's σ_r and climb rate ṙ in `forecast` (docs/model.md §5.7).
 pub(crate) fn ramp_clearance_sigma_m(
     parameters: &FlightPathParameters,
     forecast: &DeckForecast,
@@ -461,13 +459,10 @@ pub(crate) fn ramp_aware_anchor(
 /// The share of the ramp-aware raise the path keeps for a hook `range_m` before the
 /// aim point, closing at `closure_mps`, and its rate (1/s). With `descend_after_ramp`
 /// the path keeps all of it up to the ramp and sheds it between the ramp and the aim
-/// point (d_R = ramp distance + correction): it crosses the ramp with the margin and still
-/// reaches the predicted landing point, on a steeper last segment, instead of landing
-/// raise/tan Γ long. The shed's rate, as a function of the progress u = 1 − d/d_R, is a
-/// plateau g_max = 1/(1 − b) entered and left through a 3x² − 2x³ blend of width
-/// b = min(T_b·closure/d_R, ½) (T_b = `descent_blend_s`): the climb-rate command and its
-/// rate have no step where the descent starts (at the ramp) or ends (at the aim point).
-/// T_b = 0 sheds linearly. Without `descend_after_ramp` the path keeps all of it.
+/// point (docs/model.md §5.7): the shed's rate in u = 1 − d/d_R is a plateau
+/// g_max = 1/(1 − b) entered and left through a 3x² − 2x³ blend of width
+/// b = min(T_b·closure/d_R, ½), T_b = `descent_blend_s` (0: linear), so the command has
+/// no step at the ramp or the aim point. Without `descend_after_ramp` it keeps all.
 pub(crate) fn raise_share(
     parameters: &FlightPathParameters,
     deck: &DeckGeometry,
