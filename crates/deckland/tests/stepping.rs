@@ -182,12 +182,17 @@ fn regression_a_pitch_command_reaches_the_flight_computer() {
 fn a_wave_off_is_an_event_then_the_end() {
     // The default scenario, seed 6, on the estimator: the wave-off decision is an event,
     // the hook then crosses the ramp and passes the last wire in the air, which ends the
-    // run as a wave-off with the decision's reason.
-    let mut simulation = Simulation::new(&Scenario {
+    // run as a wave-off with the decision's reason (with the fixed ramp limits, 2.5-m
+    // margin and 1.5-m wave-off limit: the risk-aware clearance flies this pass higher).
+    let mut scenario = Scenario {
         seed: 6,
         ..Scenario::default()
-    })
-    .expect("valid");
+    };
+    scenario.control.flight_path.ramp_clearance_margin_m = 2.5;
+    scenario.control.flight_path.ramp_strike_probability_limit = 0.0;
+    scenario.control.wave_off.min_ramp_clearance_m = 1.5;
+    scenario.control.wave_off.max_ramp_strike_probability = 0.0;
+    let mut simulation = Simulation::new(&scenario).expect("valid");
     let mut events = Vec::new();
     let end = loop {
         match simulation.step(&mut SummaryRecorder) {

@@ -110,16 +110,49 @@ pub struct FlightPathParameters {
     /// predicted ramp at least `ramp_clearance_margin_m` above it (docs/model.md §5.7);
     /// on in the realistic set, off in the paper's.
     pub ramp_aware: bool,
-    /// Hook-over-ramp clearance the path keeps above the predicted ramp (m); 2.5 m (the
-    /// landing signal officer's minimum is 10 ft, 3.05 m: on this deck, with 3.7 m of
-    /// nominal clearance, keeping it lifts the path so often that a moderate sea boards
-    /// 86 % instead of 95 %; docs/model.md §5.7).
+    /// Smallest hook-over-ramp clearance the path keeps above the predicted ramp (m);
+    /// 2.0 m, raised by the risk-aware clearance where the forecast is uncertain or the
+    /// ramp moves (`ramp_strike_probability_limit`); 2.5 m, fixed, in the paper's set
+    /// (the landing signal officer's minimum is 10 ft, 3.05 m: on this deck, with 3.7 m
+    /// of nominal clearance, keeping it lifts the path so often that a moderate sea
+    /// boards 86 % instead of 95 %; docs/model.md §5.7).
     pub ramp_clearance_margin_m: f64,
     /// With `ramp_aware`, shed the anchor's raise between the ramp and the aim point: the
     /// path crosses the predicted ramp with the margin, then descends on a steeper last
     /// segment to the predicted landing point instead of landing raise/tan Γ long
     /// (docs/model.md §5.7); on in the realistic set.
     pub descend_after_ramp: bool,
+    /// Risk-aware clearance over the ramp (docs/model.md §5.7): the path crosses the
+    /// predicted ramp at least z·σ_c above it, z = Φ⁻¹(1 − p) for this p, σ_c² = σ_r² +
+    /// σ_h² + (ṙ·σ_t)² with σ_r the forecast's σ of the ramp height at the crossing, ṙ the
+    /// ramp's predicted climb rate then, σ_h = `hook_height_sigma_m` and
+    /// σ_t = `ramp_crossing_time_sigma_s`, so that under the Gaussian forecast the hook
+    /// passes below the ramp with probability at most p; never less than
+    /// `ramp_clearance_margin_m`. 0 turns it off (the fixed margin alone, the paper's
+    /// set); 0.02 (2 %, tuned on 400 approaches of the paper's sea,
+    /// docs/no-oracle-results.md); [0, 0.5).
+    pub ramp_strike_probability_limit: f64,
+    /// σ_h, the hook's height scatter about the path where it crosses the ramp (m), for
+    /// the risk-aware clearance and the wave-off's ramp-strike probability; an assumption
+    /// near the glide-path error RMS of the default approach (0.2–0.4 m,
+    /// docs/no-oracle-results.md); 0.3 m, [0, 5].
+    pub hook_height_sigma_m: f64,
+    /// The shortest horizon at which the risk-aware clearance and the wave-off take the
+    /// ramp forecast's σ (s): the ramp's σ is that of the forecast at the crossing, or
+    /// this long ahead if the crossing is nearer, since the flight path cannot follow a
+    /// correction faster than it answers (about 2 s behind pitch, docs/model.md §5.5,
+    /// less with direct lift); 1.5 s; [0, 10].
+    pub ramp_sigma_min_horizon_s: f64,
+    /// σ_t, the uncertainty of the time at which the hook crosses the ramp (s), which a
+    /// moving ramp turns into height (ṙ·σ_t); an assumption; 0.1 s, [0, 2].
+    pub ramp_crossing_time_sigma_s: f64,
+    /// With `descend_after_ramp`, the time over which the descent's extra sink rate
+    /// blends in after the hook crosses the ramp and out before the aim point (s), as
+    /// 3x² − 2x³: the climb-rate command and its rate have no step there (a linear shed,
+    /// 0 here, stepped the command by 1.5 m/s over the ramp and drove the stabilator onto
+    /// its rate limit, docs/model.md §5.7); 0.25 s; [0, 2] s (at most half the
+    /// ramp-to-aim-point segment is used).
+    pub descent_blend_s: f64,
     /// Touchdown-point correction (m along the deck, positive forward): the path aims
     /// this far from the aim point, to cancel the air wake's systematic push of the
     /// touchdown forward (docs/model.md §5.7); measured in calm water. 0 in the paper's
@@ -150,8 +183,13 @@ impl Default for FlightPathParameters {
             compensation_blend: CompensationBlend::Smooth,
             anchor_filter_frequency_radps: 1.0,
             ramp_aware: true,
-            ramp_clearance_margin_m: 2.5,
+            ramp_clearance_margin_m: 2.0,
             descend_after_ramp: true,
+            descent_blend_s: 0.25,
+            ramp_strike_probability_limit: 0.02,
+            hook_height_sigma_m: 0.3,
+            ramp_sigma_min_horizon_s: 1.5,
+            ramp_crossing_time_sigma_s: 0.1,
             touchdown_correction_m: 0.0,
             wake_feedforward: true,
             wake_feedforward_lead_s: 0.0,
@@ -168,7 +206,9 @@ impl FlightPathParameters {
             deck_motion_predictor: DeckPredictorKind::Oracle,
             compensation_blend: CompensationBlend::Linear,
             ramp_aware: false,
+            ramp_clearance_margin_m: 2.5,
             descend_after_ramp: false,
+            ramp_strike_probability_limit: 0.0,
             touchdown_correction_m: 0.0,
             wake_feedforward: false,
             wake_feedforward_lead_s: 0.0,
@@ -178,7 +218,7 @@ impl FlightPathParameters {
 
     /// Checks the glide slope is in (0°, 10°], the compensation window in [0, 60] s, the
     /// blend in (0, 30] s, the lead in [0, 10] s, the filters in (0, 100] rad/s, the ramp
-    /// margin in [0, 20] m, the touchdown correction in [−50, 50] m and the wake
+    /// margin in [0, 20] m, the descent's blend in [0, 2] s, the ramp-strike probability limit in [0, 0.5), σ_h in [0, 5] m, the σ's shortest horizon in [0, 10] s, σ_t in [0, 2] s, the touchdown correction in [−50, 50] m and the wake
     /// feed-forward's lead in [0, 10] s.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "control.flight_path";
@@ -208,6 +248,23 @@ impl FlightPathParameters {
             SECTION,
             "ramp_clearance_margin_m",
             self.ramp_clearance_margin_m,
+        )?;
+        Bounds::closed(0.0, 2.0).check(SECTION, "descent_blend_s", self.descent_blend_s)?;
+        Bounds::closed(0.0, 0.5).exclusive_max().check(
+            SECTION,
+            "ramp_strike_probability_limit",
+            self.ramp_strike_probability_limit,
+        )?;
+        Bounds::closed(0.0, 5.0).check(SECTION, "hook_height_sigma_m", self.hook_height_sigma_m)?;
+        Bounds::closed(0.0, 10.0).check(
+            SECTION,
+            "ramp_sigma_min_horizon_s",
+            self.ramp_sigma_min_horizon_s,
+        )?;
+        Bounds::closed(0.0, 2.0).check(
+            SECTION,
+            "ramp_crossing_time_sigma_s",
+            self.ramp_crossing_time_sigma_s,
         )?;
         Bounds::closed(-50.0, 50.0).check(
             SECTION,
@@ -284,6 +341,15 @@ pub struct DeckForecast {
     pub landing_point_height_m: f64,
     /// Predicted ship pitch at touchdown (rad, bow up).
     pub pitch_rad: f64,
+    /// Predicted climb rate of the ramp when the hook crosses it (m/s, up).
+    pub ramp_climb_rate_mps: f64,
+    /// σ of the ramp-height prediction at the crossing (m), from the estimator's
+    /// covariance carried to that horizon and the sea still to come
+    /// ([`crate::environment::ShipMotionPropagator::deck_point_uncertainty`]); 0 when
+    /// neither the guidance nor the wave-off asks for it.
+    pub ramp_height_sigma_m: f64,
+    /// σ of the landing point's predicted climb rate at touchdown (m/s); 0 likewise.
+    pub landing_point_climb_rate_sigma_mps: f64,
 }
 
 /// The generator's output for the hook.
@@ -304,21 +370,33 @@ pub struct PathReference {
 pub struct FlightPathGenerator {
     parameters: FlightPathParameters,
     tan_slope: f64,
+    ramp_clearance_z: f64,
 }
 
 impl FlightPathGenerator {
     /// Builds the generator after validating its parameters.
     pub fn new(parameters: FlightPathParameters) -> Result<Self, ParameterError> {
         parameters.validate()?;
+        let p = parameters.ramp_strike_probability_limit;
         Ok(Self {
             parameters,
             tan_slope: parameters.glide_slope_deg.to_radians().tan(),
+            ramp_clearance_z: if p > 0.0 {
+                super::risk::normal_upper_quantile(p)
+            } else {
+                0.0
+            },
         })
     }
 
     /// The parameters.
     pub fn parameters(&self) -> &FlightPathParameters {
         &self.parameters
+    }
+
+    /// z = Φ⁻¹(1 − p) of the ramp-strike probability limit p (–); 0 when it is off.
+    pub fn ramp_clearance_z(&self) -> f64 {
+        self.ramp_clearance_z
     }
 
     /// tan of the glide slope (–).

@@ -16,6 +16,7 @@ pub mod lateral;
 mod law;
 mod loop_controller;
 pub mod pitch;
+pub mod risk;
 mod sink_rate;
 mod speed;
 mod wave_off;

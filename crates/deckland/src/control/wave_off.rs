@@ -48,7 +48,8 @@ pub struct WaveOffParameters {
     /// 3 strikes, none after one, with 2.5 s; over 3000 approaches 23 against 21, with
     /// half the wave-offs; docs/no-oracle-results.md).
     pub decision_time_to_go_s: f64,
-    /// Smallest predicted hook-to-ramp clearance (m); 1.5 m (with 1.0 m, one approach in
+    /// Smallest predicted hook-to-ramp clearance (m); 0 (off) by default, where the
+    /// ramp-strike probability decides; it was 1.5 m (with 1.0 m, one approach in
     /// 1000 in the moderate sea struck the ramp and 30 in the paper's sea were lost,
     /// against 0 and 27 with 1.5 m, docs/no-oracle-results.md). The landing signal
     /// officer's 10-ft (3.05-m) minimum is the guidance's margin
@@ -56,6 +57,25 @@ pub struct WaveOffParameters {
     /// nominal clearance) waving off every pass predicted below 3.05 m waves off half the
     /// approaches in a moderate sea (docs/model.md §9).
     pub min_ramp_clearance_m: f64,
+    /// Largest probability of a ramp strike under the forecast (–); the module docs' first
+    /// criterion; 0 turns it off; 0.2 (decided 1.5–2.5 s before the ramp, where the
+    /// path still corrects: with the risk-aware path it replaces the 1.5-m clearance limit
+    /// at the same outcomes in the paper's sea and no wave-off in a moderate sea's 400
+    /// approaches against 4, docs/no-oracle-results.md); [0, 1).
+    pub max_ramp_strike_probability: f64,
+    /// Largest probability of a hard landing under the forecast (–); 0 turns it off, the
+    /// default: at 0.05–0.3 it waved off 10–48 % of the paper's sea's approaches and
+    /// caught none of its hard landings, which the deck makes after the decision point
+    /// (docs/no-oracle-results.md); [0, 1).
+    pub max_hard_landing_probability: f64,
+    /// The touchdown sink rate relative to the deck that the hard-landing probability
+    /// counts as hard (m/s); 7.6 m/s, the outcome's limit (docs/model.md §7); (0, 20].
+    pub hard_landing_sink_rate_mps: f64,
+    /// σ_sink, the scatter of the hook's own sink rate between the decision and
+    /// touchdown (m/s), for the hard-landing probability; an assumption, 1.0 m/s (the
+    /// default approach's touchdown sink rate scatters by 1.3 m/s with the deck's part
+    /// in it, docs/no-oracle-results.md); [0, 5].
+    pub touchdown_sink_rate_sigma_mps: f64,
     /// Largest predicted touchdown sink rate relative to the deck (m/s); 7.0 m/s, below
     /// the 7.6-m/s hard-landing limit (docs/model.md §7).
     pub max_touchdown_sink_rate_mps: f64,
@@ -88,7 +108,11 @@ impl Default for WaveOffParameters {
             enabled: true,
             window_start_time_to_go_s: 4.0,
             decision_time_to_go_s: 2.5,
-            min_ramp_clearance_m: 1.5,
+            min_ramp_clearance_m: 0.0,
+            max_ramp_strike_probability: 0.2,
+            max_hard_landing_probability: 0.0,
+            hard_landing_sink_rate_mps: 7.6,
+            touchdown_sink_rate_sigma_mps: 1.0,
             max_touchdown_sink_rate_mps: 7.0,
             max_glide_path_error_m: 3.0,
             max_glide_path_error_rate_mps: 4.0,
@@ -105,12 +129,14 @@ impl WaveOffParameters {
     pub fn paper() -> Self {
         Self {
             enabled: false,
+            min_ramp_clearance_m: 1.5,
             ..Self::default()
         }
     }
 
     /// Checks every limit: window 0–30 s, decision point 0–30 s and not after the window
-    /// opens, clearance 0–20 m, sink rate (0, 20] m/s, glide-path error (0, 50] m and
+    /// opens, clearance 0–20 m, the probabilities [0, 1), the hard-landing sink rate
+    /// (0, 20] m/s and its σ [0, 5] m/s, sink rate (0, 20] m/s, glide-path error (0, 50] m and
     /// (0, 50] m/s, deck pitch (0, 30]°, displacement (0, 50] m, climb rate (0, 30] m/s,
     /// smallest α −5°–15° (the aerodynamic model's lower end to the stall's side of the
     /// approach).
@@ -130,6 +156,27 @@ impl WaveOffParameters {
             SECTION,
             "min_ramp_clearance_m",
             self.min_ramp_clearance_m,
+        )?;
+        let probability = Bounds::closed(0.0, 1.0).exclusive_max();
+        probability.check(
+            SECTION,
+            "max_ramp_strike_probability",
+            self.max_ramp_strike_probability,
+        )?;
+        probability.check(
+            SECTION,
+            "max_hard_landing_probability",
+            self.max_hard_landing_probability,
+        )?;
+        Bounds::positive_up_to(20.0).check(
+            SECTION,
+            "hard_landing_sink_rate_mps",
+            self.hard_landing_sink_rate_mps,
+        )?;
+        Bounds::closed(0.0, 5.0).check(
+            SECTION,
+            "touchdown_sink_rate_sigma_mps",
+            self.touchdown_sink_rate_sigma_mps,
         )?;
         Bounds::positive_up_to(20.0).check(
             SECTION,
@@ -165,6 +212,10 @@ impl WaveOffParameters {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum WaveOffCriterion {
+    /// Probability of a ramp strike above the limit.
+    RampStrikeProbability,
+    /// Probability of a hard landing above the limit.
+    HardLandingProbability,
     /// Predicted hook-to-ramp clearance below the minimum.
     RampClearance,
     /// Predicted touchdown sink rate relative to the deck above the limit.
@@ -183,6 +234,8 @@ impl WaveOffCriterion {
     /// The criterion's name, as written to files.
     pub fn name(self) -> &'static str {
         match self {
+            Self::RampStrikeProbability => "ramp_strike_probability",
+            Self::HardLandingProbability => "hard_landing_probability",
             Self::RampClearance => "ramp_clearance",
             Self::TouchdownSinkRate => "touchdown_sink_rate",
             Self::GlidePathError => "glide_path_error",
@@ -195,6 +248,8 @@ impl WaveOffCriterion {
     /// The criterion's quantity and unit, in words.
     pub fn quantity(self) -> &'static str {
         match self {
+            Self::RampStrikeProbability => "probability of a ramp strike (%)",
+            Self::HardLandingProbability => "probability of a hard landing (%)",
             Self::RampClearance => "predicted ramp clearance (m)",
             Self::TouchdownSinkRate => "predicted touchdown sink rate (m/s)",
             Self::GlidePathError => "glide-path error (m)",
@@ -233,6 +288,8 @@ pub struct WaveOffInputs {
     pub hook_climb_rate_mps: f64,
     /// Mean height of the landing point (m).
     pub mean_landing_point_height_m: f64,
+    /// σ_c of the predicted ramp clearance (m), for the ramp-strike probability.
+    pub ramp_clearance_sigma_m: f64,
     /// The deck forecast.
     pub forecast: DeckForecast,
 }
@@ -263,7 +320,35 @@ impl WaveOffParameters {
         } else {
             0.0
         };
+        let percent = |x: f64| 100.0 * x;
+        let ramp_strike = if self.max_ramp_strike_probability > 0.0 {
+            super::risk::normal_cdf(-clearance / inputs.ramp_clearance_sigma_m.max(1e-9))
+        } else {
+            0.0
+        };
+        let hard_landing = if self.max_hard_landing_probability > 0.0 {
+            let sigma = forecast
+                .landing_point_climb_rate_sigma_mps
+                .hypot(self.touchdown_sink_rate_sigma_mps);
+            super::risk::normal_cdf((sink - self.hard_landing_sink_rate_mps) / sigma.max(1e-9))
+        } else {
+            0.0
+        };
         let checks = [
+            (
+                WaveOffCriterion::RampStrikeProbability,
+                percent(ramp_strike),
+                percent(self.max_ramp_strike_probability),
+                self.max_ramp_strike_probability > 0.0
+                    && ramp_strike > self.max_ramp_strike_probability,
+            ),
+            (
+                WaveOffCriterion::HardLandingProbability,
+                percent(hard_landing),
+                percent(self.max_hard_landing_probability),
+                self.max_hard_landing_probability > 0.0
+                    && hard_landing > self.max_hard_landing_probability,
+            ),
             (
                 WaveOffCriterion::RampClearance,
                 clearance,
@@ -314,111 +399,5 @@ impl WaveOffParameters {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn calm() -> WaveOffInputs {
-        WaveOffInputs {
-            time_to_go_s: 4.0,
-            glide_path_error_m: 0.0,
-            glide_path_error_rate_mps: 0.0,
-            // 3.5° path over a level deck: 60·tan 3.5° = 3.67 m over a ramp at 20 m.
-            path_height_at_ramp_m: 23.67,
-            hook_climb_rate_mps: -3.7,
-            mean_landing_point_height_m: 20.0,
-            forecast: DeckForecast {
-                ramp_height_m: 20.0,
-                landing_point_climb_rate_mps: 0.0,
-                landing_point_height_m: 20.0,
-                pitch_rad: 0.0,
-            },
-        }
-    }
-
-    #[test]
-    fn a_nominal_approach_on_a_level_deck_goes_on() {
-        assert_eq!(WaveOffParameters::default().decide(&calm()), None);
-    }
-
-    #[test]
-    fn each_criterion_calls_the_wave_off_with_its_value() {
-        let p = WaveOffParameters::default();
-        // The hook 2.8 m low: clearance 3.67 − 2.8 = 0.87 m < 1 m.
-        let low = WaveOffInputs {
-            glide_path_error_m: 2.8,
-            ..calm()
-        };
-        let d = p.decide(&low).expect("wave-off");
-        assert_eq!(d.criterion, WaveOffCriterion::RampClearance);
-        assert!((d.value - 0.87).abs() < 1e-9);
-        // The deck rising at 3.5 m/s into a hook sinking at 3.7 m/s: 7.2 m/s > 7.
-        let mut rising = calm();
-        rising.forecast.landing_point_climb_rate_mps = 3.5;
-        let d = p.decide(&rising).expect("wave-off");
-        assert_eq!(d.criterion, WaveOffCriterion::TouchdownSinkRate);
-        assert!((d.value - 7.2).abs() < 1e-9);
-        // 3.5 m high: clearance is fine, the error is not.
-        let high = WaveOffInputs {
-            glide_path_error_m: -3.5,
-            ..calm()
-        };
-        assert_eq!(
-            p.decide(&high).map(|d| d.criterion),
-            Some(WaveOffCriterion::GlidePathError)
-        );
-        // Drifting high at 4.5 m/s.
-        let drifting = WaveOffInputs {
-            glide_path_error_m: -0.5,
-            glide_path_error_rate_mps: -4.5,
-            ..calm()
-        };
-        assert_eq!(
-            p.decide(&drifting).map(|d| d.criterion),
-            Some(WaveOffCriterion::GlidePathErrorRate)
-        );
-        // Bow up 4°: the deck pitch limit (the ramp drops, so clearance is fine).
-        let mut pitched = calm();
-        pitched.forecast.pitch_rad = 4.0_f64.to_radians();
-        assert_eq!(
-            p.decide(&pitched).map(|d| d.criterion),
-            Some(WaveOffCriterion::DeckPitch)
-        );
-        let mut heaved = calm();
-        heaved.forecast.landing_point_height_m = 14.0;
-        heaved.forecast.ramp_height_m = 14.0;
-        assert_eq!(
-            p.decide(&heaved).map(|d| d.criterion),
-            Some(WaveOffCriterion::LandingPointDisplacement)
-        );
-    }
-
-    #[test]
-    fn outside_the_window_or_disabled_nothing_is_decided() {
-        let low = WaveOffInputs {
-            glide_path_error_m: 2.9,
-            ..calm()
-        };
-        let p = WaveOffParameters::default();
-        for time_to_go_s in [6.0, 1.0] {
-            assert_eq!(
-                p.decide(&WaveOffInputs {
-                    time_to_go_s,
-                    ..low
-                }),
-                None
-            );
-        }
-        assert_eq!(WaveOffParameters::paper().decide(&low), None);
-    }
-
-    #[test]
-    fn a_decision_point_after_the_window_is_refused_by_name() {
-        let error = WaveOffParameters {
-            decision_time_to_go_s: 5.0,
-            ..WaveOffParameters::default()
-        }
-        .validate()
-        .unwrap_err();
-        assert_eq!(error.path, "control.wave_off.decision_time_to_go_s");
-    }
-}
+#[path = "wave_off_tests.rs"]
+mod tests;

@@ -34,7 +34,8 @@ pub use ship_lateral::{
     ROLL_FILTER_DAMPING_RATIO, ROLL_FILTER_NATURAL_FREQUENCY_RADPS,
 };
 pub use ship_prediction::{
-    Matrix4Array, PredictedShipMotion, ShipMotionEstimate, ShipMotionForecast, ShipMotionPropagator,
+    DeckPointUncertainty, Matrix4Array, PredictedShipMotion, ShipMotionEstimate,
+    ShipMotionForecast, ShipMotionPropagator,
 };
 pub use ship_simulator::ShipMotionSimulator;
 pub use turbulence::Turbulence;

@@ -95,6 +95,15 @@ impl ShipMotionForecast {
     }
 }
 
+/// The standard deviations of a deck point's predicted height and climb rate.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct DeckPointUncertainty {
+    /// σ of the height prediction (m).
+    pub height_sigma_m: f64,
+    /// σ of the climb-rate prediction (m/s).
+    pub climb_rate_sigma_mps: f64,
+}
+
 /// r·P·rᵀ for a row r and a symmetric P.
 #[inline]
 fn quadratic_form(row: &[f64; 4], p: &Matrix4Array) -> f64 {
@@ -237,6 +246,48 @@ impl ShipMotionPropagator {
     }
 }
 
+impl ShipMotionPropagator {
+    /// The standard deviations of the predicted height and climb rate of a deck point
+    /// `lever_arm_m` aft of the pitch centre, `lead_s` after the time of `estimate`, with
+    /// the ship pitched `pitch_rad` (the module docs' error variance for the rows of
+    /// heave, heave rate, pitch and pitch rate; heave and pitch independent, linearised
+    /// in the pitch error as [`ShipMotionForecast::deck_point_height_sigma_m`]); zero when
+    /// the ship motion is disabled.
+    pub fn deck_point_uncertainty(
+        &self,
+        ship: &ShipMotion,
+        estimate: &ShipMotionEstimate,
+        lead_s: f64,
+        lever_arm_m: f64,
+        pitch_rad: f64,
+    ) -> DeckPointUncertainty {
+        if !ship.parameters().enabled {
+            return DeckPointUncertainty::default();
+        }
+        let grid = self.grid(lead_s);
+        let variance = |i: usize, covariance: &Matrix4Array, intensity: f64| {
+            let row = self.row(grid, i);
+            let unpredictable =
+                (self.stationary[i][i] - quadratic_form(&row, &self.stationary)).max(0.0);
+            quadratic_form(&row, covariance) + intensity * unpredictable
+        };
+        let (heave, pitch) = (
+            HEAVE_FILTER_GAIN * HEAVE_FILTER_GAIN,
+            PITCH_FILTER_GAIN * PITCH_FILTER_GAIN,
+        );
+        let (qh, qp) = (ship.heave_noise_intensity(), ship.pitch_noise_intensity());
+        let arm = lever_arm_m * pitch_rad.cos();
+        let height = heave * variance(0, &estimate.heave_covariance, qh)
+            + arm * arm * pitch * variance(2, &estimate.pitch_covariance, qp);
+        let rate = heave * variance(1, &estimate.heave_covariance, qh)
+            + arm * arm * pitch * variance(3, &estimate.pitch_covariance, qp);
+        DeckPointUncertainty {
+            height_sigma_m: height.max(0.0).sqrt(),
+            climb_rate_sigma_mps: rate.max(0.0).sqrt(),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -337,5 +388,46 @@ mod tests {
         // No horizon is worse than knowing nothing: the stationary heave variance, 4 m².
         let far = predictor.forecast(&ship, &ShipMotionEstimate::default(), 1e6);
         assert!(far.heave_variance_m2 <= 4.0 + 1e-9 && far.heave_variance_m2 > 1.0);
+    }
+
+    /// The deck point's height σ is the forecast's, the same scipy-checked physics floor
+    /// above (5.3 m of touchdown scatter at 0.5 s: 5.3·tan 3.5° = 0.324 m at the landing
+    /// point); its climb-rate σ is 0 with nothing to predict, grows with the horizon and
+    /// never exceeds the stationary climb-rate σ, √(1.21²·q_h·P∞[1][1] +
+    /// 81²·0.773²·q_p·P∞[3][3]) (knowing nothing).
+    #[test]
+    fn the_deck_points_uncertainty_matches_the_forecast_and_its_limits() {
+        let ship = ShipMotion::new(ShipMotionParameters::default()).unwrap();
+        let predictor = ShipMotionPropagator::new(10.0);
+        let estimate = ShipMotionEstimate::default();
+        for horizon in [0.0, 0.5, 2.0, 5.0] {
+            let forecast = predictor.forecast(&ship, &estimate, horizon);
+            let uncertainty =
+                predictor.deck_point_uncertainty(&ship, &estimate, horizon, 81.0, 0.0);
+            let expected = forecast.deck_point_height_sigma_m(81.0);
+            assert!(
+                (uncertainty.height_sigma_m - expected).abs() < 1e-12,
+                "{horizon}"
+            );
+        }
+        let now = predictor.deck_point_uncertainty(&ship, &estimate, 0.0, 81.0, 0.0);
+        assert!(now.climb_rate_sigma_mps < 1e-9, "{now:?}");
+        let stationary = unit_intensity_state_covariance();
+        let sigma = |horizon| {
+            predictor
+                .deck_point_uncertainty(&ship, &estimate, horizon, 81.0, 0.0)
+                .climb_rate_sigma_mps
+        };
+        assert!(sigma(0.5) > 0.0 && sigma(0.5) < sigma(2.0) && sigma(2.0) < sigma(10.0));
+        let expected = (HEAVE_FILTER_GAIN.powi(2)
+            * ship.heave_noise_intensity()
+            * stationary[1][1]
+            + (81.0 * PITCH_FILTER_GAIN).powi(2) * ship.pitch_noise_intensity() * stationary[3][3])
+            .sqrt();
+        assert!(
+            sigma(10.0) <= expected,
+            "{} against {expected}",
+            sigma(10.0)
+        );
     }
 }

@@ -16,6 +16,9 @@ pub struct AnchorShaping {
     /// step.
     raise: Option<(f64, f64)>,
     frequency_radps: f64,
+    /// Whether the forecast carries its σ (the ramp's height, the deck's climb rate), for
+    /// risk-aware guidance and the probabilistic wave-off.
+    pub(crate) uncertainty: bool,
 }
 
 /// The shaped anchor of one step.
@@ -36,6 +39,15 @@ impl AnchorShaping {
             anchor: None,
             raise: None,
             frequency_radps,
+            uncertainty: false,
+        }
+    }
+
+    /// The same, with the forecast's σ worked out when `uncertainty`.
+    pub fn with_uncertainty(self, uncertainty: bool) -> Self {
+        Self {
+            uncertainty,
+            ..self
         }
     }
 

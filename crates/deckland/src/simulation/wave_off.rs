@@ -102,6 +102,10 @@ pub(crate) fn assess(
         path_height_at_ramp_m: path.height_m - (ramp_x_m - hook.x_m) * flight_path.tan_slope(),
         hook_climb_rate_mps: hook.climb_rate_mps,
         mean_landing_point_height_m: reference.mean_aim.h_m,
+        ramp_clearance_sigma_m: super::deck_predictor::ramp_clearance_sigma_m(
+            flight_path.parameters(),
+            &forecast,
+        ),
         forecast,
     })
 }

@@ -40,6 +40,15 @@ impl Estimator {
     }
 }
 
+impl Estimator {
+    /// The same, working out the forecast's σ (for risk-aware guidance and the
+    /// probabilistic wave-off) when `uncertainty`.
+    pub fn with_uncertainty(mut self, uncertainty: bool) -> Self {
+        self.shaping = self.shaping.with_uncertainty(uncertainty);
+        self
+    }
+}
+
 impl DeckPredictor for Estimator {
     /// The ship's inertial navigation samples the true motion, and the measurements that
     /// have arrived over the data link update the Kalman filter.

@@ -156,28 +156,39 @@ impl BuiltDeckPredictor {
         // The forecasts reach the compensation window and the blend, plus the data link's
         // latency for the estimator.
         let horizon_s = flight_path.compensation_window_s + flight_path.compensation_blend_s;
+        // The forecast's σ is worked out only where the guidance or the wave-off uses it.
+        let wave_off = &scenario.control.wave_off;
+        let uncertainty = flight_path.ramp_strike_probability_limit > 0.0
+            || (wave_off.enabled
+                && (wave_off.max_ramp_strike_probability > 0.0
+                    || wave_off.max_hard_landing_probability > 0.0));
         Ok(match flight_path.deck_motion_predictor {
             DeckPredictorKind::Oracle => Self::Oracle(oracle::Oracle::new(
                 ShipMotionPropagator::new(horizon_s),
-                (flight_path.ramp_aware || scenario.control.wave_off.enabled)
-                    .then(|| AnchorShaping::new(flight_path.anchor_filter_frequency_radps)),
+                (flight_path.ramp_aware || scenario.control.wave_off.enabled).then(|| {
+                    AnchorShaping::new(flight_path.anchor_filter_frequency_radps)
+                        .with_uncertainty(uncertainty)
+                }),
             )),
             DeckPredictorKind::Estimator => {
                 let sensing = scenario.environment.ship_sensing;
-                Self::Estimator(Box::new(estimator::Estimator::new(
-                    ShipMotionSensor::new(sensing, streams)?,
-                    match sensing.estimator_start {
-                        EstimatorStart::Converged => DeckMotionEstimator::converged(
-                            ship,
-                            &sensing,
-                            ship_state,
-                            &mut streams.stream(stream_names::SHIP_ESTIMATE_START),
-                        ),
-                        EstimatorStart::Cold => DeckMotionEstimator::new(ship, &sensing),
-                    },
-                    ShipMotionPropagator::new(horizon_s + sensing.latency_s + 1.0),
-                    flight_path.anchor_filter_frequency_radps,
-                )))
+                Self::Estimator(Box::new(
+                    estimator::Estimator::new(
+                        ShipMotionSensor::new(sensing, streams)?,
+                        match sensing.estimator_start {
+                            EstimatorStart::Converged => DeckMotionEstimator::converged(
+                                ship,
+                                &sensing,
+                                ship_state,
+                                &mut streams.stream(stream_names::SHIP_ESTIMATE_START),
+                            ),
+                            EstimatorStart::Cold => DeckMotionEstimator::new(ship, &sensing),
+                        },
+                        ShipMotionPropagator::new(horizon_s + sensing.latency_s + 1.0),
+                        flight_path.anchor_filter_frequency_radps,
+                    )
+                    .with_uncertainty(uncertainty),
+                ))
             }
             DeckPredictorKind::FilterLead => Self::FilterLead(filter_lead::FilterLead::new(
                 DeckMotionFilter::new(flight_path.deck_filter_frequency_radps),
@@ -314,6 +325,9 @@ impl DeckQuery<'_> {
             self.time_to_go_s,
             closure,
             deck,
+            shaping
+                .uncertainty
+                .then_some(parameters.ramp_sigma_min_horizon_s),
         );
         let target = ramp_aware_anchor(parameters, self.flight_path, deck, &forecast);
         let descent = (parameters.ramp_aware && parameters.descend_after_ramp)
@@ -342,7 +356,10 @@ impl DeckQuery<'_> {
 /// The forecast of the deck for a hook `time_to_go_s` from touchdown closing at
 /// `closure_mps`, from `estimate` whose time lies `age_s` in the past: the landing point
 /// at touchdown, the ramp when the hook crosses it (`ramp_aft_of_aim_point_m` / closure
-/// earlier).
+/// earlier); with `uncertainty` = Some(h_min), also the σ of the ramp's height at the
+/// crossing (or h_min ahead, if the crossing is nearer) and of the landing point's climb
+/// rate at touchdown (otherwise 0).
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn forecast_deck(
     predictor: &ShipMotionPropagator,
     ship: &ShipMotion,
@@ -351,6 +368,7 @@ pub(crate) fn forecast_deck(
     time_to_go_s: f64,
     closure_mps: f64,
     deck: &DeckGeometry,
+    uncertainty: Option<f64>,
 ) -> DeckForecast {
     let landing_arm_m = deck.landing_point_aft_of_pitch_centre_m;
     let ramp_arm_m = landing_arm_m + deck.ramp_aft_of_aim_point_m;
@@ -359,20 +377,64 @@ pub(crate) fn forecast_deck(
     } else {
         time_to_go_s
     };
+    let (touchdown_lead_s, ramp_lead_s) = (age_s + time_to_go_s.max(0.0), age_s + ramp_time_s);
     let at_touchdown: ShipMotionForecast =
-        predictor.forecast_mean(ship, estimate, age_s + time_to_go_s.max(0.0));
-    let at_ramp = predictor.forecast_mean(ship, estimate, age_s + ramp_time_s);
+        predictor.forecast_mean(ship, estimate, touchdown_lead_s);
+    let at_ramp = predictor.forecast_mean(ship, estimate, ramp_lead_s);
+    let (ramp_height_sigma_m, landing_point_climb_rate_sigma_mps) =
+        if let Some(min_horizon_s) = uncertainty {
+            (
+                predictor
+                    .deck_point_uncertainty(
+                        ship,
+                        estimate,
+                        age_s + ramp_time_s.max(min_horizon_s),
+                        ramp_arm_m,
+                        at_ramp.pitch_rad,
+                    )
+                    .height_sigma_m,
+                predictor
+                    .deck_point_uncertainty(
+                        ship,
+                        estimate,
+                        touchdown_lead_s,
+                        landing_arm_m,
+                        at_touchdown.pitch_rad,
+                    )
+                    .climb_rate_sigma_mps,
+            )
+        } else {
+            (0.0, 0.0)
+        };
     DeckForecast {
         ramp_height_m: deck.deck_height_m + at_ramp.deck_point_height_m(ramp_arm_m),
         landing_point_climb_rate_mps: at_touchdown.deck_point_climb_rate_mps(landing_arm_m),
         landing_point_height_m: deck.deck_height_m
             + at_touchdown.deck_point_height_m(landing_arm_m),
         pitch_rad: at_touchdown.pitch_rad,
+        ramp_climb_rate_mps: at_ramp.deck_point_climb_rate_mps(ramp_arm_m),
+        ramp_height_sigma_m,
+        landing_point_climb_rate_sigma_mps,
     }
 }
 
+/// σ_c = √(σ_r² + σ_h² + (ṙ·σ_t)²) of the hook's clearance over the ramp (m), from the
+/// ramp's σ_r and climb rate ṙ in `forecast` (docs/model.md §5.7).
+pub(crate) fn ramp_clearance_sigma_m(
+    parameters: &FlightPathParameters,
+    forecast: &DeckForecast,
+) -> f64 {
+    let timing = forecast.ramp_climb_rate_mps * parameters.ramp_crossing_time_sigma_s;
+    (forecast.ramp_height_sigma_m.powi(2)
+        + parameters.hook_height_sigma_m.powi(2)
+        + timing * timing)
+        .sqrt()
+}
+
 /// The anchor height: the forecast landing point, raised where the ramp-aware path needs
-/// it so that the path crosses the predicted ramp `ramp_clearance_margin_m` above it.
+/// it so that the path crosses the predicted ramp with the clearance m above it:
+/// m = max(`ramp_clearance_margin_m`, z·σ_c), z = Φ⁻¹(1 − p) of
+/// `ramp_strike_probability_limit` (0 when off) and σ_c from [`ramp_clearance_sigma_m`].
 /// The path passes the ramp (ramp_aft_of_aim_point + touchdown correction)·tan Γ above
 /// its anchor.
 pub(crate) fn ramp_aware_anchor(
@@ -386,16 +448,25 @@ pub(crate) fn ramp_aware_anchor(
     }
     let rise_to_ramp_m = (deck.ramp_aft_of_aim_point_m + parameters.touchdown_correction_m)
         * flight_path.tan_slope();
-    let floor_m = forecast.ramp_height_m + parameters.ramp_clearance_margin_m - rise_to_ramp_m;
+    let z = flight_path.ramp_clearance_z();
+    let margin_m = if z > 0.0 {
+        parameters
+            .ramp_clearance_margin_m
+            .max(z * ramp_clearance_sigma_m(parameters, forecast))
+    } else {
+        parameters.ramp_clearance_margin_m
+    };
+    let floor_m = forecast.ramp_height_m + margin_m - rise_to_ramp_m;
     forecast.landing_point_height_m.max(floor_m)
 }
 
 /// The share of the ramp-aware raise the path keeps for a hook `range_m` before the
 /// aim point, closing at `closure_mps`, and its rate (1/s). With `descend_after_ramp`
-/// the path keeps all of it up to the ramp and sheds it linearly from the ramp to the
-/// aim point: it crosses the ramp with the margin and still reaches the predicted landing
-/// point, on a steeper last segment, instead of landing raise/tan Γ long. Without, it
-/// keeps all of it.
+/// the path keeps all of it up to the ramp and sheds it between the ramp and the aim
+/// point (docs/model.md §5.7): the shed's rate in u = 1 − d/d_R is a plateau
+/// g_max = 1/(1 − b) entered and left through a 3x² − 2x³ blend of width
+/// b = min(T_b·closure/d_R, ½), T_b = `descent_blend_s` (0: linear), so the command has
+/// no step at the ramp or the aim point. Without `descend_after_ramp` it keeps all.
 pub(crate) fn raise_share(
     parameters: &FlightPathParameters,
     deck: &DeckGeometry,
@@ -404,12 +475,28 @@ pub(crate) fn raise_share(
 ) -> (f64, f64) {
     let ramp_range_m = deck.ramp_aft_of_aim_point_m + parameters.touchdown_correction_m;
     if !parameters.descend_after_ramp || range_m >= ramp_range_m || ramp_range_m <= 0.0 {
-        (1.0, 0.0)
-    } else if range_m <= 0.0 {
-        (0.0, 0.0)
-    } else {
-        (range_m / ramp_range_m, -closure_mps / ramp_range_m)
+        return (1.0, 0.0);
     }
+    if range_m <= 0.0 {
+        return (0.0, 0.0);
+    }
+    let u = 1.0 - range_m / ramp_range_m;
+    let du_dt = closure_mps.max(0.0) / ramp_range_m;
+    let b = (parameters.descent_blend_s * du_dt).min(0.5);
+    let g_max = 1.0 / (1.0 - b);
+    // ∫₀ˣ (3s² − 2s³) ds = x³ − x⁴/2: the shed within a blend, per unit of b·g_max.
+    let corner = |x: f64| x * x * x * (1.0 - 0.5 * x);
+    let smooth = |x: f64| x * x * (3.0 - 2.0 * x);
+    let (shed, rate) = if u < b {
+        let x = u / b;
+        (g_max * b * corner(x), g_max * smooth(x))
+    } else if u > 1.0 - b {
+        let x = (1.0 - u) / b;
+        (1.0 - g_max * b * corner(x), g_max * smooth(x))
+    } else {
+        (g_max * (u - 0.5 * b), g_max)
+    };
+    (1.0 - shed, -rate * du_dt)
 }
 
 #[cfg(test)]

@@ -9,7 +9,53 @@ fn forecast(landing_point_height_m: f64, ramp_height_m: f64) -> DeckForecast {
         landing_point_climb_rate_mps: 0.0,
         landing_point_height_m,
         pitch_rad: 0.0,
+        ramp_climb_rate_mps: 0.0,
+        ramp_height_sigma_m: 0.0,
+        landing_point_climb_rate_sigma_mps: 0.0,
     }
+}
+
+/// The default path with a fixed 2.5-m margin (no risk-aware clearance).
+fn fixed_margin() -> FlightPathParameters {
+    FlightPathParameters {
+        ramp_clearance_margin_m: 2.5,
+        ramp_strike_probability_limit: 0.0,
+        ..FlightPathParameters::default()
+    }
+}
+
+/// The risk-aware clearance by hand (the default: p = 2 %, z = Φ⁻¹(0.98) = 2.0537 from
+/// the normal table; σ_h = 0.3 m, σ_t = 0.1 s; floor 2.0 m). The ramp forecast 2 m above
+/// the landing point with σ_r = 1 m, rising at 2 m/s: σ_c = √(1 + 0.09 + 0.04) = 1.0630 m,
+/// clearance 2.0537·1.0630 = 2.1831 m, anchor 24 + 2.1831 − 3.6698 = 22.5133 m. Known
+/// exactly (σ_r = 0), σ_c = √0.13 = 0.3606 m gives 0.74 m, under the 2-m floor: anchor
+/// 24 + 2 − 3.6698 = 22.3302 m. A larger σ_r raises it further.
+#[test]
+fn the_risk_aware_clearance_grows_with_the_forecasts_sigma_and_the_ramps_motion() {
+    let deck = DeckGeometry::default();
+    let parameters = FlightPathParameters::default();
+    assert_eq!(parameters.ramp_strike_probability_limit, 0.02);
+    let generator = FlightPathGenerator::new(parameters).unwrap();
+    assert!((generator.ramp_clearance_z() - 2.0537).abs() < 1e-4);
+    let uncertain = DeckForecast {
+        ramp_height_sigma_m: 1.0,
+        ramp_climb_rate_mps: 2.0,
+        ..forecast(22.0, 24.0)
+    };
+    assert!((ramp_clearance_sigma_m(&parameters, &uncertain) - 1.13_f64.sqrt()).abs() < 1e-12);
+    let raised = ramp_aware_anchor(&parameters, &generator, &deck, &uncertain);
+    assert!((raised - 22.5133).abs() < 1e-3, "{raised}");
+    let known = DeckForecast {
+        ramp_height_sigma_m: 0.0,
+        ..uncertain
+    };
+    let floor = ramp_aware_anchor(&parameters, &generator, &deck, &known);
+    assert!((floor - 22.3302).abs() < 1e-4, "{floor}");
+    let very_uncertain = DeckForecast {
+        ramp_height_sigma_m: 2.0,
+        ..uncertain
+    };
+    assert!(ramp_aware_anchor(&parameters, &generator, &deck, &very_uncertain) > raised + 1.0);
 }
 
 /// On a level deck the path already clears the ramp by 60·tan 3.5° = 3.6698 m > 2.5 m:
@@ -19,7 +65,7 @@ fn forecast(landing_point_height_m: f64, ramp_height_m: f64) -> DeckForecast {
 #[test]
 fn the_ramp_aware_anchor_rises_only_when_the_ramp_would_come_too_close() {
     let deck = DeckGeometry::default();
-    let parameters = FlightPathParameters::default();
+    let parameters = fixed_margin();
     let generator = FlightPathGenerator::new(parameters).unwrap();
     let rise = 60.0 * 3.5_f64.to_radians().tan();
     let level = ramp_aware_anchor(&parameters, &generator, &deck, &forecast(20.0, 20.0));
@@ -39,22 +85,28 @@ fn the_ramp_aware_anchor_rises_only_when_the_ramp_would_come_too_close() {
 
 /// With `descend_after_ramp`, the path of a raised anchor (the ramp 2 m above the
 /// landing point: raise r = 2 + 2.5 − 60·tan 3.5° = 0.8302 m) still crosses the ramp
-/// 2.5 m above it, then reaches the landing point itself: by hand, at the ramp
-/// (d = 60 m) the path stands LP + 0.8302 + 3.6698 = ramp + 2.5, half-way (d = 30 m)
-/// LP + 0.4151 + 1.8349 = LP + 2.25, at the aim point LP; the share sheds at
-/// closure/60 = 0.9 per s for a 54-m/s closure. Without it the raise is kept all the
-/// way (touchdown r/tan 3.5° = 13.6 m long).
+/// 2.5 m above it, then reaches the landing point itself. By hand, for a 60-m/s closure
+/// (u = 1 − d/60 rises at 1 per s) and the 0.25-s blend (b = 0.25, plateau
+/// g_max = 1/(1 − b) = 4/3): at the ramp (d = 60 m) the path stands
+/// LP + 0.8302 + 3.6698 = ramp + 2.5; half-way (d = 30 m, u = ½, on the plateau: shed
+/// 4/3·(½ − ⅛) = ½) LP + 0.4151 + 1.8349 = LP + 2.25, the share falling at 4/3 per s; in
+/// the middle of the first blend (d = 52.5 m, x = ½) the shed is
+/// g_max·b·(x³ − x⁴/2) = 4/3·¼·(3/32) = 1/32 and its rate g_max·(3x² − 2x³) = 2/3 per s;
+/// at the aim point LP. The share's rate is 0 at both ends (no step in the command).
+/// A 0-s blend sheds linearly (½ and 1 per s half-way). Without the descent the raise
+/// is kept all the way (touchdown r/tan 3.5° = 13.6 m long).
 #[test]
-fn the_path_sheds_its_raise_between_the_ramp_and_the_aim_point() {
+fn the_path_sheds_its_raise_smoothly_between_the_ramp_and_the_aim_point() {
     let deck = DeckGeometry::default();
-    let parameters = FlightPathParameters::default();
+    let parameters = fixed_margin();
     assert!(parameters.ramp_aware && parameters.descend_after_ramp);
+    assert_eq!(parameters.descent_blend_s, 0.25);
     let generator = FlightPathGenerator::new(parameters).unwrap();
     let tan = generator.tan_slope();
     let raised = ramp_aware_anchor(&parameters, &generator, &deck, &forecast(22.0, 24.0));
     let raise = raised - 22.0;
     let path_at = |d: f64| {
-        let (share, _) = raise_share(&parameters, &deck, d, 54.0);
+        let (share, _) = raise_share(&parameters, &deck, d, 60.0);
         22.0 + share * raise + d * tan
     };
     assert!((path_at(60.0) - 26.5).abs() < 1e-12, "{}", path_at(60.0));
@@ -62,12 +114,31 @@ fn the_path_sheds_its_raise_between_the_ramp_and_the_aim_point() {
     assert!((path_at(30.0) - 24.25).abs() < 1e-12, "{}", path_at(30.0));
     assert_eq!(path_at(0.0), 22.0);
     assert_eq!(path_at(-5.0), 22.0 - 5.0 * tan);
-    assert_eq!(raise_share(&parameters, &deck, 30.0, 54.0), (0.5, -0.9));
-    assert_eq!(raise_share(&parameters, &deck, 90.0, 54.0), (1.0, 0.0));
+    let close =
+        |(a, b): (f64, f64), (c, d): (f64, f64)| (a - c).abs() < 1e-12 && (b - d).abs() < 1e-12;
+    assert!(close(
+        raise_share(&parameters, &deck, 30.0, 60.0),
+        (0.5, -4.0 / 3.0)
+    ));
+    let first_blend = raise_share(&parameters, &deck, 52.5, 60.0);
+    assert!(
+        close(first_blend, (1.0 - 1.0 / 32.0, -2.0 / 3.0)),
+        "{first_blend:?}"
+    );
+    assert_eq!(raise_share(&parameters, &deck, 90.0, 60.0), (1.0, 0.0));
+    for d in [59.999, 0.001] {
+        let (_, rate) = raise_share(&parameters, &deck, d, 60.0);
+        assert!(rate.abs() < 1e-3, "{d}: {rate}");
+    }
+    let linear = FlightPathParameters {
+        descent_blend_s: 0.0,
+        ..parameters
+    };
+    assert!(close(raise_share(&linear, &deck, 30.0, 60.0), (0.5, -1.0)));
     let keep = FlightPathParameters {
         descend_after_ramp: false,
         ..parameters
     };
-    assert_eq!(raise_share(&keep, &deck, 30.0, 54.0), (1.0, 0.0));
+    assert_eq!(raise_share(&keep, &deck, 30.0, 60.0), (1.0, 0.0));
     assert!((raise / tan - 13.57).abs() < 0.01, "{}", raise / tan);
 }

@@ -1,0 +1,152 @@
+//! Tests of the wave-off decision (kept apart so that wave_off.rs stays short).
+use super::*;
+
+fn calm() -> WaveOffInputs {
+    WaveOffInputs {
+        time_to_go_s: 4.0,
+        glide_path_error_m: 0.0,
+        glide_path_error_rate_mps: 0.0,
+        // 3.5° path over a level deck: 60·tan 3.5° = 3.67 m over a ramp at 20 m.
+        path_height_at_ramp_m: 23.67,
+        hook_climb_rate_mps: -3.7,
+        mean_landing_point_height_m: 20.0,
+        ramp_clearance_sigma_m: 0.5,
+        forecast: DeckForecast {
+            ramp_height_m: 20.0,
+            landing_point_climb_rate_mps: 0.0,
+            landing_point_height_m: 20.0,
+            pitch_rad: 0.0,
+            ramp_climb_rate_mps: 0.0,
+            ramp_height_sigma_m: 0.0,
+            landing_point_climb_rate_sigma_mps: 0.0,
+        },
+    }
+}
+
+#[test]
+fn a_nominal_approach_on_a_level_deck_goes_on() {
+    assert_eq!(WaveOffParameters::default().decide(&calm()), None);
+}
+
+#[test]
+fn each_criterion_calls_the_wave_off_with_its_value() {
+    // The fixed clearance limit in place of the ramp-strike probability.
+    let p = WaveOffParameters {
+        min_ramp_clearance_m: 1.5,
+        max_ramp_strike_probability: 0.0,
+        ..WaveOffParameters::default()
+    };
+    // The hook 2.8 m low: clearance 3.67 − 2.8 = 0.87 m < 1 m.
+    let low = WaveOffInputs {
+        glide_path_error_m: 2.8,
+        ..calm()
+    };
+    let d = p.decide(&low).expect("wave-off");
+    assert_eq!(d.criterion, WaveOffCriterion::RampClearance);
+    assert!((d.value - 0.87).abs() < 1e-9);
+    // The deck rising at 3.5 m/s into a hook sinking at 3.7 m/s: 7.2 m/s > 7.
+    let mut rising = calm();
+    rising.forecast.landing_point_climb_rate_mps = 3.5;
+    let d = p.decide(&rising).expect("wave-off");
+    assert_eq!(d.criterion, WaveOffCriterion::TouchdownSinkRate);
+    assert!((d.value - 7.2).abs() < 1e-9);
+    // 3.5 m high: clearance is fine, the error is not.
+    let high = WaveOffInputs {
+        glide_path_error_m: -3.5,
+        ..calm()
+    };
+    assert_eq!(
+        p.decide(&high).map(|d| d.criterion),
+        Some(WaveOffCriterion::GlidePathError)
+    );
+    // Drifting high at 4.5 m/s.
+    let drifting = WaveOffInputs {
+        glide_path_error_m: -0.5,
+        glide_path_error_rate_mps: -4.5,
+        ..calm()
+    };
+    assert_eq!(
+        p.decide(&drifting).map(|d| d.criterion),
+        Some(WaveOffCriterion::GlidePathErrorRate)
+    );
+    // Bow up 4°: the deck pitch limit (the ramp drops, so clearance is fine).
+    let mut pitched = calm();
+    pitched.forecast.pitch_rad = 4.0_f64.to_radians();
+    assert_eq!(
+        p.decide(&pitched).map(|d| d.criterion),
+        Some(WaveOffCriterion::DeckPitch)
+    );
+    let mut heaved = calm();
+    heaved.forecast.landing_point_height_m = 14.0;
+    heaved.forecast.ramp_height_m = 14.0;
+    assert_eq!(
+        p.decide(&heaved).map(|d| d.criterion),
+        Some(WaveOffCriterion::LandingPointDisplacement)
+    );
+}
+
+/// The probabilities by hand. Clearance 3.67 − 2.5 = 1.17 m with σ_c = 0.5 m:
+/// Φ(−2.34) = 0.964 % (normal table) — above a 0.5 % limit, below 1 %. The deck
+/// rising at 2.9 m/s into a hook sinking at 3.7 m/s: 6.6 m/s against 7.6 m/s, with
+/// σ_s = √(0.75² + 1²) = 1.25 m/s: Φ(−0.8) = 21.19 %.
+#[test]
+fn the_probabilities_call_the_wave_off_with_their_value_in_percent() {
+    let p = WaveOffParameters {
+        max_ramp_strike_probability: 0.005,
+        max_hard_landing_probability: 0.1,
+        ..WaveOffParameters::default()
+    };
+    let low = WaveOffInputs {
+        glide_path_error_m: 2.5,
+        ..calm()
+    };
+    let d = p.decide(&low).expect("wave-off");
+    assert_eq!(d.criterion, WaveOffCriterion::RampStrikeProbability);
+    assert!((d.value - 0.964).abs() < 0.001, "{}", d.value);
+    assert_eq!(d.limit, 0.5);
+    let relaxed = WaveOffParameters {
+        max_ramp_strike_probability: 0.01,
+        ..p
+    };
+    assert_eq!(relaxed.decide(&low), None);
+    let mut rising = calm();
+    rising.forecast.landing_point_climb_rate_mps = 2.9;
+    rising.forecast.landing_point_climb_rate_sigma_mps = 0.75;
+    let d = p.decide(&rising).expect("wave-off");
+    assert_eq!(d.criterion, WaveOffCriterion::HardLandingProbability);
+    assert!((d.value - 21.19).abs() < 0.01, "{}", d.value);
+    assert_eq!(WaveOffParameters::default().decide(&rising), None);
+}
+
+#[test]
+fn outside_the_window_or_disabled_nothing_is_decided() {
+    let low = WaveOffInputs {
+        glide_path_error_m: 2.9,
+        ..calm()
+    };
+    let p = WaveOffParameters {
+        min_ramp_clearance_m: 1.5,
+        ..WaveOffParameters::default()
+    };
+    for time_to_go_s in [6.0, 1.0] {
+        assert_eq!(
+            p.decide(&WaveOffInputs {
+                time_to_go_s,
+                ..low
+            }),
+            None
+        );
+    }
+    assert_eq!(WaveOffParameters::paper().decide(&low), None);
+}
+
+#[test]
+fn a_decision_point_after_the_window_is_refused_by_name() {
+    let error = WaveOffParameters {
+        decision_time_to_go_s: 5.0,
+        ..WaveOffParameters::default()
+    }
+    .validate()
+    .unwrap_err();
+    assert_eq!(error.path, "control.wave_off.decision_time_to_go_s");
+}
