@@ -132,6 +132,11 @@ pub struct FlightPathParameters {
     /// set); 0.02 (2 %, tuned on 400 approaches of the paper's sea,
     /// docs/no-oracle-results.md); [0, 0.5).
     pub ramp_strike_probability_limit: f64,
+    /// The most clearance over the predicted ramp the risk-aware clearance may ask for
+    /// (m): far out the forecast's σ is the sea's own, and an uncapped z·σ would move the
+    /// path by metres (in the heavy sea the aircraft then dives below α = −5° when the
+    /// forecast tightens); 4.0 m, [`ramp_clearance_margin_m`, 20].
+    pub max_ramp_clearance_m: f64,
     /// σ_h, the hook's height scatter about the path where it crosses the ramp (m), for
     /// the risk-aware clearance and the wave-off's ramp-strike probability; an assumption
     /// near the glide-path error RMS of the default approach (0.2–0.4 m,
@@ -187,6 +192,7 @@ impl Default for FlightPathParameters {
             descend_after_ramp: true,
             descent_blend_s: 0.25,
             ramp_strike_probability_limit: 0.02,
+            max_ramp_clearance_m: 4.0,
             hook_height_sigma_m: 0.3,
             ramp_sigma_min_horizon_s: 1.5,
             ramp_crossing_time_sigma_s: 0.1,
@@ -218,7 +224,7 @@ impl FlightPathParameters {
 
     /// Checks the glide slope is in (0°, 10°], the compensation window in [0, 60] s, the
     /// blend in (0, 30] s, the lead in [0, 10] s, the filters in (0, 100] rad/s, the ramp
-    /// margin in [0, 20] m, the descent's blend in [0, 2] s, the ramp-strike probability limit in [0, 0.5), σ_h in [0, 5] m, the σ's shortest horizon in [0, 10] s, σ_t in [0, 2] s, the touchdown correction in [−50, 50] m and the wake
+    /// margin in [0, 20] m, the descent's blend in [0, 2] s, the ramp-strike probability limit in [0, 0.5), the clearance's cap in [margin, 20] m, σ_h in [0, 5] m, the σ's shortest horizon in [0, 10] s, σ_t in [0, 2] s, the touchdown correction in [−50, 50] m and the wake
     /// feed-forward's lead in [0, 10] s.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "control.flight_path";
@@ -254,6 +260,11 @@ impl FlightPathParameters {
             SECTION,
             "ramp_strike_probability_limit",
             self.ramp_strike_probability_limit,
+        )?;
+        Bounds::closed(self.ramp_clearance_margin_m.max(0.0), 20.0).check(
+            SECTION,
+            "max_ramp_clearance_m",
+            self.max_ramp_clearance_m,
         )?;
         Bounds::closed(0.0, 5.0).check(SECTION, "hook_height_sigma_m", self.hook_height_sigma_m)?;
         Bounds::closed(0.0, 10.0).check(

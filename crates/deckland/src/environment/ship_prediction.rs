@@ -261,8 +261,40 @@ impl ShipMotionPropagator {
         lever_arm_m: f64,
         pitch_rad: f64,
     ) -> DeckPointUncertainty {
+        DeckPointUncertainty {
+            height_sigma_m: self.deck_point_sigma(
+                ship,
+                estimate,
+                lead_s,
+                lever_arm_m,
+                pitch_rad,
+                0,
+            ),
+            climb_rate_sigma_mps: self.deck_point_sigma(
+                ship,
+                estimate,
+                lead_s,
+                lever_arm_m,
+                pitch_rad,
+                1,
+            ),
+        }
+    }
+
+    /// σ of the predicted height (`derivative` 0, m) or climb rate (1, m/s) of the deck
+    /// point of [`ShipMotionPropagator::deck_point_uncertainty`], computing only that
+    /// one (the guidance computer needs one of each per step, at different horizons).
+    pub fn deck_point_sigma(
+        &self,
+        ship: &ShipMotion,
+        estimate: &ShipMotionEstimate,
+        lead_s: f64,
+        lever_arm_m: f64,
+        pitch_rad: f64,
+        derivative: usize,
+    ) -> f64 {
         if !ship.parameters().enabled {
-            return DeckPointUncertainty::default();
+            return 0.0;
         }
         let grid = self.grid(lead_s);
         let variance = |i: usize, covariance: &Matrix4Array, intensity: f64| {
@@ -277,14 +309,10 @@ impl ShipMotionPropagator {
         );
         let (qh, qp) = (ship.heave_noise_intensity(), ship.pitch_noise_intensity());
         let arm = lever_arm_m * pitch_rad.cos();
-        let height = heave * variance(0, &estimate.heave_covariance, qh)
-            + arm * arm * pitch * variance(2, &estimate.pitch_covariance, qp);
-        let rate = heave * variance(1, &estimate.heave_covariance, qh)
-            + arm * arm * pitch * variance(3, &estimate.pitch_covariance, qp);
-        DeckPointUncertainty {
-            height_sigma_m: height.max(0.0).sqrt(),
-            climb_rate_sigma_mps: rate.max(0.0).sqrt(),
-        }
+        // Rows: heave 0, heave rate 1; pitch 2, pitch rate 3.
+        let value = heave * variance(derivative, &estimate.heave_covariance, qh)
+            + arm * arm * pitch * variance(2 + derivative, &estimate.pitch_covariance, qp);
+        value.max(0.0).sqrt()
     }
 }
 

@@ -384,24 +384,22 @@ pub(crate) fn forecast_deck(
     let (ramp_height_sigma_m, landing_point_climb_rate_sigma_mps) =
         if let Some(min_horizon_s) = uncertainty {
             (
-                predictor
-                    .deck_point_uncertainty(
-                        ship,
-                        estimate,
-                        age_s + ramp_time_s.max(min_horizon_s),
-                        ramp_arm_m,
-                        at_ramp.pitch_rad,
-                    )
-                    .height_sigma_m,
-                predictor
-                    .deck_point_uncertainty(
-                        ship,
-                        estimate,
-                        touchdown_lead_s,
-                        landing_arm_m,
-                        at_touchdown.pitch_rad,
-                    )
-                    .climb_rate_sigma_mps,
+                predictor.deck_point_sigma(
+                    ship,
+                    estimate,
+                    age_s + ramp_time_s.max(min_horizon_s),
+                    ramp_arm_m,
+                    at_ramp.pitch_rad,
+                    0,
+                ),
+                predictor.deck_point_sigma(
+                    ship,
+                    estimate,
+                    touchdown_lead_s,
+                    landing_arm_m,
+                    at_touchdown.pitch_rad,
+                    1,
+                ),
             )
         } else {
             (0.0, 0.0)
@@ -433,7 +431,7 @@ pub(crate) fn ramp_clearance_sigma_m(
 
 /// The anchor height: the forecast landing point, raised where the ramp-aware path needs
 /// it so that the path crosses the predicted ramp with the clearance m above it:
-/// m = max(`ramp_clearance_margin_m`, z·σ_c), z = Φ⁻¹(1 − p) of
+/// m = min(max(`ramp_clearance_margin_m`, z·σ_c), `max_ramp_clearance_m`), z = Φ⁻¹(1 − p) of
 /// `ramp_strike_probability_limit` (0 when off) and σ_c from [`ramp_clearance_sigma_m`].
 /// The path passes the ramp (ramp_aft_of_aim_point + touchdown correction)·tan Γ above
 /// its anchor.
@@ -453,6 +451,7 @@ pub(crate) fn ramp_aware_anchor(
         parameters
             .ramp_clearance_margin_m
             .max(z * ramp_clearance_sigma_m(parameters, forecast))
+            .min(parameters.max_ramp_clearance_m)
     } else {
         parameters.ramp_clearance_margin_m
     };
