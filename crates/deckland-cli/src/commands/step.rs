@@ -325,25 +325,7 @@ fn print_table(report: &StepReport, written: &[PathBuf]) -> Result<()> {
     } else {
         outln!("Command: a step (no prefilter)")?;
     }
-    outln!(
-        "  {:<26}{}",
-        "",
-        report
-            .controllers
-            .iter()
-            .map(|c| format!("{:>18}", c.controller))
-            .collect::<String>()
-    )?;
-    let row = |name: &str, cell: &dyn Fn(&ControllerResult) -> String| {
-        outln!(
-            "  {name:<26}{}",
-            report
-                .controllers
-                .iter()
-                .map(|c| format!("{:>18}", cell(c)))
-                .collect::<String>()
-        )
-    };
+    let row = controller_columns(&report.controllers, |c| &c.controller, 26, 18)?;
     row("settling time (±2 %)", &|c| {
         if c.settled {
             format_option(c.settling_time_s, 3, "s")
@@ -454,4 +436,35 @@ pub fn run(args: &StepArgs) -> Result<()> {
         print_table(&report, &written)?;
     }
     Ok(())
+}
+
+/// The printer of a row of [`controller_columns`]: the row's name, then a cell per
+/// controller.
+pub(super) type RowPrinter<'a, T> =
+    Box<dyn Fn(&str, &dyn Fn(&T) -> String) -> Result<(), crate::output::StdoutError> + 'a>;
+
+/// Prints a header of one column per controller (`name` of each, right-aligned in
+/// `cell` characters after a `label`-wide gap) and gives the printer of a row: its name
+/// in the gap, then `text(controller)` in each column.
+pub(super) fn controller_columns<'a, T>(
+    controllers: &'a [T],
+    name: impl Fn(&T) -> &str,
+    label: usize,
+    cell: usize,
+) -> Result<RowPrinter<'a, T>> {
+    outln!(
+        "  {:<label$}{}",
+        "",
+        controllers
+            .iter()
+            .map(|c| format!("{:>cell$}", name(c)))
+            .collect::<String>()
+    )?;
+    Ok(Box::new(move |row: &str, text: &dyn Fn(&T) -> String| {
+        let cells: String = controllers
+            .iter()
+            .map(|c| format!("{:>cell$}", text(c)))
+            .collect();
+        outln!("  {row:<label$}{cells}")
+    }))
 }

@@ -219,25 +219,7 @@ fn print_table(report: &LateralReport, written: &[PathBuf]) -> Result<()> {
             first.reference_duration_s
         )?;
     }
-    outln!(
-        "  {:<30}{}",
-        "",
-        report
-            .controllers
-            .iter()
-            .map(|c| format!("{:>16}", c.controller))
-            .collect::<String>()
-    )?;
-    let row = |name: &str, cell: &dyn Fn(&LateralStepResponse) -> String| {
-        outln!(
-            "  {name:<30}{}",
-            report
-                .controllers
-                .iter()
-                .map(|c| format!("{:>16}", cell(c)))
-                .collect::<String>()
-        )
-    };
+    let row = super::controller_columns(&report.controllers, |c| &c.controller, 30, 16)?;
     row("settling time (±5 %)", &|c| {
         if c.settled {
             format_option(c.settling_time_s, 3, "s")

@@ -1,0 +1,44 @@
+//! The descent after the ramp: how much of the ramp-aware raise the glide path keeps
+//! as the hook closes on the aim point (docs/model.md §5.7).
+
+use crate::control::FlightPathParameters;
+use crate::environment::DeckGeometry;
+
+/// The share of the ramp-aware raise the path keeps for a hook `range_m` before the
+/// aim point, closing at `closure_mps`, and its rate (1/s). With `descend_after_ramp`
+/// the path keeps all of it up to the ramp and sheds it between the ramp and the aim
+/// point (docs/model.md §5.7): the shed's rate in u = 1 − d/d_R is a plateau
+/// g_max = 1/(1 − b) entered and left through a 3x² − 2x³ blend of width
+/// b = min(T_b·closure/d_R, ½), T_b = `descent_blend_s` (0: linear), so the command has
+/// no step at the ramp or the aim point. Without `descend_after_ramp` it keeps all.
+pub(crate) fn raise_share(
+    parameters: &FlightPathParameters,
+    deck: &DeckGeometry,
+    range_m: f64,
+    closure_mps: f64,
+) -> (f64, f64) {
+    let ramp_range_m = deck.ramp_aft_of_aim_point_m + parameters.touchdown_correction_m;
+    if !parameters.descend_after_ramp || range_m >= ramp_range_m || ramp_range_m <= 0.0 {
+        return (1.0, 0.0);
+    }
+    if range_m <= 0.0 {
+        return (0.0, 0.0);
+    }
+    let u = 1.0 - range_m / ramp_range_m;
+    let du_dt = closure_mps.max(0.0) / ramp_range_m;
+    let b = (parameters.descent_blend_s * du_dt).min(0.5);
+    let g_max = 1.0 / (1.0 - b);
+    // ∫₀ˣ (3s² − 2s³) ds = x³ − x⁴/2: the shed within a blend, per unit of b·g_max.
+    let corner = |x: f64| x * x * x * (1.0 - 0.5 * x);
+    let smooth = |x: f64| x * x * (3.0 - 2.0 * x);
+    let (shed, rate) = if u < b {
+        let x = u / b;
+        (g_max * b * corner(x), g_max * smooth(x))
+    } else if u > 1.0 - b {
+        let x = (1.0 - u) / b;
+        (1.0 - g_max * b * corner(x), g_max * smooth(x))
+    } else {
+        (g_max * (u - 0.5 * b), g_max)
+    };
+    (1.0 - shed, -rate * du_dt)
+}
