@@ -13,7 +13,7 @@
 //! - Euler angles in the 3-2-1 order: heading ψ (nose right positive), pitch θ (nose up),
 //!   bank φ (right wing down).
 //! - Air-relative velocity in body axes (u_a, v_a, w_a) = (u, v, w) − R(φ, θ, ψ)·W, with
-//!   W the wind in earth axes ([`Wind`]). The wind enters only there.
+//!   W the wind in earth axes ([`Wind`](crate::environment::Wind)). The wind enters only there.
 //!   V_T = |(u_a, v_a, w_a)|, α = atan(w_a/u_a), β = asin(v_a/V_T) (wind from the right
 //!   positive).
 //! - Surfaces: δe positive trailing edge down (nose down), δa positive right wing down
