@@ -11,6 +11,7 @@
 mod actuator_activity;
 mod statistics;
 mod step_response;
+mod trap_sheet;
 
 use thiserror::Error;
 
@@ -19,6 +20,9 @@ pub use actuator_activity::{
 };
 pub use statistics::{median, root_mean_square};
 pub use step_response::{step_response_metrics, Settling, StepResponseMetrics, StepResponseSpec};
+pub use trap_sheet::{
+    PositionDeviation, TrapSheet, TrapSheetPosition, TrapSheetRecorder, NAUTICAL_MILE_M,
+};
 
 /// Why a record or a metric specification could not be evaluated.
 #[derive(Debug, Clone, PartialEq, Error)]
