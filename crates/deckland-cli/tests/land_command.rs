@@ -72,6 +72,10 @@ fn land_writes_every_result_and_prints_the_json_summary() {
             "{stem}.svg"
         );
     }
+    // A 3-DOF approach has no lineup to draw.
+    for stem in ["plan_view", "cross_track"] {
+        assert!(!dir.join(format!("{stem}.svg")).exists(), "{stem}.svg");
+    }
     let leftovers: Vec<_> = std::fs::read_dir(&dir)
         .unwrap()
         .filter_map(|e| e.ok())
@@ -88,6 +92,39 @@ fn land_writes_every_result_and_prints_the_json_summary() {
     let text = String::from_utf8(forced.stdout).unwrap();
     assert!(text.contains("trap (wire 3)"), "{text}");
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn a_six_dof_run_draws_the_plan_view_and_the_cross_track_plot() {
+    let dir = scratch("run-6dof-lineup");
+    let scenario = dir.with_extension("toml");
+    std::fs::write(&scenario, "[aircraft]\nmodel = \"6dof\"\n").unwrap();
+    let output = deckland([
+        "run",
+        scenario.to_str().unwrap(),
+        "--seed",
+        "1",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    for (stem, text) in [
+        ("plan_view", "landing centreline abeam the hook"),
+        ("cross_track", "offset from the landing area"),
+    ] {
+        let svg = std::fs::read_to_string(dir.join(format!("{stem}.svg"))).unwrap();
+        assert!(svg.contains(text), "{stem}.svg lacks {text:?}");
+        assert!(
+            file_size(&dir.join(format!("{stem}.png"))) > 10_000,
+            "{stem}.png"
+        );
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+    std::fs::remove_file(&scenario).unwrap();
 }
 
 #[test]

@@ -1,13 +1,14 @@
 //! The figures of one approach (`land`, `run`, and `reproduce`'s approach), one module
 //! each: `approach` (the final approach in metres around the deck), `altitude` (the whole
 //! approach), `glide_path_error` (paper Fig. 14), `pitch` (Fig. 15), `controls`,
-//! `airspeed` and `wind`.
+//! `airspeed` and `wind`; for a 3-D approach also `plan_view` and `cross_track` (`lineup`).
 
 mod airspeed;
 mod altitude;
 mod approach;
 mod controls;
 mod glide_path_error;
+mod lineup;
 mod pitch;
 mod wind;
 
@@ -84,7 +85,7 @@ pub(crate) fn figures(
 ) -> Vec<(&'static str, Figure)> {
     let samples = &run.samples;
     let title = format!("{flown}: {}", outcome_text(&run.summary));
-    vec![
+    let mut figures = vec![
         ("approach", approach::figure(run, scenario, flown)),
         ("altitude", altitude::figure(samples, &title)),
         (
@@ -95,5 +96,7 @@ pub(crate) fn figures(
         ("controls", controls::figure(samples, scenario, &title)),
         ("airspeed", airspeed::figure(samples, scenario, &title)),
         ("wind", wind::figure(samples, scenario, &title)),
-    ]
+    ];
+    figures.extend(lineup::figures(run, scenario, &title));
+    figures
 }
