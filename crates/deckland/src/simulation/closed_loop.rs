@@ -12,6 +12,8 @@ use super::blocks::{direct_lift, plant, wake_feedforward, BlockPosition, PlacedB
 use super::deck_predictor::BuiltDeckPredictor;
 use super::flight_computer::{FlightComputer, HeldCommands};
 pub use super::held::{HeldInputs, StepStreams};
+use super::lateral::HeldLateral;
+use super::lateral::LateralLoop;
 pub use super::layout::LoopLayout;
 use super::outer_loops::{OuterLoopInputs, OuterLoops};
 use super::signals::Signals;
@@ -21,7 +23,8 @@ use crate::aircraft::{Aircraft, AircraftState, HookGeometry, Plant, TrimPoint};
 use crate::control::pitch::{AxisLaw, BuiltPitchLaw, ElevatorSaturation, PitchLawInputs};
 use crate::control::{DirectLiftParameters, SpeedController, WaveOffParameters};
 use crate::environment::{
-    DeckGeometry, ShipMotion, ShipMotionState, ShipPose, ShipPoseRate, WindModel,
+    DeckGeometry, LateralShipMotionState, ShipMotion, ShipMotionState, ShipPose, ShipPoseRate,
+    WindModel,
 };
 use crate::integration::VectorSystem;
 use crate::sensors::PitchSensor;
@@ -55,6 +58,8 @@ pub struct ClosedLoop {
     pub(crate) direct_lift: Option<DirectLiftParameters>,
     /// Users' blocks, each at its position in the list.
     pub(crate) user_blocks: Vec<PlacedBlock>,
+    /// The 3-D approach's parts (docs/model.md §10.1); `None` outside it.
+    pub(crate) lateral: Option<LateralLoop>,
 }
 
 impl ClosedLoop {
@@ -112,6 +117,12 @@ impl ClosedLoop {
     #[inline]
     pub fn ship_pose(&self, x: &[f64], t: f64) -> (ShipPose, ShipPoseRate) {
         let ship = self.ship_state(x);
+        if let Some(lateral) = &self.lateral {
+            let lateral_state =
+                LateralShipMotionState::from_array(&self.layout.ship_lateral.array(x));
+            let view = lateral.deck_view(&self.ship, &self.deck, &ship, &lateral_state, t);
+            return (view.longitudinal, view.longitudinal_rate);
+        }
         (
             self.ship.pose(&ship, self.ship_initial_x_m, t),
             self.ship.pose_rate(&ship),
@@ -140,6 +151,8 @@ impl ClosedLoop {
             .wind(t, pose.distance_aft_of_pitch_centre_m(aircraft.x_m));
         let (deck, decision) =
             self.guidance_computer_step(t, x, &aircraft, &ship_state, dt, waving_off);
+        let lateral = self.hold_lateral(t, x, streams, dt, waving_off || decision.is_some(), &wind);
+        let decision = decision.or(lateral.as_ref().and_then(|step| step.decision));
         let wave_off_decided = decision.map(|decision| (t, decision));
         let wave_off = waving_off || wave_off_decided.is_some();
         let ship_noise = self
@@ -156,6 +169,7 @@ impl ClosedLoop {
                 frame_starts: false,
                 wave_off,
                 wave_off_decided,
+                lateral: lateral.map(|step| step.held),
             };
         };
         // A frame of the flight-control computer: read the sensor (the mean of its samples
@@ -164,6 +178,18 @@ impl ClosedLoop {
         let pitch_noise_rad = self.sensor.draw_white_noise() + self.sensor.sinusoid(t);
         let frame_starts = computer.starts_frame(t);
         computer.sample(t, aircraft.theta_rad + pitch_noise_rad, frame_starts);
+        let lateral = match (lateral, &mut self.lateral) {
+            (Some(step), Some(lateral)) => {
+                if frame_starts {
+                    lateral.read = step.fresh_read;
+                }
+                Some(HeldLateral {
+                    read: Some(lateral.read),
+                    ..step.held
+                })
+            }
+            _ => None,
+        };
         let held = HeldInputs {
             ship_noise,
             pitch_noise_rad,
@@ -174,6 +200,7 @@ impl ClosedLoop {
             frame_starts,
             wave_off,
             wave_off_decided,
+            lateral,
         };
         self.computer = Some(computer);
         held
@@ -197,6 +224,7 @@ impl ClosedLoop {
             elevator_rad: signals.elevator_command_rad,
             thrust_n: signals.thrust_command_n,
             direct_lift: signals.direct_lift_command.unwrap_or(0.0),
+            lateral: signals.aileron_command_rad.zip(signals.rudder_command_rad),
         };
         held.commands = Some(computer.commands);
         self.computer = Some(computer);
@@ -272,6 +300,9 @@ impl ClosedLoop {
         bus.ship = self.ship.pose(&ship_state, self.ship_initial_x_m, t);
         bus.ship_rate = self.ship.pose_rate(&ship_state);
         bus.aim_point = self.deck.aim_point(&bus.ship);
+        let view = self.lateral.as_ref().map(|lateral| {
+            lateral.ship_outputs(&self.ship, &self.deck, &ship_state, layout, x, &mut bus)
+        });
 
         // aircraft: position, attitude, the hook.
         let kinematics = plant::kinematics(
@@ -280,6 +311,7 @@ impl ClosedLoop {
             P::state_at(x, layout.aircraft.offset),
             &mut bus,
         );
+        let kinematics_hook_velocity = kinematics.hook_velocity;
 
         // wind: the air mass at the aircraft, sampled at the step's start.
         bus.wind = held.wind;
@@ -386,8 +418,21 @@ impl ClosedLoop {
             },
         );
 
-        // lateral_hold: the aileron and rudder commands of a lateral plant.
-        plant::lateral_hold(aircraft, &mut bus);
+        // lineup and lateral_laws in the 3-D approach (docs/model.md §10.2); otherwise
+        // lateral_hold: the aileron and rudder commands of a lateral plant at trim.
+        match (&self.lateral, &view, &held.lateral) {
+            (Some(lateral), Some(view), Some(lateral_held)) => lateral.lineup_and_laws(
+                view,
+                &self.deck,
+                &kinematics_hook_velocity,
+                layout,
+                x,
+                lateral_held,
+                held.commands,
+                &mut bus,
+            ),
+            _ => plant::lateral_hold(aircraft, &mut bus),
+        }
 
         // direct_lift: the hook's height error to the path → lift (docs/model.md §5.9).
         if let Some(law) = &self.direct_lift {
@@ -441,6 +486,9 @@ impl ClosedLoop {
             bus.aim_point.h_m,
             layout.deck_predictor.of_mut(rate),
         );
+        if let (Some(lateral), Some(lateral_held)) = (&self.lateral, &held.lateral) {
+            lateral.derivative(layout, x, lateral_held, &bus, rate);
+        }
         if USER_BLOCKS {
             for placed in &self.user_blocks {
                 placed
