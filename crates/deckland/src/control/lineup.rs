@@ -1,4 +1,4 @@
-//! Lineup guidance (docs/model.md §10.1; shared model §10.7): the hook's lateral offset
+//! Lineup guidance (docs/model.md §10.2; shared model §10.7): the hook's lateral offset
 //! from the landing area's centreline, and its rate, to a bank command for the roll law.
 //!
 //! With the roll law much faster than the lineup (its 2 % settling time is 1 s), the

@@ -19,6 +19,7 @@ pub mod deck_predictor;
 mod events;
 mod flight_computer;
 mod held;
+mod hold;
 pub mod lateral;
 mod layout;
 mod outcome;

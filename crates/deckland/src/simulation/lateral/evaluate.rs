@@ -47,7 +47,7 @@ impl LateralLoop {
         &self,
         view: &DeckView3d,
         deck: &DeckGeometry,
-        hook_velocity: &EarthVelocity,
+        (hook_velocity, velocity): (EarthVelocity, EarthVelocity),
         layout: &LoopLayout,
         x: &[f64],
         held: &HeldLateral,
@@ -61,12 +61,14 @@ impl LateralLoop {
             y_m: bus.hook_y_m.unwrap_or(0.0),
             h_m: bus.hook_h_m,
         };
-        let (cross_track, cross_track_rate) = view.cross_track(deck, &hook, hook_velocity);
+        let (cross_track, cross_track_rate) = view.cross_track(deck, &hook, &hook_velocity);
         // The reference line: the mean centreline (through the origin at t = 0, drifting
-        // right at V·sin δ), moved in close by the forecast deck motion.
+        // right at V·sin δ), moved in close by the forecast deck motion. The error is the
+        // hook's; its rate the CG's, free of the hook's lever on the roll and yaw rates
+        // (which would close a fast loop through the bank command).
         let weight = bus.compensation_weight;
         let error = hook.y_m - self.mean_drift_rate_mps * t - weight * held.forecast_m;
-        let error_rate = hook_velocity.y_mps - self.mean_drift_rate_mps;
+        let error_rate = velocity.y_mps - self.mean_drift_rate_mps;
         let bank_command = self
             .lineup
             .bank_command_rad(error, error_rate, bus.time_to_go_s);

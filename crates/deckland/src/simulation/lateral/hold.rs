@@ -75,7 +75,7 @@ impl ClosedLoop {
             // In the decision window the compensation is fully in (its window is
             // longer): the error to the forecast centreline, and its rate.
             let error = kinematics.hook.y_m - lateral.mean_drift_rate_mps * t - forecast_m;
-            let rate = kinematics.hook_velocity.y_mps - lateral.mean_drift_rate_mps;
+            let rate = kinematics.velocity.y_mps - lateral.mean_drift_rate_mps;
             lateral
                 .wave_off
                 .decide(&self.wave_off, time_to_go_s, error, rate, f64::NAN)
