@@ -55,9 +55,13 @@ pub mod stream_names {
     pub const SHIP_SENSOR_SWAY: &str = "ship_sensor_sway";
     /// Noise of the ship's sway-rate measurement (docs/model.md §3.7).
     pub const SHIP_SENSOR_SWAY_RATE: &str = "ship_sensor_sway_rate";
+    /// Noise of the bank-angle measurement in the 3-D approach (docs/model.md §10.2).
+    pub const BANK_NOISE: &str = "bank_noise";
+    /// Noise of the air-data sideslip in the 3-D approach (docs/model.md §10.2).
+    pub const SIDESLIP_NOISE: &str = "sideslip_noise";
 
     /// Every stream name above, for checks that they are distinct.
-    pub const ALL: [&str; 20] = [
+    pub const ALL: [&str; 22] = [
         SHIP_HEAVE,
         SHIP_PITCH,
         TURBULENCE_U,
@@ -78,6 +82,8 @@ pub mod stream_names {
         SHIP_SENSOR_YAW_RATE,
         SHIP_SENSOR_SWAY,
         SHIP_SENSOR_SWAY_RATE,
+        BANK_NOISE,
+        SIDESLIP_NOISE,
     ];
 }
 

@@ -69,6 +69,7 @@ fn every_shipped_scenario_loads_and_flies_one_approach() {
         names,
         [
             "calm.toml",
+            "crosswind.toml",
             "heavy-sea.toml",
             "moderate-sea.toml",
             "paper-adverse.toml"

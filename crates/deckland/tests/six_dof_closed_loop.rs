@@ -24,6 +24,9 @@ struct Sample {
 /// summary.
 fn fly(mut scenario: Scenario, model: PlantModel) -> (Vec<Sample>, RunSummary) {
     scenario.aircraft.model = model;
+    // The 6-DOF in the 3-DOF's environment, lateral surfaces held at trim (the 3-D
+    // approach, on by default, flies lineup in a 3-D environment).
+    scenario.approach.three_dimensional = false;
     let mut simulation = Simulation::new(&scenario).unwrap();
     let mut samples = Vec::new();
     loop {

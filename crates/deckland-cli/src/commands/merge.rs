@@ -167,6 +167,7 @@ pub fn run(args: &MergeArgs) -> Result<()> {
     let summary = CampaignSummary::of_merged(&merged, DEFAULT_TARGET_RATE);
     let output = OutputDir::prepare("merge", args.output.out.as_deref(), args.output.force)?;
     let report = CampaignReport {
+        lateral: None,
         scenario_file: scenario_file.clone(),
         summary: &summary,
         threads: None,
@@ -177,6 +178,7 @@ pub fn run(args: &MergeArgs) -> Result<()> {
         merged_from: merged.sources.clone(),
     };
     let folder = CampaignFolder {
+        lateral_rows: None,
         scenario: &scenario,
         scenario_toml: &merged.scenario_toml,
         rows: &merged.rows,

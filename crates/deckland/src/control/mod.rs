@@ -14,12 +14,14 @@ mod flight_path;
 mod guidance;
 pub mod lateral;
 mod law;
+pub mod lineup;
 mod loop_controller;
 pub mod pitch;
 pub mod risk;
 mod sink_rate;
 mod speed;
 mod wave_off;
+pub mod wave_off_lateral;
 
 pub use command_ramp::CommandRamp;
 pub use direct_lift::DirectLiftParameters;

@@ -228,6 +228,11 @@ pub enum WaveOffCriterion {
     DeckPitch,
     /// Predicted landing point too far from its mean height.
     LandingPointDisplacement,
+    /// 3-D approach: lineup error predicted at touchdown beyond the limit
+    /// ([`super::wave_off_lateral`]).
+    LineupError,
+    /// 3-D approach: drifting across the centreline too fast.
+    LineupDriftRate,
 }
 
 impl WaveOffCriterion {
@@ -242,6 +247,8 @@ impl WaveOffCriterion {
             Self::GlidePathErrorRate => "glide_path_error_rate",
             Self::DeckPitch => "deck_pitch",
             Self::LandingPointDisplacement => "landing_point_displacement",
+            Self::LineupError => "lineup_error",
+            Self::LineupDriftRate => "lineup_drift_rate",
         }
     }
 
@@ -256,6 +263,8 @@ impl WaveOffCriterion {
             Self::GlidePathErrorRate => "glide-path error rate (m/s)",
             Self::DeckPitch => "predicted deck pitch (deg)",
             Self::LandingPointDisplacement => "predicted landing-point displacement (m)",
+            Self::LineupError => "predicted lineup error at touchdown (m)",
+            Self::LineupDriftRate => "drift rate across the centreline (m/s)",
         }
     }
 }

@@ -115,12 +115,37 @@ pub const OBSERVATION_COLUMNS: [RecordedColumn; 23] = [
     RecordedColumn::si("wind_z_mps", SignalId::WindZ),
 ];
 
-/// One recorded instant of an approach as a flat row of [`APPROACH_COLUMNS`]: it
-/// serialises as a struct with those fields (an empty CSV field where a signal does not
-/// apply).
+/// The columns a 3-D approach adds to [`APPROACH_COLUMNS`] (docs/model.md §10.1): the
+/// lineup, the moving centreline, the lateral states and surfaces, the ship's roll, yaw
+/// and sway and the lateral wind. A 3-DOF approach has none of them.
+pub const LATERAL_APPROACH_COLUMNS: [RecordedColumn; 18] = [
+    RecordedColumn::si("y_m", SignalId::Y),
+    RecordedColumn::si("hook_y_m", SignalId::HookY),
+    RecordedColumn::si("cross_track_m", SignalId::CrossTrack),
+    RecordedColumn::si("cross_track_rate_mps", SignalId::CrossTrackRate),
+    RecordedColumn::si("lineup_error_m", SignalId::LineupError),
+    RecordedColumn::si("lateral_forecast_m", SignalId::LateralForecast),
+    RecordedColumn::si("centreline_y_m", SignalId::AimY),
+    RecordedColumn::degrees("centreline_heading_deg", SignalId::CentrelineHeading),
+    RecordedColumn::degrees("bank_command_deg", SignalId::BankCommand),
+    RecordedColumn::degrees("bank_deg", SignalId::Bank),
+    RecordedColumn::degrees("heading_deg", SignalId::Heading),
+    RecordedColumn::degrees("sideslip_deg", SignalId::Sideslip),
+    RecordedColumn::degrees("aileron_deg", SignalId::Aileron),
+    RecordedColumn::degrees("rudder_deg", SignalId::Rudder),
+    RecordedColumn::degrees("ship_roll_deg", SignalId::ShipRoll),
+    RecordedColumn::degrees("ship_yaw_deg", SignalId::ShipYaw),
+    RecordedColumn::si("ship_sway_m", SignalId::ShipSway),
+    RecordedColumn::si("wind_y_mps", SignalId::WindY),
+];
+
+/// One recorded instant of an approach as a flat row of [`APPROACH_COLUMNS`], and of
+/// [`LATERAL_APPROACH_COLUMNS`] in a 3-D approach: it serialises as a struct with those
+/// fields (an empty CSV field where a signal does not apply).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ApproachRow {
     values: [Option<f64>; APPROACH_COLUMNS.len()],
+    lateral: Option<[Option<f64>; LATERAL_APPROACH_COLUMNS.len()]>,
 }
 
 impl ApproachRow {
@@ -134,16 +159,28 @@ impl From<&Signals> for ApproachRow {
     fn from(s: &Signals) -> Self {
         Self {
             values: APPROACH_COLUMNS.map(|column| column.value(s)),
+            lateral: s
+                .lateral
+                .cross_track_m
+                .map(|_| LATERAL_APPROACH_COLUMNS.map(|column| column.value(s))),
         }
     }
 }
 
 impl Serialize for ApproachRow {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        let mut row = serializer.serialize_struct("ApproachRow", APPROACH_COLUMNS.len())?;
+        let lateral = self.lateral.map_or(0, |values| values.len());
+        let mut row =
+            serializer.serialize_struct("ApproachRow", APPROACH_COLUMNS.len() + lateral)?;
         // `Some(v)` serialises as `v` does (CSV, the columnar front ends' cells).
         for (column, value) in APPROACH_COLUMNS.iter().zip(self.values) {
             row.serialize_field(column.name, &value)?;
+        }
+        for (column, value) in LATERAL_APPROACH_COLUMNS
+            .iter()
+            .zip(self.lateral.iter().flatten())
+        {
+            row.serialize_field(column.name, value)?;
         }
         row.end()
     }

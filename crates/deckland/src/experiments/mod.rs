@@ -25,7 +25,7 @@ mod sweep;
 
 pub use approach::{
     fly_approach, fly_approach_with_law, ApproachRow, ApproachRun, APPROACH_COLUMNS,
-    APPROACH_RECORD_INTERVAL_S, OBSERVATION_COLUMNS,
+    APPROACH_RECORD_INTERVAL_S, LATERAL_APPROACH_COLUMNS, OBSERVATION_COLUMNS,
 };
 pub use conditions::Conditions;
 pub use environment::{record_environment, EnvironmentRecord, EnvironmentSample};

@@ -29,6 +29,7 @@
 //!   campaign early with the runs that finished ([`CampaignResult::partial`]).
 
 mod campaign;
+mod lateral;
 mod limits;
 mod merge;
 mod merge_error;
@@ -45,6 +46,10 @@ mod summary;
 pub use campaign::{
     controller_label, run_campaign, CampaignError, CampaignResult, CampaignSpec, ControllerVariant,
     SharedPitchLaw,
+};
+pub use lateral::{
+    lateral_run_values, LateralRunValues, LateralStatistics, LATERAL_RUN_COLUMNS,
+    RAMP_LINEUP_PASS_DEG,
 };
 pub use limits::{
     check_runs, LimitError, MAX_CONTROLLERS, MAX_CONTROLLER_LABEL_BYTES, MAX_RUNS,

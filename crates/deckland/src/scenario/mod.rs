@@ -132,6 +132,18 @@ pub struct ApproachParameters {
     pub airspeed_mps: f64,
     /// Start height of the hook above the glide path (m); 0.
     pub start_height_offset_m: f64,
+    /// Whether a 6-DOF aircraft flies the 3-D carrier approach (docs/model.md §10.1):
+    /// the angled deck on a steaming ship that rolls, yaws and sways, the 3-D wind, and
+    /// lineup through the roll and yaw laws; `false` flies the 3-DOF's environment with
+    /// the lateral surfaces held at trim. The 3-DOF aircraft ignores it. Default true
+    /// (written out only when false, so that files written before it are unchanged).
+    #[serde(skip_serializing_if = "is_true")]
+    pub three_dimensional: bool,
+}
+
+/// Whether `value` holds (serde's `skip_serializing_if` of a key true by default).
+fn is_true(value: &bool) -> bool {
+    *value
 }
 
 impl ApproachParameters {
@@ -155,6 +167,7 @@ impl Default for ApproachParameters {
             start_range_m: 1500.0,
             airspeed_mps: 69.1,
             start_height_offset_m: 0.0,
+            three_dimensional: true,
         }
     }
 }

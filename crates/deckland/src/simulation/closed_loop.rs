@@ -10,8 +10,9 @@
 use super::blocks::plant::BuiltPlant;
 use super::blocks::{direct_lift, plant, wake_feedforward, BlockPosition, PlacedBlock};
 use super::deck_predictor::BuiltDeckPredictor;
-use super::flight_computer::{FlightComputer, HeldCommands};
+use super::flight_computer::FlightComputer;
 pub use super::held::{HeldInputs, StepStreams};
+use super::lateral::LateralLoop;
 pub use super::layout::LoopLayout;
 use super::outer_loops::{OuterLoopInputs, OuterLoops};
 use super::signals::Signals;
@@ -21,7 +22,8 @@ use crate::aircraft::{Aircraft, AircraftState, HookGeometry, Plant, TrimPoint};
 use crate::control::pitch::{AxisLaw, BuiltPitchLaw, ElevatorSaturation, PitchLawInputs};
 use crate::control::{DirectLiftParameters, SpeedController, WaveOffParameters};
 use crate::environment::{
-    DeckGeometry, ShipMotion, ShipMotionState, ShipPose, ShipPoseRate, WindModel,
+    DeckGeometry, LateralShipMotionState, ShipMotion, ShipMotionState, ShipPose, ShipPoseRate,
+    WindModel,
 };
 use crate::integration::VectorSystem;
 use crate::sensors::PitchSensor;
@@ -55,6 +57,8 @@ pub struct ClosedLoop {
     pub(crate) direct_lift: Option<DirectLiftParameters>,
     /// Users' blocks, each at its position in the list.
     pub(crate) user_blocks: Vec<PlacedBlock>,
+    /// The 3-D approach's parts (docs/model.md §10.1); `None` outside it.
+    pub(crate) lateral: Option<LateralLoop>,
 }
 
 impl ClosedLoop {
@@ -104,7 +108,7 @@ impl ClosedLoop {
 
     /// The ship's state in `x`.
     #[inline]
-    fn ship_state(&self, x: &[f64]) -> ShipMotionState {
+    pub(crate) fn ship_state(&self, x: &[f64]) -> ShipMotionState {
         ShipMotionState::from_array(&self.layout.ship.array(x))
     }
 
@@ -112,100 +116,16 @@ impl ClosedLoop {
     #[inline]
     pub fn ship_pose(&self, x: &[f64], t: f64) -> (ShipPose, ShipPoseRate) {
         let ship = self.ship_state(x);
+        if let Some(lateral) = &self.lateral {
+            let lateral_state =
+                LateralShipMotionState::from_array(&self.layout.ship_lateral.array(x));
+            let view = lateral.deck_view(&self.ship, &self.deck, &ship, &lateral_state, t);
+            return (view.longitudinal, view.longitudinal_rate);
+        }
         (
             self.ship.pose(&ship, self.ship_initial_x_m, t),
             self.ship.pose_rate(&ship),
         )
-    }
-
-    /// Draws and samples the inputs held over the step from `t`: the ship filters' white
-    /// noise and the pitch sensor's error (each from its own stream, docs/model.md §3.4), the
-    /// wind at the aircraft and, in an approach, the deck reference (the guidance
-    /// computer's step). `waving_off` says whether a wave-off was decided before this
-    /// step; if not, the wave-off supervisor may decide one now, which the held inputs
-    /// carry out as an event ([`HeldInputs::wave_off_decided`]) and fly from this step.
-    pub fn hold(
-        &mut self,
-        t: f64,
-        x: &[f64],
-        streams: &mut StepStreams,
-        dt: f64,
-        waving_off: bool,
-    ) -> HeldInputs {
-        let ship_state = self.ship_state(x);
-        let aircraft = self.aircraft_state(x);
-        let (pose, _) = self.ship_pose(x, t);
-        let wind = self
-            .wind
-            .wind(t, pose.distance_aft_of_pitch_centre_m(aircraft.x_m));
-        let (deck, decision) =
-            self.guidance_computer_step(t, x, &aircraft, &ship_state, dt, waving_off);
-        let wave_off_decided = decision.map(|decision| (t, decision));
-        let wave_off = waving_off || wave_off_decided.is_some();
-        let ship_noise = self
-            .ship
-            .draw_noise(&mut streams.ship_heave, &mut streams.ship_pitch, dt);
-        let Some(mut computer) = self.computer.take() else {
-            return HeldInputs {
-                ship_noise,
-                pitch_noise_rad: self.sensor.draw_white_noise() + self.sensor.sinusoid(t),
-                wind,
-                deck,
-                commands: None,
-                theta_read: None,
-                frame_starts: false,
-                wave_off,
-                wave_off_decided,
-            };
-        };
-        // A frame of the flight-control computer: read the sensor (the mean of its samples
-        // since the last frame); `compute_frame` computes the commands at its start, and
-        // both are held until the next.
-        let pitch_noise_rad = self.sensor.draw_white_noise() + self.sensor.sinusoid(t);
-        let frame_starts = computer.starts_frame(t);
-        computer.sample(t, aircraft.theta_rad + pitch_noise_rad, frame_starts);
-        let held = HeldInputs {
-            ship_noise,
-            pitch_noise_rad,
-            wind,
-            deck,
-            commands: Some(computer.commands),
-            theta_read: Some((computer.theta_read_rad, computer.theta_read_time_s)),
-            frame_starts,
-            wave_off,
-            wave_off_decided,
-        };
-        self.computer = Some(computer);
-        held
-    }
-
-    /// At the start of a flight-computer frame (`held.frame_starts`), computes the frame's
-    /// elevator and thrust commands from the reading held, each passed through `taps` (so
-    /// that a command given from outside reaches the computer), and holds them in `held`
-    /// and in the computer for the rest of the frame. Without a computer, or within a
-    /// frame, does nothing. Computing again with other taps replaces the commands.
-    pub fn compute_frame<T: Taps>(&mut self, t: f64, x: &[f64], held: &mut HeldInputs, taps: &T) {
-        if !held.frame_starts {
-            return;
-        }
-        let Some(mut computer) = self.computer.take() else {
-            return;
-        };
-        held.commands = None;
-        let signals = self.evaluate(t, x, held, taps, &mut computer.scratch);
-        computer.commands = HeldCommands {
-            elevator_rad: signals.elevator_command_rad,
-            thrust_n: signals.thrust_command_n,
-            direct_lift: signals.direct_lift_command.unwrap_or(0.0),
-        };
-        held.commands = Some(computer.commands);
-        self.computer = Some(computer);
-    }
-
-    /// Advances the loop's discrete-time parts by `dt` after a step: the free-air
-    /// turbulence, by its exact Gauss–Markov update at the aircraft's airspeed.
-    pub fn advance_discrete(&mut self, dt: f64, airspeed_mps: f64) {
-        self.wind.advance(dt, airspeed_mps);
     }
 
     /// Writes the derivative of the loop at (t, x) with the held inputs into `rate` and
@@ -272,6 +192,9 @@ impl ClosedLoop {
         bus.ship = self.ship.pose(&ship_state, self.ship_initial_x_m, t);
         bus.ship_rate = self.ship.pose_rate(&ship_state);
         bus.aim_point = self.deck.aim_point(&bus.ship);
+        let view = self.lateral.as_ref().map(|lateral| {
+            lateral.ship_outputs(&self.ship, &self.deck, &ship_state, layout, x, &mut bus)
+        });
 
         // aircraft: position, attitude, the hook.
         let kinematics = plant::kinematics(
@@ -280,6 +203,7 @@ impl ClosedLoop {
             P::state_at(x, layout.aircraft.offset),
             &mut bus,
         );
+        let velocities = (kinematics.hook_velocity, kinematics.velocity);
 
         // wind: the air mass at the aircraft, sampled at the step's start.
         bus.wind = held.wind;
@@ -386,8 +310,21 @@ impl ClosedLoop {
             },
         );
 
-        // lateral_hold: the aileron and rudder commands of a lateral plant.
-        plant::lateral_hold(aircraft, &mut bus);
+        // lineup and lateral_laws in the 3-D approach (docs/model.md §10.2); otherwise
+        // lateral_hold: the aileron and rudder commands of a lateral plant at trim.
+        match (&self.lateral, &view, &held.lateral) {
+            (Some(lateral), Some(view), Some(lateral_held)) => lateral.lineup_and_laws(
+                view,
+                &self.deck,
+                velocities,
+                layout,
+                x,
+                lateral_held,
+                held.commands,
+                &mut bus,
+            ),
+            _ => plant::lateral_hold(aircraft, &mut bus),
+        }
 
         // direct_lift: the hook's height error to the path → lift (docs/model.md §5.9).
         if let Some(law) = &self.direct_lift {
@@ -441,6 +378,9 @@ impl ClosedLoop {
             bus.aim_point.h_m,
             layout.deck_predictor.of_mut(rate),
         );
+        if let (Some(lateral), Some(lateral_held)) = (&self.lateral, &held.lateral) {
+            lateral.derivative(layout, x, lateral_held, &bus, rate);
+        }
         if USER_BLOCKS {
             for placed in &self.user_blocks {
                 placed

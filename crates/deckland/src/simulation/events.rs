@@ -2,6 +2,8 @@
 //! sign change of one function of the hook's position between two samples, located by
 //! linear interpolation inside the step (docs/model.md §7).
 
+use super::lateral::touchdown::{ramp_lineup_error_deg, MAX_OFF_CENTRE_M};
+use super::lateral::LateralTouchdown;
 use super::outcome::{Event, Touchdown};
 use super::signals::Signals;
 use crate::environment::DeckGeometry;
@@ -28,6 +30,9 @@ pub(crate) struct HookProbe {
     sink_rate_mps: f64,
     theta_rad: f64,
     airspeed_mps: f64,
+    /// The 3-D approach's cross-track (m), its rate (m/s), bank (rad) and heading to
+    /// the centreline (rad).
+    lateral: Option<[f64; 4]>,
 }
 
 impl HookProbe {
@@ -44,6 +49,7 @@ impl HookProbe {
             sink_rate_mps: deck_velocity.h_mps - s.hook_climb_rate_mps,
             theta_rad: s.theta_rad,
             airspeed_mps: s.airspeed_mps,
+            lateral: lateral_probe(s),
         }
     }
 }
@@ -64,6 +70,8 @@ pub(crate) struct EventDetector {
     deck: DeckGeometry,
     last_wire_m: f64,
     previous: Option<HookProbe>,
+    /// The 3-D approach's cross-track at the ramp (m).
+    ramp_cross_track_m: Option<f64>,
 }
 
 impl EventDetector {
@@ -74,6 +82,7 @@ impl EventDetector {
             deck,
             last_wire_m,
             previous: None,
+            ramp_cross_track_m: None,
         }
     }
 
@@ -99,6 +108,9 @@ impl EventDetector {
         if let Some(before) = self.previous.replace(now) {
             if before.past_ramp_m < 0.0 && now.past_ramp_m >= 0.0 {
                 let f = crossing(before.past_ramp_m, now.past_ramp_m);
+                if let (Some(a), Some(b)) = (before.lateral, now.lateral) {
+                    self.ramp_cross_track_m = Some(lerp(a[0], b[0], f));
+                }
                 events.push(Event::RampCrossing {
                     time_s: lerp(before.time_s, now.time_s, f),
                     clearance_m: lerp(before.above_ramp_m, now.above_ramp_m, f),
@@ -112,6 +124,10 @@ impl EventDetector {
                     sink_rate_mps: lerp(before.sink_rate_mps, now.sink_rate_mps, f),
                     pitch_deg: lerp(before.theta_rad, now.theta_rad, f).to_degrees(),
                     airspeed_mps: lerp(before.airspeed_mps, now.airspeed_mps, f),
+                    lateral: before.lateral.zip(now.lateral).map(|(a, b)| {
+                        let at: [f64; 4] = std::array::from_fn(|i| lerp(a[i], b[i], f));
+                        lateral_touchdown(at, self.ramp_cross_track_m, &self.deck)
+                    }),
                 }));
             } else if before.along_deck_m <= self.last_wire_m
                 && now.along_deck_m > self.last_wire_m
@@ -143,5 +159,35 @@ impl Events {
     /// The events in the order found.
     pub fn iter(&self) -> impl Iterator<Item = &Event> {
         self.items[..self.len].iter().flatten()
+    }
+}
+
+/// The 3-D approach's lateral probe of `s`: cross-track, its rate, bank, heading to the
+/// centreline.
+fn lateral_probe(s: &Signals) -> Option<[f64; 4]> {
+    let lateral = &s.lateral;
+    Some([
+        lateral.cross_track_m?,
+        lateral.cross_track_rate_mps?,
+        s.phi_rad?,
+        s.psi_rad? - lateral.centreline_heading_rad?,
+    ])
+}
+
+/// The lateral outcome at touchdown (docs/model.md §10.4) from the probe interpolated
+/// at touchdown and the cross-track at the ramp.
+fn lateral_touchdown(
+    at: [f64; 4],
+    ramp_cross_track_m: Option<f64>,
+    deck: &DeckGeometry,
+) -> LateralTouchdown {
+    LateralTouchdown {
+        offset_m: at[0],
+        drift_rate_mps: at[1],
+        bank_deg: at[2].to_degrees(),
+        heading_to_centreline_deg: at[3].to_degrees(),
+        ramp_lineup_error_deg: ramp_cross_track_m
+            .map(|offset| ramp_lineup_error_deg(offset, deck.ramp_aft_of_aim_point_m)),
+        off_centre: at[0].abs() > MAX_OFF_CENTRE_M,
     }
 }

@@ -23,6 +23,9 @@ pub struct HeldCommands {
     pub thrust_n: f64,
     /// Direct lift control's lift-coefficient command (–), 0 without it.
     pub direct_lift: f64,
+    /// Aileron and rudder commands (rad) of the 3-D approach's lateral laws; `None`
+    /// outside it.
+    pub lateral: Option<(f64, f64)>,
 }
 
 /// The computer's frame clock and what it holds over a frame.

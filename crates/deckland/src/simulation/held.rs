@@ -2,6 +2,7 @@
 //! start ([`HeldInputs`]) and the random streams they are drawn from ([`StepStreams`]).
 
 use super::flight_computer::HeldCommands;
+use super::lateral::{HeldLateral, LateralStreams};
 use crate::control::{DeckReference, WaveOffDecision};
 use crate::environment::{ShipNoise, Wind};
 use crate::random::NoiseStream;
@@ -36,6 +37,8 @@ pub struct HeldInputs {
     /// A wave-off decided by the supervisor at this step's start (its time (s) and
     /// why): an event for the run loop to report and to fly from now on.
     pub wave_off_decided: Option<(f64, WaveOffDecision)>,
+    /// The 3-D approach's held inputs; `None` outside it.
+    pub lateral: Option<HeldLateral>,
 }
 
 /// The random streams the loop draws from step by step.
@@ -45,4 +48,6 @@ pub struct StepStreams {
     pub ship_heave: NoiseStream,
     /// White noise of the pitch shaping filter.
     pub ship_pitch: NoiseStream,
+    /// The 3-D approach's streams; `None` outside it.
+    pub lateral: Option<LateralStreams>,
 }

@@ -6,7 +6,7 @@
 //! integral against the O-PD's three observer states, a user's own law) changes nothing
 //! else.
 
-use crate::environment::ShipMotionState;
+use crate::environment::{LateralShipMotionState, ShipMotionState};
 
 /// A block's place in the state vector: `len` states from `offset`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -131,6 +131,13 @@ pub struct LoopLayout {
     pub deck_predictor: Slot,
     /// Direct lift control's lift-coefficient increment (–); no state without it.
     pub direct_lift: Slot,
+    /// The 3-D approach's roll, yaw and sway filters ([`LateralShipMotionState`]); no
+    /// state outside it (as the two below).
+    pub ship_lateral: Slot,
+    /// The roll law's own states.
+    pub roll_law: Slot,
+    /// The yaw law's own states.
+    pub yaw_law: Slot,
 }
 
 impl LoopLayout {
@@ -161,6 +168,9 @@ impl LoopLayout {
         );
         Self {
             direct_lift,
+            ship_lateral: Slot::default(),
+            roll_law: Slot::default(),
+            yaw_law: Slot::default(),
             states,
             aircraft,
             ship,
@@ -175,6 +185,16 @@ impl LoopLayout {
     /// The number of states.
     pub fn dimension(&self) -> usize {
         self.states.dimension()
+    }
+
+    /// Lays out the 3-D approach's blocks after the others: the lateral ship filters and
+    /// the roll and yaw laws with these state names.
+    pub fn add_lateral(&mut self, roll_law: &[&'static str], yaw_law: &[&'static str]) {
+        self.ship_lateral = self
+            .states
+            .add("ship_lateral", &LateralShipMotionState::NAMES);
+        self.roll_law = self.states.add("roll_law", roll_law);
+        self.yaw_law = self.states.add("yaw_law", yaw_law);
     }
 }
 

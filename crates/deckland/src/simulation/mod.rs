@@ -19,6 +19,8 @@ pub mod deck_predictor;
 mod events;
 mod flight_computer;
 mod held;
+mod hold;
+pub mod lateral;
 mod layout;
 mod outcome;
 mod outer_loops;
@@ -37,10 +39,11 @@ pub use events::PROBE_RANGE_AFT_OF_RAMP_M;
 pub use flight_computer::HeldCommands;
 pub use layout::{BlockStates, Slot, StateLayout};
 pub use outcome::{Divergence, EndReason, Event, LandingRules, Outcome, RunSummary, Touchdown};
+pub use outer_loops::approach_flight_path_angle;
 pub use outer_loops::{OuterLoops, WaveOffFlight};
 pub use recorder::{GlidePathStatistics, Recorder};
 pub use runner::{Simulation, SimulationBuilder, Stop};
-pub use setup::{approach_flight_path_angle, PitchLawFactory, SetupError};
+pub use setup::{PitchLawFactory, SetupError};
 pub use signals::{
     Conversion, RecordedColumn, SignalId, SignalSpec, Signals, SIGNALS, SIGNAL_COUNT,
     SIGNAL_MAGNITUDE_LIMIT,

@@ -61,6 +61,9 @@ pub struct Touchdown {
     pub pitch_deg: f64,
     /// True airspeed (m/s).
     pub airspeed_mps: f64,
+    /// The 3-D approach's lateral outcome; `None` (and not written) outside it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lateral: Option<super::lateral::LateralTouchdown>,
 }
 
 /// Something that happened during a run, found by a sign change between two steps and
@@ -426,6 +429,7 @@ mod tests {
             sink_rate_mps,
             pitch_deg: 3.0,
             airspeed_mps: 69.0,
+            lateral: None,
         }
     }
 

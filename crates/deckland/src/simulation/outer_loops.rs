@@ -7,6 +7,7 @@ use crate::control::pitch::command_shaping::JerkLimitedStep;
 use crate::control::{
     CommandRamp, DeckReference, FlightPathGenerator, LoopController, PathReference,
 };
+use crate::environment::Wind;
 
 /// What produces the pitch command θ_ref.
 #[derive(Debug, Clone, PartialEq)]
@@ -288,4 +289,23 @@ impl OuterLoops {
     pub fn is_approach(&self) -> bool {
         matches!(self, Self::Approach { .. })
     }
+}
+
+/// The air-relative flight-path angle that gives an inertial glide slope `slope_rad`
+/// relative to a deck moving at `ship_speed_mps` in a steady wind: the closure speed is
+/// V cos γ_a + W_x − V_ship and the required sink is closure·tan(slope) − W_z (air
+/// sinking with W_z > 0 carries the aircraft down). Solved by fixed-point iteration.
+pub fn approach_flight_path_angle(
+    airspeed_mps: f64,
+    slope_rad: f64,
+    wind: &Wind,
+    ship_speed_mps: f64,
+) -> f64 {
+    let mut gamma: f64 = -slope_rad;
+    for _ in 0..20 {
+        let closure = airspeed_mps * gamma.cos() + wind.x_mps - ship_speed_mps;
+        let air_sink = closure * slope_rad.tan() - wind.z_mps;
+        gamma = -(air_sink / airspeed_mps).clamp(-1.0, 1.0).asin();
+    }
+    gamma
 }

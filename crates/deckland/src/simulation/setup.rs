@@ -8,7 +8,7 @@ use super::blocks::{check_placement, Block, BlockPlacementError, BlockPosition, 
 use super::closed_loop::{ClosedLoop, LoopLayout, StepStreams};
 use super::deck_predictor::{BuiltDeckPredictor, DeckPredictor, DeckView};
 use super::flight_computer::FlightComputer;
-use super::outer_loops::{OuterLoops, WaveOffFlight};
+use super::outer_loops::{approach_flight_path_angle, OuterLoops, WaveOffFlight};
 use crate::aircraft::six_dof::SixDofAircraft;
 use crate::aircraft::{
     linearize, trim, Aircraft, LinearModel, PlantModel, TrimError, TrimPoint, TrimRequest,
@@ -53,25 +53,6 @@ pub(crate) struct Setup {
     pub initial: Vec<f64>,
     pub streams: StepStreams,
     pub end_time_s: f64,
-}
-
-/// The air-relative flight-path angle that gives an inertial glide slope `slope_rad`
-/// relative to a deck moving at `ship_speed_mps` in a steady wind: the closure speed is
-/// V cos γ_a + W_x − V_ship and the required sink is closure·tan(slope) − W_z (air
-/// sinking with W_z > 0 carries the aircraft down). Solved by fixed-point iteration.
-pub fn approach_flight_path_angle(
-    airspeed_mps: f64,
-    slope_rad: f64,
-    wind: &Wind,
-    ship_speed_mps: f64,
-) -> f64 {
-    let mut gamma: f64 = -slope_rad;
-    for _ in 0..20 {
-        let closure = airspeed_mps * gamma.cos() + wind.x_mps - ship_speed_mps;
-        let air_sink = closure * slope_rad.tan() - wind.z_mps;
-        gamma = -(air_sink / airspeed_mps).clamp(-1.0, 1.0).asin();
-    }
-    gamma
 }
 
 /// The outer loops of the scenario's mission, the flight-path angle to trim for and the
@@ -412,6 +393,7 @@ pub(crate) fn build(scenario: &Scenario, user: UserParts<'_>) -> Result<Setup, S
         deck_predictor.state_names(),
         direct_lift.is_some(),
     );
+    let three_d = super::lateral::attach(scenario, &plant, gamma, &streams, &mut layout)?;
     // Users' blocks, their states after the built-in blocks'.
     let mut user_blocks: Vec<PlacedBlock> = Vec::with_capacity(blocks.len());
     for (position, block) in blocks {
@@ -436,6 +418,15 @@ pub(crate) fn build(scenario: &Scenario, user: UserParts<'_>) -> Result<Setup, S
         .ship
         .of_mut(&mut initial)
         .copy_from_slice(&ship_state.to_array());
+    let (lateral, lateral_streams, wind) = super::lateral::start(
+        three_d,
+        &layout,
+        (x_m, h_m),
+        &mut initial,
+        wind,
+        scenario,
+        &streams,
+    );
     let trim_inputs = PitchLawInputs {
         theta_ref_rad: trim_point.theta_rad,
         theta_measured_rad: trim_point.theta_rad,
@@ -483,6 +474,7 @@ pub(crate) fn build(scenario: &Scenario, user: UserParts<'_>) -> Result<Setup, S
             .then_some(flight_path.wake_feedforward_lead_s),
         direct_lift,
         user_blocks,
+        lateral,
     };
     Ok(Setup {
         system,
@@ -490,6 +482,7 @@ pub(crate) fn build(scenario: &Scenario, user: UserParts<'_>) -> Result<Setup, S
         streams: StepStreams {
             ship_heave,
             ship_pitch,
+            lateral: lateral_streams,
         },
         end_time_s,
     })

@@ -8,6 +8,7 @@
 //! ([`Signals::first_out_of_range`]); a run whose signals leave it ends as diverged,
 //! naming the signal.
 
+use super::lateral::LateralSignals;
 use crate::environment::{EarthPoint, ShipPose, ShipPoseRate, Wind};
 
 /// The largest magnitude any signal may reach before the run is declared diverged. No
@@ -112,6 +113,8 @@ pub struct Signals {
     pub rudder_rad: Option<f64>,
     /// Rudder command (rad).
     pub rudder_command_rad: Option<f64>,
+    /// The 3-D approach's lineup, ship roll, yaw and sway, and lateral wind.
+    pub lateral: LateralSignals,
 }
 
 /// One signal of the loop, declared once in [`SIGNALS`]: its name, its unit (SI, the
@@ -318,6 +321,28 @@ signal_registry! {
     Rudder = "rudder_rad" ["rad"] option(rudder_rad);
     /// Rudder command.
     RudderCommand = "rudder_command_rad" ["rad"] option(rudder_command_rad);
+    /// 3-D approach: the hook's offset right of the moving landing centreline.
+    CrossTrack = "cross_track_m" ["m"] option(lateral.cross_track_m);
+    /// 3-D approach: the rate of that offset relative to the deck.
+    CrossTrackRate = "cross_track_rate_mps" ["m/s"] option(lateral.cross_track_rate_mps);
+    /// 3-D approach: earth y of the moving aim point (the centreline passes through it).
+    AimY = "aim_point.y_m" ["m"] option(lateral.aim_point_y_m);
+    /// 3-D approach: heading of the landing centreline from the final bearing.
+    CentrelineHeading = "centreline_heading_rad" ["rad"] option(lateral.centreline_heading_rad);
+    /// 3-D approach: the lineup guidance's error to its reference line, right positive.
+    LineupError = "lineup_error_m" ["m"] option(lateral.lineup_error_m);
+    /// 3-D approach: forecast lateral displacement of the landing point at touchdown.
+    LateralForecast = "lateral_forecast_m" ["m"] option(lateral.lateral_forecast_m);
+    /// 3-D approach: the lineup guidance's bank command.
+    BankCommand = "bank_command_rad" ["rad"] option(lateral.bank_command_rad);
+    /// 3-D approach: ship roll, starboard side down.
+    ShipRoll = "ship.roll_rad" ["rad"] option(lateral.ship_roll_rad);
+    /// 3-D approach: ship yaw from its mean heading, bow to starboard.
+    ShipYaw = "ship.yaw_rad" ["rad"] option(lateral.ship_yaw_rad);
+    /// 3-D approach: ship sway along its own y axis, to starboard.
+    ShipSway = "ship.sway_m" ["m"] option(lateral.ship_sway_m);
+    /// 3-D approach: wind at the aircraft, y (positive to the right).
+    WindY = "wind.y_mps" ["m/s"] option(lateral.wind_y_mps);
 }
 
 /// Whether a signal's value is finite and within ±[`SIGNAL_MAGNITUDE_LIMIT`] (false for

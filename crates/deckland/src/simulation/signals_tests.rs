@@ -108,6 +108,19 @@ fn each_registered_signal_reads_its_own_field() {
         aileron_command_rad: Some(48.0),
         rudder_rad: Some(49.0),
         rudder_command_rad: Some(50.0),
+        lateral: crate::simulation::lateral::LateralSignals {
+            cross_track_m: Some(51.0),
+            cross_track_rate_mps: Some(52.0),
+            aim_point_y_m: Some(53.0),
+            centreline_heading_rad: Some(54.0),
+            lineup_error_m: Some(55.0),
+            lateral_forecast_m: Some(56.0),
+            bank_command_rad: Some(57.0),
+            ship_roll_rad: Some(58.0),
+            ship_yaw_rad: Some(59.0),
+            ship_sway_m: Some(60.0),
+            wind_y_mps: Some(61.0),
+        },
     };
     let values: Vec<f64> = s
         .named_values()

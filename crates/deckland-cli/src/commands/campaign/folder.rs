@@ -2,7 +2,9 @@
 //! rows, the scenario and the title, and the outcome classes in table order. Both the
 //! report's writer (`report`) and the campaign's figures (`plot::campaign`) read it.
 
-use deckland::monte_carlo::{CampaignStatistics, CampaignSummary, Proportion, RunRow};
+use deckland::monte_carlo::{
+    CampaignStatistics, CampaignSummary, LateralRunValues, LateralStatistics, Proportion, RunRow,
+};
 use deckland::scenario::Scenario;
 use serde::Serialize;
 
@@ -28,6 +30,10 @@ pub struct CampaignReport<'a> {
     pub shard_scheme: &'static str,
     /// The shard folders a merged campaign was made from, by shard index (empty when flown).
     pub merged_from: Vec<String>,
+    /// A 3-D approach campaign's lateral statistics (docs/model.md §10.4); absent (not
+    /// written) for a 3-DOF campaign and for a merge.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lateral: Option<LateralStatistics>,
 }
 
 /// A campaign folder's content before it is written.
@@ -42,6 +48,9 @@ pub struct CampaignFolder<'a> {
     pub report: &'a CampaignReport<'a>,
     /// The title of the plots and the page.
     pub title: String,
+    /// A 3-D approach campaign's lateral columns of `runs.csv`, one per row; `None` for
+    /// a 3-DOF campaign (and a merge), whose `runs.csv` has none.
+    pub lateral_rows: Option<Vec<LateralRunValues>>,
 }
 
 /// The title of a campaign's plots and page: scenario file name, seed, runs, shard.

@@ -35,8 +35,8 @@ use crate::output::OutputDir;
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use deckland::monte_carlo::{
-    run_campaign, CampaignSpec, CampaignSummary, RunRecord, RunRow, Shard, DEFAULT_TARGET_RATE,
-    SHARD_SCHEME,
+    lateral_run_values, run_campaign, CampaignSpec, CampaignSummary, LateralStatistics, RunRecord,
+    RunRow, Shard, DEFAULT_TARGET_RATE, SHARD_SCHEME,
 };
 use deckland::scenario::Mission;
 use folder::{CampaignFolder, CampaignReport};
@@ -149,7 +149,9 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
 
     let summary = CampaignSummary::of_result(&result, seed, DEFAULT_TARGET_RATE);
     let finished_runs = result.records.len() as u64;
+    let lateral = LateralStatistics::of(&result.records);
     let report = CampaignReport {
+        lateral,
         scenario_file: args.scenario.display().to_string(),
         summary: &summary,
         threads: Some(threads),
@@ -167,6 +169,10 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
         .map(|r| RunRow::new(r, &result.controller_labels))
         .collect();
     let folder = CampaignFolder {
+        lateral_rows: report
+            .lateral
+            .is_some()
+            .then(|| result.records.iter().map(lateral_run_values).collect()),
         scenario: &spec.scenario,
         scenario_toml: &scenario_toml,
         rows: &rows,

@@ -11,7 +11,8 @@ use crate::output::OutputDir;
 use crate::plot::campaign::figures;
 use anyhow::Result;
 use deckland::monte_carlo::{
-    CampaignStatistics, CampaignSummary, Distribution, Proportion, UPPER_BOUND_CONFIDENCE,
+    CampaignStatistics, CampaignSummary, Distribution, LateralRunValues, Proportion, RunRow,
+    LATERAL_RUN_COLUMNS, RUN_COLUMNS, UPPER_BOUND_CONFIDENCE,
 };
 
 /// Classes seen at most this many times get their upper bound spelt out in the report.
@@ -21,13 +22,16 @@ const RARE_COUNT: u64 = 3;
 /// `runs.parquet` (when a run finished), `summary.json`, the plots and `report.html`.
 pub fn write_folder(folder: &CampaignFolder, output: &OutputDir) -> Result<()> {
     output.write_bytes("scenario.toml", folder.scenario_toml.as_bytes())?;
-    output.write_with("runs.csv", |path| {
-        let mut csv = csv::Writer::from_path(path)?;
-        for row in folder.rows {
-            csv.serialize(row)?;
+    output.write_with("runs.csv", |path| match &folder.lateral_rows {
+        None => {
+            let mut csv = csv::Writer::from_path(path)?;
+            for row in folder.rows {
+                csv.serialize(row)?;
+            }
+            csv.flush()?;
+            Ok(())
         }
-        csv.flush()?;
-        Ok(())
+        Some(lateral) => write_lateral_runs_csv(path, folder.rows, lateral),
     })?;
     if !folder.rows.is_empty() {
         output.write_with("runs.parquet", |path| {
@@ -429,6 +433,9 @@ pub fn print_statistics(report: &CampaignReport) -> Result<()> {
         out!("{:>width$}", format!("{}/{}/{}/{}", w[0], w[1], w[2], w[3]))?;
     }
     outln!()?;
+    if let Some(lateral) = &report.lateral {
+        print_lateral(lateral)?;
+    }
     let touchdown: [(&str, bool, DistributionOf); 2] = [
         ("touchdown from aim (m)", true, |s| s.touchdown_distance_m),
         ("touchdown sink rate (m/s)", false, |s| {
@@ -573,4 +580,88 @@ pub fn rare_event_lines(summary: &CampaignSummary) -> Vec<String> {
         1.0 - target.confidence,
     ));
     lines
+}
+
+/// A 3-D campaign's `runs.csv`: the columns of every campaign, then
+/// [`LATERAL_RUN_COLUMNS`], each part written as the csv writer writes it.
+fn write_lateral_runs_csv(
+    path: &std::path::Path,
+    rows: &[RunRow],
+    lateral: &[LateralRunValues],
+) -> Result<()> {
+    let line = |write: &dyn Fn(&mut csv::Writer<Vec<u8>>) -> csv::Result<()>| -> Result<String> {
+        let mut writer = csv::WriterBuilder::new()
+            .has_headers(false)
+            .from_writer(Vec::new());
+        write(&mut writer)?;
+        let bytes = writer.into_inner().map_err(|e| anyhow::anyhow!("{e}"))?;
+        Ok(String::from_utf8(bytes)?.trim_end().to_owned())
+    };
+    let mut text = format!(
+        "{},{}\n",
+        RUN_COLUMNS.join(","),
+        LATERAL_RUN_COLUMNS.join(",")
+    );
+    for (row, values) in rows.iter().zip(lateral) {
+        let base = line(&|w| w.serialize(row))?;
+        let extra = line(&|w| w.serialize(values))?;
+        text.push_str(&format!("{base},{extra}\n"));
+    }
+    std::fs::write(path, text)?;
+    Ok(())
+}
+
+/// The 3-D campaign's lateral statistics, every controller's touchdowns together.
+fn print_lateral(lateral: &deckland::monte_carlo::LateralStatistics) -> Result<()> {
+    let rate = |p: &Proportion| {
+        format!(
+            "{}, {:.1} % [{:.1}, {:.1}]",
+            p.count,
+            100.0 * p.rate,
+            100.0 * p.ci95_low,
+            100.0 * p.ci95_high
+        )
+    };
+    outln!("  3-D approach, {} touchdowns:", lateral.touchdowns)?;
+    outln!(
+        "    off centre (> {} m)            {}",
+        lateral.max_off_centre_m,
+        rate(&lateral.off_centre)
+    )?;
+    let spread = |name: &str, d: &Option<Distribution>| -> Result<()> {
+        match d {
+            Some(d) => outln!(
+                "    {name:<32}mean {:+.2}, sd {:.2}, min {:+.2}, max {:+.2}",
+                d.mean,
+                d.standard_deviation,
+                d.min,
+                d.max
+            )?,
+            None => outln!("    {name:<32}–")?,
+        }
+        Ok(())
+    };
+    spread("lateral offset (m)", &lateral.lateral_offset_m)?;
+    spread("drift rate (m/s)", &lateral.drift_rate_mps)?;
+    spread("bank (deg)", &lateral.bank_deg)?;
+    spread(
+        "heading to centreline (deg)",
+        &lateral.heading_to_centreline_deg,
+    )?;
+    spread("lineup at the ramp (deg)", &lateral.ramp_lineup_error_deg)?;
+    outln!(
+        "    ramp lineup within ±0.5°       {}",
+        rate(&lateral.ramp_lineup_within_half_degree)
+    )?;
+    outln!(
+        "    drift beyond {} m/s            {}",
+        lateral.max_drift_rate_mps,
+        rate(&lateral.drift_beyond_limit)
+    )?;
+    outln!(
+        "    bank beyond {}°                  {}",
+        lateral.max_bank_deg,
+        rate(&lateral.bank_beyond_limit)
+    )?;
+    Ok(())
 }

@@ -10,8 +10,8 @@
 //!
 //! ```text
 //! ship ─► aircraft ─► wind ─►[air mass]─► air_data ─► pitch_sensor ─►[sensors]
-//!      ─► wake_feedforward ─► outer_loops ─► pitch_law ─► speed ─► lateral_hold
-//!      ─► direct_lift ─►[commands]─► deck_predictor
+//!      ─► wake_feedforward ─► outer_loops ─► pitch_law ─► speed ─► lineup
+//!      ─► lateral_laws ─► direct_lift ─►[commands]─► deck_predictor
 //! ```
 //!
 //! A user's own block ([`Block`], a trait object: a disturbance, a sensor filter, a
@@ -54,7 +54,7 @@ pub struct BlockDeclaration {
 }
 
 /// The built-in blocks, in the order the loop evaluates them.
-pub const BUILT_IN_BLOCKS: [BlockDeclaration; 12] = [
+pub const BUILT_IN_BLOCKS: [BlockDeclaration; 13] = [
     BlockDeclaration {
         name: "ship",
         reads: &[],
@@ -67,6 +67,11 @@ pub const BUILT_IN_BLOCKS: [BlockDeclaration; 12] = [
             ShipPitchRate,
             AimX,
             AimHeight,
+            AimY,
+            CentrelineHeading,
+            ShipRoll,
+            ShipYaw,
+            ShipSway,
         ],
         followed_by: None,
     },
@@ -109,7 +114,7 @@ pub const BUILT_IN_BLOCKS: [BlockDeclaration; 12] = [
     BlockDeclaration {
         name: "wind",
         reads: &[DistanceAft],
-        writes: &[WindX, WindZ],
+        writes: &[WindX, WindZ, WindY],
         followed_by: Some(BlockPosition::AirMass),
     },
     BlockDeclaration {
@@ -166,8 +171,35 @@ pub const BUILT_IN_BLOCKS: [BlockDeclaration; 12] = [
         followed_by: None,
     },
     BlockDeclaration {
-        name: "lateral_hold",
-        reads: &[],
+        name: "lineup",
+        reads: &[
+            Time,
+            HookY,
+            AimY,
+            CentrelineHeading,
+            TimeToGo,
+            CompensationWeight,
+        ],
+        writes: &[
+            CrossTrack,
+            CrossTrackRate,
+            LineupError,
+            LateralForecast,
+            BankCommand,
+        ],
+        followed_by: None,
+    },
+    BlockDeclaration {
+        name: "lateral_laws",
+        reads: &[
+            BankCommand,
+            Bank,
+            RollRate,
+            Sideslip,
+            YawRate,
+            Aileron,
+            Rudder,
+        ],
         writes: &[AileronCommand, RudderCommand],
         followed_by: None,
     },

@@ -102,6 +102,9 @@ pub(crate) struct PlantOutputs<P: Plant> {
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Kinematics<P: Plant> {
     pub kinematic: P::Kinematic,
+    /// The hook's and the CG's earth velocity (m/s).
+    pub hook_velocity: crate::environment::EarthVelocity,
+    pub velocity: crate::environment::EarthVelocity,
     /// The CG's earth x rate (m/s).
     pub x_rate_mps: f64,
 }
@@ -142,6 +145,8 @@ pub(crate) fn kinematics<P: Plant>(
     }
     Kinematics {
         kinematic,
+        hook_velocity: out.hook_velocity,
+        velocity: out.velocity,
         x_rate_mps: out.velocity.x_mps,
     }
 }

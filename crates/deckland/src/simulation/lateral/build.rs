@@ -1,0 +1,265 @@
+//! Building the 3-D approach's parts of the loop from a scenario (docs/model.md §10.1).
+
+use std::sync::Arc;
+
+use super::{LateralLoop, LateralStreams, SurfaceTrim};
+use crate::aircraft::six_dof::{
+    linearize_six_dof, trim_six_dof, SixDofAircraft, SixDofTrimPoint, SixDofTrimRequest,
+};
+use crate::aircraft::{ElevatorActuator, TrimRequest};
+use crate::control::lateral::design::{channel_hardware, channel_plants};
+use crate::control::lateral::{LateralChannel, LateralDesignContext, LateralLawParameters};
+use crate::control::lineup::LineupParameters;
+use crate::control::wave_off_lateral::LateralWaveOffLimits;
+use crate::environment::{
+    mean_wind_over_angled_deck, DeckGeometry, LateralShipMotion, LateralShipMotionState,
+    LateralShipStreams, ShipPose, Wind,
+};
+use crate::parameters::ParameterError;
+use crate::random::{stream_names, RandomStreams};
+use crate::scenario::{Mission, Scenario};
+use crate::sensors::LateralShipMotionSensor;
+
+/// The roll and yaw laws the 3-D approach flies: the registered O-PD on each channel
+/// (docs/lateral-control.md). The one place the laws are chosen.
+pub fn lateral_laws(_scenario: &Scenario) -> (LateralLawParameters, LateralLawParameters) {
+    let registered = |channel| {
+        LateralLawParameters::registered("observer_pd", channel)
+            .unwrap_or_else(|| unreachable!("the O-PD is registered on both channels"))
+    };
+    (
+        registered(LateralChannel::Roll),
+        registered(LateralChannel::Yaw),
+    )
+}
+
+/// What the 3-D approach adds to a run at its start.
+pub(crate) struct ThreeDimensional {
+    pub lateral: LateralLoop,
+    pub streams: LateralStreams,
+    /// The roll, yaw and sway filters' initial (stationary) state.
+    pub ship_state: LateralShipMotionState,
+    /// The 6-DOF trim in the crab that holds the track along the drifting centreline,
+    /// its wind the full steady wind (so that its state drifts with the centreline).
+    pub trim: SixDofTrimPoint,
+}
+
+/// Whether `scenario` flies the 3-D approach with `aircraft`.
+pub(crate) fn flies_three_dimensional(scenario: &Scenario, six_dof: bool) -> bool {
+    six_dof && scenario.mission == Mission::Approach && scenario.approach.three_dimensional
+}
+
+/// The steady wind of the 3-D approach (docs/model.md §3.9): down the angled deck, with
+/// the crosswind; none when the mean wind is off.
+pub(crate) fn steady_wind(scenario: &Scenario) -> Wind {
+    let env = &scenario.environment;
+    if !env.wind.mean_wind {
+        return Wind::default();
+    }
+    mean_wind_over_angled_deck(
+        env.wind.wind_over_deck_mps,
+        env.ship.forward_speed_mps,
+        env.deck.ship_mean_heading_rad(),
+        env.wind.crosswind_mps,
+    )
+}
+
+/// The 3-D approach's parts for `aircraft` on the air-relative flight path
+/// `flight_path_angle_rad`; a crosswind the aircraft cannot crab into is refused,
+/// naming it.
+pub(crate) fn build(
+    scenario: &Scenario,
+    aircraft: &SixDofAircraft,
+    flight_path_angle_rad: f64,
+    streams: &RandomStreams,
+) -> Result<ThreeDimensional, ParameterError> {
+    let env = &scenario.environment;
+    let deck = &env.deck;
+    let speed = env.ship.forward_speed_mps;
+    let (sin, cos) = deck.ship_mean_heading_rad().sin_cos();
+    let drift = speed * sin;
+    let wind = steady_wind(scenario);
+    let request = SixDofTrimRequest {
+        longitudinal: TrimRequest {
+            speed_mps: scenario.approach.airspeed_mps,
+            flight_path_angle_rad,
+        },
+        sideslip_rad: 0.0,
+        // Relative to the drifting centreline: the air's drift with the ship is no cross
+        // wind to it.
+        wind: Wind {
+            y_mps: wind.y_mps - drift,
+            ..wind
+        },
+    };
+    let trim = trim_six_dof(aircraft, &request).map_err(|error| {
+        ParameterError::new(
+            "environment.wind",
+            "crosswind_mps",
+            env.wind.crosswind_mps,
+            format_args!("a crosswind the aircraft can crab into on the approach ({error})"),
+        )
+    })?;
+    let crab_deg = trim.psi_rad.to_degrees();
+    if crab_deg.abs() > 15.0 {
+        return Err(ParameterError::new(
+            "environment.wind",
+            "crosswind_mps",
+            env.wind.crosswind_mps,
+            format_args!(
+                "a crosswind the aircraft can crab into: it needs a crab of {crab_deg:.1}°, \
+                 beyond the 15° a pilot lands with"
+            ),
+        ));
+    }
+    let model = linearize_six_dof(aircraft, &trim);
+    let (roll_plant, yaw_plant) = channel_plants(&model);
+    let context = |channel, plant| LateralDesignContext {
+        plant,
+        actuator: channel_hardware(aircraft, &model, channel).actuator,
+    };
+    let (roll, yaw) = lateral_laws(scenario);
+    let roll = roll.build_roll(&context(LateralChannel::Roll, roll_plant))?;
+    let yaw = yaw.build_yaw(&context(LateralChannel::Yaw, yaw_plant))?;
+    let ship = LateralShipMotion::new(&env.ship)?;
+    let mut ship_streams = LateralShipStreams::new(streams);
+    let ship_state = ship.stationary_initial_state(&mut ship_streams);
+    let surface = |actuator: &ElevatorActuator, trim_rad| SurfaceTrim {
+        trim_rad,
+        min_rad: actuator.min_rad(),
+        max_rad: actuator.max_rad(),
+    };
+    let lineup = LineupParameters {
+        gravity_mps2: aircraft.longitudinal().parameters().gravity_mps2,
+        ..LineupParameters::default()
+    };
+    lineup.validate()?;
+    let lateral = LateralLoop {
+        ship,
+        initial_pitch_centre_m: initial_pitch_centre_m(deck),
+        mean_drift_rate_mps: drift,
+        closure_mps: (scenario.approach.airspeed_mps * flight_path_angle_rad.cos() + wind.x_mps
+            - speed * cos)
+            .max(1.0),
+        roll: Arc::from(roll),
+        yaw: Arc::from(yaw),
+        lineup,
+        wave_off: LateralWaveOffLimits::default(),
+        aileron: surface(aircraft.aileron(), trim.aileron_rad),
+        rudder: surface(aircraft.rudder(), trim.rudder_rad),
+        trim_bank_rad: trim.phi_rad,
+        trim_sideslip_rad: trim.sideslip_rad,
+        bank_noise: env.pitch_noise,
+        sensor: LateralShipMotionSensor::new(env.ship_sensing, streams)?,
+        last_measurement: None,
+        read: (trim.phi_rad, trim.sideslip_rad),
+    };
+    Ok(ThreeDimensional {
+        lateral,
+        streams: LateralStreams {
+            ship: ship_streams,
+            bank: streams.stream(stream_names::BANK_NOISE),
+            sideslip: streams.stream(stream_names::SIDESLIP_NOISE),
+        },
+        ship_state,
+        trim: SixDofTrimPoint { wind, ..trim },
+    })
+}
+
+/// The pitch centre's earth (x, y) at t = 0 that puts the mean aim point at the origin.
+fn initial_pitch_centre_m(deck: &DeckGeometry) -> (f64, f64) {
+    let aim = deck.aim_point_3d(&ShipPose::default());
+    (-aim.x_m, -aim.y_m)
+}
+
+/// A loop for the unit tests of the 3-D view: the default laws on the default aircraft.
+#[cfg(test)]
+pub(crate) fn test_loop(deck: &DeckGeometry, ship: &crate::environment::ShipMotion) -> LateralLoop {
+    let mut scenario = Scenario::default();
+    scenario.environment.deck = *deck;
+    scenario.environment.ship = *ship.parameters();
+    let aircraft = SixDofAircraft::default();
+    let built = build(
+        &scenario,
+        &aircraft,
+        -3.5_f64.to_radians(),
+        &RandomStreams::new(1),
+    )
+    .expect("the default 3-D approach builds");
+    built.lateral
+}
+
+/// Builds the 3-D approach's parts when `scenario` flies it with `plant`, and lays out
+/// their states in `layout`.
+pub(crate) fn attach(
+    scenario: &Scenario,
+    plant: &crate::simulation::blocks::plant::BuiltPlant,
+    flight_path_angle_rad: f64,
+    streams: &RandomStreams,
+    layout: &mut crate::simulation::LoopLayout,
+) -> Result<Option<ThreeDimensional>, ParameterError> {
+    let crate::simulation::blocks::plant::BuiltPlant::SixDof(aircraft) = plant else {
+        return Ok(None);
+    };
+    if !flies_three_dimensional(scenario, true) {
+        return Ok(None);
+    }
+    let built = build(scenario, aircraft, flight_path_angle_rad, streams)?;
+    layout.add_lateral(
+        built.lateral.roll.state_names(),
+        built.lateral.yaw.state_names(),
+    );
+    Ok(Some(built))
+}
+
+/// Starts the 3-D approach's parts: the aircraft in its crab at the CG (`x_m`, `h_m`)
+/// on the mean centreline, the lateral ship filters and the laws' states in `initial`;
+/// the wind in three dimensions. Returns the loop's part, its streams and the wind.
+pub(crate) fn start(
+    built: Option<ThreeDimensional>,
+    layout: &crate::simulation::LoopLayout,
+    (x_m, h_m): (f64, f64),
+    initial: &mut [f64],
+    wind: crate::environment::WindModel,
+    scenario: &Scenario,
+    streams: &RandomStreams,
+) -> (
+    Option<LateralLoop>,
+    Option<LateralStreams>,
+    crate::environment::WindModel,
+) {
+    use crate::aircraft::Plant;
+    let Some(built) = built else {
+        return (None, None, wind);
+    };
+    SixDofAircraft::write_state_at(
+        &built.trim.state(x_m, 0.0, h_m),
+        initial,
+        layout.aircraft.offset,
+    );
+    layout
+        .ship_lateral
+        .write_array(initial, &built.ship_state.to_array());
+    let lateral = built.lateral;
+    let trim = &built.trim;
+    let measured = super::LateralMeasurements {
+        bank_rad: trim.phi_rad,
+        sideslip_rad: trim.sideslip_rad,
+        aileron_rad: trim.aileron_rad,
+        rudder_rad: trim.rudder_rad,
+        ..super::LateralMeasurements::default()
+    };
+    let (roll, yaw) = lateral.law_inputs(trim.phi_rad, &measured, &super::HeldLateral::default());
+    lateral
+        .roll
+        .initial_state(&roll, layout.roll_law.of_mut(initial));
+    lateral
+        .yaw
+        .initial_state(&yaw, layout.yaw_law.of_mut(initial));
+    let deck_angle = scenario.environment.deck.ship_mean_heading_rad();
+    (
+        Some(lateral),
+        Some(built.streams),
+        wind.three_dimensional(deck_angle, streams),
+    )
+}

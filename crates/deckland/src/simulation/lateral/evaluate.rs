@@ -1,0 +1,128 @@
+//! The 3-D approach's blocks in an evaluation of the loop: `ship` (the 3-D pose),
+//! `wind` (its y component onto the bus), `lineup` and `lateral_laws`, and their state
+//! rates (docs/model.md §10.1–10.3).
+
+use super::pose::DeckView3d;
+use super::{HeldLateral, LateralLoop, LateralMeasurements};
+use crate::environment::{
+    DeckGeometry, EarthPoint, EarthVelocity, LateralShipMotionState, ShipMotion, ShipMotionState,
+};
+use crate::simulation::flight_computer::HeldCommands;
+use crate::simulation::layout::LoopLayout;
+use crate::simulation::Signals;
+
+impl LateralLoop {
+    /// `ship`: the 3-D pose onto the bus (the longitudinal blocks see its equivalent
+    /// longitudinal pose), with the ship's roll, yaw and sway.
+    #[inline]
+    pub(crate) fn ship_outputs(
+        &self,
+        ship: &ShipMotion,
+        deck: &DeckGeometry,
+        ship_state: &ShipMotionState,
+        layout: &LoopLayout,
+        x: &[f64],
+        bus: &mut Signals,
+    ) -> DeckView3d {
+        let lateral_state = LateralShipMotionState::from_array(&layout.ship_lateral.array(x));
+        let view = self.deck_view(ship, deck, ship_state, &lateral_state, bus.time_s);
+        bus.ship = view.longitudinal;
+        bus.ship_rate = view.longitudinal_rate;
+        bus.aim_point = view.aim;
+        let outputs = self.ship.outputs(&lateral_state);
+        let signals = &mut bus.lateral;
+        signals.aim_point_y_m = Some(view.aim.y_m);
+        signals.centreline_heading_rad = Some(view.centreline_heading_rad);
+        signals.ship_roll_rad = Some(outputs.roll_rad);
+        signals.ship_yaw_rad = Some(outputs.yaw_rad);
+        signals.ship_sway_m = Some(outputs.sway_m);
+        view
+    }
+
+    /// `lineup` and `lateral_laws`: the cross-track, the lineup guidance's bank command,
+    /// and the roll and yaw laws' surface commands (the frame's, with a flight computer).
+    #[allow(clippy::too_many_arguments)]
+    #[inline]
+    pub(crate) fn lineup_and_laws(
+        &self,
+        view: &DeckView3d,
+        deck: &DeckGeometry,
+        (hook_velocity, velocity): (EarthVelocity, EarthVelocity),
+        layout: &LoopLayout,
+        x: &[f64],
+        held: &HeldLateral,
+        commands: Option<HeldCommands>,
+        bus: &mut Signals,
+    ) {
+        let t = bus.time_s;
+        bus.lateral.wind_y_mps = Some(bus.wind.y_mps);
+        let hook = EarthPoint {
+            x_m: bus.hook_x_m,
+            y_m: bus.hook_y_m.unwrap_or(0.0),
+            h_m: bus.hook_h_m,
+        };
+        let (cross_track, cross_track_rate) = view.cross_track(deck, &hook, &hook_velocity);
+        // The reference line: the mean centreline (through the origin at t = 0, drifting
+        // right at V·sin δ), moved in close by the forecast deck motion. The error is the
+        // hook's; its rate the CG's, free of the hook's lever on the roll and yaw rates
+        // (which would close a fast loop through the bank command).
+        let weight = bus.compensation_weight;
+        let error = hook.y_m - self.mean_drift_rate_mps * t - weight * held.forecast_m;
+        let error_rate = velocity.y_mps - self.mean_drift_rate_mps;
+        let bank_command = self
+            .lineup
+            .bank_command_rad(error, error_rate, bus.time_to_go_s);
+        let signals = &mut bus.lateral;
+        signals.cross_track_m = Some(cross_track);
+        signals.cross_track_rate_mps = Some(cross_track_rate);
+        signals.lineup_error_m = Some(error);
+        signals.lateral_forecast_m = Some(held.forecast_m);
+        signals.bank_command_rad = Some(bank_command);
+        let (aileron, rudder) = match commands.and_then(|c| c.lateral) {
+            Some(held_commands) => held_commands,
+            None => {
+                let (roll, yaw) = self.law_inputs(bank_command, &measurements(bus), held);
+                (
+                    self.roll.surface_command_rad(layout.roll_law.of(x), &roll),
+                    self.yaw.surface_command_rad(layout.yaw_law.of(x), &yaw),
+                )
+            }
+        };
+        bus.aileron_command_rad = Some(aileron);
+        bus.rudder_command_rad = Some(rudder);
+    }
+
+    /// The state rates of the roll, yaw and sway filters and of the two laws.
+    #[inline]
+    pub(crate) fn derivative(
+        &self,
+        layout: &LoopLayout,
+        x: &[f64],
+        held: &HeldLateral,
+        bus: &Signals,
+        rate: &mut [f64],
+    ) {
+        let lateral_state = LateralShipMotionState::from_array(&layout.ship_lateral.array(x));
+        let ship_rate = self.ship.derivative(&lateral_state, held.ship_noise);
+        layout.ship_lateral.write_array(rate, &ship_rate.to_array());
+        let bank_command = bus.lateral.bank_command_rad.unwrap_or(self.trim_bank_rad);
+        let (roll, yaw) = self.law_inputs(bank_command, &measurements(bus), held);
+        self.roll
+            .derivative(layout.roll_law.of(x), &roll, layout.roll_law.of_mut(rate));
+        self.yaw
+            .derivative(layout.yaw_law.of(x), &yaw, layout.yaw_law.of_mut(rate));
+    }
+}
+
+/// The lateral signals the laws read from the bus.
+#[inline]
+pub(crate) fn measurements(bus: &Signals) -> LateralMeasurements {
+    LateralMeasurements {
+        bank_rad: bus.phi_rad.unwrap_or(0.0),
+        roll_rate_radps: bus.p_radps.unwrap_or(0.0),
+        sideslip_rad: bus.beta_rad.unwrap_or(0.0),
+        yaw_rate_radps: bus.r_radps.unwrap_or(0.0),
+        aileron_rad: bus.aileron_rad.unwrap_or(0.0),
+        rudder_rad: bus.rudder_rad.unwrap_or(0.0),
+    }
+}

@@ -1,0 +1,95 @@
+//! The 3-D approach's discrete parts, once per step (docs/model.md §10.3): the roll,
+//! yaw and sway filters' noise, the ship's lateral motion sensing and the forecast of
+//! the landing point's lateral motion, the bank and sideslip measurements, and the
+//! lateral wave-off criteria.
+
+use super::forecast::lateral_landing_point_forecast_m;
+use super::HeldLateral;
+use crate::aircraft::six_dof::SixDofAircraft;
+use crate::aircraft::Plant;
+use crate::control::WaveOffDecision;
+use crate::environment::{LateralShipMotionState, Wind};
+use crate::simulation::blocks::plant::BuiltPlant;
+use crate::simulation::closed_loop::{ClosedLoop, StepStreams};
+use crate::simulation::outer_loops::OuterLoops;
+
+/// What the 3-D approach's step start gives the loop.
+pub(crate) struct LateralStep {
+    /// What is held over the step (its `read` still to be set for a flight computer).
+    pub held: HeldLateral,
+    /// Bank and sideslip as the sensors give them now (rad): a frame's reading.
+    pub fresh_read: (f64, f64),
+    /// A wave-off on the lateral criteria, decided now.
+    pub decision: Option<WaveOffDecision>,
+}
+
+impl ClosedLoop {
+    /// The 3-D approach's part of [`ClosedLoop::hold`] at `t` (state `x`, the wind held
+    /// over the step `wind`); `None` outside it. `decided` says whether a wave-off is
+    /// flown or decided already (then no lateral decision is taken).
+    pub(crate) fn hold_lateral(
+        &mut self,
+        t: f64,
+        x: &[f64],
+        streams: &mut StepStreams,
+        dt: f64,
+        decided: bool,
+        wind: &Wind,
+    ) -> Option<LateralStep> {
+        let (Some(lateral), Some(lateral_streams), BuiltPlant::SixDof(aircraft)) =
+            (&mut self.lateral, &mut streams.lateral, &self.plant)
+        else {
+            return None;
+        };
+        let state = SixDofAircraft::state_at(x, self.layout.aircraft.offset);
+        let (_, kinematics) = aircraft.kinematics(&self.hook, state);
+        let ship_state = LateralShipMotionState::from_array(&self.layout.ship_lateral.array(x));
+        lateral.sensor.sample(t, &lateral.ship.outputs(&ship_state));
+        while let Some(measurement) = lateral.sensor.receive(t) {
+            lateral.last_measurement = Some(measurement);
+        }
+        // Time to go from the range to the mean aim point at the closing speed.
+        let mean_pose = self.ship.pose(
+            &crate::environment::ShipMotionState::from_array(&self.layout.ship.array(x)),
+            self.ship_initial_x_m,
+            t,
+        );
+        let range_m = mean_pose.pitch_centre_x_m
+            - self.deck.landing_point_aft_of_pitch_centre_m
+            - kinematics.hook.x_m;
+        let time_to_go_s = (range_m / lateral.closure_mps).clamp(0.0, 60.0);
+        let forecast_m = lateral.last_measurement.map_or(0.0, |m| {
+            lateral_landing_point_forecast_m(&self.deck, &m, t, time_to_go_s)
+        });
+        let bank_noise_rad = lateral.draw_bank_noise(t, &mut lateral_streams.bank);
+        let sideslip_noise_rad = lateral.draw_sideslip_noise(&mut lateral_streams.sideslip);
+        let air = aircraft.air_velocity(
+            [state.u_mps, state.v_mps, state.w_mps],
+            [state.phi_rad, state.theta_rad, state.psi_rad],
+            wind,
+        );
+        let beta = aircraft.air_data(air).beta_rad;
+        let decision = if decided || !matches!(self.outer, OuterLoops::Approach { .. }) {
+            None
+        } else {
+            // In the decision window the compensation is fully in (its window is
+            // longer): the error to the forecast centreline, and its rate.
+            let error = kinematics.hook.y_m - lateral.mean_drift_rate_mps * t - forecast_m;
+            let rate = kinematics.velocity.y_mps - lateral.mean_drift_rate_mps;
+            lateral
+                .wave_off
+                .decide(&self.wave_off, time_to_go_s, error, rate, f64::NAN)
+        };
+        Some(LateralStep {
+            held: HeldLateral {
+                ship_noise: lateral.ship.draw_noise(&mut lateral_streams.ship, dt),
+                bank_noise_rad,
+                sideslip_noise_rad,
+                forecast_m,
+                read: None,
+            },
+            fresh_read: (state.phi_rad + bank_noise_rad, beta + sideslip_noise_rad),
+            decision,
+        })
+    }
+}
