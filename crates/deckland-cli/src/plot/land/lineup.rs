@@ -3,12 +3,12 @@
 //! Both are drawn only for a plant with lateral states (the 6-DOF aircraft); a 3-DOF
 //! approach has no lineup to show.
 
-use deckland::environment::{DeckGeometry, EarthPoint};
 use deckland::experiments::ApproachRun;
 use deckland::scenario::Scenario;
-use deckland::simulation::Signals;
+use deckland::simulation::lateral::touchdown::MAX_OFF_CENTRE_M;
+use deckland::simulation::{SignalId, Signals};
 
-use super::TIME;
+use super::{series, Shown, TIME};
 use crate::plot::{Figure, MarkerShape, Panel, DECK_COLOUR};
 
 /// Length of the approach the plan view shows (m).
@@ -18,25 +18,38 @@ const CLOSE_UP_AFT_OF_RAMP_M: f64 = 190.0;
 /// Dash pattern of the centreline abeam the hook (px).
 const CENTRELINE_DASH: (u32, u32) = (6, 3);
 
-/// The hook's earth position at a sample, if the plant has lateral states.
-fn hook(s: &Signals) -> Option<EarthPoint> {
-    Some(EarthPoint {
-        x_m: s.hook_x_m,
-        y_m: s.hook_y_m?,
-        h_m: s.hook_h_m,
-    })
+/// The landing area's centreline at one instant, in the horizontal plane: the aim point
+/// (earth x, y; m) and the centreline's heading from the final bearing (rad, right).
+#[derive(Debug, Clone, Copy)]
+struct Centreline {
+    aim: (f64, f64),
+    heading_rad: f64,
 }
 
-/// The y of the landing area's centreline, at the sample's instant, abeam earth x `x_m`
-/// (the centreline extended aft of the ramp, where the aircraft lines up on it).
-fn centreline_y_at(deck: &DeckGeometry, s: &Signals, x_m: f64) -> f64 {
-    let line = deck.landing_centreline(&s.ship);
-    let slope = if line.direction.x.abs() > f64::EPSILON {
-        line.direction.y / line.direction.x
-    } else {
-        0.0
-    };
-    line.point.y_m + (x_m - line.point.x_m) * slope
+impl Centreline {
+    /// The centreline of a 3-D approach's sample.
+    fn of(s: &Signals) -> Option<Self> {
+        Some(Self {
+            aim: (s.aim_point.x_m, s.get(SignalId::AimY)?),
+            heading_rad: s.get(SignalId::CentrelineHeading)?,
+        })
+    }
+
+    /// The point `s_m` metres forward of the aim point along it.
+    fn point(&self, s_m: f64) -> (f64, f64) {
+        let (sin, cos) = self.heading_rad.sin_cos();
+        (self.aim.0 + s_m * cos, self.aim.1 + s_m * sin)
+    }
+
+    /// Its y abeam earth x `x_m` (extended aft of the ramp, where the aircraft lines up).
+    fn y_at(&self, x_m: f64) -> f64 {
+        self.aim.1 + (x_m - self.aim.0) * self.heading_rad.tan()
+    }
+}
+
+/// The hook's horizontal earth position (m), if the plant has lateral states.
+fn hook(s: &Signals) -> Option<(f64, f64)> {
+    Some((s.hook_x_m, s.hook_y_m?))
 }
 
 /// The sample nearest `time_s`.
@@ -48,18 +61,20 @@ fn sample_at(samples: &[Signals], time_s: f64) -> Option<&Signals> {
     })
 }
 
-/// The lineup figures of `run`, each with its file stem; none for a longitudinal plant.
+/// The lineup figures of `run`, each with its file stem; none unless it flew the 3-D
+/// approach (a 3-DOF run, or a 6-DOF run in the longitudinal environment, has no
+/// centreline to line up on).
 pub(super) fn figures(
     run: &ApproachRun,
     scenario: &Scenario,
     title: &str,
 ) -> Vec<(&'static str, Figure)> {
-    if run.samples.iter().all(|s| s.hook_y_m.is_none()) {
+    if run.samples.iter().all(|s| Centreline::of(s).is_none()) {
         return Vec::new();
     }
     vec![
         ("plan_view", plan_view(run, scenario, title)),
-        ("cross_track", cross_track(run, scenario, title)),
+        ("cross_track", cross_track(run, title)),
     ]
 }
 
@@ -75,20 +90,19 @@ fn plan_view(run: &ApproachRun, scenario: &Scenario, title: &str) -> Figure {
         .summary
         .touchdown
         .map_or(run.summary.end_time_s, |t| t.time_s);
-    let Some(moment) = sample_at(samples, moment_s) else {
+    let Some((moment, line)) =
+        sample_at(samples, moment_s).and_then(|s| Some((s, Centreline::of(s)?)))
+    else {
         return Figure::new().title(format!("Plan view — {title}"));
     };
-    let origin = deck.aim_point_3d(&moment.ship);
-    let relative = |p: EarthPoint| (p.x_m - origin.x_m, p.y_m - origin.y_m);
+    let origin = line.aim;
+    let relative = |(x, y): (f64, f64)| (x - origin.0, y - origin.1);
     let track: Vec<(f64, f64)> = samples.iter().filter_map(hook).map(relative).collect();
     let centreline: Vec<(f64, f64)> = samples
         .iter()
         .filter_map(|s| {
-            let h = hook(s)?;
-            Some((
-                h.x_m - origin.x_m,
-                centreline_y_at(deck, s, h.x_m) - origin.y_m,
-            ))
+            let (x, _) = hook(s)?;
+            Some(relative((x, Centreline::of(s)?.y_at(x))))
         })
         .collect();
     // The landing area at the moment: its centreline from the ramp to 20 m past the
@@ -97,12 +111,12 @@ fn plan_view(run: &ApproachRun, scenario: &Scenario, title: &str) -> Figure {
     let forward_s = deck.wire_positions_m[3] + 20.0;
     let landing_area: Vec<(f64, f64)> = [ramp_s, forward_s]
         .iter()
-        .map(|&s_m| relative(deck.point_on_landing_centreline(&moment.ship, s_m)))
+        .map(|&s_m| relative(line.point(s_m)))
         .collect();
     let wires: Vec<(f64, f64)> = deck
-        .wires_3d(&moment.ship)
-        .into_iter()
-        .map(relative)
+        .wire_positions_m
+        .iter()
+        .map(|&s_m| relative(line.point(s_m)))
         .collect();
     let touchdown = run
         .summary
@@ -157,34 +171,29 @@ fn plan_view(run: &ApproachRun, scenario: &Scenario, title: &str) -> Figure {
         .panel_height(400)
 }
 
-/// The hook's lateral offset from the landing area's moving centreline over time, and
-/// the bank and heading that correct it.
-fn cross_track(run: &ApproachRun, scenario: &Scenario, title: &str) -> Figure {
-    let deck = &scenario.environment.deck;
+/// The hook's lateral offset from the landing area's moving centreline over time, with
+/// the off-centre limit, and the bank (commanded and flown), heading and sideslip that
+/// correct it.
+fn cross_track(run: &ApproachRun, title: &str) -> Figure {
     let samples = &run.samples;
-    let offset: Vec<(f64, f64)> = samples
-        .iter()
-        .filter_map(|s| {
-            let h = hook(s)?;
-            Some((
-                s.time_s,
-                deck.offset_right_of_landing_centreline(&s.ship, &h),
-            ))
-        })
-        .collect();
-    let degrees = |value: fn(&Signals) -> Option<f64>| -> Vec<(f64, f64)> {
-        samples
-            .iter()
-            .filter_map(|s| value(s).map(|v| (s.time_s, v.to_degrees())))
-            .collect()
-    };
     let mut lineup = Panel::new(
         "Hook's offset from the landing area's centreline, as it moved",
         TIME,
         "offset (m, positive right)",
     )
-    .series("hook offset", offset)
-    .reference_line("on the centreline", 0.0);
+    .series(
+        "hook offset",
+        series(samples, SignalId::CrossTrack, Shown::AsRegistered),
+    )
+    .reference_line("on the centreline", 0.0)
+    .reference_line(
+        format!("off-centre limit ±{MAX_OFF_CENTRE_M} m"),
+        MAX_OFF_CENTRE_M,
+    )
+    .reference_line(
+        format!("off-centre limit ±{MAX_OFF_CENTRE_M} m"),
+        -MAX_OFF_CENTRE_M,
+    );
     if let Some(t) = run.summary.touchdown {
         lineup = lineup.vertical_line("touchdown", t.time_s);
     }
@@ -192,15 +201,22 @@ fn cross_track(run: &ApproachRun, scenario: &Scenario, title: &str) -> Figure {
         .title(format!("Lineup — {title}"))
         .panel(lineup)
         .panel(
-            Panel::new("Bank and heading", TIME, "angle (deg)")
-                .series("bank φ (right wing down +)", degrees(|s| s.phi_rad))
+            Panel::new("Bank, heading and sideslip", TIME, "angle (deg)")
+                .dashed_series(
+                    "bank command",
+                    series(samples, SignalId::BankCommand, Shown::Degrees),
+                )
+                .series(
+                    "bank φ (right wing down +)",
+                    series(samples, SignalId::Bank, Shown::Degrees),
+                )
                 .series(
                     "heading ψ from the final bearing (nose right +)",
-                    degrees(|s| s.psi_rad),
+                    series(samples, SignalId::Heading, Shown::Degrees),
                 )
                 .series(
                     "sideslip β (wind from the right +)",
-                    degrees(|s| s.beta_rad),
+                    series(samples, SignalId::Sideslip, Shown::Degrees),
                 ),
         )
 }
