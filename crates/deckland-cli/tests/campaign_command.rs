@@ -71,6 +71,8 @@ fn one_and_two_threads_write_byte_identical_runs_csv() {
                 );
             }
         }
+        // A 3-DOF campaign has no lineup to plot.
+        assert!(!out.join("touchdown_plan.svg").exists());
     }
     assert_eq!(csv[0], csv[1], "runs.csv differs between 1 and 2 threads");
     let text = String::from_utf8(csv[0].clone()).unwrap();
@@ -364,5 +366,37 @@ fn run_with_a_campaign_seed_and_disperse_reproduces_the_campaign_row() {
     assert_eq!(v["outcome"], row[column("outcome")]);
     let expected: f64 = row[column("glide_path_error_rms_m")].parse().unwrap();
     assert_eq!(v["glide_path_error_rms_m"].as_f64(), Some(expected));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_three_d_campaign_adds_the_lateral_columns_and_the_touchdown_plan() {
+    let dir = scratch("campaign-3d");
+    let out = dir.join("crosswind");
+    let output = deckland([
+        "campaign",
+        &scenario("crosswind.toml"),
+        "--runs",
+        "4",
+        "--seed",
+        "5",
+        "--threads",
+        "2",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_success(&output);
+    let text = std::fs::read_to_string(out.join("runs.csv")).unwrap();
+    let header = text.lines().next().unwrap();
+    for column in [
+        "touchdown_lateral_offset_m",
+        "ramp_lineup_error_deg",
+        "off_centre",
+    ] {
+        assert!(header.split(',').any(|c| c == column), "column {column}");
+    }
+    let svg = std::fs::read_to_string(out.join("touchdown_plan.svg")).unwrap();
+    assert!(svg.contains("off-centre limit"), "touchdown_plan.svg");
+    assert!(out.join("touchdown_plan.png").exists());
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -1,5 +1,5 @@
 //! The figures of a campaign: `touchdown_dispersion`, `touchdown_histograms` and
-//! `outcomes`.
+//! `outcomes`; a 3-D campaign also `touchdown_plan`, its touchdowns on the deck from above.
 
 use crate::commands::campaign::folder::{proportions, CampaignFolder};
 use crate::plot::{BarGroup, Figure, Panel};
@@ -107,7 +107,7 @@ pub(crate) fn figures(folder: &CampaignFolder) -> Vec<(&'static str, Figure)> {
             labels: classes.iter().map(|(_, p)| p.count.to_string()).collect(),
         });
     }
-    vec![
+    let mut figures = vec![
         (
             "touchdown_dispersion",
             Figure::new()
@@ -127,5 +127,52 @@ pub(crate) fn figures(folder: &CampaignFolder) -> Vec<(&'static str, Figure)> {
                 .title(format!("Outcomes — {title}"))
                 .panel(outcomes),
         ),
-    ]
+    ];
+    if let Some(plan) = touchdown_plan(folder, &labels) {
+        figures.push(("touchdown_plan", plan));
+    }
+    figures
+}
+
+/// A 3-D campaign's touchdowns on the deck seen from above: along the landing area's
+/// centreline from the aim point against the hook's offset from it, with the wires, the
+/// centreline and the off-centre limit; `None` for a 3-DOF campaign.
+fn touchdown_plan(folder: &CampaignFolder, labels: &[&str]) -> Option<Figure> {
+    let lateral = folder.lateral_rows.as_ref()?;
+    let statistics = folder.report.lateral.as_ref()?;
+    let deck = &folder.scenario.environment.deck;
+    let limit_m = statistics.max_off_centre_m;
+    let mut panel = Panel::new(
+        "Touchdown points on the landing area, from above",
+        "touchdown along the centreline from the aim point (m, positive forward)",
+        "offset from the centreline (m, positive right)",
+    );
+    let (mut low, mut high) = (deck.wire_positions_m[0], deck.wire_positions_m[3]);
+    for label in labels {
+        let points: Vec<(f64, f64)> = folder
+            .rows
+            .iter()
+            .zip(lateral)
+            .filter(|(row, _)| row.controller == *label)
+            .filter_map(|(row, values)| row.touchdown_distance_m.zip(values.0))
+            .collect();
+        for (x, _) in &points {
+            (low, high) = (low.min(*x), high.max(*x));
+        }
+        panel = panel.scatter(format!("{label} ({} touchdowns)", points.len()), points);
+    }
+    let margin = 0.05 * (high - low).max(1.0);
+    panel = panel
+        .x_limits((low - margin)..(high + margin))
+        .reference_line("centreline", 0.0)
+        .reference_line(format!("off-centre limit ±{limit_m} m"), limit_m)
+        .reference_line(format!("off-centre limit ±{limit_m} m"), -limit_m);
+    for (index, wire) in deck.wire_positions_m.iter().enumerate() {
+        panel = panel.vertical_line(format!("wire {}", index + 1), *wire);
+    }
+    Some(
+        Figure::new()
+            .title(format!("Touchdown plan — {}", folder.title))
+            .panel(panel),
+    )
 }
