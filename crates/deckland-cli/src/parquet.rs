@@ -10,14 +10,17 @@
 //! - every other column: an optional double (missing where the CSV field is empty; `wire`
 //!   too, as pandas reads it from the CSV).
 //!
+//! A 3-D campaign adds the lateral columns of its `runs.csv` after these
+//! ([`LATERAL_RUN_COLUMNS`]): optional doubles, and `off_centre` an optional boolean.
+//!
 //! One row group, Snappy compression (pandas' default). A value that is not finite is
 //! refused, naming its run and column: nothing non-finite reaches a file.
 
 use anyhow::{bail, Context, Result};
-use deckland::monte_carlo::RunRow;
+use deckland::monte_carlo::{LateralRunValues, RunRow, LATERAL_RUN_COLUMNS};
 use deckland::recording::{Cell, Columns};
 use parquet::basic::Compression;
-use parquet::data_type::{ByteArray, ByteArrayType, DoubleType, Int64Type};
+use parquet::data_type::{BoolType, ByteArray, ByteArrayType, DoubleType, Int64Type};
 use parquet::file::properties::WriterProperties;
 use parquet::file::writer::SerializedFileWriter;
 use parquet::schema::parser::parse_message_type;
@@ -33,15 +36,18 @@ enum Kind {
     Real,
     /// Optional UTF-8 text.
     Text,
+    /// An optional boolean.
+    Boolean,
 }
 
 /// The columns' kinds by name; a column not listed here is [`Kind::Real`].
-const COLUMN_KINDS: [(&str, Kind); 5] = [
+const COLUMN_KINDS: [(&str, Kind); 6] = [
     ("run_index", Kind::Integer),
     ("seed", Kind::Integer),
     ("controller", Kind::Text),
     ("outcome", Kind::Text),
     ("reason", Kind::Text),
+    ("off_centre", Kind::Boolean),
 ];
 
 fn kind_of(name: &str) -> Kind {
@@ -59,14 +65,20 @@ fn schema(names: &[&str]) -> String {
             Kind::Integer => format!("  REQUIRED INT64 {name};\n"),
             Kind::Real => format!("  OPTIONAL DOUBLE {name};\n"),
             Kind::Text => format!("  OPTIONAL BYTE_ARRAY {name} (UTF8);\n"),
+            Kind::Boolean => format!("  OPTIONAL BOOLEAN {name};\n"),
         });
     }
     message.push('}');
     message
 }
 
-/// Writes `rows` to a Parquet file at `path` (the caller makes it atomic).
-pub fn write_runs(path: &Path, rows: &[RunRow]) -> Result<()> {
+/// Writes `rows` to a Parquet file at `path` (the caller makes it atomic), with a 3-D
+/// campaign's `lateral` values of each row after its columns.
+pub fn write_runs(
+    path: &Path,
+    rows: &[RunRow],
+    lateral: Option<&[LateralRunValues]>,
+) -> Result<()> {
     let mut table = Columns::with_capacity(rows.len());
     for row in rows {
         table.push(row).map_err(|e| anyhow::anyhow!("{e}"))?;
@@ -75,9 +87,12 @@ pub fn write_runs(path: &Path, rows: &[RunRow]) -> Result<()> {
         // No row names the columns (a campaign stopped before its first run finished).
         bail!("no finished run to write to runs.parquet");
     }
-    let schema = Arc::new(
-        parse_message_type(&schema(table.names())).context("cannot make the Parquet schema")?,
-    );
+    let mut names: Vec<&str> = table.names().to_vec();
+    if lateral.is_some() {
+        names.extend(LATERAL_RUN_COLUMNS);
+    }
+    let schema =
+        Arc::new(parse_message_type(&schema(&names)).context("cannot make the Parquet schema")?);
     let properties = Arc::new(
         WriterProperties::builder()
             .set_compression(Compression::SNAPPY)
@@ -130,6 +145,7 @@ pub fn write_runs(path: &Path, rows: &[RunRow]) -> Result<()> {
                     .typed::<DoubleType>()
                     .write_batch(&values, Some(&present), None)?;
             }
+            Kind::Boolean => bail!("`{name}` is not a boolean column of runs.csv"),
             Kind::Text => {
                 let mut values = Vec::with_capacity(cells.len());
                 for (row, cell) in cells.iter().enumerate() {
@@ -148,6 +164,34 @@ pub fn write_runs(path: &Path, rows: &[RunRow]) -> Result<()> {
         }
         column.close()?;
     }
+    if let Some(lateral) = lateral {
+        let reals: [fn(&LateralRunValues) -> Option<f64>; 5] =
+            [|v| v.0, |v| v.1, |v| v.2, |v| v.3, |v| v.4];
+        for (name, value) in LATERAL_RUN_COLUMNS.iter().zip(reals) {
+            let Some(mut column) = group.next_column()? else {
+                bail!("the Parquet schema has no column {name}");
+            };
+            let cells: Vec<Option<f64>> = lateral.iter().map(value).collect();
+            if let Some(row) = cells.iter().position(|c| c.is_some_and(|v| !v.is_finite())) {
+                bail!("run {}: `{name}` is not a finite number", run_indices[row]);
+            }
+            let present: Vec<i16> = cells.iter().map(|c| i16::from(c.is_some())).collect();
+            let values: Vec<f64> = cells.into_iter().flatten().collect();
+            column
+                .typed::<DoubleType>()
+                .write_batch(&values, Some(&present), None)?;
+            column.close()?;
+        }
+        let Some(mut column) = group.next_column()? else {
+            bail!("the Parquet schema has no column off_centre");
+        };
+        let present: Vec<i16> = lateral.iter().map(|v| i16::from(v.5.is_some())).collect();
+        let values: Vec<bool> = lateral.iter().filter_map(|v| v.5).collect();
+        column
+            .typed::<BoolType>()
+            .write_batch(&values, Some(&present), None)?;
+        column.close()?;
+    }
     group.close()?;
     writer.close()?;
     Ok(())
@@ -164,5 +208,9 @@ mod tests {
         assert!(message.contains("REQUIRED INT64 run_index"));
         assert!(message.contains("OPTIONAL DOUBLE wire"));
         assert!(message.contains("OPTIONAL BYTE_ARRAY reason (UTF8)"));
+        let lateral = schema(&["touchdown_lateral_offset_m", "off_centre"]);
+        assert!(parse_message_type(&lateral).is_ok(), "{lateral}");
+        assert!(lateral.contains("OPTIONAL DOUBLE touchdown_lateral_offset_m"));
+        assert!(lateral.contains("OPTIONAL BOOLEAN off_centre"));
     }
 }

@@ -297,15 +297,12 @@ fn malformed_shards_are_refused_by_name() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-#[test]
-fn runs_parquet_holds_the_rows_of_runs_csv() {
+/// `runs.parquet` in `out` holds the rows of its `runs.csv`: the same columns in order,
+/// every value the CSV's (a double bit for bit).
+fn assert_parquet_holds_runs_csv(out: &Path) {
     use parquet::file::reader::{FileReader, SerializedFileReader};
     use parquet::record::Field;
 
-    let dir = scratch("shards-parquet");
-    let file = short_dispersed_scenario(&dir);
-    let out = dir.join("out");
-    assert_success(&campaign(&file, "9", "3", None, &out));
     let mut csv = csv::Reader::from_path(out.join("runs.csv")).unwrap();
     let header: Vec<String> = csv.headers().unwrap().iter().map(str::to_owned).collect();
     let rows: Vec<Vec<String>> = csv
@@ -344,9 +341,33 @@ fn runs_parquet_holds_the_rows_of_runs_csv() {
                     "{name}"
                 ),
                 Field::Str(v) => assert_eq!(v, text, "{name}"),
+                Field::Bool(v) => assert_eq!(v.to_string(), *text, "{name}"),
                 other => panic!("{name}: unexpected {other:?}"),
             }
         }
     }
+}
+
+#[test]
+fn runs_parquet_holds_the_rows_of_runs_csv() {
+    let dir = scratch("shards-parquet");
+    let file = short_dispersed_scenario(&dir);
+    let out = dir.join("out");
+    assert_success(&campaign(&file, "9", "3", None, &out));
+    assert_parquet_holds_runs_csv(&out);
+    // A 3-D campaign's lateral columns too (`off_centre` a boolean).
+    let crosswind =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../scenarios/crosswind.toml");
+    let out_3d = dir.join("out-3d");
+    assert_success(&campaign(
+        crosswind.to_str().unwrap(),
+        "2",
+        "3",
+        None,
+        &out_3d,
+    ));
+    let header = std::fs::read_to_string(out_3d.join("runs.csv")).unwrap();
+    assert!(header.lines().next().unwrap().ends_with(",off_centre"));
+    assert_parquet_holds_runs_csv(&out_3d);
     let _ = std::fs::remove_dir_all(&dir);
 }

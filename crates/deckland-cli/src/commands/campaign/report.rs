@@ -35,7 +35,7 @@ pub fn write_folder(folder: &CampaignFolder, output: &OutputDir) -> Result<()> {
     })?;
     if !folder.rows.is_empty() {
         output.write_with("runs.parquet", |path| {
-            crate::parquet::write_runs(path, folder.rows)
+            crate::parquet::write_runs(path, folder.rows, folder.lateral_rows.as_deref())
         })?;
     }
     output.write_bytes(
