@@ -398,5 +398,7 @@ fn a_three_d_campaign_adds_the_lateral_columns_and_the_touchdown_plan() {
     let svg = std::fs::read_to_string(out.join("touchdown_plan.svg")).unwrap();
     assert!(svg.contains("off-centre limit"), "touchdown_plan.svg");
     assert!(out.join("touchdown_plan.png").exists());
+    let html = std::fs::read_to_string(out.join("report.html")).unwrap();
+    assert!(html.contains("Lineup (3-D approach)"), "report.html");
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -168,6 +168,37 @@ pub(crate) fn summary_rows(report: &LandingReport) -> Vec<Vec<String>> {
                 "m/s",
             ),
         ]);
+        if let Some(l) = &t.lateral {
+            rows.extend([
+                row(
+                    "off the landing centreline at touchdown (positive right)",
+                    html::signed_number(l.offset_m, 2),
+                    "m",
+                ),
+                row("off centre", l.off_centre.to_string(), ""),
+                row(
+                    "drift across the centreline, relative to the deck",
+                    html::signed_number(l.drift_rate_mps, 2),
+                    "m/s",
+                ),
+                row(
+                    "bank at touchdown (right wing down positive)",
+                    html::signed_number(l.bank_deg, 2),
+                    "deg",
+                ),
+                row(
+                    "heading to the centreline at touchdown",
+                    html::signed_number(l.heading_to_centreline_deg, 2),
+                    "deg",
+                ),
+                row(
+                    "lineup error at the ramp, seen from the aim point",
+                    l.ramp_lineup_error_deg
+                        .map_or_else(|| "—".to_string(), |e| html::signed_number(e, 2)),
+                    "deg",
+                ),
+            ]);
+        }
     }
     rows.extend([
         row(
@@ -295,6 +326,19 @@ fn print_summary(report: &LandingReport, output: &OutputDir) -> Result<()> {
             t.pitch_deg,
             t.airspeed_mps
         )?;
+        if let Some(l) = &t.lateral {
+            outln!(
+                "  lineup at touchdown   {:+.2} m off the centreline{}, drift {:+.2} m/s, bank {:+.1}°, heading {:+.1}° to it",
+                l.offset_m,
+                if l.off_centre { " (off centre)" } else { "" },
+                l.drift_rate_mps,
+                l.bank_deg,
+                l.heading_to_centreline_deg
+            )?;
+            if let Some(e) = l.ramp_lineup_error_deg {
+                outln!("  lineup at the ramp    {e:+.2}° seen from the aim point")?;
+            }
+        }
     }
     if let Some(c) = s.ramp_clearance_m {
         outln!("  hook over the ramp    {c:.2} m")?;

@@ -293,6 +293,9 @@ fn html_report(
             &["controller", "wire 1", "wire 2", "wire 3", "wire 4"],
             wires,
         );
+    if let Some(lateral) = &report.lateral {
+        lineup_section(page.section("Lineup (3-D approach)"), lateral);
+    }
     page.section("Actuators")
         .paragraph(format!(
             "Over the runs flown, per run; percentiles by {}.",
@@ -609,6 +612,78 @@ fn write_lateral_runs_csv(
     }
     std::fs::write(path, text)?;
     Ok(())
+}
+
+/// The 3-D campaign's lateral statistics in `report.html`: the limits' shares with their
+/// 95 % Wilson intervals, and the spread of each quantity.
+fn lineup_section(section: &mut html::Section, lateral: &deckland::monte_carlo::LateralStatistics) {
+    let share = |name: String, p: &Proportion| {
+        vec![
+            name,
+            p.count.to_string(),
+            format!("{} %", html::number(100.0 * p.rate, 1)),
+            format!(
+                "[{}, {}] %",
+                html::number(100.0 * p.ci95_low, 1),
+                html::number(100.0 * p.ci95_high, 1)
+            ),
+        ]
+    };
+    let spread = |name: &str, d: &Option<Distribution>| -> Vec<String> {
+        let mut row = vec![name.to_string()];
+        match d {
+            Some(d) => {
+                row.push(html::signed_number(d.mean, 2));
+                row.push(html::number(d.standard_deviation, 2));
+                row.extend([d.min, d.p5, d.p50, d.p95, d.max].map(|v| html::signed_number(v, 2)));
+            }
+            None => row.extend(std::iter::repeat_n("—".to_string(), 7)),
+        }
+        row
+    };
+    section
+        .paragraph(format!(
+            "Over the {} touchdowns of every controller; the limits are those of \
+             docs/model.md §10.8.",
+            lateral.touchdowns
+        ))
+        .table(
+            &["criterion", "runs", "share", "95 % Wilson interval"],
+            vec![
+                share(
+                    format!("off centre (beyond {} m)", lateral.max_off_centre_m),
+                    &lateral.off_centre,
+                ),
+                share(
+                    "lineup at the ramp within ±0.5°".to_string(),
+                    &lateral.ramp_lineup_within_half_degree,
+                ),
+                share(
+                    format!("drift beyond {} m/s", lateral.max_drift_rate_mps),
+                    &lateral.drift_beyond_limit,
+                ),
+                share(
+                    format!("bank beyond {}°", lateral.max_bank_deg),
+                    &lateral.bank_beyond_limit,
+                ),
+            ],
+        )
+        .table(
+            &["quantity", "mean", "sd", "min", "p5", "p50", "p95", "max"],
+            vec![
+                spread(
+                    "offset from the centreline (m, right +)",
+                    &lateral.lateral_offset_m,
+                ),
+                spread("drift across it (m/s, right +)", &lateral.drift_rate_mps),
+                spread("bank (deg, right wing down +)", &lateral.bank_deg),
+                spread(
+                    "heading to the centreline (deg)",
+                    &lateral.heading_to_centreline_deg,
+                ),
+                spread("lineup at the ramp (deg)", &lateral.ramp_lineup_error_deg),
+            ],
+        );
 }
 
 /// The 3-D campaign's lateral statistics, every controller's touchdowns together.
