@@ -199,12 +199,19 @@ def test_the_vectorised_environment_is_the_single_one_bit_for_bit_across_autores
     actions[..., 2] = -1.0  # no wave-off
     observation, _ = envs.reset(seed=40)
     vector = [observation]
-    rewards, ends = [], []
+    rewards, ends, outcomes = [], [], []
     for t in range(steps):
-        observation, reward, terminated, truncated, _ = envs.step(actions[t])
+        observation, reward, terminated, truncated, info = envs.step(actions[t])
         vector.append(observation)
         rewards.append(reward)
         ends.append(terminated | truncated)
+        # Gymnasium's dict of arrays: the outcome (with its mask) only at steps where
+        # episodes end, None for the others.
+        assert ("outcome" in info) == bool(ends[-1].any())
+        outcomes.append(info["outcome"] if "outcome" in info else [None] * n)
+        if "outcome" in info:
+            assert np.array_equal(info["_outcome"], ends[-1])
+            assert all((name is None) != ended for name, ended in zip(info["outcome"], ends[-1]))
     vector, rewards, ends = np.array(vector), np.array(rewards), np.array(ends)
     assert ends.sum() >= 2 * n  # every environment reset at least once on its own
     for i in range(n):
@@ -217,8 +224,9 @@ def test_the_vectorised_environment_is_the_single_one_bit_for_bit_across_autores
                 observation, _ = env.reset()
                 reward, ended = 0.0, False
             else:
-                observation, reward, terminated, truncated, _ = env.step(actions[t, i])
+                observation, reward, terminated, truncated, info = env.step(actions[t, i])
                 ended = terminated or truncated
+                assert outcomes[t][i] == info.get("outcome"), (i, t)
             assert np.array_equal(observation, vector[t + 1, i]), (i, t)
             assert reward == rewards[t, i] and ended == ends[t, i], (i, t)
 
