@@ -3,7 +3,7 @@
 use deckland::control::DeckReference;
 use deckland::simulation::Signals;
 
-use super::config::EnvConfig;
+use super::config::{EnvConfig, Normalisation};
 use crate::stepping::Look;
 
 /// One entry of the observation: its name, unit, where it comes from, and its scale
@@ -126,17 +126,30 @@ impl EnvConfig {
         }
     }
 
-    /// The normalised observation of `raw`.
-    pub(super) fn normalise(&self, raw: &[f64], observation: &mut [f32]) {
+    /// Each entry's offset, scale and normalised range (low, high), computed once for
+    /// [`EnvConfig::normalisation`].
+    pub(super) fn normalisation_table(&self) -> [Normalisation; 18] {
         let offsets = self.offsets();
         let scales = self.scales();
         let ranges = self.ranges();
-        for (i, (value, out)) in raw.iter().zip(observation.iter_mut()).enumerate() {
-            let low = (ranges[i].0 - offsets[i]) / scales[i];
-            let high = (ranges[i].1 - offsets[i]) / scales[i];
-            let normalised = (value - offsets[i]) / scales[i];
+        std::array::from_fn(|i| Normalisation {
+            offset: offsets[i],
+            scale: scales[i],
+            low: (ranges[i].0 - offsets[i]) / scales[i],
+            high: (ranges[i].1 - offsets[i]) / scales[i],
+        })
+    }
+
+    /// The normalised observation of `raw`.
+    pub(super) fn normalise(&self, raw: &[f64], observation: &mut [f32]) {
+        for ((value, out), n) in raw
+            .iter()
+            .zip(observation.iter_mut())
+            .zip(&self.normalisation)
+        {
+            let normalised = (value - n.offset) / n.scale;
             let normalised = if normalised.is_nan() { 0.0 } else { normalised };
-            *out = normalised.clamp(low, high) as f32;
+            *out = normalised.clamp(n.low, n.high) as f32;
         }
     }
 
