@@ -117,7 +117,7 @@ class CarrierLandingEnv(gymnasium.Env):
     ``pitch_command_span_rad`` (10°), ``thrust_span_n`` (a quarter of the maximum
     thrust), ``elevator_span_rad`` (10°), ``climb_rate_span_mps`` (5 m/s); ``reward``
     is ``"shaped"`` or ``"sparse"``; ``rewards`` replaces entries of :data:`REWARDS`;
-    ``forecast=True`` adds the deck forecast to the observation; ``render_mode`` is
+    ``forecast=True`` adds the deck forecast and its uncertainty to the observation; ``render_mode`` is
     None or ``"rgb_array"``.
     """
 

@@ -11,7 +11,7 @@ use crate::scenario::{flown_scenario, scenario_or_default, Scenario};
 use crate::stepping::Stepper;
 
 /// How an entry is normalised: (raw − offset)/scale, clipped to [low, high].
-#[derive(Debug, Clone, Copy, Default)]
+#[derive(Debug, Clone, Copy)]
 pub(crate) struct Normalisation {
     pub offset: f64,
     pub scale: f64,
@@ -46,7 +46,7 @@ pub(crate) struct EnvConfig {
     pub(super) max_episode_steps: Option<u64>,
     /// Each observation entry's normalisation (from the fields above, computed once:
     /// `normalisation_table` in the observation's module).
-    pub(super) normalisation: [Normalisation; 18],
+    pub(super) normalisation: Vec<Normalisation>,
 }
 
 /// Builds the configuration from the Python arguments.
@@ -135,7 +135,7 @@ pub(super) fn config(
         rewards: Rewards::from_dict(rewards, shaped)?,
         forecast,
         max_episode_steps,
-        normalisation: [Normalisation::default(); 18],
+        normalisation: Vec::new(),
     };
     config.normalisation = config.normalisation_table();
     Ok(config)
