@@ -3,13 +3,15 @@
 //!
 //! A vectorised step is short (64 environments, about 1 ms of work in all) and comes
 //! again as soon as Python has read the results, so what a thread pool costs at each
-//! call weighs: waking sleeping workers, the calling thread waiting idle while they work,
-//! and more threads than cores. Here the threads are exactly `threads`: the calling
-//! thread, which starts on the items at once, and `threads − 1` helpers of a pool of
-//! that size ([`helpers`]), which join as soon as they wake. Each thread takes the next
-//! item not yet taken (an atomic counter), so a late helper takes fewer items and the
-//! threads end within about one item of each other. Which thread takes an item changes
-//! nothing in its result.
+//! call weighs: waking sleeping threads, the calling thread waiting idle while others
+//! work, more threads than cores, and items moving between cores from call to call.
+//! Here the threads are exactly `threads`: the calling thread, which starts on the items
+//! at once, and `threads − 1` helpers of a pool of that size ([`helpers`]). The items
+//! are cut into one block per thread; each thread works its own block, then takes what
+//! is left of the others', so the threads end within about one item of each other and an
+//! item stays on one core from call to call. Between calls and at a call's end the
+//! threads wait awake for a short while ([`KEEP_AWAKE`]) rather than sleep. Which thread
+//! works an item changes nothing in its result.
 
 use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 use std::sync::{Mutex, OnceLock, PoisonError};
