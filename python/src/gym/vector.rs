@@ -1,6 +1,6 @@
 //! Many environments of one configuration stepped in one call: the Python class `_VecEnv`.
 
-use std::sync::Arc;
+use std::sync::{Arc, Mutex, PoisonError};
 
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArray3};
@@ -25,6 +25,10 @@ pub struct VecEnv {
     restart: Vec<bool>,
     /// Each environment's outcome code and wire at the last step (−1: none).
     outcomes: Vec<(i8, i8)>,
+    /// Whether every environment has started (`reset`). Kept here rather than read from
+    /// the episodes: reading 64 of them would fetch the data the helper threads keep in
+    /// their cores' caches.
+    started: bool,
 }
 
 /// What `_VecEnv.reset` returns.
@@ -56,7 +60,7 @@ struct Outputs {
     truncated: Vec<bool>,
 }
 
-/// One environment in a step: its episode, where its results go, and its error.
+/// One environment in a step: its episode and where its results go.
 struct Slot<'a> {
     core: &'a mut Option<EnvCore>,
     observation: &'a mut [f32],
@@ -66,7 +70,6 @@ struct Slot<'a> {
     terminated: &'a mut bool,
     truncated: &'a mut bool,
     outcome: &'a mut (i8, i8),
-    error: Option<PyErr>,
 }
 
 #[pymethods]
@@ -115,6 +118,7 @@ impl VecEnv {
             cores: (0..num_envs).map(|_| None).collect(),
             restart: vec![false; num_envs],
             outcomes: vec![(-1, -1); num_envs],
+            started: false,
         })
     }
 
@@ -138,7 +142,9 @@ impl VecEnv {
             .into_iter()
             .map(|s| seed_value(s).map(Some))
             .collect::<PyResult<Vec<_>>>()?;
+        self.started = false;
         let out = self.run(py, &[], &seeds)?;
+        self.started = true;
         self.restart.iter_mut().for_each(|r| *r = false);
         let (k, width) = (self.config.observation_len(), self.config.action_len());
         Ok((
@@ -164,7 +170,7 @@ impl VecEnv {
         let config = Arc::clone(&self.config);
         let width = config.action_len();
         let actions = action_rows(actions, n, width)?;
-        if self.cores.iter().any(Option::is_none) {
+        if !self.started {
             return Err(pyo3::exceptions::PyRuntimeError::new_err(
                 "the environments have not been reset: call reset() first",
             ));
@@ -279,19 +285,24 @@ impl VecEnv {
                         terminated,
                         truncated,
                         outcome,
-                        error: None,
                     }
                 },
             )
             .collect();
+        // The first error of an environment's start, if any (none after the configuration's
+        // own start succeeded, short of memory).
+        let error: Mutex<Option<PyErr>> = Mutex::new(None);
         py.detach(|| {
             for_each_item(helpers(), &mut slots, |i, slot| {
                 *slot.outcome = (-1, -1);
                 if let Some(seed) = plan[i] {
                     match EnvCore::new(config, seed) {
                         Ok(core) => *slot.core = Some(core),
-                        Err(error) => {
-                            slot.error = Some(error);
+                        Err(e) => {
+                            error
+                                .lock()
+                                .unwrap_or_else(PoisonError::into_inner)
+                                .get_or_insert(e);
                             return;
                         }
                     }
@@ -311,7 +322,8 @@ impl VecEnv {
                 core.observe(config, slot.observation, slot.raw, slot.pilot);
             });
         });
-        if let Some(error) = slots.into_iter().find_map(|slot| slot.error) {
+        drop(slots);
+        if let Some(error) = error.into_inner().unwrap_or_else(PoisonError::into_inner) {
             return Err(error);
         }
         Ok(out)
