@@ -237,8 +237,9 @@ class CarrierLandingEnv(gymnasium.Env):
 
 class CarrierLandingVecEnv(VectorEnv):
     """``num_envs`` environments of :class:`CarrierLandingEnv` stepped in one call to
-    Rust, over threads (``RAYON_NUM_THREADS``, default: every core): numpy arrays in and
-    out, no Python per environment.
+    Rust, over threads (``RAYON_NUM_THREADS`` in all, the calling one included;
+    default: one per core): numpy arrays in and out, no Python per environment; ``info``
+    is a dict of arrays (``docs/rl-environment.md``).
 
     Autoreset is Gymnasium's next-step mode: the step after an episode ends resets
     that environment (its action ignored, reward 0). Seeds follow Gymnasium:
