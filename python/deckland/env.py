@@ -117,7 +117,7 @@ class CarrierLandingEnv(gymnasium.Env):
     ``pitch_command_span_rad`` (10°), ``thrust_span_n`` (a quarter of the maximum
     thrust), ``elevator_span_rad`` (10°), ``climb_rate_span_mps`` (5 m/s); ``reward``
     is ``"shaped"`` or ``"sparse"``; ``rewards`` replaces entries of :data:`REWARDS`;
-    ``forecast=True`` adds the deck forecast to the observation; ``render_mode`` is
+    ``forecast=True`` adds the deck forecast and its uncertainty to the observation; ``render_mode`` is
     None or ``"rgb_array"``.
     """
 
@@ -237,8 +237,9 @@ class CarrierLandingEnv(gymnasium.Env):
 
 class CarrierLandingVecEnv(VectorEnv):
     """``num_envs`` environments of :class:`CarrierLandingEnv` stepped in one call to
-    Rust, over threads (``RAYON_NUM_THREADS``, default: every core): numpy arrays in and
-    out, no Python per environment.
+    Rust, over threads (``RAYON_NUM_THREADS`` in all, the calling one included;
+    default: one per core): numpy arrays in and out, no Python per environment; ``info``
+    is a dict of arrays (``docs/rl-environment.md``).
 
     Autoreset is Gymnasium's next-step mode: the step after an episode ends resets
     that environment (its action ignored, reward 0). Seeds follow Gymnasium:
@@ -305,8 +306,10 @@ class CarrierLandingVecEnv(VectorEnv):
         self.action_space = batch_space(self.single_action_space, self.num_envs)
         self.observation_space = batch_space(self.single_observation_space, self.num_envs)
         self._generators: List[Optional[np.random.Generator]] = [None] * self.num_envs
-        self._autoreset = np.zeros(self.num_envs, dtype=bool)
-        self._zeros = np.zeros((self.num_envs, len(self.action_names)), dtype=np.float32)
+        # The outcome's name by code, None (code -1) for a running or step-limited episode.
+        self._outcome_names = np.array(list(self.outcomes) + [None], dtype=object)
+        # The environments whose episode ended at the last step (None: none).
+        self._restart: Optional[List[int]] = None
 
     def _seed(self, i: int, seed: Optional[int]) -> int:
         if seed is not None:
@@ -333,32 +336,30 @@ class CarrierLandingVecEnv(VectorEnv):
                     f"`seed` = {seed!r} is not allowed: expected an int, None or {self.num_envs} seeds"
                 )
         drawn = [self._seed(i, s) for i, s in enumerate(seeds)]
-        observation, _, _, _, raw, pilot, _, _ = self._core.step(
-            self._zeros, [True] * self.num_envs, drawn
-        )
-        self._autoreset[:] = False
+        observation, raw, pilot = self._core.reset(drawn)
+        self._restart = None
         return observation, {"raw": raw, "autopilot_action": pilot, "seed": np.array(drawn, dtype=np.int64)}
 
     def step(
         self, actions: np.ndarray
     ) -> Tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, Dict[str, Any]]:
-        restart = self._autoreset
-        if restart.any():
-            seeds = [self._seed(i, None) if restart[i] else 0 for i in range(self.num_envs)]
-        else:
+        seeds = None
+        if self._restart is not None:
+            # Next-step autoreset: each ended environment's next seed from its generator.
             seeds = [0] * self.num_envs
-        observation, reward, terminated, truncated, raw, pilot, codes, wires = self._core.step(
-            actions, restart.tolist(), seeds
-        )
+            for i in self._restart:
+                seeds[i] = self._seed(i, None)
+        observation, reward, terminated, truncated, raw, pilot, codes, wires = self._core.step(actions, seeds)
         info: Dict[str, Any] = {"raw": raw, "autopilot_action": pilot}
-        ended = terminated | truncated
-        if ended.any():
-            names = np.array([self.outcomes[c] if c >= 0 else None for c in codes], dtype=object)
-            info["outcome"] = names
-            info["_outcome"] = ended
+        if codes is not None:  # some episodes ended
+            done = terminated | truncated
+            info["outcome"] = self._outcome_names[codes]
+            info["_outcome"] = done
             info["wire"] = wires
-            info["_wire"] = ended
-        self._autoreset = ended
+            info["_wire"] = done
+            self._restart = np.flatnonzero(done).tolist()
+        else:
+            self._restart = None
         return observation, reward, terminated, truncated, info
 
     def render(self) -> Optional[Tuple[np.ndarray, ...]]:

@@ -170,9 +170,10 @@ def test_observations_are_normalised_and_the_raw_values_are_in_info():
     env = CarrierLandingEnv(control="attitude", forecast=True)
     observations, _, infos, _, _ = run_episode(env, 4, autopilot)
     rows = env.description["observations"]
-    assert [row["name"] for row in rows][-5:] == [
+    assert [row["name"] for row in rows][13:] == [
         "forecast_landing_point_height_m", "forecast_landing_point_climb_rate_mps",
-        "forecast_ramp_height_m", "forecast_deck_pitch_rad", "forecast_available"]
+        "forecast_ramp_height_m", "forecast_deck_pitch_rad", "forecast_available",
+        "forecast_ramp_height_sigma_m", "forecast_landing_point_climb_rate_sigma_mps"]
     offsets = np.array([row["offset"] for row in rows])
     scales = np.array([row["scale"] for row in rows])
     raw = np.array([info["raw"] for info in infos])
@@ -181,7 +182,13 @@ def test_observations_are_normalised_and_the_raw_values_are_in_info():
     assert np.array_equal(observations, expected)
     assert np.all(np.abs(observations[:, :12]) < 12.0)
     # The default deck predictor (the estimator) forecasts all along; the forecast moves.
-    assert np.all(observations[:, -1] == 1.0) and np.std(raw[:, 13]) > 0.1
+    assert np.all(observations[:, 17] == 1.0) and np.std(raw[:, 13]) > 0.1
+    # Its uncertainty: the default guidance asks for it (a ramp-strike probability limit),
+    # so the σ are positive, and the ramp's grows with the horizon (the sea still to
+    # come): larger far out than at the ramp.
+    sigmas = raw[:, 18:]
+    assert np.all(sigmas > 0.0) and np.all(np.isfinite(sigmas))
+    assert sigmas[0, 0] > sigmas[-1, 0]
     # Raw against the stepping API's own observation: the approach flown by the same
     # commands shows the same numbers (θ with the sensor's noise).
     approach = deckland.Approach(env.description["scenario"], seed=4)
@@ -199,12 +206,19 @@ def test_the_vectorised_environment_is_the_single_one_bit_for_bit_across_autores
     actions[..., 2] = -1.0  # no wave-off
     observation, _ = envs.reset(seed=40)
     vector = [observation]
-    rewards, ends = [], []
+    rewards, ends, outcomes = [], [], []
     for t in range(steps):
-        observation, reward, terminated, truncated, _ = envs.step(actions[t])
+        observation, reward, terminated, truncated, info = envs.step(actions[t])
         vector.append(observation)
         rewards.append(reward)
         ends.append(terminated | truncated)
+        # Gymnasium's dict of arrays: the outcome (with its mask) only at steps where
+        # episodes end, None for the others.
+        assert ("outcome" in info) == bool(ends[-1].any())
+        outcomes.append(info["outcome"] if "outcome" in info else [None] * n)
+        if "outcome" in info:
+            assert np.array_equal(info["_outcome"], ends[-1])
+            assert all((name is None) != ended for name, ended in zip(info["outcome"], ends[-1]))
     vector, rewards, ends = np.array(vector), np.array(rewards), np.array(ends)
     assert ends.sum() >= 2 * n  # every environment reset at least once on its own
     for i in range(n):
@@ -217,8 +231,9 @@ def test_the_vectorised_environment_is_the_single_one_bit_for_bit_across_autores
                 observation, _ = env.reset()
                 reward, ended = 0.0, False
             else:
-                observation, reward, terminated, truncated, _ = env.step(actions[t, i])
+                observation, reward, terminated, truncated, info = env.step(actions[t, i])
                 ended = terminated or truncated
+                assert outcomes[t][i] == info.get("outcome"), (i, t)
             assert np.array_equal(observation, vector[t + 1, i]), (i, t)
             assert reward == rewards[t, i] and ended == ends[t, i], (i, t)
 

@@ -79,10 +79,15 @@ impl EnvConfig {
         }
     }
 
+    /// Whether `action` is `len` finite numbers in [−1, 1].
+    pub(super) fn action_allowed(&self, action: &[f64]) -> bool {
+        action.len() == self.action_len() && action.iter().all(|a| (-1.0..=1.0).contains(a))
+    }
+
     /// `action` checked: `len` finite numbers in [−1, 1], else `ValueError` naming it.
     pub(super) fn check_action(&self, action: &[f64], which: &str) -> PyResult<()> {
         let len = self.action_len();
-        if action.len() == len && action.iter().all(|a| (-1.0..=1.0).contains(a)) {
+        if self.action_allowed(action) {
             return Ok(());
         }
         Err(argument_error(

@@ -10,6 +10,15 @@ use crate::errors::argument_error;
 use crate::scenario::{flown_scenario, scenario_or_default, Scenario};
 use crate::stepping::Stepper;
 
+/// How an entry is normalised: (raw − offset)/scale, clipped to [low, high].
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Normalisation {
+    pub offset: f64,
+    pub scale: f64,
+    pub low: f64,
+    pub high: f64,
+}
+
 /// What every environment of one configuration shares.
 #[derive(Debug, Clone)]
 pub(crate) struct EnvConfig {
@@ -35,6 +44,9 @@ pub(crate) struct EnvConfig {
     pub(super) rewards: Rewards,
     pub(super) forecast: bool,
     pub(super) max_episode_steps: Option<u64>,
+    /// Each observation entry's normalisation (from the fields above, computed once:
+    /// `normalisation_table` in the observation's module).
+    pub(super) normalisation: Vec<Normalisation>,
 }
 
 /// Builds the configuration from the Python arguments.
@@ -99,7 +111,7 @@ pub(super) fn config(
     }
     let slope_rad = flown.control.flight_path.glide_slope_deg.to_radians();
     let direct_lift = flown.control.direct_lift;
-    Ok(EnvConfig {
+    let mut config = EnvConfig {
         scenario: flown,
         name: base.name,
         control,
@@ -123,5 +135,8 @@ pub(super) fn config(
         rewards: Rewards::from_dict(rewards, shaped)?,
         forecast,
         max_episode_steps,
-    })
+        normalisation: Vec::new(),
+    };
+    config.normalisation = config.normalisation_table();
+    Ok(config)
 }

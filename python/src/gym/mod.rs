@@ -17,6 +17,7 @@
 //! - [`action`]: the action read, checked and turned into taps, and the autopilot's;
 //! - [`episode`]: one environment's episode, stepped;
 //! - [`describe`]: the description of a configuration;
+//! - [`parallel`]: work spread over threads, the calling thread taking part;
 //! - [`single`] (`_Env`) and [`vector`] (`_VecEnv`): the Python classes.
 //!
 //! [`Control`]: control::Control
@@ -30,6 +31,7 @@ mod control;
 mod describe;
 mod episode;
 mod observation;
+mod parallel;
 mod reward;
 mod single;
 mod vector;

@@ -3,7 +3,7 @@
 use deckland::control::DeckReference;
 use deckland::simulation::Signals;
 
-use super::config::EnvConfig;
+use super::config::{EnvConfig, Normalisation};
 use crate::stepping::Look;
 
 /// One entry of the observation: its name, unit, where it comes from, and its scale
@@ -21,9 +21,12 @@ pub(crate) struct ObservationSpec {
 
 const DEG: f64 = std::f64::consts::PI / 180.0;
 
+/// The number of entries with the forecast.
+const ENTRIES: usize = 20;
+
 /// The observation's entries, in order (the offsets are [`EnvConfig::offsets`]). The
-/// last five only with `forecast=True`.
-pub(crate) const OBSERVATIONS: [ObservationSpec; 18] = [
+/// last seven only with `forecast=True`.
+pub(crate) const OBSERVATIONS: [ObservationSpec; ENTRIES] = [
     ObservationSpec { name: "glide_path_error_m", unit: "m", source: "hook's height error to the glide path, positive below (signal glide_path_error_m)", scale: 5.0, low: -100.0, high: 100.0 },
     ObservationSpec { name: "sink_rate_mps", unit: "m/s", source: "CG sink rate, positive down (signal climb_rate_mps negated); offset: the glide slope's, V·sin Γ", scale: 5.0, low: -30.0, high: 30.0 },
     ObservationSpec { name: "theta_measured_rad", unit: "rad", source: "pitch attitude as the pitch sensor gives it to the flight computer, with its noise (signal theta_measured_rad); offset: the trim's", scale: 10.0 * DEG, low: -90.0 * DEG, high: 90.0 * DEG },
@@ -42,6 +45,8 @@ pub(crate) const OBSERVATIONS: [ObservationSpec; 18] = [
     ObservationSpec { name: "forecast_ramp_height_m", unit: "m", source: "deck forecast: ramp's height above the mean deck when the hook crosses it", scale: 3.0, low: -15.0, high: 15.0 },
     ObservationSpec { name: "forecast_deck_pitch_rad", unit: "rad", source: "deck forecast: ship pitch at touchdown, bow up", scale: 2.0 * DEG, low: -0.2, high: 0.2 },
     ObservationSpec { name: "forecast_available", unit: "-", source: "1 when the deck predictor gives a forecast (the default estimator does; the others none: 0, and the forecast entries 0)", scale: 1.0, low: 0.0, high: 1.0 },
+    ObservationSpec { name: "forecast_ramp_height_sigma_m", unit: "m", source: "deck forecast's uncertainty: σ of the ramp-height prediction at the hook's crossing (at least flight_path.ramp_sigma_min_horizon_s ahead), from the estimator's covariance carried to that horizon and the sea still to come; 0 when the guidance does not ask for it (flight_path.ramp_strike_probability_limit = 0)", scale: 1.0, low: 0.0, high: 15.0 },
+    ObservationSpec { name: "forecast_landing_point_climb_rate_sigma_mps", unit: "m/s", source: "deck forecast's uncertainty: σ of the landing point's predicted climb rate at touchdown; 0 likewise", scale: 1.0, low: 0.0, high: 15.0 },
 ];
 
 /// Entries without the forecast.
@@ -60,8 +65,8 @@ impl EnvConfig {
     }
 
     /// The offset of each observation entry (raw units).
-    pub(super) fn offsets(&self) -> [f64; 18] {
-        let mut offsets = [0.0; 18];
+    pub(super) fn offsets(&self) -> [f64; ENTRIES] {
+        let mut offsets = [0.0; ENTRIES];
         offsets[1] = -self.climb_rate_trim_mps;
         offsets[2] = self.theta_trim_rad;
         offsets[4] = self.alpha_trim_rad;
@@ -72,7 +77,7 @@ impl EnvConfig {
     }
 
     /// The scale of each entry (the direct lift's is its largest increment).
-    pub(super) fn scales(&self) -> [f64; 18] {
+    pub(super) fn scales(&self) -> [f64; ENTRIES] {
         let mut scales = OBSERVATIONS.map(|o| o.scale);
         if self.max_direct_lift > 0.0 {
             scales[8] = self.max_direct_lift;
@@ -81,7 +86,7 @@ impl EnvConfig {
     }
 
     /// The raw range of each entry (the direct lift's: ± its largest increment).
-    pub(super) fn ranges(&self) -> [(f64, f64); 18] {
+    pub(super) fn ranges(&self) -> [(f64, f64); ENTRIES] {
         let mut ranges = OBSERVATIONS.map(|o| (o.low, o.high));
         ranges[6] = self.elevator_range_rad;
         ranges[8] = (-self.max_direct_lift, self.max_direct_lift);
@@ -119,24 +124,41 @@ impl EnvConfig {
                     f.ramp_height_m - deck_mean_m,
                     f.pitch_rad,
                     1.0,
+                    f.ramp_height_sigma_m,
+                    f.landing_point_climb_rate_sigma_mps,
                 ],
-                None => [0.0; 5],
+                None => [0.0; ENTRIES - BASE_OBSERVATIONS],
             };
             raw[BASE_OBSERVATIONS..].copy_from_slice(&extra);
         }
     }
 
-    /// The normalised observation of `raw`.
-    pub(super) fn normalise(&self, raw: &[f64], observation: &mut [f32]) {
+    /// Each entry's offset, scale and normalised range (low, high), computed once for
+    /// [`EnvConfig::normalisation`].
+    pub(super) fn normalisation_table(&self) -> Vec<Normalisation> {
         let offsets = self.offsets();
         let scales = self.scales();
         let ranges = self.ranges();
-        for (i, (value, out)) in raw.iter().zip(observation.iter_mut()).enumerate() {
-            let low = (ranges[i].0 - offsets[i]) / scales[i];
-            let high = (ranges[i].1 - offsets[i]) / scales[i];
-            let normalised = (value - offsets[i]) / scales[i];
+        (0..ENTRIES)
+            .map(|i| Normalisation {
+                offset: offsets[i],
+                scale: scales[i],
+                low: (ranges[i].0 - offsets[i]) / scales[i],
+                high: (ranges[i].1 - offsets[i]) / scales[i],
+            })
+            .collect()
+    }
+
+    /// The normalised observation of `raw`.
+    pub(super) fn normalise(&self, raw: &[f64], observation: &mut [f32]) {
+        for ((value, out), n) in raw
+            .iter()
+            .zip(observation.iter_mut())
+            .zip(&self.normalisation)
+        {
+            let normalised = (value - n.offset) / n.scale;
             let normalised = if normalised.is_nan() { 0.0 } else { normalised };
-            *out = normalised.clamp(low, high) as f32;
+            *out = normalised.clamp(n.low, n.high) as f32;
         }
     }
 

@@ -1,16 +1,17 @@
 //! Many environments of one configuration stepped in one call: the Python class `_VecEnv`.
 
-use std::sync::Arc;
+use std::sync::{Arc, Mutex, PoisonError};
 
-use numpy::{IntoPyArray, PyArray1, PyArray2, PyArray3, PyArrayMethods};
+use numpy::ndarray::Array2;
+use numpy::{IntoPyArray, PyArray1, PyArray2, PyArray3};
 use numpy::{PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use rayon::prelude::*;
 
 use super::config::{config, EnvConfig};
 use super::describe::describe;
-use super::episode::{frame_array, seed_value, EnvCore, StepResult};
+use super::episode::{frame_array, seed_value, EnvCore};
+use super::parallel::{for_each_item, helpers};
 use crate::errors::{argument_error, value_error};
 use crate::render::{draw_side_view, FRAME_HEIGHT, FRAME_WIDTH};
 use crate::scenario::Scenario;
@@ -20,7 +21,22 @@ use crate::scenario::Scenario;
 pub struct VecEnv {
     config: Arc<EnvConfig>,
     cores: Vec<Option<EnvCore>>,
+    /// The environments whose episode ended at the last step: the next starts them again.
+    restart: Vec<bool>,
+    /// Each environment's outcome code and wire at the last step (−1: none).
+    outcomes: Vec<(i8, i8)>,
+    /// Whether every environment has started (`reset`). Kept here rather than read from
+    /// the episodes: reading 64 of them would fetch the data the helper threads keep in
+    /// their cores' caches.
+    started: bool,
 }
+
+/// What `_VecEnv.reset` returns.
+type VecReset<'py> = (
+    Bound<'py, PyArray2<f32>>,
+    Bound<'py, PyArray2<f64>>,
+    Bound<'py, PyArray2<f32>>,
+);
 
 /// What `_VecEnv.step` returns.
 type VecStep<'py> = (
@@ -30,9 +46,31 @@ type VecStep<'py> = (
     Bound<'py, PyArray1<bool>>,
     Bound<'py, PyArray2<f64>>,
     Bound<'py, PyArray2<f32>>,
-    Bound<'py, PyArray1<i8>>,
-    Bound<'py, PyArray1<i8>>,
+    Option<Bound<'py, PyArray1<i8>>>,
+    Option<Bound<'py, PyArray1<i8>>>,
 );
+
+/// Every environment's results of a step, one array each, environment by environment.
+struct Outputs {
+    observations: Vec<f32>,
+    raw: Vec<f64>,
+    pilot: Vec<f32>,
+    rewards: Vec<f64>,
+    terminated: Vec<bool>,
+    truncated: Vec<bool>,
+}
+
+/// One environment in a step: its episode and where its results go.
+struct Slot<'a> {
+    core: &'a mut Option<EnvCore>,
+    observation: &'a mut [f32],
+    raw: &'a mut [f64],
+    pilot: &'a mut [f32],
+    reward: &'a mut f64,
+    terminated: &'a mut bool,
+    truncated: &'a mut bool,
+    outcome: &'a mut (i8, i8),
+}
 
 #[pymethods]
 impl VecEnv {
@@ -78,6 +116,9 @@ impl VecEnv {
         Ok(Self {
             config: Arc::new(config),
             cores: (0..num_envs).map(|_| None).collect(),
+            restart: vec![false; num_envs],
+            outcomes: vec![(-1, -1); num_envs],
+            started: false,
         })
     }
 
@@ -86,110 +127,102 @@ impl VecEnv {
         describe(py, &self.config)
     }
 
-    /// Steps every environment: those with `reset[i]` start again with `seeds[i]` (their
-    /// action is ignored, reward 0), the others take their row of `actions`. Returns
-    /// (observations, rewards, terminated, truncated, raw observations, autopilot actions,
-    /// outcome codes (−1: running), wires (−1: none)).
+    /// Starts every environment's episode, environment i with `seeds[i]`: (observations,
+    /// raw observations, autopilot actions).
+    fn reset<'py>(&mut self, py: Python<'py>, seeds: Vec<i128>) -> PyResult<VecReset<'py>> {
+        let n = self.cores.len();
+        if seeds.len() != n {
+            return Err(argument_error(
+                "seeds",
+                format_args!("{} seeds", seeds.len()),
+                format_args!("one per environment, {n}"),
+            ));
+        }
+        let seeds = seeds
+            .into_iter()
+            .map(|s| seed_value(s).map(Some))
+            .collect::<PyResult<Vec<_>>>()?;
+        self.started = false;
+        let out = self.run(py, &[], &seeds)?;
+        self.started = true;
+        self.restart.iter_mut().for_each(|r| *r = false);
+        let (k, width) = (self.config.observation_len(), self.config.action_len());
+        Ok((
+            matrix(py, out.observations, k)?,
+            matrix(py, out.raw, k)?,
+            matrix(py, out.pilot, width)?,
+        ))
+    }
+
+    /// Steps every environment with its row of `actions`, except those whose episode
+    /// ended at the previous step: they start again with their entry of `seeds` (needed
+    /// then, one per environment, the others' ignored), their action ignored, reward 0.
+    /// Returns (observations, rewards, terminated, truncated, raw observations, autopilot
+    /// actions, outcome codes, wires), the last two only when an episode ended (else None;
+    /// −1: running, or truncated by the step limit; no wire).
     fn step<'py>(
         &mut self,
         py: Python<'py>,
         actions: &Bound<'py, PyAny>,
-        reset: Vec<bool>,
-        seeds: Vec<i128>,
+        seeds: Option<Vec<i128>>,
     ) -> PyResult<VecStep<'py>> {
         let n = self.cores.len();
         let config = Arc::clone(&self.config);
         let width = config.action_len();
-        let actions: Vec<f64> = if let Ok(a) = actions.extract::<PyReadonlyArray2<'_, f32>>() {
-            if a.shape() != [n, width] {
-                return Err(shape_error(a.shape(), n, width));
-            }
-            a.as_array().iter().map(|&v| f64::from(v)).collect()
-        } else {
-            let a = actions
-                .extract::<PyReadonlyArray2<'_, f64>>()
-                .map_err(|_| {
-                    argument_error(
-                        "actions",
-                        "not a 2-d float array",
-                        format_args!("an array of shape ({n}, {width})"),
-                    )
-                })?;
-            if a.shape() != [n, width] {
-                return Err(shape_error(a.shape(), n, width));
-            }
-            a.as_array().iter().copied().collect()
-        };
-        if reset.len() != n || seeds.len() != n {
-            return Err(value_error(
-                "`reset` and `seeds` must have one entry per environment",
+        let actions = action_rows(actions, n, width)?;
+        if !self.started {
+            return Err(pyo3::exceptions::PyRuntimeError::new_err(
+                "the environments have not been reset: call reset() first",
             ));
         }
-        let mut plan = Vec::with_capacity(n);
-        for i in 0..n {
-            let restart = reset[i] || self.cores[i].is_none();
-            if restart {
-                plan.push(Some(seed_value(seeds[i])?));
-            } else {
-                config.check_action(
-                    &actions[i * width..(i + 1) * width],
-                    &format!("actions[{i}]"),
-                )?;
-                if self.cores[i].as_ref().is_some_and(|c| c.outcome.is_some()) {
-                    return Err(value_error(format!(
-                        "environment {i} has ended: it must be reset (`reset[{i}]`)"
-                    )));
+        let mut plan = vec![None; n];
+        if self.restart.iter().any(|&r| r) {
+            let Some(seeds) = seeds.filter(|s| s.len() == n) else {
+                return Err(argument_error(
+                    "seeds",
+                    "missing",
+                    format_args!(
+                        "{n} seeds, one per environment, when episodes ended at the previous step"
+                    ),
+                ));
+            };
+            for (i, seed) in seeds.into_iter().enumerate() {
+                if self.restart[i] {
+                    plan[i] = Some(seed_value(seed)?);
                 }
-                plan.push(None);
             }
         }
+        for (i, row) in actions.chunks(width).enumerate() {
+            if plan[i].is_none() && !config.action_allowed(row) {
+                config.check_action(row, &format!("actions[{i}]"))?;
+            }
+        }
+        let out = self.run(py, &actions, &plan)?;
+        let mut ended = false;
+        for (restart, (terminated, truncated)) in self
+            .restart
+            .iter_mut()
+            .zip(out.terminated.iter().zip(&out.truncated))
+        {
+            *restart = *terminated || *truncated;
+            ended |= *restart;
+        }
+        let (codes, wires) = if ended {
+            let (codes, wires): (Vec<i8>, Vec<i8>) = self.outcomes.iter().copied().unzip();
+            (Some(codes.into_pyarray(py)), Some(wires.into_pyarray(py)))
+        } else {
+            (None, None)
+        };
         let k = config.observation_len();
-        let mut obs = vec![0.0f32; n * k];
-        let mut raw = vec![0.0f64; n * k];
-        let mut pilot = vec![0.0f32; n * width];
-        let mut results = vec![(StepResult::default(), -1i8, -1i8); n];
-        let outcome = py.detach(|| {
-            self.cores
-                .par_iter_mut()
-                .zip(plan.par_iter())
-                .zip(obs.par_chunks_mut(k))
-                .zip(raw.par_chunks_mut(k))
-                .zip(pilot.par_chunks_mut(width))
-                .zip(results.par_iter_mut())
-                .enumerate()
-                .try_for_each(|(i, (((((core, plan), obs), raw), pilot), result))| {
-                    if let Some(seed) = plan {
-                        *core = Some(EnvCore::new(&config, *seed).map_err(|e| e.to_string())?);
-                    }
-                    let Some(core) = core.as_mut() else {
-                        return Ok(());
-                    };
-                    if plan.is_none() {
-                        result.0 = core.step(&config, &actions[i * width..(i + 1) * width]);
-                        if let Some((code, wire)) = core.outcome {
-                            result.1 = code as i8;
-                            result.2 = wire.map_or(-1, |w| w as i8);
-                        }
-                    }
-                    core.observe(&config, obs, raw, pilot);
-                    Ok::<(), String>(())
-                })
-        });
-        outcome.map_err(value_error)?;
-        let rewards: Vec<f64> = results.iter().map(|r| r.0.reward).collect();
-        let terminated: Vec<bool> = results.iter().map(|r| r.0.terminated).collect();
-        let truncated: Vec<bool> = results.iter().map(|r| r.0.truncated).collect();
-        let codes: Vec<i8> = results.iter().map(|r| r.1).collect();
-        let wires: Vec<i8> = results.iter().map(|r| r.2).collect();
         Ok((
-            obs.into_pyarray(py).reshape([n, k])?,
-            rewards.into_pyarray(py),
-            terminated.into_pyarray(py),
-            truncated.into_pyarray(py),
-            raw.into_pyarray(py).reshape([n, k])?,
-            pilot.into_pyarray(py).reshape([n, width])?,
-            codes.into_pyarray(py),
-            wires.into_pyarray(py),
+            matrix(py, out.observations, k)?,
+            out.rewards.into_pyarray(py),
+            out.terminated.into_pyarray(py),
+            out.truncated.into_pyarray(py),
+            matrix(py, out.raw, k)?,
+            matrix(py, out.pilot, width)?,
+            codes,
+            wires,
         ))
     }
 
@@ -209,6 +242,127 @@ impl VecEnv {
         };
         frame_array(py, frame)
     }
+}
+
+impl VecEnv {
+    /// Steps every environment over threads, the interpreter released: those with a seed
+    /// in `plan` start again with it, the others take their row of `actions`.
+    fn run(&mut self, py: Python<'_>, actions: &[f64], plan: &[Option<u64>]) -> PyResult<Outputs> {
+        let config = &*self.config;
+        let (n, k, width) = (
+            self.cores.len(),
+            config.observation_len(),
+            config.action_len(),
+        );
+        let mut out = Outputs {
+            observations: vec![0.0; n * k],
+            raw: vec![0.0; n * k],
+            pilot: vec![0.0; n * width],
+            rewards: vec![0.0; n],
+            terminated: vec![false; n],
+            truncated: vec![false; n],
+        };
+        let mut slots: Vec<Slot<'_>> = self
+            .cores
+            .iter_mut()
+            .zip(out.observations.chunks_mut(k))
+            .zip(out.raw.chunks_mut(k))
+            .zip(out.pilot.chunks_mut(width))
+            .zip(out.rewards.iter_mut())
+            .zip(out.terminated.iter_mut().zip(out.truncated.iter_mut()))
+            .zip(self.outcomes.iter_mut())
+            .map(
+                |(
+                    (((((core, observation), raw), pilot), reward), (terminated, truncated)),
+                    outcome,
+                )| {
+                    Slot {
+                        core,
+                        observation,
+                        raw,
+                        pilot,
+                        reward,
+                        terminated,
+                        truncated,
+                        outcome,
+                    }
+                },
+            )
+            .collect();
+        // The first error of an environment's start, if any (none after the configuration's
+        // own start succeeded, short of memory).
+        let error: Mutex<Option<PyErr>> = Mutex::new(None);
+        py.detach(|| {
+            for_each_item(helpers(), &mut slots, |i, slot| {
+                *slot.outcome = (-1, -1);
+                if let Some(seed) = plan[i] {
+                    match EnvCore::new(config, seed) {
+                        Ok(core) => *slot.core = Some(core),
+                        Err(e) => {
+                            error
+                                .lock()
+                                .unwrap_or_else(PoisonError::into_inner)
+                                .get_or_insert(e);
+                            return;
+                        }
+                    }
+                }
+                let Some(core) = slot.core.as_mut() else {
+                    return;
+                };
+                if plan[i].is_none() {
+                    let result = core.step(config, &actions[i * width..(i + 1) * width]);
+                    *slot.reward = result.reward;
+                    *slot.terminated = result.terminated;
+                    *slot.truncated = result.truncated;
+                    if let Some((code, wire)) = core.outcome {
+                        *slot.outcome = (code as i8, wire.map_or(-1, |w| w as i8));
+                    }
+                }
+                core.observe(config, slot.observation, slot.raw, slot.pilot);
+            });
+        });
+        drop(slots);
+        if let Some(error) = error.into_inner().unwrap_or_else(PoisonError::into_inner) {
+            return Err(error);
+        }
+        Ok(out)
+    }
+}
+
+/// `values`, `columns` a row, as a 2-d array (without a copy).
+fn matrix<T: numpy::Element>(
+    py: Python<'_>,
+    values: Vec<T>,
+    columns: usize,
+) -> PyResult<Bound<'_, PyArray2<T>>> {
+    let rows = values.len() / columns;
+    let array = Array2::from_shape_vec((rows, columns), values)
+        .map_err(|e| value_error(format!("an array of {rows} rows of {columns}: {e}")))?;
+    Ok(array.into_pyarray(py))
+}
+
+/// The actions, one row of `width` per environment, from a 2-d float32 or float64 array.
+fn action_rows(actions: &Bound<'_, PyAny>, n: usize, width: usize) -> PyResult<Vec<f64>> {
+    if let Ok(a) = actions.extract::<PyReadonlyArray2<'_, f32>>() {
+        if a.shape() != [n, width] {
+            return Err(shape_error(a.shape(), n, width));
+        }
+        return Ok(a.as_array().iter().map(|&v| f64::from(v)).collect());
+    }
+    let a = actions
+        .extract::<PyReadonlyArray2<'_, f64>>()
+        .map_err(|_| {
+            argument_error(
+                "actions",
+                "not a 2-d float array",
+                format_args!("an array of shape ({n}, {width})"),
+            )
+        })?;
+    if a.shape() != [n, width] {
+        return Err(shape_error(a.shape(), n, width));
+    }
+    Ok(a.as_array().iter().copied().collect())
 }
 
 fn shape_error(shape: &[usize], n: usize, width: usize) -> PyErr {
