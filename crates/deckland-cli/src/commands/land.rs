@@ -14,6 +14,7 @@ pub(crate) use crate::plot::land::figures;
 use anyhow::{Context, Result};
 use clap::Args;
 use deckland::experiments::{fly_approach, ApproachRow};
+use deckland::metrics::TrapSheetPosition;
 use deckland::scenario::Scenario;
 use deckland::simulation::{Outcome, RunSummary};
 use serde::Serialize;
@@ -129,6 +130,16 @@ pub fn fly_and_write(
 
 /// The rows of the summary table: quantity, value, unit — the numbers of `summary.json`,
 /// rounded as the terminal prints them.
+/// The trap sheet's name of `position`, with its window in nautical miles.
+fn position_name(position: TrapSheetPosition) -> &'static str {
+    match position {
+        TrapSheetPosition::Start => "start, ¾–½ nmi",
+        TrapSheetPosition::Middle => "middle, ½–¼ nmi",
+        TrapSheetPosition::InClose => "in close, ¼–0.1 nmi",
+        TrapSheetPosition::AtRamp => "at the ramp",
+    }
+}
+
 pub(crate) fn summary_rows(report: &LandingReport) -> Vec<Vec<String>> {
     let s = report.summary;
     let row = |quantity: &str, value: String, unit: &str| {
@@ -198,6 +209,27 @@ pub(crate) fn summary_rows(report: &LandingReport) -> Vec<Vec<String>> {
                     "deg",
                 ),
             ]);
+        }
+    }
+    if let Some(sheet) = &s.trap_sheet {
+        for p in &sheet.positions {
+            rows.push(row(
+                &format!(
+                    "trap sheet, {} ({}): glide slope mean / peak (+ high), lineup mean / peak (+ right)",
+                    position_name(p.position),
+                    p.position.shorthand()
+                ),
+                format!(
+                    "{} / {} m; {} / {} m ({} / {}°)",
+                    html::signed_number(p.glide_slope_mean_m, 2),
+                    html::signed_number(p.glide_slope_peak_m, 2),
+                    html::signed_number(p.lineup_mean_m, 2),
+                    html::signed_number(p.lineup_peak_m, 2),
+                    html::signed_number(p.lineup_mean_deg, 2),
+                    html::signed_number(p.lineup_peak_deg, 2)
+                ),
+                "",
+            ));
         }
     }
     rows.extend([
@@ -342,6 +374,19 @@ fn print_summary(report: &LandingReport, output: &OutputDir) -> Result<()> {
     }
     if let Some(c) = s.ramp_clearance_m {
         outln!("  hook over the ramp    {c:.2} m")?;
+    }
+    if let Some(sheet) = &s.trap_sheet {
+        outln!("  trap sheet (mean deviation: glide slope + high, lineup + right)")?;
+        for p in &sheet.positions {
+            outln!(
+                "    {:<3}{:<22}glide slope {:+.2} m, lineup {:+.2} m ({:+.2}° from the aim point)",
+                p.position.shorthand(),
+                position_name(p.position),
+                p.glide_slope_mean_m,
+                p.lineup_mean_m,
+                p.lineup_mean_deg
+            )?;
+        }
     }
     if let (Some(rms), Some(max)) = (s.glide_path_error_rms_m, s.glide_path_error_max_m) {
         outln!("  glide-path error      RMS {rms:.2} m, max {max:.2} m")?;

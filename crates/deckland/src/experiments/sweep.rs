@@ -89,6 +89,7 @@ mod tests {
             glide_path_error_rms_m: None,
             glide_path_error_max_m: None,
             actuator: Default::default(),
+            trap_sheet: None,
         }
     }
 

@@ -7,6 +7,7 @@ use serde::Serialize;
 
 use super::activity::ActuatorActivity;
 use crate::control::WaveOffDecision;
+use crate::metrics::TrapSheet;
 use crate::scenario::OutcomeLimits;
 
 /// How a run ended.
@@ -416,6 +417,11 @@ pub struct RunSummary {
     pub glide_path_error_max_m: Option<f64>,
     /// What the elevator and the engines did over the run.
     pub actuator: ActuatorActivity,
+    /// The landing signal officer's trap sheet of a 3-D approach (glide-slope and lineup
+    /// deviations at the start, the middle, in close and at the ramp; docs/model.md
+    /// §10.8); `None` for a longitudinal approach.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub trap_sheet: Option<TrapSheet>,
 }
 
 #[cfg(test)]

@@ -23,6 +23,7 @@ use super::taps::{NoTaps, Taps};
 use crate::aircraft::{ALPHA_MAX_RAD, ALPHA_MIN_RAD};
 use crate::control::WaveOffDecision;
 use crate::integration::Rk4Workspace;
+use crate::metrics::TrapSheetRecorder;
 use crate::scenario::Scenario;
 
 /// A run set up with a user's own pitch law and blocks ([`Simulation::builder`]).
@@ -100,6 +101,12 @@ pub struct Simulation {
     rules: LandingRules,
     detector: EventDetector,
     statistics: GlidePathStatistics,
+    /// The landing signal officer's trap sheet of a 3-D approach.
+    trap_sheet: TrapSheetRecorder,
+    /// The ramp's distance aft of the aim point along the landing centreline (m).
+    ramp_aft_of_aim_point_m: f64,
+    /// Whether the run flies the 3-D approach (its signals carry a cross track).
+    three_dimensional: bool,
     activity: ActivityStatistics,
     ramp_clearance_m: Option<f64>,
     /// The wave-off decision, once the supervisor has emitted it: its time (s) and why.
@@ -169,6 +176,9 @@ impl Simulation {
             rules: LandingRules::new(&scenario.outcome, deck.wire_positions_m),
             detector: EventDetector::new(deck),
             statistics: GlidePathStatistics::default(),
+            trap_sheet: TrapSheetRecorder::new(deck.ramp_aft_of_aim_point_m),
+            ramp_aft_of_aim_point_m: deck.ramp_aft_of_aim_point_m,
+            three_dimensional: false,
             activity,
             ramp_clearance_m: None,
             wave_off: None,
@@ -325,6 +335,16 @@ impl Simulation {
             // The glide-path statistics cover the approach, not a wave-off's climb.
             if self.wave_off.is_none() {
                 self.statistics.sample(&signals);
+                if let Some(cross_track_m) = signals.lateral.cross_track_m {
+                    // Distance to the ramp along the final bearing; height above the
+                    // glide slope (the glide-path error is positive below it).
+                    self.three_dimensional = true;
+                    self.trap_sheet.sample(
+                        signals.range_to_go_m - self.ramp_aft_of_aim_point_m,
+                        -signals.glide_path_error_m,
+                        cross_track_m,
+                    );
+                }
             }
             for event in self.detector.detect(&signals).iter() {
                 if let Event::RampCrossing { clearance_m, .. } = event {
@@ -375,6 +395,7 @@ impl Simulation {
                 glide_path_error_rms_m: self.statistics.rms_m(),
                 glide_path_error_max_m: self.statistics.max_m(),
                 actuator: self.activity.activity(),
+                trap_sheet: self.three_dimensional.then(|| self.trap_sheet.sheet()),
             };
             recorder.finish(&summary);
             self.summary = Some(summary);
