@@ -41,6 +41,9 @@ use crate::estimation::ObserverParameters;
 use crate::parameters::{join, Bounds, ParameterError};
 
 pub mod design;
+mod parameters;
+
+pub use parameters::{deserialize_roll_law, deserialize_yaw_law, DEFAULT_LATERAL_LAW};
 
 /// Where the roll law's parameters are named in errors.
 pub const ROLL_SECTION: &str = "control.roll";
