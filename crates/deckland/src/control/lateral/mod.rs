@@ -42,8 +42,10 @@ use crate::parameters::{join, Bounds, ParameterError};
 
 pub mod design;
 mod parameters;
+mod sideslip;
 
 pub use parameters::{deserialize_roll_law, deserialize_yaw_law, DEFAULT_LATERAL_LAW};
+pub use sideslip::{SideslipBlend, SIDESLIP_BLEND_CROSSOVER_RADPS};
 
 /// Where the roll law's parameters are named in errors.
 pub const ROLL_SECTION: &str = "control.roll";
@@ -342,6 +344,14 @@ impl LateralLawParameters {
                 derivative_per_s: 3.77,
             })),
             _ => None,
+        }
+    }
+
+    /// The law's `type` name in a scenario file: `observer_pd` or `pid`.
+    pub fn type_name(&self) -> &'static str {
+        match self {
+            Self::ObserverPd(_) => "observer_pd",
+            Self::Pid(_) => "pid",
         }
     }
 
