@@ -320,9 +320,10 @@ impl LateralLawParameters {
                 }))
             }
             // ε = 0.2 keeps β within ±1° through the bank step and the 5 m/s gust; the
-            // price is the rudder's activity on the air-data sideslip's noise (σ 0.2°,
-            // through 1/|N_δr| ≈ 2.1): rate RMS 78 °/s of its 82 °/s limit in adverse
-            // conditions (ε = 0.6: 59 °/s, but 1.8° of β in the gust; docs/lateral-control.md).
+            // price is the rudder's activity on what is left of the air-data sideslip's
+            // noise after the sideslip blend (`SideslipBlend`; through 1/|N_δr| ≈ 2.1):
+            // rate RMS 75 °/s of its 82 °/s limit in adverse conditions
+            // (docs/lateral-control.md).
             ("observer_pd", LateralChannel::Yaw) => {
                 Some(Self::ObserverPd(LateralObserverPdParameters {
                     settling_time_s: 2.0,
