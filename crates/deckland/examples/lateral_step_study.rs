@@ -93,7 +93,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     // The sideslip blend's crossover: quiet against coordination in the gust (O-PD).
     println!("== the O-PD with the sideslip blend's crossover k_c (none: raw air data)");
-    for crossover in [None, Some(2.0), Some(5.0), Some(10.0)] {
+    for crossover in [None, Some(2.0), Some(3.0), Some(4.0), Some(5.0), Some(10.0)] {
         let with = |step: LateralStep| LateralStep {
             sideslip_blend_crossover_radps: crossover,
             ..step

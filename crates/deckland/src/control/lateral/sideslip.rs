@@ -12,8 +12,9 @@
 //! β̂̇ = β̇_inertial + k_c·(β_air − β̂),
 //!
 //! so the air data passes below k_c (where the wind acts) and the inertial rate above it
-//! (where the noise is). Sampled each frame T of the flight computer, exactly for a held
-//! air-data sample: β̂ ← β̂ + T·β̇_inertial + (1 − e^(−k_c·T))·(β_air − β̂).
+//! (where the noise is). Sampled each frame T of the flight computer: the inertial rate
+//! predicts, the air data corrects with the gain a first-order lag of k_c has over a
+//! frame, β̂⁻ = β̂ + T·β̇_inertial, β̂ ← β̂⁻ + (1 − e^(−k_c·T))·(β_air − β̂⁻).
 
 use crate::parameters::{Bounds, ParameterError};
 
@@ -48,8 +49,9 @@ impl SideslipBlend {
         let estimate = match self.estimate_rad {
             None => air_data_rad,
             Some(previous) => {
+                let predicted = previous + frame_s * inertial_rate_radps;
                 let gain = 1.0 - (-self.crossover_radps * frame_s).exp();
-                previous + frame_s * inertial_rate_radps + gain * (air_data_rad - previous)
+                predicted + gain * (air_data_rad - predicted)
             }
         };
         self.estimate_rad = Some(estimate);
