@@ -17,8 +17,7 @@ use std::path::Path;
 
 use toml_edit::{ImDocument, InlineTable, Item, Table, Value};
 
-use super::lateral::PAPER_HAS_NO_LATERAL_AXES;
-use super::{HardwareSet, Mission, Scenario};
+use super::{Mission, Scenario};
 use crate::parameters::{join, ParameterError};
 
 /// Largest scenario file (bytes): the commented default file is about 10 kB.
@@ -275,28 +274,6 @@ pub fn load_scenario(text: &str, file_name: &str) -> Result<Scenario, ScenarioEr
             field: "hardware".to_owned(),
             message,
         })?;
-    // The paper's set has no lateral axes: a lateral law's section is refused by its key
-    // (as `aircraft.model = "6dof"` is), even when it writes the default values.
-    if scenario.hardware == HardwareSet::Paper {
-        let lateral = |path: &str| {
-            ["control.roll", "control.yaw"]
-                .iter()
-                .any(|section| path == *section || path.starts_with(&format!("{section}.")))
-        };
-        let first = index
-            .keys
-            .iter()
-            .filter(|k| lateral(&k.path))
-            .min_by_key(|k| k.span.start);
-        if let Some(key) = first {
-            return Err(ScenarioError::Structure {
-                file: file_name.to_owned(),
-                line: Some(line_of(text, key.span.start)),
-                field: key.path.clone(),
-                message: PAPER_HAS_NO_LATERAL_AXES.to_owned(),
-            });
-        }
-    }
     scenario.validate().map_err(|problem| {
         let line = index
             .keys

@@ -6,9 +6,10 @@ use crate::control::lateral::{LateralChannel, LateralLawParameters};
 use crate::parameters::ParameterError;
 
 /// Why a lateral section is refused with the paper's hardware set.
-pub(super) const PAPER_HAS_NO_LATERAL_AXES: &str =
-    "no lateral law with `hardware = \"paper\"`: the paper's set flies the 3-DOF model, \
-     which has no roll or yaw channel (remove the section, or use `hardware = \"realistic\"`)";
+const PAPER_HAS_NO_LATERAL_AXES: &str =
+    "the channel's designed law with `hardware = \"paper\"`: the paper's set flies the 3-DOF \
+     model, which has no roll or yaw channel (remove the section, or use \
+     `hardware = \"realistic\"`)";
 
 impl Scenario {
     /// The roll law (bank → aileron) and the yaw law (sideslip → rudder) the 6-DOF
@@ -20,7 +21,8 @@ impl Scenario {
     }
 
     /// The lateral laws' checks beyond each key's range: the paper's set flies none of its
-    /// own, and an O-PD's observer (k3/ε rad/s) must be resolved by the integration step
+    /// own (its lateral laws must be the designed ones, which a file may write or leave
+    /// out, as a paper scenario written to TOML does), and an O-PD's observer (k3/ε rad/s) must be resolved by the integration step
     /// (k3·dt/ε ≤ 0.5), as the pitch O-PD's.
     pub(super) fn check_lateral_laws(&self) -> Result<(), ParameterError> {
         for (channel, law) in [
@@ -32,8 +34,8 @@ impl Scenario {
                 && law != LateralLawParameters::default_for(channel)
             {
                 return Err(ParameterError::new(
-                    section,
-                    "type",
+                    "control",
+                    channel_key(channel),
                     law.label(),
                     PAPER_HAS_NO_LATERAL_AXES,
                 ));
@@ -57,5 +59,13 @@ impl Scenario {
             }
         }
         Ok(())
+    }
+}
+
+/// The channel's key under `[control]`.
+fn channel_key(channel: LateralChannel) -> &'static str {
+    match channel {
+        LateralChannel::Roll => "roll",
+        LateralChannel::Yaw => "yaw",
     }
 }
