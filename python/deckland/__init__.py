@@ -12,6 +12,8 @@ this package calls it directly, so every number is the CLI's, bit for bit.
   pandas is installed, else a dict of numpy arrays; the columns of ``approach.csv``).
 - :func:`campaign`: many approaches in parallel (Monte Carlo), the rows of ``runs.csv``;
   :func:`deckland.dask.campaign` flies its shards on a Dask cluster (``deckland[dask]``).
+- :func:`lateral_step`: a bank or sideslip step of the 6-DOF aircraft with the roll and
+  yaw laws (``deckland step --axis roll|yaw``), its metrics and time series.
 - :class:`Approach`: the stepping API, one control interval at a time, the built-in
   cascade flying or your commands replacing its loops, or your own pitch law.
 - ``deckland/CarrierLanding-v1``: a Gymnasium environment on :class:`Approach`'s
@@ -39,6 +41,7 @@ from ._deckland import (
     trim_six_dof,
 )
 from ._tables import table
+from .lateral import LateralStep, lateral_step
 
 __version__ = _deckland.__version__
 
@@ -47,11 +50,13 @@ __all__ = [
     "Approach",
     "Campaign",
     "Flight",
+    "LateralStep",
     "LinearModel",
     "Scenario",
     "Trim",
     "campaign",
     "fly",
+    "lateral_step",
     "linearize",
     "linearize_six_dof",
     "trim",

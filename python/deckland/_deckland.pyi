@@ -175,6 +175,15 @@ def fly(
     pitch_law: Optional[PitchLaw] = None,
     control_interval_s: float = 0.02,
 ) -> Tuple[Dict[str, Any], Dict[str, np.ndarray], List[Dict[str, Any]]]: ...
+def lateral_step(
+    axis: str = "roll",
+    step_deg: float = 10.0,
+    seconds: float = 8.0,
+    conditions: str = "ideal",
+    seed: int = 1,
+    controller: str = "both",
+    scenario: Optional[Scenario] = None,
+) -> Tuple[Dict[str, Any], Dict[str, np.ndarray]]: ...
 def campaign(
     scenario: Scenario,
     runs: int,

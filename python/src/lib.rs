@@ -27,6 +27,7 @@ mod convert;
 mod errors;
 mod flight;
 mod gym;
+mod lateral_step;
 mod outputs;
 mod render;
 mod scenario;
@@ -48,6 +49,8 @@ mod _deckland {
     use super::flight::fly;
     #[pymodule_export]
     use super::gym::{Env, VecEnv};
+    #[pymodule_export]
+    use super::lateral_step::lateral_step;
     #[pymodule_export]
     use super::scenario::Scenario;
     #[pymodule_export]

@@ -2,7 +2,7 @@
 //! step, the adverse one over 20 seeds (median settling time and fraction settled, the
 //! aileron's rate RMS and time on its rate limit, the largest sideslip), the sideslip
 //! step, and a 5 m/s 1 − cos crosswind gust (4 s) with the wings held level, for the
-//! O-PD and the PID. Run with
+//! O-PD and the PID, and the O-PD with other crossovers of the sideslip blend. Run with
 //! `cargo run --release -p deckland --example lateral_step_study`.
 
 use deckland::experiments::{
@@ -89,6 +89,56 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             "5 m/s crosswind gust (1 − cos, 4 s), wings level: max |β| {:.2}°, peak rudder \
              {:.1}°, peak aileron {:.1}°\n",
             gust.max_sideslip_error_deg, gust.max_rudder_deg, gust.max_aileron_deg
+        );
+    }
+    // The sideslip blend's crossover: quiet against coordination in the gust (O-PD).
+    println!("== the O-PD with the sideslip blend's crossover k_c (none: raw air data)");
+    for crossover in [None, Some(2.0), Some(3.0), Some(4.0), Some(5.0), Some(10.0)] {
+        let with = |step: LateralStep| LateralStep {
+            sideslip_blend_crossover_radps: crossover,
+            ..step
+        };
+        let mut runs = Vec::new();
+        for seed in 1..=SEEDS {
+            let step = LateralStep {
+                adverse: true,
+                seed,
+                ..LateralStep::new(LateralAxis::Roll, 10.0, 8.0)
+            };
+            runs.push(fly(&setup, "observer_pd", &with(step))?);
+        }
+        let settled: Vec<f64> = runs
+            .iter()
+            .filter(|r| r.settled)
+            .filter_map(|r| r.settling_time_s)
+            .collect();
+        let ideal = fly(
+            &setup,
+            "observer_pd",
+            &with(LateralStep::new(LateralAxis::Roll, 10.0, 8.0)),
+        )?;
+        let gust = fly(
+            &setup,
+            "observer_pd",
+            &with(LateralStep {
+                gust: Some(CrosswindGust {
+                    peak_mps: 5.0,
+                    start_s: 1.0,
+                    duration_s: 4.0,
+                }),
+                ..LateralStep::new(LateralAxis::Roll, 0.0, 8.0)
+            }),
+        )?;
+        println!(
+            "k_c {crossover:?} rad/s: adverse settled {}/{SEEDS}, median {:.3} s, rudder rate \
+             RMS median {:.1} °/s, max |β| median {:.2}°; ideal bank step max |β| {:.2}°; \
+             gust max |β| {:.2}°",
+            settled.len(),
+            median(settled.iter().copied()),
+            median(runs.iter().map(|r| r.rudder_rate_rms_degps)),
+            median(runs.iter().map(|r| r.max_sideslip_error_deg)),
+            ideal.max_sideslip_error_deg,
+            gust.max_sideslip_error_deg,
         );
     }
     Ok(())

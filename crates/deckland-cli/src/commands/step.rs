@@ -68,8 +68,9 @@ pub enum StepAxis {
 #[derive(Debug, clap::Args)]
 pub struct StepArgs {
     /// The axis stepped: pitch (default), roll or yaw. Roll and yaw fly the 6-DOF
-    /// aircraft's defaults at the approach trim with the lateral laws
-    /// (docs/lateral-control.md); the hardware set or scenario file then does not apply.
+    /// aircraft at the approach trim with the lateral laws (docs/lateral-control.md): the
+    /// scenario file's aircraft, airspeed and `[control.roll]`/`[control.yaw]` laws, or the
+    /// realistic set's (the paper's set has no lateral axes).
     #[arg(long, value_enum, default_value_t = StepAxis::Pitch)]
     pub(crate) axis: StepAxis,
     /// Which pitch controller(s) fly the step.
@@ -79,7 +80,8 @@ pub struct StepArgs {
     /// motion).
     #[arg(long, value_enum, default_value_t = Conditions::Ideal)]
     pub(crate) conditions: Conditions,
-    /// Pitch step (deg, positive nose-up), applied at t = 1 s; nonzero, |D| <= 10.
+    /// Step (deg), applied at t = 1 s, nonzero: pitch (positive nose-up) |D| <= 10; bank
+    /// (positive right wing down) or sideslip (positive wind from the right) |D| <= 30.
     #[arg(
         long = "step-deg",
         default_value_t = 2.0,

@@ -31,7 +31,7 @@ pub use conditions::Conditions;
 pub use environment::{record_environment, EnvironmentRecord, EnvironmentSample};
 pub use lateral_step::{
     fly_lateral_step, CrosswindGust, LateralAxis, LateralLaws, LateralSample, LateralSetup,
-    LateralStep, LateralStepError, LateralStepResponse, LateralStepRun,
+    LateralStep, LateralStepError, LateralStepReport, LateralStepResponse, LateralStepRun,
     LATERAL_SETTLING_BAND_FRACTION, LATERAL_STEP_TIME_S,
 };
 pub use pitch_step::{

@@ -8,6 +8,7 @@
 //! [`DEFAULT_SCENARIO_TOML`] is the commented default file.
 
 use crate::aircraft::PlantModel;
+use crate::control::lateral::{LateralChannel, LateralLawParameters};
 use crate::control::pitch::PitchControllerParameters;
 use crate::control::{
     DirectLiftParameters, FlightPathParameters, GuidanceParameters, SinkRateControllerParameters,
@@ -22,6 +23,7 @@ mod aircraft;
 mod dispersion;
 mod file;
 mod hardware;
+mod lateral;
 mod template;
 #[cfg(test)]
 mod tests;
@@ -76,6 +78,13 @@ pub struct ControlSection {
     pub rate_limit_check: bool,
     /// Pitch controller: O-PD (default) or PID.
     pub pitch: PitchControllerParameters,
+    /// Roll (bank → aileron) law of the 6-DOF aircraft: O-PD (default) or PID
+    /// (docs/lateral-control.md); keys left out take the roll channel's designed tuning.
+    #[serde(deserialize_with = "crate::control::lateral::deserialize_roll_law")]
+    pub roll: LateralLawParameters,
+    /// Yaw (sideslip → rudder) law of the 6-DOF aircraft, as `roll`.
+    #[serde(deserialize_with = "crate::control::lateral::deserialize_yaw_law")]
+    pub yaw: LateralLawParameters,
     /// Speed (thrust) loop.
     pub speed: SpeedControllerParameters,
     /// Sink-rate (pitch command) loop.
@@ -96,6 +105,8 @@ impl Default for ControlSection {
             flight_computer_rate_hz: Some(80.0),
             rate_limit_check: true,
             pitch: PitchControllerParameters::default(),
+            roll: LateralLawParameters::default_for(LateralChannel::Roll),
+            yaw: LateralLawParameters::default_for(LateralChannel::Yaw),
             speed: SpeedControllerParameters::default(),
             sink_rate: SinkRateControllerParameters::default(),
             guidance: GuidanceParameters::default(),
@@ -113,6 +124,8 @@ impl ControlSection {
             Bounds::closed(10.0, 10_000.0).check("control", "flight_computer_rate_hz", rate)?;
         }
         self.pitch.validate()?;
+        self.roll.validate(LateralChannel::Roll.section())?;
+        self.yaw.validate(LateralChannel::Yaw.section())?;
         self.speed.validate()?;
         self.sink_rate.validate()?;
         self.guidance.validate()?;
@@ -434,6 +447,7 @@ impl Scenario {
         self.approach.validate()?;
         self.outcome.validate()?;
         self.dispersion.validate()?;
+        self.check_lateral_laws()?;
         self.check_time_step_resolves_the_dynamics()
     }
 

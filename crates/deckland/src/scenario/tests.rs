@@ -121,3 +121,143 @@ fn parameters_round_trip_through_json_and_fill_defaults() {
     assert_eq!(partial.ship.pitch_rms_deg, 1.5);
     assert!(serde_json::from_str::<EnvironmentSection>(r#"{"ship": {"heave": 1.0}}"#).is_err());
 }
+
+/// `[control.roll]` and `[control.yaw]`: a law by name, keys left out taking the
+/// channel's designed tuning, read back through the one accessor the loop uses.
+#[test]
+fn lateral_laws_are_read_from_their_sections() {
+    use crate::control::lateral::{LateralChannel, LateralLawParameters, LateralPidParameters};
+    let (roll, yaw) = Scenario::default().lateral_laws();
+    assert_eq!(
+        roll,
+        LateralLawParameters::default_for(LateralChannel::Roll)
+    );
+    assert_eq!(yaw, LateralLawParameters::default_for(LateralChannel::Yaw));
+    assert_ne!(roll, yaw, "the channels' designed tunings differ");
+    let text = "[control.roll]\ntype = \"pid\"\nderivative_per_s = 5.0\n\n\
+                [control.yaw.observer]\nepsilon = 0.5\n";
+    let scenario = load_scenario(text, "lateral.toml").expect("valid");
+    let (roll, yaw) = scenario.lateral_laws();
+    assert_eq!(
+        roll,
+        LateralLawParameters::Pid(LateralPidParameters {
+            proportional_per_s2: 16.0,
+            integral_per_s3: 2.0,
+            derivative_per_s: 5.0,
+        })
+    );
+    let LateralLawParameters::ObserverPd(opd) = yaw else {
+        panic!("the yaw O-PD: {yaw:?}")
+    };
+    assert_eq!(
+        (opd.settling_time_s, opd.observer.epsilon, opd.observer.k3),
+        (2.0, 0.5, 3.0)
+    );
+    // Through a TOML round trip (what `land` writes next to its outputs).
+    let written = toml::to_string(&scenario).expect("serialises");
+    assert_eq!(load_scenario(&written, "written.toml"), Ok(scenario));
+}
+
+#[test]
+fn bad_lateral_keys_are_named_with_their_line() {
+    let cases: &[(&str, &str, usize)] = &[
+        (
+            "[control.roll]\nsettling_time_s = 0.0\n",
+            "control.roll.settling_time_s",
+            2,
+        ),
+        (
+            "[control.yaw]\n\ndamping_ratio = 9.0\n",
+            "control.yaw.damping_ratio",
+            3,
+        ),
+        (
+            "[control.yaw.observer]\nepsilon = 1.5\n",
+            "control.yaw.observer.epsilon",
+            2,
+        ),
+        (
+            "[control.roll]\ntype = \"pid\"\nproportional_per_s2 = -1.0\n",
+            "control.roll.proportional_per_s2",
+            3,
+        ),
+        (
+            "[control.roll]\ntype = \"pid\"\nintegral_per_s3 = nan\n",
+            "control.roll.integral_per_s3",
+            3,
+        ),
+        // The observer must be resolved by the 1 ms step: ε ≥ k3·dt/0.5 = 0.006.
+        (
+            "[control.roll.observer]\nepsilon = 0.002\n",
+            "control.roll.observer.epsilon",
+            2,
+        ),
+    ];
+    for (text, field, line) in cases {
+        let error = load_scenario(text, "bad.toml").expect_err(text);
+        assert!(
+            matches!(error, ScenarioError::OutOfRange { .. }),
+            "{text}: {error}"
+        );
+        assert_eq!(
+            (error.field(), error.line()),
+            (*field, Some(*line)),
+            "{error}"
+        );
+    }
+    let structure: &[(&str, &str, &str)] = &[
+        ("[control.roll]\ntype = \"lqr\"\n", "control.roll", "`lqr`"),
+        (
+            "[control.yaw]\nsettling_time = 2.0\n",
+            "control.yaw.settling_time",
+            "unknown field",
+        ),
+        (
+            "[control.roll]\ntype = \"pid\"\ndamping_ratio = 1.0\n",
+            "control.roll.damping_ratio",
+            "unknown field",
+        ),
+        (
+            "[control.yaw.observer]\nk4 = 1.0\n",
+            "control.yaw.observer.k4",
+            "unknown field",
+        ),
+    ];
+    for (text, field, words) in structure {
+        let error = load_scenario(text, "bad.toml").expect_err(text);
+        let message = error.to_string();
+        assert!(
+            matches!(error, ScenarioError::Structure { .. }) && message.contains(words),
+            "{text}: {message}"
+        );
+        assert!(error.field().starts_with(field), "{text}: {message}");
+    }
+}
+
+/// The paper's set flies the 3-DOF model: a lateral law other than the designed one is
+/// refused, naming the section and its line; the designed values (a paper scenario
+/// written to TOML) are accepted.
+#[test]
+fn the_paper_set_refuses_a_lateral_law() {
+    let text = "hardware = \"paper\"\n\n[control.yaw]\nsettling_time_s = 3.0\n";
+    let error = load_scenario(text, "paper.toml").expect_err("paper with a yaw law");
+    assert_eq!(
+        (error.field(), error.line()),
+        ("control.yaw", Some(3)),
+        "{error}"
+    );
+    assert!(
+        error.to_string().contains("hardware = \"paper\""),
+        "{error}"
+    );
+    let written = toml::to_string(&Scenario::paper()).expect("serialises");
+    assert_eq!(load_scenario(&written, "paper.toml"), Ok(Scenario::paper()));
+    let mut scenario = Scenario::paper();
+    scenario.control.roll = crate::control::lateral::LateralLawParameters::registered(
+        "pid",
+        crate::control::lateral::LateralChannel::Roll,
+    )
+    .expect("registered");
+    let error = scenario.validate().expect_err("paper with a roll PID");
+    assert_eq!(error.path, "control.roll", "{error}");
+}

@@ -1,14 +1,20 @@
 //! `deckland step --axis roll|yaw`: a bank-angle or sideslip step of the 6-DOF aircraft
 //! with the lateral O-PD and/or PID (`experiments::fly_lateral_step`,
 //! docs/lateral-control.md): the same metrics table, CSV, plots and JSON as the pitch step.
+//! The aircraft, its approach airspeed and the laws are the scenario's (`--scenario FILE`,
+//! or the realistic set's defaults): `[aircraft]` with its aileron and rudder actuators,
+//! `approach.airspeed_mps`, and `[control.roll]`, `[control.yaw]` for the controller
+//! flown (`--controller opd` flies the file's O-PD where it names one, else the designed
+//! O-PD; likewise the PID).
 
 use std::path::PathBuf;
 
 use anyhow::{anyhow, bail, Context, Result};
 use deckland::experiments::{
-    fly_lateral_step, LateralAxis, LateralSample, LateralSetup, LateralStep, LateralStepResponse,
-    LATERAL_SETTLING_BAND_FRACTION, LATERAL_STEP_TIME_S,
+    fly_lateral_step, LateralAxis, LateralSample, LateralSetup, LateralStep, LateralStepReport,
+    LateralStepResponse, LATERAL_STEP_TIME_S,
 };
+use deckland::scenario::HardwareSet;
 use serde::Serialize;
 
 use super::{format_option, prefix, StepArgs, MAX_SECONDS, MIN_SECONDS};
@@ -29,20 +35,12 @@ pub(crate) struct LateralRun {
     pub(crate) result: LateralStepResponse,
 }
 
-/// The JSON document of `deckland step --axis roll|yaw --json`.
+/// The JSON document of `deckland step --axis roll|yaw --json`: the library's report and
+/// where the files went.
 #[derive(Debug, Serialize)]
 struct LateralReport {
-    axis: LateralAxis,
-    conditions: &'static str,
-    step_deg: f64,
-    seed: u64,
-    seconds: f64,
-    step_time_s: f64,
-    airspeed_mps: f64,
-    settling_band_pct: f64,
-    aileron_rate_limit_degps: Option<f64>,
-    rudder_rate_limit_degps: Option<f64>,
-    controllers: Vec<LateralStepResponse>,
+    #[serde(flatten)]
+    report: LateralStepReport,
     output_folder: String,
 }
 
@@ -79,7 +77,20 @@ pub(crate) fn run(args: &StepArgs, axis: LateralAxis) -> Result<()> {
             axis_name(axis)
         );
     }
-    let setup = LateralSetup::approach().map_err(|e| anyhow!("{e}"))?;
+    let scenario = args.base.base()?;
+    if scenario.hardware == HardwareSet::Paper {
+        bail!(
+            "{} has no {} axis: the paper's hardware set flies the 3-DOF model; fly the \
+             lateral step on the realistic set (the default) or on a scenario file of it",
+            if args.base.scenario.is_some() {
+                "a scenario file with `hardware = \"paper\"`"
+            } else {
+                "--hardware paper"
+            },
+            axis_name(axis)
+        );
+    }
+    let setup = LateralSetup::from_scenario(&scenario).map_err(|e| anyhow!("{e}"))?;
     let step = LateralStep {
         adverse: args.conditions == Conditions::Adverse,
         seed: args.seed,
@@ -90,7 +101,7 @@ pub(crate) fn run(args: &StepArgs, axis: LateralAxis) -> Result<()> {
         .choices()
         .into_iter()
         .map(|choice| {
-            let (roll, yaw) = setup.registered_laws(law_name(choice))?;
+            let (roll, yaw) = setup.scenario_laws(&scenario, law_name(choice))?;
             let run = fly_lateral_step(&setup, &step, roll.as_ref(), yaw.as_ref())
                 .with_context(|| format!("cannot fly the {} lateral step", choice.label()))?;
             Ok(LateralRun {
@@ -106,17 +117,7 @@ pub(crate) fn run(args: &StepArgs, axis: LateralAxis) -> Result<()> {
         written.extend(figure.save(&output, stem)?);
     }
     let report = LateralReport {
-        axis,
-        conditions: args.conditions.name(),
-        step_deg: args.step_deg,
-        seed: args.seed,
-        seconds: args.seconds,
-        step_time_s: LATERAL_STEP_TIME_S,
-        airspeed_mps: setup.trim.speed_mps,
-        settling_band_pct: LATERAL_SETTLING_BAND_FRACTION * 100.0,
-        aileron_rate_limit_degps: setup.aircraft.aileron().parameters().rate_limit_degps,
-        rudder_rate_limit_degps: setup.aircraft.rudder().parameters().rate_limit_degps,
-        controllers: runs.into_iter().map(|r| r.result).collect(),
+        report: LateralStepReport::new(&setup, &step, runs.into_iter().map(|r| r.result).collect()),
         output_folder: output.path().display().to_string(),
     };
     if args.output.json {
@@ -135,44 +136,11 @@ pub(crate) fn axis_name(axis: LateralAxis) -> &'static str {
     }
 }
 
-/// The columns of one controller's samples in `step.csv`.
-const COLUMNS: [&str; 12] = [
-    "bank_deg",
-    "bank_command_deg",
-    "sideslip_deg",
-    "sideslip_command_deg",
-    "heading_deg",
-    "roll_rate_degps",
-    "yaw_rate_degps",
-    "aileron_deg",
-    "aileron_rate_degps",
-    "rudder_deg",
-    "rudder_rate_degps",
-    "wind_y_mps",
-];
-
-fn values(s: &LateralSample) -> [f64; 12] {
-    [
-        s.bank_deg,
-        s.bank_command_deg,
-        s.sideslip_deg,
-        s.sideslip_command_deg,
-        s.heading_deg,
-        s.roll_rate_degps,
-        s.yaw_rate_degps,
-        s.aileron_deg,
-        s.aileron_rate_degps,
-        s.rudder_deg,
-        s.rudder_rate_degps,
-        s.wind_y_mps,
-    ]
-}
-
 fn csv_bytes(runs: &[LateralRun]) -> Result<Vec<u8>> {
     let mut writer = csv::Writer::from_writer(Vec::new());
     let mut header = vec!["time_s".to_string()];
     for run in runs {
-        for column in COLUMNS {
+        for column in LateralSample::COLUMNS {
             header.push(format!("{}_{column}", prefix(run.choice)));
         }
     }
@@ -188,8 +156,11 @@ fn csv_bytes(runs: &[LateralRun]) -> Result<Vec<u8>> {
         );
         for run in runs {
             match run.samples.get(index) {
-                Some(s) => record.extend(values(s).iter().map(f64::to_string)),
-                None => record.extend(std::iter::repeat_n(String::new(), COLUMNS.len())),
+                Some(s) => record.extend(s.values().iter().map(f64::to_string)),
+                None => record.extend(std::iter::repeat_n(
+                    String::new(),
+                    LateralSample::COLUMNS.len(),
+                )),
             }
         }
         writer.write_record(&record)?;
@@ -197,7 +168,8 @@ fn csv_bytes(runs: &[LateralRun]) -> Result<Vec<u8>> {
     writer.into_inner().map_err(|e| anyhow!("{e}"))
 }
 
-fn print_table(report: &LateralReport, written: &[PathBuf]) -> Result<()> {
+fn print_table(document: &LateralReport, written: &[PathBuf]) -> Result<()> {
+    let report = &document.report;
     let (angle, channel) = match report.axis {
         LateralAxis::Roll => ("Bank", "sideslip held at 0 by the yaw law"),
         LateralAxis::Yaw => ("Sideslip", "bank held at 0 by the roll law"),
@@ -254,7 +226,11 @@ fn print_table(report: &LateralReport, written: &[PathBuf]) -> Result<()> {
             outln!("  {} did not settle: {reason}", c.controller)?;
         }
     }
-    outln!("Wrote {} files to {}:", written.len(), report.output_folder)?;
+    outln!(
+        "Wrote {} files to {}:",
+        written.len(),
+        document.output_folder
+    )?;
     for path in written {
         if let Some(name) = path.file_name() {
             outln!("  {}", name.to_string_lossy())?;

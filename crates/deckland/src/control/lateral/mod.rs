@@ -41,6 +41,11 @@ use crate::estimation::ObserverParameters;
 use crate::parameters::{join, Bounds, ParameterError};
 
 pub mod design;
+mod parameters;
+mod sideslip;
+
+pub use parameters::{deserialize_roll_law, deserialize_yaw_law, DEFAULT_LATERAL_LAW};
+pub use sideslip::{SideslipBlend, SIDESLIP_BLEND_CROSSOVER_RADPS};
 
 /// Where the roll law's parameters are named in errors.
 pub const ROLL_SECTION: &str = "control.roll";
@@ -315,9 +320,10 @@ impl LateralLawParameters {
                 }))
             }
             // ε = 0.2 keeps β within ±1° through the bank step and the 5 m/s gust; the
-            // price is the rudder's activity on the air-data sideslip's noise (σ 0.2°,
-            // through 1/|N_δr| ≈ 2.1): rate RMS 78 °/s of its 82 °/s limit in adverse
-            // conditions (ε = 0.6: 59 °/s, but 1.8° of β in the gust; docs/lateral-control.md).
+            // price is the rudder's activity on what is left of the air-data sideslip's
+            // noise after the sideslip blend (`SideslipBlend`; through 1/|N_δr| ≈ 2.1):
+            // rate RMS 75 °/s of its 82 °/s limit in adverse conditions
+            // (docs/lateral-control.md).
             ("observer_pd", LateralChannel::Yaw) => {
                 Some(Self::ObserverPd(LateralObserverPdParameters {
                     settling_time_s: 2.0,
@@ -339,6 +345,14 @@ impl LateralLawParameters {
                 derivative_per_s: 3.77,
             })),
             _ => None,
+        }
+    }
+
+    /// The law's `type` name in a scenario file: `observer_pd` or `pid`.
+    pub fn type_name(&self) -> &'static str {
+        match self {
+            Self::ObserverPd(_) => "observer_pd",
+            Self::Pid(_) => "pid",
         }
     }
 

@@ -30,7 +30,7 @@ use crate::control::design::command_shaping::JerkLimitedStep;
 use crate::control::design::{design_command, DesignRequest};
 use crate::control::lateral::design::channel_hardware;
 use crate::control::lateral::{
-    ChannelInputs, LateralChannel, RollLaw, RollLawInputs, YawLaw, YawLawInputs,
+    ChannelInputs, LateralChannel, RollLaw, RollLawInputs, SideslipBlend, YawLaw, YawLawInputs,
 };
 use crate::control::pitch::ElevatorSaturation;
 use crate::environment::Wind;
@@ -41,7 +41,7 @@ mod response;
 mod setup;
 mod spec;
 
-pub use response::LateralStepResponse;
+pub use response::{LateralStepReport, LateralStepResponse};
 pub use setup::{LateralLaws, LateralSetup};
 pub use spec::{
     CrosswindGust, LateralAxis, LateralSample, LateralStep, LateralStepError, LateralStepRun,
@@ -172,6 +172,11 @@ pub fn fly_lateral_step(
     let steps = (step.seconds / DT_S).round() as usize;
     let record_every = ((step.record_interval_s / DT_S).round() as usize).max(1);
     let mut frame_index: i64 = -1;
+    let mut blend = step
+        .sideslip_blend_crossover_radps
+        .map(SideslipBlend::new)
+        .transpose()?;
+    let mut last_inertial_rate_radps = 0.0;
     let mut diverged = false;
     for k in 0..=steps {
         let t = k as f64 * DT_S;
@@ -200,6 +205,7 @@ pub fn fly_lateral_step(
         if frame != frame_index {
             frame_index = frame;
             commands = pending;
+            let frame_elapsed_s = t - sample_time_s;
             sample_time_s = t;
             let (bank_noise, beta_noise) = if step.adverse {
                 (
@@ -209,6 +215,22 @@ pub fn fly_lateral_step(
                 )
             } else {
                 (0.0, 0.0)
+            };
+            let air_data_beta = beta + beta_noise;
+            let sideslip_measured = match blend.as_mut() {
+                None => air_data_beta,
+                Some(blend) => {
+                    // The inertial sideslip rate β̇ ≈ v̇/V over the frame (trapezoid).
+                    let airspeed = norm(aircraft.air_velocity(
+                        [plant.u_mps, plant.v_mps, plant.w_mps],
+                        [plant.phi_rad, plant.theta_rad, plant.psi_rad],
+                        &wind,
+                    ));
+                    let rate = aircraft.derivative(&plant, &commands, &wind).v_mps / airspeed;
+                    let mean_rate = 0.5 * (rate + last_inertial_rate_radps);
+                    last_inertial_rate_radps = rate;
+                    blend.update(air_data_beta, mean_rate, frame_elapsed_s)
+                }
             };
             let feed = |stepped: bool| {
                 if stepped {
@@ -235,7 +257,7 @@ pub fn fly_lateral_step(
                 command_rad: beta_ref,
                 command_rate_radps: yaw_rate_ref,
                 command_acceleration_radps2: yaw_acc_ref,
-                measured_rad: beta + beta_noise,
+                measured_rad: sideslip_measured,
                 measurement_age_s: 0.0,
                 rate_measured_radps: -plant.r_radps,
                 surface_actual_rad: plant.rudder_rad,
@@ -328,6 +350,10 @@ pub fn fly_lateral_step(
     }
     .to_owned();
     Ok(LateralStepRun { samples, response })
+}
+
+fn norm(v: [f64; 3]) -> f64 {
+    (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt()
 }
 
 fn add(x: &[f64; N], k: &[f64; N], h: f64) -> [f64; N] {

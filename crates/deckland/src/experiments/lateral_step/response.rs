@@ -9,6 +9,57 @@ use crate::control::design::command_shaping::JerkLimitedStep;
 use crate::control::lateral::LateralChannel;
 use crate::metrics::{root_mean_square, step_response_metrics, StepResponseSpec};
 
+/// What a set of lateral steps flew and measured: the document `deckland step --axis
+/// roll|yaw --json` prints (without its output folder) and the Python package returns.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LateralStepReport {
+    /// The axis stepped.
+    pub axis: super::spec::LateralAxis,
+    /// `ideal` or `adverse`.
+    pub conditions: &'static str,
+    /// Step size (deg).
+    pub step_deg: f64,
+    /// Seed of the random streams.
+    pub seed: u64,
+    /// Length of the run (s).
+    pub seconds: f64,
+    /// Time of the step (s).
+    pub step_time_s: f64,
+    /// Trim airspeed (m/s).
+    pub airspeed_mps: f64,
+    /// Half-width of the settling band (% of the step).
+    pub settling_band_pct: f64,
+    /// The aileron's rate limit (deg/s); `None` when it has none.
+    pub aileron_rate_limit_degps: Option<f64>,
+    /// The rudder's rate limit (deg/s); `None` when it has none.
+    pub rudder_rate_limit_degps: Option<f64>,
+    /// Each pair of laws' response, in the order flown.
+    pub controllers: Vec<LateralStepResponse>,
+}
+
+impl LateralStepReport {
+    /// The report of `step` flown on `setup` with the responses `controllers`.
+    pub fn new(
+        setup: &super::LateralSetup,
+        step: &LateralStep,
+        controllers: Vec<LateralStepResponse>,
+    ) -> Self {
+        Self {
+            axis: step.axis,
+            conditions: if step.adverse { "adverse" } else { "ideal" },
+            step_deg: step.step_deg,
+            seed: step.seed,
+            seconds: step.seconds,
+            step_time_s: LATERAL_STEP_TIME_S,
+            airspeed_mps: setup.trim.speed_mps,
+            settling_band_pct: LATERAL_SETTLING_BAND_FRACTION * 100.0,
+            aileron_rate_limit_degps: setup.aircraft.aileron().parameters().rate_limit_degps,
+            rudder_rate_limit_degps: setup.aircraft.rudder().parameters().rate_limit_degps,
+            controllers,
+        }
+    }
+}
+
 /// The measured response of one pair of laws.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct LateralStepResponse {

@@ -4,6 +4,7 @@
 use serde::Serialize;
 
 use super::response::LateralStepResponse;
+use crate::control::lateral::SIDESLIP_BLEND_CROSSOVER_RADPS;
 use crate::metrics::MetricsError;
 use crate::parameters::ParameterError;
 
@@ -72,10 +73,14 @@ pub struct LateralStep {
     pub gust: Option<CrosswindGust>,
     /// How often the run is recorded (s).
     pub record_interval_s: f64,
+    /// Crossover k_c (rad/s) of the sideslip blend the yaw law reads
+    /// (`control::lateral::SideslipBlend`), or `None` for the raw air-data sideslip.
+    pub sideslip_blend_crossover_radps: Option<f64>,
 }
 
 impl LateralStep {
-    /// An ideal step of `step_deg` on `axis` lasting `seconds`, recorded every 2 ms.
+    /// An ideal step of `step_deg` on `axis` lasting `seconds`, recorded every 2 ms, the
+    /// yaw law reading the blended sideslip.
     pub fn new(axis: LateralAxis, step_deg: f64, seconds: f64) -> Self {
         Self {
             axis,
@@ -85,6 +90,7 @@ impl LateralStep {
             seed: 1,
             gust: None,
             record_interval_s: 0.002,
+            sideslip_blend_crossover_radps: Some(SIDESLIP_BLEND_CROSSOVER_RADPS),
         }
     }
 }
@@ -120,6 +126,44 @@ pub struct LateralSample {
     pub wind_y_mps: f64,
     /// Altitude (m).
     pub altitude_m: f64,
+}
+
+impl LateralSample {
+    /// The recorded signals' names (units in the names), in the order of
+    /// [`LateralSample::values`]: the columns of `step.csv` after the controller's prefix
+    /// and of the Python package's time series.
+    pub const COLUMNS: [&'static str; 12] = [
+        "bank_deg",
+        "bank_command_deg",
+        "sideslip_deg",
+        "sideslip_command_deg",
+        "heading_deg",
+        "roll_rate_degps",
+        "yaw_rate_degps",
+        "aileron_deg",
+        "aileron_rate_degps",
+        "rudder_deg",
+        "rudder_rate_degps",
+        "wind_y_mps",
+    ];
+
+    /// The recorded signals in the order of [`LateralSample::COLUMNS`].
+    pub fn values(&self) -> [f64; 12] {
+        [
+            self.bank_deg,
+            self.bank_command_deg,
+            self.sideslip_deg,
+            self.sideslip_command_deg,
+            self.heading_deg,
+            self.roll_rate_degps,
+            self.yaw_rate_degps,
+            self.aileron_deg,
+            self.aileron_rate_degps,
+            self.rudder_deg,
+            self.rudder_rate_degps,
+            self.wind_y_mps,
+        ]
+    }
 }
 
 /// A flown lateral step.
