@@ -20,17 +20,11 @@ use crate::random::{stream_names, RandomStreams};
 use crate::scenario::{Mission, Scenario};
 use crate::sensors::LateralShipMotionSensor;
 
-/// The roll and yaw laws the 3-D approach flies: the registered O-PD on each channel
-/// (docs/lateral-control.md). The one place the laws are chosen.
-pub fn lateral_laws(_scenario: &Scenario) -> (LateralLawParameters, LateralLawParameters) {
-    let registered = |channel| {
-        LateralLawParameters::registered("observer_pd", channel)
-            .unwrap_or_else(|| unreachable!("the O-PD is registered on both channels"))
-    };
-    (
-        registered(LateralChannel::Roll),
-        registered(LateralChannel::Yaw),
-    )
+/// The roll and yaw laws the 3-D approach flies: the scenario's `[control.roll]` and
+/// `[control.yaw]` (by default the O-PD designed on each channel;
+/// docs/lateral-control.md). The one place the laws are chosen.
+pub fn lateral_laws(scenario: &Scenario) -> (LateralLawParameters, LateralLawParameters) {
+    scenario.lateral_laws()
 }
 
 /// What the 3-D approach adds to a run at its start.
