@@ -229,7 +229,7 @@ pub enum WaveOffCriterion {
     /// Predicted landing point too far from its mean height.
     LandingPointDisplacement,
     /// 3-D approach: lineup error predicted at touchdown beyond the limit
-    /// ([`super::wave_off_lateral`]).
+    /// (`control::wave_off_lateral`).
     LineupError,
     /// 3-D approach: drifting across the centreline too fast.
     LineupDriftRate,

@@ -1,7 +1,7 @@
 //! Lateral wave-off criteria of the 3-D approach (shared model §10.8; docs/model.md
 //! §10.3): in the decision window of [`super::WaveOffParameters`], wave off when the
-//! lineup error predicted at touchdown, or the drift across the landing area's
-//! centreline, is beyond its limit. The limits are assumptions, named here: half the
+//! lineup error predicted at touchdown (the caller's forecast, under the lineup loop),
+//! or the drift across the landing area's centreline, is beyond its limit. The limits are assumptions, named here: half the
 //! arresting gear's off-centre limit (6.1 m) for the predicted error, so that the
 //! scatter of the last seconds stays within it, and the touchdown drift limit (1.5 m/s)
 //! for the drift.
@@ -27,22 +27,22 @@ impl Default for LateralWaveOffLimits {
 }
 
 impl LateralWaveOffLimits {
-    /// The decision at `time_to_go_s` for a hook `error_m` right of the (forecast)
-    /// centreline and drifting across it at `error_rate_mps`: the predicted error at
-    /// touchdown is error + rate·time to go. `None` outside the window of `window`
+    /// The decision at `time_to_go_s` for a hook whose lineup error is predicted to be
+    /// `predicted_error_m` at touchdown (right of the forecast centreline) and which
+    /// drifts across it at `error_rate_mps` now. `None` outside the window of `window`
     /// or within limits; `predicted_ramp_clearance_m` is carried into the decision.
     pub fn decide(
         &self,
         window: &WaveOffParameters,
         time_to_go_s: f64,
-        error_m: f64,
+        predicted_error_m: f64,
         error_rate_mps: f64,
         predicted_ramp_clearance_m: f64,
     ) -> Option<WaveOffDecision> {
         if !window.in_window(time_to_go_s) {
             return None;
         }
-        let predicted = error_m + error_rate_mps * time_to_go_s.max(0.0);
+        let predicted = predicted_error_m;
         let checks = [
             (
                 WaveOffCriterion::LineupError,
@@ -77,15 +77,15 @@ mod tests {
     fn a_predicted_lineup_error_or_a_fast_drift_waves_off_in_the_window_only() {
         let window = WaveOffParameters::default();
         let limits = LateralWaveOffLimits::default();
-        // 3 s to go, 1 m right drifting right at 1 m/s: 4 m predicted, beyond 3.05.
+        // 3 s to go, 4 m right predicted at touchdown: beyond 3.05.
         let decision = limits
-            .decide(&window, 3.0, 1.0, 1.0, 2.0)
+            .decide(&window, 3.0, 4.0, 1.0, 2.0)
             .expect("waves off");
         assert_eq!(decision.criterion, WaveOffCriterion::LineupError);
         assert!((decision.value - 4.0).abs() < 1e-12);
-        // Drifting back to the line: no error predicted, but 2 m/s is too fast.
+        // On the line at touchdown, but drifting at 2 m/s now: too fast.
         let decision = limits
-            .decide(&window, 3.0, 3.0, -2.0, 2.0)
+            .decide(&window, 3.0, 0.0, -2.0, 2.0)
             .expect("waves off");
         assert_eq!(decision.criterion, WaveOffCriterion::LineupDriftRate);
         assert!(limits.decide(&window, 3.0, 1.0, -0.2, 2.0).is_none());

@@ -3,7 +3,7 @@
 //! the landing point's lateral motion, the bank and sideslip measurements, and the
 //! lateral wave-off criteria.
 
-use super::forecast::lateral_landing_point_forecast_m;
+use super::forecast::{lateral_landing_point_forecast_m, oscillator_forecast};
 use super::HeldLateral;
 use crate::aircraft::six_dof::SixDofAircraft;
 use crate::aircraft::Plant;
@@ -73,12 +73,21 @@ impl ClosedLoop {
             None
         } else {
             // In the decision window the compensation is fully in (its window is
-            // longer): the error to the forecast centreline, and its rate.
+            // longer): the error to the forecast centreline, and its rate, carried to
+            // touchdown by the lineup loop's own response (poles at ω, ζ), not by a
+            // straight drift, which the loop is correcting.
             let error = kinematics.hook.y_m - lateral.mean_drift_rate_mps * t - forecast_m;
             let rate = kinematics.velocity.y_mps - lateral.mean_drift_rate_mps;
+            let predicted = oscillator_forecast(
+                error,
+                rate,
+                lateral.lineup.natural_frequency_radps,
+                lateral.lineup.damping_ratio.min(0.99),
+                time_to_go_s,
+            );
             lateral
                 .wave_off
-                .decide(&self.wave_off, time_to_go_s, error, rate, f64::NAN)
+                .decide(&self.wave_off, time_to_go_s, predicted, rate, f64::NAN)
         };
         Some(LateralStep {
             held: HeldLateral {
