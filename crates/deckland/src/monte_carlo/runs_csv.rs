@@ -1,6 +1,7 @@
 //! A shard's `runs.csv` text read back into checked rows: the same columns, the same
 //! checks and the same words for every front end (the CLI's `merge`, Python, Dask).
 
+use super::lateral::LATERAL_RUN_COLUMNS;
 use super::limits::{MAX_CONTROLLERS, MAX_RUNS};
 use super::merge_error::MergeError;
 use super::row::{RunRow, RUN_COLUMNS};
@@ -21,6 +22,17 @@ pub fn parse_runs_csv(location: &str, text: &str) -> Result<Vec<RunRow<'static>>
         .unwrap_or_default()
         .trim_end_matches('\r');
     let columns: Vec<&str> = header.split(',').collect();
+    if columns.len() == RUN_COLUMNS.len() + LATERAL_RUN_COLUMNS.len()
+        && columns[..RUN_COLUMNS.len()] == RUN_COLUMNS
+        && columns[RUN_COLUMNS.len()..] == LATERAL_RUN_COLUMNS
+    {
+        return Err(at(
+            1,
+            "a 3-D approach campaign's shard (its lateral columns): merging those is not \
+             supported yet; fly the 3-D campaign whole (`deckland campaign` without `--shard`)"
+                .to_owned(),
+        ));
+    }
     if columns != RUN_COLUMNS {
         let position = RUN_COLUMNS
             .iter()
@@ -95,4 +107,27 @@ pub fn parse_runs_csv(location: &str, text: &str) -> Result<Vec<RunRow<'static>>
         rows.push(row);
     }
     Ok(rows)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_three_d_shard_is_refused_by_name() {
+        let header = format!(
+            "{},{}\n",
+            RUN_COLUMNS.join(","),
+            LATERAL_RUN_COLUMNS.join(",")
+        );
+        let error = parse_runs_csv("s1/runs.csv", &header)
+            .unwrap_err()
+            .to_string();
+        assert!(error.contains("3-D approach campaign"), "{error}");
+        assert!(error.contains("s1/runs.csv"), "{error}");
+        // One lateral column too few is an unknown header, as before.
+        let cut = format!("{},{}\n", RUN_COLUMNS.join(","), LATERAL_RUN_COLUMNS[0]);
+        let error = parse_runs_csv("s1/runs.csv", &cut).unwrap_err().to_string();
+        assert!(error.contains("is not a column of a campaign"), "{error}");
+    }
 }
