@@ -158,6 +158,11 @@ pub struct FlightPathParameters {
     /// its rate limit, docs/model.md §5.7); 0.25 s; [0, 2] s (at most half the
     /// ramp-to-aim-point segment is used).
     pub descent_blend_s: f64,
+    /// With `descend_after_ramp`, the most sink rate the descent after the ramp adds to
+    /// the path (m/s): a larger raise is shed only in part, so that the path never dives
+    /// at a deck that may be rising (a hard landing) and lands long instead (a bolter);
+    /// 20 m/s leaves the shed uncapped; (0, 20] (docs/model.md §5.7).
+    pub max_descent_after_ramp_sink_mps: f64,
     /// Touchdown-point correction (m along the deck, positive forward): the path aims
     /// this far from the aim point, to cancel the air wake's systematic push of the
     /// touchdown forward (docs/model.md §5.7); measured in calm water. 0 in the paper's
@@ -169,9 +174,9 @@ pub struct FlightPathParameters {
     pub wake_feedforward: bool,
     /// Lead τ of the wake feed-forward (s): Δθ = (W_z + τ·dW_z/dt)/V, the wind's change
     /// along the path fed τ ahead to make up for the flight path's lag behind pitch
-    /// (about 2 s, docs/model.md §5.5); 0 (none) in both sets: 2 s centres the moderate
-    /// sea's touchdowns but the paper's sea struck the ramp 50 times in 7000 approaches
-    /// against 43 without (docs/no-oracle-results.md).
+    /// (about 2 s, docs/model.md §5.5); 2 s in the realistic set (the wake's float at the
+    /// stern moves the moderate sea's touchdowns 0.6 m less long, and the paper's sea
+    /// boards more, docs/landing-design.md), 0 (none) in the paper's.
     pub wake_feedforward_lead_s: f64,
 }
 
@@ -191,6 +196,7 @@ impl Default for FlightPathParameters {
             ramp_clearance_margin_m: 2.0,
             descend_after_ramp: true,
             descent_blend_s: 0.25,
+            max_descent_after_ramp_sink_mps: 1.5,
             ramp_strike_probability_limit: 0.02,
             max_ramp_clearance_m: 4.0,
             hook_height_sigma_m: 0.3,
@@ -198,7 +204,7 @@ impl Default for FlightPathParameters {
             ramp_crossing_time_sigma_s: 0.1,
             touchdown_correction_m: 0.0,
             wake_feedforward: true,
-            wake_feedforward_lead_s: 0.0,
+            wake_feedforward_lead_s: 2.0,
         }
     }
 }
@@ -224,7 +230,7 @@ impl FlightPathParameters {
 
     /// Checks the glide slope is in (0°, 10°], the compensation window in [0, 60] s, the
     /// blend in (0, 30] s, the lead in [0, 10] s, the filters in (0, 100] rad/s, the ramp
-    /// margin in [0, 20] m, the descent's blend in [0, 2] s, the ramp-strike probability limit in [0, 0.5), the clearance's cap in [margin, 20] m, σ_h in [0, 5] m, the σ's shortest horizon in [0, 10] s, σ_t in [0, 2] s, the touchdown correction in [−50, 50] m and the wake
+    /// margin in [0, 20] m, the descent's blend in [0, 2] s and its extra sink in (0, 20] m/s, the ramp-strike probability limit in [0, 0.5), the clearance's cap in [margin, 20] m, σ_h in [0, 5] m, the σ's shortest horizon in [0, 10] s, σ_t in [0, 2] s, the touchdown correction in [−50, 50] m and the wake
     /// feed-forward's lead in [0, 10] s.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "control.flight_path";
@@ -256,6 +262,11 @@ impl FlightPathParameters {
             self.ramp_clearance_margin_m,
         )?;
         Bounds::closed(0.0, 2.0).check(SECTION, "descent_blend_s", self.descent_blend_s)?;
+        Bounds::positive_up_to(20.0).check(
+            SECTION,
+            "max_descent_after_ramp_sink_mps",
+            self.max_descent_after_ramp_sink_mps,
+        )?;
         Bounds::closed(0.0, 0.5).exclusive_max().check(
             SECTION,
             "ramp_strike_probability_limit",

@@ -28,7 +28,7 @@ pub mod oracle;
 mod raise;
 mod uncertainty;
 
-pub(crate) use raise::raise_share;
+pub(crate) use raise::capped_raise_share;
 pub(crate) use uncertainty::UncertaintyHold;
 
 use std::fmt::Debug;
@@ -345,8 +345,15 @@ impl DeckQuery<'_> {
                 .then_some((parameters.ramp_sigma_min_horizon_s, hook.time_s, hold)),
         );
         let target = ramp_aware_anchor(parameters, self.flight_path, deck, &forecast);
-        let descent = (parameters.ramp_aware && parameters.descend_after_ramp)
-            .then(|| raise_share(parameters, deck, self.aim_x_m - hook.x_m, closure));
+        let descent = (parameters.ramp_aware && parameters.descend_after_ramp).then(|| {
+            capped_raise_share(
+                parameters,
+                deck,
+                self.aim_x_m - hook.x_m,
+                closure,
+                shaping.raise_m(),
+            )
+        });
         let shaped = shaping.step(target, forecast.landing_point_height_m, descent, hook.dt);
         DeckReference {
             mean_aim: self.mean_aim,
