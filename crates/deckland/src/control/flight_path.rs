@@ -111,11 +111,9 @@ pub struct FlightPathParameters {
     /// on in the realistic set, off in the paper's.
     pub ramp_aware: bool,
     /// Smallest hook-over-ramp clearance the path keeps above the predicted ramp (m);
-    /// 2.0 m, raised by the risk-aware clearance where the forecast is uncertain or the
-    /// ramp moves (`ramp_strike_probability_limit`); 2.5 m, fixed, in the paper's set
-    /// (the landing signal officer's minimum is 10 ft, 3.05 m: on this deck, with 3.7 m
-    /// of nominal clearance, keeping it lifts the path so often that a moderate sea
-    /// boards 86 % instead of 95 %; docs/model.md §5.7).
+    /// 2.0 m, raised by the risk-aware clearance (`ramp_strike_probability_limit`); 2.5 m,
+    /// fixed, in the paper's set (the LSO's 3.05 m lifts the path too often on this deck,
+    /// docs/model.md §5.7).
     pub ramp_clearance_margin_m: f64,
     /// With `ramp_aware`, shed the anchor's raise between the ramp and the aim point: the
     /// path crosses the predicted ramp with the margin, then descends on a steeper last
@@ -158,10 +156,11 @@ pub struct FlightPathParameters {
     /// its rate limit, docs/model.md §5.7); 0.25 s; [0, 2] s (at most half the
     /// ramp-to-aim-point segment is used).
     pub descent_blend_s: f64,
+    /// The most sink the descent after the ramp adds (m/s): a larger raise is shed in part
+    /// and the hook lands long, no dive at the deck; 1.5, (0, 20] (docs/model.md §5.7).
+    pub max_descent_after_ramp_sink_mps: f64,
     /// Touchdown-point correction (m along the deck, positive forward): the path aims
-    /// this far from the aim point, to cancel the air wake's systematic push of the
-    /// touchdown forward (docs/model.md §5.7); measured in calm water. 0 in the paper's
-    /// set.
+    /// this far from the aim point (docs/model.md §5.7); 0.
     pub touchdown_correction_m: f64,
     /// Feed the steady air wake's vertical wind forward into the pitch command,
     /// Δθ = W_z/V (docs/model.md §5.7), from the MIL-F-8785C steady-wake model at the
@@ -169,9 +168,8 @@ pub struct FlightPathParameters {
     pub wake_feedforward: bool,
     /// Lead τ of the wake feed-forward (s): Δθ = (W_z + τ·dW_z/dt)/V, the wind's change
     /// along the path fed τ ahead to make up for the flight path's lag behind pitch
-    /// (about 2 s, docs/model.md §5.5); 0 (none) in both sets: 2 s centres the moderate
-    /// sea's touchdowns but the paper's sea struck the ramp 50 times in 7000 approaches
-    /// against 43 without (docs/no-oracle-results.md).
+    /// (about 2 s, docs/model.md §5.5); 2 s in the realistic set (docs/landing-design.md),
+    /// 0 (none) in the paper's.
     pub wake_feedforward_lead_s: f64,
 }
 
@@ -191,6 +189,7 @@ impl Default for FlightPathParameters {
             ramp_clearance_margin_m: 2.0,
             descend_after_ramp: true,
             descent_blend_s: 0.25,
+            max_descent_after_ramp_sink_mps: 1.5,
             ramp_strike_probability_limit: 0.02,
             max_ramp_clearance_m: 4.0,
             hook_height_sigma_m: 0.3,
@@ -198,7 +197,7 @@ impl Default for FlightPathParameters {
             ramp_crossing_time_sigma_s: 0.1,
             touchdown_correction_m: 0.0,
             wake_feedforward: true,
-            wake_feedforward_lead_s: 0.0,
+            wake_feedforward_lead_s: 2.0,
         }
     }
 }
@@ -222,10 +221,7 @@ impl FlightPathParameters {
         }
     }
 
-    /// Checks the glide slope is in (0°, 10°], the compensation window in [0, 60] s, the
-    /// blend in (0, 30] s, the lead in [0, 10] s, the filters in (0, 100] rad/s, the ramp
-    /// margin in [0, 20] m, the descent's blend in [0, 2] s, the ramp-strike probability limit in [0, 0.5), the clearance's cap in [margin, 20] m, σ_h in [0, 5] m, the σ's shortest horizon in [0, 10] s, σ_t in [0, 2] s, the touchdown correction in [−50, 50] m and the wake
-    /// feed-forward's lead in [0, 10] s.
+    /// Checks every value against its range (each field's doc), naming the key.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "control.flight_path";
         Bounds::positive_up_to(10.0).check(SECTION, "glide_slope_deg", self.glide_slope_deg)?;
@@ -256,6 +252,11 @@ impl FlightPathParameters {
             self.ramp_clearance_margin_m,
         )?;
         Bounds::closed(0.0, 2.0).check(SECTION, "descent_blend_s", self.descent_blend_s)?;
+        Bounds::positive_up_to(20.0).check(
+            SECTION,
+            "max_descent_after_ramp_sink_mps",
+            self.max_descent_after_ramp_sink_mps,
+        )?;
         Bounds::closed(0.0, 0.5).exclusive_max().check(
             SECTION,
             "ramp_strike_probability_limit",

@@ -51,6 +51,11 @@ impl AnchorShaping {
         }
     }
 
+    /// The smoothed ramp-aware raise (m), 0 before the first step.
+    pub(crate) fn raise_m(&self) -> f64 {
+        self.raise.map_or(0.0, |(raise_m, _)| raise_m)
+    }
+
     /// Moves the smoothed anchor over `dt` towards `target_m`, held over the step: the
     /// exact solution of ä = ω²(target − a) − 2ω·ȧ (critically damped), so stable at
     /// any step.

@@ -2,7 +2,7 @@
 //! filter, whose estimate is forecast to the hook's touchdown and ramp-crossing times
 //! (docs/model.md §3.5, §5.7).
 
-use super::{DeckPredictor, DeckQuery, DeckView};
+use super::{DeckPredictor, DeckQuery, DeckView, UncertaintyHold};
 use crate::control::DeckReference;
 use crate::environment::{ShipMotionEstimate, ShipMotionPropagator};
 use crate::estimation::DeckMotionEstimator;
@@ -18,6 +18,7 @@ pub struct Estimator {
     propagator: ShipMotionPropagator,
     estimate: ShipMotionEstimate,
     shaping: AnchorShaping,
+    hold: UncertaintyHold,
 }
 
 impl Estimator {
@@ -36,6 +37,7 @@ impl Estimator {
             propagator,
             estimate,
             shaping: AnchorShaping::new(anchor_frequency_radps),
+            hold: UncertaintyHold::new(None),
         }
     }
 }
@@ -45,6 +47,13 @@ impl Estimator {
     /// probabilistic wave-off) when `uncertainty`.
     pub fn with_uncertainty(mut self, uncertainty: bool) -> Self {
         self.shaping = self.shaping.with_uncertainty(uncertainty);
+        self
+    }
+
+    /// The same, the forecast's σ worked out once per frame of a computer at `rate_hz`
+    /// and held over it (`None`: at every step).
+    pub fn with_uncertainty_frames(mut self, rate_hz: Option<f64>) -> Self {
+        self.hold = UncertaintyHold::new(rate_hz);
         self
     }
 }
@@ -69,7 +78,13 @@ impl DeckPredictor for Estimator {
     #[inline]
     fn deck_reference(&mut self, query: &DeckQuery<'_>, _state: &[f64]) -> DeckReference {
         let age_s = query.hook.time_s - self.estimator.time_s();
-        query.shaped_reference(&self.propagator, &self.estimate, age_s, &mut self.shaping)
+        query.shaped_reference(
+            &self.propagator,
+            &self.estimate,
+            age_s,
+            &mut self.shaping,
+            &mut self.hold,
+        )
     }
 
     fn estimator(&self) -> Option<&DeckMotionEstimator> {

@@ -26,8 +26,10 @@ pub mod estimator;
 pub mod filter_lead;
 pub mod oracle;
 mod raise;
+mod uncertainty;
 
-pub(crate) use raise::raise_share;
+pub(crate) use raise::capped_raise_share;
+pub(crate) use uncertainty::UncertaintyHold;
 
 use std::fmt::Debug;
 
@@ -122,6 +124,8 @@ impl Clone for Box<dyn DeckPredictor> {
 }
 
 /// The predictor of a run: the scenario's, called without dynamic dispatch, or a user's.
+// One per simulation, read every step: the oracle stays inline (no indirection).
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone)]
 pub enum BuiltDeckPredictor {
     /// The Kalman estimate of the sensed ship motion, forecast to touchdown.
@@ -165,14 +169,19 @@ impl BuiltDeckPredictor {
             || (wave_off.enabled
                 && (wave_off.max_ramp_strike_probability > 0.0
                     || wave_off.max_hard_landing_probability > 0.0));
+        // The σ is worked out once per frame of the flight computer and held over it.
+        let frames_hz = scenario.control.flight_computer_rate_hz;
         Ok(match flight_path.deck_motion_predictor {
-            DeckPredictorKind::Oracle => Self::Oracle(oracle::Oracle::new(
-                ShipMotionPropagator::new(horizon_s),
-                (flight_path.ramp_aware || scenario.control.wave_off.enabled).then(|| {
-                    AnchorShaping::new(flight_path.anchor_filter_frequency_radps)
-                        .with_uncertainty(uncertainty)
-                }),
-            )),
+            DeckPredictorKind::Oracle => Self::Oracle(
+                oracle::Oracle::new(
+                    ShipMotionPropagator::new(horizon_s),
+                    (flight_path.ramp_aware || scenario.control.wave_off.enabled).then(|| {
+                        AnchorShaping::new(flight_path.anchor_filter_frequency_radps)
+                            .with_uncertainty(uncertainty)
+                    }),
+                )
+                .with_uncertainty_frames(frames_hz),
+            ),
             DeckPredictorKind::Estimator => {
                 let sensing = scenario.environment.ship_sensing;
                 Self::Estimator(Box::new(
@@ -190,7 +199,8 @@ impl BuiltDeckPredictor {
                         ShipMotionPropagator::new(horizon_s + sensing.latency_s + 1.0),
                         flight_path.anchor_filter_frequency_radps,
                     )
-                    .with_uncertainty(uncertainty),
+                    .with_uncertainty(uncertainty)
+                    .with_uncertainty_frames(frames_hz),
                 ))
             }
             DeckPredictorKind::FilterLead => Self::FilterLead(filter_lead::FilterLead::new(
@@ -305,7 +315,8 @@ impl DeckQuery<'_> {
     }
 
     /// The reference from a forecast of `estimate` (`age_s` old) by `predictor`, the
-    /// anchor ramp-aware and shaped by `shaping`: the `estimator`'s design, and the
+    /// anchor ramp-aware and shaped by `shaping`, the forecast's σ held over each guidance
+    /// frame by `hold`: the `estimator`'s design, and the
     /// `oracle`'s with the true state for the estimate. Inlined into the step as the code
     /// it replaced was: called, it cost 0.8 % more instructions per simulated second
     /// (callgrind, BENCHMARKS.md).
@@ -316,6 +327,7 @@ impl DeckQuery<'_> {
         estimate: &ShipMotionEstimate,
         age_s: f64,
         shaping: &mut AnchorShaping,
+        hold: &mut UncertaintyHold,
     ) -> DeckReference {
         let (deck, hook) = (self.view.deck, self.hook);
         let parameters = self.flight_path.parameters();
@@ -330,11 +342,18 @@ impl DeckQuery<'_> {
             deck,
             shaping
                 .uncertainty
-                .then_some(parameters.ramp_sigma_min_horizon_s),
+                .then_some((parameters.ramp_sigma_min_horizon_s, hook.time_s, hold)),
         );
         let target = ramp_aware_anchor(parameters, self.flight_path, deck, &forecast);
-        let descent = (parameters.ramp_aware && parameters.descend_after_ramp)
-            .then(|| raise_share(parameters, deck, self.aim_x_m - hook.x_m, closure));
+        let descent = (parameters.ramp_aware && parameters.descend_after_ramp).then(|| {
+            capped_raise_share(
+                parameters,
+                deck,
+                self.aim_x_m - hook.x_m,
+                closure,
+                shaping.raise_m(),
+            )
+        });
         let shaped = shaping.step(target, forecast.landing_point_height_m, descent, hook.dt);
         DeckReference {
             mean_aim: self.mean_aim,
@@ -359,9 +378,10 @@ impl DeckQuery<'_> {
 /// The forecast of the deck for a hook `time_to_go_s` from touchdown closing at
 /// `closure_mps`, from `estimate` whose time lies `age_s` in the past: the landing point
 /// at touchdown, the ramp when the hook crosses it (`ramp_aft_of_aim_point_m` / closure
-/// earlier); with `uncertainty` = Some(h_min), also the σ of the ramp's height at the
-/// crossing (or h_min ahead, if the crossing is nearer) and of the landing point's climb
-/// rate at touchdown (otherwise 0).
+/// earlier); with `uncertainty` = Some((h_min, now, hold)), also the σ of the ramp's
+/// height at the crossing (or h_min ahead, if the crossing is nearer) and of the landing
+/// point's climb rate at touchdown, worked out when the step from `now` (s) starts a new
+/// frame of `hold` and held otherwise (without, 0).
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn forecast_deck(
     predictor: &ShipMotionPropagator,
@@ -371,7 +391,7 @@ pub(crate) fn forecast_deck(
     time_to_go_s: f64,
     closure_mps: f64,
     deck: &DeckGeometry,
-    uncertainty: Option<f64>,
+    uncertainty: Option<(f64, f64, &mut UncertaintyHold)>,
 ) -> DeckForecast {
     let landing_arm_m = deck.landing_point_aft_of_pitch_centre_m;
     let ramp_arm_m = landing_arm_m + deck.ramp_aft_of_aim_point_m;
@@ -385,25 +405,28 @@ pub(crate) fn forecast_deck(
         predictor.forecast_mean(ship, estimate, touchdown_lead_s);
     let at_ramp = predictor.forecast_mean(ship, estimate, ramp_lead_s);
     let (ramp_height_sigma_m, landing_point_climb_rate_sigma_mps) =
-        if let Some(min_horizon_s) = uncertainty {
-            (
-                predictor.deck_point_sigma(
-                    ship,
-                    estimate,
-                    age_s + ramp_time_s.max(min_horizon_s),
-                    ramp_arm_m,
-                    at_ramp.pitch_rad,
-                    0,
-                ),
-                predictor.deck_point_sigma(
-                    ship,
-                    estimate,
-                    touchdown_lead_s,
-                    landing_arm_m,
-                    at_touchdown.pitch_rad,
-                    1,
-                ),
-            )
+        if let Some((min_horizon_s, now_s, hold)) = uncertainty {
+            if hold.due(now_s) {
+                hold.sigmas = (
+                    predictor.deck_point_sigma(
+                        ship,
+                        estimate,
+                        age_s + ramp_time_s.max(min_horizon_s),
+                        ramp_arm_m,
+                        at_ramp.pitch_rad,
+                        0,
+                    ),
+                    predictor.deck_point_sigma(
+                        ship,
+                        estimate,
+                        touchdown_lead_s,
+                        landing_arm_m,
+                        at_touchdown.pitch_rad,
+                        1,
+                    ),
+                );
+            }
+            hold.sigmas
         } else {
             (0.0, 0.0)
         };

@@ -2,7 +2,7 @@
 //! touchdown time from the ship model's *true* state, which no aircraft can know (studies
 //! and the paper's set).
 
-use super::{DeckPredictor, DeckQuery};
+use super::{DeckPredictor, DeckQuery, UncertaintyHold};
 use crate::control::DeckReference;
 use crate::environment::{ShipMotionEstimate, ShipMotionPropagator, ShipPose};
 use crate::simulation::anchor_shaping::AnchorShaping;
@@ -14,6 +14,7 @@ use crate::simulation::anchor_shaping::AnchorShaping;
 pub struct Oracle {
     propagator: ShipMotionPropagator,
     shaping: Option<AnchorShaping>,
+    hold: UncertaintyHold,
 }
 
 impl Oracle {
@@ -23,7 +24,15 @@ impl Oracle {
         Self {
             propagator,
             shaping,
+            hold: UncertaintyHold::new(None),
         }
+    }
+
+    /// The same, the forecast's σ worked out once per frame of a computer at `rate_hz`
+    /// and held over it (`None`: at every step).
+    pub(crate) fn with_uncertainty_frames(mut self, rate_hz: Option<f64>) -> Self {
+        self.hold = UncertaintyHold::new(rate_hz);
+        self
     }
 }
 
@@ -51,7 +60,7 @@ impl DeckPredictor for Oracle {
                     mean: *view.ship_state,
                     ..ShipMotionEstimate::default()
                 };
-                query.shaped_reference(&self.propagator, &truth, 0.0, shaping)
+                query.shaped_reference(&self.propagator, &truth, 0.0, shaping, &mut self.hold)
             }
         }
     }

@@ -42,3 +42,31 @@ pub(crate) fn raise_share(
     };
     (1.0 - shed, -rate * du_dt)
 }
+
+/// [`raise_share`] with the descent's extra sink capped for a raise of `raise_m` (m): the
+/// shed's peak rate g_max·closure/d_R·raise is held to `max_descent_after_ramp_sink_mps`
+/// by shedding only the share f = min(1, s_max/(g_max·closure/d_R·raise)) of the raise,
+/// so that the path never dives at the deck after the ramp; the raise not shed stays
+/// (the hook lands long, a bolter rather than a hard landing; docs/model.md §5.7).
+pub(crate) fn capped_raise_share(
+    parameters: &FlightPathParameters,
+    deck: &DeckGeometry,
+    range_m: f64,
+    closure_mps: f64,
+    raise_m: f64,
+) -> (f64, f64) {
+    let (share, rate) = raise_share(parameters, deck, range_m, closure_mps);
+    let ramp_range_m = deck.ramp_aft_of_aim_point_m + parameters.touchdown_correction_m;
+    if share >= 1.0 || raise_m <= 0.0 || ramp_range_m <= 0.0 {
+        return (share, rate);
+    }
+    let du_dt = closure_mps.max(0.0) / ramp_range_m;
+    let b = (parameters.descent_blend_s * du_dt).min(0.5);
+    let peak_sink_mps = du_dt / (1.0 - b) * raise_m;
+    let limit = parameters.max_descent_after_ramp_sink_mps;
+    if peak_sink_mps <= limit {
+        return (share, rate);
+    }
+    let shed = limit / peak_sink_mps;
+    (1.0 - shed * (1.0 - share), shed * rate)
+}

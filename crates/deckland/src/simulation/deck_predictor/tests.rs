@@ -1,5 +1,6 @@
 //! Tests of the deck predictors' shared geometry (`deck_predictor/mod.rs`).
 
+use super::raise::raise_share;
 use super::*;
 use crate::control::FlightPathParameters;
 
@@ -141,4 +142,38 @@ fn the_path_sheds_its_raise_smoothly_between_the_ramp_and_the_aim_point() {
     };
     assert_eq!(raise_share(&keep, &deck, 30.0, 60.0), (1.0, 0.0));
     assert!((raise / tan - 13.57).abs() < 0.01, "{}", raise / tan);
+}
+
+/// The descent after the ramp's cap: a 3-m raise shed over the 60-m segment at a 60-m/s
+/// closure with the 0.25-s blend peaks at g_max·closure/d_R·raise = (4/3)·1·3 = 4 m/s
+/// of extra sink (by hand); capped at 2 m/s, half of the raise is shed, so mid-segment
+/// the path keeps 0.75 of it (0.5 uncapped) and sinks (2/3)·3 = 2 m/s faster, no more;
+/// a raise the cap allows is shed as before, bit for bit.
+#[test]
+fn the_descent_after_the_ramp_adds_no_more_sink_than_its_cap() {
+    let deck = DeckGeometry::default();
+    let capped = FlightPathParameters {
+        max_descent_after_ramp_sink_mps: 2.0,
+        ..FlightPathParameters::default()
+    };
+    let (share, rate) = capped_raise_share(&capped, &deck, 30.0, 60.0, 3.0);
+    assert!((share - 0.75).abs() < 1e-12, "{share}");
+    assert!((rate * 3.0 + 2.0).abs() < 1e-12, "{rate}");
+    for range_m in [59.0, 45.0, 30.0, 5.0, 0.5] {
+        let (_, rate) = capped_raise_share(&capped, &deck, range_m, 60.0, 3.0);
+        assert!(-rate * 3.0 <= 2.0 + 1e-12, "{range_m}: {rate}");
+        assert_eq!(
+            capped_raise_share(&capped, &deck, range_m, 60.0, 1.0),
+            raise_share(&capped, &deck, range_m, 60.0),
+            "{range_m}"
+        );
+    }
+    let error = FlightPathParameters {
+        max_descent_after_ramp_sink_mps: 0.0,
+        ..FlightPathParameters::default()
+    }
+    .validate()
+    .unwrap_err()
+    .to_string();
+    assert!(error.contains("max_descent_after_ramp_sink_mps"), "{error}");
 }

@@ -1,0 +1,59 @@
+//! The forecast's σ held over a guidance frame (docs/model.md §2.6, §5.7): the guidance
+//! computer works out the σ of the ramp's height and of the deck's climb rate once per
+//! frame of the flight-control computer and holds them until the next, as a discrete
+//! implementation would; the mean forecast is still worked out every step.
+
+/// The σ of the ramp's height at the crossing (m) and of the landing point's climb rate
+/// at touchdown (m/s), with the frame they were worked out in.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct UncertaintyHold {
+    /// The frame period (s); `None` works them out at every step (no flight computer).
+    period_s: Option<f64>,
+    /// The frame the held values belong to; `None` before the first.
+    frame: Option<i64>,
+    /// The held σ: ramp height (m), landing point climb rate (m/s).
+    pub sigmas: (f64, f64),
+}
+
+impl UncertaintyHold {
+    /// A hold for frames at `rate_hz` (the flight computer's), or none (every step).
+    pub fn new(rate_hz: Option<f64>) -> Self {
+        Self {
+            period_s: rate_hz.map(|rate| 1.0 / rate),
+            frame: None,
+            sigmas: (0.0, 0.0),
+        }
+    }
+
+    /// Whether the step from `time_s` (s) starts a new frame, so that the σ must be
+    /// worked out again; the frames are those of the flight computer (a frame index a
+    /// hair above an integer counts as that integer).
+    pub fn due(&mut self, time_s: f64) -> bool {
+        let Some(period_s) = self.period_s else {
+            return true;
+        };
+        let index = (time_s / period_s + 1e-9).floor() as i64;
+        let new = self.frame != Some(index);
+        self.frame = Some(index);
+        new
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// At 80 Hz on 1-ms steps the σ is worked out at the first step at or after each
+    /// multiple of 12.5 ms (0, 13, 25, 38, 50 ms: by hand), and at every step without a
+    /// computer.
+    #[test]
+    fn the_sigma_is_worked_out_once_per_frame() {
+        let mut hold = UncertaintyHold::new(Some(80.0));
+        let due: Vec<u32> = (0..60_u32)
+            .filter(|&k| hold.due(f64::from(k) * 0.001))
+            .collect();
+        assert_eq!(due, [0, 13, 25, 38, 50]);
+        let mut every = UncertaintyHold::new(None);
+        assert!((0..5_u32).all(|k| every.due(f64::from(k) * 0.001)));
+    }
+}
