@@ -96,8 +96,9 @@ def test_the_default_scenario_is_the_crosswind_file():
 
 
 @pytest.mark.parametrize("mode", MODES)
-def test_every_mode_is_registered_and_passes_the_checker(mode):
-    env = gymnasium.make(ENV_ID_3D, control=mode)
+@pytest.mark.parametrize("render_mode", [None, "rgb_array"])
+def test_every_mode_is_registered_and_passes_the_checker(mode, render_mode):
+    env = gymnasium.make(ENV_ID_3D, control=mode, render_mode=render_mode)
     assert env.action_space.shape == (len(CONTROL_MODES_3D[mode]),)
     assert env.unwrapped.action_names == CONTROL_MODES_3D[mode]
     names = env.unwrapped.observation_names
