@@ -18,7 +18,8 @@ this package calls it directly, so every number is the CLI's, bit for bit.
   cascade flying or your commands replacing its loops, or your own pitch law.
 - ``deckland/CarrierLanding-v1``: a Gymnasium environment on :class:`Approach`'s
   simulation, with a native vectorised version (registered when gymnasium is
-  installed; see :mod:`deckland.env`).
+  installed; see :mod:`deckland.env`); ``deckland/CarrierLanding3D-v0`` the 3-D
+  approach of the 6-DOF aircraft with roll and yaw commands added (:mod:`deckland.env3d`).
 
 Units are SI and angles radians, except where a name says ``_deg``.
 """
@@ -179,14 +180,17 @@ def campaign(
 
 
 def _register_gymnasium() -> None:
-    """Registers ``deckland/CarrierLanding-v1`` when gymnasium is installed."""
+    """Registers ``deckland/CarrierLanding-v1`` and ``deckland/CarrierLanding3D-v0``
+    when gymnasium is installed."""
     import importlib.util
 
     if importlib.util.find_spec("gymnasium") is None:
         return
     from .env import register
+    from .env3d import register as register_3d
 
     register()
+    register_3d()
 
 
 _register_gymnasium()

@@ -168,6 +168,10 @@ class CarrierLandingEnv(gymnasium.Env):
                 forecast,
             )
         )
+        self._describe()
+
+    def _describe(self) -> None:
+        """The description, names and spaces of the core built."""
         self.description = self._core.describe()
         self.observation_names = tuple(row["name"] for row in self.description["observations"])
         self.action_names = tuple(self.description["actions"])
@@ -230,7 +234,7 @@ class CarrierLandingEnv(gymnasium.Env):
         self._np_random = state["np_random"]
 
     def __deepcopy__(self, memo: Dict[int, Any]) -> "CarrierLandingEnv":
-        clone = CarrierLandingEnv.__new__(CarrierLandingEnv)
+        clone = type(self).__new__(type(self))
         clone.__setstate__(copy.deepcopy(self.__getstate__(), memo))
         return clone
 
@@ -273,6 +277,39 @@ class CarrierLandingVecEnv(VectorEnv):
         render_mode: Optional[str] = None,
         max_episode_steps: Optional[int] = MAX_EPISODE_STEPS,
     ) -> None:
+        self._init_vector(
+            num_envs,
+            render_mode,
+            max_episode_steps,
+            control,
+            lambda steps: _VecEnv(
+                int(num_envs),
+                *_options(
+                    scenario,
+                    control,
+                    control_interval_s,
+                    pitch_command_span_rad,
+                    thrust_span_n,
+                    elevator_span_rad,
+                    climb_rate_span_mps,
+                    rewards,
+                    reward,
+                    forecast,
+                ),
+                steps,
+            ),
+        )
+
+    def _init_vector(
+        self,
+        num_envs: int,
+        render_mode: Optional[str],
+        max_episode_steps: Optional[int],
+        control: str,
+        core: Any,
+    ) -> None:
+        """Checks the options, builds the core (``core(max_episode_steps)``) and reads
+        its description."""
         _check_render_mode(render_mode)
         if max_episode_steps is not None and not (isinstance(max_episode_steps, (int, np.integer)) and max_episode_steps > 0):
             raise ValueError(
@@ -281,22 +318,7 @@ class CarrierLandingVecEnv(VectorEnv):
         self.num_envs = int(num_envs)
         self.control = control
         self.render_mode = render_mode
-        self._core = _VecEnv(
-            self.num_envs,
-            *_options(
-                scenario,
-                control,
-                control_interval_s,
-                pitch_command_span_rad,
-                thrust_span_n,
-                elevator_span_rad,
-                climb_rate_span_mps,
-                rewards,
-                reward,
-                forecast,
-            ),
-            None if max_episode_steps is None else int(max_episode_steps),
-        )
+        self._core = core(None if max_episode_steps is None else int(max_episode_steps))
         self.description = self._core.describe()
         self.observation_names = tuple(row["name"] for row in self.description["observations"])
         self.action_names = tuple(self.description["actions"])

@@ -6,15 +6,42 @@ use pyo3::prelude::*;
 
 use super::config::EnvConfig;
 use super::control::{AgentTaps, Control};
+use super::lateral::{self, LateralTaps};
 use crate::errors::argument_error;
 
 impl EnvConfig {
     pub(super) fn action_len(&self) -> usize {
-        self.control.action_names().len()
+        self.action_names().len()
+    }
+
+    /// The action's entries, in order (the wave-off last).
+    pub(super) fn action_names(&self) -> &'static [&'static str] {
+        match self.lateral {
+            Some(_) => lateral::action_names(self.control),
+            None => self.control.action_names(),
+        }
+    }
+
+    /// The built-in loops whose commands reach the aircraft.
+    pub(super) fn built_in_loops(&self) -> Vec<&'static str> {
+        let mut loops = self.control.built_in_loops().to_vec();
+        if self.lateral.is_some() {
+            loops.extend_from_slice(lateral::built_in_loops(self.control));
+        }
+        loops
+    }
+
+    /// Where the lateral entries sit in the action: after the longitudinal ones.
+    fn lateral_entries(&self) -> std::ops::Range<usize> {
+        let first = self.control.action_names().len() - 1;
+        first..self.action_len() - 1
     }
 
     /// The taps of `action` (checked: every entry in [−1, 1]).
     pub(super) fn taps(&self, action: &[f64], waved_off: bool) -> AgentTaps {
+        let lateral = self.lateral.map_or_else(LateralTaps::default, |l| {
+            l.taps(self.control, &action[self.lateral_entries()])
+        });
         let thrust =
             |a: f64| (self.thrust_trim_n + a * self.thrust_span_n).clamp(0.0, self.max_thrust_n);
         let (low, high) = self.elevator_range_rad;
@@ -26,6 +53,7 @@ impl EnvConfig {
                 thrust_n: thrust(action[1]),
                 direct_lift: action[2] * self.max_direct_lift,
                 full_thrust_n: None,
+                lateral,
             },
             Control::Attitude => AgentTaps {
                 control: self.control,
@@ -33,6 +61,7 @@ impl EnvConfig {
                 thrust_n: thrust(action[1]),
                 direct_lift: 0.0,
                 full_thrust_n: None,
+                lateral,
             },
             Control::Guidance => AgentTaps {
                 control: self.control,
@@ -40,6 +69,7 @@ impl EnvConfig {
                 thrust_n: 0.0,
                 direct_lift: 0.0,
                 full_thrust_n: waved_off.then_some(self.max_thrust_n),
+                lateral,
             },
         }
     }
@@ -73,9 +103,20 @@ impl EnvConfig {
                 0.0,
             ],
         };
-        for (out, value) in action.iter_mut().zip(values) {
+        let clipped = |value: f64| {
             let value = if value.is_nan() { 0.0 } else { value };
-            *out = value.clamp(-1.0, 1.0) as f32;
+            value.clamp(-1.0, 1.0) as f32
+        };
+        for (out, value) in action.iter_mut().zip(values) {
+            *out = clipped(value);
+        }
+        if let Some(l) = &self.lateral {
+            let entries = self.lateral_entries();
+            let wave_off = entries.end;
+            for (out, value) in action[entries].iter_mut().zip(l.autopilot(self.control, s)) {
+                *out = clipped(value);
+            }
+            action[wave_off] = -1.0;
         }
     }
 
@@ -95,7 +136,7 @@ impl EnvConfig {
             format_args!("{action:?}"),
             format_args!(
                 "{len} numbers in [-1, 1] (the action space: {})",
-                self.control.action_names().join(", ")
+                self.action_names().join(", ")
             ),
         ))
     }

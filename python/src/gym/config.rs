@@ -5,6 +5,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use super::control::Control;
+use super::lateral::LateralConfig;
 use super::reward::Rewards;
 use crate::errors::argument_error;
 use crate::scenario::{flown_scenario, scenario_or_default, Scenario};
@@ -44,6 +45,8 @@ pub(crate) struct EnvConfig {
     pub(super) rewards: Rewards,
     pub(super) forecast: bool,
     pub(super) max_episode_steps: Option<u64>,
+    /// The 3-D environment's lateral half (`None`: the 2-D environment).
+    pub(super) lateral: Option<LateralConfig>,
     /// Each observation entry's normalisation (from the fields above, computed once:
     /// `normalisation_table` in the observation's module).
     pub(super) normalisation: Vec<Normalisation>,
@@ -60,6 +63,7 @@ pub(super) fn config(
     reward: &str,
     forecast: bool,
     max_episode_steps: Option<u64>,
+    lateral_spans: Option<(f64, f64, f64, f64)>,
 ) -> PyResult<EnvConfig> {
     let control = Control::parse(control)?;
     let shaped = match reward {
@@ -109,6 +113,10 @@ pub(super) fn config(
             ),
         ));
     }
+    let lateral = match lateral_spans {
+        Some(spans) => Some(LateralConfig::new(&flown, spans)?),
+        None => None,
+    };
     let slope_rad = flown.control.flight_path.glide_slope_deg.to_radians();
     let direct_lift = flown.control.direct_lift;
     let mut config = EnvConfig {
@@ -135,6 +143,7 @@ pub(super) fn config(
         rewards: Rewards::from_dict(rewards, shaped)?,
         forecast,
         max_episode_steps,
+        lateral,
         normalisation: Vec::new(),
     };
     config.normalisation = config.normalisation_table();

@@ -3,6 +3,7 @@
 use deckland::simulation::{LoopBreak, Taps};
 use pyo3::prelude::*;
 
+use super::lateral::LateralTaps;
 use crate::errors::argument_error;
 
 /// Who flies what: the control mode of the environment.
@@ -78,6 +79,8 @@ pub(crate) struct AgentTaps {
     pub(super) direct_lift: f64,
     /// Guidance: the agent has waved off (full thrust).
     pub(super) full_thrust_n: Option<f64>,
+    /// The 3-D environment's lateral commands (none in the 2-D environment).
+    pub(super) lateral: LateralTaps,
 }
 
 impl Taps for AgentTaps {
@@ -93,6 +96,13 @@ impl Taps for AgentTaps {
             (Guidance, LoopBreak::ThrustCommand) => self.full_thrust_n.unwrap_or(computed),
             (Surfaces, LoopBreak::DirectLiftCommand) => self.direct_lift,
             (Attitude | Guidance, LoopBreak::DirectLiftCommand) => 0.0,
+            (
+                _,
+                LoopBreak::BankCommand
+                | LoopBreak::SideslipCommand
+                | LoopBreak::AileronCommand
+                | LoopBreak::RudderCommand,
+            ) => self.lateral.at(at).unwrap_or(computed),
             _ => computed,
         }
     }

@@ -25,6 +25,8 @@ pub(crate) struct EnvCore {
     /// The outcome's code in [`OUTCOMES`] and the wire, once ended.
     pub(super) outcome: Option<(usize, Option<u8>)>,
     pub(super) reason: Option<String>,
+    /// A 3-D approach's touchdown off the centreline (`None`: no lateral touchdown).
+    pub(super) off_centre: Option<bool>,
 }
 
 /// What a step gives besides the observation.
@@ -48,6 +50,7 @@ impl EnvCore {
             steps: 0,
             outcome: None,
             reason: None,
+            off_centre: None,
         })
     }
 
@@ -67,19 +70,27 @@ impl EnvCore {
 
     /// One interval with `action` (checked by the caller).
     pub(super) fn step(&mut self, config: &EnvConfig, action: &[f64]) -> StepResult {
-        if config.control.action_names().len() == action.len() && action[action.len() - 1] > 0.0 {
+        if config.action_len() == action.len() && action[action.len() - 1] > 0.0 {
             self.waved_off = true;
         }
         let taps = config.taps(action, self.waved_off);
         self.stepper.advance(&mut Quiet, &taps);
         self.steps += 1;
-        let error = {
+        let squared_error = {
             let look = self.stepper.look();
-            look.signals.glide_path_error_m
+            let error = look.signals.glide_path_error_m;
+            match config.lateral {
+                // The 3-D environment: the hook's distance to the glide path's line.
+                Some(_) => {
+                    let cross = look.signals.lateral.cross_track_m.unwrap_or(f64::NAN);
+                    error * error + cross * cross
+                }
+                None => error * error,
+            }
         };
         let mut result = StepResult {
             reward: -config.rewards.error_weight
-                * (error * error).min(config.rewards.error_cap_m2)
+                * squared_error.min(config.rewards.error_cap_m2)
                 * config.interval_s,
             ..StepResult::default()
         };
@@ -99,6 +110,15 @@ impl EnvCore {
                 result.reward += config.rewards.wire_bonus[usize::from(w) - 1];
             }
             self.outcome = Some((code, wire));
+            self.off_centre = self
+                .stepper
+                .simulation()
+                .summary()
+                .and_then(|s| s.touchdown.and_then(|t| t.lateral))
+                .map(|l| l.off_centre);
+            if self.off_centre == Some(true) {
+                result.reward += config.rewards.off_centre;
+            }
             self.reason = if name == "wave_off" {
                 Some("the agent waved off and flew over the last wire".to_owned())
             } else {

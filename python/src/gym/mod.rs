@@ -1,4 +1,5 @@
-//! The core of the Gymnasium environment `deckland/CarrierLanding-v1`, in Rust: the
+//! The core of the Gymnasium environments `deckland/CarrierLanding-v1` and (with the
+//! lateral half, [`lateral`]) `deckland/CarrierLanding3D-v0`, in Rust: the
 //! control modes and the authority each gives the agent ([`Control`], [`AgentTaps`]),
 //! the normalised observation ([`OBSERVATIONS`]), the reward and the outcome, for one
 //! environment (`_Env`) and for many stepped in one call over threads (`_VecEnv`).
@@ -14,6 +15,7 @@
 //! - [`config`]: what every environment of one configuration shares, built from the
 //!   Python arguments;
 //! - [`observation`]: the observation's entries and their normalisation;
+//! - [`lateral`]: the 3-D environment's lateral commands, observation entries and taps;
 //! - [`action`]: the action read, checked and turned into taps, and the autopilot's;
 //! - [`episode`]: one environment's episode, stepped;
 //! - [`describe`]: the description of a configuration;
@@ -30,6 +32,7 @@ mod config;
 mod control;
 mod describe;
 mod episode;
+mod lateral;
 mod observation;
 mod parallel;
 mod reward;

@@ -4,6 +4,7 @@ use deckland::control::DeckReference;
 use deckland::simulation::Signals;
 
 use super::config::{EnvConfig, Normalisation};
+use super::lateral::{LateralConfig, LATERAL_ENTRIES, LATERAL_OBSERVATIONS};
 use crate::stepping::Look;
 
 /// One entry of the observation: its name, unit, where it comes from, and its scale
@@ -57,11 +58,47 @@ const NO_TIME_TO_GO_S: f64 = 120.0;
 impl EnvConfig {
     /// The number of observation entries.
     pub(super) fn observation_len(&self) -> usize {
+        self.longitudinal_len() + self.lateral.map_or(0, |_| LATERAL_ENTRIES)
+    }
+
+    /// The number of the 2-D environment's entries (the lateral ones follow them).
+    fn longitudinal_len(&self) -> usize {
         if self.forecast {
             OBSERVATIONS.len()
         } else {
             BASE_OBSERVATIONS
         }
+    }
+
+    /// Each entry's specification, in order.
+    pub(super) fn observation_specs(&self) -> impl Iterator<Item = &'static ObservationSpec> {
+        let lateral: &'static [ObservationSpec] = match self.lateral {
+            Some(_) => &LATERAL_OBSERVATIONS,
+            None => &[],
+        };
+        OBSERVATIONS[..self.longitudinal_len()]
+            .iter()
+            .chain(lateral)
+    }
+
+    /// Each entry's (offset, scale, raw range), in order.
+    pub(super) fn entry_scaling(&self) -> Vec<(f64, f64, (f64, f64))> {
+        let offsets = self.offsets();
+        let scales = self.scales();
+        let ranges = self.ranges();
+        let mut entries: Vec<_> = (0..self.longitudinal_len())
+            .map(|i| (offsets[i], scales[i], ranges[i]))
+            .collect();
+        if let Some(lateral) = &self.lateral {
+            let offsets = lateral.offsets();
+            entries.extend(
+                LATERAL_OBSERVATIONS
+                    .iter()
+                    .zip(offsets)
+                    .map(|(o, offset)| (offset, o.scale, (o.low, o.high))),
+            );
+        }
+        entries
     }
 
     /// The offset of each observation entry (raw units).
@@ -129,22 +166,24 @@ impl EnvConfig {
                 ],
                 None => [0.0; ENTRIES - BASE_OBSERVATIONS],
             };
-            raw[BASE_OBSERVATIONS..].copy_from_slice(&extra);
+            raw[BASE_OBSERVATIONS..ENTRIES].copy_from_slice(&extra);
+        }
+        if self.lateral.is_some() {
+            let first = self.longitudinal_len();
+            LateralConfig::raw(s, &mut raw[first..first + LATERAL_ENTRIES]);
         }
     }
 
     /// Each entry's offset, scale and normalised range (low, high), computed once for
     /// [`EnvConfig::normalisation`].
     pub(super) fn normalisation_table(&self) -> Vec<Normalisation> {
-        let offsets = self.offsets();
-        let scales = self.scales();
-        let ranges = self.ranges();
-        (0..ENTRIES)
-            .map(|i| Normalisation {
-                offset: offsets[i],
-                scale: scales[i],
-                low: (ranges[i].0 - offsets[i]) / scales[i],
-                high: (ranges[i].1 - offsets[i]) / scales[i],
+        self.entry_scaling()
+            .into_iter()
+            .map(|(offset, scale, range)| Normalisation {
+                offset,
+                scale,
+                low: (range.0 - offset) / scale,
+                high: (range.1 - offset) / scale,
             })
             .collect()
     }
@@ -164,13 +203,11 @@ impl EnvConfig {
 
     /// The bounds of the normalised observation.
     pub(super) fn bounds(&self) -> Vec<(f64, f64)> {
-        let offsets = self.offsets();
-        let scales = self.scales();
-        let ranges = self.ranges();
-        (0..self.observation_len())
-            .map(|i| {
-                let low = ((ranges[i].0 - offsets[i]) / scales[i]) as f32;
-                let high = ((ranges[i].1 - offsets[i]) / scales[i]) as f32;
+        self.entry_scaling()
+            .into_iter()
+            .map(|(offset, scale, range)| {
+                let low = ((range.0 - offset) / scale) as f32;
+                let high = ((range.1 - offset) / scale) as f32;
                 (f64::from(low), f64::from(high))
             })
             .collect()

@@ -28,6 +28,9 @@ pub(crate) struct Rewards {
     pub(super) error_weight: f64,
     /// Cap of the squared error (m²).
     pub(super) error_cap_m2: f64,
+    /// Added at the end of a 3-D approach whose touchdown is off the centreline (0 when
+    /// `rewards` has no `off_centre`).
+    pub(super) off_centre: f64,
 }
 
 impl Rewards {
@@ -71,7 +74,13 @@ impl Rewards {
         }
         let error_weight = if shaped { number("error_weight")? } else { 0.0 };
         let error_cap_m2 = number("error_cap_m2")?;
+        let off_centre = if rewards.contains("off_centre")? {
+            number("off_centre")?
+        } else {
+            0.0
+        };
         Ok(Self {
+            off_centre,
             end,
             wire_bonus,
             error_weight,

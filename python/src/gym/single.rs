@@ -26,7 +26,7 @@ pub struct Env {
 #[pymethods]
 impl Env {
     #[new]
-    #[pyo3(signature = (scenario, control, control_interval_s, pitch_command_span_rad, thrust_span_n, elevator_span_rad, climb_rate_span_mps, rewards, reward, forecast))]
+    #[pyo3(signature = (scenario, control, control_interval_s, pitch_command_span_rad, thrust_span_n, elevator_span_rad, climb_rate_span_mps, rewards, reward, forecast, lateral_spans=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         scenario: Option<PyRef<'_, Scenario>>,
@@ -39,6 +39,7 @@ impl Env {
         rewards: &Bound<'_, PyDict>,
         reward: &str,
         forecast: bool,
+        lateral_spans: Option<(f64, f64, f64, f64)>,
     ) -> PyResult<Self> {
         let config = config(
             scenario,
@@ -54,6 +55,7 @@ impl Env {
             reward,
             forecast,
             None,
+            lateral_spans,
         )?;
         Ok(Self {
             config: Arc::new(config),
@@ -137,6 +139,9 @@ impl Env {
             info.set_item("wire", wire)?;
             info.set_item("reason", core.reason.clone())?;
             info.set_item("time_s", core.stepper.simulation().time_s())?;
+            if config.lateral.is_some() {
+                info.set_item("off_centre", core.off_centre)?;
+            }
         }
         Ok((
             obs.into_pyarray(py),

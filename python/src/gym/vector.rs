@@ -75,7 +75,7 @@ struct Slot<'a> {
 #[pymethods]
 impl VecEnv {
     #[new]
-    #[pyo3(signature = (num_envs, scenario, control, control_interval_s, pitch_command_span_rad, thrust_span_n, elevator_span_rad, climb_rate_span_mps, rewards, reward, forecast, max_episode_steps))]
+    #[pyo3(signature = (num_envs, scenario, control, control_interval_s, pitch_command_span_rad, thrust_span_n, elevator_span_rad, climb_rate_span_mps, rewards, reward, forecast, max_episode_steps, lateral_spans=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         num_envs: usize,
@@ -90,6 +90,7 @@ impl VecEnv {
         reward: &str,
         forecast: bool,
         max_episode_steps: Option<u64>,
+        lateral_spans: Option<(f64, f64, f64, f64)>,
     ) -> PyResult<Self> {
         if !(1..=100_000).contains(&num_envs) {
             return Err(argument_error(
@@ -112,6 +113,7 @@ impl VecEnv {
             reward,
             forecast,
             max_episode_steps,
+            lateral_spans,
         )?;
         Ok(Self {
             config: Arc::new(config),

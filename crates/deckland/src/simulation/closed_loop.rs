@@ -321,6 +321,7 @@ impl ClosedLoop {
                 x,
                 lateral_held,
                 held.commands,
+                taps,
                 &mut bus,
             ),
             _ => plant::lateral_hold(aircraft, &mut bus),
@@ -379,7 +380,7 @@ impl ClosedLoop {
             layout.deck_predictor.of_mut(rate),
         );
         if let (Some(lateral), Some(lateral_held)) = (&self.lateral, &held.lateral) {
-            lateral.derivative(layout, x, lateral_held, &bus, rate);
+            lateral.derivative(layout, x, lateral_held, taps, &bus, rate);
         }
         if USER_BLOCKS {
             for placed in &self.user_blocks {

@@ -25,16 +25,31 @@ pub enum LoopBreak {
     ThrustCommand,
     /// Direct lift control's lift-coefficient command (–): the direct-lift height loop.
     DirectLiftCommand,
+    /// The 3-D approach's bank command (rad): the lineup guidance.
+    BankCommand,
+    /// The 3-D approach's sideslip command (rad, the trim's as computed): the yaw law's
+    /// reference. It has no signal of its own: [`LoopBreak::signal`] gives the sideslip
+    /// it commands.
+    SideslipCommand,
+    /// The 3-D approach's aileron command (rad): the roll law.
+    AileronCommand,
+    /// The 3-D approach's rudder command (rad): the yaw law.
+    RudderCommand,
 }
 
 impl LoopBreak {
-    /// Every tap point, from the outermost loop in.
-    pub const ALL: [LoopBreak; 5] = [
+    /// Every tap point, from the outermost loop in (the longitudinal ones, then the 3-D
+    /// approach's lateral ones).
+    pub const ALL: [LoopBreak; 9] = [
         LoopBreak::ClimbRateCommand,
         LoopBreak::PitchCommand,
         LoopBreak::ElevatorCommand,
         LoopBreak::ThrustCommand,
         LoopBreak::DirectLiftCommand,
+        LoopBreak::BankCommand,
+        LoopBreak::SideslipCommand,
+        LoopBreak::AileronCommand,
+        LoopBreak::RudderCommand,
     ];
 
     /// The command signal at this point (its name and unit are in the registry).
@@ -45,6 +60,10 @@ impl LoopBreak {
             LoopBreak::ClimbRateCommand => SignalId::ClimbRateCommand,
             LoopBreak::ThrustCommand => SignalId::ThrustCommand,
             LoopBreak::DirectLiftCommand => SignalId::DirectLiftCommand,
+            LoopBreak::BankCommand => SignalId::BankCommand,
+            LoopBreak::SideslipCommand => SignalId::Sideslip,
+            LoopBreak::AileronCommand => SignalId::AileronCommand,
+            LoopBreak::RudderCommand => SignalId::RudderCommand,
         }
     }
 }
@@ -78,6 +97,14 @@ pub struct Overrides {
     pub elevator_rad: Option<f64>,
     /// Total thrust command (N), replacing the speed loop.
     pub thrust_n: Option<f64>,
+    /// 3-D approach: bank command (rad), replacing the lineup guidance.
+    pub bank_command_rad: Option<f64>,
+    /// 3-D approach: sideslip command (rad), replacing the yaw law's trim sideslip.
+    pub sideslip_command_rad: Option<f64>,
+    /// 3-D approach: aileron command (rad), replacing the roll law.
+    pub aileron_rad: Option<f64>,
+    /// 3-D approach: rudder command (rad), replacing the yaw law.
+    pub rudder_rad: Option<f64>,
 }
 
 impl Taps for Overrides {
@@ -87,6 +114,10 @@ impl Taps for Overrides {
             LoopBreak::PitchCommand => self.pitch_command_rad,
             LoopBreak::ElevatorCommand => self.elevator_rad,
             LoopBreak::ThrustCommand => self.thrust_n,
+            LoopBreak::BankCommand => self.bank_command_rad,
+            LoopBreak::SideslipCommand => self.sideslip_command_rad,
+            LoopBreak::AileronCommand => self.aileron_rad,
+            LoopBreak::RudderCommand => self.rudder_rad,
             LoopBreak::ClimbRateCommand | LoopBreak::DirectLiftCommand => None,
         };
         replacement.unwrap_or(computed)
@@ -160,7 +191,9 @@ mod tests {
         for point in LoopBreak::ALL {
             let spec = point.signal().spec();
             assert!(
-                spec.name.contains("command") || spec.name == "theta_ref_rad",
+                spec.name.contains("command")
+                    || spec.name == "theta_ref_rad"
+                    || (point == LoopBreak::SideslipCommand && spec.name == "beta_rad"),
                 "{point:?}"
             );
         }

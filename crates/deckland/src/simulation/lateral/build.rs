@@ -243,7 +243,11 @@ pub(crate) fn start(
         rudder_rad: trim.rudder_rad,
         ..super::LateralMeasurements::default()
     };
-    let (roll, yaw) = lateral.law_inputs(trim.phi_rad, &measured, &super::HeldLateral::default());
+    let (roll, yaw) = lateral.law_inputs(
+        (trim.phi_rad, lateral.trim_sideslip_rad),
+        &measured,
+        &super::HeldLateral::default(),
+    );
     lateral
         .roll
         .initial_state(&roll, layout.roll_law.of_mut(initial));

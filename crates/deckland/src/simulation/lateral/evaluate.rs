@@ -9,6 +9,7 @@ use crate::environment::{
 };
 use crate::simulation::flight_computer::HeldCommands;
 use crate::simulation::layout::LoopLayout;
+use crate::simulation::taps::{LoopBreak, Taps};
 use crate::simulation::Signals;
 
 impl LateralLoop {
@@ -40,10 +41,11 @@ impl LateralLoop {
     }
 
     /// `lineup` and `lateral_laws`: the cross-track, the lineup guidance's bank command,
-    /// and the roll and yaw laws' surface commands (the frame's, with a flight computer).
+    /// and the roll and yaw laws' surface commands (the frame's, with a flight computer),
+    /// each through its tap.
     #[allow(clippy::too_many_arguments)]
     #[inline]
-    pub(crate) fn lineup_and_laws(
+    pub(crate) fn lineup_and_laws<T: Taps>(
         &self,
         view: &DeckView3d,
         deck: &DeckGeometry,
@@ -52,6 +54,7 @@ impl LateralLoop {
         x: &[f64],
         held: &HeldLateral,
         commands: Option<HeldCommands>,
+        taps: &T,
         bus: &mut Signals,
     ) {
         let t = bus.time_s;
@@ -69,9 +72,12 @@ impl LateralLoop {
         let weight = bus.compensation_weight;
         let error = hook.y_m - self.mean_drift_rate_mps * t - weight * held.forecast_m;
         let error_rate = velocity.y_mps - self.mean_drift_rate_mps;
-        let bank_command = self
-            .lineup
-            .bank_command_rad(error, error_rate, bus.time_to_go_s);
+        let bank_command = taps.tap(
+            LoopBreak::BankCommand,
+            self.lineup
+                .bank_command_rad(error, error_rate, bus.time_to_go_s),
+        );
+        let sideslip_command = taps.tap(LoopBreak::SideslipCommand, self.trim_sideslip_rad);
         let signals = &mut bus.lateral;
         signals.cross_track_m = Some(cross_track);
         signals.cross_track_rate_mps = Some(cross_track_rate);
@@ -81,24 +87,26 @@ impl LateralLoop {
         let (aileron, rudder) = match commands.and_then(|c| c.lateral) {
             Some(held_commands) => held_commands,
             None => {
-                let (roll, yaw) = self.law_inputs(bank_command, &measurements(bus), held);
+                let (roll, yaw) =
+                    self.law_inputs((bank_command, sideslip_command), &measurements(bus), held);
                 (
                     self.roll.surface_command_rad(layout.roll_law.of(x), &roll),
                     self.yaw.surface_command_rad(layout.yaw_law.of(x), &yaw),
                 )
             }
         };
-        bus.aileron_command_rad = Some(aileron);
-        bus.rudder_command_rad = Some(rudder);
+        bus.aileron_command_rad = Some(taps.tap(LoopBreak::AileronCommand, aileron));
+        bus.rudder_command_rad = Some(taps.tap(LoopBreak::RudderCommand, rudder));
     }
 
     /// The state rates of the roll, yaw and sway filters and of the two laws.
     #[inline]
-    pub(crate) fn derivative(
+    pub(crate) fn derivative<T: Taps>(
         &self,
         layout: &LoopLayout,
         x: &[f64],
         held: &HeldLateral,
+        taps: &T,
         bus: &Signals,
         rate: &mut [f64],
     ) {
@@ -106,7 +114,9 @@ impl LateralLoop {
         let ship_rate = self.ship.derivative(&lateral_state, held.ship_noise);
         layout.ship_lateral.write_array(rate, &ship_rate.to_array());
         let bank_command = bus.lateral.bank_command_rad.unwrap_or(self.trim_bank_rad);
-        let (roll, yaw) = self.law_inputs(bank_command, &measurements(bus), held);
+        let sideslip_command = taps.tap(LoopBreak::SideslipCommand, self.trim_sideslip_rad);
+        let (roll, yaw) =
+            self.law_inputs((bank_command, sideslip_command), &measurements(bus), held);
         self.roll
             .derivative(layout.roll_law.of(x), &roll, layout.roll_law.of_mut(rate));
         self.yaw

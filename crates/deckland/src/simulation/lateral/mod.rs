@@ -143,10 +143,10 @@ pub(crate) struct LateralMeasurements {
 }
 
 impl LateralLoop {
-    /// The roll and yaw laws' inputs for the bank command `bank_command_rad`.
+    /// The roll and yaw laws' inputs for the bank and sideslip commands (rad).
     pub fn law_inputs(
         &self,
-        bank_command_rad: f64,
+        (bank_command_rad, sideslip_command_rad): (f64, f64),
         measured: &LateralMeasurements,
         held: &HeldLateral,
     ) -> (RollLawInputs, YawLawInputs) {
@@ -165,7 +165,7 @@ impl LateralLoop {
             ..ChannelInputs::default()
         });
         let yaw = YawLawInputs(ChannelInputs {
-            command_rad: self.trim_sideslip_rad,
+            command_rad: sideslip_command_rad,
             measured_rad: sideslip_read,
             rate_measured_radps: -measured.yaw_rate_radps,
             surface_actual_rad: measured.rudder_rad,
