@@ -7,8 +7,8 @@
 
 use super::LateralLoop;
 use crate::environment::{
-    DeckGeometry, EarthPoint, EarthVelocity, LateralShipMotionState, ShipMotion, ShipMotionState,
-    ShipPose, ShipPoseRate,
+    DeckGeometry, EarthPoint, EarthVelocity, LateralShipMotionState, ShipAttitude, ShipMotion,
+    ShipMotionState, ShipPose, ShipPoseRate,
 };
 
 /// The ship as the 3-D approach sees it at one instant.
@@ -17,6 +17,8 @@ pub(crate) struct DeckView3d {
     /// The full 3-D pose and its rate.
     pub pose: ShipPose,
     pub rate: ShipPoseRate,
+    /// The pose's rotation and angular velocity, evaluated once for every deck point.
+    pub attitude: ShipAttitude,
     /// The equivalent longitudinal pose and its rate (module docs).
     pub longitudinal: ShipPose,
     pub longitudinal_rate: ShipPoseRate,
@@ -43,14 +45,16 @@ impl LateralLoop {
         let pose = self.ship.complete_pose(lateral_state, pose, heading);
         let rate = deck.steaming_pose_rate(ship, ship_state);
         let rate = self.ship.complete_pose_rate(lateral_state, rate, heading);
-        let line = deck.landing_centreline(&pose);
+        let attitude = deck.ship_attitude(&pose, &rate);
+        let line = deck.landing_centreline_at(&attitude, &pose);
         let aim = line.point;
-        let aim_velocity = deck.velocity_on_landing_centreline(&pose, &rate, 0.0);
+        let aim_velocity = deck.velocity_on_landing_centreline_at(&attitude, &rate, 0.0);
         let flat_aim = deck.aim_point(&pose);
         let flat_velocity = deck.velocity_along_deck(&pose, &rate, 0.0);
         DeckView3d {
             pose,
             rate,
+            attitude,
             longitudinal: ShipPose {
                 pitch_centre_x_m: pose.pitch_centre_x_m + (aim.x_m - flat_aim.x_m),
                 pitch_centre_y_m: aim.y_m,
@@ -85,7 +89,8 @@ impl DeckView3d {
         let (dx, dy) = (hook.x_m - self.aim.x_m, hook.y_m - self.aim.y_m);
         let offset = cos * dy - sin * dx;
         let along = cos * dx + sin * dy;
-        let line_velocity = deck.velocity_on_landing_centreline(&self.pose, &self.rate, along);
+        let line_velocity =
+            deck.velocity_on_landing_centreline_at(&self.attitude, &self.rate, along);
         let rate = cos * (hook_velocity.y_mps - line_velocity.y_mps)
             - sin * (hook_velocity.x_mps - line_velocity.x_mps);
         (offset, rate)
