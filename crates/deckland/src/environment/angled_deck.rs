@@ -48,11 +48,31 @@ pub struct DeckCentreline {
     pub direction: EarthDirection,
 }
 
+/// The ship's attitude at one instant, evaluated once: the ship-to-earth rotation R, the
+/// angular velocity in earth axes and the deck angle's sine and cosine, so that several
+/// points and velocities of one pose share one evaluation of their sines and cosines
+/// (the results are those of the single-point methods, to the bit).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ShipAttitude {
+    rotation: [[f64; 3]; 3],
+    angular_velocity: [f64; 3],
+    deck_angle_sin_cos: (f64, f64),
+}
+
+/// sin, cos of the heading ψ₀ + ψ_s, of the pitch θ_s and of the roll φ_s.
+type AttitudeSinCos = [(f64, f64); 3];
+
+fn attitude_sin_cos(pose: &ShipPose, mean_heading_rad: f64) -> AttitudeSinCos {
+    [
+        (mean_heading_rad + pose.yaw_rad).sin_cos(),
+        pose.pitch_rad.sin_cos(),
+        pose.roll_rad.sin_cos(),
+    ]
+}
+
 /// Ship-to-earth rotation R = R_z(ψ)·R_y(θ)·R_x(φ), in (x forward, y right, z down).
-fn rotation(pose: &ShipPose, mean_heading_rad: f64) -> [[f64; 3]; 3] {
-    let (s_psi, c_psi) = (mean_heading_rad + pose.yaw_rad).sin_cos();
-    let (s_theta, c_theta) = pose.pitch_rad.sin_cos();
-    let (s_phi, c_phi) = pose.roll_rad.sin_cos();
+fn rotation(angles: &AttitudeSinCos) -> [[f64; 3]; 3] {
+    let [(s_psi, c_psi), (s_theta, c_theta), (s_phi, c_phi)] = *angles;
     [
         [
             c_psi * c_theta,
@@ -74,9 +94,8 @@ fn rotate(r: &[[f64; 3]; 3], v: [f64; 3]) -> [f64; 3] {
 }
 
 /// The ship's angular velocity in earth axes (x, y, z down) from the Euler rates.
-fn angular_velocity(pose: &ShipPose, rate: &ShipPoseRate, mean_heading_rad: f64) -> [f64; 3] {
-    let (s_psi, c_psi) = (mean_heading_rad + pose.yaw_rad).sin_cos();
-    let (s_theta, c_theta) = pose.pitch_rad.sin_cos();
+fn angular_velocity(angles: &AttitudeSinCos, rate: &ShipPoseRate) -> [f64; 3] {
+    let [(s_psi, c_psi), (s_theta, c_theta), _] = *angles;
     let (psi_dot, theta_dot, phi_dot) = (
         rate.yaw_rate_radps,
         rate.pitch_rate_radps,
@@ -134,11 +153,20 @@ impl DeckGeometry {
         }
     }
 
+    /// The ship's attitude for the 3-D `pose` and its `rate` ([`ShipAttitude`]).
+    pub fn ship_attitude(&self, pose: &ShipPose, rate: &ShipPoseRate) -> ShipAttitude {
+        let angles = attitude_sin_cos(pose, self.ship_mean_heading_rad());
+        ShipAttitude {
+            rotation: rotation(&angles),
+            angular_velocity: angular_velocity(&angles, rate),
+            deck_angle_sin_cos: self.deck_angle_deg.to_radians().sin_cos(),
+        }
+    }
+
     /// Ship-axes position (x forward, y starboard, z down; m) of the deck point `s_m`
     /// metres forward of the aim point along the landing area's centreline, from the
-    /// rotation centre.
-    fn ship_axes_point(&self, s_m: f64) -> [f64; 3] {
-        let (sin, cos) = self.deck_angle_deg.to_radians().sin_cos();
+    /// rotation centre, with the deck angle's (sin, cos).
+    fn ship_axes_point_at(&self, (sin, cos): (f64, f64), s_m: f64) -> [f64; 3] {
         [
             -self.landing_point_aft_of_pitch_centre_m + s_m * cos,
             -self.aim_point_port_of_centreline_m - s_m * sin,
@@ -146,11 +174,28 @@ impl DeckGeometry {
         ]
     }
 
+    /// [`DeckGeometry::ship_axes_point_at`] at this deck's angle.
+    #[cfg(test)]
+    fn ship_axes_point(&self, s_m: f64) -> [f64; 3] {
+        self.ship_axes_point_at(self.deck_angle_deg.to_radians().sin_cos(), s_m)
+    }
+
     /// Earth position of the deck point `s_m` metres forward of the aim point along the
     /// landing area's centreline (module docs), for the full 3-D `pose`.
     pub fn point_on_landing_centreline(&self, pose: &ShipPose, s_m: f64) -> EarthPoint {
-        let r = rotation(pose, self.ship_mean_heading_rad());
-        let offset = rotate(&r, self.ship_axes_point(s_m));
+        let attitude = self.ship_attitude(pose, &ShipPoseRate::default());
+        self.point_on_landing_centreline_at(&attitude, pose, s_m)
+    }
+
+    /// [`DeckGeometry::point_on_landing_centreline`] with the pose's `attitude`.
+    pub fn point_on_landing_centreline_at(
+        &self,
+        attitude: &ShipAttitude,
+        pose: &ShipPose,
+        s_m: f64,
+    ) -> EarthPoint {
+        let point = self.ship_axes_point_at(attitude.deck_angle_sin_cos, s_m);
+        let offset = rotate(&attitude.rotation, point);
         let centre_h = self.deck_height_m - self.deck_height_above_roll_axis_m + pose.heave_m;
         EarthPoint {
             x_m: pose.pitch_centre_x_m + offset[0],
@@ -167,9 +212,19 @@ impl DeckGeometry {
         rate: &ShipPoseRate,
         s_m: f64,
     ) -> EarthVelocity {
-        let heading = self.ship_mean_heading_rad();
-        let offset = rotate(&rotation(pose, heading), self.ship_axes_point(s_m));
-        let omega = angular_velocity(pose, rate, heading);
+        self.velocity_on_landing_centreline_at(&self.ship_attitude(pose, rate), rate, s_m)
+    }
+
+    /// [`DeckGeometry::velocity_on_landing_centreline`] with the pose's `attitude`.
+    pub fn velocity_on_landing_centreline_at(
+        &self,
+        attitude: &ShipAttitude,
+        rate: &ShipPoseRate,
+        s_m: f64,
+    ) -> EarthVelocity {
+        let point = self.ship_axes_point_at(attitude.deck_angle_sin_cos, s_m);
+        let offset = rotate(&attitude.rotation, point);
+        let omega = attitude.angular_velocity;
         let cross = [
             omega[1] * offset[2] - omega[2] * offset[1],
             omega[2] * offset[0] - omega[0] * offset[2],
@@ -201,11 +256,20 @@ impl DeckGeometry {
 
     /// The landing area's centreline: the aim point and the forward direction.
     pub fn landing_centreline(&self, pose: &ShipPose) -> DeckCentreline {
-        let r = rotation(pose, self.ship_mean_heading_rad());
-        let (sin, cos) = self.deck_angle_deg.to_radians().sin_cos();
-        let direction = rotate(&r, [cos, -sin, 0.0]);
+        let attitude = self.ship_attitude(pose, &ShipPoseRate::default());
+        self.landing_centreline_at(&attitude, pose)
+    }
+
+    /// [`DeckGeometry::landing_centreline`] with the pose's `attitude`.
+    pub fn landing_centreline_at(
+        &self,
+        attitude: &ShipAttitude,
+        pose: &ShipPose,
+    ) -> DeckCentreline {
+        let (sin, cos) = attitude.deck_angle_sin_cos;
+        let direction = rotate(&attitude.rotation, [cos, -sin, 0.0]);
         DeckCentreline {
-            point: self.aim_point_3d(pose),
+            point: self.point_on_landing_centreline_at(attitude, pose, 0.0),
             direction: EarthDirection {
                 x: direction[0],
                 y: direction[1],

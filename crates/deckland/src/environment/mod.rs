@@ -21,7 +21,7 @@ mod turbulence_lateral;
 mod wind;
 mod wind_model;
 
-pub use angled_deck::{DeckCentreline, EarthDirection};
+pub use angled_deck::{DeckCentreline, EarthDirection, ShipAttitude};
 pub use deck::{DeckGeometry, EarthPoint, EarthVelocity, ShipPose, ShipPoseRate};
 pub use ship::{
     heave_unit_intensity_variance, pitch_unit_intensity_variance, shaping_filter_companion,

@@ -119,8 +119,7 @@ impl ClosedLoop {
         if let Some(lateral) = &self.lateral {
             let lateral_state =
                 LateralShipMotionState::from_array(&self.layout.ship_lateral.array(x));
-            let view = lateral.deck_view(&self.ship, &self.deck, &ship, &lateral_state, t);
-            return (view.longitudinal, view.longitudinal_rate);
+            return lateral.longitudinal_pose(&self.ship, &self.deck, &ship, &lateral_state, t);
         }
         (
             self.ship.pose(&ship, self.ship_initial_x_m, t),

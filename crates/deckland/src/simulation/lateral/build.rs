@@ -131,6 +131,7 @@ pub(crate) fn build(
     let lateral = LateralLoop {
         ship,
         initial_pitch_centre_m: initial_pitch_centre_m(deck),
+        mean_heading_sin_cos: deck.ship_mean_heading_rad().sin_cos(),
         mean_drift_rate_mps: drift,
         closure_mps: (scenario.approach.airspeed_mps * flight_path_angle_rad.cos() + wind.x_mps
             - speed * cos)

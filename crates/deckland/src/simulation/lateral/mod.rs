@@ -78,6 +78,8 @@ pub(crate) struct LateralLoop {
     /// Earth (x, y) of the ship's pitch centre at t = 0 (m): the mean aim point at the
     /// origin.
     pub initial_pitch_centre_m: (f64, f64),
+    /// sin, cos of the ship's mean heading ψ₀ (the deck angle), evaluated once.
+    pub mean_heading_sin_cos: (f64, f64),
     /// The mean centreline's drift to the right, V·sin δ (m/s).
     pub mean_drift_rate_mps: f64,
     /// The closing speed on the deck the time to go is estimated with (m/s).

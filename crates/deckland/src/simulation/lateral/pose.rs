@@ -7,8 +7,8 @@
 
 use super::LateralLoop;
 use crate::environment::{
-    DeckGeometry, EarthPoint, EarthVelocity, LateralShipMotionState, ShipMotion, ShipMotionState,
-    ShipPose, ShipPoseRate,
+    DeckGeometry, EarthDirection, EarthPoint, EarthVelocity, LateralShipMotionState, ShipAttitude,
+    ShipMotion, ShipMotionState, ShipPose, ShipPoseRate,
 };
 
 /// The ship as the 3-D approach sees it at one instant.
@@ -17,6 +17,8 @@ pub(crate) struct DeckView3d {
     /// The full 3-D pose and its rate.
     pub pose: ShipPose,
     pub rate: ShipPoseRate,
+    /// The pose's rotation and angular velocity, evaluated once for every deck point.
+    pub attitude: ShipAttitude,
     /// The equivalent longitudinal pose and its rate (module docs).
     pub longitudinal: ShipPose,
     pub longitudinal_rate: ShipPoseRate,
@@ -38,19 +40,84 @@ impl LateralLoop {
         lateral_state: &LateralShipMotionState,
         time_s: f64,
     ) -> DeckView3d {
-        let heading = deck.ship_mean_heading_rad();
-        let pose = deck.steaming_pose(ship, ship_state, self.initial_pitch_centre_m, time_s);
-        let pose = self.ship.complete_pose(lateral_state, pose, heading);
-        let rate = deck.steaming_pose_rate(ship, ship_state);
-        let rate = self.ship.complete_pose_rate(lateral_state, rate, heading);
-        let line = deck.landing_centreline(&pose);
+        let (view, direction) = self.deck_view_parts(ship, deck, ship_state, lateral_state, time_s);
+        DeckView3d {
+            centreline_heading_rad: direction.y.atan2(direction.x),
+            ..view
+        }
+    }
+
+    /// The equivalent longitudinal pose and its rate of [`LateralLoop::deck_view`] alone
+    /// (what the longitudinal blocks' per-step samples read), without the centreline's
+    /// heading.
+    pub fn longitudinal_pose(
+        &self,
+        ship: &ShipMotion,
+        deck: &DeckGeometry,
+        ship_state: &ShipMotionState,
+        lateral_state: &LateralShipMotionState,
+        time_s: f64,
+    ) -> (ShipPose, ShipPoseRate) {
+        let (view, _) = self.deck_view_parts(ship, deck, ship_state, lateral_state, time_s);
+        (view.longitudinal, view.longitudinal_rate)
+    }
+
+    /// The ship's pose and its rate at `time_s`: [`DeckGeometry::steaming_pose`]
+    /// completed by [`crate::environment::LateralShipMotion::complete_pose`] (and their
+    /// rates), with the same operations, the mean heading's sine and cosine taken from
+    /// [`LateralLoop::mean_heading_sin_cos`] instead of evaluated four times.
+    fn pose_and_rate(
+        &self,
+        ship: &ShipMotion,
+        ship_state: &ShipMotionState,
+        lateral_state: &LateralShipMotionState,
+        time_s: f64,
+    ) -> (ShipPose, ShipPoseRate) {
+        let (sin, cos) = self.mean_heading_sin_cos;
+        let speed = ship.parameters().forward_speed_mps;
+        let (x0, y0) = self.initial_pitch_centre_m;
+        let outputs = ship.outputs(ship_state);
+        let lateral = self.ship.outputs(lateral_state);
+        let pose = ShipPose {
+            pitch_centre_x_m: (x0 + speed * cos * time_s) - lateral.sway_m * sin,
+            pitch_centre_y_m: (y0 + speed * sin * time_s) + lateral.sway_m * cos,
+            heave_m: outputs.heave_m,
+            pitch_rad: outputs.pitch_rad,
+            roll_rad: lateral.roll_rad,
+            yaw_rad: lateral.yaw_rad,
+        };
+        let rate = ShipPoseRate {
+            pitch_centre_x_rate_mps: speed * cos - lateral.sway_rate_mps * sin,
+            pitch_centre_y_rate_mps: speed * sin + lateral.sway_rate_mps * cos,
+            heave_rate_mps: outputs.heave_rate_mps,
+            pitch_rate_radps: outputs.pitch_rate_radps,
+            roll_rate_radps: lateral.roll_rate_radps,
+            yaw_rate_radps: lateral.yaw_rate_radps,
+        };
+        (pose, rate)
+    }
+
+    /// [`LateralLoop::deck_view`] without the centreline's heading (left 0), and the
+    /// centreline's direction it comes from.
+    fn deck_view_parts(
+        &self,
+        ship: &ShipMotion,
+        deck: &DeckGeometry,
+        ship_state: &ShipMotionState,
+        lateral_state: &LateralShipMotionState,
+        time_s: f64,
+    ) -> (DeckView3d, EarthDirection) {
+        let (pose, rate) = self.pose_and_rate(ship, ship_state, lateral_state, time_s);
+        let attitude = deck.ship_attitude(&pose, &rate);
+        let line = deck.landing_centreline_at(&attitude, &pose);
         let aim = line.point;
-        let aim_velocity = deck.velocity_on_landing_centreline(&pose, &rate, 0.0);
+        let aim_velocity = deck.velocity_on_landing_centreline_at(&attitude, &rate, 0.0);
         let flat_aim = deck.aim_point(&pose);
         let flat_velocity = deck.velocity_along_deck(&pose, &rate, 0.0);
-        DeckView3d {
+        let view = DeckView3d {
             pose,
             rate,
+            attitude,
             longitudinal: ShipPose {
                 pitch_centre_x_m: pose.pitch_centre_x_m + (aim.x_m - flat_aim.x_m),
                 pitch_centre_y_m: aim.y_m,
@@ -66,8 +133,9 @@ impl LateralLoop {
             },
             aim,
             aim_velocity,
-            centreline_heading_rad: line.direction.y.atan2(line.direction.x),
-        }
+            centreline_heading_rad: 0.0,
+        };
+        (view, line.direction)
     }
 }
 
@@ -85,7 +153,8 @@ impl DeckView3d {
         let (dx, dy) = (hook.x_m - self.aim.x_m, hook.y_m - self.aim.y_m);
         let offset = cos * dy - sin * dx;
         let along = cos * dx + sin * dy;
-        let line_velocity = deck.velocity_on_landing_centreline(&self.pose, &self.rate, along);
+        let line_velocity =
+            deck.velocity_on_landing_centreline_at(&self.attitude, &self.rate, along);
         let rate = cos * (hook_velocity.y_mps - line_velocity.y_mps)
             - sin * (hook_velocity.x_mps - line_velocity.x_mps);
         (offset, rate)
@@ -111,6 +180,33 @@ mod tests {
             0.01, 0.002, 0.003, 0.001, 0.0, 0.0, 0.4, 0.05, 0.0, 0.0,
         ]);
         let view = lateral.deck_view(&ship, &deck, &ship_state, &lateral_state, 10.0);
+        // The pose with the cached mean heading is the composition of the environment's
+        // steaming pose and lateral completion, to the bit.
+        let heading = deck.ship_mean_heading_rad();
+        let composed = lateral.ship.complete_pose(
+            &lateral_state,
+            deck.steaming_pose(&ship, &ship_state, lateral.initial_pitch_centre_m, 10.0),
+            heading,
+        );
+        let composed_rate = lateral.ship.complete_pose_rate(
+            &lateral_state,
+            deck.steaming_pose_rate(&ship, &ship_state),
+            heading,
+        );
+        assert_eq!((view.pose, view.rate), (composed, composed_rate));
+        let line = deck.landing_centreline(&composed);
+        assert_eq!(view.aim, line.point);
+        assert_eq!(
+            view.centreline_heading_rad,
+            line.direction.y.atan2(line.direction.x)
+        );
+        assert_eq!(
+            view.aim_velocity,
+            deck.velocity_on_landing_centreline(&composed, &composed_rate, 0.0)
+        );
+        let longitudinal =
+            lateral.longitudinal_pose(&ship, &deck, &ship_state, &lateral_state, 10.0);
+        assert_eq!(longitudinal, (view.longitudinal, view.longitudinal_rate));
         let flat = deck.aim_point(&view.longitudinal);
         assert!((flat.x_m - view.aim.x_m).abs() < 1e-9);
         assert!((flat.h_m - view.aim.h_m).abs() < 1e-9);
