@@ -4,13 +4,13 @@
 //! laws.
 //!
 //! When the plant is the 6-DOF and `approach.three_dimensional` holds (the default), the
-//! loop carries a [`LateralLoop`]:
+//! loop carries a `LateralLoop`:
 //! - **ship**: the roll, yaw and sway shaping filters ([`LateralShipMotion`]) integrate
 //!   beside heave and pitch; the ship steams along its mean heading, the deck angle δ to
 //!   the right of the final bearing, so the landing area's centreline, through the aim
 //!   point, drifts to the right at V·sin δ. The longitudinal blocks (deck predictor,
 //!   events, wake) see the ship through an equivalent longitudinal pose whose aim point is
-//!   the 3-D aim point ([`pose`]).
+//!   the 3-D aim point (`pose`).
 //! - **wind**: [`crate::environment::WindModel::three_dimensional`]: the wind over deck
 //!   down the angled deck, the crosswind, lateral turbulence.
 //! - **lineup** ([`crate::control::lineup`]): the hook's offset from its reference line
