@@ -445,6 +445,7 @@ pub(crate) fn build(scenario: &Scenario, user: UserParts<'_>) -> Result<Setup, S
         deck: &deck,
         pose: &pose,
         rate: &pose_rate,
+        roll: None,
     };
     deck_predictor.initial_state(&view, layout.deck_predictor.of_mut(&mut initial));
 

@@ -34,6 +34,10 @@ impl ClosedLoop {
             deck: &self.deck,
             pose: &pose,
             rate: &rate,
+            roll: self
+                .lateral
+                .as_ref()
+                .and_then(|lateral| lateral.sensed_roll()),
         };
         self.deck_predictor.observe(t, &view);
         let OuterLoops::Approach { flight_path, .. } = &self.outer else {

@@ -2,7 +2,7 @@
 
 use std::sync::Arc;
 
-use super::{LateralLoop, LateralStreams, SurfaceTrim};
+use super::{forecast, LateralLoop, LateralStreams, SurfaceTrim};
 use crate::aircraft::six_dof::{
     linearize_six_dof, trim_six_dof, SixDofAircraft, SixDofTrimPoint, SixDofTrimRequest,
 };
@@ -147,6 +147,10 @@ pub(crate) fn build(
         bank_noise: env.pitch_noise,
         sensor: LateralShipMotionSensor::new(env.ship_sensing, streams)?,
         last_measurement: None,
+        roll_rise_m: (
+            forecast::roll_rise_per_sine_m(deck, 0.0),
+            forecast::roll_rise_per_sine_m(deck, -deck.ramp_aft_of_aim_point_m),
+        ),
         read: (trim.phi_rad, trim.sideslip_rad),
     };
     Ok(ThreeDimensional {

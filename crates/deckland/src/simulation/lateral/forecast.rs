@@ -32,6 +32,48 @@ pub fn oscillator_forecast(x0: f64, rate0: f64, omega: f64, zeta: f64, tau: f64)
     (-zeta * omega * tau).exp() * (x0 * cos + (rate0 + zeta * omega * x0) / damped * sin)
 }
 
+/// The rate of [`oscillator_forecast`] after τ: its derivative in τ,
+/// e^(−ζωτ)·[ẋ₀·cos ω_d τ − (ζω·(ẋ₀ + ζωx₀)/ω_d + ω_d·x₀)·sin ω_d τ].
+pub fn oscillator_forecast_rate(x0: f64, rate0: f64, omega: f64, zeta: f64, tau: f64) -> f64 {
+    let damped = omega * (1.0 - zeta * zeta).sqrt();
+    let (sin, cos) = (damped * tau).sin_cos();
+    let b = (rate0 + zeta * omega * x0) / damped;
+    (-zeta * omega * tau).exp() * (rate0 * cos - (zeta * omega * b + damped * x0) * sin)
+}
+
+/// The forecast roll and roll rate (rad, rad/s) of the ship `tau` s after `measurement`
+/// was taken, by the roll filter's free response (exact for its second-order form).
+pub fn roll_forecast(measurement: &LateralShipMotionMeasurement, tau: f64) -> (f64, f64) {
+    let (omega, zeta) = (
+        ROLL_FILTER_NATURAL_FREQUENCY_RADPS,
+        ROLL_FILTER_DAMPING_RATIO,
+    );
+    let (x0, rate0) = (measurement.roll_rad, measurement.roll_rate_radps);
+    (
+        oscillator_forecast(x0, rate0, omega, zeta, tau),
+        oscillator_forecast_rate(x0, rate0, omega, zeta, tau),
+    )
+}
+
+/// How far the point `s_m` along the landing centreline (m, forward of the aim point)
+/// rises per unit sin φ_s of ship roll (m): minus its distance to starboard of the roll
+/// axis (docs/model.md §10.5), from the deck's geometry by a central difference, which
+/// cancels the deck height's (1 − cos φ_s) term.
+pub fn roll_rise_per_sine_m(deck: &DeckGeometry, s_m: f64) -> f64 {
+    let roll = 1e-3_f64;
+    let height = |roll_rad: f64| {
+        deck.point_on_landing_centreline(
+            &ShipPose {
+                roll_rad,
+                ..ShipPose::default()
+            },
+            s_m,
+        )
+        .h_m
+    };
+    (height(roll) - height(-roll)) / (2.0 * roll.sin())
+}
+
 /// The forecast of the landing point's displacement across the bearing (m, right) at
 /// `time_s` + `time_to_go_s` from `measurement`, for the deck `deck`.
 pub fn lateral_landing_point_forecast_m(
@@ -93,6 +135,100 @@ mod tests {
             assert!(residual.abs() < 1e-8, "{residual}");
         }
         assert!((x(0.0) - 0.02).abs() < 1e-15);
+    }
+
+    #[test]
+    fn the_oscillator_forecast_rate_is_its_derivative() {
+        let (omega, zeta) = (0.314, 0.1);
+        let h = 1e-4;
+        for t in [0.0, 0.7, 4.0, 13.0] {
+            let numeric = (oscillator_forecast(0.02, -0.003, omega, zeta, t + h)
+                - oscillator_forecast(0.02, -0.003, omega, zeta, t - h))
+                / (2.0 * h);
+            let rate = oscillator_forecast_rate(0.02, -0.003, omega, zeta, t);
+            assert!((rate - numeric).abs() < 1e-9, "{rate} vs {numeric}");
+        }
+        assert!((oscillator_forecast_rate(0.02, -0.003, omega, zeta, 0.0) + 0.003).abs() < 1e-15);
+    }
+
+    #[test]
+    fn roll_raises_the_aim_point_by_its_distance_to_port_of_the_roll_axis() {
+        // §10.5: the aim point lies 10 m to port of the ship's centreline, so a roll φ_s
+        // (starboard side down) raises it by 10 m·sin φ_s. The ramp, 60 m aft along a
+        // centreline angled 9° to port, lies 60·sin 9° = 9.39 m further to starboard:
+        // 0.61 m to port, so it rises by 0.61 m·sin φ_s.
+        let deck = DeckGeometry::default();
+        let aim = roll_rise_per_sine_m(&deck, 0.0);
+        assert!((aim - 10.0).abs() < 1e-6, "{aim}");
+        let ramp = roll_rise_per_sine_m(&deck, -60.0);
+        let expected = 10.0 - 60.0 * 9.0_f64.to_radians().sin();
+        assert!((ramp - expected).abs() < 0.02, "{ramp} vs {expected}");
+    }
+
+    #[test]
+    fn the_sensed_roll_moves_the_longitudinal_forecast_by_the_points_rise() {
+        use crate::control::DeckForecast;
+        use crate::simulation::deck_predictor::SensedRoll;
+        let forecast = DeckForecast {
+            ramp_height_m: 1.0,
+            landing_point_climb_rate_mps: 0.2,
+            landing_point_height_m: 2.0,
+            pitch_rad: 0.01,
+            ramp_climb_rate_mps: -0.1,
+            ramp_height_sigma_m: 0.3,
+            landing_point_climb_rate_sigma_mps: 0.4,
+        };
+        let roll = SensedRoll {
+            measurement: LateralShipMotionMeasurement {
+                time_s: 10.0,
+                roll_rad: 0.02,
+                roll_rate_radps: 0.005,
+                yaw_rad: 0.0,
+                yaw_rate_radps: 0.0,
+                sway_m: 0.0,
+                sway_rate_mps: 0.0,
+            },
+            landing_point_rise_m: 10.0,
+            ramp_rise_m: 0.6,
+        };
+        // Touchdown 3 s after a measurement 0.5 s old; the ramp, 60 m aft at 60 m/s, 1 s
+        // before it. The roll at each horizon is the oscillator's, checked above.
+        let moved = roll.add_to(forecast, 10.5, 2.5, 60.0, 60.0);
+        let (at_touchdown, rate_at_touchdown) = roll_forecast(&roll.measurement, 3.0);
+        let (at_ramp, rate_at_ramp) = roll_forecast(&roll.measurement, 2.0);
+        let close = |a: f64, b: f64| (a - b).abs() < 1e-12;
+        assert!(close(
+            moved.landing_point_height_m,
+            2.0 + 10.0 * at_touchdown.sin()
+        ));
+        assert!(close(
+            moved.landing_point_climb_rate_mps,
+            0.2 + 10.0 * at_touchdown.cos() * rate_at_touchdown
+        ));
+        assert!(close(moved.ramp_height_m, 1.0 + 0.6 * at_ramp.sin()));
+        assert!(close(
+            moved.ramp_climb_rate_mps,
+            -0.1 + 0.6 * at_ramp.cos() * rate_at_ramp
+        ));
+        // The σ and the pitch are the heave-and-pitch forecast's.
+        assert_eq!(
+            (
+                moved.pitch_rad,
+                moved.ramp_height_sigma_m,
+                moved.landing_point_climb_rate_sigma_mps
+            ),
+            (0.01, 0.3, 0.4)
+        );
+        // A level ship at rest moves nothing.
+        let level = SensedRoll {
+            measurement: LateralShipMotionMeasurement {
+                roll_rad: 0.0,
+                roll_rate_radps: 0.0,
+                ..roll.measurement
+            },
+            ..roll
+        };
+        assert_eq!(level.add_to(forecast, 10.5, 2.5, 60.0, 60.0), forecast);
     }
 
     #[test]

@@ -103,6 +103,8 @@ pub(crate) struct LateralLoop {
     /// The ship's lateral motion sensing and its latest measurement.
     pub sensor: LateralShipMotionSensor,
     pub last_measurement: Option<LateralShipMotionMeasurement>,
+    /// The landing point's and the ramp's rise per unit sin of the ship's roll (m).
+    pub roll_rise_m: (f64, f64),
     /// With a flight computer: the bank and sideslip read at the frame's start (rad).
     pub read: (f64, f64),
 }
@@ -142,6 +144,20 @@ pub(crate) struct LateralMeasurements {
     pub yaw_rate_radps: f64,
     pub aileron_rad: f64,
     pub rudder_rad: f64,
+}
+
+impl LateralLoop {
+    /// The ship's latest sensed roll for the longitudinal deck forecast (`None` before
+    /// the first measurement arrives).
+    pub(crate) fn sensed_roll(&self) -> Option<crate::simulation::deck_predictor::SensedRoll> {
+        self.last_measurement.map(
+            |measurement| crate::simulation::deck_predictor::SensedRoll {
+                measurement,
+                landing_point_rise_m: self.roll_rise_m.0,
+                ramp_rise_m: self.roll_rise_m.1,
+            },
+        )
+    }
 }
 
 impl LateralLoop {
