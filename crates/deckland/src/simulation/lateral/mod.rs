@@ -14,8 +14,9 @@
 //! - **wind**: [`crate::environment::WindModel::three_dimensional`]: the wind over deck
 //!   down the angled deck, the crosswind, lateral turbulence.
 //! - **lineup** ([`crate::control::lineup`]): the hook's offset from its reference line
-//!   (the mean centreline, moved in close by the forecast of the landing point's lateral
-//!   motion, [`forecast`], with the glide path's compensation weight) → bank command.
+//!   (the mean centreline, moved in close by the forecast of the centreline's lateral
+//!   motion at the ramp when the hook crosses it, [`forecast`], with the glide path's
+//!   compensation weight, which also tightens the loop) → bank command.
 //! - **lateral laws**: the roll O-PD (bank command → aileron) and the yaw O-PD (β = 0 →
 //!   rudder; in close, the crab heading: [`crate::control::heading_hold`]), read and
 //!   commanded at the flight computer's frames as the pitch law is.
@@ -138,7 +139,9 @@ pub struct HeldLateral {
     pub heading_noise_rad: f64,
     /// The heading hold's weight (–): 0, the yaw law holds β = 0; 1, the crab heading.
     pub heading_hold_weight: f64,
-    /// The forecast lateral displacement of the landing point at touchdown (m, right).
+    /// The forecast lateral displacement of the compensation's centreline point (by
+    /// default the ramp when the hook crosses it; [`forecast::compensation_station`])
+    /// (m, right).
     pub forecast_m: f64,
     /// With a flight computer, the bank and the yaw law's angle (the sideslip, or in
     /// close the heading error) it read at the frame's start (rad).
