@@ -59,9 +59,11 @@ pub mod stream_names {
     pub const BANK_NOISE: &str = "bank_noise";
     /// Noise of the air-data sideslip in the 3-D approach (docs/model.md §10.2).
     pub const SIDESLIP_NOISE: &str = "sideslip_noise";
+    /// Noise of the heading measurement in the 3-D approach (docs/model.md §10.2).
+    pub const HEADING_NOISE: &str = "heading_noise";
 
     /// Every stream name above, for checks that they are distinct.
-    pub const ALL: [&str; 22] = [
+    pub const ALL: [&str; 23] = [
         SHIP_HEAVE,
         SHIP_PITCH,
         TURBULENCE_U,
@@ -84,6 +86,7 @@ pub mod stream_names {
         SHIP_SENSOR_SWAY_RATE,
         BANK_NOISE,
         SIDESLIP_NOISE,
+        HEADING_NOISE,
     ];
 }
 

@@ -12,6 +12,7 @@ pub mod design;
 mod direct_lift;
 mod flight_path;
 mod guidance;
+pub mod heading_hold;
 pub mod lateral;
 mod law;
 pub mod lineup;

@@ -21,6 +21,22 @@ pub struct ApproachParameters {
     /// (written out only when false, so that files written before it are unchanged).
     #[serde(skip_serializing_if = "is_true")]
     pub three_dimensional: bool,
+    /// 3-D approach: natural frequency of the lineup guidance in close (rad/s), (0, 2],
+    /// blended in from its 0.4 rad/s far out with the deck-motion compensation
+    /// (docs/model.md §10.2); 0.8, tuned on crosswind campaigns
+    /// (docs/three-d-approach.md).
+    pub lineup_close_frequency_radps: f64,
+    /// 3-D approach: the station of the landing centreline the lineup compensation aims
+    /// the hook at in close, aft of the aim point (m), [0, 200]: its forecast position
+    /// when the hook crosses it (docs/model.md §10.3); 60, the ramp, where the landing
+    /// signal officer grades lineup (shared model §10.8); 0, the aim point at touchdown.
+    pub lineup_station_aft_m: f64,
+    /// 3-D approach: the time to go at which the yaw law starts to hold the crab heading
+    /// instead of zero sideslip (s), [0, 60]; 0: never (docs/model.md §10.2). 12, with
+    /// the deck-motion compensation (an assumption, docs/three-d-approach.md).
+    pub heading_hold_time_to_go_s: f64,
+    /// 3-D approach: the time over which the heading hold blends in (s), (0, 30]; 2.
+    pub heading_hold_blend_s: f64,
 }
 
 /// Whether `value` holds (serde's `skip_serializing_if` of a key true by default).
@@ -29,8 +45,8 @@ fn is_true(value: &bool) -> bool {
 }
 
 impl ApproachParameters {
-    /// Checks the start range (200–10000 m), airspeed (40–150 m/s) and height offset
-    /// (±50 m).
+    /// Checks the start range (200–10000 m), airspeed (40–150 m/s), height offset
+    /// (±50 m) and the 3-D approach's lineup and heading-hold keys (their ranges above).
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "approach";
         Bounds::closed(200.0, 10_000.0).check(SECTION, "start_range_m", self.start_range_m)?;
@@ -39,6 +55,26 @@ impl ApproachParameters {
             SECTION,
             "start_height_offset_m",
             self.start_height_offset_m,
+        )?;
+        Bounds::closed(0.0, 2.0).exclusive_min().check(
+            SECTION,
+            "lineup_close_frequency_radps",
+            self.lineup_close_frequency_radps,
+        )?;
+        Bounds::closed(0.0, 200.0).check(
+            SECTION,
+            "lineup_station_aft_m",
+            self.lineup_station_aft_m,
+        )?;
+        Bounds::closed(0.0, 60.0).check(
+            SECTION,
+            "heading_hold_time_to_go_s",
+            self.heading_hold_time_to_go_s,
+        )?;
+        Bounds::closed(0.0, 30.0).exclusive_min().check(
+            SECTION,
+            "heading_hold_blend_s",
+            self.heading_hold_blend_s,
         )
     }
 }
@@ -50,6 +86,10 @@ impl Default for ApproachParameters {
             airspeed_mps: 69.1,
             start_height_offset_m: 0.0,
             three_dimensional: true,
+            lineup_close_frequency_radps: 0.8,
+            lineup_station_aft_m: 60.0,
+            heading_hold_time_to_go_s: 12.0,
+            heading_hold_blend_s: 2.0,
         }
     }
 }

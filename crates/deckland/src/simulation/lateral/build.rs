@@ -7,6 +7,7 @@ use crate::aircraft::six_dof::{
     linearize_six_dof, trim_six_dof, SixDofAircraft, SixDofTrimPoint, SixDofTrimRequest,
 };
 use crate::aircraft::{ElevatorActuator, TrimRequest};
+use crate::control::heading_hold::HeadingHold;
 use crate::control::lateral::design::{channel_hardware, channel_plants};
 use crate::control::lateral::{LateralChannel, LateralDesignContext, LateralLawParameters};
 use crate::control::lineup::LineupParameters;
@@ -123,11 +124,20 @@ pub(crate) fn build(
         min_rad: actuator.min_rad(),
         max_rad: actuator.max_rad(),
     };
+    let approach = &scenario.approach;
     let lineup = LineupParameters {
         gravity_mps2: aircraft.longitudinal().parameters().gravity_mps2,
+        close_natural_frequency_radps: approach.lineup_close_frequency_radps,
+        compensation_station_aft_m: approach.lineup_station_aft_m,
         ..LineupParameters::default()
     };
     lineup.validate()?;
+    let heading_hold = HeadingHold {
+        time_to_go_s: approach.heading_hold_time_to_go_s,
+        blend_s: approach.heading_hold_blend_s,
+        crab_heading_rad: trim.psi_rad,
+        trim_sideslip_rad: trim.sideslip_rad,
+    };
     let lateral = LateralLoop {
         ship,
         initial_pitch_centre_m: initial_pitch_centre_m(deck),
@@ -139,6 +149,7 @@ pub(crate) fn build(
         roll: Arc::from(roll),
         yaw: Arc::from(yaw),
         lineup,
+        heading_hold,
         wave_off: LateralWaveOffLimits::default(),
         aileron: surface(aircraft.aileron(), trim.aileron_rad),
         rudder: surface(aircraft.rudder(), trim.rudder_rad),
@@ -159,6 +170,7 @@ pub(crate) fn build(
             ship: ship_streams,
             bank: streams.stream(stream_names::BANK_NOISE),
             sideslip: streams.stream(stream_names::SIDESLIP_NOISE),
+            heading: streams.stream(stream_names::HEADING_NOISE),
         },
         ship_state,
         trim: SixDofTrimPoint { wind, ..trim },

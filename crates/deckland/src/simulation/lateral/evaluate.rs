@@ -75,7 +75,7 @@ impl LateralLoop {
         let bank_command = taps.tap(
             LoopBreak::BankCommand,
             self.lineup
-                .bank_command_rad(error, error_rate, bus.time_to_go_s),
+                .bank_command_rad(error, error_rate, bus.time_to_go_s, weight),
         );
         let sideslip_command = taps.tap(LoopBreak::SideslipCommand, self.trim_sideslip_rad);
         let signals = &mut bus.lateral;
@@ -132,6 +132,7 @@ pub(crate) fn measurements(bus: &Signals) -> LateralMeasurements {
         roll_rate_radps: bus.p_radps.unwrap_or(0.0),
         sideslip_rad: bus.beta_rad.unwrap_or(0.0),
         yaw_rate_radps: bus.r_radps.unwrap_or(0.0),
+        heading_rad: bus.psi_rad.unwrap_or(0.0),
         aileron_rad: bus.aileron_rad.unwrap_or(0.0),
         rudder_rad: bus.rudder_rad.unwrap_or(0.0),
     }

@@ -14,6 +14,12 @@
 //! pole's transient, gone within about 3 s. The forecast roll, yaw and sway then place
 //! the aim point with the deck's geometry ([`DeckGeometry::point_on_landing_centreline`]);
 //! its displacement across the bearing from the mean aim point is the forecast.
+//!
+//! The lineup compensation (docs/model.md §10.3) forecasts, the same way, another point
+//! of the landing centreline: the station `aft_m` aft of the aim point (by default the
+//! ramp, where the landing signal officer grades lineup), at the time the hook crosses
+//! it; once the hook has passed the station, the point abreast of the hook now
+//! ([`compensation_station`]). The two meet at the crossing, so the forecast has no step.
 
 use crate::environment::{
     DeckGeometry, ShipPose, ROLL_FILTER_DAMPING_RATIO, ROLL_FILTER_NATURAL_FREQUENCY_RADPS,
@@ -82,7 +88,31 @@ pub fn lateral_landing_point_forecast_m(
     time_s: f64,
     time_to_go_s: f64,
 ) -> f64 {
-    let tau = (time_s - measurement.time_s).max(0.0) + time_to_go_s.max(0.0);
+    lateral_centreline_forecast_m(deck, measurement, time_s, time_to_go_s, 0.0)
+}
+
+/// Where the lineup compensation looks for a hook `range_m` before the mean aim point
+/// (along the final bearing) closing at `closure_mps`, aiming at the station
+/// `station_aft_m` aft of the aim point: the time until the hook crosses the station
+/// (s; 0 once past it) and the point's distance aft of the aim point (m; the station
+/// until the crossing, then the point abreast of the hook, down to the aim point).
+pub fn compensation_station(range_m: f64, closure_mps: f64, station_aft_m: f64) -> (f64, f64) {
+    let horizon_s = (range_m - station_aft_m).max(0.0) / closure_mps;
+    (horizon_s, range_m.clamp(0.0, station_aft_m))
+}
+
+/// The forecast displacement across the bearing (m, right) of the landing centreline's
+/// point `aft_m` aft of the aim point, at `time_s` + `horizon_s`, from `measurement`:
+/// each channel's free response over the horizon plus the measurement's age, placed by
+/// the deck geometry (module docs). `aft_m` = 0 is the aim point.
+pub fn lateral_centreline_forecast_m(
+    deck: &DeckGeometry,
+    measurement: &LateralShipMotionMeasurement,
+    time_s: f64,
+    horizon_s: f64,
+    aft_m: f64,
+) -> f64 {
+    let tau = (time_s - measurement.time_s).max(0.0) + horizon_s.max(0.0);
     let roll = oscillator_forecast(
         measurement.roll_rad,
         measurement.roll_rate_radps,
@@ -101,12 +131,24 @@ pub fn lateral_landing_point_forecast_m(
     };
     let yaw = dominant(measurement.yaw_rad, measurement.yaw_rate_radps);
     let sway = dominant(measurement.sway_m, measurement.sway_rate_mps);
-    aim_point_displacement_m(deck, roll, yaw, sway)
+    centreline_displacement_m(deck, roll, yaw, sway, aft_m)
 }
 
 /// The aim point's displacement across the bearing (m, right) for ship roll, yaw (rad)
 /// and sway (m) from the mean pose.
 pub fn aim_point_displacement_m(deck: &DeckGeometry, roll: f64, yaw: f64, sway: f64) -> f64 {
+    centreline_displacement_m(deck, roll, yaw, sway, 0.0)
+}
+
+/// The displacement across the bearing (m, right) of the landing centreline's point
+/// `aft_m` aft of the aim point for ship roll, yaw (rad) and sway (m) from the mean pose.
+pub fn centreline_displacement_m(
+    deck: &DeckGeometry,
+    roll: f64,
+    yaw: f64,
+    sway: f64,
+    aft_m: f64,
+) -> f64 {
     let heading = deck.ship_mean_heading_rad();
     let moved = ShipPose {
         pitch_centre_x_m: -sway * heading.sin(),
@@ -115,7 +157,10 @@ pub fn aim_point_displacement_m(deck: &DeckGeometry, roll: f64, yaw: f64, sway: 
         yaw_rad: yaw,
         ..ShipPose::default()
     };
-    deck.aim_point_3d(&moved).y_m - deck.aim_point_3d(&ShipPose::default()).y_m
+    deck.point_on_landing_centreline(&moved, -aft_m).y_m
+        - deck
+            .point_on_landing_centreline(&ShipPose::default(), -aft_m)
+            .y_m
 }
 
 #[cfg(test)]
@@ -229,6 +274,73 @@ mod tests {
             ..roll
         };
         assert_eq!(level.add_to(forecast, 10.5, 2.5, 60.0, 60.0), forecast);
+    }
+
+    #[test]
+    fn a_still_deck_forecasts_no_displacement_at_any_station_or_horizon() {
+        let deck = DeckGeometry::default();
+        let still = LateralShipMotionMeasurement {
+            time_s: 3.0,
+            ..LateralShipMotionMeasurement::default()
+        };
+        for horizon in [0.0, 0.5, 4.0, 12.0] {
+            for aft in [0.0, 30.0, 60.0, 150.0] {
+                let forecast = lateral_centreline_forecast_m(&deck, &still, 3.1, horizon, aft);
+                assert!(forecast.abs() < 1e-12, "{horizon} s, {aft} m: {forecast}");
+            }
+        }
+    }
+
+    #[test]
+    fn yaw_moves_the_ramp_by_its_lever_from_the_rotation_centre() {
+        // §10.5 geometry: the ramp, 60 m aft of the aim point along the landing
+        // centreline (9° to port), is at ship x = −81 − 60·cos 9°, y = −10 + 60·sin 9°
+        // from the rotation centre; the ship's mean heading is 9° right of the bearing.
+        // Yawing by ψ moves it across the bearing by
+        // [sin(δ + ψ) − sin δ]·x + [cos(δ + ψ) − cos δ]·y.
+        let deck = DeckGeometry::default();
+        let delta = 9.0_f64.to_radians();
+        let (x, y) = (-81.0 - 60.0 * delta.cos(), -10.0 + 60.0 * delta.sin());
+        let yaw = 0.003;
+        let expected =
+            ((delta + yaw).sin() - delta.sin()) * x + ((delta + yaw).cos() - delta.cos()) * y;
+        let moved = centreline_displacement_m(&deck, 0.0, yaw, 0.0, 60.0);
+        assert!((moved - expected).abs() < 1e-9, "{moved} vs {expected}");
+        // About 0.42 m to port: the stern swings left as the bow yaws right.
+        assert!((moved + 0.416).abs() < 0.005, "{moved}");
+        // The aim point, nearer the rotation centre, moves less.
+        assert!(aim_point_displacement_m(&deck, 0.0, yaw, 0.0).abs() < 0.6 * moved.abs());
+    }
+
+    #[test]
+    fn the_station_passes_from_the_ramp_to_the_point_abreast_without_a_step() {
+        // 600 m out at 60 m/s: 9 s to the ramp, aiming at the ramp.
+        assert_eq!(compensation_station(600.0, 60.0, 60.0), (9.0, 60.0));
+        assert_eq!(compensation_station(60.0, 60.0, 60.0), (0.0, 60.0));
+        // Past the ramp: the point abreast of the hook, now; at and past the aim point,
+        // the aim point.
+        assert_eq!(compensation_station(25.0, 60.0, 60.0), (0.0, 25.0));
+        assert_eq!(compensation_station(-3.0, 60.0, 60.0), (0.0, 0.0));
+        // A station of 0: the aim point at touchdown.
+        assert_eq!(compensation_station(600.0, 60.0, 0.0), (10.0, 0.0));
+        // The forecast of a moving deck is continuous as the hook crosses the station.
+        let deck = DeckGeometry::default();
+        let moving = LateralShipMotionMeasurement {
+            time_s: 10.0,
+            roll_rad: 0.01,
+            roll_rate_radps: -0.002,
+            yaw_rad: -0.003,
+            yaw_rate_radps: 0.001,
+            sway_m: 0.3,
+            sway_rate_mps: -0.1,
+        };
+        let at = |range_m: f64| {
+            let (horizon, aft) = compensation_station(range_m, 60.0, 60.0);
+            lateral_centreline_forecast_m(&deck, &moving, 10.05, horizon, aft)
+        };
+        let step = (at(60.0 + 1e-6) - at(60.0 - 1e-6)).abs();
+        assert!(step < 1e-6, "{step}");
+        assert!(at(60.0).abs() > 0.5, "the deck moves: {}", at(60.0));
     }
 
     #[test]

@@ -1,9 +1,9 @@
 //! The 3-D approach's discrete parts, once per step (docs/model.md §10.3): the roll,
 //! yaw and sway filters' noise, the ship's lateral motion sensing and the forecast of
-//! the landing point's lateral motion, the bank and sideslip measurements, and the
-//! lateral wave-off criteria.
+//! the lineup compensation's station, the bank, sideslip and heading measurements, the
+//! heading hold's weight, and the lateral wave-off criteria.
 
-use super::forecast::{lateral_landing_point_forecast_m, oscillator_forecast};
+use super::forecast::{compensation_station, lateral_centreline_forecast_m, oscillator_forecast};
 use super::HeldLateral;
 use crate::aircraft::six_dof::SixDofAircraft;
 use crate::aircraft::Plant;
@@ -17,7 +17,8 @@ use crate::simulation::outer_loops::OuterLoops;
 pub(crate) struct LateralStep {
     /// What is held over the step (its `read` still to be set for a flight computer).
     pub held: HeldLateral,
-    /// Bank and sideslip as the sensors give them now (rad): a frame's reading.
+    /// Bank and the yaw law's angle (sideslip, or in close the heading error) as the
+    /// sensors give them now (rad): a frame's reading.
     pub fresh_read: (f64, f64),
     /// A wave-off on the lateral criteria, decided now.
     pub decision: Option<WaveOffDecision>,
@@ -58,11 +59,20 @@ impl ClosedLoop {
             - self.deck.landing_point_aft_of_pitch_centre_m
             - kinematics.hook.x_m;
         let time_to_go_s = (range_m / lateral.closure_mps).clamp(0.0, 60.0);
+        // The centreline's point the compensation aims at: the station (the ramp) when
+        // the hook will cross it, then the point abreast of the hook.
+        let (horizon_s, aft_m) = compensation_station(
+            range_m,
+            lateral.closure_mps,
+            lateral.lineup.compensation_station_aft_m,
+        );
         let forecast_m = lateral.last_measurement.map_or(0.0, |m| {
-            lateral_landing_point_forecast_m(&self.deck, &m, t, time_to_go_s)
+            lateral_centreline_forecast_m(&self.deck, &m, t, horizon_s, aft_m)
         });
         let bank_noise_rad = lateral.draw_bank_noise(t, &mut lateral_streams.bank);
         let sideslip_noise_rad = lateral.draw_sideslip_noise(&mut lateral_streams.sideslip);
+        let heading_noise_rad = lateral.draw_bank_noise(t, &mut lateral_streams.heading);
+        let heading_hold_weight = lateral.heading_hold.weight(time_to_go_s);
         let air = aircraft.air_velocity(
             [state.u_mps, state.v_mps, state.w_mps],
             [state.phi_rad, state.theta_rad, state.psi_rad],
@@ -81,7 +91,7 @@ impl ClosedLoop {
             let predicted = oscillator_forecast(
                 error,
                 rate,
-                lateral.lineup.natural_frequency_radps,
+                lateral.lineup.natural_frequency_at(1.0),
                 lateral.lineup.damping_ratio.min(0.99),
                 time_to_go_s,
             );
@@ -94,10 +104,19 @@ impl ClosedLoop {
                 ship_noise: lateral.ship.draw_noise(&mut lateral_streams.ship, dt),
                 bank_noise_rad,
                 sideslip_noise_rad,
+                heading_noise_rad,
+                heading_hold_weight,
                 forecast_m,
                 read: None,
             },
-            fresh_read: (state.phi_rad + bank_noise_rad, beta + sideslip_noise_rad),
+            fresh_read: (
+                state.phi_rad + bank_noise_rad,
+                lateral.heading_hold.yaw_channel_angle_rad(
+                    beta + sideslip_noise_rad,
+                    state.psi_rad + heading_noise_rad,
+                    heading_hold_weight,
+                ),
+            ),
             decision,
         })
     }

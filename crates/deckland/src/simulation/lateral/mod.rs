@@ -14,10 +14,12 @@
 //! - **wind**: [`crate::environment::WindModel::three_dimensional`]: the wind over deck
 //!   down the angled deck, the crosswind, lateral turbulence.
 //! - **lineup** ([`crate::control::lineup`]): the hook's offset from its reference line
-//!   (the mean centreline, moved in close by the forecast of the landing point's lateral
-//!   motion, [`forecast`], with the glide path's compensation weight) → bank command.
+//!   (the mean centreline, moved in close by the forecast of the centreline's lateral
+//!   motion at the ramp when the hook crosses it, [`forecast`], with the glide path's
+//!   compensation weight, which also tightens the loop) → bank command.
 //! - **lateral laws**: the roll O-PD (bank command → aileron) and the yaw O-PD (β = 0 →
-//!   rudder), read and commanded at the flight computer's frames as the pitch law is.
+//!   rudder; in close, the crab heading: [`crate::control::heading_hold`]), read and
+//!   commanded at the flight computer's frames as the pitch law is.
 //!
 //! Otherwise the 6-DOF's aileron and rudder are held at their trim (`lateral_hold`).
 
@@ -36,6 +38,7 @@ pub(crate) use build::{attach, start};
 pub use signals::LateralSignals;
 pub use touchdown::LateralTouchdown;
 
+use crate::control::heading_hold::HeadingHold;
 use crate::control::lateral::{ChannelInputs, RollLaw, RollLawInputs, YawLaw, YawLawInputs};
 use crate::control::lineup::LineupParameters;
 use crate::control::pitch::ElevatorSaturation;
@@ -90,6 +93,8 @@ pub(crate) struct LateralLoop {
     pub yaw: Arc<dyn YawLaw>,
     /// The lineup guidance.
     pub lineup: LineupParameters,
+    /// The yaw law's heading hold in close.
+    pub heading_hold: HeadingHold,
     /// The lateral wave-off criteria.
     pub wave_off: LateralWaveOffLimits,
     /// Aileron and rudder trims and limits.
@@ -105,7 +110,8 @@ pub(crate) struct LateralLoop {
     pub last_measurement: Option<LateralShipMotionMeasurement>,
     /// The landing point's and the ramp's rise per unit sin of the ship's roll (m).
     pub roll_rise_m: (f64, f64),
-    /// With a flight computer: the bank and sideslip read at the frame's start (rad).
+    /// With a flight computer: the bank and the yaw law's angle read at the frame's
+    /// start (rad).
     pub read: (f64, f64),
 }
 
@@ -118,6 +124,8 @@ pub struct LateralStreams {
     pub bank: NoiseStream,
     /// The sideslip measurement's white noise.
     pub sideslip: NoiseStream,
+    /// The heading measurement's white noise.
+    pub heading: NoiseStream,
 }
 
 /// What the 3-D approach holds over a step.
@@ -129,9 +137,16 @@ pub struct HeldLateral {
     pub bank_noise_rad: f64,
     /// Sideslip measurement error (rad).
     pub sideslip_noise_rad: f64,
-    /// The forecast lateral displacement of the landing point at touchdown (m, right).
+    /// Heading measurement error (rad).
+    pub heading_noise_rad: f64,
+    /// The heading hold's weight (–): 0, the yaw law holds β = 0; 1, the crab heading.
+    pub heading_hold_weight: f64,
+    /// The forecast lateral displacement of the compensation's centreline point (by
+    /// default the ramp when the hook crosses it; [`forecast::compensation_station`])
+    /// (m, right).
     pub forecast_m: f64,
-    /// With a flight computer, the bank and sideslip it read at the frame's start (rad).
+    /// With a flight computer, the bank and the yaw law's angle (the sideslip, or in
+    /// close the heading error) it read at the frame's start (rad).
     pub read: Option<(f64, f64)>,
 }
 
@@ -142,6 +157,7 @@ pub(crate) struct LateralMeasurements {
     pub roll_rate_radps: f64,
     pub sideslip_rad: f64,
     pub yaw_rate_radps: f64,
+    pub heading_rad: f64,
     pub aileron_rad: f64,
     pub rudder_rad: f64,
 }
@@ -168,10 +184,16 @@ impl LateralLoop {
         measured: &LateralMeasurements,
         held: &HeldLateral,
     ) -> (RollLawInputs, YawLawInputs) {
-        let (bank_read, sideslip_read) = held.read.unwrap_or((
-            measured.bank_rad + held.bank_noise_rad,
-            measured.sideslip_rad + held.sideslip_noise_rad,
-        ));
+        let (bank_read, sideslip_read) = held.read.unwrap_or_else(|| {
+            (
+                measured.bank_rad + held.bank_noise_rad,
+                self.heading_hold.yaw_channel_angle_rad(
+                    measured.sideslip_rad + held.sideslip_noise_rad,
+                    measured.heading_rad + held.heading_noise_rad,
+                    held.heading_hold_weight,
+                ),
+            )
+        });
         let roll = RollLawInputs(ChannelInputs {
             command_rad: bank_command_rad,
             measured_rad: bank_read,
@@ -195,8 +217,9 @@ impl LateralLoop {
         (roll, yaw)
     }
 
-    /// The bank measurement's error at `time_s` with a white-noise sample drawn from
-    /// `stream` (rad): white noise plus the sinusoid, as the pitch sensor's.
+    /// The bank (or heading) measurement's error at `time_s` with a white-noise sample
+    /// drawn from `stream` (rad): white noise plus the sinusoid, as the pitch sensor's
+    /// (shared model §10.7).
     pub fn draw_bank_noise(&self, time_s: f64, stream: &mut NoiseStream) -> f64 {
         let p = &self.bank_noise;
         if !p.enabled {
