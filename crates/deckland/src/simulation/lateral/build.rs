@@ -148,6 +148,8 @@ pub(crate) fn build(
         sensor: LateralShipMotionSensor::new(env.ship_sensing, streams)?,
         last_measurement: None,
         read: (trim.phi_rad, trim.sideslip_rad),
+        view_memo: Default::default(),
+        step_view: None,
     };
     Ok(ThreeDimensional {
         lateral,
