@@ -1,12 +1,14 @@
 //! One full adverse approach: 1 ms RK4, every disturbance, O-PD, summary recording only;
-//! with the 3-DOF aircraft (the default) and with the 6-DOF (`[aircraft] model = "6dof"`).
+//! with the 3-DOF aircraft (the default), with the 6-DOF (`[aircraft] model = "6dof"`),
+//! and the 3-D approach of `scenarios/crosswind.toml` (6-DOF, angled deck, moving ship,
+//! moderate sea, 5 m/s crosswind).
 
 #![allow(missing_docs)] // criterion_group! generates undocumented items
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use deckland::aircraft::PlantModel;
 use deckland::recording::SummaryRecorder;
-use deckland::scenario::Scenario;
+use deckland::scenario::{load_scenario, Scenario};
 use deckland::simulation::Simulation;
 use std::hint::black_box;
 
@@ -31,6 +33,23 @@ fn approach(c: &mut Criterion) {
     group.bench_function("adverse O-PD, summary only, 6-DOF aircraft", |b| {
         b.iter(|| {
             Simulation::new(black_box(&six_dof))
+                .expect("valid")
+                .run(&mut SummaryRecorder)
+        })
+    });
+    let crosswind = load_scenario(
+        include_str!("../../../scenarios/crosswind.toml"),
+        "crosswind.toml",
+    )
+    .expect("scenarios/crosswind.toml is valid");
+    let simulated_3d_s = Simulation::new(&crosswind)
+        .expect("valid")
+        .run(&mut SummaryRecorder)
+        .end_time_s;
+    println!("simulated 3-D approach length: {simulated_3d_s:.2} s");
+    group.bench_function("3-D approach (crosswind.toml), summary only", |b| {
+        b.iter(|| {
+            Simulation::new(black_box(&crosswind))
                 .expect("valid")
                 .run(&mut SummaryRecorder)
         })

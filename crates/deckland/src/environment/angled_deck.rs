@@ -60,14 +60,25 @@ pub struct ShipAttitude {
 }
 
 /// sin, cos of the heading ψ₀ + ψ_s, of the pitch θ_s and of the roll φ_s.
-type AttitudeSinCos = [(f64, f64); 3];
+pub(crate) type AttitudeSinCos = [(f64, f64); 3];
 
 fn attitude_sin_cos(pose: &ShipPose, mean_heading_rad: f64) -> AttitudeSinCos {
     [
         (mean_heading_rad + pose.yaw_rad).sin_cos(),
-        pose.pitch_rad.sin_cos(),
-        pose.roll_rad.sin_cos(),
+        sin_cos(pose.pitch_rad),
+        sin_cos(pose.roll_rad),
     ]
+}
+
+/// sin, cos of `angle` (rad); of ±0 without evaluating them (sin ±0 = ±0, cos ±0 = 1:
+/// the same values), as for a pose without pitch or roll.
+#[inline]
+fn sin_cos(angle: f64) -> (f64, f64) {
+    if angle == 0.0 {
+        (angle, 1.0)
+    } else {
+        angle.sin_cos()
+    }
 }
 
 /// Ship-to-earth rotation R = R_z(ψ)·R_y(θ)·R_x(φ), in (x forward, y right, z down).
@@ -106,6 +117,19 @@ fn angular_velocity(angles: &AttitudeSinCos, rate: &ShipPoseRate) -> [f64; 3] {
         theta_dot * c_psi + phi_dot * s_psi * c_theta,
         psi_dot - phi_dot * s_theta,
     ]
+}
+
+impl ShipAttitude {
+    /// The rate of the heading atan2(d_y, d_x) of the earth direction `direction` of a
+    /// line fixed in the ship (rad/s, positive to the right): with ḋ = ω × d (earth
+    /// axes, z down), (d_x·ḋ_y − d_y·ḋ_x)/(d_x² + d_y²).
+    pub fn heading_rate_radps(&self, direction: &EarthDirection) -> f64 {
+        let [wx, wy, wz] = self.angular_velocity;
+        let (dx, dy, dz) = (direction.x, direction.y, -direction.h);
+        let dx_rate = wy * dz - wz * dy;
+        let dy_rate = wz * dx - wx * dz;
+        (dx * dy_rate - dy * dx_rate) / (dx * dx + dy * dy)
+    }
 }
 
 impl DeckGeometry {
@@ -155,12 +179,63 @@ impl DeckGeometry {
 
     /// The ship's attitude for the 3-D `pose` and its `rate` ([`ShipAttitude`]).
     pub fn ship_attitude(&self, pose: &ShipPose, rate: &ShipPoseRate) -> ShipAttitude {
-        let angles = attitude_sin_cos(pose, self.ship_mean_heading_rad());
+        let mean_heading_rad = self.ship_mean_heading_rad();
+        let angles = attitude_sin_cos(pose, mean_heading_rad);
+        // The deck angle is the mean heading: without yaw, its sine and cosine are the
+        // heading's.
+        let deck_angle_sin_cos = if (mean_heading_rad + pose.yaw_rad).to_bits()
+            == self.deck_angle_deg.to_radians().to_bits()
+        {
+            angles[0]
+        } else {
+            self.deck_angle_deg.to_radians().sin_cos()
+        };
+        Self::ship_attitude_of(&angles, rate, deck_angle_sin_cos)
+    }
+
+    /// The sines and cosines of the heading ψ₀ + ψ_s, of the pitch θ_s and of the roll
+    /// φ_s of the 3-D `pose`.
+    pub(crate) fn attitude_sin_cos(&self, pose: &ShipPose) -> AttitudeSinCos {
+        attitude_sin_cos(pose, self.ship_mean_heading_rad())
+    }
+
+    /// [`DeckGeometry::ship_attitude`] from the attitude's sines and cosines `angles`
+    /// ([`DeckGeometry::attitude_sin_cos`]) and the deck angle's `deck_angle_sin_cos`, evaluated once
+    /// by the caller.
+    pub(crate) fn ship_attitude_of(
+        angles: &AttitudeSinCos,
+        rate: &ShipPoseRate,
+        deck_angle_sin_cos: (f64, f64),
+    ) -> ShipAttitude {
         ShipAttitude {
-            rotation: rotation(&angles),
-            angular_velocity: angular_velocity(&angles, rate),
-            deck_angle_sin_cos: self.deck_angle_deg.to_radians().sin_cos(),
+            rotation: rotation(angles),
+            angular_velocity: angular_velocity(angles, rate),
+            deck_angle_sin_cos,
         }
+    }
+
+    /// [`DeckGeometry::aim_point`] and [`DeckGeometry::velocity_along_deck`] at the aim
+    /// point (the longitudinal deck geometry, Eq. 17–18) with the pitch's (sin θ_s,
+    /// cos θ_s) evaluated once by the caller: the same operations, the same results.
+    pub(crate) fn aim_point_along_deck_of(
+        &self,
+        pose: &ShipPose,
+        rate: &ShipPoseRate,
+        (sin, cos): (f64, f64),
+    ) -> (EarthPoint, EarthVelocity) {
+        let r = self.landing_point_aft_of_pitch_centre_m - 0.0;
+        (
+            EarthPoint {
+                x_m: pose.pitch_centre_x_m - r * cos,
+                y_m: pose.pitch_centre_y_m,
+                h_m: self.deck_height_m + pose.heave_m - r * sin,
+            },
+            EarthVelocity {
+                x_mps: rate.pitch_centre_x_rate_mps + r * sin * rate.pitch_rate_radps,
+                y_mps: rate.pitch_centre_y_rate_mps,
+                h_mps: rate.heave_rate_mps - r * cos * rate.pitch_rate_radps,
+            },
+        )
     }
 
     /// Ship-axes position (x forward, y starboard, z down; m) of the deck point `s_m`
@@ -311,6 +386,73 @@ mod tests {
         let deck = DeckGeometry::default();
         let (aim, ramp) = (deck.ship_axes_point(0.0), deck.ship_axes_point(-60.0));
         assert!((ramp[1] - aim[1] - 9.386).abs() < 1e-3);
+    }
+
+    #[test]
+    fn the_attitude_and_aim_point_from_sines_and_cosines_are_those_of_the_pose() {
+        let deck = DeckGeometry::default();
+        let pose = ShipPose {
+            pitch_centre_x_m: 12.5,
+            pitch_centre_y_m: -3.0,
+            heave_m: 0.7,
+            pitch_rad: 0.021,
+            roll_rad: -0.013,
+            yaw_rad: 0.004,
+        };
+        let rate = ShipPoseRate {
+            pitch_centre_x_rate_mps: 7.6,
+            pitch_centre_y_rate_mps: 1.2,
+            heave_rate_mps: -0.4,
+            pitch_rate_radps: 0.01,
+            roll_rate_radps: 0.02,
+            yaw_rate_radps: -0.003,
+        };
+        let angles = deck.attitude_sin_cos(&pose);
+        let deck_angle = deck.deck_angle_deg.to_radians().sin_cos();
+        assert_eq!(
+            DeckGeometry::ship_attitude_of(&angles, &rate, deck_angle),
+            deck.ship_attitude(&pose, &rate)
+        );
+        let (aim, velocity) = deck.aim_point_along_deck_of(&pose, &rate, angles[1]);
+        assert_eq!(aim, deck.aim_point(&pose));
+        assert_eq!(velocity, deck.velocity_along_deck(&pose, &rate, 0.0));
+    }
+
+    #[test]
+    fn the_centreline_heading_rate_is_the_derivative_of_its_heading() {
+        // The pose moved along its rate by ±h: the heading's central difference.
+        let deck = DeckGeometry::default();
+        let pose = ShipPose {
+            pitch_rad: 0.02,
+            roll_rad: -0.015,
+            yaw_rad: 0.004,
+            ..ShipPose::default()
+        };
+        let rate = ShipPoseRate {
+            pitch_rate_radps: 0.012,
+            roll_rate_radps: 0.02,
+            yaw_rate_radps: -0.003,
+            ..ShipPoseRate::default()
+        };
+        let heading = |h: f64| {
+            let moved = ShipPose {
+                pitch_rad: pose.pitch_rad + h * rate.pitch_rate_radps,
+                roll_rad: pose.roll_rad + h * rate.roll_rate_radps,
+                yaw_rad: pose.yaw_rad + h * rate.yaw_rate_radps,
+                ..pose
+            };
+            let d = deck.landing_centreline(&moved).direction;
+            d.y.atan2(d.x)
+        };
+        let h = 1e-3;
+        let numerical = (heading(h) - heading(-h)) / (2.0 * h);
+        let attitude = deck.ship_attitude(&pose, &rate);
+        let analytical = attitude.heading_rate_radps(&deck.landing_centreline(&pose).direction);
+        assert!(
+            (analytical - numerical).abs() < 1e-9,
+            "{analytical} vs {numerical}"
+        );
+        assert!((analytical - rate.yaw_rate_radps).abs() < 1e-3);
     }
 
     #[test]

@@ -186,14 +186,26 @@ impl ClosedLoop {
             ..Signals::default()
         };
 
-        // ship: the deck's pose and rate, the moving landing point.
+        // ship: the deck's pose and rate, the moving landing point (in the 3-D approach,
+        // its equivalent longitudinal pose).
         let ship_state = self.ship_state(x);
-        bus.ship = self.ship.pose(&ship_state, self.ship_initial_x_m, t);
-        bus.ship_rate = self.ship.pose_rate(&ship_state);
-        bus.aim_point = self.deck.aim_point(&bus.ship);
-        let view = self.lateral.as_ref().map(|lateral| {
-            lateral.ship_outputs(&self.ship, &self.deck, &ship_state, layout, x, &mut bus)
-        });
+        let view = match &self.lateral {
+            Some(lateral) => Some(lateral.ship_outputs(
+                &self.ship,
+                &self.deck,
+                &ship_state,
+                layout,
+                x,
+                held.lateral.as_ref(),
+                &mut bus,
+            )),
+            None => {
+                bus.ship = self.ship.pose(&ship_state, self.ship_initial_x_m, t);
+                bus.ship_rate = self.ship.pose_rate(&ship_state);
+                bus.aim_point = self.deck.aim_point(&bus.ship);
+                None
+            }
+        };
 
         // aircraft: position, attitude, the hook.
         let kinematics = plant::kinematics(

@@ -2,7 +2,7 @@
 //! 2nd ed., §2.5, flat earth, body axes, Euler angles), and the plant built on the
 //! longitudinal model. See the module docs of `six_dof` for the equations.
 
-use super::kinematics::{body_to_earth, earth_to_body, euler_rates};
+use super::kinematics::EulerTrig;
 use super::lateral_aerodynamics::lateral_coefficients;
 use super::parameters::{LateralParameters, SurfaceActuatorParameters};
 use super::state::SixDofState;
@@ -127,7 +127,13 @@ impl SixDofAircraft {
     /// angles (φ, θ, ψ) and an earth-axis wind: (u, v, w) − R(φ, θ, ψ)·W.
     #[inline]
     pub fn air_velocity(&self, velocity: [f64; 3], euler: [f64; 3], wind: &Wind) -> [f64; 3] {
-        let wind_body = earth_to_body(euler, [wind.x_mps, wind.y_mps, wind.z_mps]);
+        self.air_velocity_trig(velocity, &EulerTrig::new(euler), wind)
+    }
+
+    /// [`SixDofAircraft::air_velocity`] with the Euler angles' sines and cosines.
+    #[inline]
+    pub fn air_velocity_trig(&self, velocity: [f64; 3], trig: &EulerTrig, wind: &Wind) -> [f64; 3] {
+        let wind_body = trig.earth_to_body([wind.x_mps, wind.y_mps, wind.z_mps]);
         [
             velocity[0] - wind_body[0],
             velocity[1] - wind_body[1],
@@ -167,16 +173,31 @@ impl SixDofAircraft {
         inputs: &SixDofInputs,
         wind: &Wind,
     ) -> BodyRates {
+        let trig = EulerTrig::new(euler);
+        let air = self.air_velocity_trig(velocity, &trig, wind);
+        self.body_rates_in_air(velocity, rates, &trig, air, &self.air_data(air), inputs)
+    }
+
+    /// [`SixDofAircraft::body_rates`] from the Euler angles' sines and cosines, the
+    /// air-relative body velocity `air` (m/s) and its air data `data`.
+    #[inline]
+    pub fn body_rates_in_air(
+        &self,
+        velocity: [f64; 3],
+        rates: [f64; 3],
+        trig: &EulerTrig,
+        air: [f64; 3],
+        data: &SixDofAirData,
+        inputs: &SixDofInputs,
+    ) -> BodyRates {
         let p = self.longitudinal.parameters();
         let config = self.longitudinal.configuration();
         let lat = &self.lateral;
         let [u, v, w] = velocity;
         let [roll_rate, q, r] = rates;
-        let (sin_phi, cos_phi) = euler[0].sin_cos();
-        let (sin_t, cos_t) = euler[1].sin_cos();
-        let air = self.air_velocity(velocity, euler, wind);
+        let (sin_phi, cos_phi) = (trig.sin_phi, trig.cos_phi);
+        let (sin_t, cos_t) = (trig.sin_theta, trig.cos_theta);
         let [ua, _, wa] = air;
-        let data = self.air_data(air);
         let airspeed = data.airspeed_mps;
         let in_plane = (ua * ua + wa * wa).sqrt();
         let (sin_a, cos_a) = if in_plane > 0.0 {
@@ -272,18 +293,34 @@ impl SixDofAircraft {
         commands: &SixDofCommands,
         wind: &Wind,
     ) -> SixDofState {
+        let trig = EulerTrig::new([state.phi_rad, state.theta_rad, state.psi_rad]);
+        let air = self.air_velocity_trig([state.u_mps, state.v_mps, state.w_mps], &trig, wind);
+        self.derivative_in_air(state, &trig, air, &self.air_data(air), commands)
+    }
+
+    /// [`SixDofAircraft::derivative`] from the Euler angles' sines and cosines `trig`,
+    /// the air-relative body velocity `air` (m/s) and its air data `data` (those of the
+    /// state in the wind: the closed loop has them already).
+    #[inline]
+    pub fn derivative_in_air(
+        &self,
+        state: &SixDofState,
+        trig: &EulerTrig,
+        air: [f64; 3],
+        data: &SixDofAirData,
+        commands: &SixDofCommands,
+    ) -> SixDofState {
         let velocity = [state.u_mps, state.v_mps, state.w_mps];
         let rates = [state.p_radps, state.q_radps, state.r_radps];
-        let euler = [state.phi_rad, state.theta_rad, state.psi_rad];
         let inputs = SixDofInputs {
             elevator_rad: state.elevator_rad,
             thrust_n: state.total_thrust_n(),
             aileron_rad: state.aileron_rad,
             rudder_rad: state.rudder_rad,
         };
-        let body = self.body_rates(velocity, rates, euler, &inputs, wind);
-        let [phi_dot, theta_dot, psi_dot] = euler_rates(rates, euler);
-        let [x_dot, y_dot, z_dot] = body_to_earth(euler, velocity);
+        let body = self.body_rates_in_air(velocity, rates, trig, air, data, &inputs);
+        let [phi_dot, theta_dot, psi_dot] = trig.euler_rates(rates);
+        let [x_dot, y_dot, z_dot] = trig.body_to_earth(velocity);
         let engines = self.longitudinal.engines();
         let (elevator_rate, elevator_acceleration) = self.longitudinal.actuator().derivative(
             state.elevator_rad,

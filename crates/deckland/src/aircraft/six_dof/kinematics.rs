@@ -3,47 +3,104 @@
 //! bearing, y right, z down; body x forward, y right wing, z down; 3-2-1 Euler angles
 //! (ψ, θ, φ).
 
+/// The sines and cosines of the Euler angles (φ, θ, ψ), evaluated once per state so that
+/// the rotations, the Euler rates and the air data of one evaluation share them (the
+/// results are those of the functions taking the angles, to the bit).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EulerTrig {
+    /// sin φ.
+    pub sin_phi: f64,
+    /// cos φ.
+    pub cos_phi: f64,
+    /// sin θ.
+    pub sin_theta: f64,
+    /// cos θ.
+    pub cos_theta: f64,
+    /// sin ψ.
+    pub sin_psi: f64,
+    /// cos ψ.
+    pub cos_psi: f64,
+}
+
+impl EulerTrig {
+    /// The sines and cosines of `euler` = (φ, θ, ψ) (rad).
+    #[inline]
+    pub fn new(euler: [f64; 3]) -> Self {
+        let (sin_phi, cos_phi) = euler[0].sin_cos();
+        let (sin_theta, cos_theta) = euler[1].sin_cos();
+        let (sin_psi, cos_psi) = euler[2].sin_cos();
+        Self {
+            sin_phi,
+            cos_phi,
+            sin_theta,
+            cos_theta,
+            sin_psi,
+            cos_psi,
+        }
+    }
+
+    /// Euler-angle rates (φ̇, θ̇, ψ̇) from body rates (p, q, r): [`euler_rates`].
+    #[inline]
+    pub fn euler_rates(&self, rates: [f64; 3]) -> [f64; 3] {
+        let [p, q, r] = rates;
+        let (sin_phi, cos_phi, sin_t, cos_t) =
+            (self.sin_phi, self.cos_phi, self.sin_theta, self.cos_theta);
+        let turn = q * sin_phi + r * cos_phi;
+        [
+            p + sin_t / cos_t * turn,
+            q * cos_phi - r * sin_phi,
+            turn / cos_t,
+        ]
+    }
+
+    /// The direction cosines R(φ, θ, ψ) from earth to body axes (3-2-1 rotation), row by
+    /// row.
+    #[inline]
+    fn direction_cosines(&self) -> [[f64; 3]; 3] {
+        let (sf, cf) = (self.sin_phi, self.cos_phi);
+        let (st, ct) = (self.sin_theta, self.cos_theta);
+        let (ss, cs) = (self.sin_psi, self.cos_psi);
+        [
+            [ct * cs, ct * ss, -st],
+            [sf * st * cs - cf * ss, sf * st * ss + cf * cs, sf * ct],
+            [cf * st * cs + sf * ss, cf * st * ss - sf * cs, cf * ct],
+        ]
+    }
+
+    /// An earth-axis vector (x forward, y right, z down) in body axes: [`earth_to_body`].
+    #[inline]
+    pub fn earth_to_body(&self, earth: [f64; 3]) -> [f64; 3] {
+        let m = self.direction_cosines();
+        [0, 1, 2].map(|i| m[i][0] * earth[0] + m[i][1] * earth[1] + m[i][2] * earth[2])
+    }
+
+    /// A body-axis vector in earth axes (x forward, y right, z down): [`body_to_earth`].
+    #[inline]
+    pub fn body_to_earth(&self, body: [f64; 3]) -> [f64; 3] {
+        let m = self.direction_cosines();
+        [0, 1, 2].map(|j| m[0][j] * body[0] + m[1][j] * body[1] + m[2][j] * body[2])
+    }
+}
+
 /// Euler-angle rates (φ̇, θ̇, ψ̇) from body rates (p, q, r) (Stevens & Lewis Eq. 1.4-4):
 /// φ̇ = p + tan θ (q sin φ + r cos φ), θ̇ = q cos φ − r sin φ,
 /// ψ̇ = (q sin φ + r cos φ)/cos θ. Singular at θ = ±90°, far outside an approach.
 #[inline]
 pub fn euler_rates(rates: [f64; 3], euler: [f64; 3]) -> [f64; 3] {
-    let [p, q, r] = rates;
-    let (sin_phi, cos_phi) = euler[0].sin_cos();
-    let (sin_t, cos_t) = euler[1].sin_cos();
-    let turn = q * sin_phi + r * cos_phi;
-    [
-        p + sin_t / cos_t * turn,
-        q * cos_phi - r * sin_phi,
-        turn / cos_t,
-    ]
+    EulerTrig::new(euler).euler_rates(rates)
 }
 
-/// The direction cosines R(φ, θ, ψ) from earth to body axes (3-2-1 rotation), row by row.
-#[inline]
-fn direction_cosines(euler: [f64; 3]) -> [[f64; 3]; 3] {
-    let (sf, cf) = euler[0].sin_cos();
-    let (st, ct) = euler[1].sin_cos();
-    let (ss, cs) = euler[2].sin_cos();
-    [
-        [ct * cs, ct * ss, -st],
-        [sf * st * cs - cf * ss, sf * st * ss + cf * cs, sf * ct],
-        [cf * st * cs + sf * ss, cf * st * ss - sf * cs, cf * ct],
-    ]
-}
-
-/// An earth-axis vector (x forward, y right, z down) in body axes.
+/// An earth-axis vector (x forward, y right, z down) in body axes, by the direction
+/// cosines R(φ, θ, ψ) from earth to body axes (3-2-1 rotation).
 #[inline]
 pub fn earth_to_body(euler: [f64; 3], earth: [f64; 3]) -> [f64; 3] {
-    let m = direction_cosines(euler);
-    [0, 1, 2].map(|i| m[i][0] * earth[0] + m[i][1] * earth[1] + m[i][2] * earth[2])
+    EulerTrig::new(euler).earth_to_body(earth)
 }
 
 /// A body-axis vector in earth axes (x forward, y right, z down).
 #[inline]
 pub fn body_to_earth(euler: [f64; 3], body: [f64; 3]) -> [f64; 3] {
-    let m = direction_cosines(euler);
-    [0, 1, 2].map(|j| m[0][j] * body[0] + m[1][j] * body[1] + m[2][j] * body[2])
+    EulerTrig::new(euler).body_to_earth(body)
 }
 
 #[cfg(test)]

@@ -80,7 +80,7 @@ mod trim;
 pub use dynamics::{
     BodyRates, OpenLoopSixDof, SixDofAirData, SixDofAircraft, SixDofCommands, SixDofInputs,
 };
-pub use kinematics::{body_to_earth, earth_to_body, euler_rates};
+pub use kinematics::{body_to_earth, earth_to_body, euler_rates, EulerTrig};
 pub use lateral_aerodynamics::{lateral_coefficients, LateralCoefficients, LateralDerivatives};
 pub use linearize::{
     linearize_six_dof, DutchRoll, LateralModes, RealMode, SixDofLinearModel, LATERAL_INPUT_NAMES,

@@ -8,7 +8,7 @@
 //! (`tests/six_dof_closed_loop.rs`).
 
 use super::dynamics::{SixDofAirData, SixDofAircraft, SixDofCommands};
-use super::kinematics::body_to_earth;
+use super::kinematics::EulerTrig;
 use super::state::SixDofState;
 use crate::aircraft::plant::{
     LateralKinematics, Plant, PlantAirData, PlantCommands, PlantKinematics, PlantModel,
@@ -21,6 +21,8 @@ use crate::environment::{EarthPoint, EarthVelocity, Wind};
 pub struct SixDofKinematic {
     /// The state.
     pub state: SixDofState,
+    /// The sines and cosines of its Euler angles.
+    pub trig: EulerTrig,
 }
 
 /// The 6-DOF plant's air data beside its outputs: the wind they were computed in and the
@@ -105,15 +107,14 @@ impl Plant for SixDofAircraft {
         hook: &HookGeometry,
         state: SixDofState,
     ) -> (SixDofKinematic, PlantKinematics) {
-        let euler = [state.phi_rad, state.theta_rad, state.psi_rad];
+        let trig = EulerTrig::new([state.phi_rad, state.theta_rad, state.psi_rad]);
         let rates = [state.p_radps, state.q_radps, state.r_radps];
-        let [x_rate, y_rate, z_rate] =
-            body_to_earth(euler, [state.u_mps, state.v_mps, state.w_mps]);
+        let [x_rate, y_rate, z_rate] = trig.body_to_earth([state.u_mps, state.v_mps, state.w_mps]);
         // The hook's offset from the CG in body axes (x forward, z down) and its velocity
         // relative to the CG, ω × r.
         let offset = [-hook.aft_of_cg_m, 0.0, hook.below_cg_m];
-        let [hook_dx, hook_dy, hook_dz] = body_to_earth(euler, offset);
-        let [hook_vx, hook_vy, hook_vz] = body_to_earth(euler, cross(rates, offset));
+        let [hook_dx, hook_dy, hook_dz] = trig.body_to_earth(offset);
+        let [hook_vx, hook_vy, hook_vz] = trig.body_to_earth(cross(rates, offset));
         let outputs = PlantKinematics {
             position: EarthPoint {
                 x_m: state.x_m,
@@ -149,17 +150,14 @@ impl Plant for SixDofAircraft {
                 rudder_rad: state.rudder_rad,
             }),
         };
-        (SixDofKinematic { state }, outputs)
+        (SixDofKinematic { state, trig }, outputs)
     }
 
     #[inline(always)]
     fn air_data(&self, kinematic: &SixDofKinematic, wind: &Wind) -> (SixDofAir, PlantAirData) {
         let s = &kinematic.state;
-        let air_velocity = self.air_velocity(
-            [s.u_mps, s.v_mps, s.w_mps],
-            [s.phi_rad, s.theta_rad, s.psi_rad],
-            wind,
-        );
+        let air_velocity =
+            self.air_velocity_trig([s.u_mps, s.v_mps, s.w_mps], &kinematic.trig, wind);
         let data = SixDofAircraft::air_data(self, air_velocity);
         let outputs = PlantAirData {
             airspeed_mps: data.airspeed_mps,
@@ -182,16 +180,17 @@ impl Plant for SixDofAircraft {
         air: &SixDofAir,
         commands: &PlantCommands,
     ) -> SixDofState {
-        let mut rate = SixDofAircraft::derivative(
-            self,
+        let mut rate = self.derivative_in_air(
             &kinematic.state,
+            &kinematic.trig,
+            air.air_velocity,
+            &air.data,
             &SixDofCommands {
                 elevator_rad: commands.elevator_rad,
                 thrust_n: commands.thrust_n,
                 aileron_rad: commands.aileron_rad,
                 rudder_rad: commands.rudder_rad,
             },
-            &air.wind,
         );
         if commands.lift_coefficient_increment != 0.0 {
             // Direct lift: q̄S·ΔC_L normal to the air-relative velocity in the plane of

@@ -163,6 +163,8 @@ pub(crate) fn build(
             forecast::roll_rise_per_sine_m(deck, -deck.ramp_aft_of_aim_point_m),
         ),
         read: (trim.phi_rad, trim.sideslip_rad),
+        view_memo: Default::default(),
+        step_view: None,
     };
     Ok(ThreeDimensional {
         lateral,

@@ -14,7 +14,11 @@ use crate::simulation::Signals;
 
 impl LateralLoop {
     /// `ship`: the 3-D pose onto the bus (the longitudinal blocks see its equivalent
-    /// longitudinal pose), with the ship's roll, yaw and sway.
+    /// longitudinal pose), with the ship's roll, yaw and sway. The pose is the step's
+    /// view ([`LateralLoop::step_view`], the one `held` was drawn with) carried to the
+    /// time at its rates ([`DeckView3d::at`]), exact at the step's start; without it,
+    /// it is computed.
+    #[allow(clippy::too_many_arguments)]
     #[inline]
     pub(crate) fn ship_outputs(
         &self,
@@ -23,10 +27,18 @@ impl LateralLoop {
         ship_state: &ShipMotionState,
         layout: &LoopLayout,
         x: &[f64],
+        held: Option<&HeldLateral>,
         bus: &mut Signals,
     ) -> DeckView3d {
         let lateral_state = LateralShipMotionState::from_array(&layout.ship_lateral.array(x));
-        let view = self.deck_view(ship, deck, ship_state, &lateral_state, bus.time_s);
+        let view = match (held, &self.step_view) {
+            (Some(held), Some(view))
+                if view.time_s.to_bits() == held.deck_view_time_s.to_bits() =>
+            {
+                view.at(bus.time_s)
+            }
+            _ => self.deck_view(ship, deck, ship_state, &lateral_state, bus.time_s),
+        };
         bus.ship = view.longitudinal;
         bus.ship_rate = view.longitudinal_rate;
         bus.aim_point = view.aim;

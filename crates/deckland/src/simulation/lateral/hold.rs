@@ -43,8 +43,16 @@ impl ClosedLoop {
             return None;
         };
         let state = SixDofAircraft::state_at(x, self.layout.aircraft.offset);
-        let (_, kinematics) = aircraft.kinematics(&self.hook, state);
+        let (kinematic, kinematics) = aircraft.kinematics(&self.hook, state);
         let ship_state = LateralShipMotionState::from_array(&self.layout.ship_lateral.array(x));
+        let deck_view = lateral.deck_view(
+            &self.ship,
+            &self.deck,
+            &crate::environment::ShipMotionState::from_array(&self.layout.ship.array(x)),
+            &ship_state,
+            t,
+        );
+        lateral.step_view = Some(deck_view);
         lateral.sensor.sample(t, &lateral.ship.outputs(&ship_state));
         while let Some(measurement) = lateral.sensor.receive(t) {
             lateral.last_measurement = Some(measurement);
@@ -73,9 +81,9 @@ impl ClosedLoop {
         let sideslip_noise_rad = lateral.draw_sideslip_noise(&mut lateral_streams.sideslip);
         let heading_noise_rad = lateral.draw_bank_noise(t, &mut lateral_streams.heading);
         let heading_hold_weight = lateral.heading_hold.weight(time_to_go_s);
-        let air = aircraft.air_velocity(
+        let air = aircraft.air_velocity_trig(
             [state.u_mps, state.v_mps, state.w_mps],
-            [state.phi_rad, state.theta_rad, state.psi_rad],
+            &kinematic.trig,
             wind,
         );
         let beta = aircraft.air_data(air).beta_rad;
@@ -108,6 +116,7 @@ impl ClosedLoop {
                 heading_hold_weight,
                 forecast_m,
                 read: None,
+                deck_view_time_s: t,
             },
             fresh_read: (
                 state.phi_rad + bank_noise_rad,

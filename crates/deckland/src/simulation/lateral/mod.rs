@@ -113,6 +113,12 @@ pub(crate) struct LateralLoop {
     /// With a flight computer: the bank and the yaw law's angle read at the frame's
     /// start (rad).
     pub read: (f64, f64),
+    /// The last deck view computed ([`pose::DeckViewMemo`]).
+    pub view_memo: pose::DeckViewMemo,
+    /// The ship's 3-D view at the start of the step being flown, held over its RK4
+    /// stages at its rates ([`pose::DeckView3d::at`]); `None` before the first step.
+    /// Kept here rather than in the held inputs, which every step copies.
+    pub step_view: Option<pose::DeckView3d>,
 }
 
 /// The random streams of the 3-D approach, drawn from step by step.
@@ -148,6 +154,9 @@ pub struct HeldLateral {
     /// With a flight computer, the bank and the yaw law's angle (the sideslip, or in
     /// close the heading error) it read at the frame's start (rad).
     pub read: Option<(f64, f64)>,
+    /// The time of the ship's 3-D view held over the step (s): the step's start
+    /// ([`LateralLoop::step_view`]).
+    pub(crate) deck_view_time_s: f64,
 }
 
 /// The lateral signals the laws read, from the bus.
