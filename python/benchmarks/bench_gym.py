@@ -15,9 +15,12 @@ is counted:
 3. gymnasium's ``make_vec(..., vectorization_mode="sync")`` of 2 environments;
 4. the native vectorised environment, ``make_vec(..., num_envs=--envs,
    vectorization_mode="vector_entry_point")`` (``attitude``), over every core;
-5. ``CartPole-v1`` through ``gymnasium.make``, for scale;
-6. ``render()`` with ``render_mode="rgb_array"``, frames per second;
-7. reproducibility: 4 vectorised environments against 4 single ones with the same
+5. the 3-D environment ``deckland/CarrierLanding3D-v0`` (``attitude``, the crosswind
+   scenario), one environment through ``gymnasium.make`` and ``--envs`` native
+   vectorised ones;
+6. ``CartPole-v1`` through ``gymnasium.make``, for scale;
+7. ``render()`` with ``render_mode="rgb_array"``, frames per second;
+8. reproducibility: 4 vectorised environments against 4 single ones with the same
    seeds over 800 steps with autoresets, bit for bit.
 
 Each figure is the fastest of ``--rounds`` interleaved rounds of ``--seconds`` each
@@ -47,6 +50,7 @@ import numpy as np
 import deckland
 from deckland import _deckland
 from deckland.env import ENV_ID
+from deckland.env3d import CONTROL_MODES_3D, ENV_ID_3D
 
 
 def realtime(on):
@@ -183,6 +187,9 @@ def main() -> None:
     single_env = gymnasium.make(ENV_ID)
     sync = gymnasium.make_vec(ENV_ID, num_envs=2, vectorization_mode="sync")
     native = gymnasium.make_vec(ENV_ID, num_envs=args.envs, vectorization_mode="vector_entry_point")
+    width_3d = len(CONTROL_MODES_3D["attitude"])
+    single_3d = gymnasium.make(ENV_ID_3D)
+    native_3d = gymnasium.make_vec(ENV_ID_3D, num_envs=args.envs, vectorization_mode="vector_entry_point")
     cartpole = gymnasium.make("CartPole-v1")
     rendering = gymnasium.make(ENV_ID, render_mode="rgb_array")
     cases = {
@@ -192,6 +199,10 @@ def main() -> None:
         "`make_vec`, sync, 2 envs": vector(sync, np.zeros((2, 3), dtype=np.float32)),
         f"`make_vec`, vector_entry_point, {args.envs} envs": vector(
             native, np.zeros((args.envs, 3), dtype=np.float32)
+        ),
+        "3-D env, `gymnasium.make`": single(single_3d, np.zeros(width_3d, dtype=np.float32)),
+        f"3-D env, `make_vec`, vector_entry_point, {args.envs} envs": vector(
+            native_3d, np.zeros((args.envs, width_3d), dtype=np.float32)
         ),
         "CartPole-v1, `gymnasium.make`": single(cartpole, 0),
         "`render()`, rgb_array (frames/s)": frames(rendering),

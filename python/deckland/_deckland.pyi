@@ -150,7 +150,15 @@ class _VecEnv:
     def step(
         self, actions: np.ndarray, seeds: Optional[List[int]]
     ) -> Tuple[
-        np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray, Optional[np.ndarray], Optional[np.ndarray]
+        np.ndarray,
+        np.ndarray,
+        np.ndarray,
+        np.ndarray,
+        np.ndarray,
+        np.ndarray,
+        Optional[np.ndarray],
+        Optional[np.ndarray],
+        Optional[np.ndarray],
     ]: ...
     def render(self, index: int) -> np.ndarray: ...
 

@@ -239,6 +239,10 @@ class CarrierLandingEnv(gymnasium.Env):
         return clone
 
 
+#: ``info["off_centre"]`` by the core's flag + 1: no touchdown, within the limit, off centre.
+_OFF_CENTRE = np.array([None, False, True], dtype=object)
+
+
 class CarrierLandingVecEnv(VectorEnv):
     """``num_envs`` environments of :class:`CarrierLandingEnv` stepped in one call to
     Rust, over threads (``RAYON_NUM_THREADS`` in all, the calling one included;
@@ -260,6 +264,9 @@ class CarrierLandingVecEnv(VectorEnv):
         "render_fps": 50,
         "autoreset_mode": AutoresetMode.NEXT_STEP,
     }
+
+    #: Whether ``info`` reports ``off_centre`` (the 3-D environment's).
+    _reports_off_centre = False
 
     def __init__(
         self,
@@ -371,7 +378,9 @@ class CarrierLandingVecEnv(VectorEnv):
             seeds = [0] * self.num_envs
             for i in self._restart:
                 seeds[i] = self._seed(i, None)
-        observation, reward, terminated, truncated, raw, pilot, codes, wires = self._core.step(actions, seeds)
+        observation, reward, terminated, truncated, raw, pilot, codes, wires, off_centre = self._core.step(
+            actions, seeds
+        )
         info: Dict[str, Any] = {"raw": raw, "autopilot_action": pilot}
         if codes is not None:  # some episodes ended
             done = terminated | truncated
@@ -379,6 +388,10 @@ class CarrierLandingVecEnv(VectorEnv):
             info["_outcome"] = done
             info["wire"] = wires
             info["_wire"] = done
+            if self._reports_off_centre:
+                # True or False after a touchdown, None without one (flag -1).
+                info["off_centre"] = _OFF_CENTRE[off_centre + 1]
+                info["_off_centre"] = done
             self._restart = np.flatnonzero(done).tolist()
         else:
             self._restart = None

@@ -165,8 +165,12 @@ class CarrierLanding3DEnv(CarrierLandingEnv):
 
 class CarrierLanding3DVecEnv(CarrierLandingVecEnv):
     """``num_envs`` environments of :class:`CarrierLanding3DEnv` stepped in one call to
-    Rust (as :class:`deckland.env.CarrierLandingVecEnv`; ``info`` has no ``off_centre``).
+    Rust (as :class:`deckland.env.CarrierLandingVecEnv`). When episodes end, ``info``
+    also holds ``off_centre`` (an object array: True or False after a touchdown, None
+    without one) and its mask ``_off_centre``.
     """
+
+    _reports_off_centre = True
 
     def __init__(
         self,

@@ -4,7 +4,7 @@
 
 use std::time::Instant;
 
-use deckland::experiments::OBSERVATION_COLUMNS;
+use deckland::experiments::{LATERAL_APPROACH_COLUMNS, OBSERVATION_COLUMNS};
 use deckland::scenario::Scenario as RustScenario;
 use deckland::simulation::{Overrides, RunSummary};
 use pyo3::intern;
@@ -35,11 +35,22 @@ use crate::stepping::{parse_action, python_law_label, EventRecorder, Stepper};
 ///   alone replaces only its loop. The actuator and engines still apply their
 ///   dynamics.
 ///
+/// - In a 3-D approach (`aircraft.model = "6dof"` with `approach.three_dimensional`),
+///   the lateral loops too, as the 3-D environment's taps replace them:
+///   `{"bank_command_rad": φ}` replaces the lineup guidance (the roll law tracks φ),
+///   `{"sideslip_command_rad": β}` the yaw law's reference (zero sideslip: coordinated),
+///   `{"aileron_rad": δa}` the roll law and `{"rudder_rad": δr}` the yaw law (absolute
+///   deflections, right wing down and trailing edge left positive). A 3-DOF approach
+///   refuses them (`ValueError`).
+///
 /// Each key has a physical range (`action_ranges`): `pitch_command_rad` within ±π/2
 /// (the pitch attitude's range), `elevator_rad` within the stabilator's travel
 /// (`aircraft.elevator_actuator`, −25° to +10° by default), `thrust_n` from 0 to the
-/// maximum thrust of both engines. A value beyond its range, or not finite, raises
-/// `ValueError` naming the key, the value and the range.
+/// maximum thrust of both engines; `bank_command_rad` within ±π/2, `sideslip_command_rad`
+/// within ±30°, `aileron_rad` and `rudder_rad` within their travel
+/// (`aircraft.aileron_actuator.travel_deg`, 25°; `aircraft.rudder_actuator.travel_deg`,
+/// 30°). A value beyond its range, or not finite, raises `ValueError` naming the key, the
+/// value and the range.
 /// The built-in law's `elevator_command_rad` can lie beyond the travel (the actuator
 /// saturates it): limit it to the range before sending it back as an action.
 ///
@@ -64,6 +75,9 @@ use crate::stepping::{parse_action, python_law_label, EventRecorder, Stepper};
 ///   the deck-motion predictor expects it (the glide path's anchor near the end);
 /// - `wind_x_mps`, `wind_z_mps`: the wind at the aircraft (earth axes, x forward, z
 ///   down);
+/// - in a 3-D approach also the lineup, the lateral states and surfaces under
+///   `approach.csv`'s names (`cross_track_m`, `bank_deg`, `sideslip_deg`, `aileron_deg`,
+///   `rudder_deg`, …; degrees where the name says so);
 /// - `done`: whether the approach has ended; then `outcome` (`trap`, `bolter`, `wave_off`,
 ///   `ramp_strike`, `hard_landing`, `diverged`, `timeout`), `wire` (1–4 for a trap) and
 ///   `reason` are set (None before).
@@ -100,6 +114,12 @@ impl Approach {
         // The registered signals the observation shows (deckland::experiments), in order.
         for column in &OBSERVATION_COLUMNS {
             obs.set_item(PyString::intern(py, column.name), column.value(s))?;
+        }
+        // A 3-D approach's lineup, lateral states and surfaces (as `approach.csv`'s).
+        if s.lateral.cross_track_m.is_some() {
+            for column in &LATERAL_APPROACH_COLUMNS {
+                obs.set_item(PyString::intern(py, column.name), column.value(s))?;
+            }
         }
         let summary = self.stepper.simulation().summary();
         obs.set_item(intern!(py, "done"), self.stepper.ended())?;

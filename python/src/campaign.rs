@@ -240,7 +240,7 @@ pub fn merge_shards_text<'py>(
             scenario_name = payload.scenario_name.clone();
         }
         // The library's row schema: the columns, each field's type and range.
-        let rows = parse_runs_csv(&format!("shard {shard}"), &payload.runs_csv)
+        let parsed = parse_runs_csv(&format!("shard {shard}"), &payload.runs_csv)
             .map_err(|e| value_error(e.to_string()))?;
         parts.push(ShardRows {
             identity: ShardIdentity {
@@ -252,7 +252,8 @@ pub fn merge_shards_text<'py>(
                 shard,
                 partial: payload.partial,
             },
-            rows,
+            rows: parsed.rows,
+            lateral: parsed.lateral,
         });
     }
     // Whatever a tampered shard does inside the library, it is a ValueError here, never

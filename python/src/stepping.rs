@@ -43,6 +43,21 @@ impl Recorder for EventRecorder {
     }
 }
 
+/// The bank command's envelope (rad): the bank angle's range, ±90°.
+pub(crate) const BANK_COMMAND_RANGE_RAD: (f64, f64) = (-FRAC_PI_2, FRAC_PI_2);
+
+/// The sideslip command's envelope (rad): ±30°, the range the 3-D environment observes.
+pub(crate) const SIDESLIP_COMMAND_RANGE_RAD: (f64, f64) =
+    (-0.523_598_775_598_298_8, 0.523_598_775_598_298_8);
+
+/// The lateral keys of an action: a 3-D approach's (docs/model.md §10).
+const LATERAL_KEYS: [&str; 4] = [
+    "bank_command_rad",
+    "sideslip_command_rad",
+    "aileron_rad",
+    "rudder_rad",
+];
+
 /// The physical range of each action key, from the aircraft flown.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct ActionRanges {
@@ -52,23 +67,35 @@ pub(crate) struct ActionRanges {
     pub elevator_rad: (f64, f64),
     /// The total thrust command (N): from none to the maximum of both engines.
     pub thrust_n: (f64, f64),
+    /// A 3-D approach's aileron and rudder travel (rad), either side of neutral; `None`
+    /// for a 3-DOF approach, which takes no lateral key.
+    pub lateral_travel_rad: Option<(f64, f64)>,
 }
 
 impl ActionRanges {
-    /// The ranges of the aircraft `simulation` flies.
-    fn of(simulation: &Simulation) -> Self {
+    /// The ranges of the aircraft `simulation` flies (set up from `scenario`).
+    fn of(simulation: &Simulation, scenario: &RustScenario) -> Self {
         let aircraft = simulation.system().aircraft();
         let actuator = aircraft.actuator();
+        let three_dimensional = simulation.signals().lateral.cross_track_m.is_some();
+        let lateral = &scenario.aircraft;
         Self {
             pitch_command_rad: PITCH_COMMAND_RANGE_RAD,
             elevator_rad: (actuator.min_rad(), actuator.max_rad()),
             thrust_n: (0.0, aircraft.engines().max_total_thrust_n()),
+            lateral_travel_rad: three_dimensional.then(|| {
+                (
+                    lateral.aileron_actuator.travel_deg.to_radians(),
+                    lateral.rudder_actuator.travel_deg.to_radians(),
+                )
+            }),
         }
     }
 
-    /// Each key with its range, unit and what the range is, in the order of the keys.
-    pub fn described(&self) -> [(&'static str, (f64, f64), &'static str, &'static str); 3] {
-        [
+    /// Each key with its range, unit and what the range is, in the order of the keys
+    /// (the lateral keys only in a 3-D approach).
+    pub fn described(&self) -> Vec<(&'static str, (f64, f64), &'static str, &'static str)> {
+        let mut keys = vec![
             (
                 "pitch_command_rad",
                 self.pitch_command_rad,
@@ -89,7 +116,36 @@ impl ActionRanges {
                 "no thrust to the maximum of both engines, \
                  2 × aircraft.engines.max_thrust_per_engine_n",
             ),
-        ]
+        ];
+        if let Some((aileron, rudder)) = self.lateral_travel_rad {
+            keys.extend([
+                (
+                    "bank_command_rad",
+                    BANK_COMMAND_RANGE_RAD,
+                    "rad",
+                    "the bank angle's range, ±90°",
+                ),
+                (
+                    "sideslip_command_rad",
+                    SIDESLIP_COMMAND_RANGE_RAD,
+                    "rad",
+                    "±30°, the sideslip the 3-D environment observes",
+                ),
+                (
+                    "aileron_rad",
+                    (-aileron, aileron),
+                    "rad",
+                    "the aileron's travel, ±aircraft.aileron_actuator.travel_deg",
+                ),
+                (
+                    "rudder_rad",
+                    (-rudder, rudder),
+                    "rad",
+                    "the rudder's travel, ±aircraft.rudder_actuator.travel_deg",
+                ),
+            ]);
+        }
+        keys
     }
 
     /// `value` of action `key` if within the key's range, else `ValueError` naming the
@@ -98,6 +154,12 @@ impl ActionRanges {
         let Some((_, (low, high), unit, what)) =
             self.described().into_iter().find(|(name, ..)| *name == key)
         else {
+            if LATERAL_KEYS.contains(&key) {
+                return Err(value_error(format!(
+                    "action `{key}` needs a 3-D approach (aircraft.model = \"6dof\" with \
+                     approach.three_dimensional = true): this approach has no lateral loops"
+                )));
+            }
             return Err(unknown_action(key));
         };
         if (low..=high).contains(&value) {
@@ -114,13 +176,15 @@ impl ActionRanges {
 /// The error of an action key that is none of the commands.
 fn unknown_action(key: &str) -> PyErr {
     value_error(format!(
-        "action `{key}` is not a command: expected pitch_command_rad, elevator_rad or thrust_n"
+        "action `{key}` is not a command: expected pitch_command_rad, elevator_rad, thrust_n \
+         or, in a 3-D approach, bank_command_rad, sideslip_command_rad, aileron_rad, rudder_rad"
     ))
 }
 
 /// The action's commands: `None`, or a dict with any of `pitch_command_rad`,
-/// `elevator_rad` and `thrust_n` (a value of None leaves that loop in charge), each
-/// within its range of `ranges`.
+/// `elevator_rad` and `thrust_n` and, in a 3-D approach, `bank_command_rad`,
+/// `sideslip_command_rad`, `aileron_rad` and `rudder_rad` (a value of None leaves that
+/// loop in charge), each within its range of `ranges`.
 pub(crate) fn parse_action(
     action: Option<&Bound<'_, PyAny>>,
     ranges: &ActionRanges,
@@ -145,6 +209,10 @@ pub(crate) fn parse_action(
             "pitch_command_rad" => &mut overrides.pitch_command_rad,
             "elevator_rad" => &mut overrides.elevator_rad,
             "thrust_n" => &mut overrides.thrust_n,
+            "bank_command_rad" => &mut overrides.bank_command_rad,
+            "sideslip_command_rad" => &mut overrides.sideslip_command_rad,
+            "aileron_rad" => &mut overrides.aileron_rad,
+            "rudder_rad" => &mut overrides.rudder_rad,
             other => return Err(unknown_action(other)),
         };
         if value.is_none() {
@@ -212,7 +280,7 @@ impl Stepper {
         let simulation = Simulation::new(scenario)
             .map_err(|error| value_error(format!("cannot set up the approach: {error}")))?;
         Ok(Self {
-            ranges: ActionRanges::of(&simulation),
+            ranges: ActionRanges::of(&simulation, scenario),
             simulation,
             steps_per_interval,
             steps: 0,

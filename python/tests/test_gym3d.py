@@ -227,3 +227,77 @@ def test_bad_options_are_refused_by_name():
     env.reset(seed=1)
     with pytest.raises(ValueError, match="bank_command"):
         env.step(np.zeros(3, dtype=np.float32))
+
+
+def test_the_vectorised_info_reports_off_centre_as_the_single_environment_does():
+    n = 2
+    envs = gymnasium.make_vec(ENV_ID_3D, num_envs=n, vectorization_mode="vector_entry_point")
+    _, info = envs.reset(seed=30)
+    names = CONTROL_MODES_3D["attitude"]
+    climb = [names.index(name) for name in ("pitch_command", "thrust", "wave_off")]
+    ended = {}
+    for _ in range(3000):
+        actions = np.array(info["autopilot_action"], dtype=np.float32)
+        actions[1, climb] = 1.0  # environment 1 waves off and climbs away: no touchdown
+        _, _, terminated, truncated, info = envs.step(actions)
+        if "off_centre" in info:
+            for i in np.flatnonzero(info["_off_centre"]):
+                ended.setdefault(int(i), info["off_centre"][i])
+        if len(ended) == n:
+            break
+    assert set(ended) == {0, 1}
+    # Environment 0 flies the single environment's episode (seed 30): its flag.
+    _, infos = run_episode(CarrierLanding3DEnv(), 30, autopilot)
+    assert infos[-1]["outcome"] == "trap"
+    assert ended[0] is infos[-1]["off_centre"] is False
+    assert ended[1] is None
+
+
+def test_an_approach_steps_with_lateral_commands_in_place_of_the_lateral_loops():
+    scenario = crosswind_scenario()
+    approach = deckland.Approach(scenario, seed=3)
+    ranges = approach.action_ranges
+    assert ranges["bank_command_rad"] == pytest.approx((-np.pi / 2, np.pi / 2))
+    assert ranges["aileron_rad"] == pytest.approx(np.deg2rad((-25.0, 25.0)))
+    assert ranges["rudder_rad"] == pytest.approx(np.deg2rad((-30.0, 30.0)))
+    # A bank command replaces the lineup guidance: held at 10° right for 3 s, the roll
+    # law banks the aircraft there and it turns right off the centreline, where the
+    # built-in lineup holds the wings near level on it.
+    free = deckland.Approach(scenario, seed=3)
+    for _ in range(150):
+        built_in = free.step()
+        banked = approach.step({"bank_command_rad": np.deg2rad(10.0)})
+    assert abs(built_in["bank_deg"]) < 5.0
+    assert banked["bank_deg"] == pytest.approx(10.0, abs=1.0)
+    assert banked["cross_track_m"] > built_in["cross_track_m"] + 1.0
+    # Aileron and rudder commands replace the laws: the surfaces go where they are sent
+    # (the actuators' second-order lag settles well within 0.5 s).
+    surfaces = deckland.Approach(scenario, seed=3)
+    start = surfaces.observation()
+    aileron = np.deg2rad(start["aileron_deg"] + 2.0)
+    rudder = np.deg2rad(start["rudder_deg"] - 3.0)
+    for _ in range(25):
+        moved = surfaces.step({"aileron_rad": aileron, "rudder_rad": rudder})
+    assert moved["aileron_deg"] == pytest.approx(np.rad2deg(aileron), abs=0.05)
+    assert moved["rudder_deg"] == pytest.approx(np.rad2deg(rudder), abs=0.05)
+    assert moved["bank_deg"] > start["bank_deg"] + 0.5  # right aileron rolls right
+    # A sideslip command replaces the yaw law's zero sideslip: in the lateral turbulence
+    # the sideslip wanders by about a degree either way, so compare the means over 7 s,
+    # after the first second, with and without a 3° command.
+    slipping, coordinated = (deckland.Approach(scenario, seed=3) for _ in range(2))
+    commanded, level = [], []
+    for step in range(400):
+        slipped = slipping.step({"sideslip_command_rad": np.deg2rad(3.0)})
+        flown = coordinated.step()
+        if step >= 50:
+            commanded.append(slipped["sideslip_deg"])
+            level.append(flown["sideslip_deg"])
+    assert abs(np.mean(level)) < 0.5
+    assert np.mean(commanded) == pytest.approx(3.0, abs=0.5)
+    # Beyond a range, or in a 3-DOF approach: refused by name.
+    with pytest.raises(ValueError, match="aileron_rad"):
+        approach.step({"aileron_rad": 1.0})
+    flat = deckland.Approach(deckland.Scenario.default(), seed=3)
+    assert "bank_command_rad" not in flat.action_ranges
+    with pytest.raises(ValueError, match="3-D approach"):
+        flat.step({"bank_command_rad": 0.1})

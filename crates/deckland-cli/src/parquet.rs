@@ -11,18 +11,19 @@
 //!   too, as pandas reads it from the CSV).
 //!
 //! A 3-D campaign adds the lateral columns of its `runs.csv` after these
-//! ([`LATERAL_RUN_COLUMNS`]): optional doubles, and `off_centre` an optional boolean.
+//! ([`LATERAL_RUN_COLUMNS`], then the trap sheet's [`TRAP_SHEET_RUN_COLUMNS`]): optional
+//! doubles, and `off_centre` an optional boolean.
 //!
 //! One row group, Snappy compression (pandas' default). A value that is not finite is
 //! refused, naming its run and column: nothing non-finite reaches a file.
 
 use anyhow::{bail, Context, Result};
-use deckland::monte_carlo::{LateralRunValues, RunRow, LATERAL_RUN_COLUMNS};
+use deckland::monte_carlo::{LateralRow, RunRow, LATERAL_RUN_COLUMNS, TRAP_SHEET_RUN_COLUMNS};
 use deckland::recording::{Cell, Columns};
 use parquet::basic::Compression;
 use parquet::data_type::{BoolType, ByteArray, ByteArrayType, DoubleType, Int64Type};
 use parquet::file::properties::WriterProperties;
-use parquet::file::writer::SerializedFileWriter;
+use parquet::file::writer::{SerializedFileWriter, SerializedRowGroupWriter};
 use parquet::schema::parser::parse_message_type;
 use std::path::Path;
 use std::sync::Arc;
@@ -74,11 +75,7 @@ fn schema(names: &[&str]) -> String {
 
 /// Writes `rows` to a Parquet file at `path` (the caller makes it atomic), with a 3-D
 /// campaign's `lateral` values of each row after its columns.
-pub fn write_runs(
-    path: &Path,
-    rows: &[RunRow],
-    lateral: Option<&[LateralRunValues]>,
-) -> Result<()> {
+pub fn write_runs(path: &Path, rows: &[RunRow], lateral: Option<&[LateralRow]>) -> Result<()> {
     let mut table = Columns::with_capacity(rows.len());
     for row in rows {
         table.push(row).map_err(|e| anyhow::anyhow!("{e}"))?;
@@ -90,6 +87,7 @@ pub fn write_runs(
     let mut names: Vec<&str> = table.names().to_vec();
     if lateral.is_some() {
         names.extend(LATERAL_RUN_COLUMNS);
+        names.extend(TRAP_SHEET_RUN_COLUMNS);
     }
     let schema =
         Arc::new(parse_message_type(&schema(&names)).context("cannot make the Parquet schema")?);
@@ -165,13 +163,13 @@ pub fn write_runs(
         column.close()?;
     }
     if let Some(lateral) = lateral {
-        let reals: [fn(&LateralRunValues) -> Option<f64>; 5] =
-            [|v| v.0, |v| v.1, |v| v.2, |v| v.3, |v| v.4];
-        for (name, value) in LATERAL_RUN_COLUMNS.iter().zip(reals) {
+        let write_reals = |group: &mut SerializedRowGroupWriter<'_, std::fs::File>,
+                           name: &str,
+                           cells: Vec<Option<f64>>|
+         -> Result<()> {
             let Some(mut column) = group.next_column()? else {
                 bail!("the Parquet schema has no column {name}");
             };
-            let cells: Vec<Option<f64>> = lateral.iter().map(value).collect();
             if let Some(row) = cells.iter().position(|c| c.is_some_and(|v| !v.is_finite())) {
                 bail!("run {}: `{name}` is not a finite number", run_indices[row]);
             }
@@ -181,16 +179,39 @@ pub fn write_runs(
                 .typed::<DoubleType>()
                 .write_batch(&values, Some(&present), None)?;
             column.close()?;
-        }
-        let Some(mut column) = group.next_column()? else {
-            bail!("the Parquet schema has no column off_centre");
+            Ok(())
         };
-        let present: Vec<i16> = lateral.iter().map(|v| i16::from(v.5.is_some())).collect();
-        let values: Vec<bool> = lateral.iter().filter_map(|v| v.5).collect();
-        column
-            .typed::<BoolType>()
-            .write_batch(&values, Some(&present), None)?;
-        column.close()?;
+        let reals: [fn(&LateralRow) -> Option<f64>; 5] = [
+            |v| v.touchdown.0,
+            |v| v.touchdown.1,
+            |v| v.touchdown.2,
+            |v| v.touchdown.3,
+            |v| v.touchdown.4,
+        ];
+        for (name, value) in LATERAL_RUN_COLUMNS.iter().zip(reals) {
+            write_reals(&mut group, name, lateral.iter().map(value).collect())?;
+        }
+        {
+            let Some(mut column) = group.next_column()? else {
+                bail!("the Parquet schema has no column off_centre");
+            };
+            let present: Vec<i16> = lateral
+                .iter()
+                .map(|v| i16::from(v.touchdown.5.is_some()))
+                .collect();
+            let values: Vec<bool> = lateral.iter().filter_map(|v| v.touchdown.5).collect();
+            column
+                .typed::<BoolType>()
+                .write_batch(&values, Some(&present), None)?;
+            column.close()?;
+        }
+        for (k, name) in TRAP_SHEET_RUN_COLUMNS.iter().enumerate() {
+            write_reals(
+                &mut group,
+                name,
+                lateral.iter().map(|v| v.trap_sheet[k]).collect(),
+            )?;
+        }
     }
     group.close()?;
     writer.close()?;

@@ -43,6 +43,10 @@ fn one_and_two_threads_write_byte_identical_runs_csv() {
         let summary: Value = serde_json::from_slice(&output.stdout).unwrap();
         assert_eq!(summary["partial"], false);
         assert_eq!(summary["finished_runs"], 20);
+        // A 3-DOF campaign has neither lateral nor trap-sheet columns or statistics.
+        let text = String::from_utf8(csv[csv.len() - 1].clone()).unwrap();
+        assert!(text.lines().next().unwrap().ends_with(",reason"));
+        assert!(summary.get("trap_sheet").is_none() && summary.get("lateral").is_none());
         let opd = &summary["controllers"][0];
         assert_eq!(opd["controller"], "O-PD");
         assert_eq!(opd["runs"], 20);
@@ -400,5 +404,55 @@ fn a_three_d_campaign_adds_the_lateral_columns_and_the_touchdown_plan() {
     assert!(out.join("touchdown_plan.png").exists());
     let html = std::fs::read_to_string(out.join("report.html")).unwrap();
     assert!(html.contains("Lineup (3-D approach)"), "report.html");
+    assert!(
+        html.contains("LSO trap sheet (3-D approach)"),
+        "report.html"
+    );
+    assert!(
+        String::from_utf8_lossy(&output.stdout).contains("LSO trap sheet"),
+        "the printed statistics"
+    );
+    // The trap sheet's columns, every value finite, and its statistics in summary.json
+    // those of the columns, recomputed here from runs.csv.
+    common::assert_finite_csv(&text);
+    let mut reader = csv::Reader::from_path(out.join("runs.csv")).unwrap();
+    let columns: Vec<String> = reader
+        .headers()
+        .unwrap()
+        .iter()
+        .map(str::to_owned)
+        .collect();
+    let records: Vec<csv::StringRecord> = reader.records().map(Result::unwrap).collect();
+    let summary: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(out.join("summary.json")).unwrap()).unwrap();
+    let positions = summary["trap_sheet"]["positions"].as_array().unwrap();
+    let names: Vec<&str> = positions
+        .iter()
+        .map(|p| p["shorthand"].as_str().unwrap())
+        .collect();
+    assert_eq!(names, ["X", "IM", "IC", "AR"]);
+    for (position, stem) in positions.iter().zip(["x", "im", "ic", "ar"]) {
+        for deviation in ["glide_slope_mean_m", "lineup_peak_deg"] {
+            let column = format!("trap_{stem}_{deviation}");
+            let index = columns.iter().position(|c| *c == column).unwrap();
+            let values: Vec<f64> = records
+                .iter()
+                .filter(|r| !r[index].is_empty())
+                .map(|r| r[index].parse().unwrap())
+                .collect();
+            let n = values.len() as f64;
+            let mean = values.iter().sum::<f64>() / n;
+            let sd = (values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0)).sqrt();
+            let statistics = &position[deviation];
+            assert_eq!(statistics["count"], values.len(), "{column}");
+            assert!(
+                (statistics["mean"].as_f64().unwrap() - mean).abs() < 1e-12,
+                "{column}"
+            );
+            let half = 1.959_964 * sd / n.sqrt();
+            let low = statistics["mean_ci95_low"].as_f64().unwrap();
+            assert!((low - (mean - half)).abs() < 1e-6, "{column}: {low}");
+        }
+    }
     let _ = std::fs::remove_dir_all(&dir);
 }

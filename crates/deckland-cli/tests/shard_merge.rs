@@ -102,6 +102,55 @@ fn three_shards_merged_are_the_campaign_flown_whole_byte_for_byte() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// A 3-D approach campaign's shards merged are the campaign flown whole too: `runs.csv`
+/// (with its lateral and trap-sheet columns) byte for byte, and every statistic of
+/// `summary.json`, the lateral and trap-sheet statistics included.
+#[test]
+fn three_d_shards_merged_are_the_campaign_flown_whole() {
+    let dir = scratch("shards-merge-3d");
+    let file = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../scenarios/crosswind.toml");
+    let file = file.to_str().unwrap();
+    let whole = dir.join("whole");
+    assert_success(&campaign(file, "5", "11", None, &whole));
+    let shards: Vec<PathBuf> = (0..2).map(|k| dir.join(format!("shard-{k}"))).collect();
+    for (k, folder) in shards.iter().enumerate() {
+        assert_success(&campaign(file, "5", "11", Some(&format!("{k}/2")), folder));
+    }
+    let merged = dir.join("merged");
+    let output = merge(&[&shards[1], &shards[0]], &merged);
+    assert_success(&output);
+    let csv = std::fs::read(whole.join("runs.csv")).unwrap();
+    assert!(String::from_utf8_lossy(&csv).contains("trap_ar_lineup_peak_deg"));
+    assert_eq!(
+        csv,
+        std::fs::read(merged.join("runs.csv")).unwrap(),
+        "runs.csv of the 3-D merge differs from the campaign flown whole"
+    );
+    assert_eq!(statistics_text(&whole), statistics_text(&merged));
+    let read = |folder: &Path| -> serde_json::Value {
+        serde_json::from_slice(&std::fs::read(folder.join("summary.json")).unwrap()).unwrap()
+    };
+    let (whole_json, merged_json) = (read(&whole), read(&merged));
+    for key in ["lateral", "trap_sheet"] {
+        assert!(whole_json[key].is_object(), "{key}");
+        assert_eq!(whole_json[key], merged_json[key], "{key}");
+    }
+    assert_parquet_holds_runs_csv(&merged);
+    assert!(merged.join("touchdown_plan.svg").exists());
+    // A 3-D shard with a 3-DOF campaign's shard: refused, naming the aircraft model.
+    let flat = dir.join("flat");
+    let dispersed = short_dispersed_scenario(&dir);
+    assert_success(&campaign(&dispersed, "5", "11", Some("1/2"), &flat));
+    let output = merge(&[&shards[0], &flat], &dir.join("mixed"));
+    assert!(!output.status.success());
+    assert!(
+        stderr(&output).contains("aircraft.model"),
+        "{}",
+        stderr(&output)
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 #[test]
 fn a_merge_refuses_shards_of_other_campaigns_missing_overlapping_or_unfinished() {
     let dir = scratch("shards-refuse");
@@ -367,7 +416,12 @@ fn runs_parquet_holds_the_rows_of_runs_csv() {
         &out_3d,
     ));
     let header = std::fs::read_to_string(out_3d.join("runs.csv")).unwrap();
-    assert!(header.lines().next().unwrap().ends_with(",off_centre"));
+    let header = header.lines().next().unwrap();
+    assert!(
+        header.contains(",off_centre,trap_x_glide_slope_mean_m,"),
+        "{header}"
+    );
+    assert!(header.ends_with(",trap_ar_lineup_peak_deg"), "{header}");
     assert_parquet_holds_runs_csv(&out_3d);
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -169,10 +169,12 @@ fn tamper(shards: &mut Vec<Carried>, &(kind, a, b, c): &Tampering) {
 fn merge(shards: &[Carried]) -> Result<deckland::monte_carlo::MergedCampaign, MergeError> {
     let mut parts = Vec::new();
     for shard in shards {
-        let rows = parse_runs_csv(&format!("{}/runs.csv", shard.identity.source), &shard.text)?;
+        let rows =
+            parse_runs_csv(&format!("{}/runs.csv", shard.identity.source), &shard.text)?.rows;
         parts.push(ShardRows {
             identity: shard.identity.clone(),
             rows,
+            lateral: None,
         });
     }
     merge_shards(parts)

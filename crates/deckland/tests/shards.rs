@@ -51,6 +51,7 @@ fn shard_rows(result: &CampaignResult, seed: u64, source: &str) -> ShardRows {
                 }
             })
             .collect(),
+        lateral: None,
     }
 }
 
@@ -114,6 +115,24 @@ fn a_merge_refuses_shards_that_do_not_belong_together() {
     let all = || vec![one.clone(), two.clone(), three.clone()];
     assert!(merge_shards(all()).is_ok());
     assert_eq!(merge_shards(Vec::new()), Err(MergeError::NoShards));
+
+    // One shard with a 3-D campaign's lateral columns among 3-DOF ones.
+    let mut lateral = all();
+    let blank = deckland::monte_carlo::LateralRow {
+        touchdown: (None, None, None, None, None, None),
+        trap_sheet: [None; 24],
+    };
+    lateral[1].lateral = Some(vec![blank; lateral[1].rows.len()]);
+    let error = merge_shards(lateral.clone()).unwrap_err().to_string();
+    assert!(error.contains("runs.csv columns"), "{error}");
+    // Lateral columns for fewer rows than the shard has.
+    for shard in &mut lateral {
+        shard.lateral = Some(vec![blank; shard.rows.len()]);
+    }
+    assert!(merge_shards(lateral.clone()).is_ok());
+    lateral[2].lateral.as_mut().unwrap().pop();
+    let error = merge_shards(lateral).unwrap_err().to_string();
+    assert!(error.contains("one per row"), "{error}");
 
     let error = merge_shards(vec![one.clone(), three.clone()]).unwrap_err();
     assert_eq!(

@@ -23,8 +23,9 @@ pub struct VecEnv {
     cores: Vec<Option<EnvCore>>,
     /// The environments whose episode ended at the last step: the next starts them again.
     restart: Vec<bool>,
-    /// Each environment's outcome code and wire at the last step (−1: none).
-    outcomes: Vec<(i8, i8)>,
+    /// Each environment's outcome code, wire and off-centre flag at the last step (−1:
+    /// none; the flag 1 or 0 after a 3-D touchdown).
+    outcomes: Vec<(i8, i8, i8)>,
     /// Whether every environment has started (`reset`). Kept here rather than read from
     /// the episodes: reading 64 of them would fetch the data the helper threads keep in
     /// their cores' caches.
@@ -48,6 +49,7 @@ type VecStep<'py> = (
     Bound<'py, PyArray2<f32>>,
     Option<Bound<'py, PyArray1<i8>>>,
     Option<Bound<'py, PyArray1<i8>>>,
+    Option<Bound<'py, PyArray1<i8>>>,
 );
 
 /// Every environment's results of a step, one array each, environment by environment.
@@ -69,7 +71,7 @@ struct Slot<'a> {
     reward: &'a mut f64,
     terminated: &'a mut bool,
     truncated: &'a mut bool,
-    outcome: &'a mut (i8, i8),
+    outcome: &'a mut (i8, i8, i8),
 }
 
 #[pymethods]
@@ -119,7 +121,7 @@ impl VecEnv {
             config: Arc::new(config),
             cores: (0..num_envs).map(|_| None).collect(),
             restart: vec![false; num_envs],
-            outcomes: vec![(-1, -1); num_envs],
+            outcomes: vec![(-1, -1, -1); num_envs],
             started: false,
         })
     }
@@ -160,8 +162,9 @@ impl VecEnv {
     /// ended at the previous step: they start again with their entry of `seeds` (needed
     /// then, one per environment, the others' ignored), their action ignored, reward 0.
     /// Returns (observations, rewards, terminated, truncated, raw observations, autopilot
-    /// actions, outcome codes, wires), the last two only when an episode ended (else None;
-    /// −1: running, or truncated by the step limit; no wire).
+    /// actions, outcome codes, wires, off-centre flags), the last three only when an
+    /// episode ended (else None; −1: running, or truncated by the step limit; no wire; no
+    /// 3-D touchdown; the flag 1 for a touchdown off centre, 0 within the limit).
     fn step<'py>(
         &mut self,
         py: Python<'py>,
@@ -209,11 +212,17 @@ impl VecEnv {
             *restart = *terminated || *truncated;
             ended |= *restart;
         }
-        let (codes, wires) = if ended {
-            let (codes, wires): (Vec<i8>, Vec<i8>) = self.outcomes.iter().copied().unzip();
-            (Some(codes.into_pyarray(py)), Some(wires.into_pyarray(py)))
+        let (codes, wires, off_centre) = if ended {
+            let codes: Vec<i8> = self.outcomes.iter().map(|o| o.0).collect();
+            let wires: Vec<i8> = self.outcomes.iter().map(|o| o.1).collect();
+            let off_centre: Vec<i8> = self.outcomes.iter().map(|o| o.2).collect();
+            (
+                Some(codes.into_pyarray(py)),
+                Some(wires.into_pyarray(py)),
+                Some(off_centre.into_pyarray(py)),
+            )
         } else {
-            (None, None)
+            (None, None, None)
         };
         let k = config.observation_len();
         Ok((
@@ -225,6 +234,7 @@ impl VecEnv {
             matrix(py, out.pilot, width)?,
             codes,
             wires,
+            off_centre,
         ))
     }
 
@@ -296,7 +306,7 @@ impl VecEnv {
         let error: Mutex<Option<PyErr>> = Mutex::new(None);
         py.detach(|| {
             for_each_item(helpers(), &mut slots, |i, slot| {
-                *slot.outcome = (-1, -1);
+                *slot.outcome = (-1, -1, -1);
                 if let Some(seed) = plan[i] {
                     match EnvCore::new(config, seed) {
                         Ok(core) => *slot.core = Some(core),
@@ -318,7 +328,11 @@ impl VecEnv {
                     *slot.terminated = result.terminated;
                     *slot.truncated = result.truncated;
                     if let Some((code, wire)) = core.outcome {
-                        *slot.outcome = (code as i8, wire.map_or(-1, |w| w as i8));
+                        *slot.outcome = (
+                            code as i8,
+                            wire.map_or(-1, |w| w as i8),
+                            core.off_centre.map_or(-1, i8::from),
+                        );
                     }
                 }
                 core.observe(config, slot.observation, slot.raw, slot.pilot);

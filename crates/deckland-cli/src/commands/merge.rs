@@ -5,7 +5,7 @@
 //! canonical TOML), and in `summary.json` the campaign seed, the run count, the
 //! controllers, the shard `K/M` and whether it was stopped early (`partial`). Its rows
 //! are read back from `runs.csv` (numbers are written in their shortest round-trip form,
-//! so they read back exactly). The library's `merge_shards` checks that the shards belong
+//! so they read back exactly), with a 3-D campaign's lateral and trap-sheet columns. The library's `merge_shards` checks that the shards belong
 //! to one campaign, cover it once and are complete, and sorts the rows; the rates,
 //! intervals, upper bounds, percentiles and plots are then computed from the rows by the
 //! same code as `deckland campaign`'s, so `runs.csv` and the statistics of
@@ -124,7 +124,7 @@ fn read_shard(folder: &Path) -> Result<ShardFolder> {
     let scenario_toml = read_text_file(&scenario_path, MAX_SCENARIO_FILE_BYTES, "scenario file")?;
     let runs_path = folder.join("runs.csv");
     let runs_text = read_text_file(&runs_path, MAX_RUNS_CSV_BYTES, "shard's runs.csv")?;
-    let rows = parse_runs_csv(&runs_path.display().to_string(), &runs_text)?;
+    let parsed = parse_runs_csv(&runs_path.display().to_string(), &runs_text)?;
     Ok(ShardFolder {
         rows: ShardRows {
             identity: ShardIdentity {
@@ -136,7 +136,8 @@ fn read_shard(folder: &Path) -> Result<ShardFolder> {
                 shard,
                 partial,
             },
-            rows,
+            rows: parsed.rows,
+            lateral: parsed.lateral,
         },
         scenario_file,
     })
@@ -166,8 +167,10 @@ pub fn run(args: &MergeArgs) -> Result<()> {
     let scenario = load_scenario_file(&first_folder.join("scenario.toml"))?;
     let summary = CampaignSummary::of_merged(&merged, DEFAULT_TARGET_RATE);
     let output = OutputDir::prepare("merge", args.output.out.as_deref(), args.output.force)?;
+    let (lateral, trap_sheet) = folder::lateral_statistics(merged.lateral.as_deref());
     let report = CampaignReport {
-        lateral: None,
+        lateral,
+        trap_sheet,
         scenario_file: scenario_file.clone(),
         summary: &summary,
         threads: None,
@@ -178,7 +181,7 @@ pub fn run(args: &MergeArgs) -> Result<()> {
         merged_from: merged.sources.clone(),
     };
     let folder = CampaignFolder {
-        lateral_rows: None,
+        lateral_rows: merged.lateral.clone(),
         scenario: &scenario,
         scenario_toml: &merged.scenario_toml,
         rows: &merged.rows,

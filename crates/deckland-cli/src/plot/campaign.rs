@@ -154,7 +154,7 @@ fn touchdown_plan(folder: &CampaignFolder, labels: &[&str]) -> Option<Figure> {
             .iter()
             .zip(lateral)
             .filter(|(row, _)| row.controller == *label)
-            .filter_map(|(row, values)| row.touchdown_distance_m.zip(values.0))
+            .filter_map(|(row, values)| row.touchdown_distance_m.zip(values.touchdown.0))
             .collect();
         for (x, _) in &points {
             (low, high) = (low.min(*x), high.max(*x));

@@ -112,7 +112,17 @@ pub struct WindParameters {
     /// left: W_y); docs/model.md §3.9: 0. Part of the mean wind. The 3-DOF approach does
     /// not feel it.
     pub crosswind_mps: f64,
+    /// The largest crab the 3-D approach accepts (deg): the heading off the final bearing
+    /// the aircraft needs to hold its track along the drifting centreline in the steady
+    /// crosswind, from the setup's 6-DOF trim (docs/three-d-approach.md, "Crosswind
+    /// limit"). Default 6°, an assumption: carriers steer to put the wind down the
+    /// angled deck, and 6° is a crosswind of about 7.2 m/s (14 kt) across the landing
+    /// area at the 69.1 m/s approach: 5 m/s (4.1°) is flown, 10 m/s (8.3°) is refused.
+    pub max_crab_deg: f64,
 }
+
+/// Default of [`WindParameters::max_crab_deg`] (deg): an assumption, see there.
+pub const DEFAULT_MAX_CRAB_DEG: f64 = 6.0;
 
 impl Default for WindParameters {
     fn default() -> Self {
@@ -129,13 +139,15 @@ impl Default for WindParameters {
             periodic_wake_frequency_radps: 1.25,
             wake_extent_m: Some(STEADY_WAKE_EXTENT_M),
             crosswind_mps: 0.0,
+            max_crab_deg: DEFAULT_MAX_CRAB_DEG,
         }
     }
 }
 
 impl WindParameters {
     /// Checks every field: speeds in [0, 40] m/s, σ in [0, 10] m/s, scale in (0, 3000] m,
-    /// θ_s in [0, 0.5] rad, ω_p in [0, 20] rad/s, crosswind in [−10, 10] m/s.
+    /// θ_s in [0, 0.5] rad, ω_p in [0, 20] rad/s, crosswind in [−10, 10] m/s, the crab
+    /// limit in (0, 30]°.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "environment.wind";
         let sigma = Bounds::closed(0.0, 10.0);
@@ -166,6 +178,7 @@ impl WindParameters {
             Bounds::closed(2.0 * WAKE_TAPER_M, 5000.0).check(SECTION, "wake_extent_m", extent)?;
         }
         Bounds::closed(-10.0, 10.0).check(SECTION, "crosswind_mps", self.crosswind_mps)?;
+        Bounds::positive_up_to(30.0).check(SECTION, "max_crab_deg", self.max_crab_deg)?;
         Ok(())
     }
 

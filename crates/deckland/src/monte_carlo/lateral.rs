@@ -2,12 +2,18 @@
 //! the columns a 3-D campaign adds to `runs.csv`, and their statistics — off-centre
 //! touchdowns with their Wilson interval, the lateral touchdown scatter, the share of
 //! passes within ±0.5° of lineup at the ramp, and the drift and bank at touchdown
-//! against their limits. A 3-DOF campaign has none of them.
+//! against their limits — and, with the trap sheets' columns ([`super::trap_sheet`]), the
+//! whole of a 3-D run's row beyond the columns of every campaign ([`LateralRow`]). A
+//! 3-DOF campaign has none of them.
 
 use serde::Serialize;
 
 use super::record::RunRecord;
+use super::row::RowError;
 use super::statistics::{Distribution, Proportion};
+use super::trap_sheet::{trap_sheet_run_values, TrapSheetRunValues, TRAP_SHEET_RUN_COLUMNS};
+use crate::aircraft::PlantModel;
+use crate::scenario::{Mission, Scenario};
 use crate::simulation::lateral::touchdown::{
     MAX_OFF_CENTRE_M, MAX_TOUCHDOWN_BANK_DEG, MAX_TOUCHDOWN_DRIFT_MPS,
 };
@@ -36,6 +42,148 @@ pub type LateralRunValues = (
     Option<f64>,
     Option<bool>,
 );
+
+/// Whether a campaign of `scenario` flies the 3-D approach (the 6-DOF aircraft on an
+/// approach with `approach.three_dimensional`): its `runs.csv` then has the columns of
+/// [`LateralRow`] after those of every campaign.
+pub fn flies_three_dimensional_approach(scenario: &Scenario) -> bool {
+    scenario.aircraft.model == PlantModel::SixDof
+        && scenario.mission == Mission::Approach
+        && scenario.approach.three_dimensional
+}
+
+/// What a 3-D approach adds to a run's row: the lateral touchdown
+/// ([`LATERAL_RUN_COLUMNS`]) and the trap sheet ([`TRAP_SHEET_RUN_COLUMNS`]), in that
+/// order after the columns of every campaign ([`super::RUN_COLUMNS`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LateralRow {
+    /// The lateral touchdown's values.
+    pub touchdown: LateralRunValues,
+    /// The trap sheet's values.
+    pub trap_sheet: TrapSheetRunValues,
+}
+
+/// The columns of [`LateralRow`], in order.
+pub fn lateral_row_columns() -> impl Iterator<Item = &'static str> {
+    LATERAL_RUN_COLUMNS
+        .into_iter()
+        .chain(TRAP_SHEET_RUN_COLUMNS)
+}
+
+/// Most a lateral distance in a row can be (m): the longest approach's length.
+const LATERAL_LENGTH_LIMIT_M: f64 = 20_000.0;
+
+/// Most a lateral speed in a row can be (m/s), as for every speed of a row.
+const LATERAL_SPEED_LIMIT_MPS: f64 = 1000.0;
+
+impl LateralRow {
+    /// The 3-D columns of `record`.
+    pub fn of(record: &RunRecord) -> Self {
+        Self {
+            touchdown: lateral_run_values(record),
+            trap_sheet: trap_sheet_run_values(record),
+        }
+    }
+
+    /// Checks that a 3-D campaign can have written these values beside a row that
+    /// `touched_down` and `flown`: every number finite and within its range, the lateral
+    /// touchdown complete (or absent) and only with a touchdown, `off_centre` true
+    /// exactly beyond the limit, and each trap-sheet position all six values or none,
+    /// none for a run that never flew.
+    pub fn check(&self, touched_down: bool, flown: bool) -> Result<(), RowError> {
+        let error = |column: &'static str, value: Option<f64>, problem: &str| RowError {
+            column,
+            value: value.map_or_else(|| "empty".to_owned(), |v| v.to_string()),
+            problem: problem.to_owned(),
+        };
+        let (offset, drift, bank, heading, ramp, off_centre) = self.touchdown;
+        let reals = [
+            (LATERAL_RUN_COLUMNS[0], offset, LATERAL_LENGTH_LIMIT_M),
+            (LATERAL_RUN_COLUMNS[1], drift, LATERAL_SPEED_LIMIT_MPS),
+            (LATERAL_RUN_COLUMNS[2], bank, 180.0),
+            (LATERAL_RUN_COLUMNS[3], heading, 180.0),
+            (LATERAL_RUN_COLUMNS[4], ramp, 90.0),
+        ];
+        for (column, value, limit) in reals {
+            if value.is_some_and(|v| !v.is_finite() || v.abs() > limit) {
+                return Err(error(
+                    column,
+                    value,
+                    &format!("a campaign writes a finite number within ±{limit}"),
+                ));
+            }
+        }
+        let present = offset.is_some();
+        for (column, value, _) in &reals[..4] {
+            if value.is_some() != present {
+                return Err(error(
+                    column,
+                    *value,
+                    "a lateral touchdown has all of offset, drift, bank, heading and \
+                     off_centre, or none",
+                ));
+            }
+        }
+        if off_centre.is_some() != present {
+            return Err(RowError {
+                column: LATERAL_RUN_COLUMNS[5],
+                value: off_centre.map_or_else(|| "empty".to_owned(), |v| v.to_string()),
+                problem: "a lateral touchdown has all of offset, drift, bank, heading and \
+                          off_centre, or none"
+                    .to_owned(),
+            });
+        }
+        if let (Some(offset), Some(off_centre)) = (offset, off_centre) {
+            if off_centre != (offset.abs() > MAX_OFF_CENTRE_M) {
+                return Err(RowError {
+                    column: LATERAL_RUN_COLUMNS[5],
+                    value: off_centre.to_string(),
+                    problem: format!(
+                        "a touchdown {offset} m off the centreline is off centre exactly \
+                         beyond {MAX_OFF_CENTRE_M} m"
+                    ),
+                });
+            }
+        }
+        if (present || ramp.is_some()) && !touched_down {
+            let (column, value) = if present {
+                (LATERAL_RUN_COLUMNS[0], offset)
+            } else {
+                (LATERAL_RUN_COLUMNS[4], ramp)
+            };
+            return Err(error(column, value, "only a run that touched down has it"));
+        }
+        for (position, values) in self.trap_sheet.chunks(6).enumerate() {
+            let filled = values[0].is_some();
+            for (k, value) in values.iter().enumerate() {
+                let column = TRAP_SHEET_RUN_COLUMNS[6 * position + k];
+                let limit = if column.ends_with("_deg") {
+                    90.0
+                } else {
+                    LATERAL_LENGTH_LIMIT_M
+                };
+                if value.is_some_and(|v| !v.is_finite() || v.abs() > limit) {
+                    return Err(error(
+                        column,
+                        *value,
+                        &format!("a campaign writes a finite number within ±{limit}"),
+                    ));
+                }
+                if value.is_some() != filled {
+                    return Err(error(
+                        column,
+                        *value,
+                        "a position of the trap sheet has all six deviations or none",
+                    ));
+                }
+                if value.is_some() && !flown {
+                    return Err(error(column, *value, "a run that never flew has none"));
+                }
+            }
+        }
+        Ok(())
+    }
+}
 
 /// The lateral outcome of `record`, if it is a 3-D approach that touched down.
 pub fn lateral_touchdown(record: &RunRecord) -> Option<LateralTouchdown> {
@@ -91,8 +239,28 @@ impl LateralStatistics {
     /// The statistics of `records`' lateral touchdowns; `None` when none has one (a
     /// 3-DOF campaign).
     pub fn of(records: &[RunRecord]) -> Option<Self> {
-        let touchdowns: Vec<LateralTouchdown> =
-            records.iter().filter_map(lateral_touchdown).collect();
+        let values: Vec<LateralRunValues> = records.iter().map(lateral_run_values).collect();
+        Self::of_rows(&values)
+    }
+
+    /// The statistics of the lateral touchdowns of `rows` (the values of
+    /// [`LATERAL_RUN_COLUMNS`], one per run, as `runs.csv` holds them): the same as
+    /// [`Self::of`] on the records they were made from, so a 3-D campaign merged from its
+    /// shards has those of the campaign flown whole. `None` when no row has one.
+    pub fn of_rows(rows: &[LateralRunValues]) -> Option<Self> {
+        let touchdowns: Vec<LateralTouchdown> = rows
+            .iter()
+            .filter_map(|&(offset, drift, bank, heading, ramp, off_centre)| {
+                Some(LateralTouchdown {
+                    offset_m: offset?,
+                    drift_rate_mps: drift?,
+                    bank_deg: bank?,
+                    heading_to_centreline_deg: heading?,
+                    ramp_lineup_error_deg: ramp,
+                    off_centre: off_centre?,
+                })
+            })
+            .collect();
         if touchdowns.is_empty() {
             return None;
         }
@@ -131,5 +299,72 @@ impl LateralStatistics {
             ),
             max_bank_deg: MAX_TOUCHDOWN_BANK_DEG,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn touched_down() -> LateralRow {
+        let mut trap_sheet = [None; 24];
+        for slot in trap_sheet[..12].iter_mut() {
+            *slot = Some(0.25);
+        }
+        LateralRow {
+            touchdown: (
+                Some(0.4),
+                Some(-0.2),
+                Some(1.0),
+                Some(-3.0),
+                Some(0.1),
+                Some(false),
+            ),
+            trap_sheet,
+        }
+    }
+
+    #[test]
+    fn a_row_a_campaign_writes_passes_and_edits_are_refused_by_column() {
+        assert_eq!(touched_down().check(true, true), Ok(()));
+        let refused = |row: LateralRow, touched: bool, flown: bool| {
+            row.check(touched, flown).unwrap_err().column
+        };
+        // A lateral touchdown without a touchdown.
+        assert_eq!(
+            refused(touched_down(), false, true),
+            "touchdown_lateral_offset_m"
+        );
+        // Not finite.
+        let mut row = touched_down();
+        row.touchdown.1 = Some(f64::NAN);
+        assert_eq!(refused(row, true, true), "touchdown_drift_rate_mps");
+        // Off centre at 0.4 m from the centreline.
+        let mut row = touched_down();
+        row.touchdown.5 = Some(true);
+        assert_eq!(refused(row, true, true), "off_centre");
+        // Beyond 6.1 m and not off centre.
+        let mut row = touched_down();
+        row.touchdown.0 = Some(-7.0);
+        assert_eq!(refused(row, true, true), "off_centre");
+        // Half a touchdown.
+        let mut row = touched_down();
+        row.touchdown.3 = None;
+        assert_eq!(
+            refused(row, true, true),
+            "touchdown_heading_to_centreline_deg"
+        );
+        // Half a position of the trap sheet.
+        let mut row = touched_down();
+        row.trap_sheet[9] = None;
+        assert_eq!(refused(row, true, true), "trap_im_lineup_peak_m");
+        // A trap sheet for a run that never flew.
+        let mut row = touched_down();
+        row.touchdown = (None, None, None, None, None, None);
+        assert_eq!(refused(row, false, false), "trap_x_glide_slope_mean_m");
+        // A lineup angle beyond 90°.
+        let mut row = touched_down();
+        row.trap_sheet[4] = Some(120.0);
+        assert_eq!(refused(row, true, true), "trap_x_lineup_mean_deg");
     }
 }

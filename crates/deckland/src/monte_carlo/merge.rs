@@ -14,6 +14,7 @@
 //! row), naming the line and the column at fault, so that every front end (the CLI's
 //! `merge`, Python, Dask) refuses the same inputs with the same words.
 
+use super::lateral::LateralRow;
 use super::limits::{
     check_runs, MAX_CONTROLLERS, MAX_CONTROLLER_LABEL_BYTES, MAX_RUNS, MAX_SHARDS,
 };
@@ -51,6 +52,9 @@ pub struct ShardRows {
     pub identity: ShardIdentity,
     /// Its rows (`runs.csv`), in any order.
     pub rows: Vec<RunRow<'static>>,
+    /// A 3-D approach campaign's lateral columns, one per row in the same order; `None`
+    /// for a 3-DOF campaign.
+    pub lateral: Option<Vec<LateralRow>>,
 }
 
 /// The campaign put together from its shards.
@@ -66,6 +70,9 @@ pub struct MergedCampaign {
     pub controllers: Vec<String>,
     /// Every run's rows, sorted by run index and controller.
     pub rows: Vec<RunRow<'static>>,
+    /// A 3-D approach campaign's lateral columns, one per row in the same order; `None`
+    /// for a 3-DOF campaign.
+    pub lateral: Option<Vec<LateralRow>>,
     /// The shards' sources, by shard index (the first is shard 0).
     pub sources: Vec<String>,
 }
@@ -218,6 +225,27 @@ pub fn merge_shards(mut shards: Vec<ShardRows>) -> Result<MergedCampaign, MergeE
                 identity.shard.to_string(),
             ));
         }
+        let kind = |s: &ShardRows| {
+            if s.lateral.is_some() {
+                "a 3-D approach's (with lateral columns)"
+            } else {
+                "a 3-DOF approach's"
+            }
+            .to_owned()
+        };
+        if shard.lateral.is_some() != shards[0].lateral.is_some() {
+            return Err(different("runs.csv columns", kind(&shards[0]), kind(shard)));
+        }
+        if let Some(lateral) = &shard.lateral {
+            if lateral.len() != shard.rows.len() {
+                return Err(MergeError::BadIdentity {
+                    location: identity.source.clone(),
+                    field: "lateral",
+                    value: format!("{} rows of lateral columns", lateral.len()),
+                    problem: format!("one per row: {} rows", shard.rows.len()),
+                });
+            }
+        }
     }
     let count = first.shard.count();
     let mut by_index: Vec<Option<usize>> = vec![None; usize::try_from(count).unwrap_or(0)];
@@ -269,16 +297,32 @@ pub fn merge_shards(mut shards: Vec<ShardRows>) -> Result<MergedCampaign, MergeE
         .flatten()
         .map(|&p| shards[p].identity.source.clone())
         .collect();
-    let mut rows: Vec<RunRow<'static>> = shards.into_iter().flat_map(|s| s.rows).collect();
-    rows.sort_by_key(|r| (r.run_index, position_of(&r.controller)));
+    let three_dimensional = shards[0].lateral.is_some();
+    let mut pairs: Vec<(RunRow<'static>, Option<LateralRow>)> =
+        shards.into_iter().flat_map(paired).collect();
+    pairs.sort_by_key(|(r, _)| (r.run_index, position_of(&r.controller)));
+    let (rows, lateral): (Vec<_>, Vec<_>) = pairs.into_iter().unzip();
     Ok(MergedCampaign {
         scenario_toml: first.scenario_toml,
         campaign_seed: first.campaign_seed,
         requested_runs: first.requested_runs,
         controllers: first.controllers,
         rows,
+        lateral: three_dimensional.then(|| lateral.into_iter().flatten().collect()),
         sources,
     })
+}
+
+/// A shard's rows, each with its lateral columns (`None` for a 3-DOF campaign).
+fn paired(shard: ShardRows) -> Vec<(RunRow<'static>, Option<LateralRow>)> {
+    match shard.lateral {
+        Some(lateral) => shard
+            .rows
+            .into_iter()
+            .zip(lateral.into_iter().map(Some))
+            .collect(),
+        None => shard.rows.into_iter().map(|r| (r, None)).collect(),
+    }
 }
 
 /// Checks that `shard` holds exactly its runs under every controller, each with its
@@ -299,7 +343,14 @@ fn check_rows(
         problem,
     };
     for (position, row) in shard.rows.iter().enumerate() {
-        if let Err(error) = row.check() {
+        let lateral_check = shard
+            .lateral
+            .as_ref()
+            .and_then(|l| l.get(position))
+            .map_or(Ok(()), |values| {
+                values.check(row.touchdown_distance_m.is_some(), row.flown())
+            });
+        if let Err(error) = row.check().and(lateral_check) {
             return Err(MergeError::BadRow {
                 location: identity.source.clone(),
                 row: position as u64 + 1,
@@ -341,9 +392,16 @@ fn check_rows(
             ));
         }
     }
-    shard
-        .rows
-        .sort_by_key(|r| (r.run_index, position_of(&r.controller)));
+    let three_dimensional = shard.lateral.is_some();
+    let mut pairs = paired(ShardRows {
+        identity: shard.identity.clone(),
+        rows: std::mem::take(&mut shard.rows),
+        lateral: shard.lateral.take(),
+    });
+    pairs.sort_by_key(|(r, _)| (r.run_index, position_of(&r.controller)));
+    let (rows, lateral): (Vec<_>, Vec<_>) = pairs.into_iter().unzip();
+    shard.rows = rows;
+    shard.lateral = three_dimensional.then(|| lateral.into_iter().flatten().collect());
     let expected = identity.shard.runs_of(runs) * variants;
     let mut expected_keys = (0..identity.shard.runs_of(runs))
         .flat_map(|p| (0..variants).map(move |v| (identity.shard.run_index(p), v as usize)));

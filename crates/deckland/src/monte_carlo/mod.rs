@@ -24,6 +24,11 @@
 //! - Statistics: rates with 95 % Wilson score intervals and exact one-sided upper bounds
 //!   for rare events ([`upper_bound`], [`runs_to_show_below`]), computed from the rows, so
 //!   a merged campaign's statistics are those of the whole campaign.
+//! - 3-D approach campaigns ([`flies_three_dimensional_approach`]): each row carries a
+//!   [`LateralRow`] (the lateral touchdown and the trap sheet,
+//!   [`TRAP_SHEET_RUN_COLUMNS`]) after the columns of every campaign; their statistics
+//!   ([`LateralStatistics`], [`TrapSheetStatistics`]) are computed from those columns, so
+//!   merged shards have them too.
 //! - Failures are data (after nyx): a run that diverges, times out or whose dispersed
 //!   scenario is invalid is a record with its reason, never an abort. A stop flag ends a
 //!   campaign early with the runs that finished ([`CampaignResult::partial`]).
@@ -42,14 +47,15 @@ mod seeds;
 mod shard;
 mod statistics;
 mod summary;
+mod trap_sheet;
 
 pub use campaign::{
     controller_label, run_campaign, CampaignError, CampaignResult, CampaignSpec, ControllerVariant,
     SharedPitchLaw,
 };
 pub use lateral::{
-    lateral_run_values, LateralRunValues, LateralStatistics, LATERAL_RUN_COLUMNS,
-    RAMP_LINEUP_PASS_DEG,
+    flies_three_dimensional_approach, lateral_row_columns, lateral_run_values, LateralRow,
+    LateralRunValues, LateralStatistics, LATERAL_RUN_COLUMNS, RAMP_LINEUP_PASS_DEG,
 };
 pub use limits::{
     check_runs, LimitError, MAX_CONTROLLERS, MAX_CONTROLLER_LABEL_BYTES, MAX_RUNS,
@@ -64,7 +70,7 @@ pub use rare_events::{
 pub use record::{RunFailure, RunRecord};
 pub use row::{RowError, RunRow, CAMPAIGN_OUTCOMES, RANGES, RUN_COLUMNS};
 pub use run_scenario::dispersed_run_scenario;
-pub use runs_csv::parse_runs_csv;
+pub use runs_csv::{parse_runs_csv, ParsedRuns};
 pub use seeds::{run_seed, splitmix64_mix, SPLITMIX64_GAMMA};
 pub use shard::{Shard, ShardError, SHARD_SCHEME};
 pub use statistics::{
@@ -72,4 +78,9 @@ pub use statistics::{
 };
 pub use summary::{
     CampaignSummary, CONFIDENCE_INTERVAL_METHOD, PERCENTILE_METHOD, SEED_DERIVATION,
+};
+pub use trap_sheet::{
+    position_values, sheet_values, trap_sheet_run_values, DeviationStatistics, PositionStatistics,
+    TrapSheetRunValues, TrapSheetStatistics, TRAP_SHEET_DEVIATIONS, TRAP_SHEET_INTERVALS,
+    TRAP_SHEET_RUN_COLUMNS,
 };

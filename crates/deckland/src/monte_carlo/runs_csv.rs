@@ -1,16 +1,29 @@
 //! A shard's `runs.csv` text read back into checked rows: the same columns, the same
 //! checks and the same words for every front end (the CLI's `merge`, Python, Dask).
 
-use super::lateral::LATERAL_RUN_COLUMNS;
+use super::lateral::{lateral_row_columns, LateralRow, LATERAL_RUN_COLUMNS};
 use super::limits::{MAX_CONTROLLERS, MAX_RUNS};
 use super::merge_error::MergeError;
 use super::row::{RunRow, RUN_COLUMNS};
+use super::trap_sheet::TRAP_SHEET_RUN_COLUMNS;
+
+/// A shard's `runs.csv` read back: its rows, and a 3-D campaign's [`LateralRow`] of
+/// each (in the same order).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ParsedRuns {
+    /// The rows, in the file's order.
+    pub rows: Vec<RunRow<'static>>,
+    /// A 3-D campaign's lateral columns, one per row; `None` for a 3-DOF campaign.
+    pub lateral: Option<Vec<LateralRow>>,
+}
 
 /// Reads the rows of a shard's `runs.csv` text (`location` names it in messages):
-/// exactly the columns of [`RUN_COLUMNS`] in order, a last line that ends (a file cut
-/// short is refused, even inside a row's text), and every row one a campaign can write
-/// ([`RunRow::check`]). Every error names the line and the column at fault.
-pub fn parse_runs_csv(location: &str, text: &str) -> Result<Vec<RunRow<'static>>, MergeError> {
+/// exactly the columns of [`RUN_COLUMNS`] in order — for a 3-D approach campaign followed
+/// by those of [`LateralRow`] ([`lateral_row_columns`]) — a last line that ends (a file
+/// cut short is refused, even inside a row's text), and every row one a campaign can
+/// write ([`RunRow::check`], [`LateralRow::check`]). Every error names the line and the
+/// column at fault.
+pub fn parse_runs_csv(location: &str, text: &str) -> Result<ParsedRuns, MergeError> {
     let at = |line: u64, problem: String| MergeError::RunsCsv {
         location: location.to_owned(),
         line,
@@ -22,24 +35,22 @@ pub fn parse_runs_csv(location: &str, text: &str) -> Result<Vec<RunRow<'static>>
         .unwrap_or_default()
         .trim_end_matches('\r');
     let columns: Vec<&str> = header.split(',').collect();
-    if columns.len() == RUN_COLUMNS.len() + LATERAL_RUN_COLUMNS.len()
-        && columns[..RUN_COLUMNS.len()] == RUN_COLUMNS
-        && columns[RUN_COLUMNS.len()..] == LATERAL_RUN_COLUMNS
-    {
-        return Err(at(
-            1,
-            "a 3-D approach campaign's shard (its lateral columns): merging those is not \
-             supported yet; fly the 3-D campaign whole (`deckland campaign` without `--shard`)"
-                .to_owned(),
-        ));
-    }
-    if columns != RUN_COLUMNS {
-        let position = RUN_COLUMNS
+    let three_dimensional = columns.get(RUN_COLUMNS.len()) == Some(&LATERAL_RUN_COLUMNS[0]);
+    let expected: Vec<&str> = if three_dimensional {
+        RUN_COLUMNS
+            .into_iter()
+            .chain(lateral_row_columns())
+            .collect()
+    } else {
+        RUN_COLUMNS.to_vec()
+    };
+    if columns != expected {
+        let position = expected
             .iter()
             .zip(&columns)
             .position(|(a, b)| a != b)
-            .unwrap_or(columns.len().min(RUN_COLUMNS.len()));
-        let problem = match (RUN_COLUMNS.get(position), columns.get(position)) {
+            .unwrap_or(columns.len().min(expected.len()));
+        let problem = match (expected.get(position), columns.get(position)) {
             (Some(expected), Some(found)) => {
                 format!(
                     "column {} is `{found}` where a campaign writes `{expected}`",
@@ -52,7 +63,7 @@ pub fn parse_runs_csv(location: &str, text: &str) -> Result<Vec<RunRow<'static>>
         };
         return Err(at(
             1,
-            format!("{problem} (the header is `{}`)", RUN_COLUMNS.join(",")),
+            format!("{problem} (the header is `{}`)", expected.join(",")),
         ));
     }
     if !text.ends_with('\n') {
@@ -66,8 +77,57 @@ pub fn parse_runs_csv(location: &str, text: &str) -> Result<Vec<RunRow<'static>>
     let mut reader = csv::ReaderBuilder::new()
         .has_headers(true)
         .from_reader(text.as_bytes());
+    let width = expected.len();
+    let csv_error = |error: csv::Error, number: u64| {
+        let line = error.position().map_or(number + 1, |p| p.line());
+        let column = match error.kind() {
+            csv::ErrorKind::Deserialize { err, .. } => err
+                .field()
+                .and_then(|f| RUN_COLUMNS.get(f as usize))
+                .map(|c| format!("`{c}`: "))
+                .unwrap_or_default(),
+            _ => String::new(),
+        };
+        let message = match error.kind() {
+            csv::ErrorKind::Deserialize { err, .. } => err.kind().to_string(),
+            csv::ErrorKind::UnequalLengths { len, .. } => {
+                format!("{len} fields where a campaign writes {width}: is the row cut short?")
+            }
+            _ => error.to_string(),
+        };
+        at(line, format!("{column}{message}"))
+    };
+    let bad_row = |number: u64, row: &RunRow, error| MergeError::BadRow {
+        location: location.to_owned(),
+        row: number,
+        run_index: row.run_index,
+        controller: row.controller.to_string(),
+        error: Box::new(error),
+    };
     let mut rows = Vec::new();
-    for (position, row) in reader.deserialize::<RunRow<'static>>().enumerate() {
+    if !three_dimensional {
+        for (position, row) in reader.deserialize::<RunRow<'static>>().enumerate() {
+            let number = position as u64 + 1;
+            if number > most_rows {
+                return Err(at(
+                    number + 1,
+                    format!("more than {most_rows} rows: more than a campaign has"),
+                ));
+            }
+            let row = row.map_err(|error| csv_error(error, number))?;
+            if let Err(error) = row.check() {
+                return Err(bad_row(number, &row, error));
+            }
+            rows.push(row);
+        }
+        return Ok(ParsedRuns {
+            rows,
+            lateral: None,
+        });
+    }
+    let headers = csv::StringRecord::from(RUN_COLUMNS.to_vec());
+    let mut lateral = Vec::new();
+    for (position, record) in reader.records().enumerate() {
         let number = position as u64 + 1;
         if number > most_rows {
             return Err(at(
@@ -75,38 +135,64 @@ pub fn parse_runs_csv(location: &str, text: &str) -> Result<Vec<RunRow<'static>>
                 format!("more than {most_rows} rows: more than a campaign has"),
             ));
         }
-        let row = row.map_err(|error| {
-            let line = error.position().map_or(number + 1, |p| p.line());
-            let column = match error.kind() {
-                csv::ErrorKind::Deserialize { err, .. } => err
-                    .field()
-                    .and_then(|f| RUN_COLUMNS.get(f as usize))
-                    .map(|c| format!("`{c}`: "))
-                    .unwrap_or_default(),
-                _ => String::new(),
-            };
-            let message = match error.kind() {
-                csv::ErrorKind::Deserialize { err, .. } => err.kind().to_string(),
-                csv::ErrorKind::UnequalLengths { len, .. } => format!(
-                    "{len} fields where a campaign writes {}: is the row cut short?",
-                    RUN_COLUMNS.len()
-                ),
-                _ => error.to_string(),
-            };
-            at(line, format!("{column}{message}"))
-        })?;
+        let record = record.map_err(|error| csv_error(error, number))?;
+        let line = record.position().map_or(number + 1, |p| p.line());
+        let base: csv::StringRecord = record.iter().take(RUN_COLUMNS.len()).collect();
+        let row: RunRow<'static> = base
+            .deserialize(Some(&headers))
+            .map_err(|error| csv_error(error, line - 1))?;
+        let values = lateral_values(&record).map_err(|problem| at(line, problem))?;
         if let Err(error) = row.check() {
-            return Err(MergeError::BadRow {
-                location: location.to_owned(),
-                row: number,
-                run_index: row.run_index,
-                controller: row.controller.to_string(),
-                error: Box::new(error),
-            });
+            return Err(bad_row(number, &row, error));
+        }
+        if let Err(error) = values.check(row.touchdown_distance_m.is_some(), row.flown()) {
+            return Err(bad_row(number, &row, error));
         }
         rows.push(row);
+        lateral.push(values);
     }
-    Ok(rows)
+    Ok(ParsedRuns {
+        rows,
+        lateral: Some(lateral),
+    })
+}
+
+/// The [`LateralRow`] of a 3-D row's fields (after those of [`RUN_COLUMNS`]): numbers or
+/// empty, `off_centre` `true`, `false` or empty; the error names the column.
+fn lateral_values(record: &csv::StringRecord) -> Result<LateralRow, String> {
+    let field = |k: usize| record.get(RUN_COLUMNS.len() + k).unwrap_or_default();
+    let number = |k: usize, column: &str| -> Result<Option<f64>, String> {
+        let text = field(k);
+        if text.is_empty() {
+            return Ok(None);
+        }
+        text.parse::<f64>()
+            .map(Some)
+            .map_err(|_| format!("`{column}`: `{text}` is not a number"))
+    };
+    let mut reals = [None; 5];
+    for (k, slot) in reals.iter_mut().enumerate() {
+        *slot = number(k, LATERAL_RUN_COLUMNS[k])?;
+    }
+    let off_centre = match field(5) {
+        "" => None,
+        "true" => Some(true),
+        "false" => Some(false),
+        other => {
+            return Err(format!(
+                "`{}`: `{other}` is not true, false or empty",
+                LATERAL_RUN_COLUMNS[5]
+            ))
+        }
+    };
+    let mut trap_sheet = [None; 24];
+    for (k, slot) in trap_sheet.iter_mut().enumerate() {
+        *slot = number(LATERAL_RUN_COLUMNS.len() + k, TRAP_SHEET_RUN_COLUMNS[k])?;
+    }
+    Ok(LateralRow {
+        touchdown: (reals[0], reals[1], reals[2], reals[3], reals[4], off_centre),
+        trap_sheet,
+    })
 }
 
 #[cfg(test)]
@@ -114,20 +200,32 @@ mod tests {
     use super::*;
 
     #[test]
-    fn a_three_d_shard_is_refused_by_name() {
-        let header = format!(
+    fn a_three_d_header_needs_every_lateral_and_trap_sheet_column() {
+        let full = format!(
+            "{},{}\n",
+            RUN_COLUMNS.join(","),
+            lateral_row_columns().collect::<Vec<_>>().join(",")
+        );
+        let parsed = parse_runs_csv("s1/runs.csv", &full).expect("a 3-D header");
+        assert_eq!(parsed.lateral, Some(Vec::new()));
+        // One lateral column too few: the first one missing is named.
+        let cut = format!("{},{}\n", RUN_COLUMNS.join(","), LATERAL_RUN_COLUMNS[0]);
+        let error = parse_runs_csv("s1/runs.csv", &cut).unwrap_err().to_string();
+        assert!(error.contains("s1/runs.csv"), "{error}");
+        assert!(
+            error.contains("the column `touchdown_drift_rate_mps` is missing"),
+            "{error}"
+        );
+        // The lateral columns without the trap sheet's (an older 3-D shard).
+        let old = format!(
             "{},{}\n",
             RUN_COLUMNS.join(","),
             LATERAL_RUN_COLUMNS.join(",")
         );
-        let error = parse_runs_csv("s1/runs.csv", &header)
-            .unwrap_err()
-            .to_string();
-        assert!(error.contains("3-D approach campaign"), "{error}");
-        assert!(error.contains("s1/runs.csv"), "{error}");
-        // One lateral column too few is an unknown header, as before.
-        let cut = format!("{},{}\n", RUN_COLUMNS.join(","), LATERAL_RUN_COLUMNS[0]);
-        let error = parse_runs_csv("s1/runs.csv", &cut).unwrap_err().to_string();
-        assert!(error.contains("is not a column of a campaign"), "{error}");
+        let error = parse_runs_csv("s1/runs.csv", &old).unwrap_err().to_string();
+        assert!(
+            error.contains("`trap_x_glide_slope_mean_m` is missing"),
+            "{error}"
+        );
     }
 }

@@ -58,8 +58,9 @@ pub fn flown_shards() -> Vec<ShardRows> {
                         })
                         .collect();
                     // As a file carries them: through runs.csv text.
-                    let rows =
-                        deckland::monte_carlo::parse_runs_csv("fixture", &rows_csv(&rows)).unwrap();
+                    let rows = deckland::monte_carlo::parse_runs_csv("fixture", &rows_csv(&rows))
+                        .unwrap()
+                        .rows;
                     ShardRows {
                         identity: ShardIdentity {
                             source: format!("s{index}"),
@@ -71,6 +72,7 @@ pub fn flown_shards() -> Vec<ShardRows> {
                             partial: result.partial,
                         },
                         rows,
+                        lateral: None,
                     }
                 })
                 .collect()

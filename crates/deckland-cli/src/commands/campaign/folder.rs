@@ -3,7 +3,8 @@
 //! report's writer (`report`) and the campaign's figures (`plot::campaign`) read it.
 
 use deckland::monte_carlo::{
-    CampaignStatistics, CampaignSummary, LateralRunValues, LateralStatistics, Proportion, RunRow,
+    CampaignStatistics, CampaignSummary, LateralRow, LateralRunValues, LateralStatistics,
+    Proportion, RunRow, TrapSheetRunValues, TrapSheetStatistics,
 };
 use deckland::scenario::Scenario;
 use serde::Serialize;
@@ -30,10 +31,31 @@ pub struct CampaignReport<'a> {
     pub shard_scheme: &'static str,
     /// The shard folders a merged campaign was made from, by shard index (empty when flown).
     pub merged_from: Vec<String>,
-    /// A 3-D approach campaign's lateral statistics (docs/model.md §10.4); absent (not
-    /// written) for a 3-DOF campaign and for a merge.
+    /// A 3-D approach campaign's lateral statistics (docs/model.md §10.4), computed
+    /// from the rows' lateral columns (so a merge has them too); absent (not written) for
+    /// a 3-DOF campaign.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub lateral: Option<LateralStatistics>,
+    /// A 3-D approach campaign's trap-sheet statistics per position (docs/model.md
+    /// §10.8), from the rows' trap-sheet columns; absent for a 3-DOF campaign.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub trap_sheet: Option<TrapSheetStatistics>,
+}
+
+/// The statistics of a 3-D campaign's lateral columns (`None` for a 3-DOF campaign):
+/// the lateral touchdowns' (when a run touched down) and the trap sheets'.
+pub fn lateral_statistics(
+    lateral_rows: Option<&[LateralRow]>,
+) -> (Option<LateralStatistics>, Option<TrapSheetStatistics>) {
+    let Some(rows) = lateral_rows else {
+        return (None, None);
+    };
+    let touchdowns: Vec<LateralRunValues> = rows.iter().map(|r| r.touchdown).collect();
+    let sheets: Vec<TrapSheetRunValues> = rows.iter().map(|r| r.trap_sheet).collect();
+    (
+        LateralStatistics::of_rows(&touchdowns),
+        Some(TrapSheetStatistics::of_rows(&sheets)),
+    )
 }
 
 /// A campaign folder's content before it is written.
@@ -49,8 +71,8 @@ pub struct CampaignFolder<'a> {
     /// The title of the plots and the page.
     pub title: String,
     /// A 3-D approach campaign's lateral columns of `runs.csv`, one per row; `None` for
-    /// a 3-DOF campaign (and a merge), whose `runs.csv` has none.
-    pub lateral_rows: Option<Vec<LateralRunValues>>,
+    /// a 3-DOF campaign, whose `runs.csv` has none.
+    pub lateral_rows: Option<Vec<LateralRow>>,
 }
 
 /// The title of a campaign's plots and page: scenario file name, seed, runs, shard.

@@ -15,6 +15,11 @@
 //! - plots: `touchdown_dispersion` (touchdown point along the deck against sink rate,
 //!   with the wires and the ramp), `touchdown_histograms`, `outcomes`.
 //!
+//! A 3-D approach campaign (`monte_carlo::flies_three_dimensional_approach`) adds each
+//! run's lateral touchdown and trap sheet (`monte_carlo::LateralRow`) to `runs.csv` and
+//! `runs.parquet`, their statistics (`lateral`, `trap_sheet`) to `summary.json`, the
+//! terminal and `report.html`, and the `touchdown_plan` plot.
+//!
 //! `--shard K/M` flies only the runs i with i mod M = K (round robin: every shard is a
 //! sample of the whole campaign and the shards differ by one run at most); the folder
 //! says which shard it is, and `deckland merge` puts the M folders together into the
@@ -29,14 +34,15 @@
 pub mod folder;
 pub mod paired;
 pub mod report;
+pub mod trap_sheet;
 
 use super::common::{check_set_up, load_scenario_file, seed_parser, OutputArgs};
 use crate::output::OutputDir;
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use deckland::monte_carlo::{
-    lateral_run_values, run_campaign, CampaignSpec, CampaignSummary, LateralStatistics, RunRecord,
-    RunRow, Shard, DEFAULT_TARGET_RATE, SHARD_SCHEME,
+    flies_three_dimensional_approach, run_campaign, CampaignSpec, CampaignSummary, LateralRow,
+    RunRecord, RunRow, Shard, DEFAULT_TARGET_RATE, SHARD_SCHEME,
 };
 use deckland::scenario::Mission;
 use folder::{CampaignFolder, CampaignReport};
@@ -149,9 +155,12 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
 
     let summary = CampaignSummary::of_result(&result, seed, DEFAULT_TARGET_RATE);
     let finished_runs = result.records.len() as u64;
-    let lateral = LateralStatistics::of(&result.records);
+    let lateral_rows: Option<Vec<LateralRow>> = flies_three_dimensional_approach(&spec.scenario)
+        .then(|| result.records.iter().map(LateralRow::of).collect());
+    let (lateral, trap_sheet) = folder::lateral_statistics(lateral_rows.as_deref());
     let report = CampaignReport {
         lateral,
+        trap_sheet,
         scenario_file: args.scenario.display().to_string(),
         summary: &summary,
         threads: Some(threads),
@@ -169,10 +178,7 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
         .map(|r| RunRow::new(r, &result.controller_labels))
         .collect();
     let folder = CampaignFolder {
-        lateral_rows: report
-            .lateral
-            .is_some()
-            .then(|| result.records.iter().map(lateral_run_values).collect()),
+        lateral_rows,
         scenario: &spec.scenario,
         scenario_toml: &scenario_toml,
         rows: &rows,

@@ -11,8 +11,8 @@ use crate::output::OutputDir;
 use crate::plot::campaign::figures;
 use anyhow::Result;
 use deckland::monte_carlo::{
-    CampaignStatistics, CampaignSummary, Distribution, LateralRunValues, Proportion, RunRow,
-    LATERAL_RUN_COLUMNS, RUN_COLUMNS, UPPER_BOUND_CONFIDENCE,
+    lateral_row_columns, CampaignStatistics, CampaignSummary, Distribution, LateralRow, Proportion,
+    RunRow, RUN_COLUMNS, UPPER_BOUND_CONFIDENCE,
 };
 
 /// Classes seen at most this many times get their upper bound spelt out in the report.
@@ -296,6 +296,9 @@ fn html_report(
     if let Some(lateral) = &report.lateral {
         lineup_section(page.section("Lineup (3-D approach)"), lateral);
     }
+    if let Some(sheet) = &report.trap_sheet {
+        super::trap_sheet::html_section(page.section("LSO trap sheet (3-D approach)"), sheet);
+    }
     page.section("Actuators")
         .paragraph(format!(
             "Over the runs flown, per run; percentiles by {}.",
@@ -438,6 +441,9 @@ pub fn print_statistics(report: &CampaignReport) -> Result<()> {
     outln!()?;
     if let Some(lateral) = &report.lateral {
         print_lateral(lateral)?;
+    }
+    if let Some(sheet) = &report.trap_sheet {
+        super::trap_sheet::print(sheet)?;
     }
     let touchdown: [(&str, bool, DistributionOf); 2] = [
         ("touchdown from aim (m)", true, |s| s.touchdown_distance_m),
@@ -585,12 +591,13 @@ pub fn rare_event_lines(summary: &CampaignSummary) -> Vec<String> {
     lines
 }
 
-/// A 3-D campaign's `runs.csv`: the columns of every campaign, then
-/// [`LATERAL_RUN_COLUMNS`], each part written as the csv writer writes it.
+/// A 3-D campaign's `runs.csv`: the columns of every campaign, then those of
+/// [`LateralRow`] (the lateral touchdown's, then the trap sheet's), each part written as
+/// the csv writer writes it.
 fn write_lateral_runs_csv(
     path: &std::path::Path,
     rows: &[RunRow],
-    lateral: &[LateralRunValues],
+    lateral: &[LateralRow],
 ) -> Result<()> {
     let line = |write: &dyn Fn(&mut csv::Writer<Vec<u8>>) -> csv::Result<()>| -> Result<String> {
         let mut writer = csv::WriterBuilder::new()
@@ -603,12 +610,13 @@ fn write_lateral_runs_csv(
     let mut text = format!(
         "{},{}\n",
         RUN_COLUMNS.join(","),
-        LATERAL_RUN_COLUMNS.join(",")
+        lateral_row_columns().collect::<Vec<_>>().join(",")
     );
     for (row, values) in rows.iter().zip(lateral) {
         let base = line(&|w| w.serialize(row))?;
-        let extra = line(&|w| w.serialize(values))?;
-        text.push_str(&format!("{base},{extra}\n"));
+        let touchdown = line(&|w| w.serialize(values.touchdown))?;
+        let trap_sheet = line(&|w| w.serialize(values.trap_sheet))?;
+        text.push_str(&format!("{base},{touchdown},{trap_sheet}\n"));
     }
     std::fs::write(path, text)?;
     Ok(())

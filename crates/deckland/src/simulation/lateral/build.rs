@@ -44,6 +44,28 @@ pub(crate) fn flies_three_dimensional(scenario: &Scenario, six_dof: bool) -> boo
     six_dof && scenario.mission == Mission::Approach && scenario.approach.three_dimensional
 }
 
+/// Refuses a crab (the trim's heading off the final bearing, deg) beyond
+/// `environment.wind.max_crab_deg`, naming the crosswind, the airspeed and the limit.
+fn check_crab(scenario: &Scenario, crab_deg: f64) -> Result<(), ParameterError> {
+    let wind = &scenario.environment.wind;
+    if crab_deg.abs() <= wind.max_crab_deg {
+        return Ok(());
+    }
+    Err(ParameterError::new(
+        "environment.wind",
+        "crosswind_mps",
+        wind.crosswind_mps,
+        format_args!(
+            "a crosswind the aircraft can crab into: at `approach.airspeed_mps` = {} it needs \
+             a crab of {:.1}°, beyond `environment.wind.max_crab_deg` = {}° (lower the \
+             crosswind or raise the limit)",
+            scenario.approach.airspeed_mps,
+            crab_deg.abs(),
+            wind.max_crab_deg
+        ),
+    ))
+}
+
 /// The steady wind of the 3-D approach (docs/model.md §3.9): down the angled deck, with
 /// the crosswind; none when the mean wind is off.
 pub(crate) fn steady_wind(scenario: &Scenario) -> Wind {
@@ -95,18 +117,7 @@ pub(crate) fn build(
             format_args!("a crosswind the aircraft can crab into on the approach ({error})"),
         )
     })?;
-    let crab_deg = trim.psi_rad.to_degrees();
-    if crab_deg.abs() > 15.0 {
-        return Err(ParameterError::new(
-            "environment.wind",
-            "crosswind_mps",
-            env.wind.crosswind_mps,
-            format_args!(
-                "a crosswind the aircraft can crab into: it needs a crab of {crab_deg:.1}°, \
-                 beyond the 15° a pilot lands with"
-            ),
-        ));
-    }
+    check_crab(scenario, trim.psi_rad.to_degrees())?;
     let model = linearize_six_dof(aircraft, &trim);
     let (roll_plant, yaw_plant) = channel_plants(&model);
     let context = |channel, plant| LateralDesignContext {
