@@ -141,22 +141,34 @@ impl ClosedLoop {
         taps: &T,
         rate: &mut [f64],
     ) -> Signals {
-        // Without users' blocks the bus never leaves the function (no cost over a loop
-        // written by hand); with them it is passed to each. Each plant has its own
-        // instantiation.
-        match (&self.plant, self.user_blocks.is_empty()) {
-            (BuiltPlant::ThreeDof(aircraft), true) => {
-                self.evaluate_blocks::<T, Aircraft, false>(aircraft, t, x, held, taps, rate)
+        // Without users' blocks and outside the 3-D approach the bus never leaves the
+        // function (no cost over a loop written by hand): the RK4 stages, which drop it,
+        // neither clear it nor compute what only it carries. Users' blocks and the 3-D
+        // approach's lateral blocks are passed it. Each plant has its own instantiations.
+        match (
+            &self.plant,
+            self.user_blocks.is_empty(),
+            self.lateral.is_some(),
+        ) {
+            (BuiltPlant::ThreeDof(aircraft), true, false) => {
+                self.evaluate_blocks::<T, Aircraft, false, false>(aircraft, t, x, held, taps, rate)
             }
-            (BuiltPlant::ThreeDof(aircraft), false) => {
-                self.evaluate_blocks::<T, Aircraft, true>(aircraft, t, x, held, taps, rate)
+            (BuiltPlant::ThreeDof(aircraft), true, true) => {
+                self.evaluate_blocks::<T, Aircraft, false, true>(aircraft, t, x, held, taps, rate)
             }
-            (BuiltPlant::SixDof(aircraft), true) => {
-                self.evaluate_blocks::<T, SixDofAircraft, false>(aircraft, t, x, held, taps, rate)
+            (BuiltPlant::ThreeDof(aircraft), false, _) => {
+                self.evaluate_blocks::<T, Aircraft, true, true>(aircraft, t, x, held, taps, rate)
             }
-            (BuiltPlant::SixDof(aircraft), false) => {
-                self.evaluate_blocks::<T, SixDofAircraft, true>(aircraft, t, x, held, taps, rate)
-            }
+            (BuiltPlant::SixDof(aircraft), true, false) => self
+                .evaluate_blocks::<T, SixDofAircraft, false, false>(
+                    aircraft, t, x, held, taps, rate,
+                ),
+            (BuiltPlant::SixDof(aircraft), true, true) => self
+                .evaluate_blocks::<T, SixDofAircraft, false, true>(
+                    aircraft, t, x, held, taps, rate,
+                ),
+            (BuiltPlant::SixDof(aircraft), false, _) => self
+                .evaluate_blocks::<T, SixDofAircraft, true, true>(aircraft, t, x, held, taps, rate),
         }
     }
 
@@ -169,9 +181,10 @@ impl ClosedLoop {
     }
 
     /// The evaluation for the plant `aircraft`, with (`USER_BLOCKS`) or without users'
-    /// blocks.
+    /// blocks, with (`LATERAL`, if the loop has them) or without the 3-D approach's
+    /// lateral blocks.
     #[inline(always)]
-    fn evaluate_blocks<T: Taps, P: Plant, const USER_BLOCKS: bool>(
+    fn evaluate_blocks<T: Taps, P: Plant, const USER_BLOCKS: bool, const LATERAL: bool>(
         &self,
         aircraft: &P,
         t: f64,
@@ -189,7 +202,8 @@ impl ClosedLoop {
         // ship: the deck's pose and rate, the moving landing point (in the 3-D approach,
         // its equivalent longitudinal pose).
         let ship_state = self.ship_state(x);
-        let view = match &self.lateral {
+        let lateral_loop = if LATERAL { self.lateral.as_ref() } else { None };
+        let view = match lateral_loop {
             Some(lateral) => Some(lateral.ship_outputs(
                 &self.ship,
                 &self.deck,
@@ -323,7 +337,7 @@ impl ClosedLoop {
 
         // lineup and lateral_laws in the 3-D approach (docs/model.md §10.2); otherwise
         // lateral_hold: the aileron and rudder commands of a lateral plant at trim.
-        match (&self.lateral, &view, &held.lateral) {
+        match (lateral_loop, &view, &held.lateral) {
             (Some(lateral), Some(view), Some(lateral_held)) => lateral.lineup_and_laws(
                 view,
                 &self.deck,
@@ -385,12 +399,19 @@ impl ClosedLoop {
         ) {
             rate[layout.direct_lift.offset] = law.increment_rate(increment, command);
         }
+        // The landing point's height again, worked out only for a predictor that reads
+        // it (a sine of the ship's pitch that the RK4 stages otherwise skip); in the 3-D
+        // approach it is the view's, already on the bus.
+        let aim_height_m = || match view {
+            Some(_) => bus.aim_point.h_m,
+            None => aim_point_height_m(&self.deck, bus.ship),
+        };
         self.deck_predictor.derivative(
             layout.deck_predictor.of(x),
-            bus.aim_point.h_m,
+            aim_height_m,
             layout.deck_predictor.of_mut(rate),
         );
-        if let (Some(lateral), Some(lateral_held)) = (&self.lateral, &held.lateral) {
+        if let (Some(lateral), Some(lateral_held)) = (lateral_loop, &held.lateral) {
             lateral.derivative(layout, x, lateral_held, taps, &bus, rate);
         }
         if USER_BLOCKS {
@@ -407,6 +428,14 @@ impl ClosedLoop {
     pub fn constrain(&self, x: &mut [f64]) {
         self.plant.constrain(self.layout.aircraft.of_mut(x));
     }
+}
+
+/// The landing point's height (m) for `pose`, as on the bus. Out of line, so that the
+/// compiler does not reuse the bus's value for it: that value, dropped in the RK4 stages,
+/// then costs nothing there. The pose is a copy, so that the bus stays in registers.
+#[inline(never)]
+fn aim_point_height_m(deck: &DeckGeometry, pose: ShipPose) -> f64 {
+    deck.aim_point(&pose).h_m
 }
 
 /// The loop with its held inputs and taps fixed over a step: the system the RK4 stages

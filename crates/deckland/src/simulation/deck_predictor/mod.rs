@@ -280,13 +280,19 @@ impl BuiltDeckPredictor {
         each!(self, p => p.observe(time_s, view))
     }
 
-    /// The predictor's state rate, given the landing point's true height (m).
+    /// The predictor's state rate, given the landing point's true height (m), which is
+    /// worked out (`aim_height_m` called) only for a predictor that reads it.
     #[inline(always)]
-    pub(crate) fn derivative(&self, state: &[f64], aim_height_m: f64, rate: &mut [f64]) {
+    pub(crate) fn derivative(
+        &self,
+        state: &[f64],
+        aim_height_m: impl FnOnce() -> f64,
+        rate: &mut [f64],
+    ) {
         if let Self::FilterLead(filter) = self {
-            filter.derivative(state, aim_height_m, rate);
+            filter.derivative(state, aim_height_m(), rate);
         } else if let Self::Custom(custom) = self {
-            custom.derivative(state, aim_height_m, rate);
+            custom.derivative(state, aim_height_m(), rate);
         }
     }
 
