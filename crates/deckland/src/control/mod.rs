@@ -12,6 +12,7 @@ pub mod design;
 mod direct_lift;
 mod flight_path;
 mod guidance;
+mod late_abort;
 pub mod lateral;
 mod law;
 pub mod lineup;
@@ -30,10 +31,9 @@ pub use flight_path::{
     FlightPathGenerator, FlightPathParameters, PathReference,
 };
 pub use guidance::GuidanceParameters;
+pub use late_abort::LateAbortInputs;
 pub use law::{AxisLaw, LinearLaw};
 pub use loop_controller::{LoopController, LoopGains};
 pub use sink_rate::SinkRateControllerParameters;
 pub use speed::{SpeedController, SpeedControllerParameters};
-pub use wave_off::{
-    LateAbortInputs, WaveOffCriterion, WaveOffDecision, WaveOffInputs, WaveOffParameters,
-};
+pub use wave_off::{WaveOffCriterion, WaveOffDecision, WaveOffInputs, WaveOffParameters};

@@ -1,5 +1,6 @@
 //! Tests of the wave-off decision (kept apart so that wave_off.rs stays short).
 use super::*;
+use crate::control::LateAbortInputs;
 
 fn calm() -> WaveOffInputs {
     WaveOffInputs {

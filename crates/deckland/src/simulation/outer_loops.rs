@@ -363,6 +363,17 @@ impl OuterLoops {
         }
     }
 
+    /// A run's `reason` with the late abort's decision after it, if it engaged.
+    pub(crate) fn with_late_abort(&self, reason: Option<String>) -> Option<String> {
+        let Self::Approach { late_abort, .. } = self else {
+            return reason;
+        };
+        match (reason, late_abort.description()) {
+            (Some(reason), Some(late)) => Some(format!("{reason}; {late}")),
+            (reason, late) => reason.or(late),
+        }
+    }
+
     /// Whether these loops fly an approach to the deck.
     pub fn is_approach(&self) -> bool {
         matches!(self, Self::Approach { .. })

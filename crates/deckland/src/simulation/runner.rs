@@ -16,7 +16,6 @@ use super::closed_loop::{ClosedLoop, HeldInputs, HeldLoop, StepStreams};
 use super::deck_predictor::DeckPredictor;
 use super::events::EventDetector;
 use super::outcome::{Divergence, EndReason, Event, LandingRules, RunSummary};
-use super::outer_loops::OuterLoops;
 use super::recorder::{GlidePathStatistics, Recorder};
 use super::setup::{build, SetupError, UserParts};
 use super::signals::{Signals, SIGNAL_MAGNITUDE_LIMIT};
@@ -388,7 +387,7 @@ impl Simulation {
             let summary = RunSummary {
                 outcome: reason.outcome(),
                 wire: reason.wire(),
-                reason: with_late_abort(reason.description(), &self.system.outer),
+                reason: self.system.outer.with_late_abort(reason.description()),
                 end_time_s,
                 steps: self.step,
                 touchdown,
@@ -489,16 +488,5 @@ fn event_time(event: &Event) -> f64 {
         | Event::PassedLastWire { time_s, .. }
         | Event::WaveOff { time_s, .. } => *time_s,
         Event::Touchdown(touchdown) => touchdown.time_s,
-    }
-}
-
-/// A run's reason with the late abort's decision, if it engaged, after it.
-fn with_late_abort(reason: Option<String>, outer: &OuterLoops) -> Option<String> {
-    let OuterLoops::Approach { late_abort, .. } = outer else {
-        return reason;
-    };
-    match (reason, late_abort.description()) {
-        (Some(reason), Some(late)) => Some(format!("{reason}; {late}")),
-        (reason, late) => reason.or(late),
     }
 }
