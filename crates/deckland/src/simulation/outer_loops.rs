@@ -363,14 +363,15 @@ impl OuterLoops {
         }
     }
 
-    /// A run's `reason` with the late abort's decision after it, if it engaged.
+    /// A run's `reason` with the late abort's decision after it, if it engaged (a run
+    /// without a reason, a trap, keeps none: campaign files hold no reason for a trap).
     pub(crate) fn with_late_abort(&self, reason: Option<String>) -> Option<String> {
         let Self::Approach { late_abort, .. } = self else {
             return reason;
         };
         match (reason, late_abort.description()) {
             (Some(reason), Some(late)) => Some(format!("{reason}; {late}")),
-            (reason, late) => reason.or(late),
+            (reason, _) => reason,
         }
     }
 
