@@ -156,7 +156,9 @@ def test_a_held_bank_command_turns_the_aircraft_off_the_centreline():
     _, infos = run_episode(env, 1, banked)
     _, flown = run_episode(env, 1, autopilot)
     turn = [i["raw"][heading] for i in infos]
-    assert turn[-1] - turn[0] > np.deg2rad(5.0)
+    # In the last 12 s the yaw law holds the crab heading (approach.heading_hold_time_to_go_s)
+    # and pulls the nose back, so the turn is read at its largest, before the hold.
+    assert max(turn) - turn[0] > np.deg2rad(5.0)
     assert final_cross_track_m(env, infos) > final_cross_track_m(env, flown) + 5.0
 
 

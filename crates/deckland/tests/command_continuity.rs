@@ -99,3 +99,54 @@ fn with_the_risk_aware_clearance_the_command_has_no_step_either() {
         );
     }
 }
+
+/// The largest change of the late abort's share from one 1-ms step to the next, and its
+/// largest value, for the default scenario at `seed` with the late abort at a 2 % limit
+/// (engaging in about half the approaches) blended at `rate_per_s`.
+fn late_abort_share(seed: u64, rate_per_s: f64) -> (f64, f64) {
+    use deckland::simulation::{OuterLoops, Stop};
+    let mut scenario = Scenario {
+        seed,
+        ..Scenario::default()
+    };
+    let wave_off = &mut scenario.control.wave_off;
+    wave_off.late_abort_ramp_strike_probability = 0.02;
+    wave_off.late_abort_full_thrust = true;
+    wave_off.late_abort_rate_per_s = rate_per_s;
+    let mut simulation = Simulation::new(&scenario).unwrap();
+    let mut recorder = deckland::recording::SummaryRecorder;
+    let share = |simulation: &Simulation| match simulation.system().outer_loops() {
+        OuterLoops::Approach { late_abort, .. } => late_abort.share,
+        _ => unreachable!("an approach"),
+    };
+    let (mut last, mut largest_step, mut largest) = (0.0, 0.0_f64, 0.0_f64);
+    while !matches!(simulation.step(&mut recorder), Stop::Ended(_)) {
+        let now = share(&simulation);
+        largest_step = largest_step.max((now - last).abs());
+        largest = largest.max(now);
+        last = now;
+    }
+    (largest_step, largest)
+}
+
+/// The late abort (docs/landing-design.md) moves the direct-lift and thrust commands
+/// from the laws' to full by its share, which rises and falls at its rate: at the
+/// default 5 per second by 0.005 per 1-ms step at most, never by a step. Seeds 1 and 6
+/// engage it fully; the fastest blend the key allows (100 per second) moves it by 0.1
+/// in a step, which this bound would catch.
+#[test]
+fn the_late_abort_engages_without_a_step() {
+    for seed in [1, 6] {
+        let (largest_step, largest) = late_abort_share(seed, 5.0);
+        assert!(
+            largest == 1.0,
+            "seed {seed}: the late abort reached {largest}"
+        );
+        assert!(
+            largest_step <= 0.005 + 1e-12,
+            "seed {seed}: share step {largest_step}"
+        );
+    }
+    let (step_like, _) = late_abort_share(1, 100.0);
+    assert!(step_like > 0.05, "the fastest blend moved by {step_like}");
+}

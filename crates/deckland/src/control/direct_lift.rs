@@ -176,6 +176,17 @@ impl DirectLiftParameters {
         }
     }
 
+    /// The late abort on `command`: blended towards full authority up by `share` (0 to 1),
+    /// (1 − share)·command + share·ΔC_L,max; a share of 0 leaves it as it is.
+    #[inline]
+    pub fn late_abort(&self, command: f64, share: f64) -> f64 {
+        if share > 0.0 {
+            command + share * (self.max_lift_coefficient_increment - command)
+        } else {
+            command
+        }
+    }
+
     /// The rate of the lift-coefficient increment `increment` towards `command` (1/s):
     /// the first-order lag, rate-limited.
     #[inline]
@@ -235,6 +246,16 @@ mod tests {
             ..dlc
         };
         assert_eq!(never.flare(-0.1, 0.5, 9.0), -0.1);
+    }
+
+    /// The late abort's blend by hand: a command of −0.13 at a share of 0.5 is
+    /// −0.13 + 0.5·(0.15 + 0.13) = 0.01; 0 leaves it, 1 is full up.
+    #[test]
+    fn the_late_abort_blends_the_command_to_full_lift() {
+        let dlc = DirectLiftParameters::default();
+        assert_eq!(dlc.late_abort(-0.13, 0.0), -0.13);
+        assert!((dlc.late_abort(-0.13, 0.5) - 0.01).abs() < 1e-15);
+        assert!((dlc.late_abort(-0.13, 1.0) - 0.15).abs() < 1e-15);
     }
 
     #[test]

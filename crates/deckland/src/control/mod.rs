@@ -13,6 +13,7 @@ mod direct_lift;
 mod flight_path;
 mod guidance;
 pub mod heading_hold;
+mod late_abort;
 pub mod lateral;
 mod law;
 pub mod lineup;
@@ -31,6 +32,7 @@ pub use flight_path::{
     FlightPathGenerator, FlightPathParameters, PathReference,
 };
 pub use guidance::GuidanceParameters;
+pub use late_abort::LateAbortInputs;
 pub use law::{AxisLaw, LinearLaw};
 pub use loop_controller::{LoopController, LoopGains};
 pub use sink_rate::SinkRateControllerParameters;

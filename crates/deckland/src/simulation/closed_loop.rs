@@ -331,6 +331,12 @@ impl ClosedLoop {
                 Some(commands) => commands.thrust_n,
                 // A wave-off: full thrust of both engines (docs/model.md §9).
                 None if held.wave_off => aircraft.longitudinal().engines().max_total_thrust_n(),
+                // The late abort's thrust, blended in by its share.
+                None if outer.late_abort_thrust_share > 0.0 => {
+                    let law = self.speed.thrust_command_n(speed_error, speed_state[0]);
+                    let full = aircraft.longitudinal().engines().max_total_thrust_n();
+                    law + outer.late_abort_thrust_share * (full - law)
+                }
                 None => self.speed.thrust_command_n(speed_error, speed_state[0]),
             },
         );

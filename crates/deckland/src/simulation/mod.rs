@@ -40,7 +40,7 @@ pub use flight_computer::HeldCommands;
 pub use layout::{BlockStates, Slot, StateLayout};
 pub use outcome::{Divergence, EndReason, Event, LandingRules, Outcome, RunSummary, Touchdown};
 pub use outer_loops::approach_flight_path_angle;
-pub use outer_loops::{OuterLoops, WaveOffFlight};
+pub use outer_loops::{LateAbort, OuterLoops, WaveOffFlight};
 pub use recorder::{GlidePathStatistics, Recorder};
 pub use runner::{Simulation, SimulationBuilder, Stop};
 pub use setup::{PitchLawFactory, SetupError};

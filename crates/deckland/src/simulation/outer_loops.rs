@@ -5,11 +5,13 @@
 use super::taps::{LoopBreak, Taps};
 use crate::control::pitch::command_shaping::JerkLimitedStep;
 use crate::control::{
-    CommandRamp, DeckReference, FlightPathGenerator, LoopController, PathReference,
+    CommandRamp, DeckReference, FlightPathGenerator, LoopController, PathReference, WaveOffDecision,
 };
 use crate::environment::Wind;
 
 /// What produces the pitch command θ_ref.
+// One per simulation, read every step: the approach's loops stay inline (no indirection).
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone, PartialEq)]
 pub enum OuterLoops {
     /// θ_ref steps by `step_rad` at `step_time_s` from trim, or follows `shaped` from
@@ -41,6 +43,9 @@ pub enum OuterLoops {
         flight_path: FlightPathGenerator,
         /// How a wave-off is flown; `None` without wave-offs.
         wave_off: Option<WaveOffFlight>,
+        /// The late abort after the commit point (docs/landing-design.md), updated by the
+        /// guidance computer once per step.
+        late_abort: LateAbort,
         /// Guidance: height error → climb-rate command.
         guidance: LoopController,
         /// The sink-rate loop: climb-rate error → pitch command.
@@ -88,6 +93,66 @@ impl WaveOffFlight {
     }
 }
 
+/// The late abort (a staged decision after the wave-off's commit point,
+/// docs/landing-design.md): its share of the direct-lift (and thrust) command, moved
+/// towards 1 while engaged and back to 0 when released at `rate_per_s`, once per step,
+/// so that the command never steps; and the first decision that engaged it.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct LateAbort {
+    /// The share of full up direct lift in the command (–), 0 to 1.
+    pub share: f64,
+    /// Whether a criterion holds it engaged now.
+    pub engaged: bool,
+    /// Whether it blends the thrust command to full thrust too.
+    pub full_thrust: bool,
+    /// The rate at which the share moves (1/s).
+    pub rate_per_s: f64,
+    /// When it first engaged (s), and why.
+    pub first: Option<(f64, WaveOffDecision)>,
+}
+
+impl LateAbort {
+    /// A late abort that moves its share at `rate_per_s` (1/s), with full thrust if
+    /// `full_thrust`.
+    pub fn new(rate_per_s: f64, full_thrust: bool) -> Self {
+        Self {
+            rate_per_s,
+            full_thrust,
+            ..Self::default()
+        }
+    }
+
+    /// One step of `dt` (s) at `time_s`: engaged while a criterion calls it, by
+    /// `decision` (the first one is kept), released when none does (holding it to the
+    /// ramp once engaged gave back more boardings for the same ramp strikes,
+    /// docs/landing-design.md); the share moves towards its target by at most
+    /// `rate_per_s`·dt.
+    pub fn step(&mut self, time_s: f64, dt: f64, decision: Option<WaveOffDecision>) {
+        self.engaged = decision.is_some();
+        if let (None, Some(decision)) = (self.first, decision) {
+            self.first = Some((time_s, decision));
+        }
+        let target = if self.engaged { 1.0 } else { 0.0 };
+        let most = self.rate_per_s * dt;
+        self.share += (target - self.share).clamp(-most, most);
+    }
+
+    /// The first decision in words, as a run's reason gives a wave-off's: "late abort at
+    /// t = 23.10 s on ramp_strike_probability: probability of a ramp strike (%) 7.52
+    /// against the limit 5.00"; `None` if it never engaged.
+    pub fn description(&self) -> Option<String> {
+        self.first.map(|(time_s, decision)| {
+            format!(
+                "late abort at t = {time_s:.2} s on {}: {} {:.2} against the limit {:.2}",
+                decision.criterion.name(),
+                decision.criterion.quantity(),
+                decision.value,
+                decision.limit
+            )
+        })
+    }
+}
+
 /// The hook's kinematics and the aircraft's climb rate, as the outer loops read them.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct OuterLoopInputs {
@@ -128,6 +193,10 @@ pub(crate) struct OuterLoopOutputs {
     /// Whether a wave-off's floor raised the pitch command (the sink-rate integrator
     /// then holds).
     pub pitch_floored: bool,
+    /// The late abort's share of full up direct lift (–), 0 outside it.
+    pub late_abort_lift_share: f64,
+    /// The late abort's share of full thrust (–), 0 outside it or without its thrust.
+    pub late_abort_thrust_share: f64,
 }
 
 impl OuterLoops {
@@ -144,6 +213,7 @@ impl OuterLoops {
         let trim_theta = inputs.theta_trim_rad;
         let (mut reference_rate, mut reference_acceleration) = (0.0, 0.0);
         let mut pitch_floored = false;
+        let mut late_abort_share = (0.0, false);
         let (theta_ref_rad, climb_rate_command_mps, path, height_error_m, climb_rate_error_mps) =
             match self {
                 Self::PitchStep {
@@ -186,7 +256,9 @@ impl OuterLoops {
                     guidance,
                     sink_rate,
                     wave_off: flight,
+                    late_abort,
                 } => {
+                    late_abort_share = (late_abort.share, late_abort.full_thrust);
                     let deck = deck.expect("an approach always holds a deck reference");
                     let path = flight_path.reference(inputs.hook_x_m, inputs.hook_x_rate_mps, deck);
                     let height_error = path.height_m - inputs.hook_h_m;
@@ -231,6 +303,12 @@ impl OuterLoops {
             height_error_m,
             climb_rate_error_mps,
             pitch_floored,
+            late_abort_lift_share: late_abort_share.0,
+            late_abort_thrust_share: if late_abort_share.1 {
+                late_abort_share.0
+            } else {
+                0.0
+            },
         }
     }
 
@@ -285,6 +363,18 @@ impl OuterLoops {
         }
     }
 
+    /// A run's `reason` with the late abort's decision after it, if it engaged (a run
+    /// without a reason, a trap, keeps none: campaign files hold no reason for a trap).
+    pub(crate) fn with_late_abort(&self, reason: Option<String>) -> Option<String> {
+        let Self::Approach { late_abort, .. } = self else {
+            return reason;
+        };
+        match (reason, late_abort.description()) {
+            (Some(reason), Some(late)) => Some(format!("{reason}; {late}")),
+            (reason, _) => reason,
+        }
+    }
+
     /// Whether these loops fly an approach to the deck.
     pub fn is_approach(&self) -> bool {
         matches!(self, Self::Approach { .. })
@@ -308,4 +398,58 @@ pub fn approach_flight_path_angle(
         gamma = -(air_sink / airspeed_mps).clamp(-1.0, 1.0).asin();
     }
     gamma
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::control::WaveOffCriterion;
+
+    fn decision() -> WaveOffDecision {
+        WaveOffDecision {
+            criterion: WaveOffCriterion::RampStrikeProbability,
+            value: 7.5,
+            limit: 5.0,
+            predicted_ramp_clearance_m: 1.4,
+        }
+    }
+
+    /// At 5 per second on 1-ms steps the share rises by 0.005 a step: 0.5 after 100
+    /// steps, 1 (and no more) after 200; released, it falls at the same rate. The first
+    /// decision is kept and named.
+    #[test]
+    fn the_late_abort_blends_in_and_out_at_its_rate() {
+        let mut abort = LateAbort::new(5.0, false);
+        let mut largest_change = 0.0_f64;
+        let mut last = 0.0;
+        let mut at = |abort: &LateAbort, last: &mut f64| {
+            largest_change = largest_change.max((abort.share - *last).abs());
+            *last = abort.share;
+        };
+        for k in 0..100 {
+            abort.step(23.0 + f64::from(k) * 0.001, 0.001, Some(decision()));
+            at(&abort, &mut last);
+        }
+        assert!((abort.share - 0.5).abs() < 1e-12, "{}", abort.share);
+        for k in 100..300 {
+            abort.step(23.0 + f64::from(k) * 0.001, 0.001, Some(decision()));
+            at(&abort, &mut last);
+        }
+        assert_eq!(abort.share, 1.0);
+        for _ in 0..40 {
+            abort.step(24.0, 0.001, None);
+            at(&abort, &mut last);
+        }
+        assert!((abort.share - 0.8).abs() < 1e-12, "{}", abort.share);
+        assert!(largest_change <= 0.005 + 1e-12, "{largest_change}");
+        assert_eq!(abort.first.map(|(t, _)| t), Some(23.0));
+        assert_eq!(
+            abort.description().as_deref(),
+            Some(
+                "late abort at t = 23.00 s on ramp_strike_probability: probability of a \
+                 ramp strike (%) 7.50 against the limit 5.00"
+            )
+        );
+        assert_eq!(LateAbort::new(5.0, false).description(), None);
+    }
 }

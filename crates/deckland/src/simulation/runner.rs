@@ -387,7 +387,7 @@ impl Simulation {
             let summary = RunSummary {
                 outcome: reason.outcome(),
                 wire: reason.wire(),
-                reason: reason.description(),
+                reason: self.system.outer.with_late_abort(reason.description()),
                 end_time_s,
                 steps: self.step,
                 touchdown,

@@ -8,7 +8,7 @@ use super::blocks::{check_placement, Block, BlockPlacementError, BlockPosition, 
 use super::closed_loop::{ClosedLoop, LoopLayout, StepStreams};
 use super::deck_predictor::{BuiltDeckPredictor, DeckPredictor, DeckView};
 use super::flight_computer::FlightComputer;
-use super::outer_loops::{approach_flight_path_angle, OuterLoops, WaveOffFlight};
+use super::outer_loops::{approach_flight_path_angle, LateAbort, OuterLoops, WaveOffFlight};
 use crate::aircraft::six_dof::SixDofAircraft;
 use crate::aircraft::{
     linearize, trim, Aircraft, LinearModel, PlantModel, TrimError, TrimPoint, TrimRequest,
@@ -80,6 +80,10 @@ fn outer_loops(
                     min_alpha_rad: control.wave_off.min_alpha_deg.to_radians(),
                     ramp_aft_of_aim_point_m: scenario.environment.deck.ramp_aft_of_aim_point_m,
                 }),
+                late_abort: LateAbort::new(
+                    control.wave_off.late_abort_rate_per_s,
+                    control.wave_off.late_abort_full_thrust,
+                ),
                 guidance: control.guidance.controller(),
                 sink_rate: control.sink_rate.controller(),
             };

@@ -9,7 +9,8 @@ use super::deck_predictor::{DeckView, HookTrack};
 use super::outer_loops::OuterLoops;
 use crate::aircraft::AircraftState;
 use crate::control::{
-    DeckReference, FlightPathGenerator, WaveOffDecision, WaveOffInputs, WaveOffParameters,
+    DeckReference, FlightPathGenerator, LateAbortInputs, WaveOffDecision, WaveOffInputs,
+    WaveOffParameters,
 };
 use crate::environment::{DeckGeometry, ShipMotionState};
 
@@ -43,6 +44,7 @@ impl ClosedLoop {
         let OuterLoops::Approach { flight_path, .. } = &self.outer else {
             return (None, None);
         };
+        let flight_path = *flight_path;
         let (sin_t, cos_t) = aircraft.theta_rad.sin_cos();
         let (hook_x_m, hook_h_m) = self.hook.position_trig(aircraft, sin_t, cos_t);
         let (hook_x_rate_mps, hook_climb_rate_mps) =
@@ -56,7 +58,7 @@ impl ClosedLoop {
         let reference = self.deck_predictor.deck_reference(
             &view,
             self.layout.deck_predictor.of(x),
-            flight_path,
+            &flight_path,
             &track,
         );
         if waving_off {
@@ -68,8 +70,36 @@ impl ClosedLoop {
             x_rate_mps: hook_x_rate_mps,
             climb_rate_mps: hook_climb_rate_mps,
         };
-        let decision = assess(&self.wave_off, flight_path, &self.deck, &reference, &hook);
+        let inputs = wave_off_inputs(&self.wave_off, &flight_path, &self.deck, &reference, &hook);
+        let decision = inputs.and_then(|inputs| self.wave_off.decide(&inputs));
+        if decision.is_none() && self.wave_off.late_abort_enabled() {
+            let ramp_x_m = reference.mean_aim.x_m - self.deck.ramp_aft_of_aim_point_m;
+            let before_ramp = hook_x_m < ramp_x_m;
+            let late = inputs.and_then(|inputs| {
+                self.wave_off
+                    .late_abort(&late_abort_inputs(&inputs, before_ramp))
+            });
+            if let OuterLoops::Approach { late_abort, .. } = &mut self.outer {
+                late_abort.step(t, dt, late);
+            }
+        }
         (Some(reference), decision)
+    }
+}
+
+/// The late abort's inputs from the wave-off's: the same predicted clearance, its σ and
+/// the same predicted touchdown sink rate relative to the deck.
+fn late_abort_inputs(inputs: &WaveOffInputs, before_ramp: bool) -> LateAbortInputs {
+    let forecast = &inputs.forecast;
+    LateAbortInputs {
+        time_to_go_s: inputs.time_to_go_s,
+        before_ramp,
+        predicted_ramp_clearance_m: inputs.path_height_at_ramp_m
+            - inputs.glide_path_error_m
+            - forecast.ramp_height_m,
+        ramp_clearance_sigma_m: inputs.ramp_clearance_sigma_m,
+        predicted_touchdown_sink_rate_mps: -inputs.hook_climb_rate_mps
+            + forecast.landing_point_climb_rate_mps,
     }
 }
 
@@ -82,15 +112,16 @@ pub(crate) struct HookKinematics {
     pub climb_rate_mps: f64,
 }
 
-/// The decision for a hook at `hook` on the path of `flight_path` over the deck
-/// `reference` (which must carry a forecast: predictors without one never wave off).
-pub(crate) fn assess(
+/// What the wave-off decision looks at for a hook at `hook` on the path of
+/// `flight_path` over the deck `reference`; `None` without a wave-off or a forecast
+/// (predictors without one never wave off).
+fn wave_off_inputs(
     wave_off: &WaveOffParameters,
     flight_path: &FlightPathGenerator,
     deck: &DeckGeometry,
     reference: &DeckReference,
     hook: &HookKinematics,
-) -> Option<WaveOffDecision> {
+) -> Option<WaveOffInputs> {
     if !wave_off.enabled {
         return None;
     }
@@ -99,7 +130,7 @@ pub(crate) fn assess(
     // The path is a straight line: at the ramp (mean position) it stands
     // (ramp x − hook x)·tan Γ below its height over the hook.
     let ramp_x_m = reference.mean_aim.x_m - deck.ramp_aft_of_aim_point_m;
-    wave_off.decide(&WaveOffInputs {
+    Some(WaveOffInputs {
         time_to_go_s: path.time_to_go_s,
         glide_path_error_m: path.height_m - hook.h_m,
         glide_path_error_rate_mps: path.climb_rate_mps - hook.climb_rate_mps,

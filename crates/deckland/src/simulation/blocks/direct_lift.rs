@@ -1,6 +1,6 @@
 //! The direct-lift block: lift at constant attitude on the hook's height error to the
-//! path, the path's acceleration fed forward, and the flare on the deck forecast
-//! (docs/model.md §5.9).
+//! path, the path's acceleration fed forward, the flare on the deck forecast
+//! (docs/model.md §5.9) and the late abort's blend to full lift (docs/landing-design.md).
 
 use crate::aircraft::AircraftParameters;
 use crate::control::DirectLiftParameters;
@@ -42,13 +42,14 @@ pub(crate) fn command(
             let command = law.command(error_m, error_rate, feedforward, held.wave_off);
             // The flare on the deck forecast: the landing point's predicted climb rate at
             // touchdown less the hook's.
-            deck.forecast.map_or(command, |forecast| {
+            let command = deck.forecast.map_or(command, |forecast| {
                 law.flare(
                     command,
                     path.time_to_go_s,
                     forecast.landing_point_climb_rate_mps - hook_climb_rate_mps,
                 )
-            })
+            });
+            law.late_abort(command, outer.late_abort_lift_share)
         }
         _ => law.command(bus.glide_path_error_m, error_rate, 0.0, held.wave_off),
     }
