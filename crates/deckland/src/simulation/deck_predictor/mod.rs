@@ -26,9 +26,11 @@ pub mod estimator;
 pub mod filter_lead;
 pub mod oracle;
 mod raise;
+mod roll;
 mod uncertainty;
 
-pub(crate) use raise::capped_raise_share;
+pub(crate) use raise::{capped_raise_share, ramp_aware_anchor, ramp_clearance_sigma_m};
+pub use roll::SensedRoll;
 pub(crate) use uncertainty::UncertaintyHold;
 
 use std::fmt::Debug;
@@ -36,7 +38,6 @@ use std::fmt::Debug;
 use super::anchor_shaping::AnchorShaping;
 use crate::control::{
     DeckForecast, DeckMotionFilter, DeckPredictorKind, DeckReference, FlightPathGenerator,
-    FlightPathParameters,
 };
 use crate::environment::{
     DeckGeometry, EarthPoint, EarthVelocity, ShipMotion, ShipMotionEstimate, ShipMotionForecast,
@@ -66,53 +67,6 @@ pub struct DeckView<'a> {
     /// lie off the roll axis, so they rise and fall with it, which the heave-and-pitch
     /// forecast does not see (`None` in the 3-DOF approach).
     pub roll: Option<SensedRoll>,
-}
-
-/// The ship's latest sensed roll, and how much the landing point and the ramp rise per
-/// unit sin φ_s of it (docs/model.md §10.5).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SensedRoll {
-    /// The measurement (its roll and roll rate, and when it was taken).
-    pub measurement: crate::sensors::LateralShipMotionMeasurement,
-    /// The landing point's rise per unit sin φ_s (m): its distance to port of the roll
-    /// axis.
-    pub landing_point_rise_m: f64,
-    /// The ramp's (m).
-    pub ramp_rise_m: f64,
-}
-
-impl SensedRoll {
-    /// `forecast` with the landing point's and the ramp's heights and climb rates moved
-    /// by the roll forecast at the touchdown and the ramp crossing, `now_s` + the
-    /// horizons (`time_to_go_s`, and the ramp `ramp_aft_m` earlier at `closure_mps`).
-    pub fn add_to(
-        &self,
-        forecast: DeckForecast,
-        now_s: f64,
-        time_to_go_s: f64,
-        ramp_aft_m: f64,
-        closure_mps: f64,
-    ) -> DeckForecast {
-        use crate::simulation::lateral::forecast::roll_forecast;
-        let age_s = (now_s - self.measurement.time_s).max(0.0);
-        let ramp_time_s = if closure_mps > 0.0 {
-            (time_to_go_s - ramp_aft_m / closure_mps).max(0.0)
-        } else {
-            time_to_go_s
-        };
-        let (roll, roll_rate) = roll_forecast(&self.measurement, age_s + time_to_go_s.max(0.0));
-        let (ramp_roll, ramp_roll_rate) = roll_forecast(&self.measurement, age_s + ramp_time_s);
-        DeckForecast {
-            landing_point_height_m: forecast.landing_point_height_m
-                + self.landing_point_rise_m * roll.sin(),
-            landing_point_climb_rate_mps: forecast.landing_point_climb_rate_mps
-                + self.landing_point_rise_m * roll.cos() * roll_rate,
-            ramp_height_m: forecast.ramp_height_m + self.ramp_rise_m * ramp_roll.sin(),
-            ramp_climb_rate_mps: forecast.ramp_climb_rate_mps
-                + self.ramp_rise_m * ramp_roll.cos() * ramp_roll_rate,
-            ..forecast
-        }
-    }
 }
 
 /// Where the hook is, for the predictor.
@@ -507,49 +461,6 @@ pub(crate) fn forecast_deck(
         ramp_height_sigma_m,
         landing_point_climb_rate_sigma_mps,
     }
-}
-
-/// σ_c = √(σ_r² + σ_h² + (ṙ·σ_t)²) of the hook's clearance over the ramp (m), from the
-/// ramp's σ_r and climb rate ṙ in `forecast` (docs/model.md §5.7).
-pub(crate) fn ramp_clearance_sigma_m(
-    parameters: &FlightPathParameters,
-    forecast: &DeckForecast,
-) -> f64 {
-    let timing = forecast.ramp_climb_rate_mps * parameters.ramp_crossing_time_sigma_s;
-    (forecast.ramp_height_sigma_m.powi(2)
-        + parameters.hook_height_sigma_m.powi(2)
-        + timing * timing)
-        .sqrt()
-}
-
-/// The anchor height: the forecast landing point, raised where the ramp-aware path needs
-/// it so that the path crosses the predicted ramp with the clearance m above it:
-/// m = min(max(`ramp_clearance_margin_m`, z·σ_c), `max_ramp_clearance_m`), z = Φ⁻¹(1 − p) of
-/// `ramp_strike_probability_limit` (0 when off) and σ_c from [`ramp_clearance_sigma_m`].
-/// The path passes the ramp (ramp_aft_of_aim_point + touchdown correction)·tan Γ above
-/// its anchor.
-pub(crate) fn ramp_aware_anchor(
-    parameters: &FlightPathParameters,
-    flight_path: &FlightPathGenerator,
-    deck: &DeckGeometry,
-    forecast: &DeckForecast,
-) -> f64 {
-    if !parameters.ramp_aware {
-        return forecast.landing_point_height_m;
-    }
-    let rise_to_ramp_m = (deck.ramp_aft_of_aim_point_m + parameters.touchdown_correction_m)
-        * flight_path.tan_slope();
-    let z = flight_path.ramp_clearance_z();
-    let margin_m = if z > 0.0 {
-        parameters
-            .ramp_clearance_margin_m
-            .max(z * ramp_clearance_sigma_m(parameters, forecast))
-            .min(parameters.max_ramp_clearance_m)
-    } else {
-        parameters.ramp_clearance_margin_m
-    };
-    let floor_m = forecast.ramp_height_m + margin_m - rise_to_ramp_m;
-    forecast.landing_point_height_m.max(floor_m)
 }
 
 #[cfg(test)]

@@ -1,7 +1,7 @@
 //! The descent after the ramp: how much of the ramp-aware raise the glide path keeps
 //! as the hook closes on the aim point (docs/model.md §5.7).
 
-use crate::control::FlightPathParameters;
+use crate::control::{DeckForecast, FlightPathGenerator, FlightPathParameters};
 use crate::environment::DeckGeometry;
 
 /// The share of the ramp-aware raise the path keeps for a hook `range_m` before the
@@ -69,4 +69,47 @@ pub(crate) fn capped_raise_share(
     }
     let shed = limit / peak_sink_mps;
     (1.0 - shed * (1.0 - share), shed * rate)
+}
+
+/// σ_c = √(σ_r² + σ_h² + (ṙ·σ_t)²) of the hook's clearance over the ramp (m), from the
+/// ramp's σ_r and climb rate ṙ in `forecast` (docs/model.md §5.7).
+pub(crate) fn ramp_clearance_sigma_m(
+    parameters: &FlightPathParameters,
+    forecast: &DeckForecast,
+) -> f64 {
+    let timing = forecast.ramp_climb_rate_mps * parameters.ramp_crossing_time_sigma_s;
+    (forecast.ramp_height_sigma_m.powi(2)
+        + parameters.hook_height_sigma_m.powi(2)
+        + timing * timing)
+        .sqrt()
+}
+
+/// The anchor height: the forecast landing point, raised where the ramp-aware path needs
+/// it so that the path crosses the predicted ramp with the clearance m above it:
+/// m = min(max(`ramp_clearance_margin_m`, z·σ_c), `max_ramp_clearance_m`), z = Φ⁻¹(1 − p) of
+/// `ramp_strike_probability_limit` (0 when off) and σ_c from [`ramp_clearance_sigma_m`].
+/// The path passes the ramp (ramp_aft_of_aim_point + touchdown correction)·tan Γ above
+/// its anchor.
+pub(crate) fn ramp_aware_anchor(
+    parameters: &FlightPathParameters,
+    flight_path: &FlightPathGenerator,
+    deck: &DeckGeometry,
+    forecast: &DeckForecast,
+) -> f64 {
+    if !parameters.ramp_aware {
+        return forecast.landing_point_height_m;
+    }
+    let rise_to_ramp_m = (deck.ramp_aft_of_aim_point_m + parameters.touchdown_correction_m)
+        * flight_path.tan_slope();
+    let z = flight_path.ramp_clearance_z();
+    let margin_m = if z > 0.0 {
+        parameters
+            .ramp_clearance_margin_m
+            .max(z * ramp_clearance_sigma_m(parameters, forecast))
+            .min(parameters.max_ramp_clearance_m)
+    } else {
+        parameters.ramp_clearance_margin_m
+    };
+    let floor_m = forecast.ramp_height_m + margin_m - rise_to_ramp_m;
+    forecast.landing_point_height_m.max(floor_m)
 }
