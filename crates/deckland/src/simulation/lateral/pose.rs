@@ -5,7 +5,7 @@
 //! longitudinal deck geometry ([`DeckGeometry::aim_point`], the deck plane, the ramp)
 //! puts the aim point where the 3-D geometry does, and its y at the 3-D aim point's.
 
-use std::cell::Cell;
+use std::sync::Mutex;
 
 use super::LateralLoop;
 use crate::environment::{
@@ -40,11 +40,17 @@ pub(crate) struct DeckView3d {
 /// The last deck view [`LateralLoop::deck_view`] computed, with the bits of its time and
 /// states: the step's hold asks for the view at the step's start three times (the
 /// wind's sample, the guidance computer, the view held over the step), and it is
-/// computed once (the same result, to the bit).
-#[derive(Debug, Clone, Default)]
+/// computed once (the same result, to the bit). A mutex, uncontended (each loop is
+/// stepped by one thread at a time), keeps the loop `Sync`; a clone starts empty.
+#[derive(Debug, Default)]
 pub(crate) struct DeckViewMemo {
-    key: Cell<Option<ViewKey>>,
-    view: Cell<DeckView3d>,
+    last: Mutex<Option<(ViewKey, DeckView3d)>>,
+}
+
+impl Clone for DeckViewMemo {
+    fn clone(&self) -> Self {
+        Self::default()
+    }
 }
 
 /// The bits of the time and of the ship's heave-and-pitch and lateral states.
@@ -76,12 +82,16 @@ impl LateralLoop {
         time_s: f64,
     ) -> DeckView3d {
         let key = view_key(ship_state, lateral_state, time_s);
-        if self.view_memo.key.get() == Some(key) {
-            return self.view_memo.view.get();
+        let Ok(mut last) = self.view_memo.last.try_lock() else {
+            return self.compute_deck_view(ship, deck, ship_state, lateral_state, time_s);
+        };
+        if let Some((last_key, view)) = *last {
+            if last_key == key {
+                return view;
+            }
         }
         let view = self.compute_deck_view(ship, deck, ship_state, lateral_state, time_s);
-        self.view_memo.key.set(Some(key));
-        self.view_memo.view.set(view);
+        *last = Some((key, view));
         view
     }
 
