@@ -99,25 +99,34 @@ pub struct Distribution {
     pub max: f64,
 }
 
+/// The finite `values` sorted, their mean and their sample standard deviation (n − 1;
+/// 0 for one value); `None` if there are none.
+pub(crate) fn sorted_mean_and_deviation(
+    values: impl IntoIterator<Item = f64>,
+) -> Option<(Vec<f64>, f64, f64)> {
+    let mut sorted: Vec<f64> = values.into_iter().filter(|v| v.is_finite()).collect();
+    if sorted.is_empty() {
+        return None;
+    }
+    sorted.sort_by(f64::total_cmp);
+    let n = sorted.len() as f64;
+    let mean = sorted.iter().sum::<f64>() / n;
+    let variance = if sorted.len() > 1 {
+        sorted.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0)
+    } else {
+        0.0
+    };
+    Some((sorted, mean, variance.sqrt()))
+}
+
 impl Distribution {
     /// The distribution of the finite `values`; `None` if there are none.
     pub fn of(values: impl IntoIterator<Item = f64>) -> Option<Self> {
-        let mut sorted: Vec<f64> = values.into_iter().filter(|v| v.is_finite()).collect();
-        if sorted.is_empty() {
-            return None;
-        }
-        sorted.sort_by(f64::total_cmp);
-        let n = sorted.len() as f64;
-        let mean = sorted.iter().sum::<f64>() / n;
-        let variance = if sorted.len() > 1 {
-            sorted.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0)
-        } else {
-            0.0
-        };
+        let (sorted, mean, standard_deviation) = sorted_mean_and_deviation(values)?;
         Some(Self {
             count: sorted.len() as u64,
             mean,
-            standard_deviation: variance.sqrt(),
+            standard_deviation,
             min: sorted[0],
             p5: percentile(&sorted, 5.0),
             p50: percentile(&sorted, 50.0),

@@ -13,7 +13,7 @@
 use serde::Serialize;
 
 use super::record::RunRecord;
-use super::statistics::{percentile, CONFIDENCE_Z_95};
+use super::statistics::{percentile, sorted_mean_and_deviation, CONFIDENCE_Z_95};
 use crate::metrics::{PositionDeviation, TrapSheet, TrapSheetPosition};
 
 /// The deviations of one position, in column order: (name after the position's stem,
@@ -148,19 +148,8 @@ pub struct DeviationStatistics {
 impl DeviationStatistics {
     /// The statistics of the finite `values`; `None` if there are none.
     pub fn of(values: impl IntoIterator<Item = f64>) -> Option<Self> {
-        let mut sorted: Vec<f64> = values.into_iter().filter(|v| v.is_finite()).collect();
-        if sorted.is_empty() {
-            return None;
-        }
-        sorted.sort_by(f64::total_cmp);
+        let (sorted, mean, standard_deviation) = sorted_mean_and_deviation(values)?;
         let n = sorted.len() as f64;
-        let mean = sorted.iter().sum::<f64>() / n;
-        let variance = if sorted.len() > 1 {
-            sorted.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0)
-        } else {
-            0.0
-        };
-        let standard_deviation = variance.sqrt();
         let half = CONFIDENCE_Z_95 * standard_deviation / n.sqrt();
         Some(Self {
             count: sorted.len() as u64,
