@@ -172,8 +172,12 @@ def campaign(
     Run ``i`` flies seed SplitMix64(``seed``, i) with the scenario's dispersions drawn
     from it; ``seed`` defaults to the scenario's. ``threads`` defaults to the number of
     CPUs; the result does not depend on it. ``compare=True`` flies the same runs under
-    O-PD and PID. The rows are those of ``runs.csv``, bit for bit. ``runs`` is 1 to
-    :data:`MAX_RUNS` (100 000, as ``deckland campaign --runs``); beyond, ``ValueError``.
+    O-PD and PID. The rows are those of ``runs.csv``, bit for bit. A 3-D approach
+    (``aircraft.model = "6dof"``, ``approach.three_dimensional``) adds, as the CLI does,
+    the lateral touchdown and the trap sheet's columns after the others (``off_centre``
+    1 or 0, NaN where the run did not touch down) and their statistics under the
+    summary's ``lateral`` and ``trap_sheet``. ``runs`` is 1 to :data:`MAX_RUNS` (100 000,
+    as ``deckland campaign --runs``); beyond, ``ValueError``.
     """
     columns, summary = _deckland.campaign(scenario, runs, seed, threads, compare)
     return Campaign(runs=table(columns), summary=summary)

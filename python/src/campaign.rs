@@ -16,8 +16,10 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 use deckland::monte_carlo::{
-    merge_shards, parse_runs_csv, run_campaign, CampaignResult, CampaignSpec, CampaignSummary,
-    RunRecord, RunRow, Shard, ShardIdentity, ShardRows, DEFAULT_TARGET_RATE, SHARD_SCHEME,
+    flies_three_dimensional_approach, lateral_statistics, merge_shards, parse_runs_csv,
+    run_campaign, runs_csv_text, CampaignResult, CampaignSpec, CampaignSummary, LateralRow,
+    LateralStatistics, RunRecord, RunRow, Shard, ShardIdentity, ShardRows, TrapSheetStatistics,
+    DEFAULT_TARGET_RATE, SHARD_SCHEME,
 };
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -41,6 +43,56 @@ struct CampaignReport<'a> {
     shard: String,
     shard_scheme: &'static str,
     merged_from: Vec<String>,
+    /// A 3-D approach campaign's lateral statistics, as in the CLI's `summary.json`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    lateral: Option<LateralStatistics>,
+    /// A 3-D approach campaign's trap-sheet statistics, as in the CLI's `summary.json`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    trap_sheet: Option<TrapSheetStatistics>,
+}
+
+/// The rows of `runs.csv` as columns: `rows`, then for a 3-D approach campaign each
+/// row's lateral and trap-sheet columns ([`LateralRow`]), as the CLI writes them; and the
+/// statistics of those 3-D columns for the summary.
+#[allow(clippy::type_complexity)]
+fn table_of(
+    rows: &[RunRow<'_>],
+    lateral: Option<&[LateralRow]>,
+) -> PyResult<(
+    Columns,
+    Option<Columns>,
+    Option<LateralStatistics>,
+    Option<TrapSheetStatistics>,
+)> {
+    let mut table = Columns::with_capacity(rows.len());
+    for row in rows {
+        table.push(row).map_err(value_error)?;
+    }
+    let Some(lateral) = lateral else {
+        return Ok((table, None, None, None));
+    };
+    let mut columns = Columns::with_capacity(lateral.len());
+    for row in lateral {
+        columns.push(row).map_err(value_error)?;
+    }
+    let (statistics, trap_sheet) = lateral_statistics(lateral);
+    Ok((table, Some(columns), statistics, Some(trap_sheet)))
+}
+
+/// `table` and the 3-D columns after it as one dict of numpy arrays, in `runs.csv`'s
+/// column order.
+fn into_dict<'py>(
+    py: Python<'py>,
+    table: Columns,
+    lateral: Option<Columns>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let dict = crate::columns::into_dict(table, py)?;
+    if let Some(lateral) = lateral {
+        for (name, column) in crate::columns::into_dict(lateral, py)?.iter() {
+            dict.set_item(name, column)?;
+        }
+    }
+    Ok(dict)
 }
 
 /// The most approaches of one campaign (per controller), and so the most shards: the
@@ -90,12 +142,13 @@ pub fn campaign<'py>(
     let result = fly(py, &spec, threads)?;
     let elapsed_s = started.elapsed().as_secs_f64();
 
-    let mut table = Columns::with_capacity(result.records.len());
-    for record in &result.records {
-        table
-            .push(&RunRow::new(record, &result.controller_labels))
-            .map_err(value_error)?;
-    }
+    let rows: Vec<RunRow> = result
+        .records
+        .iter()
+        .map(|record| RunRow::new(record, &result.controller_labels))
+        .collect();
+    let lateral_rows = lateral_rows(&spec, &result);
+    let (table, lateral_table, lateral, trap_sheet) = table_of(&rows, lateral_rows.as_deref())?;
     let summary = CampaignSummary::of_result(&result, seed, DEFAULT_TARGET_RATE);
     let report = CampaignReport {
         scenario_file: &scenario.name,
@@ -106,11 +159,19 @@ pub fn campaign<'py>(
         shard: Shard::WHOLE.to_string(),
         shard_scheme: SHARD_SCHEME,
         merged_from: Vec::new(),
+        lateral,
+        trap_sheet,
     };
     Ok((
-        crate::columns::into_dict(table, py)?,
+        into_dict(py, table, lateral_table)?,
         to_python(py, &report)?,
     ))
+}
+
+/// A 3-D approach campaign's [`LateralRow`] of each record; `None` for a 3-DOF campaign.
+fn lateral_rows(spec: &CampaignSpec, result: &CampaignResult) -> Option<Vec<LateralRow>> {
+    flies_three_dimensional_approach(&spec.scenario)
+        .then(|| result.records.iter().map(LateralRow::of).collect())
 }
 
 /// Flies `spec` on `threads` workers with the GIL released; Ctrl-C stops the workers
@@ -188,13 +249,13 @@ pub fn campaign_shard(
     let started = Instant::now();
     let result = fly(py, &spec, threads)?;
     let elapsed_s = started.elapsed().as_secs_f64();
-    let mut csv = csv::Writer::from_writer(Vec::new());
-    for record in &result.records {
-        csv.serialize(RunRow::new(record, &result.controller_labels))
-            .map_err(value_error)?;
-    }
+    let rows: Vec<RunRow> = result
+        .records
+        .iter()
+        .map(|record| RunRow::new(record, &result.controller_labels))
+        .collect();
     let runs_csv =
-        String::from_utf8(csv.into_inner().map_err(value_error)?).map_err(value_error)?;
+        runs_csv_text(&rows, lateral_rows(&spec, &result).as_deref()).map_err(value_error)?;
     let payload = ShardPayload {
         scenario_name: scenario.name.clone(),
         scenario_toml: toml::to_string(&spec.scenario).map_err(value_error)?,
@@ -275,10 +336,8 @@ pub fn merge_shards_text<'py>(
         ))
     })?
     .map_err(|e| value_error(format!("cannot merge: {e}")))?;
-    let mut table = Columns::with_capacity(merged.rows.len());
-    for row in &merged.rows {
-        table.push(row).map_err(value_error)?;
-    }
+    let (table, lateral_table, lateral, trap_sheet) =
+        table_of(&merged.rows, merged.lateral.as_deref())?;
     let report = CampaignReport {
         scenario_file: &scenario_name,
         summary: &summary,
@@ -288,9 +347,11 @@ pub fn merge_shards_text<'py>(
         shard: Shard::WHOLE.to_string(),
         shard_scheme: SHARD_SCHEME,
         merged_from: merged.sources.clone(),
+        lateral,
+        trap_sheet,
     };
     Ok((
-        crate::columns::into_dict(table, py)?,
+        into_dict(py, table, lateral_table)?,
         to_python(py, &report)?,
     ))
 }

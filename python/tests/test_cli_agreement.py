@@ -168,6 +168,29 @@ def test_campaign_is_deckland_campaign(cli, tmp_path, threads):
     assert result.statistics == expected_summary["controllers"]
 
 
+def test_a_three_d_campaign_is_deckland_campaign_with_its_lateral_columns(cli, tmp_path):
+    # A 3-D approach campaign's runs.csv adds the lateral touchdown and the trap sheet
+    # after the columns of every campaign, and summary.json their statistics.
+    shutil.copy(SCENARIOS / "crosswind.toml", tmp_path / "crosswind.toml")
+    out = tmp_path / "campaign"
+    expected_summary = cli.json(
+        ["campaign", "crosswind.toml", "--runs", "3", "--seed", "5", "--threads", "2", "--json", "--out", str(out)],
+        cwd=tmp_path,
+    )
+    scenario = deckland.Scenario.from_file(tmp_path / "crosswind.toml")
+    result = deckland.campaign(scenario, 3, seed=5, threads=2)
+    expected = read_csv_columns(out / "runs.csv")
+    assert "touchdown_lateral_offset_m" in expected and "off_centre" in expected
+    assert list(result.runs.keys()) == list(expected.keys())
+    for name, column in expected.items():
+        assert_column_equals(name, column, result.runs[name])
+    assert {"lateral", "trap_sheet"} <= set(expected_summary)
+    timing = {"elapsed_s", "runs_per_s", "threads"}
+    assert set(result.summary) == set(expected_summary)
+    for key in set(expected_summary) - timing:
+        assert result.summary[key] == expected_summary[key], key
+
+
 def test_the_default_scenario_is_the_cli_default(cli):
     # `deckland scenario --print-default` is the commented template of the default.
     text = cli.run(["scenario", "--print-default"]).stdout

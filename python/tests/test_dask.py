@@ -44,6 +44,17 @@ def test_a_local_cluster_gives_the_single_machine_campaign(client):
     assert summary["partial"] is False
 
 
+def test_a_three_d_campaign_merged_from_shards_keeps_its_lateral_columns(client):
+    scenario = deckland.Scenario.from_file(SCENARIOS / "crosswind.toml")
+    expected = deckland.campaign(scenario, 4, seed=3, threads=2)
+    runs, summary = deckland.dask.campaign(client, scenario, 4, seed=3, shards=2)
+    assert "ramp_lineup_error_deg" in runs.columns and "trap_ar_lineup_mean_m" in runs.columns
+    pd.testing.assert_frame_equal(runs, expected.runs, check_exact=True)
+    assert {"lateral", "trap_sheet"} <= set(summary)
+    for key in set(summary) - EXECUTION:
+        assert summary[key] == expected.summary[key], key
+
+
 def test_the_default_shards_are_the_workers_and_the_seed_the_scenarios(client):
     scenario = deckland.Scenario.from_file(SCENARIOS / "heavy-sea.toml")
     result = deckland.dask.campaign(client, scenario, 5)

@@ -6,12 +6,15 @@
 //! whole of a 3-D run's row beyond the columns of every campaign ([`LateralRow`]). A
 //! 3-DOF campaign has none of them.
 
+use serde::ser::{SerializeStruct, Serializer};
 use serde::Serialize;
 
 use super::record::RunRecord;
 use super::row::RowError;
 use super::statistics::{Distribution, Proportion};
-use super::trap_sheet::{trap_sheet_run_values, TrapSheetRunValues, TRAP_SHEET_RUN_COLUMNS};
+use super::trap_sheet::{
+    trap_sheet_run_values, TrapSheetRunValues, TrapSheetStatistics, TRAP_SHEET_RUN_COLUMNS,
+};
 use crate::aircraft::PlantModel;
 use crate::scenario::{Mission, Scenario};
 use crate::simulation::lateral::touchdown::{
@@ -68,6 +71,42 @@ pub fn lateral_row_columns() -> impl Iterator<Item = &'static str> {
     LATERAL_RUN_COLUMNS
         .into_iter()
         .chain(TRAP_SHEET_RUN_COLUMNS)
+}
+
+/// A row's 3-D columns as one flat struct named by [`lateral_row_columns`]: what
+/// `runs.csv` holds after the columns of every campaign, and what the Python front end
+/// takes apart into named columns.
+impl Serialize for LateralRow {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let (offset, drift, bank, heading, ramp, off_centre) = self.touchdown;
+        let mut row = serializer.serialize_struct(
+            "LateralRow",
+            LATERAL_RUN_COLUMNS.len() + TRAP_SHEET_RUN_COLUMNS.len(),
+        )?;
+        let [c0, c1, c2, c3, c4, c5] = LATERAL_RUN_COLUMNS;
+        row.serialize_field(c0, &offset)?;
+        row.serialize_field(c1, &drift)?;
+        row.serialize_field(c2, &bank)?;
+        row.serialize_field(c3, &heading)?;
+        row.serialize_field(c4, &ramp)?;
+        row.serialize_field(c5, &off_centre)?;
+        for (column, value) in TRAP_SHEET_RUN_COLUMNS.into_iter().zip(&self.trap_sheet) {
+            row.serialize_field(column, value)?;
+        }
+        row.end()
+    }
+}
+
+/// The statistics of a 3-D campaign's lateral columns, one [`LateralRow`] per run: the
+/// lateral touchdowns' (`None` when no run touched down) and the trap sheets'. The same
+/// from the records of a campaign flown whole as from its merged shards' rows.
+pub fn lateral_statistics(rows: &[LateralRow]) -> (Option<LateralStatistics>, TrapSheetStatistics) {
+    let touchdowns: Vec<LateralRunValues> = rows.iter().map(|r| r.touchdown).collect();
+    let sheets: Vec<TrapSheetRunValues> = rows.iter().map(|r| r.trap_sheet).collect();
+    (
+        LateralStatistics::of_rows(&touchdowns),
+        TrapSheetStatistics::of_rows(&sheets),
+    )
 }
 
 /// Most a lateral distance in a row can be (m): the longest approach's length.

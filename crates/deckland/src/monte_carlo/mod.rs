@@ -54,8 +54,8 @@ pub use campaign::{
     SharedPitchLaw,
 };
 pub use lateral::{
-    flies_three_dimensional_approach, lateral_row_columns, lateral_run_values, LateralRow,
-    LateralRunValues, LateralStatistics, LATERAL_RUN_COLUMNS, RAMP_LINEUP_PASS_DEG,
+    flies_three_dimensional_approach, lateral_row_columns, lateral_run_values, lateral_statistics,
+    LateralRow, LateralRunValues, LateralStatistics, LATERAL_RUN_COLUMNS, RAMP_LINEUP_PASS_DEG,
 };
 pub use limits::{
     check_runs, LimitError, MAX_CONTROLLERS, MAX_CONTROLLER_LABEL_BYTES, MAX_RUNS,
@@ -70,7 +70,7 @@ pub use rare_events::{
 pub use record::{RunFailure, RunRecord};
 pub use row::{RowError, RunRow, CAMPAIGN_OUTCOMES, RANGES, RUN_COLUMNS};
 pub use run_scenario::dispersed_run_scenario;
-pub use runs_csv::{parse_runs_csv, ParsedRuns};
+pub use runs_csv::{parse_runs_csv, runs_csv_text, ParsedRuns};
 pub use seeds::{run_seed, splitmix64_mix, SPLITMIX64_GAMMA};
 pub use shard::{Shard, ShardError, SHARD_SCHEME};
 pub use statistics::{

@@ -17,6 +17,48 @@ pub struct ParsedRuns {
     pub lateral: Option<Vec<LateralRow>>,
 }
 
+/// The text of a campaign's `runs.csv`: the header and one line per row (`rows`, and for
+/// a 3-D approach campaign each row's [`LateralRow`] after it, in the same order), what
+/// the CLI writes and a shard carries; [`parse_runs_csv`] reads it back exactly.
+pub fn runs_csv_text(
+    rows: &[RunRow<'_>],
+    lateral: Option<&[LateralRow]>,
+) -> Result<String, csv::Error> {
+    let Some(lateral) = lateral else {
+        let mut writer = csv::Writer::from_writer(Vec::new());
+        for row in rows {
+            writer.serialize(row)?;
+        }
+        return text_of(writer);
+    };
+    let mut header = csv::Writer::from_writer(Vec::new());
+    header.write_record(RUN_COLUMNS.into_iter().chain(lateral_row_columns()))?;
+    let mut text = text_of(header)?;
+    for (row, values) in rows.iter().zip(lateral) {
+        let mut line = csv::WriterBuilder::new()
+            .has_headers(false)
+            .from_writer(Vec::new());
+        line.serialize(row)?;
+        let base = text_of(line)?;
+        let mut line = csv::WriterBuilder::new()
+            .has_headers(false)
+            .from_writer(Vec::new());
+        line.serialize(values)?;
+        text.push_str(base.trim_end());
+        text.push(',');
+        text.push_str(&text_of(line)?);
+    }
+    Ok(text)
+}
+
+/// What a CSV writer into memory wrote, as text (the fields are numbers and UTF-8 text).
+fn text_of(writer: csv::Writer<Vec<u8>>) -> Result<String, csv::Error> {
+    let bytes = writer
+        .into_inner()
+        .map_err(|e| csv::Error::from(std::io::Error::other(e.to_string())))?;
+    String::from_utf8(bytes).map_err(|e| csv::Error::from(std::io::Error::other(e.to_string())))
+}
+
 /// Reads the rows of a shard's `runs.csv` text (`location` names it in messages):
 /// exactly the columns of [`RUN_COLUMNS`] in order — for a 3-D approach campaign followed
 /// by those of [`LateralRow`] ([`lateral_row_columns`]) — a last line that ends (a file

@@ -3,8 +3,8 @@
 //! report's writer (`report`) and the campaign's figures (`plot::campaign`) read it.
 
 use deckland::monte_carlo::{
-    CampaignStatistics, CampaignSummary, LateralRow, LateralRunValues, LateralStatistics,
-    Proportion, RunRow, TrapSheetRunValues, TrapSheetStatistics,
+    CampaignStatistics, CampaignSummary, LateralRow, LateralStatistics, Proportion, RunRow,
+    TrapSheetStatistics,
 };
 use deckland::scenario::Scenario;
 use serde::Serialize;
@@ -47,15 +47,10 @@ pub struct CampaignReport<'a> {
 pub fn lateral_statistics(
     lateral_rows: Option<&[LateralRow]>,
 ) -> (Option<LateralStatistics>, Option<TrapSheetStatistics>) {
-    let Some(rows) = lateral_rows else {
-        return (None, None);
-    };
-    let touchdowns: Vec<LateralRunValues> = rows.iter().map(|r| r.touchdown).collect();
-    let sheets: Vec<TrapSheetRunValues> = rows.iter().map(|r| r.trap_sheet).collect();
-    (
-        LateralStatistics::of_rows(&touchdowns),
-        Some(TrapSheetStatistics::of_rows(&sheets)),
-    )
+    lateral_rows.map_or((None, None), |rows| {
+        let (lateral, trap_sheet) = deckland::monte_carlo::lateral_statistics(rows);
+        (lateral, Some(trap_sheet))
+    })
 }
 
 /// A campaign folder's content before it is written.

@@ -11,8 +11,8 @@ use crate::output::OutputDir;
 use crate::plot::campaign::figures;
 use anyhow::Result;
 use deckland::monte_carlo::{
-    lateral_row_columns, CampaignStatistics, CampaignSummary, Distribution, LateralRow, Proportion,
-    RunRow, RUN_COLUMNS, UPPER_BOUND_CONFIDENCE,
+    runs_csv_text, CampaignStatistics, CampaignSummary, Distribution, Proportion,
+    UPPER_BOUND_CONFIDENCE,
 };
 
 /// Classes seen at most this many times get their upper bound spelt out in the report.
@@ -22,16 +22,10 @@ const RARE_COUNT: u64 = 3;
 /// `runs.parquet` (when a run finished), `summary.json`, the plots and `report.html`.
 pub fn write_folder(folder: &CampaignFolder, output: &OutputDir) -> Result<()> {
     output.write_bytes("scenario.toml", folder.scenario_toml.as_bytes())?;
-    output.write_with("runs.csv", |path| match &folder.lateral_rows {
-        None => {
-            let mut csv = csv::Writer::from_path(path)?;
-            for row in folder.rows {
-                csv.serialize(row)?;
-            }
-            csv.flush()?;
-            Ok(())
-        }
-        Some(lateral) => write_lateral_runs_csv(path, folder.rows, lateral),
+    output.write_with("runs.csv", |path| {
+        let text = runs_csv_text(folder.rows, folder.lateral_rows.as_deref())?;
+        std::fs::write(path, text)?;
+        Ok(())
     })?;
     if !folder.rows.is_empty() {
         output.write_with("runs.parquet", |path| {
@@ -589,37 +583,6 @@ pub fn rare_event_lines(summary: &CampaignSummary) -> Vec<String> {
         1.0 - target.confidence,
     ));
     lines
-}
-
-/// A 3-D campaign's `runs.csv`: the columns of every campaign, then those of
-/// [`LateralRow`] (the lateral touchdown's, then the trap sheet's), each part written as
-/// the csv writer writes it.
-fn write_lateral_runs_csv(
-    path: &std::path::Path,
-    rows: &[RunRow],
-    lateral: &[LateralRow],
-) -> Result<()> {
-    let line = |write: &dyn Fn(&mut csv::Writer<Vec<u8>>) -> csv::Result<()>| -> Result<String> {
-        let mut writer = csv::WriterBuilder::new()
-            .has_headers(false)
-            .from_writer(Vec::new());
-        write(&mut writer)?;
-        let bytes = writer.into_inner().map_err(|e| anyhow::anyhow!("{e}"))?;
-        Ok(String::from_utf8(bytes)?.trim_end().to_owned())
-    };
-    let mut text = format!(
-        "{},{}\n",
-        RUN_COLUMNS.join(","),
-        lateral_row_columns().collect::<Vec<_>>().join(",")
-    );
-    for (row, values) in rows.iter().zip(lateral) {
-        let base = line(&|w| w.serialize(row))?;
-        let touchdown = line(&|w| w.serialize(values.touchdown))?;
-        let trap_sheet = line(&|w| w.serialize(values.trap_sheet))?;
-        text.push_str(&format!("{base},{touchdown},{trap_sheet}\n"));
-    }
-    std::fs::write(path, text)?;
-    Ok(())
 }
 
 /// The 3-D campaign's lateral statistics in `report.html`: the limits' shares with their
