@@ -1,6 +1,7 @@
 //! Arrival timing: a small, bounded change of the approach airspeed that moves the
 //! touchdown towards a predicted lull of the deck's motion (docs/landing-design.md,
-//! "Timing the touchdown to a lull").
+//! "Timing the touchdown to a lull"). Off by default (`max_speed_change_mps = 0`):
+//! measured, it lowers bolters but not the catastrophes (docs/no-oracle-results.md).
 //!
 //! The ship's heave and pitch are narrow-band (their shaping filters peak near
 //! 0.4 rad/s), so the deck's vertical velocity at the landing point passes through zero
