@@ -150,3 +150,61 @@ fn the_late_abort_engages_without_a_step() {
     let (step_like, _) = late_abort_share(1, 100.0);
     assert!(step_like > 0.05, "the fastest blend moved by {step_like}");
 }
+
+/// The change of the airspeed reference by arrival timing (docs/landing-design.md), step
+/// by step, for the default scenario at `seed` with the block on at 1 m/s: its largest
+/// move in one 1-ms step, its largest magnitude, and the share of the steps it moved.
+fn arrival_timing_change(seed: u64) -> (f64, f64, f64) {
+    use deckland::simulation::Stop;
+    let mut scenario = Scenario {
+        seed,
+        ..Scenario::default()
+    };
+    scenario.control.arrival_timing.max_speed_change_mps = 1.0;
+    let mut simulation = Simulation::new(&scenario).unwrap();
+    let mut recorder = deckland::recording::SummaryRecorder;
+    let change = |simulation: &Simulation| {
+        simulation
+            .system()
+            .arrival_timing_speed_change_mps()
+            .unwrap()
+    };
+    let (mut last, mut largest_step, mut largest) = (0.0, 0.0_f64, 0.0_f64);
+    let (mut steps, mut moving) = (0_u32, 0_u32);
+    while !matches!(simulation.step(&mut recorder), Stop::Ended(_)) {
+        let now = change(&simulation);
+        largest_step = largest_step.max((now - last).abs());
+        largest = largest.max(now.abs());
+        steps += 1;
+        moving += u32::from(now != last);
+        last = now;
+    }
+    (largest_step, largest, f64::from(moving) / f64::from(steps))
+}
+
+/// Arrival timing moves the speed loop's reference by at most its 1 m/s, at its
+/// 0.5 m/s per second: 0.0005 m/s per 1-ms step at most, never by a step. It does move
+/// (it is not idle in these approaches).
+#[test]
+fn arrival_timing_changes_the_airspeed_reference_without_a_step() {
+    for seed in [1, 3] {
+        let (largest_step, largest, moving) = arrival_timing_change(seed);
+        assert!(
+            largest_step <= 0.0005 + 1e-12,
+            "seed {seed}: step {largest_step}"
+        );
+        assert!(largest <= 1.0 + 1e-12, "seed {seed}: change {largest}");
+        assert!(largest > 0.2, "seed {seed}: it barely moved ({largest})");
+        assert!(moving > 0.05, "seed {seed}: moved in {moving} of the steps");
+    }
+    // Off (the default key 0, and the paper's set): no block at all.
+    let simulation = Simulation::new(&Scenario {
+        seed: 1,
+        ..Scenario::paper()
+    })
+    .unwrap();
+    assert!(simulation
+        .system()
+        .arrival_timing_speed_change_mps()
+        .is_none());
+}

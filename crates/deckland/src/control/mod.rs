@@ -7,6 +7,7 @@
 //! The laws of an axis share one interface, [`AxisLaw`], and describe themselves to the
 //! design code in one data form, [`LinearLaw`]; the pitch laws are its first instances.
 
+mod arrival_timing;
 mod command_ramp;
 pub mod design;
 mod direct_lift;
@@ -25,6 +26,10 @@ mod speed;
 mod wave_off;
 pub mod wave_off_lateral;
 
+pub use arrival_timing::{
+    ArrivalTiming, ArrivalTimingInputs, ArrivalTimingParameters, CANDIDATE_SPACING_S,
+    REPLAN_PERIOD_S,
+};
 pub use command_ramp::CommandRamp;
 pub use direct_lift::DirectLiftParameters;
 pub use flight_path::{

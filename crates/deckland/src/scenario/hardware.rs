@@ -23,8 +23,8 @@ use serde::{Deserialize, Serialize};
 use super::{Mission, PitchCommand, Scenario};
 use crate::control::pitch::LawTuning;
 use crate::control::{
-    DirectLiftParameters, FlightPathParameters, SinkRateControllerParameters,
-    SpeedControllerParameters, WaveOffParameters,
+    ArrivalTimingParameters, DirectLiftParameters, FlightPathParameters,
+    SinkRateControllerParameters, SpeedControllerParameters, WaveOffParameters,
 };
 use crate::environment::WindParameters;
 
@@ -90,6 +90,7 @@ impl Scenario {
         scenario.control.flight_path = FlightPathParameters::paper();
         scenario.control.wave_off = WaveOffParameters::paper();
         scenario.control.direct_lift = DirectLiftParameters::paper();
+        scenario.control.arrival_timing = ArrivalTimingParameters::paper();
         scenario
     }
 

@@ -11,8 +11,8 @@ use crate::aircraft::PlantModel;
 use crate::control::lateral::{LateralChannel, LateralLawParameters};
 use crate::control::pitch::PitchControllerParameters;
 use crate::control::{
-    DirectLiftParameters, FlightPathParameters, GuidanceParameters, SinkRateControllerParameters,
-    SpeedControllerParameters, WaveOffParameters,
+    ArrivalTimingParameters, DirectLiftParameters, FlightPathParameters, GuidanceParameters,
+    SinkRateControllerParameters, SpeedControllerParameters, WaveOffParameters,
 };
 use crate::environment::{DeckGeometry, ShipMotionParameters, WindParameters};
 use crate::parameters::{Bounds, ParameterError};
@@ -99,6 +99,8 @@ pub struct ControlSection {
     pub wave_off: WaveOffParameters,
     /// Direct lift control (docs/model.md §5.9).
     pub direct_lift: DirectLiftParameters,
+    /// Arrival timing to a lull of the deck's motion (docs/landing-design.md).
+    pub arrival_timing: ArrivalTimingParameters,
 }
 
 impl Default for ControlSection {
@@ -115,6 +117,7 @@ impl Default for ControlSection {
             flight_path: FlightPathParameters::default(),
             wave_off: WaveOffParameters::default(),
             direct_lift: DirectLiftParameters::default(),
+            arrival_timing: ArrivalTimingParameters::default(),
         }
     }
 }
@@ -133,7 +136,8 @@ impl ControlSection {
         self.guidance.validate()?;
         self.flight_path.validate()?;
         self.wave_off.validate()?;
-        self.direct_lift.validate()
+        self.direct_lift.validate()?;
+        self.arrival_timing.validate()
     }
 }
 

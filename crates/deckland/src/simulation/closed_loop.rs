@@ -7,6 +7,7 @@
 //! once per step by [`ClosedLoop::hold`] and passed to [`ClosedLoop::evaluate`]
 //! explicitly ([`HeldInputs`]), which is a pure function of time, state and held inputs.
 
+use super::blocks::arrival_timing::ArrivalTimingBlock;
 use super::blocks::plant::BuiltPlant;
 use super::blocks::{direct_lift, plant, wake_feedforward, BlockPosition, PlacedBlock};
 use super::deck_predictor::BuiltDeckPredictor;
@@ -59,6 +60,8 @@ pub struct ClosedLoop {
     pub(crate) user_blocks: Vec<PlacedBlock>,
     /// The 3-D approach's parts (docs/model.md §10.1); `None` outside it.
     pub(crate) lateral: Option<LateralLoop>,
+    /// The arrival-timing block, when on (docs/landing-design.md).
+    pub(crate) arrival_timing: Option<ArrivalTimingBlock>,
 }
 
 impl ClosedLoop {

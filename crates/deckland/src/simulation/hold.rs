@@ -30,6 +30,7 @@ impl ClosedLoop {
             .wind(t, pose.distance_aft_of_pitch_centre_m(aircraft.x_m));
         let (deck, decision) =
             self.guidance_computer_step(t, x, &aircraft, &ship_state, dt, waving_off);
+        self.arrival_timing_step(t, dt, &aircraft, deck.as_ref(), waving_off);
         let lateral = self.hold_lateral(t, x, streams, dt, waving_off || decision.is_some(), &wind);
         let decision = decision.or(lateral.as_ref().and_then(|step| step.decision));
         let wave_off_decided = decision.map(|decision| (t, decision));

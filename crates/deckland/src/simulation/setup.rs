@@ -3,6 +3,7 @@
 
 use std::sync::Arc;
 
+use super::blocks::arrival_timing::ArrivalTimingBlock;
 use super::blocks::plant::BuiltPlant;
 use super::blocks::{check_placement, Block, BlockPlacementError, BlockPosition, PlacedBlock};
 use super::closed_loop::{ClosedLoop, LoopLayout, StepStreams};
@@ -480,6 +481,11 @@ pub(crate) fn build(scenario: &Scenario, user: UserParts<'_>) -> Result<Setup, S
         direct_lift,
         user_blocks,
         lateral,
+        arrival_timing: ArrivalTimingBlock::new(
+            scenario.control.arrival_timing,
+            airspeed,
+            env.ship_sensing.latency_s,
+        ),
     };
     Ok(Setup {
         system,

@@ -26,6 +26,7 @@
 //! evaluations, in [`super::ClosedLoop::hold`]; what they decide reaches the blocks as
 //! held inputs ([`super::HeldInputs`]) and the run loop as events.
 
+pub(crate) mod arrival_timing;
 pub(crate) mod direct_lift;
 pub(crate) mod plant;
 pub(crate) mod wake_feedforward;
