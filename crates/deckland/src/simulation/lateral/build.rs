@@ -176,6 +176,7 @@ pub(crate) fn build(
         read: (trim.phi_rad, trim.sideslip_rad),
         view_memo: Default::default(),
         step_view: None,
+        forecaster: forecast::CentrelineForecaster::new(deck),
     };
     Ok(ThreeDimensional {
         lateral,

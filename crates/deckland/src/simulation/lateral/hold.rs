@@ -3,7 +3,7 @@
 //! the lineup compensation's station, the bank, sideslip and heading measurements, the
 //! heading hold's weight, and the lateral wave-off criteria.
 
-use super::forecast::{compensation_station, lateral_centreline_forecast_m, oscillator_forecast};
+use super::forecast::{compensation_station, oscillator_forecast};
 use super::HeldLateral;
 use crate::aircraft::six_dof::SixDofAircraft;
 use crate::aircraft::Plant;
@@ -74,9 +74,12 @@ impl ClosedLoop {
             lateral.closure_mps,
             lateral.lineup.compensation_station_aft_m,
         );
-        let forecast_m = lateral.last_measurement.map_or(0.0, |m| {
-            lateral_centreline_forecast_m(&self.deck, &m, t, horizon_s, aft_m)
-        });
+        let forecast_m = match lateral.last_measurement {
+            Some(m) => lateral
+                .forecaster
+                .forecast_m(&self.deck, &m, t, horizon_s, aft_m),
+            None => 0.0,
+        };
         let bank_noise_rad = lateral.draw_bank_noise(t, &mut lateral_streams.bank);
         let sideslip_noise_rad = lateral.draw_sideslip_noise(&mut lateral_streams.sideslip);
         let heading_noise_rad = lateral.draw_bank_noise(t, &mut lateral_streams.heading);

@@ -119,6 +119,9 @@ pub(crate) struct LateralLoop {
     /// stages at its rates ([`pose::DeckView3d::at`]); `None` before the first step.
     /// Kept here rather than in the held inputs, which every step copies.
     pub step_view: Option<pose::DeckView3d>,
+    /// The lateral forecast of the lineup compensation's station, with the deck's
+    /// constants evaluated once.
+    pub forecaster: forecast::CentrelineForecaster,
 }
 
 /// The random streams of the 3-D approach, drawn from step by step.

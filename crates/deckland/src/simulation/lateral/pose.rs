@@ -81,18 +81,7 @@ impl LateralLoop {
         lateral_state: &LateralShipMotionState,
         time_s: f64,
     ) -> DeckView3d {
-        let key = view_key(ship_state, lateral_state, time_s);
-        let Ok(mut last) = self.view_memo.last.try_lock() else {
-            return self.compute_deck_view(ship, deck, ship_state, lateral_state, time_s);
-        };
-        if let Some((last_key, view)) = *last {
-            if last_key == key {
-                return view;
-            }
-        }
-        let view = self.compute_deck_view(ship, deck, ship_state, lateral_state, time_s);
-        *last = Some((key, view));
-        view
+        self.read_deck_view(ship, deck, ship_state, lateral_state, time_s, |view| *view)
     }
 
     /// The equivalent longitudinal pose and its rate of [`LateralLoop::deck_view`] (what
@@ -105,8 +94,37 @@ impl LateralLoop {
         lateral_state: &LateralShipMotionState,
         time_s: f64,
     ) -> (ShipPose, ShipPoseRate) {
-        let view = self.deck_view(ship, deck, ship_state, lateral_state, time_s);
-        (view.longitudinal, view.longitudinal_rate)
+        self.read_deck_view(ship, deck, ship_state, lateral_state, time_s, |view| {
+            (view.longitudinal, view.longitudinal_rate)
+        })
+    }
+
+    /// `read` of [`LateralLoop::deck_view`], from the memo if it holds the view of these
+    /// states and time (copying out only what `read` takes), else computed and memoised.
+    #[inline]
+    fn read_deck_view<R>(
+        &self,
+        ship: &ShipMotion,
+        deck: &DeckGeometry,
+        ship_state: &ShipMotionState,
+        lateral_state: &LateralShipMotionState,
+        time_s: f64,
+        read: impl FnOnce(&DeckView3d) -> R,
+    ) -> R {
+        let key = view_key(ship_state, lateral_state, time_s);
+        let Ok(mut last) = self.view_memo.last.try_lock() else {
+            return read(&self.compute_deck_view(ship, deck, ship_state, lateral_state, time_s));
+        };
+        match &mut *last {
+            Some((last_key, view)) if *last_key == key => read(view),
+            slot => {
+                let (_, view) = slot.insert((
+                    key,
+                    self.compute_deck_view(ship, deck, ship_state, lateral_state, time_s),
+                ));
+                read(view)
+            }
+        }
     }
 
     /// The ship's pose and its rate at `time_s`: [`DeckGeometry::steaming_pose`]
@@ -210,7 +228,7 @@ impl DeckView3d {
     /// ½·a·τ² ≈ 2·10⁻⁷ m at τ = 1 ms for a deck acceleration of 0.4 m/s², and the
     /// heading's, ½·ψ̈·τ², far below 10⁻⁹ rad (the ship's motion is slow, its
     /// frequencies below 1 rad/s). At the view's own time it is the view, to the bit.
-    #[inline]
+    #[inline(always)]
     pub fn at(&self, time_s: f64) -> DeckView3d {
         let tau = time_s - self.time_s;
         if tau == 0.0 {
