@@ -122,6 +122,11 @@ pub(crate) struct LateralLoop {
     /// The lateral forecast of the lineup compensation's station, with the deck's
     /// constants evaluated once.
     pub forecaster: forecast::CentrelineForecaster,
+    /// With a flight computer, the lateral guidance's frames (`hold`).
+    pub guidance_frames: Option<hold::GuidanceFrames>,
+    /// With a flight computer, its frame period (s): the ship's view is computed at each
+    /// frame's start and carried over the frame ([`LateralLoop::deck_view`]).
+    pub view_frame_period_s: Option<f64>,
 }
 
 /// The random streams of the 3-D approach, drawn from step by step.
