@@ -80,7 +80,9 @@ mod trim;
 pub use dynamics::{
     BodyRates, OpenLoopSixDof, SixDofAirData, SixDofAircraft, SixDofCommands, SixDofInputs,
 };
-pub use kinematics::{body_to_earth, earth_to_body, euler_rates, EulerTrig};
+pub use kinematics::{
+    body_to_earth, earth_to_body, euler_rates, series_sin_cos, EulerTrig, SERIES_LIMIT_RAD,
+};
 pub use lateral_aerodynamics::{lateral_coefficients, LateralCoefficients, LateralDerivatives};
 pub use linearize::{
     linearize_six_dof, DutchRoll, LateralModes, RealMode, SixDofLinearModel, LATERAL_INPUT_NAMES,
