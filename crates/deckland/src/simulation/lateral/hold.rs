@@ -78,8 +78,6 @@ impl ClosedLoop {
         else {
             return None;
         };
-        let state = SixDofAircraft::state_at(x, self.layout.aircraft.offset);
-        let (kinematic, kinematics) = aircraft.kinematics(&self.hook, state);
         let ship_state = LateralShipMotionState::from_array(&self.layout.ship_lateral.array(x));
         let deck_view = lateral.deck_view(
             &self.ship,
@@ -108,6 +106,8 @@ impl ClosedLoop {
                 });
             }
         }
+        let state = SixDofAircraft::state_at(x, self.layout.aircraft.offset);
+        let (kinematic, kinematics) = aircraft.kinematics(&self.hook, state);
         // Time to go from the range to the mean aim point at the closing speed.
         let mean_pose = self.ship.pose(
             &crate::environment::ShipMotionState::from_array(&self.layout.ship.array(x)),
