@@ -2,6 +2,7 @@
 //! 2nd ed., §2.5, flat earth, body axes, Euler angles), and the plant built on the
 //! longitudinal model. See the module docs of `six_dof` for the equations.
 
+use super::air_data::SixDofAirData;
 use super::kinematics::EulerTrig;
 use super::lateral_aerodynamics::lateral_coefficients;
 use super::parameters::{LateralParameters, SurfaceActuatorParameters};
@@ -36,19 +37,6 @@ pub struct SixDofInputs {
     pub rudder_rad: f64,
 }
 
-/// Air data from the air-relative body velocity (u_a, v_a, w_a).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SixDofAirData {
-    /// True airspeed V_T (m/s).
-    pub airspeed_mps: f64,
-    /// Angle of attack α = atan(w_a/u_a) (rad).
-    pub alpha_rad: f64,
-    /// Sideslip β = asin(v_a/V_T) (rad), positive with the relative wind from the right.
-    pub beta_rad: f64,
-    /// Dynamic pressure q̄ = ½ρV_T² (Pa).
-    pub dynamic_pressure_pa: f64,
-}
-
 /// The rigid-body rates of a body state under given airframe inputs: (u̇, v̇, ẇ) in
 /// m/s² and (ṗ, q̇, ṙ) in rad/s².
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -71,7 +59,7 @@ pub struct SixDofAircraft {
     /// factor's sines and cosines from [`super::series_sin_cos`], and the sideslip from
     /// atan of v/√(u² + w²) (the 3-D approach), rather than the library's sin, cos and
     /// atan2.
-    series_trig: bool,
+    pub(super) series_trig: bool,
 }
 
 impl Default for SixDofAircraft {
@@ -148,51 +136,6 @@ impl SixDofAircraft {
     /// Rudder actuator.
     pub fn rudder(&self) -> &ElevatorActuator {
         &self.rudder
-    }
-
-    /// The air-relative velocity in body axes for inertial body velocity (u, v, w), Euler
-    /// angles (φ, θ, ψ) and an earth-axis wind: (u, v, w) − R(φ, θ, ψ)·W.
-    #[inline]
-    pub fn air_velocity(&self, velocity: [f64; 3], euler: [f64; 3], wind: &Wind) -> [f64; 3] {
-        self.air_velocity_trig(velocity, &EulerTrig::new(euler), wind)
-    }
-
-    /// [`SixDofAircraft::air_velocity`] with the Euler angles' sines and cosines.
-    #[inline]
-    pub fn air_velocity_trig(&self, velocity: [f64; 3], trig: &EulerTrig, wind: &Wind) -> [f64; 3] {
-        let wind_body = trig.earth_to_body([wind.x_mps, wind.y_mps, wind.z_mps]);
-        [
-            velocity[0] - wind_body[0],
-            velocity[1] - wind_body[1],
-            velocity[2] - wind_body[2],
-        ]
-    }
-
-    /// Air data of an air-relative body velocity (m/s).
-    #[inline]
-    pub fn air_data(&self, air_velocity: [f64; 3]) -> SixDofAirData {
-        let [ua, va, wa] = air_velocity;
-        let airspeed = (ua * ua + va * va + wa * wa).sqrt();
-        let in_symmetry_plane = (ua * ua + wa * wa).sqrt();
-        SixDofAirData {
-            airspeed_mps: airspeed,
-            alpha_rad: if ua > 0.0 {
-                (wa / ua).atan()
-            } else {
-                wa.atan2(ua)
-            },
-            // With series trig (the 3-D approach), atan of the quotient (in_symmetry_plane
-            // > 0): within an ulp of atan2, at half its cost.
-            beta_rad: if self.series_trig && in_symmetry_plane > 0.0 {
-                (va / in_symmetry_plane).atan()
-            } else {
-                va.atan2(in_symmetry_plane)
-            },
-            dynamic_pressure_pa: 0.5
-                * self.longitudinal.parameters().air_density_kg_m3
-                * airspeed
-                * airspeed,
-        }
     }
 
     /// Rigid-body rates for inertial body velocity (m/s), body rates (p, q, r) (rad/s),

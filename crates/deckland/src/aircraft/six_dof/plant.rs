@@ -7,7 +7,8 @@
 //! factor. With the lateral states at rest it flies the longitudinal plant's trajectory
 //! (`tests/six_dof_closed_loop.rs`).
 
-use super::dynamics::{SixDofAirData, SixDofAircraft, SixDofCommands};
+use super::air_data::SixDofAirData;
+use super::dynamics::{SixDofAircraft, SixDofCommands};
 use super::kinematics::EulerTrig;
 use super::state::SixDofState;
 use crate::aircraft::plant::{

@@ -27,6 +27,8 @@ use crate::environment::{
 };
 use crate::sensors::LateralShipMotionMeasurement;
 
+pub use super::free_response::FreeResponse;
+
 /// Natural frequency of the dominant mode of 1/D(s), s² + 0.08s + 0.16 (rad/s).
 pub const DOMINANT_MODE_FREQUENCY_RADPS: f64 = 0.4;
 /// Damping ratio of that mode (–): 0.08/(2·0.4).
@@ -41,51 +43,6 @@ pub fn oscillator_forecast(x0: f64, rate0: f64, omega: f64, zeta: f64, tau: f64)
 /// e^(−ζωτ)·[ẋ₀·cos ω_d τ − (ζω·(ẋ₀ + ζωx₀)/ω_d + ω_d·x₀)·sin ω_d τ].
 pub fn oscillator_forecast_rate(x0: f64, rate0: f64, omega: f64, zeta: f64, tau: f64) -> f64 {
     FreeResponse::new(omega, zeta, tau).rate(x0, rate0)
-}
-
-/// A damped oscillator's (ω, ζ < 1) free response after τ for any initial condition: the
-/// decay e^(−ζωτ) and sin, cos ω_d τ, evaluated once for the value and the rate of
-/// several channels of the same mode and horizon (the same operations as evaluating
-/// them for each, so the same results to the bit).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct FreeResponse {
-    /// ζω (1/s).
-    decay_rate: f64,
-    /// ω_d = ω√(1 − ζ²) (rad/s).
-    damped: f64,
-    /// sin ω_d τ, cos ω_d τ.
-    sin_cos: (f64, f64),
-    /// e^(−ζωτ).
-    decay: f64,
-}
-
-impl FreeResponse {
-    /// The response of the mode (ω rad/s, ζ) after `tau` s.
-    #[inline]
-    pub fn new(omega: f64, zeta: f64, tau: f64) -> Self {
-        let damped = omega * (1.0 - zeta * zeta).sqrt();
-        Self {
-            decay_rate: zeta * omega,
-            damped,
-            sin_cos: (damped * tau).sin_cos(),
-            decay: (-zeta * omega * tau).exp(),
-        }
-    }
-
-    /// x(τ) from (x₀, ẋ₀): [`oscillator_forecast`].
-    #[inline]
-    pub fn value(&self, x0: f64, rate0: f64) -> f64 {
-        let (sin, cos) = self.sin_cos;
-        self.decay * (x0 * cos + (rate0 + self.decay_rate * x0) / self.damped * sin)
-    }
-
-    /// ẋ(τ) from (x₀, ẋ₀): [`oscillator_forecast_rate`].
-    #[inline]
-    pub fn rate(&self, x0: f64, rate0: f64) -> f64 {
-        let (sin, cos) = self.sin_cos;
-        let b = (rate0 + self.decay_rate * x0) / self.damped;
-        self.decay * (rate0 * cos - (self.decay_rate * b + self.damped * x0) * sin)
-    }
 }
 
 /// The forecast roll and roll rate (rad, rad/s) of the ship `tau` s after `measurement`

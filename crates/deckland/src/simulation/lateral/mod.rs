@@ -26,6 +26,7 @@
 mod build;
 mod evaluate;
 pub mod forecast;
+mod free_response;
 mod hold;
 pub(crate) mod pose;
 mod signals;
