@@ -1,7 +1,7 @@
 //! One full adverse approach: 1 ms RK4, every disturbance, O-PD, summary recording only;
 //! with the 3-DOF aircraft (the default), with the 6-DOF (`[aircraft] model = "6dof"`),
 //! and the 3-D approach of `scenarios/crosswind.toml` (6-DOF, angled deck, moving ship,
-//! moderate sea, 5 m/s crosswind).
+//! moderate sea, 5 m/s crosswind), with its 80 Hz flight computer and without one.
 
 #![allow(missing_docs)] // criterion_group! generates undocumented items
 
@@ -54,6 +54,20 @@ fn approach(c: &mut Criterion) {
                 .run(&mut SummaryRecorder)
         })
     });
+    // The same approach without a flight computer: the lateral guidance and the ship's
+    // view at every step rather than at the 80 Hz frames (issue 27's speed).
+    let mut every_step = crosswind;
+    every_step.control.flight_computer_rate_hz = None;
+    group.bench_function(
+        "3-D approach (crosswind.toml), no flight computer, summary only",
+        |b| {
+            b.iter(|| {
+                Simulation::new(black_box(&every_step))
+                    .expect("valid")
+                    .run(&mut SummaryRecorder)
+            })
+        },
+    );
     group.bench_function("setup only (trim, linearise, build)", |b| {
         b.iter(|| Simulation::new(black_box(&scenario)).expect("valid"))
     });

@@ -384,12 +384,15 @@ pub(crate) fn build(scenario: &Scenario, user: UserParts<'_>) -> Result<Setup, S
     // on the bearing, where its trim is the longitudinal one.
     let plant = match section.model {
         PlantModel::ThreeDof => BuiltPlant::ThreeDof(aircraft),
-        PlantModel::SixDof => BuiltPlant::SixDof(SixDofAircraft::new(
-            aircraft,
-            section.lateral,
-            section.aileron_actuator,
-            section.rudder_actuator,
-        )?),
+        PlantModel::SixDof => BuiltPlant::SixDof(
+            SixDofAircraft::new(
+                aircraft,
+                section.lateral,
+                section.aileron_actuator,
+                section.rudder_actuator,
+            )?
+            .with_series_trig(super::lateral::flies_three_dimensional(scenario, true)),
+        ),
     };
     let mut layout = LoopLayout::new(
         plant.state_names(),

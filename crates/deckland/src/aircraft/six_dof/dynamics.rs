@@ -2,6 +2,7 @@
 //! 2nd ed., §2.5, flat earth, body axes, Euler angles), and the plant built on the
 //! longitudinal model. See the module docs of `six_dof` for the equations.
 
+use super::air_data::SixDofAirData;
 use super::kinematics::EulerTrig;
 use super::lateral_aerodynamics::lateral_coefficients;
 use super::parameters::{LateralParameters, SurfaceActuatorParameters};
@@ -36,19 +37,6 @@ pub struct SixDofInputs {
     pub rudder_rad: f64,
 }
 
-/// Air data from the air-relative body velocity (u_a, v_a, w_a).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SixDofAirData {
-    /// True airspeed V_T (m/s).
-    pub airspeed_mps: f64,
-    /// Angle of attack α = atan(w_a/u_a) (rad).
-    pub alpha_rad: f64,
-    /// Sideslip β = asin(v_a/V_T) (rad), positive with the relative wind from the right.
-    pub beta_rad: f64,
-    /// Dynamic pressure q̄ = ½ρV_T² (Pa).
-    pub dynamic_pressure_pa: f64,
-}
-
 /// The rigid-body rates of a body state under given airframe inputs: (u̇, v̇, ẇ) in
 /// m/s² and (ṗ, q̇, ṙ) in rad/s².
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -67,6 +55,11 @@ pub struct SixDofAircraft {
     lateral: LateralParameters,
     aileron: ElevatorActuator,
     rudder: ElevatorActuator,
+    /// Whether the closed loop's evaluations take the Euler angles' and the sideslip
+    /// factor's sines and cosines from [`super::series_sin_cos`], and the sideslip from
+    /// atan of v/√(u² + w²) (the 3-D approach), rather than the library's sin, cos and
+    /// atan2.
+    pub(super) series_trig: bool,
 }
 
 impl Default for SixDofAircraft {
@@ -100,7 +93,29 @@ impl SixDofAircraft {
             lateral,
             aileron: aileron.build(Self::AILERON_SECTION)?,
             rudder: rudder.build(Self::RUDDER_SECTION)?,
+            series_trig: false,
         })
+    }
+
+    /// This aircraft with the closed loop's sines and cosines by series (`true`, the 3-D
+    /// approach: within an ulp of the library's, about a third of the cost) or by the
+    /// library (`false`, the default).
+    pub fn with_series_trig(self, series_trig: bool) -> Self {
+        Self {
+            series_trig,
+            ..self
+        }
+    }
+
+    /// The sines and cosines of the Euler angles (φ, θ, ψ) in the closed loop's
+    /// evaluations ([`SixDofAircraft::with_series_trig`]).
+    #[inline(always)]
+    pub fn euler_trig(&self, euler: [f64; 3]) -> EulerTrig {
+        if self.series_trig {
+            EulerTrig::by_series(euler)
+        } else {
+            EulerTrig::new(euler)
+        }
     }
 
     /// The longitudinal plant whose aerodynamics, engines and stabilator this one uses.
@@ -121,45 +136,6 @@ impl SixDofAircraft {
     /// Rudder actuator.
     pub fn rudder(&self) -> &ElevatorActuator {
         &self.rudder
-    }
-
-    /// The air-relative velocity in body axes for inertial body velocity (u, v, w), Euler
-    /// angles (φ, θ, ψ) and an earth-axis wind: (u, v, w) − R(φ, θ, ψ)·W.
-    #[inline]
-    pub fn air_velocity(&self, velocity: [f64; 3], euler: [f64; 3], wind: &Wind) -> [f64; 3] {
-        self.air_velocity_trig(velocity, &EulerTrig::new(euler), wind)
-    }
-
-    /// [`SixDofAircraft::air_velocity`] with the Euler angles' sines and cosines.
-    #[inline]
-    pub fn air_velocity_trig(&self, velocity: [f64; 3], trig: &EulerTrig, wind: &Wind) -> [f64; 3] {
-        let wind_body = trig.earth_to_body([wind.x_mps, wind.y_mps, wind.z_mps]);
-        [
-            velocity[0] - wind_body[0],
-            velocity[1] - wind_body[1],
-            velocity[2] - wind_body[2],
-        ]
-    }
-
-    /// Air data of an air-relative body velocity (m/s).
-    #[inline]
-    pub fn air_data(&self, air_velocity: [f64; 3]) -> SixDofAirData {
-        let [ua, va, wa] = air_velocity;
-        let airspeed = (ua * ua + va * va + wa * wa).sqrt();
-        let in_symmetry_plane = (ua * ua + wa * wa).sqrt();
-        SixDofAirData {
-            airspeed_mps: airspeed,
-            alpha_rad: if ua > 0.0 {
-                (wa / ua).atan()
-            } else {
-                wa.atan2(ua)
-            },
-            beta_rad: va.atan2(in_symmetry_plane),
-            dynamic_pressure_pa: 0.5
-                * self.longitudinal.parameters().air_density_kg_m3
-                * airspeed
-                * airspeed,
-        }
     }
 
     /// Rigid-body rates for inertial body velocity (m/s), body rates (p, q, r) (rad/s),
@@ -221,7 +197,11 @@ impl SixDofAircraft {
             config,
         );
         // The source's sideslip factors; both are exactly 1 at β = 0.
-        let lift_factor = (2.0 * beta / 3.0).cos();
+        let lift_factor = if self.series_trig {
+            super::series_sin_cos(2.0 * beta / 3.0).1
+        } else {
+            (2.0 * beta / 3.0).cos()
+        };
         let drag_factor = cos_b;
         let lift_coefficient = c.lift * lift_factor;
         let drag_coefficient = c.drag * drag_factor;

@@ -67,6 +67,7 @@
 //!   82 °/s (docs/six-dof.md).
 //! - Constant mass, flat non-rotating earth, constant air density (as the 3-DOF model).
 
+mod air_data;
 mod dynamics;
 mod kinematics;
 mod lateral_aerodynamics;
@@ -77,10 +78,11 @@ mod report;
 mod state;
 mod trim;
 
-pub use dynamics::{
-    BodyRates, OpenLoopSixDof, SixDofAirData, SixDofAircraft, SixDofCommands, SixDofInputs,
+pub use air_data::SixDofAirData;
+pub use dynamics::{BodyRates, OpenLoopSixDof, SixDofAircraft, SixDofCommands, SixDofInputs};
+pub use kinematics::{
+    body_to_earth, earth_to_body, euler_rates, series_sin_cos, EulerTrig, SERIES_LIMIT_RAD,
 };
-pub use kinematics::{body_to_earth, earth_to_body, euler_rates, EulerTrig};
 pub use lateral_aerodynamics::{lateral_coefficients, LateralCoefficients, LateralDerivatives};
 pub use linearize::{
     linearize_six_dof, DutchRoll, LateralModes, RealMode, SixDofLinearModel, LATERAL_INPUT_NAMES,

@@ -7,7 +7,8 @@
 //! factor. With the lateral states at rest it flies the longitudinal plant's trajectory
 //! (`tests/six_dof_closed_loop.rs`).
 
-use super::dynamics::{SixDofAirData, SixDofAircraft, SixDofCommands};
+use super::air_data::SixDofAirData;
+use super::dynamics::{SixDofAircraft, SixDofCommands};
 use super::kinematics::EulerTrig;
 use super::state::SixDofState;
 use crate::aircraft::plant::{
@@ -107,7 +108,7 @@ impl Plant for SixDofAircraft {
         hook: &HookGeometry,
         state: SixDofState,
     ) -> (SixDofKinematic, PlantKinematics) {
-        let trig = EulerTrig::new([state.phi_rad, state.theta_rad, state.psi_rad]);
+        let trig = self.euler_trig([state.phi_rad, state.theta_rad, state.psi_rad]);
         let rates = [state.p_radps, state.q_radps, state.r_radps];
         let [x_rate, y_rate, z_rate] = trig.body_to_earth([state.u_mps, state.v_mps, state.w_mps]);
         // The hook's offset from the CG in body axes (x forward, z down) and its velocity

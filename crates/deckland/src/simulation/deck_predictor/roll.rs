@@ -2,6 +2,7 @@
 //! (docs/model.md §10.3): the landing point and the ramp lie off the roll axis, so they
 //! rise and fall with it, which the heave-and-pitch forecast does not see.
 
+use crate::aircraft::six_dof::series_sin_cos;
 use crate::control::DeckForecast;
 
 /// The ship's latest sensed roll, and how much the landing point and the ramp rise per
@@ -38,14 +39,17 @@ impl SensedRoll {
         };
         let (roll, roll_rate) = roll_forecast(&self.measurement, age_s + time_to_go_s.max(0.0));
         let (ramp_roll, ramp_roll_rate) = roll_forecast(&self.measurement, age_s + ramp_time_s);
+        // The ship's roll is small: its sine and cosine by series, within an ulp.
+        let (sin_roll, cos_roll) = series_sin_cos(roll);
+        let (sin_ramp_roll, cos_ramp_roll) = series_sin_cos(ramp_roll);
         DeckForecast {
             landing_point_height_m: forecast.landing_point_height_m
-                + self.landing_point_rise_m * roll.sin(),
+                + self.landing_point_rise_m * sin_roll,
             landing_point_climb_rate_mps: forecast.landing_point_climb_rate_mps
-                + self.landing_point_rise_m * roll.cos() * roll_rate,
-            ramp_height_m: forecast.ramp_height_m + self.ramp_rise_m * ramp_roll.sin(),
+                + self.landing_point_rise_m * cos_roll * roll_rate,
+            ramp_height_m: forecast.ramp_height_m + self.ramp_rise_m * sin_ramp_roll,
             ramp_climb_rate_mps: forecast.ramp_climb_rate_mps
-                + self.ramp_rise_m * ramp_roll.cos() * ramp_roll_rate,
+                + self.ramp_rise_m * cos_ramp_roll * ramp_roll_rate,
             ..forecast
         }
     }

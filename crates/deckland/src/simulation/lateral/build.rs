@@ -176,6 +176,15 @@ pub(crate) fn build(
         read: (trim.phi_rad, trim.sideslip_rad),
         view_memo: Default::default(),
         step_view: None,
+        forecaster: forecast::CentrelineForecaster::new(deck),
+        guidance_frames: scenario
+            .control
+            .flight_computer_rate_hz
+            .map(super::hold::GuidanceFrames::new),
+        view_frame_period_s: scenario
+            .control
+            .flight_computer_rate_hz
+            .map(|rate_hz| 1.0 / rate_hz),
     };
     Ok(ThreeDimensional {
         lateral,
@@ -210,7 +219,11 @@ pub(crate) fn test_loop(deck: &DeckGeometry, ship: &crate::environment::ShipMoti
         &RandomStreams::new(1),
     )
     .expect("the default 3-D approach builds");
-    built.lateral
+    // The views of the states asked for, not carried over a flight computer's frame.
+    LateralLoop {
+        view_frame_period_s: None,
+        ..built.lateral
+    }
 }
 
 /// Builds the 3-D approach's parts when `scenario` flies it with `plant`, and lays out

@@ -19,7 +19,7 @@ impl LateralLoop {
     /// time at its rates ([`DeckView3d::at`]), exact at the step's start; without it,
     /// it is computed.
     #[allow(clippy::too_many_arguments)]
-    #[inline]
+    #[inline(always)]
     pub(crate) fn ship_outputs(
         &self,
         ship: &ShipMotion,
@@ -56,7 +56,7 @@ impl LateralLoop {
     /// and the roll and yaw laws' surface commands (the frame's, with a flight computer),
     /// each through its tap.
     #[allow(clippy::too_many_arguments)]
-    #[inline]
+    #[inline(always)]
     pub(crate) fn lineup_and_laws<T: Taps>(
         &self,
         view: &DeckView3d,
@@ -112,7 +112,7 @@ impl LateralLoop {
     }
 
     /// The state rates of the roll, yaw and sway filters and of the two laws.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn derivative<T: Taps>(
         &self,
         layout: &LoopLayout,
@@ -137,7 +137,7 @@ impl LateralLoop {
 }
 
 /// The lateral signals the laws read from the bus.
-#[inline]
+#[inline(always)]
 pub(crate) fn measurements(bus: &Signals) -> LateralMeasurements {
     LateralMeasurements {
         bank_rad: bus.phi_rad.unwrap_or(0.0),

@@ -22,9 +22,12 @@
 //! ([`compensation_station`]). The two meet at the crossing, so the forecast has no step.
 
 use crate::environment::{
-    DeckGeometry, ShipPose, ROLL_FILTER_DAMPING_RATIO, ROLL_FILTER_NATURAL_FREQUENCY_RADPS,
+    DeckGeometry, ShipPose, ShipPoseRate, ROLL_FILTER_DAMPING_RATIO,
+    ROLL_FILTER_NATURAL_FREQUENCY_RADPS,
 };
 use crate::sensors::LateralShipMotionMeasurement;
+
+pub use super::free_response::FreeResponse;
 
 /// Natural frequency of the dominant mode of 1/D(s), s² + 0.08s + 0.16 (rad/s).
 pub const DOMINANT_MODE_FREQUENCY_RADPS: f64 = 0.4;
@@ -33,18 +36,13 @@ pub const DOMINANT_MODE_DAMPING_RATIO: f64 = 0.1;
 
 /// The free response of a damped oscillator (ω, ζ < 1) from (x₀, ẋ₀) after τ.
 pub fn oscillator_forecast(x0: f64, rate0: f64, omega: f64, zeta: f64, tau: f64) -> f64 {
-    let damped = omega * (1.0 - zeta * zeta).sqrt();
-    let (sin, cos) = (damped * tau).sin_cos();
-    (-zeta * omega * tau).exp() * (x0 * cos + (rate0 + zeta * omega * x0) / damped * sin)
+    FreeResponse::new(omega, zeta, tau).value(x0, rate0)
 }
 
 /// The rate of [`oscillator_forecast`] after τ: its derivative in τ,
 /// e^(−ζωτ)·[ẋ₀·cos ω_d τ − (ζω·(ẋ₀ + ζωx₀)/ω_d + ω_d·x₀)·sin ω_d τ].
 pub fn oscillator_forecast_rate(x0: f64, rate0: f64, omega: f64, zeta: f64, tau: f64) -> f64 {
-    let damped = omega * (1.0 - zeta * zeta).sqrt();
-    let (sin, cos) = (damped * tau).sin_cos();
-    let b = (rate0 + zeta * omega * x0) / damped;
-    (-zeta * omega * tau).exp() * (rate0 * cos - (zeta * omega * b + damped * x0) * sin)
+    FreeResponse::new(omega, zeta, tau).rate(x0, rate0)
 }
 
 /// The forecast roll and roll rate (rad, rad/s) of the ship `tau` s after `measurement`
@@ -55,10 +53,8 @@ pub fn roll_forecast(measurement: &LateralShipMotionMeasurement, tau: f64) -> (f
         ROLL_FILTER_DAMPING_RATIO,
     );
     let (x0, rate0) = (measurement.roll_rad, measurement.roll_rate_radps);
-    (
-        oscillator_forecast(x0, rate0, omega, zeta, tau),
-        oscillator_forecast_rate(x0, rate0, omega, zeta, tau),
-    )
+    let response = FreeResponse::new(omega, zeta, tau);
+    (response.value(x0, rate0), response.rate(x0, rate0))
 }
 
 /// How far the point `s_m` along the landing centreline (m, forward of the aim point)
@@ -112,26 +108,87 @@ pub fn lateral_centreline_forecast_m(
     horizon_s: f64,
     aft_m: f64,
 ) -> f64 {
-    let tau = (time_s - measurement.time_s).max(0.0) + horizon_s.max(0.0);
-    let roll = oscillator_forecast(
-        measurement.roll_rad,
-        measurement.roll_rate_radps,
-        ROLL_FILTER_NATURAL_FREQUENCY_RADPS,
-        ROLL_FILTER_DAMPING_RATIO,
-        tau,
-    );
-    let dominant = |x0, rate0| {
-        oscillator_forecast(
-            x0,
-            rate0,
+    CentrelineForecaster::new(deck).forecast_m(deck, measurement, time_s, horizon_s, aft_m)
+}
+
+/// [`lateral_centreline_forecast_m`] for one deck, step after step, with what does not
+/// change evaluated once: the ship's mean heading's sine and cosine (which are also the
+/// deck angle's), the free response of yaw and sway (one mode, one horizon) once for
+/// both, and the mean centreline's point at the last station asked for (the station
+/// stays at the ramp until the hook crosses it). The operations are those of
+/// [`centreline_displacement_m`], so the results are the same to the bit.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CentrelineForecaster {
+    /// sin, cos of the ship's mean heading ψ₀ (= the deck angle δ).
+    heading_sin_cos: (f64, f64),
+    /// The last station's distance aft of the aim point (m) and its point's y on the
+    /// mean pose (m).
+    mean_station: Option<(f64, f64)>,
+}
+
+impl CentrelineForecaster {
+    /// The forecaster for `deck`.
+    pub fn new(deck: &DeckGeometry) -> Self {
+        let heading = deck.ship_mean_heading_rad();
+        Self {
+            heading_sin_cos: (heading.sin(), heading.cos()),
+            mean_station: None,
+        }
+    }
+
+    /// [`lateral_centreline_forecast_m`] on `deck` (the deck this was built for).
+    pub fn forecast_m(
+        &mut self,
+        deck: &DeckGeometry,
+        measurement: &LateralShipMotionMeasurement,
+        time_s: f64,
+        horizon_s: f64,
+        aft_m: f64,
+    ) -> f64 {
+        let tau = (time_s - measurement.time_s).max(0.0) + horizon_s.max(0.0);
+        let roll = FreeResponse::new(
+            ROLL_FILTER_NATURAL_FREQUENCY_RADPS,
+            ROLL_FILTER_DAMPING_RATIO,
+            tau,
+        )
+        .value(measurement.roll_rad, measurement.roll_rate_radps);
+        let dominant = FreeResponse::new(
             DOMINANT_MODE_FREQUENCY_RADPS,
             DOMINANT_MODE_DAMPING_RATIO,
             tau,
-        )
-    };
-    let yaw = dominant(measurement.yaw_rad, measurement.yaw_rate_radps);
-    let sway = dominant(measurement.sway_m, measurement.sway_rate_mps);
-    centreline_displacement_m(deck, roll, yaw, sway, aft_m)
+        );
+        let yaw = dominant.value(measurement.yaw_rad, measurement.yaw_rate_radps);
+        let sway = dominant.value(measurement.sway_m, measurement.sway_rate_mps);
+        let (sin, cos) = self.heading_sin_cos;
+        let moved = ShipPose {
+            pitch_centre_x_m: -sway * sin,
+            pitch_centre_y_m: sway * cos,
+            roll_rad: roll,
+            yaw_rad: yaw,
+            ..ShipPose::default()
+        };
+        // [`DeckGeometry::point_on_landing_centreline`] with the deck angle's sine and
+        // cosine, which are the mean heading's.
+        let attitude = DeckGeometry::ship_attitude_of(
+            &deck.attitude_sin_cos(&moved),
+            &ShipPoseRate::default(),
+            self.heading_sin_cos,
+        );
+        let moved_y = deck
+            .point_on_landing_centreline_at(&attitude, &moved, -aft_m)
+            .y_m;
+        let mean_y = match self.mean_station {
+            Some((station, y)) if station.to_bits() == aft_m.to_bits() => y,
+            _ => {
+                let y = deck
+                    .point_on_landing_centreline(&ShipPose::default(), -aft_m)
+                    .y_m;
+                self.mean_station = Some((aft_m, y));
+                y
+            }
+        };
+        moved_y - mean_y
+    }
 }
 
 /// The aim point's displacement across the bearing (m, right) for ship roll, yaw (rad)
@@ -180,6 +237,52 @@ mod tests {
             assert!(residual.abs() < 1e-8, "{residual}");
         }
         assert!((x(0.0) - 0.02).abs() < 1e-15);
+    }
+
+    #[test]
+    fn the_forecaster_is_the_displacement_of_the_forecast_channels_to_the_bit() {
+        // The forecaster shares the mean heading's trig, the yaw and sway response and
+        // the mean station's point; the result must be that of each channel's
+        // oscillator forecast placed by `centreline_displacement_m`, the station moving
+        // from the ramp to the aim point and back (its memo invalidated each time).
+        let deck = DeckGeometry::default();
+        let measurement = LateralShipMotionMeasurement {
+            time_s: 10.0,
+            roll_rad: 0.012,
+            roll_rate_radps: -0.003,
+            yaw_rad: -0.004,
+            yaw_rate_radps: 0.0015,
+            sway_m: 0.35,
+            sway_rate_mps: -0.12,
+        };
+        let mut forecaster = CentrelineForecaster::new(&deck);
+        for (k, aft) in [60.0, 60.0, 42.5, 0.0, 60.0, 60.0, 13.0]
+            .into_iter()
+            .enumerate()
+        {
+            let (t, horizon) = (10.02 + 0.001 * k as f64, 3.0 - 0.3 * k as f64);
+            let tau = (t - measurement.time_s) + horizon;
+            let channel = |x0, rate0, omega, zeta| oscillator_forecast(x0, rate0, omega, zeta, tau);
+            let expected = centreline_displacement_m(
+                &deck,
+                channel(
+                    measurement.roll_rad,
+                    measurement.roll_rate_radps,
+                    ROLL_FILTER_NATURAL_FREQUENCY_RADPS,
+                    ROLL_FILTER_DAMPING_RATIO,
+                ),
+                channel(measurement.yaw_rad, measurement.yaw_rate_radps, 0.4, 0.1),
+                channel(measurement.sway_m, measurement.sway_rate_mps, 0.4, 0.1),
+                aft,
+            );
+            let forecast = forecaster.forecast_m(&deck, &measurement, t, horizon, aft);
+            assert_eq!(
+                forecast.to_bits(),
+                expected.to_bits(),
+                "{aft} m: {forecast} vs {expected}"
+            );
+            assert!(forecast.abs() > 1e-3, "the deck moves: {forecast}");
+        }
     }
 
     #[test]

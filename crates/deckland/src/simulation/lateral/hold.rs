@@ -1,9 +1,11 @@
-//! The 3-D approach's discrete parts, once per step (docs/model.md §10.3): the roll,
-//! yaw and sway filters' noise, the ship's lateral motion sensing and the forecast of
-//! the lineup compensation's station, the bank, sideslip and heading measurements, the
-//! heading hold's weight, and the lateral wave-off criteria.
+//! The 3-D approach's discrete parts (docs/model.md §10.3): once per step, the roll, yaw
+//! and sway filters' noise, the ship's lateral motion sensing and the ship's view held
+//! over the step; the lateral guidance — the forecast of the lineup compensation's
+//! station, the bank, sideslip and heading measurements, the heading hold's weight and
+//! the lateral wave-off criteria — once per frame of the flight computer (every step
+//! without one), held over the frame as the laws' reading is.
 
-use super::forecast::{compensation_station, lateral_centreline_forecast_m, oscillator_forecast};
+use super::forecast::{compensation_station, oscillator_forecast};
 use super::HeldLateral;
 use crate::aircraft::six_dof::SixDofAircraft;
 use crate::aircraft::Plant;
@@ -12,6 +14,40 @@ use crate::environment::{LateralShipMotionState, Wind};
 use crate::simulation::blocks::plant::BuiltPlant;
 use crate::simulation::closed_loop::{ClosedLoop, StepStreams};
 use crate::simulation::outer_loops::OuterLoops;
+
+/// The lateral guidance's frames: those of the flight computer
+/// ([`crate::simulation::flight_computer`]: a frame starts at the first step from each
+/// multiple of the period), and what the guidance computed at the last frame's start.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct GuidanceFrames {
+    /// The flight computer's frame period (s).
+    period_s: f64,
+    /// The index of the current frame.
+    frame: Option<i64>,
+    /// The guidance's outputs held over the frame: the held step (its ship noise and
+    /// view time replaced each step) and the fresh reading.
+    held: Option<(HeldLateral, (f64, f64))>,
+}
+
+impl GuidanceFrames {
+    /// The frames of a flight computer at `rate_hz` (Hz).
+    pub fn new(rate_hz: f64) -> Self {
+        Self {
+            period_s: 1.0 / rate_hz,
+            frame: None,
+            held: None,
+        }
+    }
+
+    /// Whether a frame starts at the step from `time_s` (s), and if so moves to it: the
+    /// flight computer's rule, with the same arithmetic, so that the two agree.
+    fn starts_frame(&mut self, time_s: f64) -> bool {
+        let index = (time_s / self.period_s + 1e-9).floor() as i64;
+        let new = self.frame != Some(index);
+        self.frame = Some(index);
+        new
+    }
+}
 
 /// What the 3-D approach's step start gives the loop.
 pub(crate) struct LateralStep {
@@ -42,8 +78,6 @@ impl ClosedLoop {
         else {
             return None;
         };
-        let state = SixDofAircraft::state_at(x, self.layout.aircraft.offset);
-        let (kinematic, kinematics) = aircraft.kinematics(&self.hook, state);
         let ship_state = LateralShipMotionState::from_array(&self.layout.ship_lateral.array(x));
         let deck_view = lateral.deck_view(
             &self.ship,
@@ -57,6 +91,23 @@ impl ClosedLoop {
         while let Some(measurement) = lateral.sensor.receive(t) {
             lateral.last_measurement = Some(measurement);
         }
+        let ship_noise = lateral.ship.draw_noise(&mut lateral_streams.ship, dt);
+        // Within a flight computer's frame, the guidance's outputs of the frame's start.
+        if let Some(frames) = &mut lateral.guidance_frames {
+            if let (false, Some((held, fresh_read))) = (frames.starts_frame(t), frames.held) {
+                return Some(LateralStep {
+                    held: HeldLateral {
+                        ship_noise,
+                        deck_view_time_s: t,
+                        ..held
+                    },
+                    fresh_read,
+                    decision: None,
+                });
+            }
+        }
+        let state = SixDofAircraft::state_at(x, self.layout.aircraft.offset);
+        let (kinematic, kinematics) = aircraft.kinematics(&self.hook, state);
         // Time to go from the range to the mean aim point at the closing speed.
         let mean_pose = self.ship.pose(
             &crate::environment::ShipMotionState::from_array(&self.layout.ship.array(x)),
@@ -74,9 +125,12 @@ impl ClosedLoop {
             lateral.closure_mps,
             lateral.lineup.compensation_station_aft_m,
         );
-        let forecast_m = lateral.last_measurement.map_or(0.0, |m| {
-            lateral_centreline_forecast_m(&self.deck, &m, t, horizon_s, aft_m)
-        });
+        let forecast_m = match lateral.last_measurement {
+            Some(m) => lateral
+                .forecaster
+                .forecast_m(&self.deck, &m, t, horizon_s, aft_m),
+            None => 0.0,
+        };
         let bank_noise_rad = lateral.draw_bank_noise(t, &mut lateral_streams.bank);
         let sideslip_noise_rad = lateral.draw_sideslip_noise(&mut lateral_streams.sideslip);
         let heading_noise_rad = lateral.draw_bank_noise(t, &mut lateral_streams.heading);
@@ -107,9 +161,9 @@ impl ClosedLoop {
                 .wave_off
                 .decide(&self.wave_off, time_to_go_s, predicted, rate, f64::NAN)
         };
-        Some(LateralStep {
+        let step = LateralStep {
             held: HeldLateral {
-                ship_noise: lateral.ship.draw_noise(&mut lateral_streams.ship, dt),
+                ship_noise,
                 bank_noise_rad,
                 sideslip_noise_rad,
                 heading_noise_rad,
@@ -127,6 +181,35 @@ impl ClosedLoop {
                 ),
             ),
             decision,
-        })
+        };
+        if let Some(frames) = &mut lateral.guidance_frames {
+            frames.held = Some((step.held, step.fresh_read));
+        }
+        Some(step)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::GuidanceFrames;
+    use crate::simulation::flight_computer::FlightComputer;
+
+    #[test]
+    fn the_guidance_frames_are_the_flight_computers() {
+        // The lateral guidance computes where the flight computer reads and commands:
+        // at every rate, step by step over 3 s of 1-ms steps (t = k·dt, as the run
+        // loop's time), the two start the same frames.
+        for rate_hz in [80.0, 60.0, 100.0, 1000.0] {
+            let mut computer = FlightComputer::new(rate_hz, 1);
+            let mut frames = GuidanceFrames::new(rate_hz);
+            let mut starts = 0;
+            for k in 0..3000 {
+                let t = f64::from(k) * 1e-3;
+                let frame = computer.starts_frame(t);
+                assert_eq!(frames.starts_frame(t), frame, "{rate_hz} Hz, step {k}");
+                starts += usize::from(frame);
+            }
+            assert_eq!(starts, (3.0 * rate_hz) as usize, "{rate_hz} Hz");
+        }
     }
 }

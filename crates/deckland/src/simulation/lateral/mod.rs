@@ -26,6 +26,7 @@
 mod build;
 mod evaluate;
 pub mod forecast;
+mod free_response;
 mod hold;
 pub(crate) mod pose;
 mod signals;
@@ -34,7 +35,7 @@ pub mod touchdown;
 use std::sync::Arc;
 
 pub use build::lateral_laws;
-pub(crate) use build::{attach, start};
+pub(crate) use build::{attach, flies_three_dimensional, start};
 pub use signals::LateralSignals;
 pub use touchdown::LateralTouchdown;
 
@@ -119,6 +120,14 @@ pub(crate) struct LateralLoop {
     /// stages at its rates ([`pose::DeckView3d::at`]); `None` before the first step.
     /// Kept here rather than in the held inputs, which every step copies.
     pub step_view: Option<pose::DeckView3d>,
+    /// The lateral forecast of the lineup compensation's station, with the deck's
+    /// constants evaluated once.
+    pub forecaster: forecast::CentrelineForecaster,
+    /// With a flight computer, the lateral guidance's frames (`hold`).
+    pub guidance_frames: Option<hold::GuidanceFrames>,
+    /// With a flight computer, its frame period (s): the ship's view is computed at each
+    /// frame's start and carried over the frame ([`LateralLoop::deck_view`]).
+    pub view_frame_period_s: Option<f64>,
 }
 
 /// The random streams of the 3-D approach, drawn from step by step.

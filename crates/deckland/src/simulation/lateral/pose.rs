@@ -37,20 +37,30 @@ pub(crate) struct DeckView3d {
     pub centreline_heading_rate_radps: f64,
 }
 
-/// The last deck view [`LateralLoop::deck_view`] computed, with the bits of its time and
-/// states: the step's hold asks for the view at the step's start three times (the
-/// wind's sample, the guidance computer, the view held over the step), and it is
-/// computed once (the same result, to the bit). A mutex, uncontended (each loop is
-/// stepped by one thread at a time), keeps the loop `Sync`; a clone starts empty.
+/// The last deck view [`LateralLoop::deck_view`] computed, with its key: the bits of its
+/// time and states, or with a flight computer its frame. The step's hold asks for the
+/// view at the step's start three times (the wind's sample, the guidance computer, the
+/// view held over the step), and it is computed once (the same result, to the bit). A
+/// mutex, uncontended (each loop is stepped by one thread at a time), keeps the loop
+/// `Sync`; a clone starts empty.
 #[derive(Debug, Default)]
 pub(crate) struct DeckViewMemo {
-    last: Mutex<Option<(ViewKey, DeckView3d)>>,
+    last: Mutex<Option<(MemoKey, DeckView3d)>>,
 }
 
 impl Clone for DeckViewMemo {
     fn clone(&self) -> Self {
         Self::default()
     }
+}
+
+/// What a memoised view is valid for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum MemoKey {
+    /// These states at this time.
+    State(ViewKey),
+    /// The flight computer's frame of this index, from the view's time on.
+    Frame(i64),
 }
 
 /// The bits of the time and of the ship's heave-and-pitch and lateral states.
@@ -72,7 +82,12 @@ fn view_key(
 
 impl LateralLoop {
     /// The ship's 3-D view at `time_s` for the heave-and-pitch state `ship_state` and the
-    /// lateral filters' state `lateral_state`.
+    /// lateral filters' state `lateral_state`. With a flight computer
+    /// ([`LateralLoop::view_frame_period_s`]), the view computed at the start of the
+    /// computer's frame is carried to `time_s` at its rates ([`DeckView3d::at`]), as
+    /// within a step (docs/model.md §10.1): over a frame of 12.5 ms the carried aim point
+    /// is within ½·a·τ² ≈ 3·10⁻⁵ m of the view of the states (a deck acceleration of
+    /// 0.4 m/s²).
     pub fn deck_view(
         &self,
         ship: &ShipMotion,
@@ -81,18 +96,7 @@ impl LateralLoop {
         lateral_state: &LateralShipMotionState,
         time_s: f64,
     ) -> DeckView3d {
-        let key = view_key(ship_state, lateral_state, time_s);
-        let Ok(mut last) = self.view_memo.last.try_lock() else {
-            return self.compute_deck_view(ship, deck, ship_state, lateral_state, time_s);
-        };
-        if let Some((last_key, view)) = *last {
-            if last_key == key {
-                return view;
-            }
-        }
-        let view = self.compute_deck_view(ship, deck, ship_state, lateral_state, time_s);
-        *last = Some((key, view));
-        view
+        self.read_deck_view(ship, deck, ship_state, lateral_state, time_s, |view| *view)
     }
 
     /// The equivalent longitudinal pose and its rate of [`LateralLoop::deck_view`] (what
@@ -105,8 +109,46 @@ impl LateralLoop {
         lateral_state: &LateralShipMotionState,
         time_s: f64,
     ) -> (ShipPose, ShipPoseRate) {
-        let view = self.deck_view(ship, deck, ship_state, lateral_state, time_s);
-        (view.longitudinal, view.longitudinal_rate)
+        self.read_deck_view(ship, deck, ship_state, lateral_state, time_s, |view| {
+            (view.longitudinal, view.longitudinal_rate)
+        })
+    }
+
+    /// `read` of [`LateralLoop::deck_view`], from the memo if it holds the view of these
+    /// states and time (copying out only what `read` takes), else computed and memoised.
+    #[inline]
+    fn read_deck_view<R>(
+        &self,
+        ship: &ShipMotion,
+        deck: &DeckGeometry,
+        ship_state: &ShipMotionState,
+        lateral_state: &LateralShipMotionState,
+        time_s: f64,
+        read: impl FnOnce(&DeckView3d) -> R,
+    ) -> R {
+        let key = match self.view_frame_period_s {
+            Some(period_s) => MemoKey::Frame((time_s / period_s + 1e-9).floor() as i64),
+            None => MemoKey::State(view_key(ship_state, lateral_state, time_s)),
+        };
+        let Ok(mut last) = self.view_memo.last.try_lock() else {
+            return read(&self.compute_deck_view(ship, deck, ship_state, lateral_state, time_s));
+        };
+        match &mut *last {
+            Some((last_key, view)) if *last_key == key && time_s >= view.time_s => {
+                if time_s == view.time_s {
+                    read(view)
+                } else {
+                    read(&view.at(time_s))
+                }
+            }
+            slot => {
+                let (_, view) = slot.insert((
+                    key,
+                    self.compute_deck_view(ship, deck, ship_state, lateral_state, time_s),
+                ));
+                read(view)
+            }
+        }
     }
 
     /// The ship's pose and its rate at `time_s`: [`DeckGeometry::steaming_pose`]
@@ -210,7 +252,7 @@ impl DeckView3d {
     /// ½·a·τ² ≈ 2·10⁻⁷ m at τ = 1 ms for a deck acceleration of 0.4 m/s², and the
     /// heading's, ½·ψ̈·τ², far below 10⁻⁹ rad (the ship's motion is slow, its
     /// frequencies below 1 rad/s). At the view's own time it is the view, to the bit.
-    #[inline]
+    #[inline(always)]
     pub fn at(&self, time_s: f64) -> DeckView3d {
         let tau = time_s - self.time_s;
         if tau == 0.0 {
@@ -323,6 +365,53 @@ mod tests {
         close(cos, exact.centreline_heading_rad.cos(), 1e-9);
         // It moved: the ship steams at 7.7 m/s.
         assert!((held.aim.x_m - view.aim.x_m) > 5e-3);
+    }
+
+    #[test]
+    fn with_a_flight_computer_the_frames_view_is_carried_over_the_frame() {
+        let deck = DeckGeometry::default();
+        let ship = ShipMotion::new(ShipMotionParameters {
+            forward_speed_mps: 7.7,
+            ..ShipMotionParameters::default()
+        })
+        .expect("valid");
+        let exact = super::super::build::test_loop(&deck, &ship);
+        let framed = LateralLoop {
+            view_frame_period_s: Some(1.0 / 80.0),
+            ..exact.clone()
+        };
+        let start = ShipMotionState::from_array(&[0.3, 0.1, -0.05, 0.01, 0.2, 0.0, 0.03, 0.0]);
+        let lateral_start = LateralShipMotionState::from_array(&[
+            0.01, 0.002, 0.003, 0.001, 0.0, 0.0, 0.4, 0.05, 0.0, 0.0,
+        ]);
+        let later = ShipMotionState::from_array(&[0.31, 0.1, -0.05, 0.01, 0.2, 0.0, 0.03, 0.0]);
+        let lateral_later = LateralShipMotionState::from_array(&[
+            0.011, 0.002, 0.003, 0.001, 0.0, 0.0, 0.4, 0.05, 0.0, 0.0,
+        ]);
+        // Frame 800 starts at 10 s: its view is the states' view then.
+        let t0 = 10.0;
+        let view = framed.deck_view(&ship, &deck, &start, &lateral_start, t0);
+        assert_eq!(
+            view,
+            exact.deck_view(&ship, &deck, &start, &lateral_start, t0)
+        );
+        // Within the frame, whatever the states, the frame's view carried at its rates.
+        for t in [10.001, 10.006, 10.0124] {
+            assert_eq!(
+                framed.deck_view(&ship, &deck, &later, &lateral_later, t),
+                view.at(t)
+            );
+            assert_eq!(
+                framed.longitudinal_pose(&ship, &deck, &later, &lateral_later, t),
+                (view.at(t).longitudinal, view.at(t).longitudinal_rate)
+            );
+        }
+        // The next frame's start: the view of the states then.
+        let t1 = 10.0125;
+        assert_eq!(
+            framed.deck_view(&ship, &deck, &later, &lateral_later, t1),
+            exact.deck_view(&ship, &deck, &later, &lateral_later, t1)
+        );
     }
 
     #[test]
