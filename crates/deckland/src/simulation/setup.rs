@@ -8,7 +8,9 @@ use super::blocks::{check_placement, Block, BlockPlacementError, BlockPosition, 
 use super::closed_loop::{ClosedLoop, LoopLayout, StepStreams};
 use super::deck_predictor::{BuiltDeckPredictor, DeckPredictor, DeckView};
 use super::flight_computer::FlightComputer;
-use super::outer_loops::{approach_flight_path_angle, LateAbort, OuterLoops, WaveOffFlight};
+use super::outer_loops::{
+    approach_flight_path_angle, AlphaFloor, LateAbort, OuterLoops, WaveOffFlight,
+};
 use crate::aircraft::six_dof::SixDofAircraft;
 use crate::aircraft::{
     linearize, trim, Aircraft, LinearModel, PlantModel, TrimError, TrimPoint, TrimRequest,
@@ -86,6 +88,10 @@ fn outer_loops(
                 ),
                 guidance: control.guidance.controller(),
                 sink_rate: control.sink_rate.controller(),
+                alpha_floor: control.sink_rate.alpha_protection.then_some(AlphaFloor {
+                    min_alpha_rad: control.sink_rate.min_alpha_deg.to_radians(),
+                    lead_s: control.sink_rate.alpha_lead_s,
+                }),
             };
             (loops, gamma, scenario.max_time_s)
         }
