@@ -3,14 +3,13 @@
 
 use std::sync::Arc;
 
+use super::alpha_floor::AlphaFloor;
 use super::blocks::plant::BuiltPlant;
 use super::blocks::{check_placement, Block, BlockPlacementError, BlockPosition, PlacedBlock};
 use super::closed_loop::{ClosedLoop, LoopLayout, StepStreams};
 use super::deck_predictor::{BuiltDeckPredictor, DeckPredictor, DeckView};
 use super::flight_computer::FlightComputer;
-use super::outer_loops::{
-    approach_flight_path_angle, AlphaFloor, LateAbort, OuterLoops, WaveOffFlight,
-};
+use super::outer_loops::{approach_flight_path_angle, LateAbort, OuterLoops, WaveOffFlight};
 use crate::aircraft::six_dof::SixDofAircraft;
 use crate::aircraft::{
     linearize, trim, Aircraft, LinearModel, PlantModel, TrimError, TrimPoint, TrimRequest,
