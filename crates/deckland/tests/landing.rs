@@ -366,6 +366,9 @@ fn a_wave_off_keeps_its_angle_of_attack_off_the_models_floor() {
     let fly_lowest_alpha = |min_alpha_deg: f64| {
         let mut scenario = scenario;
         scenario.control.wave_off.min_alpha_deg = min_alpha_deg;
+        // The wave-off's floor alone: the approach's angle-of-attack protection
+        // (`control.sink_rate.alpha_protection`) catches this run too.
+        scenario.control.sink_rate.alpha_protection = false;
         let mut recorder = TimeSeriesRecorder::every(0.01);
         let summary = Simulation::new(&scenario).unwrap().run(&mut recorder);
         let lowest = recorder

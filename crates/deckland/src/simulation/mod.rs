@@ -12,6 +12,7 @@
 //!   integration loop.
 
 mod activity;
+mod alpha_floor;
 mod anchor_shaping;
 pub mod blocks;
 mod closed_loop;
@@ -32,6 +33,7 @@ mod taps;
 mod wave_off;
 
 pub use activity::ActuatorActivity;
+pub use alpha_floor::AlphaFloor;
 pub use blocks::{Block, BlockDeclaration, BlockPlacementError, BlockPosition, BUILT_IN_BLOCKS};
 pub use closed_loop::{ClosedLoop, HeldInputs, LoopLayout, StepStreams};
 pub use deck_predictor::{BuiltDeckPredictor, DeckPredictor, DeckQuery, DeckView, HookTrack};

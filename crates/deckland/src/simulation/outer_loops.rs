@@ -2,6 +2,7 @@
 //! step, a climb-rate program through the sink-rate loop, or the full approach cascade
 //! flight path → guidance → sink rate.
 
+use super::alpha_floor::AlphaFloor;
 use super::taps::{LoopBreak, Taps};
 use crate::control::pitch::command_shaping::JerkLimitedStep;
 use crate::control::{
@@ -50,6 +51,8 @@ pub enum OuterLoops {
         guidance: LoopController,
         /// The sink-rate loop: climb-rate error → pitch command.
         sink_rate: LoopController,
+        /// The angle-of-attack protection on the pitch command; `None` without it.
+        alpha_floor: Option<AlphaFloor>,
     },
 }
 
@@ -161,6 +164,12 @@ pub(crate) struct OuterLoopInputs {
     pub climb_rate_mps: f64,
     /// The air-relative flight-path angle θ − α (rad).
     pub air_path_angle_rad: f64,
+    /// The pitch attitude θ (rad).
+    pub theta_rad: f64,
+    /// The angle of attack α (rad).
+    pub alpha_rad: f64,
+    /// The pitch rate q (rad/s).
+    pub pitch_rate_radps: f64,
     pub hook_x_m: f64,
     pub hook_h_m: f64,
     pub hook_x_rate_mps: f64,
@@ -257,6 +266,7 @@ impl OuterLoops {
                     sink_rate,
                     wave_off: flight,
                     late_abort,
+                    alpha_floor,
                 } => {
                     late_abort_share = (late_abort.share, late_abort.full_thrust);
                     let deck = deck.expect("an approach always holds a deck reference");
@@ -287,6 +297,14 @@ impl OuterLoops {
                         Some(flight) => {
                             let (theta, floored) = flight.floored_pitch(theta, inputs, deck);
                             pitch_floored = floored;
+                            theta
+                        }
+                        None => theta,
+                    };
+                    let theta = match alpha_floor {
+                        Some(alpha_floor) => {
+                            let (theta, floored) = alpha_floor.floored_pitch(theta, inputs);
+                            pitch_floored |= floored;
                             theta
                         }
                         None => theta,
@@ -335,7 +353,7 @@ impl OuterLoops {
                 sink_rate,
                 ..
             } => (
-                // While a wave-off's floor holds the pitch command up, the sink-rate
+                // While a floor (the wave-off's or the α protection's) holds the pitch command up, the sink-rate
                 // integrator does not wind the loop's own command further down (the
                 // conditional integration of LoopController, with the floor as the limit).
                 if outputs.pitch_floored
@@ -349,8 +367,12 @@ impl OuterLoops {
                         0.0,
                     )
                 },
-                // The guidance integrator holds in a wave-off.
-                if wave_off {
+                // The guidance integrator holds in a wave-off, and while a floor holds the
+                // pitch command up against a path below the hook.
+                if wave_off
+                    || (outputs.pitch_floored
+                        && outputs.height_error_m * guidance.gains.integral < 0.0)
+                {
                     0.0
                 } else {
                     guidance.integral_rate(

@@ -3,6 +3,7 @@
 
 use std::sync::Arc;
 
+use super::alpha_floor::AlphaFloor;
 use super::blocks::arrival_timing::ArrivalTimingBlock;
 use super::blocks::plant::BuiltPlant;
 use super::blocks::{check_placement, Block, BlockPlacementError, BlockPosition, PlacedBlock};
@@ -87,6 +88,10 @@ fn outer_loops(
                 ),
                 guidance: control.guidance.controller(),
                 sink_rate: control.sink_rate.controller(),
+                alpha_floor: control.sink_rate.alpha_protection.then_some(AlphaFloor {
+                    min_alpha_rad: control.sink_rate.min_alpha_deg.to_radians(),
+                    lead_s: control.sink_rate.alpha_lead_s,
+                }),
             };
             (loops, gamma, scenario.max_time_s)
         }
