@@ -22,7 +22,10 @@ impl<T: Taps> Taps for TwoEvaluations<'_, T> {
 /// taps on the general path, to the end (at most `steps`), comparing every stop, the
 /// state after every step and the summaries.
 fn assert_same_run<T: Taps>(scenario: &Scenario, taps: &T, steps: usize) {
-    assert!(taps.idempotent(), "the taps under test take the one-evaluation path");
+    assert!(
+        taps.idempotent(),
+        "the taps under test take the one-evaluation path"
+    );
     let general = TwoEvaluations(taps);
     assert!(!general.idempotent());
     let mut once = Simulation::new(scenario).expect("valid");
@@ -33,7 +36,11 @@ fn assert_same_run<T: Taps>(scenario: &Scenario, taps: &T, steps: usize) {
         assert_eq!(a, b, "step {step}");
         assert_eq!(
             once.state().iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
-            twice.state().iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+            twice
+                .state()
+                .iter()
+                .map(|v| v.to_bits())
+                .collect::<Vec<_>>(),
             "state after step {step}"
         );
         if matches!(a, Stop::Ended(_)) {

@@ -42,7 +42,11 @@ impl ClosedLoop {
     ) {
         let ship_state = self.ship_state(x);
         let aircraft = self.aircraft_state(x);
-        let (pose, _) = self.ship_pose(x, t);
+        // The pose alone (its rate is not needed here).
+        let pose = match &self.lateral {
+            Some(_) => self.ship_pose(x, t).0,
+            None => self.ship.pose(&ship_state, self.ship_initial_x_m, t),
+        };
         held.wind = self
             .wind
             .wind(t, pose.distance_aft_of_pitch_centre_m(aircraft.x_m));

@@ -26,6 +26,9 @@ use crate::integration::Rk4Workspace;
 use crate::metrics::TrapSheetRecorder;
 use crate::scenario::Scenario;
 
+/// The longest state whose rate [`Simulation::signals`] writes on the stack.
+const SIGNALS_RATE_ON_STACK: usize = 64;
+
 /// A run set up with a user's own pitch law and blocks ([`Simulation::builder`]).
 pub struct SimulationBuilder<'a> {
     scenario: &'a Scenario,
@@ -213,7 +216,16 @@ impl Simulation {
     /// (for an observation between steps; the run loop computes its own). Before the
     /// first step, with the inputs the first step will hold.
     pub fn signals(&self) -> Signals {
-        let mut rate = vec![0.0; self.state.len()];
+        // The rate is dropped: written on the stack where the state fits (no allocation
+        // for an observation between steps).
+        let mut on_stack = [0.0; SIGNALS_RATE_ON_STACK];
+        let mut on_heap = Vec::new();
+        let rate = if self.state.len() <= on_stack.len() {
+            &mut on_stack[..self.state.len()]
+        } else {
+            on_heap.resize(self.state.len(), 0.0);
+            &mut on_heap[..]
+        };
         let held = if self.inputs_held {
             self.held
         } else {
@@ -231,7 +243,7 @@ impl Simulation {
             held
         };
         self.system
-            .evaluate(self.time_s, &self.state, &held, &NoTaps, &mut rate)
+            .evaluate(self.time_s, &self.state, &held, &NoTaps, rate)
     }
 
     /// Draws the inputs the next step will hold (wind, pitch-sensor noise, the deck
