@@ -142,7 +142,7 @@ impl ClosedLoop {
             && self.lateral.is_none();
         if frame_evaluated_once {
             held.commands = None;
-        } else {
+        } else if held.frame_starts {
             self.compute_frame(t, x, held, taps);
         }
         let signals = self.evaluate(t, x, held, taps, rate);
