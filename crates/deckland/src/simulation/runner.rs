@@ -26,9 +26,6 @@ use crate::integration::Rk4Workspace;
 use crate::metrics::TrapSheetRecorder;
 use crate::scenario::Scenario;
 
-/// The longest state whose rate [`Simulation::signals`] writes on the stack.
-const SIGNALS_RATE_ON_STACK: usize = 64;
-
 /// A run set up with a user's own pitch law and blocks ([`Simulation::builder`]).
 pub struct SimulationBuilder<'a> {
     scenario: &'a Scenario,
@@ -216,16 +213,6 @@ impl Simulation {
     /// (for an observation between steps; the run loop computes its own). Before the
     /// first step, with the inputs the first step will hold.
     pub fn signals(&self) -> Signals {
-        // The rate is dropped: written on the stack where the state fits (no allocation
-        // for an observation between steps).
-        let mut on_stack = [0.0; SIGNALS_RATE_ON_STACK];
-        let mut on_heap = Vec::new();
-        let rate = if self.state.len() <= on_stack.len() {
-            &mut on_stack[..self.state.len()]
-        } else {
-            on_heap.resize(self.state.len(), 0.0);
-            &mut on_heap[..]
-        };
         let held = if self.inputs_held {
             self.held
         } else {
@@ -242,8 +229,7 @@ impl Simulation {
             system.compute_frame(self.time_s, &self.state, &mut held, &NoTaps);
             held
         };
-        self.system
-            .evaluate(self.time_s, &self.state, &held, &NoTaps, rate)
+        self.system.signals_at(self.time_s, &self.state, &held)
     }
 
     /// Draws the inputs the next step will hold (wind, pitch-sensor noise, the deck
