@@ -106,4 +106,10 @@ impl Taps for AgentTaps {
             _ => computed,
         }
     }
+
+    /// Every point is kept or replaced by a value fixed over the interval.
+    #[inline(always)]
+    fn idempotent(&self) -> bool {
+        true
+    }
 }

@@ -42,8 +42,11 @@ impl LoopController {
     /// The loop's output, clamped to its limits.
     #[inline]
     pub fn output(&self, error: f64, integral: f64, error_rate: f64) -> f64 {
-        self.unclamped(error, integral, error_rate)
-            .clamp(self.output_min, self.output_max)
+        clamp(
+            self.unclamped(error, integral, error_rate),
+            self.output_min,
+            self.output_max,
+        )
     }
 
     /// Rate of change of the integral state: the error, or zero while the output is
@@ -59,6 +62,23 @@ impl LoopController {
             error
         }
     }
+}
+
+/// `value` limited to [`min`, `max`] as [`f64::clamp`] limits it (the same comparisons
+/// in the same order: NaN passes through), inlined: `f64::clamp` is called out of line,
+/// for its check of the limits' order, at every evaluation of the loop. The controllers'
+/// limits are ordered by construction (checked in debug builds).
+#[inline(always)]
+fn clamp(value: f64, min: f64, max: f64) -> f64 {
+    debug_assert!(min <= max, "limits out of order: [{min}, {max}]");
+    let mut value = value;
+    if value < min {
+        value = min;
+    }
+    if value > max {
+        value = max;
+    }
+    value
 }
 
 #[cfg(test)]
@@ -83,6 +103,39 @@ mod tests {
         assert!((c.output(0.1, 0.2, 0.3) - (0.2 + 0.1 + 0.03)).abs() < 1e-15);
         assert_eq!(c.output(10.0, 0.0, 0.0), 1.0);
         assert_eq!(c.output(-10.0, 0.0, 0.0), -1.0);
+    }
+
+    #[test]
+    fn the_inlined_clamp_equals_the_standard_one_bit_for_bit() {
+        let values = [
+            -2.0,
+            -1.0,
+            -0.5,
+            -0.0,
+            0.0,
+            1e-300,
+            0.5,
+            1.0,
+            3.0,
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+        ];
+        for (min, max) in [
+            (-1.0, 1.0),
+            (0.0, 0.0),
+            (-0.0, 0.0),
+            (0.0, 2.0),
+            (-3.0, -1.0),
+        ] {
+            for value in values {
+                assert_eq!(
+                    clamp(value, min, max).to_bits(),
+                    value.clamp(min, max).to_bits(),
+                    "{value} in [{min}, {max}]"
+                );
+            }
+        }
     }
 
     #[test]

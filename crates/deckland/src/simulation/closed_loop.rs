@@ -17,7 +17,7 @@ use super::lateral::LateralLoop;
 pub use super::layout::LoopLayout;
 use super::outer_loops::{OuterLoopInputs, OuterLoops};
 use super::signals::Signals;
-use super::taps::{LoopBreak, Taps};
+use super::taps::{LoopBreak, NoTaps, Taps};
 use crate::aircraft::six_dof::SixDofAircraft;
 use crate::aircraft::{Aircraft, AircraftState, HookGeometry, Plant, TrimPoint};
 use crate::control::pitch::{AxisLaw, BuiltPitchLaw, ElevatorSaturation, PitchLawInputs};
@@ -28,6 +28,9 @@ use crate::environment::{
 };
 use crate::integration::VectorSystem;
 use crate::sensors::PitchSensor;
+
+/// The longest state whose dropped rate [`ClosedLoop::signals_at`] writes on the stack.
+const RATE_ON_STACK: usize = 64;
 
 /// Tolerance of "the elevator sits on a position limit" for the pitch laws (rad).
 const SATURATION_TOLERANCE_RAD: f64 = 1e-9;
@@ -173,6 +176,21 @@ impl ClosedLoop {
             (BuiltPlant::SixDof(aircraft), false, _) => self
                 .evaluate_blocks::<T, SixDofAircraft, true, true>(aircraft, t, x, held, taps, rate),
         }
+    }
+
+    /// The signals at (`t`, `x`) with the inputs `held` and no taps, for an observation
+    /// between steps: the rate is dropped, written on the stack where the state fits (no
+    /// allocation).
+    pub(crate) fn signals_at(&self, t: f64, x: &[f64], held: &HeldInputs) -> Signals {
+        let mut on_stack = [0.0; RATE_ON_STACK];
+        let mut on_heap = Vec::new();
+        let rate = if x.len() <= on_stack.len() {
+            &mut on_stack[..x.len()]
+        } else {
+            on_heap.resize(x.len(), 0.0);
+            &mut on_heap[..]
+        };
+        self.evaluate(t, x, held, &NoTaps, rate)
     }
 
     /// The users' blocks at `position`: their outputs onto `bus`.

@@ -5,6 +5,7 @@
 use super::closed_loop::{ClosedLoop, HeldInputs, StepStreams};
 use super::flight_computer::HeldCommands;
 use super::lateral::HeldLateral;
+use super::signals::Signals;
 use super::taps::Taps;
 
 impl ClosedLoop {
@@ -22,35 +23,58 @@ impl ClosedLoop {
         dt: f64,
         waving_off: bool,
     ) -> HeldInputs {
+        let mut held = HeldInputs::default();
+        self.hold_into(t, x, streams, dt, waving_off, &mut held);
+        held
+    }
+
+    /// As [`ClosedLoop::hold`], written into `held` (every field), so that the run loop's
+    /// held inputs are not built elsewhere and copied over.
+    #[inline]
+    pub(crate) fn hold_into(
+        &mut self,
+        t: f64,
+        x: &[f64],
+        streams: &mut StepStreams,
+        dt: f64,
+        waving_off: bool,
+        held: &mut HeldInputs,
+    ) {
         let ship_state = self.ship_state(x);
         let aircraft = self.aircraft_state(x);
-        let (pose, _) = self.ship_pose(x, t);
-        let wind = self
+        // The pose alone (its rate is not needed here).
+        let pose = match &self.lateral {
+            Some(_) => self.ship_pose(x, t).0,
+            None => self.ship.pose(&ship_state, self.ship_initial_x_m, t),
+        };
+        held.wind = self
             .wind
             .wind(t, pose.distance_aft_of_pitch_centre_m(aircraft.x_m));
         let (deck, decision) =
             self.guidance_computer_step(t, x, &aircraft, &ship_state, dt, waving_off);
         self.arrival_timing_step(t, dt, &aircraft, deck.as_ref(), waving_off);
-        let lateral = self.hold_lateral(t, x, streams, dt, waving_off || decision.is_some(), &wind);
+        held.deck = deck;
+        let lateral = self.hold_lateral(
+            t,
+            x,
+            streams,
+            dt,
+            waving_off || decision.is_some(),
+            &held.wind,
+        );
         let decision = decision.or(lateral.as_ref().and_then(|step| step.decision));
-        let wave_off_decided = decision.map(|decision| (t, decision));
-        let wave_off = waving_off || wave_off_decided.is_some();
-        let ship_noise = self
-            .ship
-            .draw_noise(&mut streams.ship_heave, &mut streams.ship_pitch, dt);
-        let Some(mut computer) = self.computer.take() else {
-            return HeldInputs {
-                ship_noise,
-                pitch_noise_rad: self.sensor.draw_white_noise() + self.sensor.sinusoid(t),
-                wind,
-                deck,
-                commands: None,
-                theta_read: None,
-                frame_starts: false,
-                wave_off,
-                wave_off_decided,
-                lateral: lateral.map(|step| step.held),
-            };
+        held.wave_off_decided = decision.map(|decision| (t, decision));
+        held.wave_off = waving_off || held.wave_off_decided.is_some();
+        held.ship_noise =
+            self.ship
+                .draw_noise(&mut streams.ship_heave, &mut streams.ship_pitch, dt);
+        let Some(computer) = self.computer.as_mut() else {
+            held.pitch_noise_rad = self.sensor.draw_white_noise() + self.sensor.sinusoid(t);
+            held.commands = None;
+            held.theta_read = None;
+            held.frame_starts = false;
+            held.lateral = lateral.map(|step| step.held);
+            return;
         };
         // A frame of the flight-control computer: read the sensor (the mean of its samples
         // since the last frame); `compute_frame` computes the commands at its start, and
@@ -58,7 +82,7 @@ impl ClosedLoop {
         let pitch_noise_rad = self.sensor.draw_white_noise() + self.sensor.sinusoid(t);
         let frame_starts = computer.starts_frame(t);
         computer.sample(t, aircraft.theta_rad + pitch_noise_rad, frame_starts);
-        let lateral = match (lateral, &mut self.lateral) {
+        held.lateral = match (lateral, &mut self.lateral) {
             (Some(step), Some(lateral)) => {
                 if frame_starts {
                     lateral.read = step.fresh_read;
@@ -70,20 +94,10 @@ impl ClosedLoop {
             }
             _ => None,
         };
-        let held = HeldInputs {
-            ship_noise,
-            pitch_noise_rad,
-            wind,
-            deck,
-            commands: Some(computer.commands),
-            theta_read: Some((computer.theta_read_rad, computer.theta_read_time_s)),
-            frame_starts,
-            wave_off,
-            wave_off_decided,
-            lateral,
-        };
-        self.computer = Some(computer);
-        held
+        held.pitch_noise_rad = pitch_noise_rad;
+        held.commands = Some(computer.commands);
+        held.theta_read = Some((computer.theta_read_rad, computer.theta_read_time_s));
+        held.frame_starts = frame_starts;
     }
 
     /// At the start of a flight-computer frame (`held.frame_starts`), computes the frame's
@@ -95,19 +109,63 @@ impl ClosedLoop {
         if !held.frame_starts {
             return;
         }
-        let Some(mut computer) = self.computer.take() else {
+        let Some(computer) = self.computer.as_mut() else {
             return;
         };
+        let mut scratch = std::mem::take(&mut computer.scratch);
         held.commands = None;
-        let signals = self.evaluate(t, x, held, taps, &mut computer.scratch);
-        computer.commands = HeldCommands {
+        let signals = self.evaluate(t, x, held, taps, &mut scratch);
+        self.hold_frame_commands(&signals, held);
+        if let Some(computer) = self.computer.as_mut() {
+            computer.scratch = scratch;
+        }
+    }
+
+    /// The frame's commands as [`ClosedLoop::compute_frame`] computes them, then the
+    /// signals at (`t`, `x`) with the inputs `held`, the loop's rate written into `rate`:
+    /// what the step starts from. Where holding a frame's commands changes nothing (taps
+    /// that are [`Taps::idempotent`], no users' blocks, no lateral loop: the loop reads its
+    /// held commands only where it would compute them), the frame's own evaluation is
+    /// the step's, and the loop is evaluated once instead of twice.
+    #[inline(always)]
+    pub(crate) fn compute_frame_and_evaluate<T: Taps>(
+        &mut self,
+        t: f64,
+        x: &[f64],
+        held: &mut HeldInputs,
+        taps: &T,
+        rate: &mut [f64],
+    ) -> Signals {
+        let frame_evaluated_once = held.frame_starts
+            && self.computer.is_some()
+            && taps.idempotent()
+            && self.user_blocks.is_empty()
+            && self.lateral.is_none();
+        if frame_evaluated_once {
+            held.commands = None;
+        } else if held.frame_starts {
+            self.compute_frame(t, x, held, taps);
+        }
+        let signals = self.evaluate(t, x, held, taps, rate);
+        if frame_evaluated_once {
+            self.hold_frame_commands(&signals, held);
+        }
+        signals
+    }
+
+    /// Holds the commands of a frame's `signals` in `held` and in the computer.
+    #[inline]
+    fn hold_frame_commands(&mut self, signals: &Signals, held: &mut HeldInputs) {
+        let commands = HeldCommands {
             elevator_rad: signals.elevator_command_rad,
             thrust_n: signals.thrust_command_n,
             direct_lift: signals.direct_lift_command.unwrap_or(0.0),
             lateral: signals.aileron_command_rad.zip(signals.rudder_command_rad),
         };
-        held.commands = Some(computer.commands);
-        self.computer = Some(computer);
+        held.commands = Some(commands);
+        if let Some(computer) = self.computer.as_mut() {
+            computer.commands = commands;
+        }
     }
 
     /// Advances the loop's discrete-time parts by `dt` after a step: the free-air

@@ -213,7 +213,6 @@ impl Simulation {
     /// (for an observation between steps; the run loop computes its own). Before the
     /// first step, with the inputs the first step will hold.
     pub fn signals(&self) -> Signals {
-        let mut rate = vec![0.0; self.state.len()];
         let held = if self.inputs_held {
             self.held
         } else {
@@ -230,8 +229,7 @@ impl Simulation {
             system.compute_frame(self.time_s, &self.state, &mut held, &NoTaps);
             held
         };
-        self.system
-            .evaluate(self.time_s, &self.state, &held, &NoTaps, &mut rate)
+        self.system.signals_at(self.time_s, &self.state, &held)
     }
 
     /// Draws the inputs the next step will hold (wind, pitch-sensor noise, the deck
@@ -242,12 +240,13 @@ impl Simulation {
     /// inputs of the last step. For observations between steps and for analyses.
     pub fn next_step_inputs(&mut self) -> HeldInputs {
         if self.end.is_none() && !self.held_for_next_step {
-            self.held = self.system.hold(
+            self.system.hold_into(
                 self.time_s,
                 &self.state,
                 &mut self.streams,
                 self.dt,
                 self.wave_off.is_some(),
+                &mut self.held,
             );
             self.system
                 .compute_frame(self.time_s, &self.state, &mut self.held, &NoTaps);
@@ -302,12 +301,13 @@ impl Simulation {
         }
         let t = self.time_s;
         if !self.held_for_next_step {
-            self.held = self.system.hold(
+            self.system.hold_into(
                 t,
                 &self.state,
                 &mut self.streams,
                 self.dt,
                 self.wave_off.is_some(),
+                &mut self.held,
             );
             self.inputs_held = true;
         }
@@ -320,12 +320,15 @@ impl Simulation {
             recorder.event(&event);
             self.pending.push_back(Stop::Event(event));
         }
-        // The frame's commands with this step's taps (again, if drawn early without).
-        self.system
-            .compute_frame(t, &self.state, &mut self.held, taps);
-        let signals = self
-            .system
-            .evaluate(t, &self.state, &self.held, taps, &mut self.k1);
+        // The frame's commands with this step's taps (again, if drawn early without),
+        // and the signals the step starts from.
+        let signals = self.system.compute_frame_and_evaluate(
+            t,
+            &self.state,
+            &mut self.held,
+            taps,
+            &mut self.k1,
+        );
         let approach = self.system.outer.is_approach();
         let mut end = self.check_state(&signals);
         if end.is_none() {

@@ -77,13 +77,28 @@ pub trait Taps {
         let _ = at;
         computed
     }
+
+    /// Whether tapping a command these taps have already given returns it unchanged, bit
+    /// for bit, at every point (`tap(at, tap(at, v)) == tap(at, v)`: a command kept or
+    /// replaced by a fixed value), with no side effect (nothing recorded). The run loop
+    /// then takes a flight-computer frame's own evaluation, whose commands the step holds,
+    /// as the step's (one evaluation instead of two). False unless a type says so.
+    #[inline(always)]
+    fn idempotent(&self) -> bool {
+        false
+    }
 }
 
 /// No taps: every command is used as computed.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct NoTaps;
 
-impl Taps for NoTaps {}
+impl Taps for NoTaps {
+    #[inline(always)]
+    fn idempotent(&self) -> bool {
+        true
+    }
+}
 
 /// Commands given from outside (the stepping API), each replacing what its loop
 /// computed; `None` leaves the loop in charge. A replaced loop keeps running in the
@@ -121,6 +136,11 @@ impl Taps for Overrides {
             LoopBreak::ClimbRateCommand | LoopBreak::DirectLiftCommand => None,
         };
         replacement.unwrap_or(computed)
+    }
+
+    #[inline(always)]
+    fn idempotent(&self) -> bool {
+        true
     }
 }
 
