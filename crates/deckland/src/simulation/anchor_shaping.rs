@@ -16,6 +16,10 @@ pub struct AnchorShaping {
     /// step.
     raise: Option<(f64, f64)>,
     frequency_radps: f64,
+    /// The filter's decay e^(−ω·dt) and the step dt it is for (NaN before the first
+    /// step): the step is the same at every call of a run, so the exponential is worked
+    /// out once, not twice a step.
+    decay: (f64, f64),
     /// Whether the forecast carries its σ (the ramp's height, the deck's climb rate), for
     /// risk-aware guidance and the probabilistic wave-off.
     pub(crate) uncertainty: bool,
@@ -39,6 +43,7 @@ impl AnchorShaping {
             anchor: None,
             raise: None,
             frequency_radps,
+            decay: (f64::NAN, f64::NAN),
             uncertainty: false,
         }
     }
@@ -56,12 +61,22 @@ impl AnchorShaping {
         self.raise.map_or(0.0, |(raise_m, _)| raise_m)
     }
 
+    /// The filter's decay e^(−ω·dt) over `dt`, worked out again only when `dt` changes.
+    #[inline]
+    fn decay_over(&mut self, dt: f64) -> f64 {
+        if self.decay.0 != dt {
+            self.decay = (dt, (-self.frequency_radps * dt).exp());
+        }
+        self.decay.1
+    }
+
     /// Moves the smoothed anchor over `dt` towards `target_m`, held over the step: the
     /// exact solution of ä = ω²(target − a) − 2ω·ȧ (critically damped), so stable at
     /// any step.
     #[inline]
     fn smooth_anchor(&mut self, target_m: f64, dt: f64) -> (f64, f64) {
-        let next = critically_damped_step(self.anchor, target_m, self.frequency_radps, dt);
+        let decay = self.decay_over(dt);
+        let next = critically_damped_step(self.anchor, target_m, self.frequency_radps, dt, decay);
         self.anchor = Some(next);
         next
     }
@@ -70,7 +85,8 @@ impl AnchorShaping {
     /// anchor's filter.
     #[inline]
     fn smooth_raise(&mut self, target_m: f64, dt: f64) -> (f64, f64) {
-        let next = critically_damped_step(self.raise, target_m, self.frequency_radps, dt);
+        let decay = self.decay_over(dt);
+        let next = critically_damped_step(self.raise, target_m, self.frequency_radps, dt, decay);
         self.raise = Some(next);
         next
     }
@@ -114,21 +130,21 @@ impl AnchorShaping {
 }
 
 /// One step `dt` of the critically damped filter ä = ω²(target − a) − 2ω·ȧ from
-/// `state` (height, rate) towards `target_m` held over the step, by its exact solution;
-/// `None` starts on the target at rest.
+/// `state` (height, rate) towards `target_m` held over the step, by its exact solution
+/// (`decay` = e^(−ω·dt)); `None` starts on the target at rest.
 #[inline]
 fn critically_damped_step(
     state: Option<(f64, f64)>,
     target_m: f64,
     omega: f64,
     dt: f64,
+    decay: f64,
 ) -> (f64, f64) {
     match state {
         None => (target_m, 0.0),
         Some((height, rate)) => {
             let error = height - target_m;
             let b = rate + omega * error;
-            let decay = (-omega * dt).exp();
             (
                 target_m + (error + b * dt) * decay,
                 (rate - omega * b * dt) * decay,

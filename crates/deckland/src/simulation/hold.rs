@@ -42,16 +42,19 @@ impl ClosedLoop {
     ) {
         let ship_state = self.ship_state(x);
         let aircraft = self.aircraft_state(x);
-        // The pose alone (its rate is not needed here).
-        let pose = match &self.lateral {
-            Some(_) => self.ship_pose(x, t).0,
-            None => self.ship.pose(&ship_state, self.ship_initial_x_m, t),
-        };
+        // The pose and its rate, once for the wind and the guidance computer.
+        let (pose, rate) = self.ship_pose(x, t);
         held.wind = self
             .wind
             .wind(t, pose.distance_aft_of_pitch_centre_m(aircraft.x_m));
-        let (deck, decision) =
-            self.guidance_computer_step(t, x, &aircraft, &ship_state, dt, waving_off);
+        let (deck, decision) = self.guidance_computer_step(
+            t,
+            x,
+            &aircraft,
+            (&ship_state, &pose, &rate),
+            dt,
+            waving_off,
+        );
         self.arrival_timing_step(t, dt, &aircraft, deck.as_ref(), waving_off);
         held.deck = deck;
         let lateral = self.hold_lateral(

@@ -12,29 +12,29 @@ use crate::control::{
     DeckReference, FlightPathGenerator, LateAbortInputs, WaveOffDecision, WaveOffInputs,
     WaveOffParameters,
 };
-use crate::environment::{DeckGeometry, ShipMotionState};
+use crate::environment::{DeckGeometry, ShipMotionState, ShipPose, ShipPoseRate};
 
 impl ClosedLoop {
     /// The guidance computer at the start of a step from `t` (state `x`): the deck
     /// predictor observes the ship, and in an approach gives the deck reference held over
     /// the step, on which the wave-off supervisor decides (unless `waving_off` already):
-    /// the reference and the decision, if one is taken now.
+    /// the reference and the decision, if one is taken now. The ship is its motion state,
+    /// pose and pose rate at `t` and `x` ([`ClosedLoop::ship_pose`]).
     pub(crate) fn guidance_computer_step(
         &mut self,
         t: f64,
         x: &[f64],
         aircraft: &AircraftState,
-        ship_state: &ShipMotionState,
+        (ship_state, pose, rate): (&ShipMotionState, &ShipPose, &ShipPoseRate),
         dt: f64,
         waving_off: bool,
     ) -> (Option<DeckReference>, Option<WaveOffDecision>) {
-        let (pose, rate) = self.ship_pose(x, t);
         let view = DeckView {
             ship_model: &self.ship,
             ship_state,
             deck: &self.deck,
-            pose: &pose,
-            rate: &rate,
+            pose,
+            rate,
             roll: self
                 .lateral
                 .as_ref()
