@@ -26,9 +26,14 @@ impl EulerTrig {
     /// The sines and cosines of `euler` = (φ, θ, ψ) (rad).
     #[inline]
     pub fn new(euler: [f64; 3]) -> Self {
-        let (sin_phi, cos_phi) = euler[0].sin_cos();
-        let (sin_theta, cos_theta) = euler[1].sin_cos();
-        let (sin_psi, cos_psi) = euler[2].sin_cos();
+        Self::of(euler.map(f64::sin_cos))
+    }
+
+    /// From the (sine, cosine) pairs of φ, θ and ψ.
+    #[inline]
+    fn of(
+        [(sin_phi, cos_phi), (sin_theta, cos_theta), (sin_psi, cos_psi)]: [(f64, f64); 3],
+    ) -> Self {
         Self {
             sin_phi,
             cos_phi,
@@ -43,17 +48,7 @@ impl EulerTrig {
     /// about a third of the cost (the 3-D approach's evaluations).
     #[inline]
     pub fn by_series(euler: [f64; 3]) -> Self {
-        let (sin_phi, cos_phi) = series_sin_cos(euler[0]);
-        let (sin_theta, cos_theta) = series_sin_cos(euler[1]);
-        let (sin_psi, cos_psi) = series_sin_cos(euler[2]);
-        Self {
-            sin_phi,
-            cos_phi,
-            sin_theta,
-            cos_theta,
-            sin_psi,
-            cos_psi,
-        }
+        Self::of(euler.map(series_sin_cos))
     }
 
     /// Euler-angle rates (φ̇, θ̇, ψ̇) from body rates (p, q, r): [`euler_rates`].
