@@ -25,6 +25,7 @@ pub mod lateral;
 mod layout;
 mod outcome;
 mod outer_loops;
+mod pitch_setup;
 mod recorder;
 mod runner;
 mod setup;

@@ -30,14 +30,14 @@ impl FreeResponse {
         }
     }
 
-    /// x(τ) from (x₀, ẋ₀): [`oscillator_forecast`].
+    /// x(τ) from (x₀, ẋ₀): [`oscillator_forecast`](super::forecast::oscillator_forecast).
     #[inline]
     pub fn value(&self, x0: f64, rate0: f64) -> f64 {
         let (sin, cos) = self.sin_cos;
         self.decay * (x0 * cos + (rate0 + self.decay_rate * x0) / self.damped * sin)
     }
 
-    /// ẋ(τ) from (x₀, ẋ₀): [`oscillator_forecast_rate`].
+    /// ẋ(τ) from (x₀, ẋ₀): [`oscillator_forecast_rate`](super::forecast::oscillator_forecast_rate).
     #[inline]
     pub fn rate(&self, x0: f64, rate0: f64) -> f64 {
         let (sin, cos) = self.sin_cos;
