@@ -110,33 +110,6 @@ fn heading_loop(weight: f64) -> (Loop, Margins, Margins) {
     (sweep, roll_margins, yaw_margins)
 }
 
-/// A law's transfer from its measurements [y, ω, δ] to its command at `s`.
-fn law_response(law: &LinearLaw, s: Complex<f64>) -> [Complex<f64>; 3] {
-    const N: usize = LinearLaw::MAX_STATES;
-    let mut resolvent = SMatrix::<Complex<f64>, N, N>::zeros();
-    for i in 0..N {
-        for j in 0..N {
-            resolvent[(i, j)] = Complex::from(-law.state_matrix[i][j]);
-        }
-        resolvent[(i, i)] += s;
-    }
-    let inverse = resolvent.try_inverse().unwrap();
-    let inputs = [
-        LinearLaw::MEASURED_ANGLE,
-        LinearLaw::RATE,
-        LinearLaw::SURFACE,
-    ];
-    inputs.map(|input| {
-        let mut value = Complex::from(law.output_inputs[input]);
-        for i in 0..N {
-            for j in 0..N {
-                value += law.output_states[i] * inverse[(i, j)] * law.input_matrix[j][input];
-            }
-        }
-        value
-    })
-}
-
 impl Loop {
     /// The margins at the aileron and at the rudder command, the other loop closed.
     fn margins(&self) -> (Margins, Margins) {
@@ -152,7 +125,10 @@ impl Loop {
                 * resolvent.try_inverse().unwrap()
                 * self.b.map(Complex::from);
             let delay = Complex::from_polar(1.0, -w * FLIGHT_COMPUTER_DELAY_S);
-            let (ka, kr) = (law_response(&self.roll, s), law_response(&self.yaw, s));
+            let (ka, kr) = (
+                self.roll.measurement_response(s),
+                self.yaw.measurement_response(s),
+            );
             let mut h = [[Complex::from(0.0); 2]; 2];
             for input in 0..2 {
                 for k in 0..3 {

@@ -144,32 +144,34 @@ fn plant_with_actuators(
     (a, b, m)
 }
 
-/// A law's transfer from its measurements [y, ω, δ] to its surface command at s = jω
-/// (command and sensor error zero).
-fn law_response(law: &LinearLaw, s: Complex<f64>) -> [Complex<f64>; 3] {
-    const N: usize = LinearLaw::MAX_STATES;
-    let mut resolvent = SMatrix::<Complex<f64>, N, N>::zeros();
-    for i in 0..N {
-        for j in 0..N {
-            resolvent[(i, j)] = Complex::from(-law.state_matrix[i][j]);
-        }
-        resolvent[(i, i)] += s;
-    }
-    let inverse = resolvent.try_inverse().unwrap_or_else(SMatrix::zeros);
-    let inputs = [
-        LinearLaw::MEASURED_ANGLE,
-        LinearLaw::RATE,
-        LinearLaw::SURFACE,
-    ];
-    inputs.map(|input| {
-        let mut value = Complex::from(law.output_inputs[input]);
+impl LinearLaw {
+    /// The law's transfer from its measurements [y, ω, δ] to its surface command at
+    /// `s` = jω (command and sensor error zero).
+    pub fn measurement_response(&self, s: Complex<f64>) -> [Complex<f64>; 3] {
+        const N: usize = LinearLaw::MAX_STATES;
+        let mut resolvent = SMatrix::<Complex<f64>, N, N>::zeros();
         for i in 0..N {
             for j in 0..N {
-                value += law.output_states[i] * inverse[(i, j)] * law.input_matrix[j][input];
+                resolvent[(i, j)] = Complex::from(-self.state_matrix[i][j]);
             }
+            resolvent[(i, i)] += s;
         }
-        value
-    })
+        let inverse = resolvent.try_inverse().unwrap_or_else(SMatrix::zeros);
+        let inputs = [
+            LinearLaw::MEASURED_ANGLE,
+            LinearLaw::RATE,
+            LinearLaw::SURFACE,
+        ];
+        inputs.map(|input| {
+            let mut value = Complex::from(self.output_inputs[input]);
+            for i in 0..N {
+                for j in 0..N {
+                    value += self.output_states[i] * inverse[(i, j)] * self.input_matrix[j][input];
+                }
+            }
+            value
+        })
+    }
 }
 
 /// The margins of each channel on the full lateral loop (module docs): at each frequency
@@ -199,7 +201,10 @@ pub fn full_lateral_margins(
         let inverse = resolvent.try_inverse().unwrap_or_else(SMatrix::zeros);
         let g = m.map(Complex::from) * inverse * b.map(Complex::from);
         let delay = Complex::from_polar(1.0, -w * delay_s);
-        let (ka, kr) = (law_response(roll_law, s), law_response(yaw_law, s));
+        let (ka, kr) = (
+            roll_law.measurement_response(s),
+            yaw_law.measurement_response(s),
+        );
         let mut h = [[Complex::from(0.0); 2]; 2];
         for input in 0..2 {
             for k in 0..3 {

@@ -301,8 +301,15 @@ mod tests {
     use super::*;
     use crate::environment::{LateralShipNoise, ShipMotionParameters, ShipNoise};
 
-    #[test]
-    fn the_held_view_carried_over_a_step_is_the_view_to_second_order() {
+    /// A deck on a ship steaming at 7.7 m/s, its 3-D approach's loop, and a ship state
+    /// away from rest (heave, pitch, roll, yaw and sway all moving).
+    fn steaming() -> (
+        DeckGeometry,
+        ShipMotion,
+        LateralLoop,
+        ShipMotionState,
+        LateralShipMotionState,
+    ) {
         let deck = DeckGeometry::default();
         let ship = ShipMotion::new(ShipMotionParameters {
             forward_speed_mps: 7.7,
@@ -314,6 +321,12 @@ mod tests {
         let lateral_state = LateralShipMotionState::from_array(&[
             0.01, 0.002, 0.003, 0.001, 0.0, 0.0, 0.4, 0.05, 0.0, 0.0,
         ]);
+        (deck, ship, lateral, ship_state, lateral_state)
+    }
+
+    #[test]
+    fn the_held_view_carried_over_a_step_is_the_view_to_second_order() {
+        let (deck, ship, lateral, ship_state, lateral_state) = steaming();
         let t = 10.0;
         let view = lateral.deck_view(&ship, &deck, &ship_state, &lateral_state, t);
         // At its own time the held view is the view, to the bit.
@@ -369,21 +382,11 @@ mod tests {
 
     #[test]
     fn with_a_flight_computer_the_frames_view_is_carried_over_the_frame() {
-        let deck = DeckGeometry::default();
-        let ship = ShipMotion::new(ShipMotionParameters {
-            forward_speed_mps: 7.7,
-            ..ShipMotionParameters::default()
-        })
-        .expect("valid");
-        let exact = super::super::build::test_loop(&deck, &ship);
+        let (deck, ship, exact, start, lateral_start) = steaming();
         let framed = LateralLoop {
             view_frame_period_s: Some(1.0 / 80.0),
             ..exact.clone()
         };
-        let start = ShipMotionState::from_array(&[0.3, 0.1, -0.05, 0.01, 0.2, 0.0, 0.03, 0.0]);
-        let lateral_start = LateralShipMotionState::from_array(&[
-            0.01, 0.002, 0.003, 0.001, 0.0, 0.0, 0.4, 0.05, 0.0, 0.0,
-        ]);
         let later = ShipMotionState::from_array(&[0.31, 0.1, -0.05, 0.01, 0.2, 0.0, 0.03, 0.0]);
         let lateral_later = LateralShipMotionState::from_array(&[
             0.011, 0.002, 0.003, 0.001, 0.0, 0.0, 0.4, 0.05, 0.0, 0.0,
@@ -416,17 +419,7 @@ mod tests {
 
     #[test]
     fn the_equivalent_longitudinal_pose_puts_the_aim_point_where_the_3d_geometry_does() {
-        let deck = DeckGeometry::default();
-        let ship = ShipMotion::new(ShipMotionParameters {
-            forward_speed_mps: 7.7,
-            ..ShipMotionParameters::default()
-        })
-        .expect("valid");
-        let lateral = super::super::build::test_loop(&deck, &ship);
-        let ship_state = ShipMotionState::from_array(&[0.3, 0.1, -0.05, 0.01, 0.2, 0.0, 0.03, 0.0]);
-        let lateral_state = LateralShipMotionState::from_array(&[
-            0.01, 0.002, 0.003, 0.001, 0.0, 0.0, 0.4, 0.05, 0.0, 0.0,
-        ]);
+        let (deck, ship, lateral, ship_state, lateral_state) = steaming();
         let view = lateral.deck_view(&ship, &deck, &ship_state, &lateral_state, 10.0);
         // The pose with the cached mean heading is the composition of the environment's
         // steaming pose and lateral completion, to the bit.
