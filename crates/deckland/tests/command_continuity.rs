@@ -3,7 +3,8 @@
 //! continuously as the hook crosses the ramp and the stabilator stays off its rate limit
 //! there. A linear shed (the design before) stepped the command by 1.5 m/s at the ramp
 //! (seed 1, t = 24.22 s) and again at the aim point, the pitch command by about 3°, and
-//! drove the 40-°/s stabilator onto its limit right over the ramp.
+//! drove the 40-°/s stabilator onto its limit right over the ramp. The wave-off's take-over
+//! blends in too: its switch to the climb command stepped the pitch command by 7–9°.
 
 #![allow(clippy::unwrap_used)] // tests fail loudly by design
 
@@ -229,8 +230,8 @@ fn heavy_sea_approach(seed: u64, protection: bool) -> (deckland::simulation::Out
         .iter()
         .map(|s| s.alpha_rad.to_degrees())
         .fold(f64::INFINITY, f64::min);
-    // Up to 22 s: before any wave-off's switch to its climb (a step of its own,
-    // docs/model.md §9) and past the protection's engagement at 18–19 s.
+    // Up to 22 s: before any wave-off's take-over (`the_wave_off_takes_over_without_a_step`)
+    // and past the protection's engagement at 18–19 s.
     let largest_step = recorder
         .samples
         .windows(11)
@@ -266,4 +267,69 @@ fn the_alpha_protection_keeps_the_heavy_sea_approach_in_the_envelope_without_a_s
         "unprotected: pitch command step {unprotected_step}°"
     );
     assert!(largest_step < 0.45, "pitch command step {largest_step}°");
+}
+
+/// The default approach at `seed`, which waves off, with the wave-off's take-over blended
+/// over `blend_s`: the decision's time (s), the largest change of the pitch command over
+/// 10 ms from the decision to the end of the run (the take-over, the climb and the
+/// hook's pass over the ramp, where the attitude floor fades in) and the largest over
+/// 10 ms in the second before the decision (the guidance alone) (deg).
+fn wave_off_take_over(seed: u64, blend_s: f64) -> (f64, f64, f64) {
+    use deckland::simulation::{Outcome, Stop};
+    let mut scenario = Scenario {
+        seed,
+        ..Scenario::default()
+    };
+    scenario.control.wave_off.climb_blend_s = blend_s;
+    let mut simulation = Simulation::new(&scenario).unwrap();
+    let mut recorder = TimeSeriesRecorder::every(0.001);
+    while !matches!(simulation.step(&mut recorder), Stop::Ended(_)) {}
+    assert_eq!(
+        simulation.summary().unwrap().outcome,
+        Outcome::WaveOff,
+        "seed {seed}"
+    );
+    let (decided_at_s, _) = simulation.wave_off_decision().unwrap();
+    let largest_step = |from_s: f64, to_s: f64| {
+        recorder
+            .samples
+            .windows(11)
+            .filter(|w| w[0].time_s >= from_s && w[10].time_s <= to_s)
+            .map(|w| {
+                (w[10].theta_ref_rad - w[0].theta_ref_rad)
+                    .abs()
+                    .to_degrees()
+            })
+            .fold(0.0_f64, f64::max)
+    };
+    (
+        decided_at_s,
+        largest_step(decided_at_s - 0.001, f64::INFINITY),
+        largest_step(decided_at_s - 1.0, decided_at_s - 0.001),
+    )
+}
+
+/// The wave-off's take-over (docs/model.md §9): the climb-rate command cross-fades from
+/// the guidance's (about −4.6 m/s) to the wave-off's +5 m/s along 3x² − 2x³ over the
+/// default 0.4 s, so the pitch command moves by at most K_Ps·1.5·Δc/T·10 ms =
+/// 2.0°/(m/s)·1.5·9.6 m/s/0.4 s·0.01 s = 0.72° in 10 ms (0.61–0.73° measured at these
+/// seeds: the climb rate moves too), bounded here by 1°, until it reaches the
+/// sink-rate loop's 8° authority. With the blend time 0 the command steps by 6.8–9.3°
+/// within 10 ms at the decision (the switch before the blend). Before the decision the
+/// guidance alone moves it by at most 0.3°. Seeds 2 and 27 wave off on the predicted
+/// landing-point displacement, 17 on the predicted touchdown sink rate (default
+/// approach, 3-DOF).
+#[test]
+fn the_wave_off_takes_over_without_a_step() {
+    for seed in [2, 17, 27] {
+        let (decided_at_s, largest_step, guidance_step) = wave_off_take_over(seed, 0.4);
+        assert!(
+            largest_step < 1.0,
+            "seed {seed}: pitch command step {largest_step}° after the decision at {decided_at_s} s"
+        );
+        assert!(guidance_step < 0.4, "seed {seed}: {guidance_step}° before");
+        let (stepped_at_s, step, _) = wave_off_take_over(seed, 0.0);
+        assert_eq!(stepped_at_s, decided_at_s, "seed {seed}");
+        assert!(step > 5.0, "seed {seed}: without the blend {step}°");
+    }
 }

@@ -255,3 +255,26 @@ fn the_late_abort_keys_outside_their_range_are_refused_by_name() {
         assert_eq!(parameters.validate().unwrap_err().path, key);
     }
 }
+
+/// The take-over's blend time: 0 (a step) and 2 s are accepted, −0.1 s and 2.5 s are
+/// refused by name with their value.
+#[test]
+fn the_climb_blend_time_outside_its_range_is_refused_by_name() {
+    for blend_s in [0.0, 0.4, 2.0] {
+        let p = WaveOffParameters {
+            climb_blend_s: blend_s,
+            ..WaveOffParameters::default()
+        };
+        assert!(p.validate().is_ok(), "{blend_s}");
+    }
+    for blend_s in [-0.1, 2.5, f64::NAN] {
+        let error = WaveOffParameters {
+            climb_blend_s: blend_s,
+            ..WaveOffParameters::default()
+        }
+        .validate()
+        .unwrap_err();
+        assert_eq!(error.path, "control.wave_off.climb_blend_s");
+        assert_eq!(error.value, format!("{blend_s}"));
+    }
+}

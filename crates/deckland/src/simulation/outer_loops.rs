@@ -4,6 +4,7 @@
 
 use super::alpha_floor::AlphaFloor;
 use super::taps::{LoopBreak, Taps};
+pub use super::wave_off::WaveOffFlight;
 use crate::control::pitch::command_shaping::JerkLimitedStep;
 use crate::control::{
     CommandRamp, DeckReference, FlightPathGenerator, LoopController, PathReference, WaveOffDecision,
@@ -54,46 +55,6 @@ pub enum OuterLoops {
         /// The angle-of-attack protection on the pitch command; `None` without it.
         alpha_floor: Option<AlphaFloor>,
     },
-}
-
-/// How the outer loops fly a wave-off (docs/model.md §9): a commanded climb through the
-/// sink-rate loop, with two floors under its pitch command.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct WaveOffFlight {
-    /// The climb rate commanded (m/s, up).
-    pub climb_rate_mps: f64,
-    /// The smallest angle of attack flown (rad): the pitch command is at least the
-    /// air-relative flight-path angle plus this.
-    pub min_alpha_rad: f64,
-    /// The ramp's distance aft of the landing point (m): once the hook is past it, the
-    /// pitch command is at least the approach attitude.
-    pub ramp_aft_of_aim_point_m: f64,
-}
-
-impl WaveOffFlight {
-    /// The pitch command `theta_rad` of the sink-rate loop with the wave-off's floors,
-    /// and whether a floor raised it. At full thrust the climb overshoots its command,
-    /// and the sink-rate loop pushes over: in the heavy sea's wake that took α below the
-    /// aerodynamic model's −5°. The attitude floor waits for the ramp (pitching up
-    /// before it swings the hook down towards it); the α floor does not, as losing the
-    /// wing is worse.
-    #[inline(always)]
-    fn floored_pitch(
-        &self,
-        theta_rad: f64,
-        inputs: &OuterLoopInputs,
-        deck: &DeckReference,
-    ) -> (f64, bool) {
-        let mut floor = inputs.air_path_angle_rad + self.min_alpha_rad;
-        if inputs.hook_x_m > deck.mean_aim.x_m - self.ramp_aft_of_aim_point_m {
-            floor = floor.max(inputs.theta_trim_rad);
-        }
-        if theta_rad < floor {
-            (floor, true)
-        } else {
-            (theta_rad, false)
-        }
-    }
 }
 
 /// The late abort (a staged decision after the wave-off's commit point,
@@ -275,18 +236,19 @@ impl OuterLoops {
                     let height_error_rate = path.climb_rate_mps - inputs.hook_climb_rate_mps;
                     // A wave-off commands its climb; the guidance no longer flies the path.
                     let flight = flight.filter(|_| wave_off);
+                    let approach = || {
+                        path.climb_rate_mps
+                            + guidance.output(
+                                height_error,
+                                inputs.guidance_integral_m_s,
+                                height_error_rate,
+                            )
+                    };
                     let command = taps.tap(
                         LoopBreak::ClimbRateCommand,
                         match flight {
-                            Some(flight) => flight.climb_rate_mps,
-                            None => {
-                                path.climb_rate_mps
-                                    + guidance.output(
-                                        height_error,
-                                        inputs.guidance_integral_m_s,
-                                        height_error_rate,
-                                    )
-                            }
+                            Some(flight) => flight.climb_rate_command(inputs.time_s, approach),
+                            None => approach(),
                         },
                     );
                     let error = command - inputs.climb_rate_mps;

@@ -75,6 +75,8 @@ fn outer_loops(
                     climb_rate_mps: control.wave_off.climb_rate_mps,
                     min_alpha_rad: control.wave_off.min_alpha_deg.to_radians(),
                     ramp_aft_of_aim_point_m: scenario.environment.deck.ramp_aft_of_aim_point_m,
+                    climb_blend_s: control.wave_off.climb_blend_s,
+                    decided_at_s: None,
                 }),
                 late_abort: LateAbort::new(
                     control.wave_off.late_abort_rate_per_s,
