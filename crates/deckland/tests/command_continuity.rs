@@ -312,11 +312,11 @@ fn wave_off_take_over(seed: u64, blend_s: f64) -> (f64, f64, f64) {
 /// The wave-off's take-over (docs/model.md §9): the climb-rate command cross-fades from
 /// the guidance's (about −4.6 m/s) to the wave-off's +5 m/s along 3x² − 2x³ over the
 /// default 0.4 s, so the pitch command moves by at most K_Ps·1.5·Δc/T·10 ms =
-/// 2.0°/(m/s)·1.5·9.6 m/s/0.4 s·0.01 s = 0.72° in 10 ms (0.61–0.73° measured at these
+/// 2.0°/(m/s)·1.5·9.6 m/s/0.4 s·0.01 s = 0.72° in 10 ms (0.61–0.70° measured at these
 /// seeds: the climb rate moves too), bounded here by 1°, until it reaches the
-/// sink-rate loop's 8° authority. With the blend time 0 the command steps by 6.8–9.3°
+/// sink-rate loop's 8° authority. With the blend time 0 the command steps by 6.8–7.9°
 /// within 10 ms at the decision (the switch before the blend). Before the decision the
-/// guidance alone moves it by at most 0.3°. Seeds 2 and 27 wave off on the predicted
+/// guidance alone moves it by at most 0.3° (bound 0.4°). Seeds 2 and 27 wave off on the predicted
 /// landing-point displacement, 17 on the predicted touchdown sink rate (default
 /// approach, 3-DOF).
 #[test]
