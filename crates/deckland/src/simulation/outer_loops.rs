@@ -234,7 +234,7 @@ impl OuterLoops {
                     let path = flight_path.reference(inputs.hook_x_m, inputs.hook_x_rate_mps, deck);
                     let height_error = path.height_m - inputs.hook_h_m;
                     let height_error_rate = path.climb_rate_mps - inputs.hook_climb_rate_mps;
-                    // A wave-off commands its climb; the guidance no longer flies the path.
+                    // A wave-off takes over from the guidance's climb-rate command (its blend).
                     let flight = flight.filter(|_| wave_off);
                     let approach = || {
                         path.climb_rate_mps
