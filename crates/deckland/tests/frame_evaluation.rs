@@ -6,7 +6,7 @@
 //! the same run, bit for bit.
 
 use deckland::recording::SummaryRecorder;
-use deckland::scenario::Scenario;
+use deckland::scenario::{load_scenario, Scenario};
 use deckland::simulation::{LoopBreak, NoTaps, Overrides, Simulation, Stop, Taps};
 
 /// The taps `T`, not declared idempotent: the general path, two evaluations per frame.
@@ -76,4 +76,20 @@ fn a_frame_evaluated_once_flies_the_run_of_two_evaluations_with_overrides() {
         ..Overrides::default()
     };
     assert_same_run(&scenario, &overrides, 8000);
+}
+
+#[test]
+fn a_frame_evaluated_once_flies_the_run_of_two_evaluations_in_the_3d_approach() {
+    // The crosswind approach: the lateral laws' aileron and rudder commands are held by
+    // the frames too, and the lineup guidance runs at them.
+    let text = include_str!("../../../scenarios/crosswind.toml");
+    let scenario = load_scenario(text, "crosswind.toml").expect("valid");
+    assert!(scenario.control.flight_computer_rate_hz.is_some());
+    assert_same_run(&scenario, &NoTaps, 30_000);
+    let overrides = Overrides {
+        bank_command_rad: Some(0.02),
+        rudder_rad: Some(0.0),
+        ..Overrides::default()
+    };
+    assert_same_run(&scenario, &overrides, 3000);
 }

@@ -176,12 +176,33 @@ impl AugmentedObserver {
         measurement: f64,
         known_input: f64,
     ) -> ObserverState {
+        self.derivative_with_power(state, measurement, known_input, |magnitude| {
+            magnitude.powf(self.alpha_step)
+        })
+    }
+
+    /// The exponent (α1 − 1)/3 of the one fractional power the derivative takes (ρ below).
+    pub fn power_exponent(&self) -> f64 {
+        self.alpha_step
+    }
+
+    /// [`AugmentedObserver::derivative`] with the power ρ = |e|^((α1 − 1)/3) evaluated by
+    /// `power` (called with |e| > 0, finite or not) instead of the library's `powf`; the
+    /// same operations otherwise.
+    #[inline(always)]
+    pub fn derivative_with_power(
+        &self,
+        state: &ObserverState,
+        measurement: f64,
+        known_input: f64,
+        power: impl FnOnce(f64) -> f64,
+    ) -> ObserverState {
         let e = state.x1 - measurement;
         let magnitude = e.abs();
         // With ρ = |e|^((α1 − 1)/3): |e|^α3 = |e|·ρ, |e|^α2 = |e|·ρ², |e|^α1 = |e|·ρ³, so
         // one power serves all three (the hot loop calls this four times per step).
         let (p3, p2, p1) = if magnitude > 0.0 {
-            let rho = magnitude.powf(self.alpha_step);
+            let rho = power(magnitude);
             let p3 = magnitude * rho;
             let p2 = p3 * rho;
             (p3, p2, p2 * rho)

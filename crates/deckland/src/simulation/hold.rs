@@ -127,9 +127,10 @@ impl ClosedLoop {
     /// The frame's commands as [`ClosedLoop::compute_frame`] computes them, then the
     /// signals at (`t`, `x`) with the inputs `held`, the loop's rate written into `rate`:
     /// what the step starts from. Where holding a frame's commands changes nothing (taps
-    /// that are [`Taps::idempotent`], no users' blocks, no lateral loop: the loop reads its
-    /// held commands only where it would compute them), the frame's own evaluation is
-    /// the step's, and the loop is evaluated once instead of twice.
+    /// that are [`Taps::idempotent`], no users' blocks: the loop, the 3-D approach's
+    /// lateral laws included, reads its held commands only where it would compute them),
+    /// the frame's own evaluation is the step's, and the loop is evaluated once instead
+    /// of twice.
     #[inline(always)]
     pub(crate) fn compute_frame_and_evaluate<T: Taps>(
         &mut self,
@@ -142,8 +143,7 @@ impl ClosedLoop {
         let frame_evaluated_once = held.frame_starts
             && self.computer.is_some()
             && taps.idempotent()
-            && self.user_blocks.is_empty()
-            && self.lateral.is_none();
+            && self.user_blocks.is_empty();
         if frame_evaluated_once {
             held.commands = None;
         } else if held.frame_starts {

@@ -41,9 +41,11 @@ use crate::estimation::ObserverParameters;
 use crate::parameters::{join, Bounds, ParameterError};
 
 pub mod design;
+mod fractional_power;
 mod parameters;
 mod sideslip;
 
+pub use fractional_power::{FractionalPower, ObserverPower};
 pub use parameters::{deserialize_roll_law, deserialize_yaw_law, DEFAULT_LATERAL_LAW};
 pub use sideslip::{SideslipBlend, SIDESLIP_BLEND_CROSSOVER_RADPS};
 
@@ -139,10 +141,13 @@ pub struct LateralDesignContext {
     pub actuator: ElevatorActuatorParameters,
 }
 
-/// The O-PD on a lateral channel: the pitch O-PD's equations on the channel's signals.
+/// The O-PD on a lateral channel: the pitch O-PD's equations on the channel's signals,
+/// the observer's fractional power either the library's `pow` or, in the 3-D approach,
+/// [`FractionalPower`] (within 2 ulp of it).
 #[derive(Debug, Clone, Copy)]
 pub struct ChannelObserverPd<I> {
     inner: ObserverPdController,
+    power: Option<FractionalPower>,
     _inputs: PhantomData<fn(&I)>,
 }
 
@@ -151,6 +156,14 @@ pub struct ChannelObserverPd<I> {
 pub struct ChannelPid<I> {
     inner: PidController,
     _inputs: PhantomData<fn(&I)>,
+}
+
+impl<I> ChannelPid<I> {
+    /// The pitch PID's derivative.
+    #[inline]
+    fn channel_derivative(&self, state: &[f64], inputs: &PitchLawInputs, rate: &mut [f64]) {
+        AxisLaw::derivative(&self.inner, state, inputs, rate);
+    }
 }
 
 macro_rules! delegate_axis_law {
@@ -178,7 +191,7 @@ macro_rules! delegate_axis_law {
 
             #[inline]
             fn derivative(&self, state: &[f64], inputs: &I, rate: &mut [f64]) {
-                AxisLaw::derivative(&self.inner, state, &inputs.channel().as_pitch(), rate);
+                self.channel_derivative(state, &inputs.channel().as_pitch(), rate);
             }
 
             fn disturbance_estimate_radps2(&self, state: &[f64]) -> Option<f64> {
@@ -283,9 +296,10 @@ impl LateralChannel {
     }
 }
 
-/// A registered law built for one channel.
+/// A registered law built for one channel (the O-PD boxed: it may carry the tables of
+/// [`FractionalPower`]).
 enum Built<I> {
-    ObserverPd(ChannelObserverPd<I>),
+    ObserverPd(Box<ChannelObserverPd<I>>),
     Pid(ChannelPid<I>),
 }
 
@@ -376,19 +390,26 @@ impl LateralLawParameters {
         &self,
         channel: LateralChannel,
         context: &LateralDesignContext,
+        power: ObserverPower,
     ) -> Result<Built<I>, ParameterError> {
         self.validate(channel.section())?;
         context.plant.validate()?;
         Ok(match self {
-            Self::ObserverPd(p) => Built::ObserverPd(ChannelObserverPd::<I> {
-                inner: ObserverPdController::with_gains(
+            Self::ObserverPd(p) => {
+                let inner = ObserverPdController::with_gains(
                     p.gains(context.plant)?,
                     p.observer,
                     PitchFeedback::ObserverEstimate,
                     context.plant,
-                )?,
-                _inputs: PhantomData,
-            }),
+                )?;
+                let exponent = inner.observer().power_exponent();
+                Built::ObserverPd(Box::new(ChannelObserverPd::<I> {
+                    inner,
+                    power: (power == ObserverPower::Tabulated)
+                        .then(|| FractionalPower::new(exponent)),
+                    _inputs: PhantomData,
+                }))
+            }
             Self::Pid(p) => Built::Pid(ChannelPid::<I> {
                 inner: PidController::new(&p.pitch(), context.plant)?,
                 _inputs: PhantomData,
@@ -401,12 +422,7 @@ impl LateralLawParameters {
         &self,
         context: &LateralDesignContext,
     ) -> Result<Box<dyn RollLaw>, ParameterError> {
-        Ok(
-            match self.build::<RollLawInputs>(LateralChannel::Roll, context)? {
-                Built::ObserverPd(law) => Box::new(law),
-                Built::Pid(law) => Box::new(law),
-            },
-        )
+        self.build_roll_with(context, ObserverPower::Library)
     }
 
     /// Builds the law on the yaw channel.
@@ -414,9 +430,34 @@ impl LateralLawParameters {
         &self,
         context: &LateralDesignContext,
     ) -> Result<Box<dyn YawLaw>, ParameterError> {
+        self.build_yaw_with(context, ObserverPower::Library)
+    }
+
+    /// Builds the law on the roll channel, an O-PD's observer taking its fractional power
+    /// as `power` says.
+    pub fn build_roll_with(
+        &self,
+        context: &LateralDesignContext,
+        power: ObserverPower,
+    ) -> Result<Box<dyn RollLaw>, ParameterError> {
         Ok(
-            match self.build::<YawLawInputs>(LateralChannel::Yaw, context)? {
-                Built::ObserverPd(law) => Box::new(law),
+            match self.build::<RollLawInputs>(LateralChannel::Roll, context, power)? {
+                Built::ObserverPd(law) => law,
+                Built::Pid(law) => Box::new(law),
+            },
+        )
+    }
+
+    /// Builds the law on the yaw channel, an O-PD's observer taking its fractional power
+    /// as `power` says.
+    pub fn build_yaw_with(
+        &self,
+        context: &LateralDesignContext,
+        power: ObserverPower,
+    ) -> Result<Box<dyn YawLaw>, ParameterError> {
+        Ok(
+            match self.build::<YawLawInputs>(LateralChannel::Yaw, context, power)? {
+                Built::ObserverPd(law) => law,
                 Built::Pid(law) => Box::new(law),
             },
         )

@@ -9,7 +9,9 @@ use crate::aircraft::six_dof::{
 use crate::aircraft::{ElevatorActuator, TrimRequest};
 use crate::control::heading_hold::HeadingHold;
 use crate::control::lateral::design::{channel_hardware, channel_plants};
-use crate::control::lateral::{LateralChannel, LateralDesignContext, LateralLawParameters};
+use crate::control::lateral::{
+    LateralChannel, LateralDesignContext, LateralLawParameters, ObserverPower,
+};
 use crate::control::lineup::LineupParameters;
 use crate::control::wave_off_lateral::LateralWaveOffLimits;
 use crate::environment::{
@@ -125,8 +127,11 @@ pub(crate) fn build(
         actuator: channel_hardware(aircraft, &model, channel).actuator,
     };
     let (roll, yaw) = lateral_laws(scenario);
-    let roll = roll.build_roll(&context(LateralChannel::Roll, roll_plant))?;
-    let yaw = yaw.build_yaw(&context(LateralChannel::Yaw, yaw_plant))?;
+    // The observers' fractional power by tables: eight of them a step (module docs of
+    // `FractionalPower`).
+    let power = ObserverPower::Tabulated;
+    let roll = roll.build_roll_with(&context(LateralChannel::Roll, roll_plant), power)?;
+    let yaw = yaw.build_yaw_with(&context(LateralChannel::Yaw, yaw_plant), power)?;
     let ship = LateralShipMotion::new(&env.ship)?;
     let mut ship_streams = LateralShipStreams::new(streams);
     let ship_state = ship.stationary_initial_state(&mut ship_streams);
