@@ -58,6 +58,26 @@ REWARDS: Dict[str, Any] = {
 }
 
 
+#: The longitudinal environment's settings over the default scenario when it is given no
+#: scenario: the 3-DOF aircraft behind a stationary ship. The default scenario is the 3-D
+#: approach (6-DOF, the ship at 15 kn); this environment stays the longitudinal one, bit
+#: for bit, with its published observation, reward and speed figures
+#: (``docs/rl-environment.md``, "Scenario").
+LONGITUDINAL_SETTINGS: Dict[str, Any] = {
+    "aircraft.model": "3dof",
+    "environment.ship.forward_speed_mps": 0.0,
+}
+
+
+def longitudinal_scenario() -> Scenario:
+    """The longitudinal environment's default: the default scenario flown by the 3-DOF
+    aircraft behind a stationary ship (:data:`LONGITUDINAL_SETTINGS`)."""
+    scenario = Scenario.default()
+    for key, value in LONGITUDINAL_SETTINGS.items():
+        scenario[key] = value
+    return scenario
+
+
 def _options(
     scenario: Optional[Scenario],
     control: str,
@@ -74,7 +94,7 @@ def _options(
     if rewards is not None:
         table.update(rewards)
     return (
-        scenario,
+        longitudinal_scenario() if scenario is None else scenario,
         control,
         float(control_interval_s),
         float(pitch_command_span_rad),
@@ -112,7 +132,8 @@ class CarrierLandingEnv(gymnasium.Env):
 
     ``control`` is ``"surfaces"``, ``"attitude"`` (the default) or ``"guidance"``
     (:data:`CONTROL_MODES`); ``scenario`` a :class:`deckland.Scenario` (the default:
-    adverse conditions; its automatic wave-off is turned off); ``control_interval_s``
+    :func:`longitudinal_scenario`, adverse conditions on the 3-DOF aircraft behind a
+    stationary ship; its automatic wave-off is turned off); ``control_interval_s``
     the length of a step; the spans scale the actions (zero is the trim):
     ``pitch_command_span_rad`` (10°), ``thrust_span_n`` (a quarter of the maximum
     thrust), ``elevator_span_rad`` (10°), ``climb_rate_span_mps`` (5 m/s); ``reward``

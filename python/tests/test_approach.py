@@ -84,11 +84,21 @@ def test_reset_replays_the_episode_and_a_new_seed_changes_it():
 
 
 def test_every_observation_key_is_documented():
-    observation = deckland.Approach().reset()
+    # The longitudinal approach's keys each by name; the 3-D approach (the default) adds
+    # the lineup and lateral signals under `approach.csv`'s names, as documented.
+    longitudinal = deckland.Scenario.default()
+    longitudinal["aircraft.model"] = "3dof"
+    longitudinal["environment.ship.forward_speed_mps"] = 0.0
+    observation = deckland.Approach(longitudinal).reset()
     doc = deckland.Approach.__doc__
     for key in observation:
         assert f"`{key}`" in doc, key
     assert all(isinstance(observation[k], float) for k in observation if k not in {"done", "outcome", "wire", "reason"})
+    three_d = deckland.Approach().reset()
+    columns = set(deckland.fly(seed=1).time_series.keys())
+    added = set(three_d) - set(observation)
+    assert added and added <= columns, added - columns
+    assert all(isinstance(three_d[k], float) for k in added)
 
 
 def test_a_pitch_command_replaces_guidance_and_the_sink_rate_loop():

@@ -14,6 +14,7 @@ import pytest
 from gymnasium.utils.env_checker import check_env
 
 import deckland
+from deckland.env import longitudinal_scenario
 from deckland.env3d import (
     CONTROL_MODES_3D,
     ENV_ID_3D,
@@ -224,7 +225,7 @@ def test_bad_options_are_refused_by_name():
     with pytest.raises(ValueError, match="rudder_span_rad"):
         CarrierLanding3DEnv(rudder_span_rad=float("nan"))
     with pytest.raises(ValueError, match="3-D approach"):
-        CarrierLanding3DEnv(scenario=deckland.Scenario.default())
+        CarrierLanding3DEnv(scenario=longitudinal_scenario())
     env = CarrierLanding3DEnv()
     env.reset(seed=1)
     with pytest.raises(ValueError, match="bank_command"):
@@ -299,7 +300,7 @@ def test_an_approach_steps_with_lateral_commands_in_place_of_the_lateral_loops()
     # Beyond a range, or in a 3-DOF approach: refused by name.
     with pytest.raises(ValueError, match="aileron_rad"):
         approach.step({"aileron_rad": 1.0})
-    flat = deckland.Approach(deckland.Scenario.default(), seed=3)
+    flat = deckland.Approach(longitudinal_scenario(), seed=3)
     assert "bank_command_rad" not in flat.action_ranges
     with pytest.raises(ValueError, match="3-D approach"):
         flat.step({"bank_command_rad": 0.1})

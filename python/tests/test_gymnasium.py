@@ -20,14 +20,16 @@ from deckland.env import (
     REWARDS,
     CarrierLandingEnv,
     CarrierLandingVecEnv,
+    longitudinal_scenario,
 )
 
 MODES = list(CONTROL_MODES)
 
 
 def calm(scenario=None):
-    """The default scenario in still air over a still deck, with a perfect pitch sensor."""
-    scenario = (scenario or deckland.Scenario.default()).copy()
+    """The environment's default scenario (the 3-DOF behind a stationary ship) in still
+    air over a still deck, with a perfect pitch sensor."""
+    scenario = (scenario or longitudinal_scenario()).copy()
     for key in (
         "environment.wind.mean_wind",
         "environment.wind.turbulence",

@@ -22,8 +22,9 @@ CLI_MAX_RUNS = 100_000
 
 
 def physical_ranges(scenario):
-    """Each action key's range from the scenario's parameters (degrees, per engine)."""
-    return {
+    """Each action key's range from the scenario's parameters (degrees, per engine); a
+    3-D approach adds the lateral keys, as the `Approach` documentation gives them."""
+    ranges = {
         "pitch_command_rad": (-math.pi / 2, math.pi / 2),
         "elevator_rad": (
             math.radians(scenario["aircraft.elevator_actuator.min_deflection_deg"]),
@@ -31,10 +32,26 @@ def physical_ranges(scenario):
         ),
         "thrust_n": (0.0, 2 * scenario["aircraft.engines.max_thrust_per_engine_n"]),
     }
+    # `approach.three_dimensional` is true, the default (a scenario lists it only when false).
+    if scenario["aircraft.model"] == "6dof":
+        aileron = math.radians(scenario["aircraft.aileron_actuator.travel_deg"])
+        rudder = math.radians(scenario["aircraft.rudder_actuator.travel_deg"])
+        ranges.update(
+            bank_command_rad=(-math.pi / 2, math.pi / 2),
+            sideslip_command_rad=(-math.radians(30.0), math.radians(30.0)),
+            aileron_rad=(-aileron, aileron),
+            rudder_rad=(-rudder, rudder),
+        )
+    return ranges
 
 
-def test_the_action_ranges_are_the_surfaces_travel_and_the_commands_envelope():
+@pytest.mark.parametrize("model", ["6dof", "3dof"])
+def test_the_action_ranges_are_the_surfaces_travel_and_the_commands_envelope(model):
+    # The default, the 3-D approach, and the longitudinal approach behind a still ship.
     scenario = deckland.Scenario.default()
+    if model == "3dof":
+        scenario["aircraft.model"] = "3dof"
+        scenario["environment.ship.forward_speed_mps"] = 0.0
     scenario["aircraft.elevator_actuator.min_deflection_deg"] = -20.0
     approach = deckland.Approach(scenario)
     expected = physical_ranges(scenario)

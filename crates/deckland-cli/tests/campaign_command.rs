@@ -229,10 +229,27 @@ fn print_default_is_a_valid_scenario_file() {
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("default.toml");
     std::fs::write(&path, &text).unwrap();
-    assert_success(&deckland(["scenario", "--check", path.to_str().unwrap()]));
+    // The realistic default is the 3-D approach (issue 27, item 7): the 6-DOF aircraft,
+    // the 9° angled deck, the ship at 15 kn = 7.7 m/s.
+    assert!(text.contains("\nmodel = \"6dof\""), "{text}");
+    assert!(text.contains("\nforward_speed_mps = 7.7 "), "{text}");
+    let checked = deckland(["scenario", "--check", path.to_str().unwrap()]);
+    assert_success(&checked);
+    let said = String::from_utf8(checked.stdout).unwrap();
+    assert!(
+        said.contains("the 3-D carrier approach (model 6dof, deck angle 9°, ship at 7.7 m/s)"),
+        "{said}"
+    );
     let _ = std::fs::remove_dir_all(&dir);
     let checked = deckland(["scenario", "--check", &scenario("heavy-sea.toml")]);
     assert_success(&checked);
+    let paper = deckland(["scenario", "--check", &scenario("paper-adverse.toml")]);
+    assert_success(&paper);
+    let said = String::from_utf8(paper.stdout).unwrap();
+    assert!(
+        said.contains("the longitudinal approach (model 3dof, ship at 0 m/s)"),
+        "{said}"
+    );
 }
 
 #[test]

@@ -74,7 +74,13 @@ fn every_json_document_is_documented_key_for_key() {
     let out = out.to_str().unwrap();
     let scenario = dir.join("short.toml");
     std::fs::create_dir_all(&dir).unwrap();
-    std::fs::write(&scenario, "[approach]\nstart_range_m = 300.0\n").unwrap();
+    // A short 3-DOF approach: the campaign's `summary.json` bullet documents a 3-DOF
+    // campaign (a 3-D campaign's additions are the bullet after it).
+    std::fs::write(
+        &scenario,
+        "[aircraft]\nmodel = \"3dof\"\n[approach]\nstart_range_m = 300.0\n",
+    )
+    .unwrap();
     let scenario = scenario.to_str().unwrap();
     let trim = json_keys(&stdout_of(&["trim", "--json"]));
     let mut linearize = json_keys(&stdout_of(&["linearize", "--json"]));

@@ -316,7 +316,18 @@ fn regression_scenario_errors_name_the_field_and_wrong_types_are_refused() {
 #[test]
 fn regression_check_means_flyable() {
     let dir = scratch("class-8");
-    let file = scenario_with(&dir, "slow.toml", &[("airspeed_mps", "40.0")]);
+    // On the 3-DOF behind a stationary ship the regression was found on (behind the
+    // steaming ship of the 3-D default the trim names the angle of attack it would need
+    // instead of not converging).
+    let file = scenario_with(
+        &dir,
+        "slow.toml",
+        &[
+            ("airspeed_mps", "40.0"),
+            ("model", "\"3dof\""),
+            ("forward_speed_mps", "0.0"),
+        ],
+    );
     let check = deckland(["scenario", "--check", file.to_str().unwrap()]);
     assert_refused(&check, 1, &["cannot be flown", "trim"]);
     let stderr = String::from_utf8_lossy(&check.stderr);

@@ -159,8 +159,10 @@ fn campaign_report_html_shows_the_outcomes_with_their_intervals() {
     let file = dir.join("short.toml");
     std::fs::write(
         &file,
-        "[approach]\nstart_range_m = 500.0\n\n[dispersion]\nstart_height_offset_sd_m = 1.0\n\
-         wind_over_deck_sd_mps = 2.0\n",
+        // A 3-DOF campaign: a 3-D campaign's lateral and trap-sheet tables push its
+        // plots below the first screen this test renders.
+        "[aircraft]\nmodel = \"3dof\"\n\n[approach]\nstart_range_m = 500.0\n\n[dispersion]\n\
+         start_height_offset_sd_m = 1.0\nwind_over_deck_sd_mps = 2.0\n",
     )
     .unwrap();
     let out = dir.join("out");

@@ -50,9 +50,11 @@ fn land_writes_every_result_and_prints_the_json_summary() {
     ] {
         assert!(header.split(',').any(|c| c == column), "column {column}");
     }
-    // About 21.8 s at one row per 10 ms.
+    // The default is the 3-D approach: in still air the deck moves away at the ship's
+    // 7.7 m/s, 9° off the final bearing, so the hook closes the 1500 m at
+    // 69.1·cos 3.5° − 7.7·cos 9° = 61.4 m/s: about 24.4 s at one row per 10 ms.
     let rows = csv.lines().count() - 1;
-    assert!((2000..2300).contains(&rows), "{rows} rows");
+    assert!((2300..2600).contains(&rows), "{rows} rows");
     let scenario = std::fs::read_to_string(dir.join("scenario.toml")).unwrap();
     assert!(scenario.contains("seed = 1") && scenario.contains("[control.guidance]"));
     for stem in [
@@ -62,6 +64,8 @@ fn land_writes_every_result_and_prints_the_json_summary() {
         "controls",
         "airspeed",
         "wind",
+        "plan_view",
+        "cross_track",
     ] {
         assert!(
             file_size(&dir.join(format!("{stem}.png"))) > 10_000,
@@ -71,10 +75,6 @@ fn land_writes_every_result_and_prints_the_json_summary() {
             file_size(&dir.join(format!("{stem}.svg"))) > 10_000,
             "{stem}.svg"
         );
-    }
-    // A 3-DOF approach has no lineup to draw.
-    for stem in ["plan_view", "cross_track"] {
-        assert!(!dir.join(format!("{stem}.svg")).exists(), "{stem}.svg");
     }
     let leftovers: Vec<_> = std::fs::read_dir(&dir)
         .unwrap()

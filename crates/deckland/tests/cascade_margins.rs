@@ -1,4 +1,5 @@
-//! The default cascade (realistic hardware) is stable with healthy margins on every loop,
+//! The default longitudinal cascade (realistic hardware, the 3-DOF aircraft behind a
+//! stationary ship: `Scenario::longitudinal`) is stable with healthy margins on every loop,
 //! the pitch loop included with the rate-limited actuator's dynamics and the flight
 //! computer's hold; the paper's pitch gains behind the paper's actuator and the paper's
 //! outer-loop gains are not (docs/model.md §5). Linear analysis, independent of
@@ -29,7 +30,8 @@ fn default_cascade_is_stable_with_bandwidth_separation_and_margins() {
                 pitch,
                 ..Default::default()
             },
-            ..Scenario::default()
+            // The longitudinal cascade's margins: the 3-DOF (the default flies the 6-DOF).
+            ..Scenario::default().longitudinal()
         };
         scenario.control.direct_lift.enabled = false;
         let margins = cascade_margins(&scenario).unwrap();
@@ -69,7 +71,7 @@ fn default_cascade_is_stable_with_bandwidth_separation_and_margins() {
 /// four times K_h the guidance loop falls below 30° (docs/no-oracle-results.md).
 #[test]
 fn direct_lift_keeps_every_loop_at_45_degrees_and_6_db() {
-    let mut scenario = Scenario::default();
+    let mut scenario = Scenario::default().longitudinal();
     assert!(scenario.control.direct_lift.enabled);
     let margins = cascade_margins(&scenario).unwrap();
     assert_eq!(margins.len(), 5, "{margins:?}");
@@ -92,7 +94,7 @@ fn direct_lift_keeps_every_loop_at_45_degrees_and_6_db() {
 fn paper_outer_loop_gains_give_an_unstable_cascade() {
     // Without direct lift, as the paper flew them (with it, the lift holds the height and
     // the cascade is stable: docs/landing-design.md).
-    let mut scenario = Scenario::default();
+    let mut scenario = Scenario::default().longitudinal();
     scenario.control.direct_lift.enabled = false;
     scenario.control.sink_rate = SinkRateControllerParameters::paper();
     scenario.control.guidance = GuidanceParameters::paper();

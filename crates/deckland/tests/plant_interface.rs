@@ -25,14 +25,15 @@ fn the_model_key_chooses_the_plant_and_its_named_states() {
         Some("aircraft.p_radps")
     );
     assert_eq!(simulation.system().plant().model(), PlantModel::SixDof);
-    // The 3-DOF is the default, with its ten states.
+    // The 6-DOF is the realistic default (the 3-D approach); "3dof" chooses the
+    // longitudinal model, with its ten states.
     let default = Simulation::new(&load_scenario("", "default.toml").unwrap()).unwrap();
-    assert_eq!(default.system().layout().aircraft.len, 10);
-    assert_eq!(default.system().plant().model(), PlantModel::ThreeDof);
-    assert_eq!(
-        default.system().plant().state_units(),
-        Aircraft::STATE_UNITS
-    );
+    assert_eq!(default.system().plant().model(), PlantModel::SixDof);
+    let three = load_scenario("[aircraft]\nmodel = \"3dof\"\n", "three.toml").unwrap();
+    let three = Simulation::new(&three).unwrap();
+    assert_eq!(three.system().layout().aircraft.len, 10);
+    assert_eq!(three.system().plant().model(), PlantModel::ThreeDof);
+    assert_eq!(three.system().plant().state_units(), Aircraft::STATE_UNITS);
     assert_eq!(SixDofAircraft::SURFACES, ["elevator", "aileron", "rudder"]);
 }
 

@@ -49,7 +49,7 @@ fn each_position_lasts_its_window_over_the_closing_speed() {
 
 #[test]
 fn a_longitudinal_approach_has_no_trap_sheet() {
-    let summary = Simulation::new(&Scenario::default())
+    let summary = Simulation::new(&Scenario::default().longitudinal())
         .unwrap()
         .run(&mut SummaryRecorder);
     assert!(summary.trap_sheet.is_none());

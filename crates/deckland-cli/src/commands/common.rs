@@ -139,10 +139,14 @@ impl Conditions {
 pub struct BaseScenarioArgs {
     /// Hardware of the default scenario: `realistic` (40 °/s stabilator, 80 Hz flight
     /// computer, controllers designed for them) or `paper` (ideal actuator, paper gains).
+    /// A pitch step and `sink` fly it on the longitudinal 3-DOF aircraft behind a
+    /// stationary ship, the longitudinal laws' design check.
     #[arg(long, value_enum, default_value = "realistic")]
     pub hardware: HardwareChoice,
     /// Fly a scenario file's aircraft, environment and controllers instead of a default
     /// scenario (its mission is replaced by this command's; `--hardware` is then unused).
+    /// The file's `[aircraft] model` flies, the realistic default `6dof` if it leaves the
+    /// key out: write `model = "3dof"` for the longitudinal aircraft.
     #[arg(long, value_name = "FILE", conflicts_with = "hardware")]
     pub scenario: Option<std::path::PathBuf>,
 }
@@ -153,6 +157,16 @@ impl BaseScenarioArgs {
         match &self.scenario {
             Some(path) => load_scenario_file(path),
             None => Ok(self.hardware.set().scenario()),
+        }
+    }
+
+    /// The scenario file's, or the hardware set's default scenario flown by the 3-DOF
+    /// aircraft behind a stationary ship ([`Scenario::longitudinal`]): what the
+    /// longitudinal laws' design checks (a pitch step, `sink`) fly.
+    pub fn longitudinal_base(&self) -> anyhow::Result<Scenario> {
+        match &self.scenario {
+            Some(path) => load_scenario_file(path),
+            None => Ok(self.hardware.set().scenario().longitudinal()),
         }
     }
 }

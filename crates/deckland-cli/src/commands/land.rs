@@ -30,7 +30,9 @@ pub struct LandArgs {
     #[arg(long, value_enum, default_value = "adverse")]
     pub conditions: Conditions,
     /// Hardware: `realistic` (40 °/s stabilator, 80 Hz flight computer, controllers
-    /// designed for them) or `paper` (the paper's ideal actuator and gains).
+    /// designed for them; the 3-D approach of the 6-DOF aircraft to the 9° angled deck of
+    /// a ship steaming at 15 kn) or `paper` (the paper's ideal actuator and gains; its
+    /// 3-DOF aircraft behind a stationary ship).
     #[arg(long, value_enum, default_value = "realistic")]
     pub hardware: HardwareChoice,
     /// Seed of every random stream, 0 to 2⁶³ − 1.

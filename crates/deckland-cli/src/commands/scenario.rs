@@ -3,7 +3,7 @@
 use super::common::{check_set_up, load_scenario_file};
 use anyhow::{bail, Context, Result};
 use clap::Args;
-use deckland::aircraft::{trim, Aircraft, TrimError, TrimRequest};
+use deckland::aircraft::{trim, Aircraft, PlantModel, TrimError, TrimRequest};
 use deckland::scenario::Scenario;
 use deckland::scenario::{Mission, DEFAULT_SCENARIO_TOML};
 use deckland::simulation::{SetupError, Simulation};
@@ -28,8 +28,12 @@ pub struct ScenarioArgs {
 pub fn run(args: &ScenarioArgs) -> Result<()> {
     if let Some(path) = &args.check {
         let scenario = load_scenario_file(path)?;
-        if let Err(SetupError::Trim(error @ TrimError::NoConvergence { .. })) =
-            Simulation::new(&scenario)
+        // Behind a stationary ship a too-slow approach does not converge; behind the
+        // default's steaming ship it converges to an α beyond the model: both are the
+        // airspeed's, and the hint says what trims.
+        if let Err(SetupError::Trim(
+            error @ (TrimError::NoConvergence { .. } | TrimError::AlphaOutOfRange { .. }),
+        )) = Simulation::new(&scenario)
         {
             bail!(
                 "{}: the scenario cannot be flown: cannot set up the scenario: cannot trim the \
@@ -40,8 +44,15 @@ pub fn run(args: &ScenarioArgs) -> Result<()> {
         }
         check_set_up(&scenario)
             .with_context(|| format!("{}: the scenario cannot be flown", path.display()))?;
+        let approach;
         let mission = match scenario.mission {
-            Mission::Approach => "an approach, for `deckland run` and `deckland campaign`",
+            Mission::Approach => {
+                approach = format!(
+                    "an approach, {}, for `deckland run` and `deckland campaign`",
+                    approach_kind(&scenario)
+                );
+                approach.as_str()
+            }
             Mission::PitchStep { .. } => {
                 "a pitch step (`deckland run` and `campaign` fly approaches only)"
             }
@@ -57,6 +68,25 @@ pub fn run(args: &ScenarioArgs) -> Result<()> {
         out!("{DEFAULT_SCENARIO_TOML}")?;
     }
     Ok(())
+}
+
+/// Which approach `scenario` flies, in words: the 3-D carrier approach (the realistic
+/// default) or the longitudinal one, with the model and the ship's speed.
+fn approach_kind(scenario: &Scenario) -> String {
+    let model = scenario.aircraft.model;
+    let speed = scenario.environment.ship.forward_speed_mps;
+    if model == PlantModel::SixDof && scenario.approach.three_dimensional {
+        format!(
+            "the 3-D carrier approach (model {}, deck angle {}°, ship at {speed} m/s)",
+            model.name(),
+            scenario.environment.deck.deck_angle_deg
+        )
+    } else {
+        format!(
+            "the longitudinal approach (model {}, ship at {speed} m/s)",
+            model.name()
+        )
+    }
 }
 
 /// Why the approach airspeed of `scenario` cannot be trimmed, as precisely as `deckland

@@ -104,7 +104,7 @@ pub(crate) fn fly(args: &SinkArgs) -> Result<SinkRun> {
         seconds: args.seconds,
     };
     // The rest as the library checks the mission flown, naming the options.
-    let base = args.base.base()?;
+    let base = args.base.longitudinal_base()?;
     let mut scenario = args.conditions.conditions().apply(base, args.seed);
     scenario.control.pitch = args.controller.parameters_for(&base);
     scenario.mission = Mission::sink_rate(args.sink_rate_mps, args.ramp_s, args.seconds);

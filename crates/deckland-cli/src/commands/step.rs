@@ -56,7 +56,8 @@ impl StepControllers {
 /// Which axis the step commands.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum StepAxis {
-    /// Pitch attitude (the 3-DOF aircraft and the scenario's pitch law).
+    /// Pitch attitude (the scenario's pitch law; on a hardware set's default the 3-DOF
+    /// aircraft behind a stationary ship).
     Pitch,
     /// Bank angle (the 6-DOF aircraft; roll law, the yaw law holding β = 0).
     Roll,
@@ -204,7 +205,7 @@ pub(crate) struct StepFlight {
 impl StepFlight {
     fn of(args: &StepArgs) -> Result<Self> {
         Ok(Self {
-            base: args.base.base()?,
+            base: args.base.longitudinal_base()?,
             conditions: args.conditions,
             seed: args.seed,
             step: PitchStep::new(args.step_deg, args.seconds),

@@ -274,13 +274,15 @@ pub fn temporary_files(folder: &Path) -> Vec<String> {
 }
 
 /// A short (500 m) adverse approach with every dispersion on, written to `dir/short.toml`;
-/// returns its path.
+/// returns its path. It flies the 3-DOF behind a stationary ship, the approach the tests
+/// that use it were written for (the default is the 3-D approach).
 pub fn short_dispersed_scenario(dir: &Path) -> String {
     std::fs::create_dir_all(dir).expect("scratch folder");
     let path = dir.join("short.toml");
     std::fs::write(
         &path,
-        "[approach]\nstart_range_m = 500.0\n\n[dispersion]\nstart_height_offset_sd_m = 1.0\n\
+        "[aircraft]\nmodel = \"3dof\"\n\n[environment.ship]\nforward_speed_mps = 0.0\n\n\
+         [approach]\nstart_range_m = 500.0\n\n[dispersion]\nstart_height_offset_sd_m = 1.0\n\
          airspeed_error_sd_mps = 1.0\nsea_state_log_sd = 0.2\nwind_over_deck_sd_mps = 2.0\n",
     )
     .expect("scenario file");

@@ -21,12 +21,13 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 pub enum PlantModel {
     /// The longitudinal F/A-18: 3 degrees of freedom in the vertical plane
-    /// (docs/model.md §2).
-    #[default]
+    /// (docs/model.md §2); the paper's set flies it.
     #[serde(rename = "3dof")]
     ThreeDof,
     /// The 6-DOF F/A-18 (docs/six-dof.md): the longitudinal model with the
-    /// lateral-directional data, the inertias, the aileron and the rudder.
+    /// lateral-directional data, the inertias, the aileron and the rudder; the realistic
+    /// set's default, which flies the 3-D approach (docs/three-d-approach.md).
+    #[default]
     #[serde(rename = "6dof")]
     SixDof,
 }

@@ -38,7 +38,8 @@ pub struct ShipMotionParameters {
     pub heave_rms_m: f64,
     /// Stationary RMS of pitch θ_s (deg); docs/model.md §3.1 default 1.5.
     pub pitch_rms_deg: f64,
-    /// Ship forward speed along +x (m/s); docs/model.md §3.1 default 0 (paper).
+    /// Ship forward speed along +x (m/s); docs/model.md §3.1: the realistic set's default
+    /// 7.7 (15 kn), the paper's set 0 (a stationary ship, as the paper).
     pub forward_speed_mps: f64,
     /// Stationary RMS of roll φ_s (deg); docs/model.md §3.7 default 1.0 (an assumption).
     pub roll_rms_deg: f64,
@@ -56,7 +57,7 @@ impl Default for ShipMotionParameters {
             enabled: true,
             heave_rms_m: 2.0,
             pitch_rms_deg: 1.5,
-            forward_speed_mps: 0.0,
+            forward_speed_mps: 7.7,
             roll_rms_deg: 1.0,
             yaw_rms_deg: 0.3,
             sway_rms_m: 0.5,

@@ -12,8 +12,9 @@ use serde::{Deserialize, Serialize};
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct AircraftSection {
-    /// The aircraft model: `3dof` (the longitudinal F/A-18, default; the paper's set
-    /// always flies it) or `6dof` (docs/six-dof.md).
+    /// The aircraft model: `6dof` (docs/six-dof.md; the realistic set's default, which
+    /// flies the 3-D approach) or `3dof` (the longitudinal F/A-18; the paper's set always
+    /// flies it).
     pub model: PlantModel,
     /// Aerodynamic configuration: `landing` (default) or `clean` (docs/model.md §2.3).
     pub configuration: ConfigurationName,

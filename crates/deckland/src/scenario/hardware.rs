@@ -14,6 +14,8 @@
 //! | deck-motion predictor | `oracle` (the ship's true state) | `estimator` (sensed motion, Kalman filter) |
 //! | glide path | linear blend, not ramp-aware | smooth blend, ramp-aware, touchdown correction |
 //! | automatic wave-off | none | on |
+//! | aircraft model | `3dof` | `6dof`: the 3-D approach (docs/three-d-approach.md) |
+//! | ship speed | 0 (stationary) | 7.7 m/s (15 kn) |
 //!
 //! A scenario names its set (`hardware = "paper"`); in a scenario file every key left
 //! out takes its set's value ([`super::load_scenario`]).
@@ -21,6 +23,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::{Mission, PitchCommand, Scenario};
+use crate::aircraft::PlantModel;
 use crate::control::pitch::LawTuning;
 use crate::control::{
     ArrivalTimingParameters, DirectLiftParameters, FlightPathParameters,
@@ -91,7 +94,19 @@ impl Scenario {
         scenario.control.wave_off = WaveOffParameters::paper();
         scenario.control.direct_lift = DirectLiftParameters::paper();
         scenario.control.arrival_timing = ArrivalTimingParameters::paper();
+        scenario.aircraft.model = PlantModel::ThreeDof;
+        scenario.environment.ship.forward_speed_mps = 0.0;
         scenario
+    }
+
+    /// This scenario flown by the longitudinal 3-DOF aircraft behind a stationary ship
+    /// (the paper's approach geometry): what the longitudinal laws' design checks,
+    /// `deckland step` (pitch) and `deckland sink`, fly on a hardware set's default, and
+    /// the environment `deckland environment` records.
+    pub fn longitudinal(mut self) -> Self {
+        self.aircraft.model = PlantModel::ThreeDof;
+        self.environment.ship.forward_speed_mps = 0.0;
+        self
     }
 
     /// The default scenario of `set` flying this scenario's pitch law (with the set's

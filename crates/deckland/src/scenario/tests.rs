@@ -261,3 +261,44 @@ fn the_paper_set_refuses_a_lateral_law() {
     let error = scenario.validate().expect_err("paper with a roll PID");
     assert_eq!(error.path, "control.roll", "{error}");
 }
+
+/// Issue 27, item 7: the realistic default is the 3-D approach (the 6-DOF aircraft on the
+/// 9° angled deck of a ship at 15 kn = 7.7 m/s that rolls, yaws and sways); the paper's
+/// set stays the 3-DOF behind a stationary ship, from a file too; a file's ship section
+/// that leaves the speed out keeps its set's.
+#[test]
+fn the_realistic_default_is_the_3d_approach_and_the_papers_set_the_3dof() {
+    let realistic = Scenario::default();
+    assert_eq!(realistic.aircraft.model, PlantModel::SixDof);
+    assert!(realistic.approach.three_dimensional);
+    let ship = realistic.environment.ship;
+    assert_eq!(ship.forward_speed_mps, 7.7);
+    assert_eq!(realistic.environment.deck.deck_angle_deg, 9.0);
+    assert_eq!(
+        (ship.roll_rms_deg, ship.yaw_rms_deg, ship.sway_rms_m),
+        (1.0, 0.3, 0.5)
+    );
+    assert_eq!(HardwareSet::Realistic.scenario(), realistic);
+
+    let paper = Scenario::paper();
+    assert_eq!(paper.aircraft.model, PlantModel::ThreeDof);
+    assert_eq!(paper.environment.ship.forward_speed_mps, 0.0);
+
+    let section_only = "[environment.ship]\nheave_rms_m = 1.0\n";
+    let steaming = load_scenario(section_only, "r.toml").expect("valid");
+    assert_eq!(steaming.environment.ship.forward_speed_mps, 7.7);
+    assert_eq!(steaming.aircraft.model, PlantModel::SixDof);
+    let paper_file = format!("hardware = \"paper\"\n{section_only}");
+    let stationary = load_scenario(&paper_file, "p.toml").expect("valid");
+    assert_eq!(stationary.environment.ship.forward_speed_mps, 0.0);
+    assert_eq!(stationary.aircraft.model, PlantModel::ThreeDof);
+
+    // The longitudinal design checks' scenario changes exactly these two keys.
+    let longitudinal = realistic.longitudinal();
+    assert_eq!(longitudinal.aircraft.model, PlantModel::ThreeDof);
+    assert_eq!(longitudinal.environment.ship.forward_speed_mps, 0.0);
+    let mut back = longitudinal;
+    back.aircraft.model = PlantModel::SixDof;
+    back.environment.ship.forward_speed_mps = 7.7;
+    assert_eq!(back, realistic);
+}
