@@ -25,6 +25,7 @@
 //! T/2 (a factor e^(−jωT/2) on every loop, each of which passes through one held
 //! command); the closed-loop eigenvalues leave it out.
 
+use crate::aircraft::PlantModel;
 use crate::control::pitch::PitchControllerParameters;
 use crate::scenario::Scenario;
 use crate::simulation::{ClosedLoop, HeldInputs, LoopBreak, LoopCut, SetupError, Simulation};
@@ -211,8 +212,15 @@ fn margins_from_response(cut: LoopBreak, omegas: &[f64], gains: &[Complex<f64>])
 /// The margins of the pitch, sink-rate, guidance and speed loops of `scenario`'s cascade,
 /// and of its direct-lift loop when it flies one, linearised at the start of an approach
 /// in ideal conditions.
+///
+/// The cascade is linearised on the 3-DOF aircraft whatever `scenario`'s model: wings
+/// level with the lateral states at rest, the 6-DOF flies the 3-DOF's longitudinal
+/// trajectory (docs/six-dof.md; the tests agree to 1e-9), while its linearisation here
+/// would carry the lateral modes with their loops open (the lateral laws' margins are
+/// `tests/lateral_laws.rs`'s and `tests/heading_hold_margins.rs`'s).
 pub fn cascade_margins(scenario: &Scenario) -> Result<Vec<LoopMargins>, SetupError> {
     let mut linear = scenario.ideal();
+    linear.aircraft.model = PlantModel::ThreeDof;
     linear.mission = crate::scenario::Mission::Approach;
     // The flight computer's zero-order hold enters as its equivalent delay of half a
     // frame: the linearisation needs the commands to follow the state continuously.
