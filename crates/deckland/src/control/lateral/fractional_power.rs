@@ -33,15 +33,14 @@ pub enum ObserverPower {
     /// The library's `pow`, as the pitch O-PD (the lateral step responses).
     #[default]
     Library,
-    /// [`FractionalPower`]'s tables, within 2 ulp of `pow` and about a third of its cost
+    /// [`FractionalPower`]'s tables, within 2 ulp of `pow` and about a quarter of its cost
     /// (the 3-D approach, which takes it eight times a step).
     Tabulated,
 }
 
 impl<I: ChannelSignals> ChannelObserverPd<I> {
-    /// The pitch O-PD's derivative ([`crate::control::pitch::ObserverPdController::derivative`]: the same
-    /// measurement and known input) with the observer's power by the tables where the law
-    /// has them.
+    /// The O-PD's derivative, with the observer's power by the tables where the law has
+    /// them ([`crate::control::pitch::ObserverPdController::derivative_with_power`]).
     #[inline]
     pub(super) fn channel_derivative(
         &self,
@@ -54,17 +53,9 @@ impl<I: ChannelSignals> ChannelObserverPd<I> {
             return;
         };
         let state = ObserverState::from_array(&[state[0], state[1], state[2]]);
-        let plant = self.inner.plant();
-        let measurement =
-            inputs.theta_measured_rad - inputs.theta_trim_rad + inputs.measurement_age_s * state.x2;
-        let known_input = plant.rate_damping_per_s * state.x2
-            + plant.control_power_per_s2 * (inputs.elevator_actual_rad - inputs.elevator_trim_rad);
-        let derivative = self.inner.observer().derivative_with_power(
-            &state,
-            measurement,
-            known_input,
-            |magnitude| power.of(magnitude),
-        );
+        let derivative = self
+            .inner
+            .derivative_with_power(&state, inputs, |magnitude| power.of(magnitude));
         rate.copy_from_slice(&derivative.to_array());
     }
 }

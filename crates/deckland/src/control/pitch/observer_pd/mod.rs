@@ -276,6 +276,20 @@ impl ObserverPdController {
     /// compensated to first order (the innovation compares x1 − τ·x2 with y).
     #[inline]
     pub fn derivative(&self, state: &ObserverState, inputs: &PitchLawInputs) -> ObserverState {
+        let exponent = self.observer.power_exponent();
+        self.derivative_with_power(state, inputs, |magnitude| magnitude.powf(exponent))
+    }
+
+    /// [`ObserverPdController::derivative`] with the observer's fractional power evaluated
+    /// by `power` ([`AugmentedObserver::derivative_with_power`]); the same operations
+    /// otherwise.
+    #[inline(always)]
+    pub fn derivative_with_power(
+        &self,
+        state: &ObserverState,
+        inputs: &PitchLawInputs,
+        power: impl FnOnce(f64) -> f64,
+    ) -> ObserverState {
         // A reading `age` seconds old is compared with the estimate brought back to its
         // time, x1 − age·x2: the same as the measurement brought forward by age·x2.
         let measurement = inputs.theta_measured_rad - inputs.theta_trim_rad
@@ -283,7 +297,8 @@ impl ObserverPdController {
         let known_input = self.plant.rate_damping_per_s * state.x2
             + self.plant.control_power_per_s2
                 * (inputs.elevator_actual_rad - inputs.elevator_trim_rad);
-        self.observer.derivative(state, measurement, known_input)
+        self.observer
+            .derivative_with_power(state, measurement, known_input, power)
     }
 }
 
