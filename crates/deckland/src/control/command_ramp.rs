@@ -25,6 +25,15 @@ impl CommandRamp {
     }
 }
 
+/// 3x² − 2x³: from 0 at x = 0 to 1 at x = 1 with zero slope at both ends, the blend of
+/// every mode change that must not step a command (the compensation's blend-in, the
+/// descent after the ramp, the heading hold, the wave-off's take-over). Callers clamp x
+/// to [0, 1].
+#[inline(always)]
+pub fn smooth_step(x: f64) -> f64 {
+    x * x * (3.0 - 2.0 * x)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -44,5 +53,16 @@ mod tests {
         };
         assert_eq!(step.fraction(0.999), 0.0);
         assert_eq!(step.fraction(1.0), 1.0);
+    }
+
+    #[test]
+    fn the_smooth_step_rises_from_0_to_1_with_zero_slope_at_both_ends() {
+        assert_eq!(smooth_step(0.0), 0.0);
+        assert_eq!(smooth_step(0.5), 0.5);
+        assert_eq!(smooth_step(1.0), 1.0);
+        // d/dx (3x² − 2x³) = 6x(1 − x): 0 at both ends, 1.5 in the middle.
+        let slope = |x: f64| (smooth_step(x + 1e-6) - smooth_step(x - 1e-6)) / 2e-6;
+        assert!(slope(0.0).abs() < 1e-5 && slope(1.0).abs() < 1e-5);
+        assert!((slope(0.5) - 1.5).abs() < 1e-6);
     }
 }

@@ -36,6 +36,7 @@
 //! white-noise-driven state: continuous but rough. Fed forward unfiltered it reaches the
 //! pitch command as noise and drove the cascade into saturation and divergence.
 
+use crate::control::smooth_step;
 use crate::environment::{EarthPoint, EarthVelocity};
 use crate::parameters::{Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
@@ -464,10 +465,9 @@ impl FlightPathGenerator {
                 // d(time to go)/dt = −1 at constant closure.
                 match p.compensation_blend {
                     CompensationBlend::Linear => (w, 1.0 / p.compensation_blend_s),
-                    CompensationBlend::Smooth => (
-                        w * w * (3.0 - 2.0 * w),
-                        6.0 * w * (1.0 - w) / p.compensation_blend_s,
-                    ),
+                    CompensationBlend::Smooth => {
+                        (smooth_step(w), 6.0 * w * (1.0 - w) / p.compensation_blend_s)
+                    }
                 }
             }
         } else {

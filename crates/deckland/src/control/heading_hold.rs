@@ -40,7 +40,7 @@ impl HeadingHold {
     /// in, w = 3s² − 2s³ between, s = (T_h − t_go)/T_b.
     pub fn weight(&self, time_to_go_s: f64) -> f64 {
         let s = ((self.time_to_go_s - time_to_go_s) / self.blend_s).clamp(0.0, 1.0);
-        s * s * (3.0 - 2.0 * s)
+        crate::control::smooth_step(s)
     }
 
     /// The angle the yaw law reads (rad): the measured sideslip `sideslip_rad` blended

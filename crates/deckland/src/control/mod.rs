@@ -30,7 +30,7 @@ pub use arrival_timing::{
     ArrivalTiming, ArrivalTimingInputs, ArrivalTimingParameters, CANDIDATE_SPACING_S,
     REPLAN_PERIOD_S,
 };
-pub use command_ramp::CommandRamp;
+pub use command_ramp::{smooth_step, CommandRamp};
 pub use direct_lift::DirectLiftParameters;
 pub use flight_path::{
     CompensationBlend, DeckForecast, DeckMotionFilter, DeckPredictorKind, DeckReference,

@@ -181,11 +181,10 @@ pub struct WaveOffFlight {
     pub decided_at_s: Option<f64>,
 }
 
-/// 3x² − 2x³ of `x` clamped to [0, 1]: from 0 to 1 with zero slope at both ends.
+/// [`crate::control::smooth_step`] of `x` clamped to [0, 1].
 #[inline(always)]
 fn smooth_share(x: f64) -> f64 {
-    let x = x.clamp(0.0, 1.0);
-    x * x * (3.0 - 2.0 * x)
+    crate::control::smooth_step(x.clamp(0.0, 1.0))
 }
 
 /// `theta_rad` raised towards `floor_rad` by the share `weight` (0 to 1) of the way, if

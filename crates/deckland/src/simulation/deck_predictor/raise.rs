@@ -30,7 +30,7 @@ pub(crate) fn raise_share(
     let g_max = 1.0 / (1.0 - b);
     // ∫₀ˣ (3s² − 2s³) ds = x³ − x⁴/2: the shed within a blend, per unit of b·g_max.
     let corner = |x: f64| x * x * x * (1.0 - 0.5 * x);
-    let smooth = |x: f64| x * x * (3.0 - 2.0 * x);
+    let smooth = crate::control::smooth_step;
     let (shed, rate) = if u < b {
         let x = u / b;
         (g_max * b * corner(x), g_max * smooth(x))
