@@ -94,9 +94,7 @@ impl Scenario {
         scenario.control.wave_off = WaveOffParameters::paper();
         scenario.control.direct_lift = DirectLiftParameters::paper();
         scenario.control.arrival_timing = ArrivalTimingParameters::paper();
-        scenario.aircraft.model = PlantModel::ThreeDof;
-        scenario.environment.ship.forward_speed_mps = 0.0;
-        scenario
+        scenario.longitudinal()
     }
 
     /// This scenario flown by the longitudinal 3-DOF aircraft behind a stationary ship
