@@ -1,6 +1,8 @@
-//! Analyses beside the simulation: trim, linearisation, mode identification, loop margins
-//! and open-loop step responses of the nonlinear airframe against its linear model.
+//! Analyses beside the simulation: trim, linearisation, mode identification, loop margins,
+//! open-loop step responses of the nonlinear airframe against its linear model, and what
+//! the deck's motion leaves unforeseeable (the physics floor and its cost).
 
+mod deck_floor;
 mod margins;
 mod modes;
 mod open_loop;
@@ -10,6 +12,10 @@ mod open_loop;
 pub use crate::aircraft::{
     linearize, trim, LinearModel, TrimError, TrimPoint, TrimRequest, TrimResiduals, INPUT_NAMES,
     INPUT_UNITS, STATE_NAMES, STATE_UNITS,
+};
+pub use deck_floor::{
+    deck_point_floor, deck_point_stationary_sigma, hard_landing_decision_bound,
+    ramp_clearance_for_strike_rate, DeckPointFloor, HardLandingBound,
 };
 pub use margins::{cascade_margins, LoopMargins};
 
