@@ -1,62 +1,111 @@
 #!/usr/bin/env python3
-"""Draws docs/images/boarding_trade.svg: boarding against catastrophes (ramp strikes and
-hard landings) for the variants of the risk-aware design tried in the paper's sea.
+"""Draws docs/images/boarding_trade.svg: boarding against catastrophes in the paper's sea
+as the path's least clearance over the forecast ramp (`ramp_clearance_margin_m`, m_R)
+grows, with the 95 % upper bound of each catastrophic rate.
 
-Each point is one `deckland campaign FILE --runs 400 --seed 101 --threads 2`, FILE the
-printed default with the keys named changed (docs/no-oracle-results.md gives the rows).
-Standard library only: python3 docs/images/boarding_trade.py > docs/images/boarding_trade.svg
+Each point is `deckland campaign FILE --runs 3000 --seed 2026 --threads 2`, FILE the
+printed default with `[control.flight_path]` `ramp_clearance_margin_m` set
+(docs/no-oracle-results.md gives the rows). Standard library only:
+python3 docs/images/boarding_trade.py > docs/images/boarding_trade.svg
 """
+import math
 
-# (label, boarding %, ramp strikes, hard landings) in 400 approaches, seed 101.
+RUNS = 3000
+# (m_R in m, boardings, ramp strikes, hard landings) in 3000 approaches, seed 2026.
 POINTS = [
-    ("fixed 2.5 m margin, 1.5 m wave-off limit", 65.0, 3, 2),
-    ("p_R 0.1 %", 47.5, 0, 5),
-    ("p_R 1 %", 62.5, 0, 2),
-    ("p_R 2 %", 65.0, 0, 3),
-    ("p_R 5 %", 66.0, 2, 2),
-    ("p_R 1 %, m_R 2 m", 65.8, 0, 2),
-    ("p_R 2 %, m_R 2 m (default)", 68.0, 0, 3),
-    ("p_R 5 %, m_R 2 m", 69.5, 2, 3),
-    ("wave-off at P(ramp) 1 %", 25.0, 0, 1),
-    ("wave-off at P(hard) 5 %", 39.8, 3, 1),
-    ("default, flare at 4 m/s", 56.2, 0, 1),
+    (2.0, 1913, 7, 16),
+    (2.5, 0, 0, 0),
+    (3.0, 0, 0, 0),
+    (3.5, 0, 0, 0),
+    (3.9, 0, 0, 0),
 ]
-RUNS = 400
-W, H, LEFT, BOTTOM, TOP, RIGHT = 720, 440, 70, 50, 20, 250
+DEFAULT_M_R = 2.0
+W, H, LEFT, BOTTOM, TOP, RIGHT = 720, 420, 70, 50, 30, 170
 
 
-def x_of(catastrophes):
-    return LEFT + (catastrophes / RUNS * 100.0) / 1.5 * (W - LEFT - RIGHT)
+def upper_bound(events, n, confidence=0.95):
+    """One-sided Clopper–Pearson upper bound of a binomial rate, by bisection."""
+    if events >= n:
+        return 1.0
+
+    def cdf(p):
+        log_p, log_q = math.log(p), math.log1p(-p)
+        total = 0.0
+        for k in range(events + 1):
+            log_term = (math.lgamma(n + 1) - math.lgamma(k + 1) - math.lgamma(n - k + 1)
+                        + k * log_p + (n - k) * log_q)
+            total += math.exp(log_term)
+        return total
+
+    low, high = 0.0, 1.0
+    for _ in range(100):
+        middle = 0.5 * (low + high)
+        if cdf(middle) > 1.0 - confidence:
+            low = middle
+        else:
+            high = middle
+    return high
 
 
-def y_of(boarding):
-    return H - BOTTOM - (boarding - 20.0) / 55.0 * (H - BOTTOM - TOP)
+def x_of(boarding_pct):
+    return LEFT + (boarding_pct - 50.0) / 20.0 * (W - LEFT - RIGHT)
 
 
-out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" '
-       'font-family="sans-serif" font-size="11">',
-       f'<rect width="{W}" height="{H}" fill="white"/>']
-x0, x1, y0, y1 = LEFT, W - RIGHT, H - BOTTOM, TOP
-out.append(f'<line x1="{x0}" y1="{y0}" x2="{x1}" y2="{y0}" stroke="black"/>')
-out.append(f'<line x1="{x0}" y1="{y0}" x2="{x0}" y2="{y1}" stroke="black"/>')
-for pct in [0.0, 0.25, 0.5, 0.75, 1.0, 1.25, 1.5]:
-    x = x_of(pct / 100.0 * RUNS)
-    out.append(f'<line x1="{x:.1f}" y1="{y0}" x2="{x:.1f}" y2="{y0 + 4}" stroke="black"/>')
-    out.append(f'<text x="{x:.1f}" y="{y0 + 16}" text-anchor="middle">{pct:.2f}</text>')
-for boarding in range(20, 76, 10):
-    y = y_of(boarding)
-    out.append(f'<line x1="{x0 - 4}" y1="{y:.1f}" x2="{x0}" y2="{y:.1f}" stroke="black"/>')
-    out.append(f'<text x="{x0 - 8}" y="{y + 4:.1f}" text-anchor="end">{boarding}</text>')
-out.append(f'<text x="{(x0 + x1) / 2}" y="{H - 12}" text-anchor="middle">'
-           'ramp strikes + hard landings (% of 400 approaches)</text>')
-out.append(f'<text x="16" y="{(y0 + y1) / 2}" text-anchor="middle" '
-           f'transform="rotate(-90 16 {(y0 + y1) / 2})">boarding (%)</text>')
-for label, boarding, strikes, hard in POINTS:
-    x, y = x_of(strikes + hard), y_of(boarding)
-    colour = "#c00" if strikes else "#06c"
-    out.append(f'<circle cx="{x:.1f}" cy="{y:.1f}" r="4" fill="{colour}"/>')
-    out.append(f'<text x="{x + 7:.1f}" y="{y + 4:.1f}">{label}</text>')
-out.append(f'<text x="{x1 - 40}" y="{TOP + 12}" fill="#c00">red: with ramp strikes</text>')
-out.append(f'<text x="{x1 - 40}" y="{TOP + 26}" fill="#06c">blue: none</text>')
-out.append("</svg>")
-print("\n".join(out))
+def y_of(rate_pct):
+    return H - BOTTOM - rate_pct / 1.2 * (H - BOTTOM - TOP)
+
+
+def main():
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{W}" height="{H}" '
+           'font-family="sans-serif" font-size="11">',
+           f'<rect width="{W}" height="{H}" fill="white"/>']
+    x0, x1, y0, y1 = LEFT, W - RIGHT, H - BOTTOM, TOP
+    out.append(f'<line x1="{x0}" y1="{y0}" x2="{x1}" y2="{y0}" stroke="black"/>')
+    out.append(f'<line x1="{x0}" y1="{y0}" x2="{x0}" y2="{y1}" stroke="black"/>')
+    for boarding in range(50, 71, 5):
+        x = x_of(boarding)
+        out.append(f'<line x1="{x:.1f}" y1="{y0}" x2="{x:.1f}" y2="{y0 + 4}" stroke="black"/>')
+        out.append(f'<text x="{x:.1f}" y="{y0 + 16}" text-anchor="middle">{boarding}</text>')
+    for tenth in range(0, 13, 2):
+        rate = tenth / 10.0
+        y = y_of(rate)
+        out.append(f'<line x1="{x0 - 4}" y1="{y:.1f}" x2="{x0}" y2="{y:.1f}" stroke="black"/>')
+        out.append(f'<text x="{x0 - 8}" y="{y + 4:.1f}" text-anchor="end">{rate:.1f}</text>')
+    out.append(f'<text x="{(x0 + x1) / 2}" y="{H - 12}" text-anchor="middle">'
+               f'boarding (% of {RUNS} approaches)</text>')
+    out.append(f'<text x="16" y="{(y0 + y1) / 2}" text-anchor="middle" '
+               f'transform="rotate(-90 16 {(y0 + y1) / 2})">rate (%), bar to the 95 % upper '
+               'bound</text>')
+    target = x_of(65.0)
+    out.append(f'<line x1="{target:.1f}" y1="{y0}" x2="{target:.1f}" y2="{y1}" '
+               'stroke="#888" stroke-dasharray="4 3"/>')
+    out.append(f'<text x="{target + 4:.1f}" y="{y1 + 10}" fill="#555">65 % boarding</text>')
+    hard_limit = y_of(0.1)
+    out.append(f'<line x1="{x0}" y1="{hard_limit:.1f}" x2="{x1}" y2="{hard_limit:.1f}" '
+               'stroke="#888" stroke-dasharray="4 3"/>')
+    out.append(f'<text x="{x1 + 4}" y="{hard_limit + 4:.1f}" fill="#555">0.1 % hard landings</text>')
+    for column, colour, label, dx in [(2, "#c00", "ramp strikes", -3), (3, "#e80", "hard landings", 3)]:
+        previous = None
+        for point in POINTS:
+            boarding = 100.0 * point[1] / RUNS
+            rate = 100.0 * point[column] / RUNS
+            bound = 100.0 * upper_bound(point[column], RUNS)
+            x, y = x_of(boarding) + dx, y_of(rate)
+            out.append(f'<line x1="{x:.1f}" y1="{y:.1f}" x2="{x:.1f}" y2="{y_of(bound):.1f}" '
+                       f'stroke="{colour}"/>')
+            out.append(f'<circle cx="{x:.1f}" cy="{y:.1f}" r="4" fill="{colour}"/>')
+            if previous:
+                out.append(f'<line x1="{previous[0]:.1f}" y1="{previous[1]:.1f}" x2="{x:.1f}" '
+                           f'y2="{y:.1f}" stroke="{colour}" stroke-opacity="0.5"/>')
+            previous = (x, y)
+            if column == 2:
+                name = f"m_R {point[0]} m" + (" (default)" if point[0] == DEFAULT_M_R else "")
+                out.append(f'<text x="{x:.1f}" y="{y0 - 8 - 12 * (POINTS.index(point) % 2):.1f}" '
+                           f'text-anchor="middle" fill="#333">{name}</text>')
+        out.append(f'<text x="{x1 + 4}" y="{y1 + 30 + 14 * column}" fill="{colour}">{label}</text>')
+    out.append("</svg>")
+    print("\n".join(out))
+
+
+if __name__ == "__main__":
+    main()
