@@ -65,6 +65,27 @@ pub struct DirectLiftParameters {
     /// ΔC_L,ff = f·m·ḧ_path/(q̄S) (–); 1, the exact inversion of the lift's effect, 0 none
     /// (docs/model.md §5.9).
     pub acceleration_feedforward: f64,
+    /// Extra lift-coefficient increment per metre of hook height error close to the deck,
+    /// ΔK_h (1/m), in full below `close_in_time_to_go_s` and blended in as 3x² − 2x³ over
+    /// the `close_in_blend_s` before it, scheduled on the sea state (below); 0.2 (K_h
+    /// 0.35 in all close in, where direct lift's own loop keeps 47° of phase margin),
+    /// 0 none (docs/landing-design.md, "Touchdown scatter in a moderate sea"); [0, 10].
+    pub close_in_height_gain_per_m: f64,
+    /// Time to go below which the close-in gain acts in full (s); [0, 10].
+    pub close_in_time_to_go_s: f64,
+    /// Time over which the close-in gain blends in before `close_in_time_to_go_s` (s),
+    /// so that the command has no step; (0, 10].
+    pub close_in_blend_s: f64,
+    /// The sea state up to which the close-in gain acts in full: the ship model's
+    /// stationary σ of the landing point's height, σ_L = √(σ_z² + (d·σ_θ)²) (m), σ_z and
+    /// σ_θ the RMS heave and pitch, d the landing point's distance aft of the pitch centre
+    /// (heave and pitch are independent in the model, docs/model.md §3.1); 2.0 m (the
+    /// moderate sea's σ_L is 1.46 m, the paper's 2.91 m); [0, 20].
+    pub close_in_full_sea_sigma_m: f64,
+    /// The sea state from which the close-in gain is off, σ_L (m), the gain blended as
+    /// 3x² − 2x³ between the two: in a large sea the deck's motion close in is followed
+    /// no harder than over the approach; 2.5 m; (`close_in_full_sea_sigma_m`, 20].
+    pub close_in_no_sea_sigma_m: f64,
 }
 
 impl Default for DirectLiftParameters {
@@ -80,6 +101,11 @@ impl Default for DirectLiftParameters {
             flare_sink_rate_mps: 5.0,
             flare_gain_s_per_m: 0.3,
             acceleration_feedforward: 1.0,
+            close_in_height_gain_per_m: 0.2,
+            close_in_time_to_go_s: 2.0,
+            close_in_blend_s: 1.0,
+            close_in_full_sea_sigma_m: 2.0,
+            close_in_no_sea_sigma_m: 2.5,
         }
     }
 }
@@ -89,6 +115,7 @@ impl DirectLiftParameters {
     pub fn paper() -> Self {
         Self {
             enabled: false,
+            close_in_height_gain_per_m: 0.0,
             ..Self::default()
         }
     }
@@ -122,7 +149,71 @@ impl DirectLiftParameters {
             SECTION,
             "acceleration_feedforward",
             self.acceleration_feedforward,
-        )
+        )?;
+        Bounds::closed(0.0, 10.0).check(
+            SECTION,
+            "close_in_height_gain_per_m",
+            self.close_in_height_gain_per_m,
+        )?;
+        Bounds::closed(0.0, 10.0).check(
+            SECTION,
+            "close_in_time_to_go_s",
+            self.close_in_time_to_go_s,
+        )?;
+        Bounds::positive_up_to(10.0).check(SECTION, "close_in_blend_s", self.close_in_blend_s)?;
+        Bounds::closed(0.0, 20.0).check(
+            SECTION,
+            "close_in_full_sea_sigma_m",
+            self.close_in_full_sea_sigma_m,
+        )?;
+        Bounds::closed(self.close_in_full_sea_sigma_m.max(0.0), 20.0)
+            .exclusive_min()
+            .check(
+                SECTION,
+                "close_in_no_sea_sigma_m",
+                self.close_in_no_sea_sigma_m,
+            )
+    }
+
+    /// The ship model's stationary σ of the landing point's height (m), σ_L =
+    /// √(σ_z² + (d·σ_θ)²), for an RMS heave `heave_rms_m`, an RMS pitch `pitch_rms_deg`
+    /// and the landing point `arm_m` aft of the pitch centre.
+    pub fn landing_point_height_sigma_m(heave_rms_m: f64, pitch_rms_deg: f64, arm_m: f64) -> f64 {
+        heave_rms_m.hypot(arm_m * pitch_rms_deg.to_radians())
+    }
+
+    /// The law for a sea whose landing point's height has the stationary σ
+    /// `landing_point_sigma_m` (m): the close-in gain scheduled on it, in full up to
+    /// `close_in_full_sea_sigma_m`, none from `close_in_no_sea_sigma_m`, 3x² − 2x³ of
+    /// the way between.
+    pub fn for_sea(&self, landing_point_sigma_m: f64) -> Self {
+        if self.close_in_height_gain_per_m > 0.0 {
+            let x = ((self.close_in_no_sea_sigma_m - landing_point_sigma_m)
+                / (self.close_in_no_sea_sigma_m - self.close_in_full_sea_sigma_m))
+                .clamp(0.0, 1.0);
+            Self {
+                close_in_height_gain_per_m: self.close_in_height_gain_per_m
+                    * crate::control::smooth_step(x),
+                ..*self
+            }
+        } else {
+            *self
+        }
+    }
+
+    /// The close-in gain's increment for the height error `error_m` (m) at `time_to_go_s`
+    /// (s): ΔK_h·b·error_m, b = 0 above T_c + B, 1 below T_c, 3x² − 2x³ of
+    /// x = (T_c + B − t_go)/B between; exactly 0 with no gain.
+    #[inline]
+    pub fn close_in(&self, error_m: f64, time_to_go_s: f64) -> f64 {
+        if self.close_in_height_gain_per_m > 0.0 {
+            let x = ((self.close_in_time_to_go_s + self.close_in_blend_s - time_to_go_s)
+                / self.close_in_blend_s)
+                .clamp(0.0, 1.0);
+            self.close_in_height_gain_per_m * crate::control::smooth_step(x) * error_m
+        } else {
+            0.0
+        }
     }
 
     /// The commanded lift-coefficient increment for the hook's height error `error_m`
@@ -256,6 +347,113 @@ mod tests {
         assert_eq!(dlc.late_abort(-0.13, 0.0), -0.13);
         assert!((dlc.late_abort(-0.13, 0.5) - 0.01).abs() < 1e-15);
         assert!((dlc.late_abort(-0.13, 1.0) - 0.15).abs() < 1e-15);
+    }
+
+    /// The close-in gain by hand: ΔK_h = 0.15, full below 2 s to go, blended over the 1 s
+    /// before. A 0.2-m error gets nothing at 3.5 s or 3 s, 0.15·0.2 = 0.03 at 2 s and
+    /// below; at 2.5 s x = 0.5, 3x² − 2x³ = 0.5: 0.015; at 2.75 s x = 0.25,
+    /// 0.1875 − 0.03125 = 0.15625: 0.0046875. No gain gives exactly 0.
+    #[test]
+    fn the_close_in_gain_blends_in_on_the_time_to_go() {
+        let dlc = DirectLiftParameters {
+            close_in_height_gain_per_m: 0.15,
+            ..DirectLiftParameters::default()
+        };
+        assert_eq!(dlc.close_in(0.2, 3.5), 0.0);
+        assert_eq!(dlc.close_in(0.2, 3.0), 0.0);
+        assert!((dlc.close_in(0.2, 2.75) - 0.0046875).abs() < 1e-15);
+        assert!((dlc.close_in(0.2, 2.5) - 0.015).abs() < 1e-15);
+        assert!((dlc.close_in(0.2, 2.0) - 0.03).abs() < 1e-15);
+        assert!((dlc.close_in(-0.2, 0.5) + 0.03).abs() < 1e-15);
+        let none = DirectLiftParameters {
+            close_in_height_gain_per_m: 0.0,
+            ..dlc
+        };
+        assert_eq!(none.close_in(0.2, 0.5), 0.0);
+    }
+
+    /// The sea state by hand: 1.0 m of heave and 0.75° of pitch 81 m aft give
+    /// √(1 + (81·0.0130900)²) = √2.12422 = 1.45747 m, 2.0 m and 1.5° give 2.91494 m (the
+    /// ship model's own stationary σ of the landing point, 1.46 and 2.91 m, worked out
+    /// from its covariance independently of this formula).
+    #[test]
+    fn the_landing_points_stationary_sigma_is_that_of_heave_and_pitch() {
+        let moderate = DirectLiftParameters::landing_point_height_sigma_m(1.0, 0.75, 81.0);
+        assert!((moderate - 1.45747).abs() < 1e-5, "{moderate}");
+        let paper = DirectLiftParameters::landing_point_height_sigma_m(2.0, 1.5, 81.0);
+        assert!((paper - 2.91494).abs() < 1e-5, "{paper}");
+    }
+
+    /// The schedule by hand, ΔK_h = 0.15 in full up to σ_L = 2.0 m, off from 2.5 m: the
+    /// moderate sea (1.46 m) keeps 0.15, the paper's (2.91 m) none; at 2.25 m x = 0.5,
+    /// 0.075; at 2.375 m x = 0.25, 0.15·0.15625 = 0.0234375. The rest of the law is
+    /// untouched, and no close-in gain stays none.
+    #[test]
+    fn the_close_in_gain_is_scheduled_on_the_sea_state() {
+        let dlc = DirectLiftParameters {
+            close_in_height_gain_per_m: 0.15,
+            ..DirectLiftParameters::default()
+        };
+        assert_eq!(dlc.for_sea(1.46), dlc);
+        assert_eq!(dlc.for_sea(2.0).close_in_height_gain_per_m, 0.15);
+        assert_eq!(dlc.for_sea(2.91).close_in_height_gain_per_m, 0.0);
+        assert_eq!(dlc.for_sea(2.5).close_in_height_gain_per_m, 0.0);
+        let half = dlc.for_sea(2.25);
+        assert!((half.close_in_height_gain_per_m - 0.075).abs() < 1e-15);
+        assert_eq!(half.height_gain_per_m, dlc.height_gain_per_m);
+        let quarter = dlc.for_sea(2.375).close_in_height_gain_per_m;
+        assert!((quarter - 0.0234375).abs() < 1e-15, "{quarter}");
+        let none = DirectLiftParameters {
+            close_in_height_gain_per_m: 0.0,
+            ..dlc
+        };
+        assert_eq!(none.for_sea(1.0), none);
+    }
+
+    /// Each close-in key out of its range is refused by name.
+    #[test]
+    fn the_close_in_keys_out_of_range_are_named() {
+        let base = DirectLiftParameters::default();
+        for (dlc, key) in [
+            (
+                DirectLiftParameters {
+                    close_in_height_gain_per_m: -0.1,
+                    ..base
+                },
+                "control.direct_lift.close_in_height_gain_per_m",
+            ),
+            (
+                DirectLiftParameters {
+                    close_in_time_to_go_s: 11.0,
+                    ..base
+                },
+                "control.direct_lift.close_in_time_to_go_s",
+            ),
+            (
+                DirectLiftParameters {
+                    close_in_blend_s: 0.0,
+                    ..base
+                },
+                "control.direct_lift.close_in_blend_s",
+            ),
+            (
+                DirectLiftParameters {
+                    close_in_full_sea_sigma_m: -1.0,
+                    ..base
+                },
+                "control.direct_lift.close_in_full_sea_sigma_m",
+            ),
+            (
+                DirectLiftParameters {
+                    close_in_no_sea_sigma_m: 2.0,
+                    ..base
+                },
+                "control.direct_lift.close_in_no_sea_sigma_m",
+            ),
+        ] {
+            let error = dlc.validate().expect_err(key);
+            assert!(error.to_string().contains(key), "{error}");
+        }
     }
 
     #[test]

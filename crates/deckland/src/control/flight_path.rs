@@ -169,8 +169,9 @@ pub struct FlightPathParameters {
     pub wake_feedforward: bool,
     /// Lead τ of the wake feed-forward (s): Δθ = (W_z + τ·dW_z/dt)/V, the wind's change
     /// along the path fed τ ahead to make up for the flight path's lag behind pitch
-    /// (about 2 s, docs/model.md §5.5); 2 s in the realistic set (docs/landing-design.md),
-    /// 0 (none) in the paper's.
+    /// (about 2 s, docs/model.md §5.5); 3 s in the realistic set, which also takes out
+    /// part of the periodic wake's float (docs/landing-design.md, "Touchdown scatter in a
+    /// moderate sea"), 0 (none) in the paper's.
     pub wake_feedforward_lead_s: f64,
 }
 
@@ -198,7 +199,7 @@ impl Default for FlightPathParameters {
             ramp_crossing_time_sigma_s: 0.1,
             touchdown_correction_m: 0.0,
             wake_feedforward: true,
-            wake_feedforward_lead_s: 2.0,
+            wake_feedforward_lead_s: 3.0,
         }
     }
 }

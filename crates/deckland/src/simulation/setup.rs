@@ -235,10 +235,23 @@ pub(crate) fn build(scenario: &Scenario, user: UserParts<'_>) -> Result<Setup, S
         Mission::SinkRate { altitude_m, .. } => (ship_initial_x_m - 20_000.0, altitude_m),
     };
 
-    // Direct lift control flies the glide path: only in an approach.
+    // Direct lift control flies the glide path: only in an approach, its close-in gain
+    // scheduled on the sea state.
     let direct_lift = (scenario.mission == Mission::Approach
         && scenario.control.direct_lift.enabled)
-        .then_some(scenario.control.direct_lift);
+        .then(|| {
+            let ship = &scenario.environment.ship;
+            scenario.control.direct_lift.for_sea(
+                crate::control::DirectLiftParameters::landing_point_height_sigma_m(
+                    ship.heave_rms_m,
+                    ship.pitch_rms_deg,
+                    scenario
+                        .environment
+                        .deck
+                        .landing_point_aft_of_pitch_centre_m,
+                ),
+            )
+        });
     // The plant: the 6-DOF is built on the same longitudinal model, trimmed wings level
     // on the bearing, where its trim is the longitudinal one.
     let plant = match section.model {

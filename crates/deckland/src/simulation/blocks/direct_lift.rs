@@ -39,6 +39,12 @@ pub(crate) fn command(
                 dynamic_pressure_pa,
                 aircraft.wing_area_m2,
             );
+            // More height gain close to the deck, blended in on the time to go.
+            let feedforward = if law.close_in_height_gain_per_m > 0.0 {
+                feedforward + law.close_in(error_m, path.time_to_go_s)
+            } else {
+                feedforward
+            };
             let command = law.command(error_m, error_rate, feedforward, held.wave_off);
             // The flare on the deck forecast: the landing point's predicted climb rate at
             // touchdown less the hook's.
