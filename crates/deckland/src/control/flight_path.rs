@@ -31,7 +31,7 @@
 //! `touchdown_correction_m` from the aim point.
 //!
 //! For `filter_lead`, ĥ_L and ĥ̇_L are not the raw deck signals but the states of a critically damped
-//! second-order low-pass filter ([`DeckMotionFilter`]) on the landing point's height. The
+//! second-order low-pass filter ([`super::DeckMotionFilter`]) on the landing point's height. The
 //! raw rate contains 81 m × the ship's pitch rate, the output of the shaping filter's
 //! white-noise-driven state: continuous but rough. Fed forward unfiltered it reaches the
 //! pitch command as noise and drove the cascade into saturation and divergence.
@@ -173,6 +173,12 @@ pub struct FlightPathParameters {
     /// part of the periodic wake's float (docs/landing-design.md, "Touchdown scatter in a
     /// moderate sea"), 0 (none) in the paper's.
     pub wake_feedforward_lead_s: f64,
+    /// r, the height the aircraft can still gain over the ramp after the wave-off's commit
+    /// point, credited against the risk-aware clearance: the path crosses the predicted
+    /// ramp max(`ramp_clearance_margin_m`, z·σ_c − r) above it (docs/model.md §5.7). Direct
+    /// lift's ±0.15 of C_L (about 1.18 m/s² at 69 m/s) held over the 1.4 s from the commit
+    /// point to the ramp gives ½·1.18·1.4² = 1.16 m (docs/deck-prediction.md); 0 m, [0, 5].
+    pub ramp_recovery_m: f64,
 }
 
 impl Default for FlightPathParameters {
@@ -192,7 +198,7 @@ impl Default for FlightPathParameters {
             descend_after_ramp: true,
             descent_blend_s: 0.25,
             max_descent_after_ramp_sink_mps: 1.5,
-            ramp_strike_probability_limit: 0.02,
+            ramp_strike_probability_limit: 0.0001,
             max_ramp_clearance_m: 4.0,
             hook_height_sigma_m: 0.3,
             ramp_sigma_min_horizon_s: 1.5,
@@ -200,6 +206,7 @@ impl Default for FlightPathParameters {
             touchdown_correction_m: 0.0,
             wake_feedforward: true,
             wake_feedforward_lead_s: 3.0,
+            ramp_recovery_m: 1.16,
         }
     }
 }
@@ -216,6 +223,7 @@ impl FlightPathParameters {
             ramp_clearance_margin_m: 2.5,
             descend_after_ramp: false,
             ramp_strike_probability_limit: 0.0,
+            ramp_recovery_m: 0.0,
             touchdown_correction_m: 0.0,
             wake_feedforward: false,
             wake_feedforward_lead_s: 0.0,
@@ -289,33 +297,8 @@ impl FlightPathParameters {
             SECTION,
             "wake_feedforward_lead_s",
             self.wake_feedforward_lead_s,
-        )
-    }
-}
-
-/// Critically damped second-order low-pass filter on the landing point's height:
-/// ĥ̈ = ω²(h_L − ĥ) − 2ω·ĥ̇. Its two states are the smooth height and rate estimates.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct DeckMotionFilter {
-    omega: f64,
-}
-
-impl DeckMotionFilter {
-    /// A filter of natural frequency `frequency_radps` (rad/s).
-    pub fn new(frequency_radps: f64) -> Self {
-        Self {
-            omega: frequency_radps,
-        }
-    }
-
-    /// Derivatives of (ĥ, ĥ̇) given the measured landing-point height (m).
-    #[inline]
-    pub fn derivative(&self, estimate: [f64; 2], measured_height_m: f64) -> [f64; 2] {
-        [
-            estimate[1],
-            self.omega * self.omega * (measured_height_m - estimate[0])
-                - 2.0 * self.omega * estimate[1],
-        ]
+        )?;
+        Bounds::closed(0.0, 5.0).check(SECTION, "ramp_recovery_m", self.ramp_recovery_m)
     }
 }
 

@@ -1,5 +1,6 @@
 //! Tests of the flight-path generator (kept apart so that flight_path.rs stays short).
 use super::*;
+use crate::control::DeckMotionFilter;
 
 fn deck(aim_h: f64, aim_h_rate: f64) -> DeckReference {
     DeckReference {

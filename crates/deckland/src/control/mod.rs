@@ -9,6 +9,7 @@
 
 mod arrival_timing;
 mod command_ramp;
+mod deck_motion_filter;
 pub mod design;
 mod direct_lift;
 mod flight_path;
@@ -31,10 +32,11 @@ pub use arrival_timing::{
     REPLAN_PERIOD_S,
 };
 pub use command_ramp::{smooth_step, CommandRamp};
+pub use deck_motion_filter::DeckMotionFilter;
 pub use direct_lift::DirectLiftParameters;
 pub use flight_path::{
-    CompensationBlend, DeckForecast, DeckMotionFilter, DeckPredictorKind, DeckReference,
-    FlightPathGenerator, FlightPathParameters, PathReference,
+    CompensationBlend, DeckForecast, DeckPredictorKind, DeckReference, FlightPathGenerator,
+    FlightPathParameters, PathReference,
 };
 pub use guidance::GuidanceParameters;
 pub use late_abort::LateAbortInputs;

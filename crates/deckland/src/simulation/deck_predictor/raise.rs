@@ -86,8 +86,9 @@ pub(crate) fn ramp_clearance_sigma_m(
 
 /// The anchor height: the forecast landing point, raised where the ramp-aware path needs
 /// it so that the path crosses the predicted ramp with the clearance m above it:
-/// m = min(max(`ramp_clearance_margin_m`, z·σ_c), `max_ramp_clearance_m`), z = Φ⁻¹(1 − p) of
-/// `ramp_strike_probability_limit` (0 when off) and σ_c from [`ramp_clearance_sigma_m`].
+/// m = min(max(`ramp_clearance_margin_m`, z·σ_c − r), `max_ramp_clearance_m`), z = Φ⁻¹(1 − p)
+/// of `ramp_strike_probability_limit` (0 when off), σ_c from [`ramp_clearance_sigma_m`] and
+/// r = `ramp_recovery_m`.
 /// The path passes the ramp (ramp_aft_of_aim_point + touchdown correction)·tan Γ above
 /// its anchor.
 pub(crate) fn ramp_aware_anchor(
@@ -105,7 +106,7 @@ pub(crate) fn ramp_aware_anchor(
     let margin_m = if z > 0.0 {
         parameters
             .ramp_clearance_margin_m
-            .max(z * ramp_clearance_sigma_m(parameters, forecast))
+            .max(z * ramp_clearance_sigma_m(parameters, forecast) - parameters.ramp_recovery_m)
             .min(parameters.max_ramp_clearance_m)
     } else {
         parameters.ramp_clearance_margin_m

@@ -25,19 +25,21 @@ fn fixed_margin() -> FlightPathParameters {
     }
 }
 
-/// The risk-aware clearance by hand (the default: p = 2 %, z = Φ⁻¹(0.98) = 2.0537 from
-/// the normal table; σ_h = 0.3 m, σ_t = 0.1 s; floor 2.0 m). The ramp forecast 2 m above
-/// the landing point with σ_r = 1 m, rising at 2 m/s: σ_c = √(1 + 0.09 + 0.04) = 1.0630 m,
-/// clearance 2.0537·1.0630 = 2.1831 m, anchor 24 + 2.1831 − 3.6698 = 22.5133 m. Known
-/// exactly (σ_r = 0), σ_c = √0.13 = 0.3606 m gives 0.74 m, under the 2-m floor: anchor
-/// 24 + 2 − 3.6698 = 22.3302 m. A larger σ_r raises it further.
+/// The risk-aware clearance by hand (the default: p = 10⁻⁴, z = Φ⁻¹(1 − 10⁻⁴) = 3.7190
+/// from the normal table; σ_h = 0.3 m, σ_t = 0.1 s; recovery r = 1.16 m; floor 2.0 m,
+/// cap 4.0 m). The ramp forecast 2 m above the landing point with σ_r = 1 m, rising at
+/// 2 m/s: σ_c = √(1 + 0.09 + 0.04) = 1.0630 m, clearance 3.7190·1.0630 − 1.16 = 2.7934 m,
+/// anchor 24 + 2.7934 − 3.6698 = 23.1236 m. Known exactly (σ_r = 0), σ_c = √0.13 = 0.3606 m
+/// gives 0.18 m, under the 2-m floor: anchor 24 + 2 − 3.6698 = 22.3302 m. With σ_r = 2 m
+/// the clearance, 6.40 m, is capped at 4 m: anchor 24.3302 m.
 #[test]
 fn the_risk_aware_clearance_grows_with_the_forecasts_sigma_and_the_ramps_motion() {
     let deck = DeckGeometry::default();
     let parameters = FlightPathParameters::default();
-    assert_eq!(parameters.ramp_strike_probability_limit, 0.02);
+    assert_eq!(parameters.ramp_strike_probability_limit, 1e-4);
+    assert_eq!(parameters.ramp_recovery_m, 1.16);
     let generator = FlightPathGenerator::new(parameters).unwrap();
-    assert!((generator.ramp_clearance_z() - 2.0537).abs() < 1e-4);
+    assert!((generator.ramp_clearance_z() - 3.7190).abs() < 1e-4);
     let uncertain = DeckForecast {
         ramp_height_sigma_m: 1.0,
         ramp_climb_rate_mps: 2.0,
@@ -45,7 +47,7 @@ fn the_risk_aware_clearance_grows_with_the_forecasts_sigma_and_the_ramps_motion(
     };
     assert!((ramp_clearance_sigma_m(&parameters, &uncertain) - 1.13_f64.sqrt()).abs() < 1e-12);
     let raised = ramp_aware_anchor(&parameters, &generator, &deck, &uncertain);
-    assert!((raised - 22.5133).abs() < 1e-3, "{raised}");
+    assert!((raised - 23.1236).abs() < 1e-3, "{raised}");
     let known = DeckForecast {
         ramp_height_sigma_m: 0.0,
         ..uncertain
@@ -56,7 +58,34 @@ fn the_risk_aware_clearance_grows_with_the_forecasts_sigma_and_the_ramps_motion(
         ramp_height_sigma_m: 2.0,
         ..uncertain
     };
-    assert!(ramp_aware_anchor(&parameters, &generator, &deck, &very_uncertain) > raised + 1.0);
+    let capped = ramp_aware_anchor(&parameters, &generator, &deck, &very_uncertain);
+    assert!((capped - 24.3302).abs() < 1e-4, "{capped}");
+}
+
+/// The recovery credit r lowers the clearance by exactly r between the floor and the cap,
+/// and r = 0 gives z·σ_c: with the uncertain forecast above, 3.9534 m over the ramp.
+#[test]
+fn the_recovery_credit_lowers_the_clearance_by_itself() {
+    let deck = DeckGeometry::default();
+    let uncertain = DeckForecast {
+        ramp_height_sigma_m: 1.0,
+        ramp_climb_rate_mps: 2.0,
+        ..forecast(22.0, 24.0)
+    };
+    let anchor = |recovery_m: f64| {
+        let parameters = FlightPathParameters {
+            ramp_recovery_m: recovery_m,
+            ..FlightPathParameters::default()
+        };
+        let generator = FlightPathGenerator::new(parameters).unwrap();
+        ramp_aware_anchor(&parameters, &generator, &deck, &uncertain)
+    };
+    let rise_to_ramp_m = 60.0 * 3.5_f64.to_radians().tan();
+    assert!((anchor(0.0) - (24.0 + 3.9534 - rise_to_ramp_m)).abs() < 1e-3);
+    assert!((anchor(0.0) - anchor(0.5) - 0.5).abs() < 1e-12);
+    assert!((anchor(0.0) - anchor(1.9) - 1.9).abs() < 1e-12);
+    // Past z·σ_c − floor (1.9534 m), the floor holds.
+    assert_eq!(anchor(2.5), anchor(3.0));
 }
 
 /// On a level deck the path already clears the ramp by 60·tan 3.5° = 3.6698 m > 2.5 m:
