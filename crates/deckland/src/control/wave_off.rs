@@ -158,7 +158,7 @@ pub struct WaveOffParameters {
     /// heavy sea's (6.84 m, 4.8 m at its calmest dispersed run); [0, 50].
     pub heavy_sea_ramp_sigma_start_m: f64,
     /// The sea's stationary σ of the ramp height (m) at and above which the heavy-sea
-    /// limits apply in full; 5.5 m; [`heavy_sea_ramp_sigma_start_m`, 50] (equal: a step).
+    /// limits apply in full; 5.5 m; from `heavy_sea_ramp_sigma_start_m` to 50 (equal: a step).
     pub heavy_sea_ramp_sigma_full_m: f64,
     /// The lead τ of the wave-off's α floor (s): the floor holds the angle of attack
     /// predicted τ ahead, α + τ·q, at `min_alpha_deg`, as the approach's α protection
