@@ -143,9 +143,10 @@ pub struct WaveOffParameters {
     /// above `heavy_sea_ramp_sigma_full_m` this replaces `max_ramp_strike_probability`,
     /// and between `heavy_sea_ramp_sigma_start_m` and that σ the limit moves linearly
     /// from the one to the other (docs/landing-design.md, "Catastrophes first in a heavy
-    /// sea"). 0.02 (tuned on 1000 approaches of the heavy sea at seeds 101, 1 and 7:
-    /// with the late abort's 2 % no ramp strike, against 12 at seed 101 with the
-    /// ordinary limits, for most of the boardings; 5 % left 4); 0 keeps
+    /// sea"). 0.02 (tuned on 1000 approaches of the heavy sea at each of seeds 101, 1
+    /// and 7: with the late abort's 2 %, 1 ramp strike in the 3000 against 26 with the
+    /// ordinary limits, for about half of the boardings; 5 % left 4 of seed 101's 12);
+    /// 0 keeps
     /// `max_ramp_strike_probability` in every sea (the paper's set); [0, 1).
     pub heavy_sea_ramp_strike_probability: f64,
     /// The late abort's limit on P(ramp strike) in a heavy sea (–), in place of
