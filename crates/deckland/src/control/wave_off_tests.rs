@@ -337,7 +337,11 @@ fn the_heavy_sea_limits_move_in_linearly_with_the_sea_state() {
         ..p
     };
     assert_eq!(off.for_sea(6.84).max_ramp_strike_probability, 0.0);
-    let ordinary = WaveOffParameters::default();
+    let ordinary = WaveOffParameters {
+        heavy_sea_ramp_strike_probability: 0.0,
+        heavy_sea_late_abort_ramp_strike_probability: 0.0,
+        ..WaveOffParameters::default()
+    };
     assert_eq!(ordinary.for_sea(6.84), ordinary);
     let step = WaveOffParameters {
         heavy_sea_ramp_sigma_start_m: 5.0,
