@@ -28,7 +28,6 @@
 use serde::{Deserialize, Serialize};
 
 use crate::control::DeckForecast;
-use crate::environment::{DeckGeometry, ShipMotionParameters};
 use crate::parameters::{Bounds, ParameterError};
 
 /// The wave-off decision's limits and how it is flown (docs/model.md §9).
@@ -138,52 +137,20 @@ pub struct WaveOffParameters {
     /// the air-relative flight-path angle plus this, an α limiter as fly-by-wire control
     /// laws have; the approach flies α ≈ 7°.
     pub min_alpha_deg: f64,
-    /// The wave-off's limit on P(ramp strike) in a heavy sea (–): where the sea's
-    /// stationary σ of the ramp height ([`stationary_ramp_height_sigma_m`]) is at or
-    /// above `heavy_sea_ramp_sigma_full_m` this replaces `max_ramp_strike_probability`,
-    /// and between `heavy_sea_ramp_sigma_start_m` and that σ the limit moves linearly
-    /// from the one to the other (docs/landing-design.md, "Catastrophes first in a heavy
-    /// sea"). 0.02 (tuned on 1000 approaches of the heavy sea at each of seeds 101, 1
-    /// and 7: with the late abort's 2 %, 1 ramp strike in the 3000 against 26 with the
-    /// ordinary limits, for about half of the boardings; 5 % left 4 of seed 101's 12);
-    /// 0 keeps
-    /// `max_ramp_strike_probability` in every sea (the paper's set); [0, 1).
+    /// The wave-off's P(ramp strike) limit in a heavy sea (–), moving in over the sea's
+    /// stationary ramp σ (`heavy_sea.rs`, docs/landing-design.md); 0.02; 0 off; [0, 1).
     pub heavy_sea_ramp_strike_probability: f64,
-    /// The late abort's limit on P(ramp strike) in a heavy sea (–), in place of
-    /// `late_abort_ramp_strike_probability` as `heavy_sea_ramp_strike_probability`
-    /// replaces the wave-off's; 0.02; 0 keeps `late_abort_ramp_strike_probability` in
-    /// every sea (the paper's set); [0, 1).
+    /// The late abort's limit in a heavy sea (–) alike; 0.02; 0 off; [0, 1).
     pub heavy_sea_late_abort_ramp_strike_probability: f64,
-    /// The sea's stationary σ of the ramp height (m) at and below which the ramp-strike
-    /// limits are the ordinary ones; 4.5 m, above the paper's sea (4.20 m) and below the
-    /// heavy sea's (6.84 m, 4.8 m at its calmest dispersed run); [0, 50].
+    /// The stationary ramp σ (m) up to which the ordinary limits hold; 4.5 m; [0, 50].
     pub heavy_sea_ramp_sigma_start_m: f64,
-    /// The sea's stationary σ of the ramp height (m) at and above which the heavy-sea
-    /// limits apply in full; 5.5 m; from `heavy_sea_ramp_sigma_start_m` to 50 (equal: a step).
+    /// The σ (m) from which the heavy-sea limits hold in full; 5.5 m; start to 50.
     pub heavy_sea_ramp_sigma_full_m: f64,
-    /// The lead τ of the wave-off's α floor (s): the floor holds the angle of attack
-    /// predicted τ ahead, α + τ·q, at `min_alpha_deg`, as the approach's α protection
-    /// does (`control.sink_rate.alpha_lead_s`), so that the pitch loop's lag does not let
-    /// α undershoot the floor while the aircraft pitches down; 0.3 s, the approach's
-    /// lead (with 2 % heavy-sea limits, 1000 approaches of the heavy sea at seed 1: no
-    /// wave-off diverged, against one at 0; the paper's sea's 1000 at seed 101 the same
-    /// outcomes, docs/landing-design.md); 0 holds α itself (the paper's set); [0, 2].
+    /// The lead τ of the wave-off's α floor (s): it holds α + τ·q, the angle of attack
+    /// predicted τ ahead, as the approach's α protection does; 0.3 s (heavy sea, 1000
+    /// at seed 1: no wave-off diverged, against one at 0; the paper's sea's outcomes
+    /// the same, docs/landing-design.md); 0 holds α itself (the paper's set); [0, 2].
     pub alpha_lead_s: f64,
-}
-
-/// The stationary σ of the ramp's height (m) in the sea of `ship` on `deck`:
-/// √(σ_H² + (r_R·σ_θ)²), heave and pitch independent, the ramp r_R = landing point aft of
-/// the pitch centre + ramp aft of the landing point (141 m) aft of the pitch centre,
-/// pitch small (docs/model.md §3.1): 2.10 m in the moderate sea (1.0 m, 0.75°), 4.20 m
-/// in the paper's (2.0 m, 1.5°), 6.84 m in the heavy sea (3.0 m, 2.5°); 0 with the ship
-/// steady. The sea state the estimator's ship model is built for.
-pub fn stationary_ramp_height_sigma_m(ship: &ShipMotionParameters, deck: &DeckGeometry) -> f64 {
-    if !ship.enabled {
-        return 0.0;
-    }
-    let lever_m = deck.landing_point_aft_of_pitch_centre_m + deck.ramp_aft_of_aim_point_m;
-    ship.heave_rms_m
-        .hypot(lever_m * ship.pitch_rms_deg.to_radians())
 }
 
 impl Default for WaveOffParameters {
@@ -321,92 +288,8 @@ impl WaveOffParameters {
             self.late_abort_rate_per_s,
         )?;
         Bounds::closed(-5.0, 15.0).check(SECTION, "min_alpha_deg", self.min_alpha_deg)?;
-        probability.check(
-            SECTION,
-            "heavy_sea_ramp_strike_probability",
-            self.heavy_sea_ramp_strike_probability,
-        )?;
-        probability.check(
-            SECTION,
-            "heavy_sea_late_abort_ramp_strike_probability",
-            self.heavy_sea_late_abort_ramp_strike_probability,
-        )?;
-        Bounds::closed(0.0, 50.0).check(
-            SECTION,
-            "heavy_sea_ramp_sigma_start_m",
-            self.heavy_sea_ramp_sigma_start_m,
-        )?;
-        Bounds::closed(self.heavy_sea_ramp_sigma_start_m, 50.0).check(
-            SECTION,
-            "heavy_sea_ramp_sigma_full_m",
-            self.heavy_sea_ramp_sigma_full_m,
-        )?;
+        self.validate_heavy_sea(SECTION, probability)?;
         Bounds::closed(0.0, 2.0).check(SECTION, "alpha_lead_s", self.alpha_lead_s)
-    }
-
-    /// The heavy-sea limits' share w (0 to 1) in a sea whose stationary σ of the ramp
-    /// height is `ramp_sigma_m`: 0 at and below `heavy_sea_ramp_sigma_start_m`, 1 at and
-    /// above `heavy_sea_ramp_sigma_full_m`, linear between.
-    pub fn heavy_sea_share(&self, ramp_sigma_m: f64) -> f64 {
-        let (start, full) = (
-            self.heavy_sea_ramp_sigma_start_m,
-            self.heavy_sea_ramp_sigma_full_m,
-        );
-        if ramp_sigma_m <= start {
-            0.0
-        } else if ramp_sigma_m >= full {
-            1.0
-        } else {
-            (ramp_sigma_m - start) / (full - start)
-        }
-    }
-
-    /// These parameters in a sea whose stationary σ of the ramp height is `ramp_sigma_m`
-    /// ([`stationary_ramp_height_sigma_m`]): each ramp-strike limit that is on and has a
-    /// heavy-sea limit moves to it by the share [`WaveOffParameters::heavy_sea_share`],
-    /// p = p₀ + w·(p_heavy − p₀); the same parameters where w = 0 or no heavy-sea limit
-    /// is set.
-    pub fn for_sea(&self, ramp_sigma_m: f64) -> Self {
-        let heavy = self.heavy_sea_ramp_strike_probability > 0.0
-            || self.heavy_sea_late_abort_ramp_strike_probability > 0.0;
-        let share = if heavy {
-            self.heavy_sea_share(ramp_sigma_m)
-        } else {
-            0.0
-        };
-        if share <= 0.0 {
-            return *self;
-        }
-        let blend = |ordinary: f64, heavy: f64| {
-            if ordinary <= 0.0 || heavy <= 0.0 {
-                ordinary
-            } else if share >= 1.0 {
-                heavy
-            } else {
-                ordinary + share * (heavy - ordinary)
-            }
-        };
-        Self {
-            max_ramp_strike_probability: blend(
-                self.max_ramp_strike_probability,
-                self.heavy_sea_ramp_strike_probability,
-            ),
-            late_abort_ramp_strike_probability: blend(
-                self.late_abort_ramp_strike_probability,
-                self.heavy_sea_late_abort_ramp_strike_probability,
-            ),
-            ..*self
-        }
-    }
-
-    /// [`WaveOffParameters::for_sea`] in the sea of `ship` on `deck`.
-    pub fn for_ship(&self, ship: &ShipMotionParameters, deck: &DeckGeometry) -> Self {
-        if self.heavy_sea_ramp_strike_probability <= 0.0
-            && self.heavy_sea_late_abort_ramp_strike_probability <= 0.0
-        {
-            return *self;
-        }
-        self.for_sea(stationary_ramp_height_sigma_m(ship, deck))
     }
 }
 
@@ -608,6 +491,9 @@ impl WaveOffParameters {
             })
     }
 }
+
+#[path = "heavy_sea.rs"]
+mod heavy_sea;
 
 #[cfg(test)]
 #[path = "wave_off_tests.rs"]

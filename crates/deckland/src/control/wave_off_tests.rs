@@ -1,4 +1,5 @@
 //! Tests of the wave-off decision (kept apart so that wave_off.rs stays short).
+use super::heavy_sea::stationary_ramp_height_sigma_m;
 use super::*;
 use crate::control::LateAbortInputs;
 
