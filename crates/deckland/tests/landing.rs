@@ -390,6 +390,14 @@ fn a_wave_off_keeps_its_angle_of_attack_off_the_models_floor() {
         // The wave-off's floor alone: the approach's angle-of-attack protection
         // (`control.sink_rate.alpha_protection`) catches this run too.
         scenario.control.sink_rate.alpha_protection = false;
+        // The wave-off as the run was found: its α floor without a lead, and the
+        // ordinary ramp-strike limits in this heavy sea.
+        scenario.control.wave_off.alpha_lead_s = 0.0;
+        scenario.control.wave_off.heavy_sea_ramp_strike_probability = 0.0;
+        scenario
+            .control
+            .wave_off
+            .heavy_sea_late_abort_ramp_strike_probability = 0.0;
         let mut recorder = TimeSeriesRecorder::every(0.01);
         let summary = Simulation::new(&scenario).unwrap().run(&mut recorder);
         let lowest = recorder

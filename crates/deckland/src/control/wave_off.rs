@@ -137,6 +137,20 @@ pub struct WaveOffParameters {
     /// the air-relative flight-path angle plus this, an α limiter as fly-by-wire control
     /// laws have; the approach flies α ≈ 7°.
     pub min_alpha_deg: f64,
+    /// The wave-off's P(ramp strike) limit in a heavy sea (–), moving in over the sea's
+    /// stationary ramp σ (`heavy_sea.rs`, docs/landing-design.md); 0.02; 0 off; [0, 1).
+    pub heavy_sea_ramp_strike_probability: f64,
+    /// The late abort's limit in a heavy sea (–) alike; 0.02; 0 off; [0, 1).
+    pub heavy_sea_late_abort_ramp_strike_probability: f64,
+    /// The stationary ramp σ (m) up to which the ordinary limits hold; 4.5 m; [0, 50].
+    pub heavy_sea_ramp_sigma_start_m: f64,
+    /// The σ (m) from which the heavy-sea limits hold in full; 5.5 m; start to 50.
+    pub heavy_sea_ramp_sigma_full_m: f64,
+    /// The lead τ of the wave-off's α floor (s): it holds α + τ·q, the angle of attack
+    /// predicted τ ahead, as the approach's α protection does; 0.3 s (heavy sea, 1000
+    /// at seed 1: no wave-off diverged, against one at 0; the paper's sea's outcomes
+    /// the same, docs/landing-design.md); 0 holds α itself (the paper's set); [0, 2].
+    pub alpha_lead_s: f64,
 }
 
 impl Default for WaveOffParameters {
@@ -162,6 +176,11 @@ impl Default for WaveOffParameters {
             late_abort_full_thrust: true,
             late_abort_rate_per_s: 5.0,
             min_alpha_deg: 2.0,
+            heavy_sea_ramp_strike_probability: 0.02,
+            heavy_sea_late_abort_ramp_strike_probability: 0.02,
+            heavy_sea_ramp_sigma_start_m: 4.5,
+            heavy_sea_ramp_sigma_full_m: 5.5,
+            alpha_lead_s: 0.3,
         }
     }
 }
@@ -174,6 +193,9 @@ impl WaveOffParameters {
             min_ramp_clearance_m: 1.5,
             late_abort_ramp_strike_probability: 0.0,
             late_abort_full_thrust: false,
+            heavy_sea_ramp_strike_probability: 0.0,
+            heavy_sea_late_abort_ramp_strike_probability: 0.0,
+            alpha_lead_s: 0.0,
             ..Self::default()
         }
     }
@@ -265,7 +287,9 @@ impl WaveOffParameters {
             "late_abort_rate_per_s",
             self.late_abort_rate_per_s,
         )?;
-        Bounds::closed(-5.0, 15.0).check(SECTION, "min_alpha_deg", self.min_alpha_deg)
+        Bounds::closed(-5.0, 15.0).check(SECTION, "min_alpha_deg", self.min_alpha_deg)?;
+        self.validate_heavy_sea(SECTION, probability)?;
+        Bounds::closed(0.0, 2.0).check(SECTION, "alpha_lead_s", self.alpha_lead_s)
     }
 }
 
@@ -467,6 +491,9 @@ impl WaveOffParameters {
             })
     }
 }
+
+#[path = "heavy_sea.rs"]
+mod heavy_sea;
 
 #[cfg(test)]
 #[path = "wave_off_tests.rs"]

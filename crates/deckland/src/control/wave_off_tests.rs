@@ -1,4 +1,5 @@
 //! Tests of the wave-off decision (kept apart so that wave_off.rs stays short).
+use super::heavy_sea::stationary_ramp_height_sigma_m;
 use super::*;
 use crate::control::LateAbortInputs;
 
@@ -276,5 +277,174 @@ fn the_climb_blend_time_outside_its_range_is_refused_by_name() {
         .unwrap_err();
         assert_eq!(error.path, "control.wave_off.climb_blend_s");
         assert_eq!(error.value, format!("{blend_s}"));
+    }
+}
+
+/// The sea state by hand (docs/model.md §3.1's seas, ramp 81 + 60 = 141 m aft of the pitch
+/// centre): √(1² + (141·0.75°)²) = √(1 + 1.8457²) = 2.0992 m (moderate), √(2² +
+/// 3.6914²) = 4.1984 m (the paper's), √(3² + 6.1523²) = 6.8448 m (heavy); 0 with the
+/// ship steady.
+#[test]
+fn the_stationary_ramp_sigma_matches_a_hand_calculation() {
+    use crate::environment::{DeckGeometry, ShipMotionParameters};
+    let deck = DeckGeometry::default();
+    for (heave_m, pitch_deg, sigma_m) in [
+        (1.0, 0.75, 2.099_18),
+        (2.0, 1.5, 4.198_36),
+        (3.0, 2.5, 6.844_75),
+    ] {
+        let ship = ShipMotionParameters {
+            heave_rms_m: heave_m,
+            pitch_rms_deg: pitch_deg,
+            ..ShipMotionParameters::default()
+        };
+        let got = stationary_ramp_height_sigma_m(&ship, &deck);
+        assert!((got - sigma_m).abs() < 1e-5, "{got} against {sigma_m}");
+    }
+    let steady = ShipMotionParameters {
+        enabled: false,
+        ..ShipMotionParameters::default()
+    };
+    assert_eq!(stationary_ramp_height_sigma_m(&steady, &deck), 0.0);
+}
+
+/// Heavy-sea limits 10 % (wave-off) and 5 % (late abort) against 20 % and 20 %, from
+/// σ 4.5 m to 5.5 m: at 4.2 m (the paper's sea) the parameters are the same; at 5.0 m
+/// half way, 15 % and 12.5 %; from 5.5 m the heavy limits. A criterion that is off
+/// stays off, and without heavy-sea limits nothing changes in any sea.
+#[test]
+fn the_heavy_sea_limits_move_in_linearly_with_the_sea_state() {
+    let p = WaveOffParameters {
+        heavy_sea_ramp_strike_probability: 0.1,
+        heavy_sea_late_abort_ramp_strike_probability: 0.05,
+        ..WaveOffParameters::default()
+    };
+    assert_eq!(p.for_sea(4.2), p);
+    assert_eq!(p.for_sea(4.5), p);
+    let half = p.for_sea(5.0);
+    assert!((half.max_ramp_strike_probability - 0.15).abs() < 1e-12);
+    assert!((half.late_abort_ramp_strike_probability - 0.125).abs() < 1e-12);
+    for sigma_m in [5.5, 6.84, 20.0] {
+        let heavy = p.for_sea(sigma_m);
+        assert_eq!(heavy.max_ramp_strike_probability, 0.1);
+        assert_eq!(heavy.late_abort_ramp_strike_probability, 0.05);
+        assert_eq!(
+            heavy.max_touchdown_sink_rate_mps,
+            p.max_touchdown_sink_rate_mps
+        );
+    }
+    let off = WaveOffParameters {
+        max_ramp_strike_probability: 0.0,
+        ..p
+    };
+    assert_eq!(off.for_sea(6.84).max_ramp_strike_probability, 0.0);
+    let ordinary = WaveOffParameters {
+        heavy_sea_ramp_strike_probability: 0.0,
+        heavy_sea_late_abort_ramp_strike_probability: 0.0,
+        ..WaveOffParameters::default()
+    };
+    assert_eq!(ordinary.for_sea(6.84), ordinary);
+    let step = WaveOffParameters {
+        heavy_sea_ramp_sigma_start_m: 5.0,
+        heavy_sea_ramp_sigma_full_m: 5.0,
+        ..p
+    };
+    assert_eq!(step.for_sea(5.0), step);
+    assert_eq!(step.for_sea(5.0 + 1e-9).max_ramp_strike_probability, 0.1);
+}
+
+/// The effect: the hook 2.0 m low on a 0.5-m σ_c, a predicted clearance of 1.67 m (as
+/// in `the_probabilities_call_the_wave_off_with_their_value_in_percent`), Φ(−1.67/σ)
+/// with σ = 1.2 m: Φ(−1.392) = 8.20 % (normal table). Below the ordinary 20 %, the paper's
+/// sea goes on; with a heavy-sea limit of 5 % the heavy sea's ship (3.0 m, 2.5°) waves
+/// off on it, and its late abort engages on the same probability after the commit point.
+#[test]
+fn a_heavy_sea_waves_off_where_the_papers_sea_goes_on() {
+    use crate::environment::{DeckGeometry, ShipMotionParameters};
+    let p = WaveOffParameters {
+        heavy_sea_ramp_strike_probability: 0.05,
+        heavy_sea_late_abort_ramp_strike_probability: 0.05,
+        ..WaveOffParameters::default()
+    };
+    let deck = DeckGeometry::default();
+    let papers = ShipMotionParameters::default();
+    let heavy = ShipMotionParameters {
+        heave_rms_m: 3.0,
+        pitch_rms_deg: 2.5,
+        ..papers
+    };
+    let inputs = WaveOffInputs {
+        glide_path_error_m: 2.0,
+        ramp_clearance_sigma_m: 1.2,
+        ..calm()
+    };
+    assert_eq!(p.for_ship(&papers, &deck).decide(&inputs), None);
+    let d = p.for_ship(&heavy, &deck).decide(&inputs).expect("wave-off");
+    assert_eq!(d.criterion, WaveOffCriterion::RampStrikeProbability);
+    assert!((d.value - 8.20).abs() < 0.01, "{}", d.value);
+    assert_eq!(d.limit, 5.0);
+    let after_commit = LateAbortInputs {
+        predicted_ramp_clearance_m: 1.67,
+        ramp_clearance_sigma_m: 1.2,
+        ..late()
+    };
+    assert_eq!(p.for_ship(&papers, &deck).late_abort(&after_commit), None);
+    let late_abort = p
+        .for_ship(&heavy, &deck)
+        .late_abort(&after_commit)
+        .expect("late abort");
+    assert!((late_abort.value - 8.20).abs() < 0.01);
+}
+
+/// Each heavy-sea key and the α floor's lead outside their ranges are refused by name
+/// and value.
+#[test]
+fn the_heavy_sea_keys_outside_their_range_are_refused_by_name() {
+    let p = WaveOffParameters::default();
+    for (parameters, key, value) in [
+        (
+            WaveOffParameters {
+                heavy_sea_ramp_strike_probability: 1.0,
+                ..p
+            },
+            "control.wave_off.heavy_sea_ramp_strike_probability",
+            "1.0",
+        ),
+        (
+            WaveOffParameters {
+                heavy_sea_late_abort_ramp_strike_probability: -0.1,
+                ..p
+            },
+            "control.wave_off.heavy_sea_late_abort_ramp_strike_probability",
+            "-0.1",
+        ),
+        (
+            WaveOffParameters {
+                heavy_sea_ramp_sigma_start_m: 51.0,
+                ..p
+            },
+            "control.wave_off.heavy_sea_ramp_sigma_start_m",
+            "51.0",
+        ),
+        (
+            WaveOffParameters {
+                heavy_sea_ramp_sigma_full_m: 4.0,
+                ..p
+            },
+            "control.wave_off.heavy_sea_ramp_sigma_full_m",
+            "4.0",
+        ),
+        (
+            WaveOffParameters {
+                alpha_lead_s: 2.5,
+                ..p
+            },
+            "control.wave_off.alpha_lead_s",
+            "2.5",
+        ),
+    ] {
+        let error = parameters.validate().unwrap_err();
+        assert_eq!(error.path, key);
+        assert_eq!(error.value, value);
     }
 }

@@ -77,6 +77,7 @@ fn outer_loops(
                     ramp_aft_of_aim_point_m: scenario.environment.deck.ramp_aft_of_aim_point_m,
                     climb_blend_s: control.wave_off.climb_blend_s,
                     decided_at_s: None,
+                    alpha_lead_s: control.wave_off.alpha_lead_s,
                 }),
                 late_abort: LateAbort::new(
                     control.wave_off.late_abort_rate_per_s,

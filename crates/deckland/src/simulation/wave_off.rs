@@ -71,18 +71,18 @@ impl ClosedLoop {
             x_rate_mps: hook_x_rate_mps,
             climb_rate_mps: hook_climb_rate_mps,
         };
-        let inputs = wave_off_inputs(&self.wave_off, &flight_path, &self.deck, &reference, &hook);
-        let decision = inputs.and_then(|inputs| self.wave_off.decide(&inputs));
+        // The ramp-strike limits of this sea (the ordinary ones but in a heavy sea).
+        let wave_off = self.wave_off.for_ship(self.ship.parameters(), &self.deck);
+        let inputs = wave_off_inputs(&wave_off, &flight_path, &self.deck, &reference, &hook);
+        let decision = inputs.and_then(|inputs| wave_off.decide(&inputs));
         if decision.is_some() {
             self.note_wave_off(t);
         }
-        if decision.is_none() && self.wave_off.late_abort_enabled() {
+        if decision.is_none() && wave_off.late_abort_enabled() {
             let ramp_x_m = reference.mean_aim.x_m - self.deck.ramp_aft_of_aim_point_m;
             let before_ramp = hook_x_m < ramp_x_m;
-            let late = inputs.and_then(|inputs| {
-                self.wave_off
-                    .late_abort(&late_abort_inputs(&inputs, before_ramp))
-            });
+            let late = inputs
+                .and_then(|inputs| wave_off.late_abort(&late_abort_inputs(&inputs, before_ramp)));
             if let OuterLoops::Approach { late_abort, .. } = &mut self.outer {
                 late_abort.step(t, dt, late);
             }
@@ -179,6 +179,8 @@ pub struct WaveOffFlight {
     pub climb_blend_s: f64,
     /// When the wave-off was decided (s), set by the guidance computer.
     pub decided_at_s: Option<f64>,
+    /// The α floor's lead τ (s): the floor holds α + τ·q; 0 holds α.
+    pub alpha_lead_s: f64,
 }
 
 /// [`crate::control::smooth_step`] of `x` clamped to [0, 1].
@@ -247,7 +249,12 @@ impl WaveOffFlight {
         inputs: &OuterLoopInputs,
         deck: &DeckReference,
     ) -> (f64, bool) {
-        let alpha_floor = inputs.air_path_angle_rad + self.min_alpha_rad;
+        let alpha_floor = if self.alpha_lead_s > 0.0 {
+            inputs.air_path_angle_rad - self.alpha_lead_s * inputs.pitch_rate_radps
+                + self.min_alpha_rad
+        } else {
+            inputs.air_path_angle_rad + self.min_alpha_rad
+        };
         let floored = towards_floor(theta_rad, alpha_floor, self.share(inputs.time_s));
         let past_ramp_m = inputs.hook_x_m - (deck.mean_aim.x_m - self.ramp_aft_of_aim_point_m);
         let floored = if past_ramp_m > 0.0 {
@@ -279,6 +286,7 @@ mod tests {
             ramp_aft_of_aim_point_m: 55.0,
             climb_blend_s: blend_s,
             decided_at_s: Some(20.0),
+            alpha_lead_s: 0.0,
         }
     }
 
@@ -378,5 +386,29 @@ mod tests {
         );
         check(pitch(&flight(0.0), 0.0, 21.0, -55.0 + 1e-6), 4.0, true);
         check(pitch(&flight(0.0), 0.0, 21.0, -55.0 - 1e-6), 0.0, false);
+    }
+
+    /// The α floor's lead: pitching down at 10°/s with τ = 0.3 s, the predicted α is 3°
+    /// below the present one, so the floor (−8° on α itself) is raised to −5°; pitching
+    /// up, lowered to −11°; with no lead it stays at −8° whatever the rate.
+    #[test]
+    fn the_alpha_floor_leads_the_pitch_rate() {
+        let deck = deck();
+        let floor_deg = |lead_s: f64, rate_degps: f64| {
+            let f = WaveOffFlight {
+                alpha_lead_s: lead_s,
+                ..flight(0.4)
+            };
+            let inputs = OuterLoopInputs {
+                pitch_rate_radps: rate_degps.to_radians(),
+                ..inputs(20.4, -100.0)
+            };
+            f.floored_pitch((-20.0_f64).to_radians(), &inputs, &deck)
+                .0
+                .to_degrees()
+        };
+        assert!((floor_deg(0.3, -10.0) - (-5.0)).abs() < 1e-9);
+        assert!((floor_deg(0.3, 10.0) - (-11.0)).abs() < 1e-9);
+        assert!((floor_deg(0.0, -10.0) - (-8.0)).abs() < 1e-9);
     }
 }
