@@ -1,26 +1,25 @@
 #!/usr/bin/env python3
 """Draws docs/images/boarding_trade.svg: boarding against catastrophes in the paper's sea
-as the path's least clearance over the forecast ramp (`ramp_clearance_margin_m`, m_R)
-grows, with the 95 % upper bound of each catastrophic rate.
+as the path's clearance over the forecast ramp grows, with the 95 % upper bound of each
+catastrophic rate.
 
 Each point is `deckland campaign FILE --runs 3000 --seed 2026 --threads 2`, FILE the
-printed default with `[control.flight_path]` `ramp_clearance_margin_m` set
-(docs/no-oracle-results.md gives the rows). Standard library only:
+printed default with the `[control.flight_path]` keys named
+(docs/no-oracle-results.md, "The trade", gives the rows). Standard library only:
 python3 docs/images/boarding_trade.py > docs/images/boarding_trade.svg
 """
 import math
 
 RUNS = 3000
-# (m_R in m, boardings, ramp strikes, hard landings) in 3000 approaches, seed 2026.
+# (label, boardings, ramp strikes, hard landings) in 3000 approaches, seed 2026.
 POINTS = [
-    (2.0, 1913, 7, 16),
-    (2.5, 0, 0, 0),
-    (3.0, 0, 0, 0),
-    (3.5, 0, 0, 0),
-    (3.9, 0, 0, 0),
+    ("p_R 2 %", 1921, 7, 16),
+    ("p_R 2 %, m_R 3.5 m", 1839, 2, 18),
+    ("p_R 0.1 %, r 1.16 m", 1808, 2, 17),
+    ("p_R 2 %, m_R 3.9 m", 1699, 1, 16),
+    ("p_R 0.01 %, r 1.16 m (default)", 1660, 0, 14),
 ]
-DEFAULT_M_R = 2.0
-W, H, LEFT, BOTTOM, TOP, RIGHT = 720, 420, 70, 50, 30, 170
+W, H, LEFT, BOTTOM, TOP, RIGHT = 760, 420, 70, 50, 30, 210
 
 
 def upper_bound(events, n, confidence=0.95):
@@ -98,11 +97,14 @@ def main():
                 out.append(f'<line x1="{previous[0]:.1f}" y1="{previous[1]:.1f}" x2="{x:.1f}" '
                            f'y2="{y:.1f}" stroke="{colour}" stroke-opacity="0.5"/>')
             previous = (x, y)
-            if column == 2:
-                name = f"m_R {point[0]} m" + (" (default)" if point[0] == DEFAULT_M_R else "")
-                out.append(f'<text x="{x:.1f}" y="{y0 - 8 - 12 * (POINTS.index(point) % 2):.1f}" '
-                           f'text-anchor="middle" fill="#333">{name}</text>')
+            if column == 3:
+                number = POINTS.index(point) + 1
+                out.append(f'<text x="{x:.1f}" y="{y - 8:.1f}" text-anchor="middle" '
+                           f'fill="#333">{number}</text>')
         out.append(f'<text x="{x1 + 4}" y="{y1 + 30 + 14 * column}" fill="{colour}">{label}</text>')
+    for number, point in enumerate(POINTS, start=1):
+        out.append(f'<text x="{x1 + 4}" y="{y1 + 90 + 14 * number}" fill="#333">'
+                   f'{number}: {point[0]}</text>')
     out.append("</svg>")
     print("\n".join(out))
 
