@@ -166,3 +166,28 @@ fn the_ramp_clearance_is_the_quantile_less_the_recovery() {
         "{clearance}"
     );
 }
+
+/// The sea state by hand: 1.0 m of heave and 0.75° of pitch 81 m aft give
+/// √(1 + (81·0.0130900)²) = √2.12422 = 1.45747 m, 2.0 m and 1.5° give 2.91494 m (the
+/// ship model's own stationary σ of the landing point, 1.46 and 2.91 m, worked out
+/// from its covariance independently of this formula, agree).
+#[test]
+fn a_deck_points_stationary_sigma_is_that_of_heave_and_pitch() {
+    let sea = |heave_rms_m, pitch_rms_deg| ShipMotionParameters {
+        heave_rms_m,
+        pitch_rms_deg,
+        ..ShipMotionParameters::default()
+    };
+    let moderate = sea(1.0, 0.75).deck_point_height_rms_m(81.0);
+    assert!((moderate - 1.45747).abs() < 1e-5, "{moderate}");
+    let paper = sea(2.0, 1.5).deck_point_height_rms_m(81.0);
+    assert!((paper - 2.91494).abs() < 1e-5, "{paper}");
+    for (heave, pitch) in [(1.0, 0.75), (2.0, 1.5), (3.0, 2.5)] {
+        let ship = ShipMotion::new(sea(heave, pitch)).unwrap();
+        for arm in [LANDING_POINT_M, RAMP_M] {
+            let from_covariance = deck_point_stationary_sigma(&ship, arm).0;
+            let formula = sea(heave, pitch).deck_point_height_rms_m(arm);
+            assert!((from_covariance - formula).abs() < 1e-9 * formula);
+        }
+    }
+}

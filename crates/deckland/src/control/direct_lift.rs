@@ -175,13 +175,6 @@ impl DirectLiftParameters {
             )
     }
 
-    /// The ship model's stationary σ of the landing point's height (m), σ_L =
-    /// √(σ_z² + (d·σ_θ)²), for an RMS heave `heave_rms_m`, an RMS pitch `pitch_rms_deg`
-    /// and the landing point `arm_m` aft of the pitch centre.
-    pub fn landing_point_height_sigma_m(heave_rms_m: f64, pitch_rms_deg: f64, arm_m: f64) -> f64 {
-        heave_rms_m.hypot(arm_m * pitch_rms_deg.to_radians())
-    }
-
     /// The law for a sea whose landing point's height has the stationary σ
     /// `landing_point_sigma_m` (m): the close-in gain scheduled on it, in full up to
     /// `close_in_full_sea_sigma_m`, none from `close_in_no_sea_sigma_m`, 3x² − 2x³ of
@@ -370,18 +363,6 @@ mod tests {
             ..dlc
         };
         assert_eq!(none.close_in(0.2, 0.5), 0.0);
-    }
-
-    /// The sea state by hand: 1.0 m of heave and 0.75° of pitch 81 m aft give
-    /// √(1 + (81·0.0130900)²) = √2.12422 = 1.45747 m, 2.0 m and 1.5° give 2.91494 m (the
-    /// ship model's own stationary σ of the landing point, 1.46 and 2.91 m, worked out
-    /// from its covariance independently of this formula).
-    #[test]
-    fn the_landing_points_stationary_sigma_is_that_of_heave_and_pitch() {
-        let moderate = DirectLiftParameters::landing_point_height_sigma_m(1.0, 0.75, 81.0);
-        assert!((moderate - 1.45747).abs() < 1e-5, "{moderate}");
-        let paper = DirectLiftParameters::landing_point_height_sigma_m(2.0, 1.5, 81.0);
-        assert!((paper - 2.91494).abs() < 1e-5, "{paper}");
     }
 
     /// The schedule by hand, ΔK_h = 0.15 in full up to σ_L = 2.0 m, off from 2.5 m: the

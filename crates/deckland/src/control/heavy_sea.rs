@@ -20,9 +20,9 @@ pub fn stationary_ramp_height_sigma_m(ship: &ShipMotionParameters, deck: &DeckGe
     if !ship.enabled {
         return 0.0;
     }
-    let lever_m = deck.landing_point_aft_of_pitch_centre_m + deck.ramp_aft_of_aim_point_m;
-    ship.heave_rms_m
-        .hypot(lever_m * ship.pitch_rms_deg.to_radians())
+    ship.deck_point_height_rms_m(
+        deck.landing_point_aft_of_pitch_centre_m + deck.ramp_aft_of_aim_point_m,
+    )
 }
 
 impl WaveOffParameters {

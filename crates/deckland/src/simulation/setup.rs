@@ -243,9 +243,7 @@ pub(crate) fn build(scenario: &Scenario, user: UserParts<'_>) -> Result<Setup, S
         .then(|| {
             let ship = &scenario.environment.ship;
             scenario.control.direct_lift.for_sea(
-                crate::control::DirectLiftParameters::landing_point_height_sigma_m(
-                    ship.heave_rms_m,
-                    ship.pitch_rms_deg,
+                ship.deck_point_height_rms_m(
                     scenario
                         .environment
                         .deck
