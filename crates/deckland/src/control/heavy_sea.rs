@@ -73,7 +73,7 @@ impl WaveOffParameters {
     }
 
     /// These parameters in a sea whose stationary σ of the ramp height is `ramp_sigma_m`
-    /// ([`stationary_ramp_height_sigma_m`]): each ramp-strike limit that is on and has a
+    /// (`stationary_ramp_height_sigma_m`): each ramp-strike limit that is on and has a
     /// heavy-sea limit moves to it by the share [`WaveOffParameters::heavy_sea_share`],
     /// p = p₀ + w·(p_heavy − p₀); the same parameters where w = 0 or no heavy-sea limit
     /// is set.
