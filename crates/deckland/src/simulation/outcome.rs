@@ -297,17 +297,40 @@ impl EndReason {
             Self::WaveOff {
                 decided_at_s,
                 decision,
-            } => Some(format!(
-                "wave-off at t = {decided_at_s:.2} s on {}: {} {:.2} against the limit {:.2}",
-                decision.criterion.name(),
-                decision.criterion.quantity(),
-                decision.value,
-                decision.limit
-            )),
+            } => Some(wave_off_words(*decided_at_s, decision)),
             Self::TimeLimit { limit_s } => Some(format!("no touchdown within {limit_s:.1} s")),
             Self::Diverged(divergence) => Some(divergence.to_string()),
         }
     }
+}
+
+impl EndReason {
+    /// The reason in words, as [`EndReason::description`], with the wave-off decided
+    /// before it, if any, named after it: a wave-off that still ends on the ramp, on the
+    /// deck too hard or diverged says so ("hook 1.07 m below the ramp; after a wave-off
+    /// at t = 27.51 s on …"). A wave-off's own end names it once; a trap keeps no reason.
+    pub fn description_after(&self, wave_off: Option<(f64, WaveOffDecision)>) -> Option<String> {
+        let reason = self.description()?;
+        match (self, wave_off) {
+            (Self::WaveOff { .. }, _) | (_, None) => Some(reason),
+            (_, Some((decided_at_s, decision))) => Some(format!(
+                "{reason}; after a {}",
+                wave_off_words(decided_at_s, &decision)
+            )),
+        }
+    }
+}
+
+/// A wave-off decision in words: "wave-off at t = 23.10 s on ramp_strike_probability:
+/// probability of a ramp strike (%) 7.52 against the limit 5.00".
+fn wave_off_words(decided_at_s: f64, decision: &WaveOffDecision) -> String {
+    format!(
+        "wave-off at t = {decided_at_s:.2} s on {}: {} {:.2} against the limit {:.2}",
+        decision.criterion.name(),
+        decision.criterion.quantity(),
+        decision.value,
+        decision.limit
+    )
 }
 
 /// The rules that classify a landing from its events (docs/model.md §7): the hard-landing
@@ -425,61 +448,5 @@ pub struct RunSummary {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn touchdown(distance_from_aim_m: f64, sink_rate_mps: f64) -> Touchdown {
-        Touchdown {
-            time_s: 25.0,
-            distance_from_aim_m,
-            sink_rate_mps,
-            pitch_deg: 3.0,
-            airspeed_mps: 69.0,
-            lateral: None,
-        }
-    }
-
-    #[test]
-    fn touchdowns_are_classified_by_wire_and_sink_rate() {
-        let rules = LandingRules::new(&OutcomeLimits::default(), [-18.0, -6.0, 6.0, 18.0]);
-        // Between wires 2 and 3 (docs/model.md §7: the first wire at or beyond the point).
-        assert_eq!(
-            rules.classify_touchdown(&touchdown(0.0, 4.0)),
-            EndReason::Trap { wire: 3 }
-        );
-        assert_eq!(
-            rules.classify_touchdown(&touchdown(-30.0, 4.0)),
-            EndReason::Trap { wire: 1 }
-        );
-        let past = rules.classify_touchdown(&touchdown(20.0, 4.0));
-        assert_eq!(past.outcome(), Outcome::Bolter);
-        assert_eq!(
-            past.description().as_deref(),
-            Some("touchdown 20.0 m beyond the aim point, past the last wire")
-        );
-        let hard = rules.classify_touchdown(&touchdown(0.0, 8.0));
-        assert_eq!(hard.outcome(), Outcome::HardLanding);
-        assert_eq!(hard.wire(), Some(3));
-    }
-
-    #[test]
-    fn only_a_crossing_below_the_ramp_ends_the_run() {
-        let rules = LandingRules::new(&OutcomeLimits::default(), [-18.0, -6.0, 6.0, 18.0]);
-        let above = Event::RampCrossing {
-            time_s: 1.0,
-            clearance_m: 0.5,
-        };
-        assert_eq!(rules.judge(&above), None);
-        let below = Event::RampCrossing {
-            time_s: 1.0,
-            clearance_m: -0.25,
-        };
-        let end = rules.judge(&below).expect("a strike");
-        assert_eq!(end.outcome(), Outcome::RampStrike);
-        assert_eq!(
-            end.description().as_deref(),
-            Some("hook 0.25 m below the ramp")
-        );
-        assert_eq!(rules.last_wire_m(), 18.0);
-    }
-}
+#[path = "outcome_tests.rs"]
+mod tests;

@@ -390,7 +390,8 @@ impl Simulation {
             let summary = RunSummary {
                 outcome: reason.outcome(),
                 wire: reason.wire(),
-                reason: self.system.outer.with_late_abort(reason.description()),
+                reason: (self.system.outer)
+                    .with_late_abort(reason.description_after(self.wave_off)),
                 end_time_s,
                 steps: self.step,
                 touchdown,
