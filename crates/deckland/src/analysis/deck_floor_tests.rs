@@ -191,3 +191,57 @@ fn a_deck_points_stationary_sigma_is_that_of_heave_and_pitch() {
         }
     }
 }
+
+/// The heavy-sea band of the wave-off's ramp-strike limits (`control.wave_off.
+/// heavy_sea_ramp_sigma_start_m`, `…_full_m`, docs/landing-design.md) starts in the sea
+/// where the guidance's capped clearance stops holding its own ramp-strike bound, and is
+/// in full where the capped path's strike probability is twice the bound. For the
+/// paper's sea scaled by k (heave and pitch RMS alike, so its stationary ramp σ is
+/// 4.20·k m), the ramp's floor σ_c over the 1.4 s from the commit point to the crossing
+/// gives the capped path P(strike) = Φ(−(m_max + r)/σ_c) (docs/model.md §5.7; m_max =
+/// 4 m, r = 1.16 m): 10⁻⁴ at σ_R∞ ≈ 4.29 m and 2·10⁻⁴ at ≈ 4.50 m.
+#[test]
+fn the_heavy_sea_band_starts_where_the_capped_path_stops_holding_its_bound() {
+    use crate::control::{FlightPathParameters, WaveOffParameters};
+    let path = FlightPathParameters::default();
+    let wave_off = WaveOffParameters::default();
+    // (σ_R∞, the capped path's P(strike)) in the paper's sea scaled by k.
+    let capped = |k: f64| {
+        let ship = ShipMotion::new(ShipMotionParameters {
+            heave_rms_m: 2.0 * k,
+            pitch_rms_deg: 1.5 * k,
+            ..ShipMotionParameters::default()
+        })
+        .expect("a valid sea");
+        let sigma_c = deck_point_floor(&ship, RAMP_M, 1.4).height_sigma_m;
+        let sigma_ramp = deck_point_stationary_sigma(&ship, RAMP_M).0;
+        let miss = path.max_ramp_clearance_m + path.ramp_recovery_m;
+        (sigma_ramp, normal_cdf(-miss / sigma_c))
+    };
+    // The sea (its σ_R∞) where the capped path's probability reaches `p`, by bisection on
+    // k (the probability grows with k).
+    let sea_at = |p: f64| {
+        let (mut low, mut high) = (0.5_f64, 2.0_f64);
+        for _ in 0..60 {
+            let k = 0.5 * (low + high);
+            if capped(k).1 > p {
+                high = k;
+            } else {
+                low = k;
+            }
+        }
+        capped(0.5 * (low + high)).0
+    };
+    let bound = path.ramp_strike_probability_limit;
+    let (start, full) = (sea_at(bound), sea_at(2.0 * bound));
+    assert!(
+        (start - wave_off.heavy_sea_ramp_sigma_start_m).abs() < 0.05,
+        "the capped path stops holding 10⁻⁴ at σ_R∞ = {start:.3} m"
+    );
+    assert!(
+        (full - wave_off.heavy_sea_ramp_sigma_full_m).abs() < 0.05,
+        "the capped path reaches 2·10⁻⁴ at σ_R∞ = {full:.3} m"
+    );
+    // The paper's sea itself (k = 1, 4.20 m) holds the bound.
+    assert!(capped(1.0).1 < bound);
+}

@@ -138,13 +138,15 @@ pub struct WaveOffParameters {
     /// laws have; the approach flies α ≈ 7°.
     pub min_alpha_deg: f64,
     /// The wave-off's P(ramp strike) limit in a heavy sea (–), moving in over the sea's
-    /// stationary ramp σ (`heavy_sea.rs`, docs/landing-design.md); 0.02; 0 off; [0, 1).
+    /// stationary ramp σ (`heavy_sea.rs`, docs/landing-design.md); 0.005; 0 off; [0, 1).
     pub heavy_sea_ramp_strike_probability: f64,
-    /// The late abort's limit in a heavy sea (–) alike; 0.02; 0 off; [0, 1).
+    /// The late abort's limit in a heavy sea (–) alike; 0.005; 0 off; [0, 1).
     pub heavy_sea_late_abort_ramp_strike_probability: f64,
-    /// The stationary ramp σ (m) up to which the ordinary limits hold; 4.5 m; [0, 50].
+    /// The stationary ramp σ (m) up to which the ordinary limits hold; 4.3 m, the sea in
+    /// which the guidance's capped clearance stops holding its ramp-strike bound; [0, 50].
     pub heavy_sea_ramp_sigma_start_m: f64,
-    /// The σ (m) from which the heavy-sea limits hold in full; 5.5 m; start to 50.
+    /// The σ (m) from which the heavy-sea limits hold in full; 4.5 m, the sea in which the
+    /// capped path's strike probability is twice the bound; start to 50.
     pub heavy_sea_ramp_sigma_full_m: f64,
     /// The lead τ of the wave-off's α floor (s): it holds α + τ·q, the angle of attack
     /// predicted τ ahead, as the approach's α protection does; 0.3 s (heavy sea, 1000
@@ -176,10 +178,10 @@ impl Default for WaveOffParameters {
             late_abort_full_thrust: true,
             late_abort_rate_per_s: 5.0,
             min_alpha_deg: 2.0,
-            heavy_sea_ramp_strike_probability: 0.02,
-            heavy_sea_late_abort_ramp_strike_probability: 0.02,
-            heavy_sea_ramp_sigma_start_m: 4.5,
-            heavy_sea_ramp_sigma_full_m: 5.5,
+            heavy_sea_ramp_strike_probability: 0.005,
+            heavy_sea_late_abort_ramp_strike_probability: 0.005,
+            heavy_sea_ramp_sigma_start_m: 4.3,
+            heavy_sea_ramp_sigma_full_m: 4.5,
             alpha_lead_s: 0.3,
         }
     }

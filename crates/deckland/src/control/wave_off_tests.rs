@@ -317,6 +317,8 @@ fn the_heavy_sea_limits_move_in_linearly_with_the_sea_state() {
     let p = WaveOffParameters {
         heavy_sea_ramp_strike_probability: 0.1,
         heavy_sea_late_abort_ramp_strike_probability: 0.05,
+        heavy_sea_ramp_sigma_start_m: 4.5,
+        heavy_sea_ramp_sigma_full_m: 5.5,
         ..WaveOffParameters::default()
     };
     assert_eq!(p.for_sea(4.2), p);
