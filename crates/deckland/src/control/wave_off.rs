@@ -130,12 +130,15 @@ pub struct WaveOffParameters {
     /// from the law's to full up along a ramp, never by a step; 5 per second (full in
     /// 0.2 s, about the surfaces' own time to full authority, 0.15 s at 1/s); (0, 100].
     pub late_abort_rate_per_s: f64,
-    /// Smallest angle of attack the wave-off flies (deg); 2°. At full thrust the climb
+    /// Smallest angle of attack the wave-off flies (deg); 4°. At full thrust the climb
     /// overshoots its command and the sink-rate loop pushes the nose over; in the heavy
     /// sea's wake that took α below the aerodynamic model's −5° (29 approaches in 1000
     /// diverged so, docs/no-oracle-results.md). The pitch command is kept at or above
     /// the air-relative flight-path angle plus this, an α limiter as fly-by-wire control
-    /// laws have; the approach flies α ≈ 7°.
+    /// laws have; the approach flies α ≈ 7°. 4° rather than 2°: the wake's gusts move α
+    /// by ±4° and the 40 °/s stabilator needs about 0.9 s to reverse a push-over, in which
+    /// α falls by about 7° (one heavy-sea wave-off in 2900 diverged with 2°,
+    /// docs/landing-design.md).
     pub min_alpha_deg: f64,
     /// The wave-off's P(ramp strike) limit in a heavy sea (–), moving in over the sea's
     /// stationary ramp σ (`heavy_sea.rs`, docs/landing-design.md); 0.005; 0 off; [0, 1).
@@ -177,7 +180,7 @@ impl Default for WaveOffParameters {
             late_abort_touchdown_sink_rate_mps: 0.0,
             late_abort_full_thrust: true,
             late_abort_rate_per_s: 5.0,
-            min_alpha_deg: 2.0,
+            min_alpha_deg: 4.0,
             heavy_sea_ramp_strike_probability: 0.005,
             heavy_sea_late_abort_ramp_strike_probability: 0.005,
             heavy_sea_ramp_sigma_start_m: 4.3,
