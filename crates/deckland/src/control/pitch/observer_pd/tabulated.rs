@@ -7,9 +7,9 @@ use crate::estimation::FractionalPower;
 impl ObserverPdController {
     /// The same law with its observer's fractional power |e|^((α1 − 1)/3) taken from
     /// [`FractionalPower`]'s tables (within 2 ulp of the library's `pow`, about a quarter
-    /// of its cost) in [`AxisLaw::derivative`]: the 3-D approach's, which takes it four
-    /// times a step, as its lateral O-PDs do. [`ObserverPdController::derivative`] keeps
-    /// the library's `pow`.
+    /// of its cost) in [`crate::control::AxisLaw::derivative`]: the 3-D approach's, which
+    /// takes it four times a step, as its lateral O-PDs do.
+    /// [`ObserverPdController::derivative`] keeps the library's `pow`.
     pub fn with_tabulated_power(self) -> Self {
         Self {
             power: Some(FractionalPower::new(self.observer.power_exponent())),
