@@ -7,6 +7,8 @@
 
 mod augmented_observer;
 mod deck_motion;
+mod fractional_power;
 
 pub use augmented_observer::{AugmentedObserver, ObserverParameters, ObserverState};
 pub use deck_motion::DeckMotionEstimator;
+pub use fractional_power::FractionalPower;

@@ -195,6 +195,19 @@ pub(crate) fn build(scenario: &Scenario, user: UserParts<'_>) -> Result<Setup, S
         time_step_s: scenario.time_step_s,
     };
     let pitch = match pitch_law {
+        // The 3-D approach takes the O-PD observer's power from tables, as its lateral
+        // laws (`FractionalPower`).
+        None if super::lateral::flies_three_dimensional(
+            scenario,
+            section.model == PlantModel::SixDof,
+        ) =>
+        {
+            scenario
+                .control
+                .pitch
+                .build(&context)?
+                .with_tabulated_observer_power()
+        }
         None => scenario.control.pitch.build(&context)?,
         Some(factory) => BuiltPitchLaw::Custom(factory(&context)?.into()),
     };

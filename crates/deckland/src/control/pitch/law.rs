@@ -232,6 +232,9 @@ macro_rules! pitch_laws {
 
         /// A built pitch law: a registered one (called without dynamic dispatch) or a
         /// user's own.
+        // One per simulation, read at every RK4 stage: the O-PD (with its power's tables
+        // in the 3-D approach) stays inline.
+        #[allow(clippy::large_enum_variant)]
         #[derive(Debug, Clone)]
         pub enum BuiltPitchLaw {
             $( $(#[doc = $doc])* $(#[cfg($cfg)])? $variant(<$module::$parameters as $crate::control::pitch::PitchLawDesign>::Law), )+

@@ -59,6 +59,18 @@ impl PitchControllerParameters {
     }
 }
 
+impl BuiltPitchLaw {
+    /// The same law, an O-PD with its observer's fractional power from tables
+    /// ([`ObserverPdController::with_tabulated_power`]): the 3-D approach's, as its
+    /// lateral O-PDs. Other laws are returned unchanged.
+    pub(crate) fn with_tabulated_observer_power(self) -> Self {
+        match self {
+            Self::ObserverPd(law) => Self::ObserverPd(law.with_tabulated_power()),
+            other => other,
+        }
+    }
+}
+
 impl Default for PitchControllerParameters {
     /// The paper's proposed controller, O-PD, designed for the realistic stabilator.
     fn default() -> Self {

@@ -16,10 +16,11 @@ use serde::{Deserialize, Serialize};
 use crate::control::design::{LinearisedLaw, AxisPlantDerivatives};
 use super::law::{PitchDesignContext, PitchLawDesign, PitchLawInputs, SECTION};
 use crate::control::{AxisLaw, LinearLaw};
-use crate::estimation::{AugmentedObserver, ObserverParameters, ObserverState};
+use crate::estimation::{AugmentedObserver, FractionalPower, ObserverParameters, ObserverState};
 use crate::parameters::{Bounds, ParameterError};
 
 mod design;
+mod tabulated;
 
 pub use design::{
     assess_feedback, design_observer_pd, linear_observer_pd, FeedbackAssessment, PitchDesign,
@@ -189,6 +190,9 @@ pub struct ObserverPdController {
     plant: AxisPlantDerivatives,
     observer: AugmentedObserver,
     pitch_feedback: PitchFeedback,
+    /// The observer's fractional power by tables ([`ObserverPdController::with_tabulated_power`]);
+    /// `None`: the library's `pow`.
+    power: Option<FractionalPower>,
 }
 
 impl ObserverPdController {
@@ -222,6 +226,7 @@ impl ObserverPdController {
             plant,
             observer: AugmentedObserver::new(observer)?,
             pitch_feedback,
+            power: None,
         })
     }
 
@@ -345,7 +350,13 @@ impl AxisLaw for ObserverPdController {
 
     #[inline]
     fn derivative(&self, state: &[f64], inputs: &PitchLawInputs, rate: &mut [f64]) {
-        let derivative = ObserverPdController::derivative(self, &observer_state(state), inputs);
+        let state = observer_state(state);
+        let derivative = match &self.power {
+            None => ObserverPdController::derivative(self, &state, inputs),
+            Some(power) => {
+                self.derivative_with_power(&state, inputs, |magnitude| power.of(magnitude))
+            }
+        };
         rate.copy_from_slice(&derivative.to_array());
     }
 
