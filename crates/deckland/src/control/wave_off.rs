@@ -131,25 +131,20 @@ pub struct WaveOffParameters {
     /// 0.2 s, about the surfaces' own time to full authority, 0.15 s at 1/s); (0, 100].
     pub late_abort_rate_per_s: f64,
     /// Smallest angle of attack the wave-off flies (deg); 4°. At full thrust the climb
-    /// overshoots its command and the sink-rate loop pushes the nose over; in the heavy
-    /// sea's wake that took α below the aerodynamic model's −5° (29 approaches in 1000
-    /// diverged so, docs/no-oracle-results.md). The pitch command is kept at or above
-    /// the air-relative flight-path angle plus this, an α limiter as fly-by-wire control
-    /// laws have; the approach flies α ≈ 7°. 4° rather than 2°: the wake's gusts move α
-    /// by ±4° and the 40 °/s stabilator needs about 0.9 s to reverse a push-over, in which
-    /// α falls by about 7° (one heavy-sea wave-off in 2900 diverged with 2°,
-    /// docs/landing-design.md).
+    /// overshoots its command and the sink-rate loop pushes the nose over, which the heavy
+    /// sea's wake took below the aerodynamic model's −5°. The pitch command is kept at or
+    /// above the air-relative flight-path angle plus this, an α limiter as fly-by-wire
+    /// laws have (the approach flies α ≈ 7°); a 40 °/s stabilator needs 0.9 s to reverse
+    /// a push-over, in which α falls by 7° (docs/landing-design.md).
     pub min_alpha_deg: f64,
-    /// The wave-off's P(ramp strike) limit in a heavy sea (–), moving in over the sea's
-    /// stationary ramp σ (`heavy_sea.rs`, docs/landing-design.md); 0.005; 0 off; [0, 1).
+    /// The wave-off's P(ramp strike) limit in a heavy sea (–), by the sea's stationary ramp
+    /// σ (`heavy_sea.rs`); 0.005; 0 off; [0, 1).
     pub heavy_sea_ramp_strike_probability: f64,
     /// The late abort's limit in a heavy sea (–) alike; 0.005; 0 off; [0, 1).
     pub heavy_sea_late_abort_ramp_strike_probability: f64,
-    /// The stationary ramp σ (m) up to which the ordinary limits hold; 4.3 m, the sea in
-    /// which the guidance's capped clearance stops holding its ramp-strike bound; [0, 50].
+    /// The ramp σ (m) up to which the ordinary limits hold; 4.3 m; [0, 50].
     pub heavy_sea_ramp_sigma_start_m: f64,
-    /// The σ (m) from which the heavy-sea limits hold in full; 4.5 m, the sea in which the
-    /// capped path's strike probability is twice the bound; start to 50.
+    /// The σ (m) from which the heavy-sea limits hold in full; 4.5 m; start to 50.
     pub heavy_sea_ramp_sigma_full_m: f64,
     /// The lead τ of the wave-off's α floor (s): it holds α + τ·q, the angle of attack
     /// predicted τ ahead, as the approach's α protection does; 0.3 s (heavy sea, 1000

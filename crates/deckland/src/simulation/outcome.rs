@@ -324,8 +324,15 @@ impl EndReason {
 /// A wave-off decision in words: "wave-off at t = 23.10 s on ramp_strike_probability:
 /// probability of a ramp strike (%) 7.52 against the limit 5.00".
 fn wave_off_words(decided_at_s: f64, decision: &WaveOffDecision) -> String {
+    decision_words("wave-off", decided_at_s, decision)
+}
+
+/// A decision on a wave-off criterion in words, `action` first: "late abort at t = 23.10 s
+/// on ramp_strike_probability: probability of a ramp strike (%) 7.52 against the limit
+/// 5.00".
+pub(crate) fn decision_words(action: &str, time_s: f64, decision: &WaveOffDecision) -> String {
     format!(
-        "wave-off at t = {decided_at_s:.2} s on {}: {} {:.2} against the limit {:.2}",
+        "{action} at t = {time_s:.2} s on {}: {} {:.2} against the limit {:.2}",
         decision.criterion.name(),
         decision.criterion.quantity(),
         decision.value,

@@ -3,6 +3,7 @@
 //! flight path → guidance → sink rate.
 
 use super::alpha_floor::AlphaFloor;
+use super::outcome::decision_words;
 use super::taps::{LoopBreak, Taps};
 pub use super::wave_off::WaveOffFlight;
 use crate::control::pitch::command_shaping::JerkLimitedStep;
@@ -105,15 +106,8 @@ impl LateAbort {
     /// t = 23.10 s on ramp_strike_probability: probability of a ramp strike (%) 7.52
     /// against the limit 5.00"; `None` if it never engaged.
     pub fn description(&self) -> Option<String> {
-        self.first.map(|(time_s, decision)| {
-            format!(
-                "late abort at t = {time_s:.2} s on {}: {} {:.2} against the limit {:.2}",
-                decision.criterion.name(),
-                decision.criterion.quantity(),
-                decision.value,
-                decision.limit
-            )
-        })
+        self.first
+            .map(|(time_s, decision)| decision_words("late abort", time_s, &decision))
     }
 }
 
