@@ -3,6 +3,8 @@
 
 #![allow(clippy::unwrap_used)] // tests fail loudly by design
 
+mod common;
+
 use deckland::control::pitch::{PidParameters, PitchControllerParameters};
 use deckland::random::RandomStreams;
 use deckland::recording::{SummaryRecorder, TimeSeriesRecorder};
@@ -398,14 +400,7 @@ fn a_wave_off_keeps_its_angle_of_attack_off_the_models_floor() {
             .control
             .wave_off
             .heavy_sea_late_abort_ramp_strike_probability = 0.0;
-        let mut recorder = TimeSeriesRecorder::every(0.01);
-        let summary = Simulation::new(&scenario).unwrap().run(&mut recorder);
-        let lowest = recorder
-            .samples
-            .iter()
-            .map(|s| s.alpha_rad.to_degrees())
-            .fold(f64::INFINITY, f64::min);
-        (summary, lowest)
+        common::fly_lowest_alpha_deg(&scenario)
     };
     let (without, _) = fly_lowest_alpha(-5.0, 0.0);
     assert_eq!(without.outcome, Outcome::Diverged, "{without:?}");

@@ -2,10 +2,11 @@
 //! its α floor must act before the 40 °/s stabilator can no longer stop a push-over.
 #![allow(clippy::unwrap_used)] // tests fail loudly by design
 
+mod common;
+
 use deckland::random::RandomStreams;
-use deckland::recording::TimeSeriesRecorder;
 use deckland::scenario::{load_scenario, Scenario};
-use deckland::simulation::{Outcome, Simulation};
+use deckland::simulation::Outcome;
 
 /// Run 128 of `deckland campaign scenarios/heavy-sea.toml --runs 3000 --seed 5151` (seed
 /// 8636934081132346416, sea factor 1.02) waves off at t = 24.62 s. At 25.5–25.95 s the
@@ -32,14 +33,7 @@ fn a_wave_off_in_the_wake_stops_its_push_over_in_time() {
     let fly = |min_alpha_deg: f64| {
         let mut scenario = scenario;
         scenario.control.wave_off.min_alpha_deg = min_alpha_deg;
-        let mut recorder = TimeSeriesRecorder::every(0.01);
-        let summary = Simulation::new(&scenario).unwrap().run(&mut recorder);
-        let lowest = recorder
-            .samples
-            .iter()
-            .map(|s| s.alpha_rad.to_degrees())
-            .fold(f64::INFINITY, f64::min);
-        (summary, lowest)
+        common::fly_lowest_alpha_deg(&scenario)
     };
     let (low, _) = fly(2.0);
     assert_eq!(low.outcome, Outcome::Diverged, "{low:?}");

@@ -46,6 +46,18 @@ pub fn fly_recorded(simulation: Simulation) -> deckland::recording::TimeSeriesRe
     recorder
 }
 
+/// Flies `scenario` recording each 10 ms: its summary and the lowest angle of attack
+/// (deg) on the way.
+pub fn fly_lowest_alpha_deg(scenario: &Scenario) -> (deckland::simulation::RunSummary, f64) {
+    let recorder = fly_recorded(Simulation::new(scenario).unwrap());
+    let lowest = recorder
+        .samples
+        .iter()
+        .map(|s| s.alpha_rad.to_degrees())
+        .fold(f64::INFINITY, f64::min);
+    (recorder.summary.unwrap(), lowest)
+}
+
 /// A cycle through the last node of `path` in a module graph, if there is one
 /// (depth-first search).
 pub fn cycle_from(
