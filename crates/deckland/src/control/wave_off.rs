@@ -137,8 +137,7 @@ pub struct WaveOffParameters {
     /// laws have (the approach flies α ≈ 7°); a 40 °/s stabilator needs 0.9 s to reverse
     /// a push-over, in which α falls by 7° (docs/landing-design.md).
     pub min_alpha_deg: f64,
-    /// The wave-off's P(ramp strike) limit in a heavy sea (–), by the sea's stationary ramp
-    /// σ (`heavy_sea.rs`); 0.005; 0 off; [0, 1).
+    /// The wave-off's ramp-strike limit in a heavy sea (–, `heavy_sea.rs`); 0.005; 0 off.
     pub heavy_sea_ramp_strike_probability: f64,
     /// The late abort's limit in a heavy sea (–) alike; 0.005; 0 off; [0, 1).
     pub heavy_sea_late_abort_ramp_strike_probability: f64,
@@ -196,6 +195,7 @@ impl WaveOffParameters {
             heavy_sea_ramp_strike_probability: 0.0,
             heavy_sea_late_abort_ramp_strike_probability: 0.0,
             alpha_lead_s: 0.0,
+            min_alpha_deg: 2.0,
             ..Self::default()
         }
     }
