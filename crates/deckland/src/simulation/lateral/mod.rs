@@ -25,6 +25,7 @@
 
 mod build;
 mod evaluate;
+pub mod floor;
 pub mod forecast;
 mod free_response;
 mod hold;
