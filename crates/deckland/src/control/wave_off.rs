@@ -313,9 +313,9 @@ pub enum WaveOffCriterion {
     DeckPitch,
     /// Predicted landing point too far from its mean height.
     LandingPointDisplacement,
-    /// 3-D approach: lineup error predicted at touchdown beyond the limit
+    /// 3-D approach: probability of an off-centre touchdown above the limit
     /// (`control::wave_off_lateral`).
-    LineupError,
+    OffCentreProbability,
     /// 3-D approach: drifting across the centreline too fast.
     LineupDriftRate,
 }
@@ -332,7 +332,7 @@ impl WaveOffCriterion {
             Self::GlidePathErrorRate => "glide_path_error_rate",
             Self::DeckPitch => "deck_pitch",
             Self::LandingPointDisplacement => "landing_point_displacement",
-            Self::LineupError => "lineup_error",
+            Self::OffCentreProbability => "off_centre_probability",
             Self::LineupDriftRate => "lineup_drift_rate",
         }
     }
@@ -348,7 +348,7 @@ impl WaveOffCriterion {
             Self::GlidePathErrorRate => "glide-path error rate (m/s)",
             Self::DeckPitch => "predicted deck pitch (deg)",
             Self::LandingPointDisplacement => "predicted landing-point displacement (m)",
-            Self::LineupError => "predicted lineup error at touchdown (m)",
+            Self::OffCentreProbability => "probability of an off-centre touchdown (%)",
             Self::LineupDriftRate => "drift rate across the centreline (m/s)",
         }
     }

@@ -192,6 +192,10 @@ impl Simulation {
     pub fn system(&self) -> &ClosedLoop {
         &self.system
     }
+    #[cfg(test)]
+    pub(crate) fn system_mut(&mut self) -> &mut ClosedLoop {
+        &mut self.system
+    }
 
     /// The current state vector (see [`ClosedLoop::layout`] for its blocks).
     pub fn state(&self) -> &[f64] {

@@ -154,6 +154,7 @@ pub(crate) fn build(
         crab_heading_rad: trim.psi_rad,
         trim_sideslip_rad: trim.sideslip_rad,
     };
+    let floor = super::floor::AimPointLateralFloor::new(&ship, deck);
     let lateral = LateralLoop {
         ship,
         initial_pitch_centre_m: initial_pitch_centre_m(deck),
@@ -167,6 +168,7 @@ pub(crate) fn build(
         lineup,
         heading_hold,
         wave_off: LateralWaveOffLimits::default(),
+        floor,
         aileron: surface(aircraft.aileron(), trim.aileron_rad),
         rudder: surface(aircraft.rudder(), trim.rudder_rad),
         trim_bank_rad: trim.phi_rad,

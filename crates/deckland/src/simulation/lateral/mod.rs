@@ -99,6 +99,8 @@ pub(crate) struct LateralLoop {
     pub heading_hold: HeadingHold,
     /// The lateral wave-off criteria.
     pub wave_off: LateralWaveOffLimits,
+    /// The floor of the aim point's lateral forecast, for the off-centre probability.
+    pub floor: floor::AimPointLateralFloor,
     /// Aileron and rudder trims and limits.
     pub aileron: SurfaceTrim,
     pub rudder: SurfaceTrim,

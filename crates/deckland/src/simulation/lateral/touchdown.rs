@@ -6,9 +6,7 @@
 
 use serde::Serialize;
 
-/// The arresting gear's off-centre engagement limit (m): 6.1 m, 20 ft, an assumption
-/// (shared model §10.8).
-pub const MAX_OFF_CENTRE_M: f64 = 6.1;
+pub use crate::control::wave_off_lateral::MAX_OFF_CENTRE_M;
 /// Bank limit at touchdown reported as a safety statistic (deg): 5, an assumption.
 pub const MAX_TOUCHDOWN_BANK_DEG: f64 = 5.0;
 /// Drift limit at touchdown reported as a safety statistic (m/s): 1.5, an assumption.
