@@ -52,6 +52,21 @@ fn canonical_energy(tau: f64) -> f64 {
     )
 }
 
+/// The paper's sea's lateral motion (the defaults), its filters, the default deck and
+/// their floor.
+fn default_floor() -> (
+    ShipMotionParameters,
+    LateralShipMotion,
+    DeckGeometry,
+    AimPointLateralFloor,
+) {
+    let parameters = ShipMotionParameters::default();
+    let ship = LateralShipMotion::new(&parameters).expect("default ship");
+    let deck = DeckGeometry::default();
+    let floor = AimPointLateralFloor::new(&ship, &deck);
+    (parameters, ship, deck, floor)
+}
+
 #[test]
 fn the_aim_points_sensitivities_are_the_decks_geometry_by_hand() {
     // The aim point is 81 m aft of the pitch centre, 10 m to port of the ship's
@@ -72,10 +87,7 @@ fn the_aim_points_sensitivities_are_the_decks_geometry_by_hand() {
 fn the_floor_is_the_noise_still_to_come_integrated_apart() {
     // σ²(τ) = k_φ²·q_φ·∫h_φ² + (k_ψ²q_ψ + k_y²q_y)·∫h_D², the impulse responses
     // integrated step by step (above), against the table's closed form.
-    let parameters = ShipMotionParameters::default();
-    let ship = LateralShipMotion::new(&parameters).expect("default ship");
-    let deck = DeckGeometry::default();
-    let floor = AimPointLateralFloor::new(&ship, &deck);
+    let (_, ship, deck, floor) = default_floor();
     let [q_roll, q_yaw, q_sway] = ship.noise_intensities();
     let [k_roll, k_yaw, k_sway] = aim_point_sensitivities(&deck);
     for tau in [0.5, 2.0, 3.0, 4.0, 10.0] {
@@ -96,10 +108,7 @@ fn the_floor_grows_to_the_configured_motion() {
     // Far ahead nothing is foreseeable: σ is the aim point's stationary RMS, which the
     // configured RMS of roll (1°), yaw (0.3°) and sway (0.5 m) give through the
     // sensitivities, whatever the noise intensities were solved to be.
-    let parameters = ShipMotionParameters::default();
-    let ship = LateralShipMotion::new(&parameters).expect("default ship");
-    let deck = DeckGeometry::default();
-    let floor = AimPointLateralFloor::new(&ship, &deck);
+    let (parameters, _, deck, floor) = default_floor();
     let [k_roll, k_yaw, k_sway] = aim_point_sensitivities(&deck);
     let expected = ((k_roll * parameters.roll_rms_deg.to_radians()).powi(2)
         + (k_yaw * parameters.yaw_rms_deg.to_radians()).powi(2)
