@@ -77,12 +77,25 @@ impl ShipMotionForecast {
     /// Predicted height change of a deck point `lever_arm_m` aft of the pitch centre
     /// (m, up): heave − r·sin θ (docs/model.md §3.1, Eq. 17–18 without the deck height).
     pub fn deck_point_height_m(&self, lever_arm_m: f64) -> f64 {
-        self.heave_m - lever_arm_m * self.pitch_rad.sin()
+        self.deck_point_height_at_sine_m(lever_arm_m, self.pitch_rad.sin())
+    }
+
+    /// [`ShipMotionForecast::deck_point_height_m`] with sin θ given (`sin_pitch`, by
+    /// whatever means the caller computes it).
+    #[inline]
+    pub fn deck_point_height_at_sine_m(&self, lever_arm_m: f64, sin_pitch: f64) -> f64 {
+        self.heave_m - lever_arm_m * sin_pitch
     }
 
     /// Predicted vertical velocity of that deck point (m/s, up): ż − r·cos θ·θ̇.
     pub fn deck_point_climb_rate_mps(&self, lever_arm_m: f64) -> f64 {
-        self.heave_rate_mps - lever_arm_m * self.pitch_rad.cos() * self.pitch_rate_radps
+        self.deck_point_climb_rate_at_cosine_mps(lever_arm_m, self.pitch_rad.cos())
+    }
+
+    /// [`ShipMotionForecast::deck_point_climb_rate_mps`] with cos θ given (`cos_pitch`).
+    #[inline]
+    pub fn deck_point_climb_rate_at_cosine_mps(&self, lever_arm_m: f64, cos_pitch: f64) -> f64 {
+        self.heave_rate_mps - lever_arm_m * cos_pitch * self.pitch_rate_radps
     }
 
     /// Standard deviation of that deck point's height prediction (m), linearised in the

@@ -457,31 +457,24 @@ pub(crate) fn forecast_deck(
         } else {
             (0.0, 0.0)
         };
-    if series_trig {
-        // The same formulas as `ShipMotionForecast::deck_point_height_m` and
-        // `deck_point_climb_rate_mps`, the ship's small pitch by series.
-        let (sin_ramp, cos_ramp) = series_sin_cos(at_ramp.pitch_rad);
-        let (sin_touchdown, cos_touchdown) = series_sin_cos(at_touchdown.pitch_rad);
-        return DeckForecast {
-            ramp_height_m: deck.deck_height_m + (at_ramp.heave_m - ramp_arm_m * sin_ramp),
-            landing_point_climb_rate_mps: at_touchdown.heave_rate_mps
-                - landing_arm_m * cos_touchdown * at_touchdown.pitch_rate_radps,
-            landing_point_height_m: deck.deck_height_m
-                + (at_touchdown.heave_m - landing_arm_m * sin_touchdown),
-            pitch_rad: at_touchdown.pitch_rad,
-            ramp_climb_rate_mps: at_ramp.heave_rate_mps
-                - ramp_arm_m * cos_ramp * at_ramp.pitch_rate_radps,
-            ramp_height_sigma_m,
-            landing_point_climb_rate_sigma_mps,
-        };
-    }
+    let trig = |pitch_rad: f64| {
+        if series_trig {
+            series_sin_cos(pitch_rad)
+        } else {
+            (pitch_rad.sin(), pitch_rad.cos())
+        }
+    };
+    let (sin_ramp, cos_ramp) = trig(at_ramp.pitch_rad);
+    let (sin_touchdown, cos_touchdown) = trig(at_touchdown.pitch_rad);
     DeckForecast {
-        ramp_height_m: deck.deck_height_m + at_ramp.deck_point_height_m(ramp_arm_m),
-        landing_point_climb_rate_mps: at_touchdown.deck_point_climb_rate_mps(landing_arm_m),
+        ramp_height_m: deck.deck_height_m
+            + at_ramp.deck_point_height_at_sine_m(ramp_arm_m, sin_ramp),
+        landing_point_climb_rate_mps: at_touchdown
+            .deck_point_climb_rate_at_cosine_mps(landing_arm_m, cos_touchdown),
         landing_point_height_m: deck.deck_height_m
-            + at_touchdown.deck_point_height_m(landing_arm_m),
+            + at_touchdown.deck_point_height_at_sine_m(landing_arm_m, sin_touchdown),
         pitch_rad: at_touchdown.pitch_rad,
-        ramp_climb_rate_mps: at_ramp.deck_point_climb_rate_mps(ramp_arm_m),
+        ramp_climb_rate_mps: at_ramp.deck_point_climb_rate_at_cosine_mps(ramp_arm_m, cos_ramp),
         ramp_height_sigma_m,
         landing_point_climb_rate_sigma_mps,
     }
