@@ -16,6 +16,9 @@ use std::path::Path;
 /// Width and height of the screenshots (px).
 const WINDOW: (u32, u32) = (1200, 4000);
 
+/// A report's first screen (px): what a reader sees before scrolling, on a laptop.
+const FIRST_SCREEN: (u32, u32) = (1200, 900);
+
 /// The first colour of the plots' palette (the first line of every plot).
 const FIRST_LINE_COLOUR: [u8; 3] = [0, 114, 178];
 
@@ -49,6 +52,11 @@ fn assert_self_contained(html: &str, plots: usize) {
 /// Renders `page` in headless Chromium: its text after rendering, and a screenshot that
 /// must show the plots (pixels of the first line colour) on a page that is not blank.
 fn render(chromium: &Path, page: &Path) -> String {
+    render_in(chromium, page, WINDOW)
+}
+
+/// [`render`] with a screenshot of `window` (width, height, px).
+fn render_in(chromium: &Path, page: &Path, window: (u32, u32)) -> String {
     let dom = headless_chromium(chromium, page, &["--dump-dom"]);
     assert!(dom.contains("</html>"), "no rendered DOM: {dom}");
     let shot = page.with_file_name("screenshot.png");
@@ -57,12 +65,12 @@ fn render(chromium: &Path, page: &Path) -> String {
         page,
         &[
             &format!("--screenshot={}", shot.display()),
-            &format!("--window-size={},{}", WINDOW.0, WINDOW.1),
+            &format!("--window-size={},{}", window.0, window.1),
             "--hide-scrollbars",
         ],
     );
     let image = image::open(&shot).unwrap().to_rgb8();
-    assert_eq!(image.dimensions(), WINDOW);
+    assert_eq!(image.dimensions(), window);
     let line_pixels = image
         .pixels()
         .filter(|p| {
@@ -159,8 +167,7 @@ fn campaign_report_html_shows_the_outcomes_with_their_intervals() {
     let file = dir.join("short.toml");
     std::fs::write(
         &file,
-        // A 3-DOF campaign: a 3-D campaign's lateral and trap-sheet tables push its
-        // plots below the first screen this test renders.
+        // A 3-DOF campaign, for speed (a 3-D campaign's report, below).
         "[aircraft]\nmodel = \"3dof\"\n\n[approach]\nstart_range_m = 500.0\n\n[dispersion]\n\
          start_height_offset_sd_m = 1.0\nwind_over_deck_sd_mps = 2.0\n",
     )
@@ -242,8 +249,49 @@ fn campaign_report_html_shows_the_outcomes_with_their_intervals() {
     let rare = text
         .split("Rare events")
         .nth(1)
-        .and_then(|rest| rest.split("Plots").next())
+        .and_then(|rest| rest.split("Scenario flown").next())
         .unwrap();
     assert!(!rare.contains("PID wave-off"), "{rare}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_3d_campaign_report_shows_its_outcomes_chart_on_the_first_screen() {
+    // The 3-D approach's lineup and trap-sheet tables are long: the outcomes' chart stands
+    // above the outcome table, and the touchdown plots beside their statistics, so a
+    // reader sees a plot before scrolling (the screenshot of the first screen holds the
+    // chart's bars).
+    let Some(chromium) = chromium() else { return };
+    let dir = scratch("html-campaign-3d");
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("short-3d.toml");
+    std::fs::write(&file, "[approach]\nstart_range_m = 500.0\n").unwrap();
+    let out = dir.join("out");
+    let output = deckland([
+        "campaign",
+        file.to_str().unwrap(),
+        "--runs",
+        "3",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let page = out.join("report.html");
+    let html = std::fs::read_to_string(&page).unwrap();
+    assert_self_contained(&html, 4);
+    let order: Vec<usize> = ["<h2>Outcomes", "<svg", "<h2>Touchdown", "<h2>Lineup"]
+        .iter()
+        .map(|part| html.find(part).unwrap_or_else(|| panic!("no `{part}`")))
+        .collect();
+    assert!(order.windows(2).all(|w| w[0] < w[1]), "{order:?}");
+    assert!(
+        !html.contains("<h2>Plots"),
+        "every plot stands beside its table"
+    );
+    render_in(&chromium, &page, FIRST_SCREEN);
     let _ = std::fs::remove_dir_all(&dir);
 }

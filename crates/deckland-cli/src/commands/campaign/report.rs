@@ -214,6 +214,20 @@ fn statistics_rows(
 
 /// `report.html` of a campaign: what was flown, the outcome table with intervals, the
 /// touchdown statistics, the plots and the scenario.
+/// Whether a campaign plot draws the touchdowns (shown under their statistics).
+fn is_touchdown_plot(stem: &str) -> bool {
+    stem.starts_with("touchdown")
+}
+
+/// Adds to `section` the plots whose stem `keep` accepts, in their order, each captioned
+/// with its files: so each plot stands beside the table it draws, and the outcomes'
+/// chart, above their table, is on the report's first screen.
+fn add_plots(section: &mut html::Section, plots: &[(&str, String)], keep: impl Fn(&str) -> bool) {
+    for (stem, svg) in plots.iter().filter(|(stem, _)| keep(stem)) {
+        section.figure(svg, format!("`{stem}.svg` (also `{stem}.png`)"));
+    }
+}
+
 fn html_report(
     report: &CampaignReport,
     paired: Option<&PairedComparison>,
@@ -261,14 +275,14 @@ fn html_report(
         header.push(format!("{}: 95 % interval", s.controller));
     }
     let header: Vec<&str> = header.iter().map(String::as_str).collect();
-    page.section("Outcomes")
-        .paragraph(format!(
-            "Intervals: the {}. The classes are exclusive and add up to the runs; the \
-             safe outcomes (trap, bolter, wave-off: the aircraft is intact) are also \
-             totalled.",
-            report.summary.confidence_interval
-        ))
-        .table(&header, outcome_rows(stats));
+    let outcomes = page.section("Outcomes");
+    outcomes.paragraph(format!(
+        "Intervals: the {}. The classes are exclusive and add up to the runs; the safe \
+         outcomes (trap, bolter, wave-off: the aircraft is intact) are also totalled.",
+        report.summary.confidence_interval
+    ));
+    add_plots(outcomes, plots, |stem| stem == "outcomes");
+    outcomes.table(&header, outcome_rows(stats));
     let wires: Vec<Vec<String>> = stats
         .iter()
         .map(|s| {
@@ -277,7 +291,8 @@ fn html_report(
             row
         })
         .collect();
-    page.section("Touchdown")
+    let touchdown = page.section("Touchdown");
+    touchdown
         .paragraph(format!(
             "Over the runs that touched the deck; percentiles by {}.",
             report.summary.percentiles
@@ -287,6 +302,7 @@ fn html_report(
             &["controller", "wire 1", "wire 2", "wire 3", "wire 4"],
             wires,
         );
+    add_plots(touchdown, plots, is_touchdown_plot);
     if let Some(lateral) = &report.lateral {
         lineup_section(page.section("Lineup (3-D approach)"), lateral);
     }
@@ -349,9 +365,9 @@ fn html_report(
             100.0 * target.confidence,
             runs_needed(report.summary)
         ));
-    let plots_section = page.section("Plots");
-    for (stem, svg) in plots {
-        plots_section.figure(svg, format!("`{stem}.svg` (also `{stem}.png`)"));
+    let others = |stem: &str| stem != "outcomes" && !is_touchdown_plot(stem);
+    if plots.iter().any(|(stem, _)| others(stem)) {
+        add_plots(page.section("Plots"), plots, others);
     }
     page.section("Scenario flown")
         .paragraph("The nominal scenario; `runs.csv` lists each run's seed and dispersions.")
