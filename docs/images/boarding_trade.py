@@ -18,6 +18,8 @@ POINTS = [
     ("p_R 0.1 %, r 1.16 m", 1808, 2, 17),
     ("p_R 2 %, m_R 3.9 m", 1699, 1, 16),
     ("p_R 0.01 %, r 1.16 m (default)", 1660, 0, 14),
+    ("the default, cap m_max 4.5 m", 1458, 0, 13),
+    ("the default, cap m_max 5 m", 1409, 0, 15),
 ]
 W, H, LEFT, BOTTOM, TOP, RIGHT = 760, 420, 70, 50, 30, 210
 
@@ -47,7 +49,7 @@ def upper_bound(events, n, confidence=0.95):
 
 
 def x_of(boarding_pct):
-    return LEFT + (boarding_pct - 50.0) / 20.0 * (W - LEFT - RIGHT)
+    return LEFT + (boarding_pct - 45.0) / 25.0 * (W - LEFT - RIGHT)
 
 
 def y_of(rate_pct):
@@ -61,7 +63,7 @@ def main():
     x0, x1, y0, y1 = LEFT, W - RIGHT, H - BOTTOM, TOP
     out.append(f'<line x1="{x0}" y1="{y0}" x2="{x1}" y2="{y0}" stroke="black"/>')
     out.append(f'<line x1="{x0}" y1="{y0}" x2="{x0}" y2="{y1}" stroke="black"/>')
-    for boarding in range(50, 71, 5):
+    for boarding in range(45, 71, 5):
         x = x_of(boarding)
         out.append(f'<line x1="{x:.1f}" y1="{y0}" x2="{x:.1f}" y2="{y0 + 4}" stroke="black"/>')
         out.append(f'<text x="{x:.1f}" y="{y0 + 16}" text-anchor="middle">{boarding}</text>')
