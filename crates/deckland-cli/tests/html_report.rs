@@ -11,7 +11,7 @@ mod common;
 
 use common::{chromium, deckland, has_non_finite, headless_chromium, page_text, scratch};
 use serde_json::Value;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 /// Width and height of the screenshots (px).
 const WINDOW: (u32, u32) = (1200, 4000);
@@ -159,29 +159,17 @@ fn land_report_html_renders_the_summary_numbers_in_a_browser() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-#[test]
-fn campaign_report_html_shows_the_outcomes_with_their_intervals() {
-    let Some(chromium) = chromium() else { return };
-    let dir = scratch("html-campaign");
-    std::fs::create_dir_all(&dir).unwrap();
-    let file = dir.join("short.toml");
-    std::fs::write(
-        &file,
-        // A 3-DOF campaign, for speed (a 3-D campaign's report, below).
-        "[aircraft]\nmodel = \"3dof\"\n\n[approach]\nstart_range_m = 500.0\n\n[dispersion]\n\
-         start_height_offset_sd_m = 1.0\nwind_over_deck_sd_mps = 2.0\n",
-    )
-    .unwrap();
+/// Flies a campaign of the scenario `toml` with the options `options` into `dir`: its
+/// report.html's path and text.
+fn campaign_report(dir: &Path, toml: &str, options: &[&str]) -> (PathBuf, String) {
+    std::fs::create_dir_all(dir).unwrap();
+    let file = dir.join("scenario.toml");
+    std::fs::write(&file, toml).unwrap();
     let out = dir.join("out");
-    let output = deckland([
-        "campaign",
-        file.to_str().unwrap(),
-        "--runs",
-        "12",
-        "--compare",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let mut arguments = vec!["campaign", file.to_str().unwrap()];
+    arguments.extend_from_slice(options);
+    arguments.extend_from_slice(&["--out", out.to_str().unwrap()]);
+    let output = deckland(arguments);
     assert!(
         output.status.success(),
         "{}",
@@ -189,11 +177,27 @@ fn campaign_report_html_shows_the_outcomes_with_their_intervals() {
     );
     let page = out.join("report.html");
     let html = std::fs::read_to_string(&page).unwrap();
+    (page, html)
+}
+
+#[test]
+fn campaign_report_html_shows_the_outcomes_with_their_intervals() {
+    let Some(chromium) = chromium() else { return };
+    let dir = scratch("html-campaign");
+    let (page, html) = campaign_report(
+        &dir,
+        // A 3-DOF campaign, for speed (a 3-D campaign's report, below).
+        "[aircraft]\nmodel = \"3dof\"\n\n[approach]\nstart_range_m = 500.0\n\n[dispersion]\n\
+         start_height_offset_sd_m = 1.0\nwind_over_deck_sd_mps = 2.0\n",
+        &["--runs", "12", "--compare"],
+    );
     assert_self_contained(&html, 3);
     let text = render(&chromium, &page);
 
-    let summary: Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let summary: Value = serde_json::from_str(
+        &std::fs::read_to_string(page.with_file_name("summary.json")).unwrap(),
+    )
+    .unwrap();
     let controllers = summary["controllers"].as_array().unwrap();
     assert_eq!(controllers.len(), 2);
     for (class, name) in [
@@ -263,25 +267,11 @@ fn a_3d_campaign_report_shows_its_outcomes_chart_on_the_first_screen() {
     // chart's bars).
     let Some(chromium) = chromium() else { return };
     let dir = scratch("html-campaign-3d");
-    std::fs::create_dir_all(&dir).unwrap();
-    let file = dir.join("short-3d.toml");
-    std::fs::write(&file, "[approach]\nstart_range_m = 500.0\n").unwrap();
-    let out = dir.join("out");
-    let output = deckland([
-        "campaign",
-        file.to_str().unwrap(),
-        "--runs",
-        "3",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
+    let (page, html) = campaign_report(
+        &dir,
+        "[approach]\nstart_range_m = 500.0\n",
+        &["--runs", "3"],
     );
-    let page = out.join("report.html");
-    let html = std::fs::read_to_string(&page).unwrap();
     assert_self_contained(&html, 4);
     let order: Vec<usize> = ["<h2>Outcomes", "<svg", "<h2>Touchdown", "<h2>Lineup"]
         .iter()
