@@ -46,6 +46,8 @@ mod tuning;
 
 pub use assessment::{assess_loop, shortfalls, LoopAssessment, NoiseBudget};
 pub use command::{command_bounds, design_command, nearer_stop_travel_rad};
+#[cfg(test)]
+pub(crate) use plant::PAPER_PITCH_PLANT;
 pub use plant::{ActuatorKeys, AngleOfAttackCoupling, AxisPlantDerivatives, LinearActuator};
 pub use request::{
     check_request, AxisHardware, DesignError, DesignRequest, LinearisedLaw, SensorNoise,

@@ -21,6 +21,14 @@ pub struct AxisPlantDerivatives {
     pub control_power_per_s2: f64,
 }
 
+/// The paper's pitch-axis derivatives (Eq. 14: M_q = −0.15 s⁻¹, M_δe = −1.93 s⁻²), which
+/// the laws' tests design for.
+#[cfg(test)]
+pub(crate) const PAPER_PITCH_PLANT: AxisPlantDerivatives = AxisPlantDerivatives {
+    rate_damping_per_s: -0.15,
+    control_power_per_s2: -1.93,
+};
+
 impl AxisPlantDerivatives {
     /// The name under which the derivatives appear in errors: they are not set in a
     /// scenario but computed from the linearisation at trim.

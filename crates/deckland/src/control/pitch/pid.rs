@@ -247,10 +247,7 @@ impl AxisLaw for PidController {
 mod tests {
     use super::*;
 
-    const PLANT: AxisPlantDerivatives = AxisPlantDerivatives {
-        rate_damping_per_s: -0.15,
-        control_power_per_s2: -1.93,
-    };
+    use crate::control::design::PAPER_PITCH_PLANT as PLANT;
 
     fn controller(anti_windup: bool) -> PidController {
         let parameters = PidParameters {

@@ -378,10 +378,7 @@ impl AxisLaw for ObserverPdController {
 mod tests {
     use super::*;
 
-    const PAPER_PLANT: AxisPlantDerivatives = AxisPlantDerivatives {
-        rate_damping_per_s: -0.15,
-        control_power_per_s2: -1.93,
-    };
+    use crate::control::design::PAPER_PITCH_PLANT as PAPER_PLANT;
 
     /// Reference: paper §4.2.2 prints K_Pθ = 88.89 and K_Dθ = 26.5186 for T_2% = 0.3 s,
     /// ζ = √2, ∂q̇/∂q = −0.15 (Eq. 14). The rule gives 26.5167; the paper's last digits

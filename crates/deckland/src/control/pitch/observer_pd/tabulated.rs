@@ -22,13 +22,9 @@ impl ObserverPdController {
 mod tests {
     use super::super::{ObserverPdParameters, PitchLawInputs};
     use super::*;
-    use crate::control::design::AxisPlantDerivatives;
     use crate::control::AxisLaw;
 
-    const PAPER_PLANT: AxisPlantDerivatives = AxisPlantDerivatives {
-        rate_damping_per_s: -0.15,
-        control_power_per_s2: -1.93,
-    };
+    use crate::control::design::PAPER_PITCH_PLANT as PAPER_PLANT;
 
     /// The tabulated power (the 3-D approach's) gives the library's derivative to within a
     /// few rounding errors: |e|^s within 2 ulp (`FractionalPower`'s own test) moves the
