@@ -6,7 +6,7 @@
 mod common;
 
 use deckland::control::pitch::{PidParameters, PitchControllerParameters};
-use deckland::random::RandomStreams;
+use deckland::monte_carlo::dispersed_run_scenario;
 use deckland::recording::{SummaryRecorder, TimeSeriesRecorder};
 use deckland::scenario::{load_scenario, Scenario};
 use deckland::simulation::{Outcome, RunSummary, Simulation};
@@ -380,11 +380,8 @@ fn a_wave_off_keeps_its_angle_of_attack_off_the_models_floor() {
         .unwrap()
         .longitudinal();
     let seed = 8_361_902_320_619_113_286;
-    let undispersed = Scenario { seed, ..heavy };
-    let scenario = undispersed
-        .dispersion
-        .sample(&RandomStreams::new(seed))
-        .apply(&undispersed);
+    // The campaign run with this seed, flown alone.
+    let (scenario, _) = dispersed_run_scenario(&heavy, seed);
     let fly_lowest_alpha = |min_alpha_deg: f64, climb_blend_s: f64| {
         let mut scenario = scenario;
         scenario.control.wave_off.min_alpha_deg = min_alpha_deg;

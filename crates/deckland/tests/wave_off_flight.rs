@@ -4,8 +4,8 @@
 
 mod common;
 
-use deckland::random::RandomStreams;
-use deckland::scenario::{load_scenario, Scenario};
+use deckland::monte_carlo::dispersed_run_scenario;
+use deckland::scenario::load_scenario;
 use deckland::simulation::Outcome;
 
 /// Run 128 of `deckland campaign scenarios/heavy-sea.toml --runs 3000 --seed 5151` (seed
@@ -24,11 +24,8 @@ fn a_wave_off_in_the_wake_stops_its_push_over_in_time() {
     );
     let heavy = load_scenario(&std::fs::read_to_string(path).unwrap(), "heavy-sea.toml").unwrap();
     let seed = 8_636_934_081_132_346_416;
-    let undispersed = Scenario { seed, ..heavy };
-    let scenario = undispersed
-        .dispersion
-        .sample(&RandomStreams::new(seed))
-        .apply(&undispersed);
+    // The campaign run with this seed, flown alone.
+    let (scenario, _) = dispersed_run_scenario(&heavy, seed);
     assert_eq!(scenario.control.wave_off.min_alpha_deg, 4.0, "the default");
     let fly = |min_alpha_deg: f64| {
         let mut scenario = scenario;
