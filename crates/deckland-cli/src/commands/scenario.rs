@@ -94,12 +94,7 @@ fn approach_kind(scenario: &Scenario) -> String {
 /// failed, e.g. the angle of attack it needs), and the lowest airspeed that trims there.
 fn untrimmable_airspeed(scenario: &Scenario) -> String {
     let section = &scenario.aircraft;
-    let Ok(aircraft) = Aircraft::new(
-        section.parameters,
-        section.aerodynamics(),
-        section.engines,
-        section.elevator_actuator,
-    ) else {
+    let Ok(aircraft) = section.longitudinal_aircraft() else {
         return "the aircraft section cannot be built".to_owned();
     };
     let airspeed = scenario.approach.airspeed_mps;

@@ -1,9 +1,10 @@
-//! Polynomial F/A-18 aerodynamic coefficients (docs/model.md §2.2).
-//!
-//! Source: Chakraborty, Seiler & Balas, *Susceptibility of F/A-18 flight controllers to
-//! the falling-leaf mode*, JGCD 2011 (data from the NASA HARV model), the paper's
-//! references [8], [9], at sideslip β = 0.
+//! Longitudinal aerodynamic coefficients from an aircraft's polynomial data
+//! (docs/model.md §2.2), at sideslip β = 0; the data are [`AerodynamicData`], the
+//! F/A-18's those of Chakraborty, Seiler & Balas, *Susceptibility of F/A-18 flight
+//! controllers to the falling-leaf mode*, JGCD 2011 (the NASA HARV model), the paper's
+//! references [8], [9].
 
+use super::aerodynamic_data::{powers_of, AerodynamicData};
 use super::configuration::AerodynamicConfiguration;
 
 /// Lowest angle of attack (rad) at which the polynomials are trusted: −5°.
@@ -22,9 +23,10 @@ pub struct AerodynamicCoefficients {
     pub moment: f64,
 }
 
-/// Coefficients at angle of attack `alpha` (rad), elevator `elevator` (rad, positive
-/// trailing edge down) and normalised pitch rate `q_hat` = q·c̄/(2V_T) (–), including
-/// the configuration's increments and the moment transfer to the CG.
+/// Coefficients of the F/A-18 ([`AerodynamicData::FA18`]) at angle of attack `alpha`
+/// (rad), elevator `elevator` (rad, positive trailing edge down) and normalised pitch
+/// rate `q_hat` = q·c̄/(2V_T) (–), including the configuration's increments and the
+/// moment transfer to the CG.
 #[inline]
 pub fn aerodynamic_coefficients(
     alpha: f64,
@@ -33,12 +35,22 @@ pub fn aerodynamic_coefficients(
     configuration: &AerodynamicConfiguration,
 ) -> AerodynamicCoefficients {
     let (sin_a, cos_a) = alpha.sin_cos();
-    aerodynamic_coefficients_trig(alpha, sin_a, cos_a, elevator, q_hat, configuration)
+    aerodynamic_coefficients_trig(
+        &AerodynamicData::FA18,
+        alpha,
+        sin_a,
+        cos_a,
+        elevator,
+        q_hat,
+        configuration,
+    )
 }
 
-/// As [`aerodynamic_coefficients`], with sin α and cos α already computed.
+/// The coefficients of the aircraft whose aerodynamic data are `data`, as
+/// [`aerodynamic_coefficients`], with sin α and cos α already computed.
 #[inline]
 pub fn aerodynamic_coefficients_trig(
+    data: &AerodynamicData,
     alpha: f64,
     sin_a: f64,
     cos_a: f64,
@@ -46,22 +58,19 @@ pub fn aerodynamic_coefficients_trig(
     q_hat: f64,
     configuration: &AerodynamicConfiguration,
 ) -> AerodynamicCoefficients {
-    let a = alpha;
-    let a2 = a * a;
-    let a3 = a2 * a;
-    let a4 = a3 * a;
-    let lift = -0.0204 + 5.677 * a - 5.4246 * a2
-        + 1.1645 * a3
-        + (0.5725 + 0.4055 * a - 2.6975 * a2 + 2.1852 * a3) * elevator
+    let powers = powers_of(alpha);
+    let lift = data.lift.alpha.in_ascending_powers(&powers)
+        + data.lift.constant
+        + data.lift.elevator.in_ascending_powers(&powers) * elevator
         + configuration.lift_coefficient_increment;
-    let drag = -1.4994 - 0.1995 * a + 6.3971 * a2 - 5.7341 * a3
-        + 1.4610 * a4
-        + 1.5036
-        + (0.0366 - 0.2739 * a + 4.2360 * a2 - 3.8578 * a3) * elevator
+    let drag = data.drag.alpha.in_ascending_powers(&powers)
+        + data.drag.constant
+        + data.drag.elevator.in_ascending_powers(&powers) * elevator
         + configuration.drag_coefficient_increment;
-    let moment_reference = -0.0866 + 0.5110 * a - 1.2897 * a2
-        + (-0.9051 - 0.3245 * a + 0.9338 * a2) * elevator
-        + (-4.1186 + 10.9921 * a - 68.5641 * a2 + 64.7190 * a3) * q_hat
+    let m = &data.pitching_moment;
+    let moment_reference = m.alpha.in_ascending_powers(&powers)
+        + m.elevator.in_ascending_powers(&powers) * elevator
+        + m.pitch_rate.in_ascending_powers(&powers) * q_hat
         + configuration.moment_coefficient_increment;
     let normal = lift * cos_a + drag * sin_a;
     AerodynamicCoefficients {

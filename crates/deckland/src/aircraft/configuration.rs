@@ -89,25 +89,29 @@ impl AerodynamicConfiguration {
     /// Checks that every increment is within ±2 (coefficients) and the CG shift within
     /// ±0.5 chord.
     pub fn validate(&self) -> Result<(), ParameterError> {
-        const SECTION: &str = "aircraft.configuration";
+        self.validate_in("aircraft.configuration")
+    }
+
+    /// As [`AerodynamicConfiguration::validate`], naming the keys under `section`.
+    pub fn validate_in(&self, section: &str) -> Result<(), ParameterError> {
         let coefficient = Bounds::closed(-2.0, 2.0);
         coefficient.check(
-            SECTION,
+            section,
             "lift_coefficient_increment",
             self.lift_coefficient_increment,
         )?;
         coefficient.check(
-            SECTION,
+            section,
             "drag_coefficient_increment",
             self.drag_coefficient_increment,
         )?;
         coefficient.check(
-            SECTION,
+            section,
             "moment_coefficient_increment",
             self.moment_coefficient_increment,
         )?;
         Bounds::closed(-0.5, 0.5).check(
-            SECTION,
+            section,
             "cg_ahead_of_reference_chords",
             self.cg_ahead_of_reference_chords,
         )

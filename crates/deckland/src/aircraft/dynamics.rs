@@ -15,6 +15,7 @@
 //! corrected (the `q` term and the `/V` on gravity in α̇); a test checks that.
 
 use super::actuator::{ElevatorActuator, ElevatorActuatorParameters};
+use super::aerodynamic_data::AerodynamicData;
 #[cfg(test)]
 use super::aerodynamics::aerodynamic_coefficients;
 use super::aerodynamics::aerodynamic_coefficients_trig;
@@ -64,6 +65,7 @@ pub struct AirData {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Aircraft {
     parameters: AircraftParameters,
+    aerodynamics: AerodynamicData,
     configuration: AerodynamicConfiguration,
     engines: Engines,
     actuator: ElevatorActuator,
@@ -73,6 +75,7 @@ impl Default for Aircraft {
     fn default() -> Self {
         Self {
             parameters: AircraftParameters::default(),
+            aerodynamics: AerodynamicData::FA18,
             configuration: AerodynamicConfiguration::LANDING,
             engines: Engines::default(),
             actuator: ElevatorActuator::default(),
@@ -99,10 +102,26 @@ impl Aircraft {
         configuration.validate()?;
         Ok(Self {
             parameters,
+            aerodynamics: AerodynamicData::FA18,
             configuration,
             engines: Engines::new(engines)?,
             actuator: ElevatorActuator::new(actuator)?,
         })
+    }
+
+    /// This aircraft with another aircraft's aerodynamic data (the F/A-18's by default),
+    /// after checking them.
+    pub fn with_aerodynamics(self, aerodynamics: AerodynamicData) -> Result<Self, ParameterError> {
+        aerodynamics.validate()?;
+        Ok(Self {
+            aerodynamics,
+            ..self
+        })
+    }
+
+    /// The aerodynamic data: the coefficient polynomials and the configurations.
+    pub fn aerodynamics(&self) -> &AerodynamicData {
+        &self.aerodynamics
     }
 
     /// The default aircraft in a given aerodynamic configuration.
@@ -206,6 +225,7 @@ impl Aircraft {
         let q_hat = q * p.mean_chord_m / (2.0 * air.airspeed_mps);
         let (sin_a, cos_a) = (air.sin_alpha, air.cos_alpha);
         let c = aerodynamic_coefficients_trig(
+            &self.aerodynamics,
             air.alpha_rad,
             sin_a,
             cos_a,

@@ -9,6 +9,7 @@
 //! does the 6-DOF aircraft ([`six_dof::SixDofAircraft`]); [`PlantModel`] names them.
 
 mod actuator;
+mod aerodynamic_data;
 mod aerodynamics;
 mod configuration;
 mod dynamics;
@@ -23,6 +24,10 @@ mod trim;
 
 pub use crate::environment::Wind;
 pub use actuator::{ActuatorLimit, ElevatorActuator, ElevatorActuatorParameters};
+pub use aerodynamic_data::{
+    powers_of, AerodynamicData, Configurations, ForceCoefficient, LateralCoefficient,
+    PitchingMomentCoefficient, Polynomial, MAX_POLYNOMIAL_TERMS,
+};
 pub use aerodynamics::{
     aerodynamic_coefficients, aerodynamic_coefficients_trig, AerodynamicCoefficients,
     ALPHA_MAX_RAD, ALPHA_MIN_RAD,

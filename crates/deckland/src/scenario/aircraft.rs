@@ -2,8 +2,8 @@
 
 use crate::aircraft::six_dof::{LateralParameters, SixDofAircraft, SurfaceActuatorParameters};
 use crate::aircraft::{
-    AerodynamicConfiguration, AircraftParameters, ConfigurationName, ElevatorActuatorParameters,
-    EngineParameters, HookGeometry, PlantModel,
+    AerodynamicConfiguration, AerodynamicData, Aircraft, AircraftParameters, ConfigurationName,
+    ElevatorActuatorParameters, EngineParameters, HookGeometry, PlantModel,
 };
 use crate::parameters::ParameterError;
 use serde::{Deserialize, Serialize};
@@ -32,6 +32,11 @@ pub struct AircraftSection {
     pub aileron_actuator: SurfaceActuatorParameters,
     /// The 6-DOF model's rudder actuator (docs/six-dof.md).
     pub rudder_actuator: SurfaceActuatorParameters,
+    /// The aerodynamic coefficients' polynomials and the configurations' increments
+    /// (docs/model.md "The aircraft as data"); the F/A-18's unless the scenario names
+    /// another aircraft, and then written out in full.
+    #[serde(skip_serializing_if = "AerodynamicData::is_fa18")]
+    pub aerodynamics: AerodynamicData,
 }
 
 impl Default for AircraftSection {
@@ -46,14 +51,36 @@ impl Default for AircraftSection {
             lateral: LateralParameters::default(),
             aileron_actuator: SurfaceActuatorParameters::AILERON,
             rudder_actuator: SurfaceActuatorParameters::RUDDER,
+            aerodynamics: AerodynamicData::FA18,
         }
     }
 }
 
 impl AircraftSection {
     /// The aerodynamic increments of the named configuration.
-    pub fn aerodynamics(&self) -> AerodynamicConfiguration {
-        AerodynamicConfiguration::named(self.configuration)
+    pub fn configuration_increments(&self) -> AerodynamicConfiguration {
+        self.aerodynamics.configuration(self.configuration)
+    }
+
+    /// The longitudinal (3-DOF) aircraft of this section.
+    pub fn longitudinal_aircraft(&self) -> Result<Aircraft, ParameterError> {
+        Aircraft::new(
+            self.parameters,
+            self.configuration_increments(),
+            self.engines,
+            self.elevator_actuator,
+        )?
+        .with_aerodynamics(self.aerodynamics)
+    }
+
+    /// The 6-DOF aircraft of this section.
+    pub fn six_dof_aircraft(&self) -> Result<SixDofAircraft, ParameterError> {
+        SixDofAircraft::new(
+            self.longitudinal_aircraft()?,
+            self.lateral,
+            self.aileron_actuator,
+            self.rudder_actuator,
+        )
     }
 
     /// Checks every part of the aircraft.
@@ -66,6 +93,81 @@ impl AircraftSection {
         self.aileron_actuator
             .validate(SixDofAircraft::AILERON_SECTION)?;
         self.rudder_actuator
-            .validate(SixDofAircraft::RUDDER_SECTION)
+            .validate(SixDofAircraft::RUDDER_SECTION)?;
+        self.aerodynamics.validate()
+    }
+}
+
+/// An aircraft definition file: everything that makes the aircraft, as data (docs/model.md
+/// "The aircraft as data"). `deckland aircraft --print-default` prints the F/A-18's
+/// ([`FA18_DEFINITION_TOML`]); a scenario flies another with `[aircraft] definition =
+/// "FILE"`. Every section is required: an aircraft file says what the aircraft is.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AircraftDefinition {
+    /// The aircraft's name, for the reader.
+    pub name: String,
+    /// Mass, reference geometry, pitch inertia and the (constant) atmosphere.
+    pub parameters: AircraftParameters,
+    /// Span and the roll and yaw inertias.
+    pub lateral: LateralParameters,
+    /// Engines.
+    pub engines: EngineParameters,
+    /// Elevator (stabilator) actuator.
+    pub elevator_actuator: ElevatorActuatorParameters,
+    /// Aileron actuator.
+    pub aileron_actuator: SurfaceActuatorParameters,
+    /// Rudder actuator.
+    pub rudder_actuator: SurfaceActuatorParameters,
+    /// Hook point.
+    pub hook: HookGeometry,
+    /// Aerodynamic polynomials and configurations.
+    pub aerodynamics: AerodynamicData,
+}
+
+/// The F/A-18 as an aircraft definition file, commented with units and sources: the
+/// built-in aircraft (a test checks that it is exactly [`AircraftSection::default`]'s).
+pub const FA18_DEFINITION_TOML: &str = include_str!("fa18.toml");
+
+/// The keys of `[aircraft]` that an aircraft definition holds.
+const DEFINITION_SECTIONS: [&str; 8] = [
+    "parameters",
+    "lateral",
+    "engines",
+    "elevator_actuator",
+    "aileron_actuator",
+    "rudder_actuator",
+    "hook",
+    "aerodynamics",
+];
+
+impl AircraftDefinition {
+    /// Whether the scenario key at dotted `path` (`aircraft.parameters.mass_kg`) is one
+    /// that an aircraft definition holds.
+    pub fn holds(path: &str) -> bool {
+        path.strip_prefix("aircraft.").is_some_and(|rest| {
+            let section = rest.split('.').next().unwrap_or(rest);
+            DEFINITION_SECTIONS.contains(&section)
+        })
+    }
+
+    /// Puts the definition's data into a scenario's aircraft section (its model and
+    /// configuration stay the scenario's).
+    pub fn apply_to(&self, section: &mut AircraftSection) {
+        section.parameters = self.parameters;
+        section.lateral = self.lateral;
+        section.engines = self.engines;
+        section.elevator_actuator = self.elevator_actuator;
+        section.aileron_actuator = self.aileron_actuator;
+        section.rudder_actuator = self.rudder_actuator;
+        section.hook = self.hook;
+        section.aerodynamics = self.aerodynamics;
+    }
+
+    /// Checks every part, as a scenario's aircraft section does.
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        let mut section = AircraftSection::default();
+        self.apply_to(&mut section);
+        section.validate()
     }
 }

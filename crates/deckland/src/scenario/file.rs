@@ -17,7 +17,7 @@ use std::path::Path;
 
 use toml_edit::{ImDocument, InlineTable, Item, Table, Value};
 
-use super::{Mission, Scenario};
+use super::{AircraftDefinition, Mission, Scenario};
 use crate::parameters::{join, ParameterError};
 
 /// Largest scenario file (bytes): the commented default file is about 10 kB.
@@ -204,8 +204,155 @@ fn line_text(line: Option<usize>) -> String {
 }
 
 /// Parses the scenario file `file_name` whose content is `text` and checks every value.
-/// Keys left out take their defaults (docs/model.md); unknown keys are errors.
+/// Keys left out take their defaults (docs/model.md); unknown keys are errors. An
+/// aircraft definition the file names (`[aircraft] definition = "FILE"`) is read
+/// relative to the working folder: [`load_scenario_in`] reads it relative to the
+/// scenario's own folder.
 pub fn load_scenario(text: &str, file_name: &str) -> Result<Scenario, ScenarioError> {
+    load_scenario_in(text, file_name, Path::new(""))
+}
+
+/// As [`load_scenario`], reading an aircraft definition file that the scenario names
+/// relative to `folder` (the scenario file's folder).
+pub fn load_scenario_in(
+    text: &str,
+    file_name: &str,
+    folder: &Path,
+) -> Result<Scenario, ScenarioError> {
+    let index = index_of(text, file_name)?;
+    let definition = match index.keys.iter().find(|k| k.path == DEFINITION_KEY) {
+        Some(key) => Some(read_definition(text, file_name, folder, key, &index)?),
+        None => None,
+    };
+    // The definition's key is the loader's, not the scenario structure's: blank it out
+    // (byte for byte, so every other line and span stays where it was).
+    let text = &match &definition {
+        Some((_, span)) => blank(text, span.clone()),
+        None => text.to_owned(),
+    };
+    let mut scenario: Scenario = deserialize_located(text, file_name, &index)?;
+    if let Some((definition, _)) = &definition {
+        definition.apply_to(&mut scenario.aircraft);
+    }
+    let in_file = |path: &str| {
+        index.keys.iter().any(|k| k.path == path)
+            || definition.is_some() && AircraftDefinition::holds(path)
+    };
+    finish_scenario(scenario, text, file_name, &index, in_file)
+}
+
+/// The scenario key that names an aircraft definition file.
+const DEFINITION_KEY: &str = "aircraft.definition";
+
+/// Largest aircraft definition file (bytes): the F/A-18's is about 8 kB.
+pub const MAX_AIRCRAFT_FILE_BYTES: u64 = 1024 * 1024;
+
+/// Parses the aircraft definition file `file_name` whose content is `text` (the format
+/// `deckland aircraft --print-default` prints) and checks every value; errors name the
+/// definition's file, line and key.
+pub fn load_aircraft_definition(
+    text: &str,
+    file_name: &str,
+) -> Result<AircraftDefinition, ScenarioError> {
+    let index = index_of(text, file_name)?;
+    let definition: AircraftDefinition = deserialize_located(text, file_name, &index)?;
+    definition
+        .validate()
+        .map_err(|problem| out_of_range(problem, text, file_name, &index))?;
+    Ok(definition)
+}
+
+/// Reads the definition named at `key` of the scenario `text`: the definition and the
+/// byte span of the key and its value in the scenario.
+fn read_definition(
+    text: &str,
+    file_name: &str,
+    folder: &Path,
+    key: &KeyLocation,
+    index: &KeyIndex,
+) -> Result<(AircraftDefinition, Range<usize>), ScenarioError> {
+    let structure = |message: String| ScenarioError::Structure {
+        file: file_name.to_owned(),
+        line: Some(line_of(text, key.span.start)),
+        field: DEFINITION_KEY.to_owned(),
+        message,
+    };
+    let document = ImDocument::parse(text).map_err(|e| structure(e.message().to_owned()))?;
+    let aircraft = document.as_table().get("aircraft");
+    let Some(name) = aircraft
+        .and_then(|a| a.get("definition"))
+        .and_then(|d| d.as_str())
+    else {
+        return Err(structure(
+            "expected the aircraft definition file's path as a string, e.g. \
+             definition = \"my-aircraft.toml\""
+                .to_owned(),
+        ));
+    };
+    if let Some(data) = index.keys.iter().find(|k| {
+        k.path
+            .strip_prefix("aircraft.")
+            .is_some_and(|rest| AircraftDefinition::holds(&format!("aircraft.{rest}")))
+    }) {
+        return Err(ScenarioError::Structure {
+            file: file_name.to_owned(),
+            line: Some(line_of(text, data.span.start)),
+            field: data.path.clone(),
+            message: format!(
+                "the scenario names the aircraft definition `{name}`, which holds the \
+                 aircraft's data: set this key in that file, or leave out `definition`"
+            ),
+        });
+    }
+    let path = folder.join(name);
+    let definition_text = read_text_file(&path, MAX_AIRCRAFT_FILE_BYTES, "aircraft definition")
+        .map_err(|error| structure(format!("cannot read the aircraft definition: {error}")))?;
+    let definition = load_aircraft_definition(&definition_text, &path.display().to_string())?;
+    Ok((definition, key_value_span(text, key.span.clone())))
+}
+
+/// The span to blank for the key and value at `span`: from the start of its line when
+/// only the key's dotted prefix stands before it, else (an inline table) with one comma
+/// beside it.
+fn key_value_span(text: &str, span: Range<usize>) -> Range<usize> {
+    let line_start = text[..span.start].rfind('\n').map_or(0, |i| i + 1);
+    let before = &text[line_start..span.start];
+    if before
+        .chars()
+        .all(|c| c.is_whitespace() || c.is_alphanumeric() || "._-\"'".contains(c))
+    {
+        return line_start..span.end;
+    }
+    let after = &text[span.end..];
+    let skipped = after.len() - after.trim_start_matches([' ', '\t']).len();
+    if after[skipped..].starts_with(',') {
+        return span.start..span.end + skipped + 1;
+    }
+    let trimmed = before.trim_end_matches([' ', '\t']);
+    if trimmed.ends_with(',') {
+        return line_start + trimmed.len() - 1..span.end;
+    }
+    span
+}
+
+/// `text` with the characters of `span` replaced by as many spaces as they have bytes
+/// (newlines kept), so that every other byte stays at its offset.
+fn blank(text: &str, span: Range<usize>) -> String {
+    let mut out = String::with_capacity(text.len());
+    out.push_str(&text[..span.start]);
+    for c in text[span.clone()].chars() {
+        if c == '\n' {
+            out.push(c);
+        } else {
+            out.extend(std::iter::repeat_n(' ', c.len_utf8()));
+        }
+    }
+    out.push_str(&text[span.end..]);
+    out
+}
+
+/// Every key of the TOML `text`, located; a syntax error names its line and key.
+fn index_of(text: &str, file_name: &str) -> Result<KeyIndex, ScenarioError> {
     let document = ImDocument::parse(text).map_err(|error| {
         let line = error.span().map(|span| line_of(text, span.start));
         ScenarioError::Syntax {
@@ -217,9 +364,16 @@ pub fn load_scenario(text: &str, file_name: &str) -> Result<Scenario, ScenarioEr
     })?;
     let mut keys = Vec::new();
     index_table("", document.as_table(), &mut keys);
-    let index = KeyIndex { keys };
+    Ok(KeyIndex { keys })
+}
 
-    let scenario: Scenario = toml::from_str(text).map_err(|error| {
+/// The value of type `T` in the TOML `text`; a structure error names its line and key.
+fn deserialize_located<T: serde::de::DeserializeOwned>(
+    text: &str,
+    file_name: &str,
+    index: &KeyIndex,
+) -> Result<T, ScenarioError> {
+    toml::from_str(text).map_err(|error| {
         let (line, field) = match error.span() {
             Some(span) => (
                 Some(line_of(text, span.start)),
@@ -248,7 +402,18 @@ pub fn load_scenario(text: &str, file_name: &str) -> Result<Scenario, ScenarioEr
             field,
             message,
         }
-    })?;
+    })
+}
+
+/// The checks after the structure: a unit mission's extra keys, the hardware set's
+/// defaults for keys not `in_file`, and every value's range.
+fn finish_scenario(
+    scenario: Scenario,
+    text: &str,
+    file_name: &str,
+    index: &KeyIndex,
+    in_file: impl Fn(&str) -> bool,
+) -> Result<Scenario, ScenarioError> {
     // serde ignores extra keys beside the tag of a unit variant: check them here.
     if matches!(scenario.mission, Mission::Approach) {
         if let Some(extra) = index
@@ -266,27 +431,38 @@ pub fn load_scenario(text: &str, file_name: &str) -> Result<Scenario, ScenarioEr
     }
 
     // A file on the paper's hardware takes the paper's values for what it leaves out.
-    let scenario = scenario
-        .with_set_defaults(|path| index.keys.iter().any(|k| k.path == path))
-        .map_err(|message| ScenarioError::Structure {
-            file: file_name.to_owned(),
-            line: None,
-            field: "hardware".to_owned(),
-            message,
-        })?;
-    scenario.validate().map_err(|problem| {
-        let line = index
-            .keys
-            .iter()
-            .find(|k| k.path == problem.path)
-            .map(|k| line_of(text, k.span.start));
-        ScenarioError::OutOfRange {
-            file: file_name.to_owned(),
-            line,
-            problem,
-        }
-    })?;
+    let scenario =
+        scenario
+            .with_set_defaults(in_file)
+            .map_err(|message| ScenarioError::Structure {
+                file: file_name.to_owned(),
+                line: None,
+                field: "hardware".to_owned(),
+                message,
+            })?;
+    scenario
+        .validate()
+        .map_err(|problem| out_of_range(problem, text, file_name, index))?;
     Ok(scenario)
+}
+
+/// The range error `problem`, at the line of its key in `text` if the key is there.
+fn out_of_range(
+    problem: ParameterError,
+    text: &str,
+    file_name: &str,
+    index: &KeyIndex,
+) -> ScenarioError {
+    let line = index
+        .keys
+        .iter()
+        .find(|k| k.path == problem.path)
+        .map(|k| line_of(text, k.span.start));
+    ScenarioError::OutOfRange {
+        file: file_name.to_owned(),
+        line,
+        problem,
+    }
 }
 
 fn first_line(message: &str) -> String {

@@ -29,10 +29,13 @@ mod template;
 #[cfg(test)]
 mod tests;
 
-pub use aircraft::AircraftSection;
+pub use aircraft::{AircraftDefinition, AircraftSection, FA18_DEFINITION_TOML};
 pub use approach::ApproachParameters;
 pub use dispersion::{DispersionParameters, DispersionSample, DISPERSION_STREAM};
-pub use file::{load_scenario, read_text_file, ReadError, ScenarioError, MAX_SCENARIO_FILE_BYTES};
+pub use file::{
+    load_aircraft_definition, load_scenario, load_scenario_in, read_text_file, ReadError,
+    ScenarioError, MAX_AIRCRAFT_FILE_BYTES, MAX_SCENARIO_FILE_BYTES,
+};
 pub use hardware::HardwareSet;
 pub use template::DEFAULT_SCENARIO_TOML;
 

@@ -153,12 +153,7 @@ pub(crate) fn build(scenario: &Scenario, user: UserParts<'_>) -> Result<Setup, S
     } = user;
     scenario.validate()?;
     let section = &scenario.aircraft;
-    let aircraft = Aircraft::new(
-        section.parameters,
-        section.aerodynamics(),
-        section.engines,
-        section.elevator_actuator,
-    )?;
+    let aircraft = section.longitudinal_aircraft()?;
     let env = &scenario.environment;
     let streams = RandomStreams::new(scenario.seed);
     let ship = ShipMotion::new(env.ship)?;

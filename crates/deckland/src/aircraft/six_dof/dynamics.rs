@@ -189,6 +189,7 @@ impl SixDofAircraft {
         let beta = data.beta_rad;
         let q_hat = q * p.mean_chord_m / (2.0 * airspeed);
         let c = aerodynamic_coefficients_trig(
+            self.longitudinal.aerodynamics(),
             data.alpha_rad,
             sin_a,
             cos_a,
@@ -212,6 +213,7 @@ impl SixDofAircraft {
         let pitch_coefficient = c.moment - config.cg_ahead_of_reference_chords * normal_change;
         let half_span_over_speed = lat.span_m / (2.0 * airspeed);
         let l = lateral_coefficients(
+            self.longitudinal.aerodynamics(),
             data.alpha_rad,
             beta,
             inputs.aileron_rad,
@@ -421,7 +423,15 @@ mod tests {
         let alpha = (w / u).atan();
         let qs = 0.5 * p.air_density_kg_m3 * speed * speed * p.wing_area_m2;
         let k = lat.span_m / (2.0 * speed);
-        let c = lateral_coefficients(alpha, 0.0, 0.05, -0.07, omega.x * k, omega.z * k);
+        let c = lateral_coefficients(
+            &crate::aircraft::AerodynamicData::FA18,
+            alpha,
+            0.0,
+            0.05,
+            -0.07,
+            omega.x * k,
+            omega.z * k,
+        );
         let m = crate::aircraft::aerodynamic_coefficients(
             alpha,
             -0.1,

@@ -14,30 +14,9 @@
 //! each derivative a polynomial in α. The data are for the clean aircraft and about the
 //! data's reference point; they are used unchanged in the landing configuration (no
 //! public flap or gear increments were found), and the transfer of C_n to the CG is
-//! made by the equations of motion.
+//! made by the equations of motion. The numbers are data ([`AerodynamicData`]).
 
-/// Evaluates c0 + c1·α + c2·α² + … by Horner's rule.
-#[inline]
-fn polynomial(coefficients: &[f64], alpha: f64) -> f64 {
-    coefficients
-        .iter()
-        .rev()
-        .fold(0.0, |sum, c| sum * alpha + c)
-}
-
-const ROLL_BETA: [f64; 5] = [-0.0556, -0.4153, -0.3620, 2.3843, -1.6196];
-const ROLL_AILERON: [f64; 4] = [0.1424, -0.0516, -0.2646, 0.1989];
-const ROLL_RUDDER: [f64; 4] = [0.0129, 0.0014, 0.0083, -0.0274];
-const ROLL_P: [f64; 2] = [-0.3540, 0.2377];
-const ROLL_R: [f64; 3] = [0.1983, 0.7804, -1.0871];
-const YAW_BETA: [f64; 3] = [0.0885, 0.0329, -0.3816];
-const YAW_AILERON: [f64; 4] = [0.0104, 0.0584, -0.3413, 0.2694];
-const YAW_RUDDER: [f64; 5] = [-0.0780, -0.0176, 0.5564, -0.8980, 0.3899];
-const YAW_P: [f64; 2] = [0.0792, -0.0881];
-const YAW_R: [f64; 2] = [-0.4326, -0.1307];
-const SIDE_BETA: [f64; 3] = [-0.7344, 0.2654, -0.1926];
-const SIDE_AILERON: [f64; 4] = [-0.1656, -0.2403, 1.5317, -0.8500];
-const SIDE_RUDDER: [f64; 4] = [0.2054, 0.4082, -1.6921, 0.9351];
+use crate::aircraft::AerodynamicData;
 
 /// The lateral stability and control derivatives at one angle of attack (per rad).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -71,23 +50,32 @@ pub struct LateralDerivatives {
 }
 
 impl LateralDerivatives {
-    /// The derivatives at angle of attack `alpha` (rad).
+    /// The F/A-18's derivatives ([`AerodynamicData::FA18`]) at angle of attack `alpha`
+    /// (rad).
     #[inline]
     pub fn at(alpha: f64) -> Self {
+        Self::of(&AerodynamicData::FA18, alpha)
+    }
+
+    /// The derivatives of the aircraft whose data are `data` at angle of attack `alpha`
+    /// (rad), each polynomial by Horner's rule.
+    #[inline]
+    pub fn of(data: &AerodynamicData, alpha: f64) -> Self {
+        let (l, n, y) = (&data.rolling_moment, &data.yawing_moment, &data.side_force);
         Self {
-            roll_beta: polynomial(&ROLL_BETA, alpha),
-            roll_aileron: polynomial(&ROLL_AILERON, alpha),
-            roll_rudder: polynomial(&ROLL_RUDDER, alpha),
-            roll_p: polynomial(&ROLL_P, alpha),
-            roll_r: polynomial(&ROLL_R, alpha),
-            yaw_beta: polynomial(&YAW_BETA, alpha),
-            yaw_aileron: polynomial(&YAW_AILERON, alpha),
-            yaw_rudder: polynomial(&YAW_RUDDER, alpha),
-            yaw_p: polynomial(&YAW_P, alpha),
-            yaw_r: polynomial(&YAW_R, alpha),
-            side_beta: polynomial(&SIDE_BETA, alpha),
-            side_aileron: polynomial(&SIDE_AILERON, alpha),
-            side_rudder: polynomial(&SIDE_RUDDER, alpha),
+            roll_beta: l.beta.horner(alpha),
+            roll_aileron: l.aileron.horner(alpha),
+            roll_rudder: l.rudder.horner(alpha),
+            roll_p: l.roll_rate.horner(alpha),
+            roll_r: l.yaw_rate.horner(alpha),
+            yaw_beta: n.beta.horner(alpha),
+            yaw_aileron: n.aileron.horner(alpha),
+            yaw_rudder: n.rudder.horner(alpha),
+            yaw_p: n.roll_rate.horner(alpha),
+            yaw_r: n.yaw_rate.horner(alpha),
+            side_beta: y.beta.horner(alpha),
+            side_aileron: y.aileron.horner(alpha),
+            side_rudder: y.rudder.horner(alpha),
         }
     }
 }
@@ -104,9 +92,11 @@ pub struct LateralCoefficients {
     pub side: f64,
 }
 
-/// The coefficients at α, β, aileron δa, rudder δr (rad) and normalised rates p̂, r̂ (–).
+/// The coefficients of the aircraft whose data are `data` at α, β, aileron δa, rudder
+/// δr (rad) and normalised rates p̂, r̂ (–).
 #[inline]
 pub fn lateral_coefficients(
+    data: &AerodynamicData,
     alpha: f64,
     beta: f64,
     aileron: f64,
@@ -114,7 +104,7 @@ pub fn lateral_coefficients(
     p_hat: f64,
     r_hat: f64,
 ) -> LateralCoefficients {
-    let d = LateralDerivatives::at(alpha);
+    let d = LateralDerivatives::of(data, alpha);
     LateralCoefficients {
         roll: d.roll_beta * beta
             + d.roll_aileron * aileron
@@ -149,13 +139,13 @@ mod tests {
     #[test]
     fn control_signs_follow_the_conventions() {
         let alpha = 7.1_f64.to_radians();
-        let aileron = lateral_coefficients(alpha, 0.0, 0.1, 0.0, 0.0, 0.0);
+        let aileron = lateral_coefficients(&AerodynamicData::FA18, alpha, 0.0, 0.1, 0.0, 0.0, 0.0);
         assert!(aileron.roll > 0.0);
-        let rudder = lateral_coefficients(alpha, 0.0, 0.0, 0.1, 0.0, 0.0);
+        let rudder = lateral_coefficients(&AerodynamicData::FA18, alpha, 0.0, 0.0, 0.1, 0.0, 0.0);
         assert!(rudder.yaw < 0.0 && rudder.side > 0.0);
         // Sideslip from the right: the nose turns into it (C_nβ > 0), the right wing
         // rises (C_lβ < 0), the side force pushes left (C_Yβ < 0).
-        let sideslip = lateral_coefficients(alpha, 0.1, 0.0, 0.0, 0.0, 0.0);
+        let sideslip = lateral_coefficients(&AerodynamicData::FA18, alpha, 0.1, 0.0, 0.0, 0.0, 0.0);
         assert!(sideslip.yaw > 0.0 && sideslip.roll < 0.0 && sideslip.side < 0.0);
     }
 }

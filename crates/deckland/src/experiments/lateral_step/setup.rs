@@ -4,7 +4,7 @@ use super::spec::LateralStepError;
 use crate::aircraft::six_dof::{
     linearize_six_dof, trim_six_dof, SixDofAircraft, SixDofTrimPoint, SixDofTrimRequest,
 };
-use crate::aircraft::{Aircraft, TrimRequest};
+use crate::aircraft::TrimRequest;
 use crate::control::lateral::design::{channel_hardware, channel_plants};
 use crate::control::lateral::{
     LateralChannel, LateralDesignContext, LateralLawParameters, RollLaw, YawLaw,
@@ -48,12 +48,7 @@ impl LateralSetup {
         }
         scenario.validate()?;
         let section = &scenario.aircraft;
-        let longitudinal = Aircraft::new(
-            section.parameters,
-            section.aerodynamics(),
-            section.engines,
-            section.elevator_actuator,
-        )?;
+        let longitudinal = section.longitudinal_aircraft()?;
         let aircraft = SixDofAircraft::new(
             longitudinal,
             section.lateral,
