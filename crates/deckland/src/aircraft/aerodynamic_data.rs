@@ -26,8 +26,10 @@ use serde::{Deserialize, Serialize};
 
 use super::configuration::{AerodynamicConfiguration, ConfigurationName};
 
-/// Most terms a polynomial in α may have (c0 … c5: fifth degree).
-pub const MAX_POLYNOMIAL_TERMS: usize = 6;
+/// Most terms a polynomial in α may have (c0 … c4: fourth degree, the F/A-18 fit's
+/// highest). Every polynomial is evaluated over all five, so each term allowed costs
+/// every evaluation.
+pub const MAX_POLYNOMIAL_TERMS: usize = 5;
 
 /// Largest magnitude of a polynomial coefficient (–): the F/A-18's largest is 68.6.
 const MAX_COEFFICIENT: f64 = 1e4;
@@ -65,17 +67,14 @@ impl Polynomial {
     }
 
     /// Σ c_k·α^k summed in ascending powers, with `powers` = [1, α, α², …] (the source's
-    /// form of the longitudinal polynomials); zero for the empty polynomial.
+    /// form of the longitudinal polynomials); zero for the empty polynomial. The unused
+    /// high terms are zero and add exactly ±0, which leaves every partial sum as it was
+    /// (but for the sign of an exact zero), so every polynomial takes the same unrolled
+    /// path.
     #[inline(always)]
     pub fn in_ascending_powers(&self, powers: &[f64; MAX_POLYNOMIAL_TERMS]) -> f64 {
-        if self.terms == 0 {
-            return 0.0;
-        }
-        let mut sum = self.coefficients[0];
-        for k in 1..self.terms {
-            sum += self.coefficients[k] * powers[k];
-        }
-        sum
+        let c = &self.coefficients;
+        c[0] + c[1] * powers[1] + c[2] * powers[2] + c[3] * powers[3] + c[4] * powers[4]
     }
 
     /// The value at `alpha` by Horner's rule (the lateral polynomials' form). The
@@ -110,7 +109,7 @@ impl TryFrom<Vec<f64>> for Polynomial {
         if given.len() > MAX_POLYNOMIAL_TERMS {
             return Err(format!(
                 "a polynomial in α takes at most {MAX_POLYNOMIAL_TERMS} coefficients \
-                 [c0, c1, …, c5], got {}",
+                 [c0, c1, …, c4], got {}",
                 given.len()
             ));
         }
@@ -129,13 +128,12 @@ impl From<Polynomial> for Vec<f64> {
     }
 }
 
-/// [1, α, α², α³, α⁴, α⁵], each power the one before times α (the source's order).
+/// [1, α, α², α³, α⁴], each power the one before times α (the source's order).
 #[inline(always)]
 pub fn powers_of(alpha: f64) -> [f64; MAX_POLYNOMIAL_TERMS] {
     let a2 = alpha * alpha;
     let a3 = a2 * alpha;
-    let a4 = a3 * alpha;
-    [1.0, alpha, a2, a3, a4, a4 * alpha]
+    [1.0, alpha, a2, a3, a3 * alpha]
 }
 
 /// Lift or drag coefficient: F_α(α) + F_0 + F_δe(α)·δe.
@@ -387,8 +385,8 @@ mod tests {
         let p = Polynomial::try_from(vec![1.0, 2.0]).expect("two terms");
         assert_eq!(p.coefficients(), &[1.0, 2.0]);
         assert_eq!(Vec::from(p), vec![1.0, 2.0]);
-        let error = Polynomial::try_from(vec![0.0; 7]).expect_err("seven terms");
-        assert!(error.contains("at most 6"), "{error}");
+        let error = Polynomial::try_from(vec![0.0; 6]).expect_err("six terms");
+        assert!(error.contains("at most 5"), "{error}");
     }
 
     #[test]
