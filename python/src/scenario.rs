@@ -10,7 +10,7 @@ use std::path::PathBuf;
 
 use deckland::monte_carlo::dispersed_run_scenario;
 use deckland::parameters::join;
-use deckland::scenario::{load_scenario, Mission, Scenario as RustScenario};
+use deckland::scenario::{load_scenario, load_scenario_in, Mission, Scenario as RustScenario};
 use pyo3::exceptions::{PyFileNotFoundError, PyKeyError, PyOSError};
 use pyo3::prelude::*;
 use pyo3::types::{PyTuple, PyType};
@@ -169,7 +169,9 @@ impl Scenario {
                 PyOSError::new_err(message)
             }
         })?;
-        let scenario = load_scenario(&text, &shown).map_err(value_error)?;
+        // An aircraft definition the file names is read relative to the file's folder.
+        let folder = path.parent().unwrap_or(std::path::Path::new(""));
+        let scenario = load_scenario_in(&text, &shown, folder).map_err(value_error)?;
         let name = path
             .file_name()
             .map_or(shown, |n| n.to_string_lossy().into_owned());

@@ -40,6 +40,8 @@ enum Command {
     Reproduce(commands::reproduce::ReproduceArgs),
     /// Print the commented default scenario file, or check a scenario file.
     Scenario(commands::scenario::ScenarioArgs),
+    /// Print the F/A-18 as a commented aircraft definition file, or check one.
+    Aircraft(commands::aircraft::AircraftArgs),
     /// Fly one approach of a scenario file: CSV, summary and plots, as `land`.
     Run(commands::run::RunArgs),
     /// Fly N approaches of a scenario file in parallel (Monte Carlo): rates with
@@ -60,6 +62,7 @@ fn run(cli: &Cli) -> Result<()> {
         Command::Step(args) => commands::step::run(args),
         Command::Reproduce(args) => commands::reproduce::run(args),
         Command::Scenario(args) => commands::scenario::run(args),
+        Command::Aircraft(args) => commands::aircraft::run(args),
         Command::Run(args) => commands::run::run(args),
         Command::Campaign(args) => commands::campaign::run(args),
         Command::Merge(args) => commands::merge::run(args),

@@ -187,7 +187,8 @@ fn a_bad_definition_is_named_by_its_file_line_and_key() {
         &definition,
     )
     .unwrap_err();
-    assert_eq!(error.field(), "aircraft.parameters.mass_kg", "{error}");
+    assert_eq!(error.field(), "parameters.mass_kg", "{error}");
+    assert_eq!(error.line(), Some(line - 1), "{error}");
     assert!(error.to_string().contains("aircraft.toml"), "{error}");
 
     let definition = edited(&[(

@@ -181,9 +181,12 @@ pub fn load_scenario_file(path: &std::path::Path) -> anyhow::Result<Scenario> {
         "scenario file",
     )
     .with_context(|| format!("cannot read the scenario file {}", path.display()))?;
-    Ok(deckland::scenario::load_scenario(
+    // An aircraft definition the file names is read relative to the file's folder.
+    let folder = path.parent().unwrap_or(std::path::Path::new(""));
+    Ok(deckland::scenario::load_scenario_in(
         &text,
         &path.display().to_string(),
+        folder,
     )?)
 }
 

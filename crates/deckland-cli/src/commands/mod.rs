@@ -1,5 +1,6 @@
 //! One module per `deckland` subcommand.
 
+pub mod aircraft;
 pub mod campaign;
 pub mod common;
 pub mod environment;

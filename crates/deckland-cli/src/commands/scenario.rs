@@ -3,7 +3,7 @@
 use super::common::{check_set_up, load_scenario_file};
 use anyhow::{bail, Context, Result};
 use clap::Args;
-use deckland::aircraft::{trim, Aircraft, PlantModel, TrimError, TrimRequest};
+use deckland::aircraft::{trim, PlantModel, TrimError, TrimRequest};
 use deckland::scenario::Scenario;
 use deckland::scenario::{Mission, DEFAULT_SCENARIO_TOML};
 use deckland::simulation::{SetupError, Simulation};

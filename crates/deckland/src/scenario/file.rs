@@ -256,9 +256,14 @@ pub fn load_aircraft_definition(
 ) -> Result<AircraftDefinition, ScenarioError> {
     let index = index_of(text, file_name)?;
     let definition: AircraftDefinition = deserialize_located(text, file_name, &index)?;
-    definition
-        .validate()
-        .map_err(|problem| out_of_range(problem, text, file_name, &index))?;
+    definition.validate().map_err(|mut problem| {
+        // The checks name the scenario's keys (`aircraft.parameters.mass_kg`); in the
+        // definition file the key is `parameters.mass_kg`.
+        if let Some(own) = problem.path.strip_prefix("aircraft.") {
+            problem.path = own.to_owned();
+        }
+        out_of_range(problem, text, file_name, &index)
+    })?;
     Ok(definition)
 }
 
