@@ -9,6 +9,7 @@
 //! ([`StepResponseMetrics::settled`] and the reason), not as an error.
 
 mod actuator_activity;
+pub mod lso_grade;
 mod statistics;
 mod step_response;
 mod trap_sheet;
@@ -18,6 +19,7 @@ use thiserror::Error;
 pub use actuator_activity::{
     actuator_activity, peak_abs, time_at_limits_s, total_variation, ActuatorActivity, LimitTime,
 };
+pub use lso_grade::{grade_pass, Grade, GradeThresholds, LsoGrade, PassEnd, WindowFlight};
 pub use statistics::{median, root_mean_square};
 pub use step_response::{step_response_metrics, Settling, StepResponseMetrics, StepResponseSpec};
 pub use trap_sheet::{

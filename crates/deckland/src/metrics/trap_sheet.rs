@@ -13,7 +13,9 @@
 //!
 //! [`TrapSheetRecorder`] takes one sample per step and keeps, per position, the mean and
 //! the largest deviation; lineup is given in metres and, as the LSO sees it, as the angle
-//! off the centreline seen from the aim point.
+//! off the centreline seen from the aim point; the glide-slope error likewise, as the
+//! angle of the height error seen from the aim point. [`super::lso_grade`] grades the
+//! sheet.
 
 use serde::{Deserialize, Serialize};
 
@@ -96,6 +98,9 @@ pub struct PositionDeviation {
     pub glide_slope_mean_m: f64,
     /// Largest |height error| to the glide slope (m), signed (+ high).
     pub glide_slope_peak_m: f64,
+    /// Mean glide-slope error as the LSO sees it, the angle of the height error seen
+    /// from the aim point (deg; + high).
+    pub glide_slope_mean_deg: f64,
     /// Mean lateral offset of the hook from the landing centreline (m; + right).
     pub lineup_mean_m: f64,
     /// Largest |lateral offset| (m), signed (+ right).
@@ -130,6 +135,7 @@ struct Accumulator {
     lineup_peak: f64,
     angle_sum: f64,
     angle_peak: f64,
+    glide_angle_sum: f64,
 }
 
 fn keep_peak(peak: &mut f64, value: f64) {
@@ -174,14 +180,14 @@ impl TrapSheetRecorder {
         let Some(position) = TrapSheetPosition::at(distance_to_ramp_m) else {
             return;
         };
-        let angle_deg = lineup_offset_m
-            .atan2(distance_to_ramp_m + self.ramp_to_aim_m)
-            .to_degrees();
+        let to_aim_m = distance_to_ramp_m + self.ramp_to_aim_m;
+        let angle_deg = lineup_offset_m.atan2(to_aim_m).to_degrees();
         let a = &mut self.accumulators[position as usize];
         a.samples += 1;
         a.glide_sum += glide_slope_error_m;
         a.lineup_sum += lineup_offset_m;
         a.angle_sum += angle_deg;
+        a.glide_angle_sum += glide_slope_error_m.atan2(to_aim_m).to_degrees();
         keep_peak(&mut a.glide_peak, glide_slope_error_m);
         keep_peak(&mut a.lineup_peak, lineup_offset_m);
         keep_peak(&mut a.angle_peak, angle_deg);
@@ -200,6 +206,7 @@ impl TrapSheetRecorder {
                     samples: a.samples,
                     glide_slope_mean_m: a.glide_sum / n,
                     glide_slope_peak_m: a.glide_peak,
+                    glide_slope_mean_deg: a.glide_angle_sum / n,
                     lineup_mean_m: a.lineup_sum / n,
                     lineup_peak_m: a.lineup_peak,
                     lineup_mean_deg: a.angle_sum / n,
@@ -282,6 +289,8 @@ mod tests {
         recorder.sample(92.6, 0.5, 1.0);
         let ar = *recorder.sheet().at(TrapSheetPosition::AtRamp).unwrap();
         assert!((ar.lineup_mean_deg - 0.375_46).abs() < 1e-5, "{ar:?}");
+        // 0.5 m high there: atan(0.5 / 152.6) = 0.18773°.
+        assert!((ar.glide_slope_mean_deg - 0.187_73).abs() < 1e-5, "{ar:?}");
         assert_eq!(ar.glide_slope_peak_m, 0.5);
     }
 

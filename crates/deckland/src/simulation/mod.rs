@@ -23,6 +23,7 @@ mod held;
 mod hold;
 pub mod lateral;
 mod layout;
+mod lso;
 mod outcome;
 mod outer_loops;
 mod pitch_setup;
