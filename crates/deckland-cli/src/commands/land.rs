@@ -348,6 +348,18 @@ fn print_summary(report: &LandingReport, output: &OutputDir) -> Result<()> {
     if let Some(reason) = &s.reason {
         outln!("  reason                {reason}")?;
     }
+    if let Some(grade) = &s.lso_grade {
+        let comment = if grade.comment.is_empty() {
+            "no deviation called"
+        } else {
+            &grade.comment
+        };
+        outln!(
+            "  LSO grade             {} ({} points): {comment}",
+            grade.grade.shorthand(),
+            grade.points
+        )?;
+    }
     if let Some(t) = &s.touchdown {
         outln!(
             "  touchdown             {:.2} s, {:+.1} m from the aim point (positive forward)",

@@ -90,6 +90,7 @@ mod tests {
             glide_path_error_max_m: None,
             actuator: Default::default(),
             trap_sheet: None,
+            lso_grade: None,
         }
     }
 

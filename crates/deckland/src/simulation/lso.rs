@@ -24,12 +24,12 @@ impl RunSummary {
     /// graded on its mean glide-slope and lineup angles; in the wires, the bank and the
     /// drift at touchdown. Angle of attack is not graded yet (the trap sheet does not
     /// record it).
-    pub fn lso_grade(&self) -> Option<LsoGrade> {
-        self.lso_grade_with(&GradeThresholds::AIRBOSS)
+    pub fn graded_by_lso(&self) -> Option<LsoGrade> {
+        self.graded_by_lso_with(&GradeThresholds::AIRBOSS)
     }
 
-    /// As [`RunSummary::lso_grade`], with other thresholds.
-    pub fn lso_grade_with(&self, thresholds: &GradeThresholds) -> Option<LsoGrade> {
+    /// As [`RunSummary::graded_by_lso`], with other thresholds.
+    pub fn graded_by_lso_with(&self, thresholds: &GradeThresholds) -> Option<LsoGrade> {
         let lateral = self.touchdown.as_ref().and_then(|t| t.lateral.as_ref());
         let end = match self.outcome {
             Outcome::Trap if lateral.is_some_and(|l| l.off_centre) => PassEnd::Dangerous,

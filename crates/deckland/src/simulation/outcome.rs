@@ -7,7 +7,7 @@ use serde::Serialize;
 
 use super::activity::ActuatorActivity;
 use crate::control::WaveOffDecision;
-use crate::metrics::TrapSheet;
+use crate::metrics::{LsoGrade, TrapSheet};
 use crate::scenario::OutcomeLimits;
 
 /// How a run ended.
@@ -452,6 +452,11 @@ pub struct RunSummary {
     /// §10.8); `None` for a longitudinal approach.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub trap_sheet: Option<TrapSheet>,
+    /// The landing signal officer's grade of an approach (docs/model.md §12):
+    /// [`RunSummary::graded_by_lso`] with AIRBOSS's thresholds; `None` for a run that is
+    /// not an approach.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lso_grade: Option<LsoGrade>,
 }
 
 #[cfg(test)]

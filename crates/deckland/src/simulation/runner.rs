@@ -404,6 +404,11 @@ impl Simulation {
                 glide_path_error_max_m: self.statistics.max_m(),
                 actuator: self.activity.activity(),
                 trap_sheet: self.three_dimensional.then(|| self.trap_sheet.sheet()),
+                lso_grade: None,
+            };
+            let summary = RunSummary {
+                lso_grade: summary.graded_by_lso(),
+                ..summary
             };
             recorder.finish(&summary);
             self.summary = Some(summary);
