@@ -15,6 +15,7 @@ use anyhow::{Context, Result};
 use clap::Args;
 use deckland::experiments::{fly_approach, ApproachRow};
 use deckland::metrics::TrapSheetPosition;
+use deckland::recording::acmi::{write_acmi, AcmiReference};
 use deckland::scenario::Scenario;
 use deckland::simulation::{Outcome, RunSummary};
 use serde::Serialize;
@@ -44,6 +45,11 @@ pub struct LandArgs {
     /// Write no plots (the CSV, the summary and the scenario only).
     #[arg(long)]
     pub no_plots: bool,
+    /// Also write the approach as a Tacview replay, `approach.acmi` (ACMI 2.2 text):
+    /// the aircraft and the carrier every 0.1 s, the ramp crossing, the touchdown and
+    /// the outcome as events.
+    #[arg(long)]
+    pub acmi: bool,
     /// Output folder, overwriting and JSON printing.
     #[command(flatten)]
     pub output: OutputArgs,
@@ -94,6 +100,7 @@ pub fn fly_and_write(
     conditions: &str,
     json: bool,
     with_plots: bool,
+    with_acmi: bool,
 ) -> Result<RunSummary> {
     let run = fly_approach(scenario).context("cannot set up the approach")?;
     let summary = run.summary.clone();
@@ -119,6 +126,14 @@ pub fn fly_and_write(
         for (stem, figure) in figures(&run, scenario, &flown) {
             plots.push((stem, figure.save_with_svg(output, stem)?.1));
         }
+    }
+    if with_acmi {
+        let reference = AcmiReference {
+            deck_angle_deg: scenario.environment.deck.deck_angle_deg,
+            ..AcmiReference::default()
+        };
+        let replay = write_acmi(&reference, &flown, &run.samples, &run.events, &summary);
+        output.write_bytes("approach.acmi", replay.as_bytes())?;
     }
     let page = html_report(&report, &flown, &plots, &scenario_toml, &summary_json);
     output.write_bytes("report.html", page.as_bytes())?;
@@ -440,6 +455,7 @@ pub fn run(args: &LandArgs) -> Result<()> {
         args.conditions.name(),
         args.output.json,
         !args.no_plots,
+        args.acmi,
     )?;
     Ok(())
 }

@@ -32,6 +32,9 @@ pub struct RunArgs {
     /// Write no plots (the CSV, the summary and the scenario only).
     #[arg(long)]
     pub no_plots: bool,
+    /// Also write the approach as a Tacview replay, `approach.acmi` (as `land --acmi`).
+    #[arg(long)]
+    pub acmi: bool,
     /// Output folder, overwriting and JSON printing.
     #[command(flatten)]
     pub output: OutputArgs,
@@ -70,6 +73,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
         &name,
         args.output.json,
         !args.no_plots,
+        args.acmi,
     )?;
     Ok(())
 }

@@ -5,6 +5,7 @@
 //! Monte Carlo campaigns use [`SummaryRecorder`] (nothing kept); single runs a
 //! [`TimeSeriesRecorder`].
 
+pub mod acmi;
 mod columns;
 
 pub use crate::simulation::Recorder;
