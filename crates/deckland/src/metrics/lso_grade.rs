@@ -1,4 +1,4 @@
-//! The landing signal officer's grade of a pass (docs/model.md §12): the deviations
+//! The landing signal officer's grade of a pass (docs/model.md §11): the deviations
 //! called in each window of the groove, the LSO's comment in the conventional shorthand,
 //! the grade and its points on the squadron's greenie board.
 //!
@@ -10,7 +10,7 @@
 //! by its window's shorthand: `(LUL)X _H_IM LOIC` is a little lined up left at the start,
 //! a lot high in the middle, low in close.
 //!
-//! Grade (docs/model.md §12): any deviation called a lot → no grade (2 points); any
+//! Grade (docs/model.md §11): any deviation called a lot → no grade (2 points); any
 //! plain one → fair (3); otherwise OK (4); a bolter 2.5; the aircraft's own wave-off 2
 //! (the automatic system is the pilot here, and no LSO waves it off: an own wave-off,
 //! OWO); cut 0 for a dangerous pass: a ramp strike, a hard landing, an off-centre
@@ -75,7 +75,7 @@ impl Call {
     }
 }
 
-/// The windows of the groove (docs/model.md §12), in the order a pass flies them.
+/// The windows of the groove (docs/model.md §11), in the order a pass flies them.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Window {
@@ -154,7 +154,7 @@ impl Levels {
     }
 }
 
-/// The grading thresholds (docs/model.md §12).
+/// The grading thresholds (docs/model.md §11).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct GradeThresholds {
     /// Above the glide slope (deg, seen from the aim point): 0.4, 0.8, 1.5 (AIRBOSS).
@@ -184,7 +184,7 @@ pub struct GradeThresholds {
 }
 
 impl GradeThresholds {
-    /// AIRBOSS's carrier defaults (docs/model.md §12).
+    /// AIRBOSS's carrier defaults (docs/model.md §11).
     pub const AIRBOSS: Self = Self {
         high_deg: Levels {
             little: 0.4,
@@ -492,7 +492,7 @@ mod tests {
         grade_pass(windows, None, PassEnd::Trap, &GradeThresholds::AIRBOSS)
     }
 
-    /// Every threshold edge of docs/model.md §12, on each side: exactly at a level is
+    /// Every threshold edge of docs/model.md §11, on each side: exactly at a level is
     /// not beyond it; just past it is. (value, expected comment at X, expected grade).
     #[test]
     fn each_threshold_edge_gives_its_call_and_grade() {

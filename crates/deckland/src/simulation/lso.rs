@@ -1,4 +1,4 @@
-//! A run's LSO grade (docs/model.md §12): the trap sheet's windows and the touchdown
+//! A run's LSO grade (docs/model.md §11): the trap sheet's windows and the touchdown
 //! graded by [`crate::metrics::lso_grade`].
 
 use super::outcome::{Outcome, RunSummary};

@@ -452,7 +452,7 @@ pub struct RunSummary {
     /// §10.8); `None` for a longitudinal approach.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub trap_sheet: Option<TrapSheet>,
-    /// The landing signal officer's grade of an approach (docs/model.md §12):
+    /// The landing signal officer's grade of an approach (docs/model.md §11):
     /// [`RunSummary::graded_by_lso`] with AIRBOSS's thresholds; `None` for a run that is
     /// not an approach.
     #[serde(skip_serializing_if = "Option::is_none")]
