@@ -32,7 +32,8 @@ pub struct RunArgs {
     /// Write no plots (the CSV, the summary and the scenario only).
     #[arg(long)]
     pub no_plots: bool,
-    /// Also write the approach as a Tacview replay, `approach.acmi` (as `land --acmi`).
+    /// Also write the approach as a Tacview replay, `approach.acmi` (ACMI 2.2 text), as
+    /// `land` does.
     #[arg(long)]
     pub acmi: bool,
     /// Output folder, overwriting and JSON printing.
