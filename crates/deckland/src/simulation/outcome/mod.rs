@@ -455,5 +455,4 @@ pub struct RunSummary {
 }
 
 #[cfg(test)]
-#[path = "outcome_tests.rs"]
 mod tests;

@@ -137,7 +137,7 @@ pub struct WaveOffParameters {
     /// laws have (the approach flies α ≈ 7°); a 40 °/s stabilator needs 0.9 s to reverse
     /// a push-over, in which α falls by 7° (docs/landing-design.md).
     pub min_alpha_deg: f64,
-    /// The wave-off's ramp-strike limit in a heavy sea (–, `heavy_sea.rs`); 0.005; 0 off.
+    /// The wave-off's ramp-strike limit in a heavy sea (–, `wave_off/heavy_sea.rs`); 0.005; 0 off.
     pub heavy_sea_ramp_strike_probability: f64,
     /// The late abort's limit in a heavy sea (–) alike; 0.005; 0 off; [0, 1).
     pub heavy_sea_late_abort_ramp_strike_probability: f64,
@@ -492,9 +492,7 @@ impl WaveOffParameters {
     }
 }
 
-#[path = "heavy_sea.rs"]
 mod heavy_sea;
 
 #[cfg(test)]
-#[path = "wave_off_tests.rs"]
 mod tests;
