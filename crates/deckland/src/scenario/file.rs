@@ -219,36 +219,8 @@ pub fn load_scenario(text: &str, file_name: &str) -> Result<Scenario, ScenarioEr
     index_table("", document.as_table(), &mut keys);
     let index = KeyIndex { keys };
 
-    let scenario: Scenario = toml::from_str(text).map_err(|error| {
-        let (line, field) = match error.span() {
-            Some(span) => (
-                Some(line_of(text, span.start)),
-                index
-                    .innermost(&span)
-                    .map_or_else(|| "?".to_owned(), |k| k.path.clone()),
-            ),
-            None => (None, "?".to_owned()),
-        };
-        let message = first_line(error.message());
-        // An unknown key is reported at the key itself: name it in the path.
-        let field = match unknown_field_name(&message) {
-            Some(name) if !field.ends_with(name) => join(&field, name),
-            _ => field,
-        };
-        // Tagged sections (mission, control.pitch) lose the key's own span: find it.
-        let line = index
-            .keys
-            .iter()
-            .find(|k| k.path == field)
-            .map(|k| line_of(text, k.span.start))
-            .or(line);
-        ScenarioError::Structure {
-            file: file_name.to_owned(),
-            line,
-            field,
-            message,
-        }
-    })?;
+    let scenario: Scenario =
+        toml::from_str(text).map_err(|error| structure_error(&error, text, file_name, &index))?;
     // serde ignores extra keys beside the tag of a unit variant: check them here.
     if matches!(scenario.mission, Mission::Approach) {
         if let Some(extra) = index
@@ -287,6 +259,44 @@ pub fn load_scenario(text: &str, file_name: &str) -> Result<Scenario, ScenarioEr
         }
     })?;
     Ok(scenario)
+}
+
+/// The error of a file that parses but does not fit a scenario: at the line and key
+/// of `error`'s span in `text`, an unknown key named in the path.
+fn structure_error(
+    error: &toml::de::Error,
+    text: &str,
+    file_name: &str,
+    index: &KeyIndex,
+) -> ScenarioError {
+    let (line, field) = match error.span() {
+        Some(span) => (
+            Some(line_of(text, span.start)),
+            index
+                .innermost(&span)
+                .map_or_else(|| "?".to_owned(), |k| k.path.clone()),
+        ),
+        None => (None, "?".to_owned()),
+    };
+    let message = first_line(error.message());
+    // An unknown key is reported at the key itself: name it in the path.
+    let field = match unknown_field_name(&message) {
+        Some(name) if !field.ends_with(name) => join(&field, name),
+        _ => field,
+    };
+    // Tagged sections (mission, control.pitch) lose the key's own span: find it.
+    let line = index
+        .keys
+        .iter()
+        .find(|k| k.path == field)
+        .map(|k| line_of(text, k.span.start))
+        .or(line);
+    ScenarioError::Structure {
+        file: file_name.to_owned(),
+        line,
+        field,
+        message,
+    }
 }
 
 fn first_line(message: &str) -> String {
