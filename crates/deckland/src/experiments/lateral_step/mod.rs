@@ -43,11 +43,9 @@ mod response;
 mod setup;
 mod spec;
 
-pub use response::{LateralStepReport, LateralStepResponse};
+pub use response::{LateralStepReport, LateralStepResponse, LateralStepRun};
 pub use setup::{LateralLaws, LateralSetup};
-pub use spec::{
-    CrosswindGust, LateralAxis, LateralSample, LateralStep, LateralStepError, LateralStepRun,
-};
+pub use spec::{CrosswindGust, LateralAxis, LateralSample, LateralStep, LateralStepError};
 
 /// Time of the step after the start (s).
 pub const LATERAL_STEP_TIME_S: f64 = 1.0;
