@@ -24,6 +24,7 @@ mod hold;
 pub mod lateral;
 mod layout;
 mod outcome;
+mod outer_loop_signals;
 mod outer_loops;
 mod pitch_setup;
 mod recorder;
@@ -32,6 +33,7 @@ mod setup;
 mod signals;
 mod taps;
 mod wave_off;
+mod wave_off_flight;
 
 pub use activity::ActuatorActivity;
 pub use alpha_floor::AlphaFloor;
