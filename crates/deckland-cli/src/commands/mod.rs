@@ -3,9 +3,11 @@
 pub mod campaign;
 pub mod common;
 pub mod environment;
+pub mod flight_condition;
 pub mod land;
 pub mod linearize;
 pub mod merge;
+pub mod outcome;
 pub mod reproduce;
 pub mod run;
 pub mod scenario;
