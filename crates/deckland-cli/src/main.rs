@@ -24,9 +24,9 @@ struct Cli {
 #[derive(Debug, Subcommand)]
 enum Command {
     /// Trim the F/A-18 for steady straight flight at a given airspeed and flight-path angle.
-    Trim(commands::trim::TrimArgs),
+    Trim(commands::flight_condition::TrimArgs),
     /// Linearise about a trim point (paper Eq. 14 form): A, B, eigenvalues and modes.
-    Linearize(commands::trim::TrimArgs),
+    Linearize(commands::flight_condition::TrimArgs),
     /// Fly one approach to the moving deck (the main job): CSV, summary and plots.
     Land(commands::land::LandArgs),
     /// Track a constant commanded sink rate from level flight (paper Fig. 13).

@@ -534,6 +534,25 @@ pub fn civil_from_days(days: i64) -> (i64, u32, u32) {
     (year, month as u32, day as u32)
 }
 
+/// `value` with `digits` decimals, and no minus sign on a value that rounds to zero
+/// ("0.000000", never "-0.000000").
+pub(crate) fn fixed(value: f64, digits: usize) -> String {
+    let text = format!("{value:.digits$}");
+    match text.strip_prefix('-') {
+        Some(magnitude) if magnitude.chars().all(|c| c == '0' || c == '.') => magnitude.to_owned(),
+        _ => text,
+    }
+}
+
+/// The rows of the matrix `m`, for a JSON report.
+pub(crate) fn rows<const R: usize, const C: usize>(
+    m: &nalgebra::SMatrix<f64, R, C>,
+) -> Vec<Vec<f64>> {
+    (0..R)
+        .map(|i| (0..C).map(|j| m[(i, j)]).collect())
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -780,5 +799,14 @@ mod tests {
         let error = OutputDir::prepare("land", Some(&foreign), true).expect_err("refused");
         assert!(error.to_string().contains("not to you"), "{error}");
         let _ = fs::remove_dir_all(&path);
+    }
+
+    #[test]
+    fn values_that_round_to_zero_have_no_sign() {
+        assert_eq!(fixed(-1e-9, 6), "0.000000");
+        assert_eq!(fixed(-0.0, 4), "0.0000");
+        assert_eq!(fixed(-0.0000006, 6), "-0.000001");
+        assert_eq!(fixed(-0.526839, 6), "-0.526839");
+        assert_eq!(fixed(f64::NAN, 2), "NaN");
     }
 }

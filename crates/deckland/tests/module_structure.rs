@@ -1,6 +1,7 @@
 //! The library's structure stays as ARCHITECTURE.md draws it: the top-level modules of
 //! `src/` form a directed acyclic graph (no two modules depend on each other, directly or
-//! round a loop), and no source file grows past 500 lines. A dependency is any mention of
+//! round a loop), and no source file grows past 800 lines (a file may be long when it holds
+//! one idea; its functions stay short: `function_budget.rs`). A dependency is any mention of
 //! `crate::<module>` in a module's files (code or doc links).
 
 mod common;
@@ -8,7 +9,7 @@ mod common;
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
-const MAX_LINES: usize = 500;
+const MAX_LINES: usize = 800;
 
 fn source_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("src")
@@ -96,7 +97,7 @@ fn the_cycle_finder_finds_a_planted_cycle() {
 }
 
 #[test]
-fn no_library_source_file_is_longer_than_500_lines() {
+fn no_library_source_file_is_longer_than_800_lines() {
     let mut files = Vec::new();
     rust_files(&source_dir(), &mut files);
     let long: Vec<String> = files

@@ -8,6 +8,7 @@
 use super::common::{
     check_set_up, seed_parser, Conditions, ControllerChoice, HardwareChoice, OutputArgs,
 };
+use super::outcome::outcome_text;
 use crate::html;
 use crate::output::OutputDir;
 pub(crate) use crate::plot::land::figures;
@@ -17,7 +18,7 @@ use deckland::experiments::{fly_approach, ApproachRow};
 use deckland::metrics::TrapSheetPosition;
 use deckland::recording::acmi::{write_acmi, AcmiReference};
 use deckland::scenario::Scenario;
-use deckland::simulation::{Outcome, RunSummary};
+use deckland::simulation::RunSummary;
 use serde::Serialize;
 
 /// Options of `deckland land`.
@@ -69,26 +70,6 @@ pub struct LandingReport<'a> {
     /// keys are the document's own (flattened), so none may repeat a key above.
     #[serde(flatten)]
     pub summary: &'a RunSummary,
-}
-
-/// The outcome in words, with what decided it: "trap on wire 4", "ramp strike: hook
-/// 3.29 m below the ramp".
-pub(crate) fn outcome_text(summary: &RunSummary) -> String {
-    let name = summary.outcome.name().replace('_', " ");
-    match (summary.outcome, summary.wire, &summary.reason) {
-        (Outcome::Trap, Some(wire), _) => format!("trap on wire {wire}"),
-        (_, _, Some(reason)) => format!("{name}: {reason}"),
-        _ => name,
-    }
-}
-
-/// `value` with its sign, a true minus for negative values: "+10", "−25".
-pub(crate) fn signed(value: f64) -> String {
-    if value < 0.0 {
-        format!("\u{2212}{}", -value)
-    } else {
-        format!("+{value}")
-    }
 }
 
 /// Flies `scenario`, writes every result into `output` and prints the summary (as text,

@@ -1,7 +1,9 @@
 //! `deckland linearize`: the paper's Eq. (14) linear model about a trim point, its
 //! eigenvalues and modes.
 
-use super::trim::{print_trim_table, AircraftModel, TrimArgs};
+use super::flight_condition::{AircraftModel, TrimArgs};
+use super::trim::print_trim_table;
+use crate::output::{fixed, rows};
 use anyhow::Result;
 use deckland::aircraft::TrimReport;
 use deckland::analysis::{
@@ -29,14 +31,6 @@ struct LinearizeReport {
     modes: Vec<Mode>,
 }
 
-pub(super) fn rows<const R: usize, const C: usize>(
-    m: &nalgebra::SMatrix<f64, R, C>,
-) -> Vec<Vec<f64>> {
-    (0..R)
-        .map(|i| (0..C).map(|j| m[(i, j)]).collect())
-        .collect()
-}
-
 fn print_matrix<const R: usize, const C: usize>(
     name: &str,
     m: &nalgebra::SMatrix<f64, R, C>,
@@ -55,16 +49,6 @@ fn print_matrix<const R: usize, const C: usize>(
         outln!()?;
     }
     Ok(())
-}
-
-/// `value` with `digits` decimals, and no minus sign on a value that rounds to zero
-/// ("0.000000", never "-0.000000").
-pub(super) fn fixed(value: f64, digits: usize) -> String {
-    let text = format!("{value:.digits$}");
-    match text.strip_prefix('-') {
-        Some(magnitude) if magnitude.chars().all(|c| c == '0' || c == '.') => magnitude.to_owned(),
-        _ => text,
-    }
 }
 
 fn print_table(
@@ -166,18 +150,4 @@ pub fn run(args: &TrimArgs) -> Result<()> {
         )?;
     }
     Ok(())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::fixed;
-
-    #[test]
-    fn values_that_round_to_zero_have_no_sign() {
-        assert_eq!(fixed(-1e-9, 6), "0.000000");
-        assert_eq!(fixed(-0.0, 4), "0.0000");
-        assert_eq!(fixed(-0.0000006, 6), "-0.000001");
-        assert_eq!(fixed(-0.526839, 6), "-0.526839");
-        assert_eq!(fixed(f64::NAN, 2), "NaN");
-    }
 }

@@ -5,6 +5,8 @@
 //! convergence time is the 2 % settling time of the sink rate towards the command,
 //! measured from the command (definitions in `deckland::metrics`).
 
+pub(crate) mod report;
+
 use super::common::{
     seed_parser, validate_options, BaseScenarioArgs, Conditions, ControllerChoice, OutputArgs,
 };
@@ -13,12 +15,10 @@ pub(crate) use crate::plot::sink::figure;
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use deckland::experiments::{
-    fly_sink_rate, SinkRateRun, SinkRateSample as Row, SinkRateTracking,
-    SINK_COMMAND_TIME_S as COMMAND_TIME_S,
+    fly_sink_rate, SinkRateRun, SinkRateTracking, SINK_COMMAND_TIME_S as COMMAND_TIME_S,
 };
-use deckland::metrics::StepResponseMetrics;
 use deckland::scenario::{Mission, Scenario};
-use serde::Serialize;
+use report::{SinkReport, SinkRun};
 
 /// Options of `deckland sink`.
 #[derive(Debug, Clone, Args)]
@@ -62,31 +62,6 @@ pub struct SinkArgs {
     /// Output folder, overwriting and JSON printing.
     #[command(flatten)]
     pub output: OutputArgs,
-}
-
-/// The summary of a sink-rate run (`summary.json`).
-#[derive(Debug, Serialize)]
-pub(crate) struct SinkReport {
-    pub(crate) controller: &'static str,
-    pub(crate) conditions: &'static str,
-    seed: u64,
-    pub(crate) sink_rate_command_mps: f64,
-    pub(crate) ramp_s: f64,
-    pub(crate) outcome: &'static str,
-    pub(crate) reason: Option<String>,
-    /// Sink-rate response metrics (2 % band of the command).
-    pub(crate) metrics: Option<StepResponseMetrics>,
-    /// Largest pitch-attitude deviation from level trim (deg).
-    max_pitch_change_deg: f64,
-    altitude_lost_m: f64,
-}
-
-/// A flown sink-rate run: the rows recorded every 10 ms and the report.
-pub(crate) struct SinkRun {
-    /// The recorded rows.
-    pub(crate) rows: Vec<Row>,
-    /// The summary, as in `summary.json`.
-    pub(crate) report: SinkReport,
 }
 
 /// Checks `args`, flies the sink-rate command and measures its convergence.
@@ -164,24 +139,6 @@ pub(crate) fn sink_run(
     SinkRun {
         rows: run.samples,
         report,
-    }
-}
-
-/// How the run ended, in words: "settled (±2 %) 12.54 s after the command", "diverged at
-/// t = 2.008 s".
-pub(crate) fn outcome_text(run: &SinkRun) -> String {
-    let report = &run.report;
-    let end_s = run.rows.last().map_or(f64::NAN, |r| r.time_s);
-    match (&report.metrics, report.outcome) {
-        (_, "diverged") => format!("diverged at t = {end_s:.3} s"),
-        (Some(m), _) => match (m.settled, m.settling_time_s) {
-            (true, Some(t)) => format!("settled (±2 %) {t:.2} s after the command"),
-            _ => format!(
-                "not settled: {}",
-                m.not_settled_reason.as_deref().unwrap_or("no reason given")
-            ),
-        },
-        (None, outcome) => outcome.replace('_', " "),
     }
 }
 

@@ -14,8 +14,8 @@ use deckland::analysis::{INPUT_NAMES, INPUT_UNITS, STATE_NAMES, STATE_UNITS};
 use deckland::environment::Wind;
 use serde::Serialize;
 
-use super::linearize::{fixed, rows};
-use super::trim::TrimArgs;
+use super::flight_condition::TrimArgs;
+use crate::output::{fixed, rows};
 
 /// `linearize --model 6dof --json`: the trim, both blocks with names and units, the modes.
 #[derive(Debug, Serialize)]

@@ -3,19 +3,16 @@
 //! CSV of the time series and plots; with `--axis roll|yaw` a bank or sideslip step of
 //! the 6-DOF aircraft with the lateral laws ([`lateral`]).
 
+pub(crate) mod flight;
 pub(crate) mod lateral;
 
 use std::path::PathBuf;
 
-use anyhow::{anyhow, bail, Context, Result};
+use anyhow::{anyhow, bail, Result};
 use clap::ValueEnum;
 use deckland::control::pitch::PitchControllerParameters;
-use deckland::experiments::{
-    fly_pitch_step, PitchStep, PitchStepResponse, PITCH_STEP_TIME_S as STEP_TIME_S,
-    SETTLING_BAND_FRACTION,
-};
-use deckland::scenario::{Mission, Scenario};
-use deckland::simulation::Signals;
+use deckland::experiments::{PitchStep, PITCH_STEP_TIME_S as STEP_TIME_S, SETTLING_BAND_FRACTION};
+use deckland::scenario::Mission;
 use serde::Serialize;
 
 use super::common::{
@@ -23,6 +20,7 @@ use super::common::{
 };
 use crate::output::OutputDir;
 pub(crate) use crate::plot::step::figures;
+use flight::{controller_parameters, ControllerResult, ControllerRun, StepFlight};
 
 /// Largest |--step-deg| accepted (deg): beyond it the elevator is saturated for most of
 /// the transient and the step says little about the controller.
@@ -108,9 +106,6 @@ pub struct StepArgs {
     pub output: OutputArgs,
 }
 
-/// The step response of one controller, as printed in the JSON document.
-pub(crate) type ControllerResult = PitchStepResponse;
-
 /// The JSON document of `deckland step --json`.
 #[derive(Debug, Serialize)]
 struct StepReport {
@@ -128,16 +123,6 @@ struct StepReport {
     output_folder: String,
 }
 
-/// One controller's run.
-pub(crate) struct ControllerRun {
-    /// Which controller flew.
-    pub(crate) choice: ControllerChoice,
-    /// The recorded samples (every 2 ms).
-    pub(crate) samples: Vec<Signals>,
-    /// The step-response metrics.
-    pub(crate) result: ControllerResult,
-}
-
 fn check_arguments(args: &StepArgs) -> Result<()> {
     if !(args.step_deg.is_finite() && args.step_deg != 0.0 && args.step_deg.abs() <= MAX_STEP_DEG) {
         bail!(
@@ -153,7 +138,7 @@ fn check_arguments(args: &StepArgs) -> Result<()> {
         );
     }
     // The rest as the library checks the scenario flown, naming the options.
-    let flight = StepFlight::of(args)?;
+    let flight = step_flight(args)?;
     for choice in args.controller.choices() {
         let mut scenario = flight.scenario(choice);
         scenario.mission = Mission::pitch_step(
@@ -173,68 +158,15 @@ fn check_arguments(args: &StepArgs) -> Result<()> {
     Ok(())
 }
 
-/// The controller's parameters on `base`, with `--epsilon` applied to the O-PD observer.
-fn controller_parameters(
-    base: &Scenario,
-    choice: ControllerChoice,
-    epsilon: Option<f64>,
-) -> PitchControllerParameters {
-    let mut parameters = choice.parameters_for(base);
-    if let (PitchControllerParameters::ObserverPd(opd), Some(epsilon)) = (&mut parameters, epsilon)
-    {
-        opd.observer.epsilon = epsilon;
-    }
-    parameters
-}
-
-/// What a set of step runs flew, for the figures' titles and reference lines.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct StepFlight {
-    /// The scenario the step is flown on (hardware set or file), before the conditions.
-    pub(crate) base: Scenario,
-    /// Ideal or adverse.
-    pub(crate) conditions: Conditions,
-    /// Seed of the random streams.
-    pub(crate) seed: u64,
-    /// The step.
-    pub(crate) step: PitchStep,
-    /// O-PD observer ε, when not the library's.
-    pub(crate) epsilon: Option<f64>,
-}
-
-impl StepFlight {
-    fn of(args: &StepArgs) -> Result<Self> {
-        Ok(Self {
-            base: args.base.longitudinal_base()?,
-            conditions: args.conditions,
-            seed: args.seed,
-            step: PitchStep::new(args.step_deg, args.seconds),
-            epsilon: args.epsilon,
-        })
-    }
-
-    /// The scenario flown with `choice`.
-    pub(crate) fn scenario(&self, choice: ControllerChoice) -> Scenario {
-        let mut scenario = self.conditions.conditions().apply(self.base, self.seed);
-        scenario.control.pitch = controller_parameters(&self.base, choice, self.epsilon);
-        scenario
-    }
-
-    /// Flies the step with each controller and measures it.
-    pub(crate) fn fly(&self, choices: &[ControllerChoice]) -> Result<Vec<ControllerRun>> {
-        choices
-            .iter()
-            .map(|&choice| {
-                let run = fly_pitch_step(&self.scenario(choice), &self.step)
-                    .with_context(|| format!("cannot fly the {} step", choice.label()))?;
-                Ok(ControllerRun {
-                    choice,
-                    samples: run.samples,
-                    result: run.response,
-                })
-            })
-            .collect()
-    }
+/// The flight of the step `args` ask for.
+fn step_flight(args: &StepArgs) -> Result<StepFlight> {
+    Ok(StepFlight {
+        base: args.base.longitudinal_base()?,
+        conditions: args.conditions,
+        seed: args.seed,
+        step: PitchStep::new(args.step_deg, args.seconds),
+        epsilon: args.epsilon,
+    })
 }
 
 fn csv_bytes(runs: &[ControllerRun]) -> Result<Vec<u8>> {
@@ -408,7 +340,7 @@ pub fn run(args: &StepArgs) -> Result<()> {
         StepAxis::Yaw => return lateral::run(args, deckland::experiments::LateralAxis::Yaw),
     }
     check_arguments(args)?;
-    let flight = StepFlight::of(args)?;
+    let flight = step_flight(args)?;
     let epsilon = match controller_parameters(&flight.base, ControllerChoice::Opd, args.epsilon) {
         PitchControllerParameters::ObserverPd(opd) => opd.observer.epsilon,
         _ => f64::NAN,

@@ -33,6 +33,7 @@ mod panel;
 pub(crate) mod sink;
 pub(crate) mod step;
 mod style;
+
 #[cfg(test)]
 mod tests;
 mod ticks;
@@ -41,3 +42,12 @@ pub use figure::Figure;
 pub use legend::MarkerShape;
 pub use panel::{BarGroup, Panel};
 pub(crate) use style::{DECK_COLOUR, FONT_BYTES, FONT_FAMILY};
+
+/// `value` with its sign, a true minus for negative values: "+10", "−25".
+pub(crate) fn signed(value: f64) -> String {
+    if value < 0.0 {
+        format!("\u{2212}{}", -value)
+    } else {
+        format!("+{value}")
+    }
+}

@@ -2,7 +2,7 @@
 
 use deckland::experiments::SinkRateSample as Row;
 
-use crate::commands::sink::{outcome_text, SinkRun};
+use crate::commands::sink::report::{outcome_text, SinkRun};
 use crate::plot::{Figure, Panel};
 
 /// The sink-rate figure (paper Fig. 13): sink rate and command, error, altitude; the

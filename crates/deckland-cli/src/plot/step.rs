@@ -7,8 +7,8 @@ use deckland::experiments::SETTLING_BAND_FRACTION;
 use deckland::simulation::Signals;
 
 use crate::commands::common::{Conditions, ControllerChoice};
-use crate::commands::land::signed;
-use crate::commands::step::{ControllerResult, ControllerRun, StepFlight};
+use crate::commands::step::flight::{ControllerResult, ControllerRun, StepFlight};
+use crate::plot::signed;
 use crate::plot::{Figure, Panel};
 
 fn series(samples: &[Signals], value: impl Fn(&Signals) -> f64) -> Vec<(f64, f64)> {

@@ -110,6 +110,33 @@ pub fn fly_pitch_step(
     let mut recorder = TimeSeriesRecorder::every(step.record_interval_s);
     let summary = Simulation::new(&scenario)?.run(&mut recorder);
     let samples = recorder.samples;
+    let response = measure_pitch_step(&scenario, step, label, &samples, &summary)?;
+    Ok(PitchStepRun {
+        samples,
+        summary,
+        response,
+    })
+}
+
+/// What a pitch step's response reports of the elevator, measured or not.
+struct ElevatorUse {
+    /// Largest deflection (deg).
+    max_elevator_deg: f64,
+    /// Largest deflection from trim (deg).
+    max_elevator_change_deg: f64,
+    /// Time on either position limit (s).
+    elevator_saturation_s: f64,
+}
+
+/// Measures θ and the elevator in the `samples` of `step` flown by the pitch law
+/// `label` to the end `summary` describes.
+fn measure_pitch_step(
+    scenario: &Scenario,
+    step: &PitchStep,
+    label: String,
+    samples: &[Signals],
+    summary: &RunSummary,
+) -> Result<PitchStepResponse, ExperimentError> {
     let first = samples.first().ok_or(ExperimentError::NoSamples)?;
     let trim_deg = first.theta_ref_rad.to_degrees();
     let elevator_trim_deg = first.elevator_rad.to_degrees();
@@ -141,32 +168,31 @@ pub fn fly_pitch_step(
             summary.reason.clone().unwrap_or_default()
         )
     });
-    let saturation_s = activity.time_at_lower_limit_s + activity.time_at_upper_limit_s;
-    let reference_duration_s = reference_duration_s(&samples, trim_deg + step.step_deg);
-    let response = match metrics {
+    let elevator = ElevatorUse {
+        max_elevator_deg: activity.peak_abs,
+        max_elevator_change_deg,
+        elevator_saturation_s: activity.time_at_lower_limit_s + activity.time_at_upper_limit_s,
+    };
+    let reference_duration_s = reference_duration_s(samples, trim_deg + step.step_deg);
+    Ok(match metrics {
         Ok(metrics) => {
             let not_settled_reason = diverged.or(metrics.not_settled_reason);
+            let settling_time_s = metrics
+                .settling_time_s
+                .filter(|_| not_settled_reason.is_none());
             PitchStepResponse {
                 controller: label,
                 settled: not_settled_reason.is_none(),
-                settling_time_s: if not_settled_reason.is_none() {
-                    metrics.settling_time_s
-                } else {
-                    None
-                },
+                settling_time_s,
                 reference_duration_s,
-                settling_after_reference_s: if not_settled_reason.is_none() {
-                    metrics.settling_time_s.map(|t| t - reference_duration_s)
-                } else {
-                    None
-                },
+                settling_after_reference_s: settling_time_s.map(|t| t - reference_duration_s),
                 not_settled_reason,
                 overshoot_pct: metrics.overshoot_pct,
                 rise_time_s: metrics.rise_time_s,
                 steady_state_error_deg: metrics.steady_state_error,
-                max_elevator_deg: activity.peak_abs,
-                max_elevator_change_deg,
-                elevator_saturation_s: saturation_s,
+                max_elevator_deg: elevator.max_elevator_deg,
+                max_elevator_change_deg: elevator.max_elevator_change_deg,
+                elevator_saturation_s: elevator.elevator_saturation_s,
                 elevator_total_variation_deg: total_variation(&elevator_deg)?,
                 outcome: summary.outcome.name(),
                 actuator: summary.actuator,
@@ -174,29 +200,44 @@ pub fn fly_pitch_step(
         }
         // A record that cannot be measured (diverged before the step, non-finite values)
         // is reported as not settled, with the reason.
-        Err(error) => PitchStepResponse {
-            controller: label,
-            settling_time_s: None,
+        Err(error) => unmeasured_response(
+            label,
+            diverged.unwrap_or_else(|| error.to_string()),
             reference_duration_s,
-            settling_after_reference_s: None,
-            settled: false,
-            not_settled_reason: Some(diverged.unwrap_or_else(|| error.to_string())),
-            overshoot_pct: f64::NAN,
-            rise_time_s: None,
-            steady_state_error_deg: None,
-            max_elevator_deg: activity.peak_abs,
-            max_elevator_change_deg,
-            elevator_saturation_s: saturation_s,
-            elevator_total_variation_deg: activity.total_variation,
-            outcome: summary.outcome.name(),
-            actuator: summary.actuator,
-        },
-    };
-    Ok(PitchStepRun {
-        samples,
-        summary,
-        response,
+            &elevator,
+            activity.total_variation,
+            summary,
+        ),
     })
+}
+
+/// The response of a record that cannot be measured, not settled for `reason`; the
+/// elevator's total variation (deg) as its activity measured it.
+fn unmeasured_response(
+    label: String,
+    reason: String,
+    reference_duration_s: f64,
+    elevator: &ElevatorUse,
+    elevator_total_variation_deg: f64,
+    summary: &RunSummary,
+) -> PitchStepResponse {
+    PitchStepResponse {
+        controller: label,
+        settling_time_s: None,
+        reference_duration_s,
+        settling_after_reference_s: None,
+        settled: false,
+        not_settled_reason: Some(reason),
+        overshoot_pct: f64::NAN,
+        rise_time_s: None,
+        steady_state_error_deg: None,
+        max_elevator_deg: elevator.max_elevator_deg,
+        max_elevator_change_deg: elevator.max_elevator_change_deg,
+        elevator_saturation_s: elevator.elevator_saturation_s,
+        elevator_total_variation_deg,
+        outcome: summary.outcome.name(),
+        actuator: summary.actuator,
+    }
 }
 
 /// How long after [`PITCH_STEP_TIME_S`] the recorded command θ_ref first reaches

@@ -1,7 +1,7 @@
 //! Angle-of-attack protection on the approach's pitch command (docs/landing-design.md,
 //! "Angle-of-attack protection"): the floor the outer loops put under θ_ref.
 
-use super::outer_loops::OuterLoopInputs;
+use super::outer_loop_signals::OuterLoopInputs;
 
 /// Angle-of-attack protection on the approach's pitch command (envelope protection, as
 /// fly-by-wire control laws have): θ_ref ≥ θ − α_p + α_min, with α_p = α + τ·q the

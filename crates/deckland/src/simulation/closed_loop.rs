@@ -8,23 +8,25 @@
 //! explicitly ([`HeldInputs`]), which is a pure function of time, state and held inputs.
 
 use super::blocks::arrival_timing::ArrivalTimingBlock;
-use super::blocks::plant::BuiltPlant;
+use super::blocks::plant::{BuiltPlant, PlantOutputs};
 use super::blocks::{direct_lift, plant, wake_feedforward, BlockPosition, PlacedBlock};
 use super::deck_predictor::BuiltDeckPredictor;
 use super::flight_computer::FlightComputer;
 pub use super::held::{HeldInputs, StepStreams};
+use super::lateral::pose::DeckView3d;
 use super::lateral::LateralLoop;
 pub use super::layout::LoopLayout;
-use super::outer_loops::{OuterLoopInputs, OuterLoops};
+use super::outer_loop_signals::{OuterLoopInputs, OuterLoopOutputs};
+use super::outer_loops::OuterLoops;
 use super::signals::Signals;
 use super::taps::{LoopBreak, NoTaps, Taps};
 use crate::aircraft::six_dof::SixDofAircraft;
-use crate::aircraft::{Aircraft, AircraftState, HookGeometry, Plant, TrimPoint};
+use crate::aircraft::{Aircraft, AircraftState, ElevatorActuator, HookGeometry, Plant, TrimPoint};
 use crate::control::pitch::{AxisLaw, BuiltPitchLaw, ElevatorSaturation, PitchLawInputs};
 use crate::control::{DirectLiftParameters, SpeedController, WaveOffParameters};
 use crate::environment::{
-    DeckGeometry, LateralShipMotionState, ShipMotion, ShipMotionState, ShipPose, ShipPoseRate,
-    WindModel,
+    DeckGeometry, EarthVelocity, LateralShipMotionState, ShipMotion, ShipMotionState, ShipPose,
+    ShipPoseRate, WindModel,
 };
 use crate::integration::VectorSystem;
 use crate::sensors::PitchSensor;
@@ -203,7 +205,8 @@ impl ClosedLoop {
 
     /// The evaluation for the plant `aircraft`, with (`USER_BLOCKS`) or without users'
     /// blocks, with (`LATERAL`, if the loop has them) or without the 3-D approach's
-    /// lateral blocks.
+    /// lateral blocks. Each block's outputs come from a helper that is always inlined
+    /// here, so that the RK4 stages still drop what only the bus carries.
     #[inline(always)]
     fn evaluate_blocks<T: Taps, P: Plant, const USER_BLOCKS: bool, const LATERAL: bool>(
         &self,
@@ -214,7 +217,6 @@ impl ClosedLoop {
         taps: &T,
         rate: &mut [f64],
     ) -> Signals {
-        let layout = &self.layout;
         let mut bus = Signals {
             time_s: t,
             ..Signals::default()
@@ -224,31 +226,11 @@ impl ClosedLoop {
         // its equivalent longitudinal pose).
         let ship_state = self.ship_state(x);
         let lateral_loop = if LATERAL { self.lateral.as_ref() } else { None };
-        let view = match lateral_loop {
-            Some(lateral) => Some(lateral.ship_outputs(
-                &self.ship,
-                &self.deck,
-                &ship_state,
-                layout,
-                x,
-                held.lateral.as_ref(),
-                &mut bus,
-            )),
-            None => {
-                bus.ship = self.ship.pose(&ship_state, self.ship_initial_x_m, t);
-                bus.ship_rate = self.ship.pose_rate(&ship_state);
-                bus.aim_point = self.deck.aim_point(&bus.ship);
-                None
-            }
-        };
+        let view = self.ship_outputs(lateral_loop, &ship_state, t, x, held, &mut bus);
 
         // aircraft: position, attitude, the hook.
-        let kinematics = plant::kinematics(
-            aircraft,
-            &self.hook,
-            P::state_at(x, layout.aircraft.offset),
-            &mut bus,
-        );
+        let aircraft_state = P::state_at(x, self.layout.aircraft.offset);
+        let kinematics = plant::kinematics(aircraft, &self.hook, aircraft_state, &mut bus);
         let velocities = (kinematics.hook_velocity, kinematics.velocity);
 
         // wind: the air mass at the aircraft, sampled at the step's start.
@@ -261,23 +243,96 @@ impl ClosedLoop {
         let plant = plant::air_data(aircraft, kinematics, &mut bus);
 
         // pitch_sensor: the attitude the pitch law reads (docs/model.md §3.3).
-        let measurement_age_s = match held.theta_read {
-            Some((read, read_time)) => {
-                bus.theta_measured_rad = read;
-                t - read_time
-            }
-            None => {
-                bus.theta_measured_rad = bus.theta_rad + held.pitch_noise_rad;
-                0.0
-            }
-        };
+        let measurement_age_s = pitch_sensor_outputs(t, held, &mut bus);
         if USER_BLOCKS {
             self.user_outputs(BlockPosition::Sensors, t, x, &mut bus);
         }
 
         // wake_feedforward and outer_loops: flight path → guidance → sink rate → θ_ref
         // (docs/model.md §5).
-        let outer_inputs = OuterLoopInputs {
+        let outer_inputs = self.outer_loop_inputs(t, x, &bus, plant.x_rate_mps);
+        let outer = self
+            .outer
+            .outputs(&outer_inputs, held.deck.as_ref(), held.wave_off, taps);
+        self.write_outer_outputs(&outer, held, &mut bus);
+
+        // pitch_law: θ_ref → elevator command (docs/model.md §4).
+        let pitch_inputs =
+            self.pitch_law_outputs(aircraft, &outer, measurement_age_s, x, held, taps, &mut bus);
+
+        // speed: airspeed → thrust command (docs/model.md §5).
+        let speed_error = self.speed_outputs(aircraft, &outer, x, held, taps, &mut bus);
+
+        // lineup and lateral_laws in the 3-D approach (docs/model.md §10.2); otherwise
+        // lateral_hold: the aileron and rudder commands of a lateral plant at trim.
+        let lateral = (lateral_loop, &view, velocities);
+        self.lateral_outputs(aircraft, lateral, x, held, taps, &mut bus);
+
+        // direct_lift: the hook's height error to the path → lift (docs/model.md §5.9).
+        let dynamic_pressure = plant.dynamic_pressure_pa;
+        self.direct_lift_outputs(aircraft, dynamic_pressure, &outer, held, x, taps, &mut bus);
+        if USER_BLOCKS {
+            self.user_outputs(BlockPosition::Commands, t, x, &mut bus);
+        }
+
+        // The rates, block by block.
+        self.plant_rates(aircraft, &ship_state, &plant, held, &bus, rate);
+        self.outer_loop_rates(&outer_inputs, &outer, held, rate);
+        self.law_rates(x, &pitch_inputs, speed_error, &bus, rate);
+        self.deck_predictor_rate(view.is_some(), x, &bus, rate);
+        if let (Some(lateral), Some(lateral_held)) = (lateral_loop, &held.lateral) {
+            lateral.derivative(&self.layout, x, lateral_held, taps, &bus, rate);
+        }
+        if USER_BLOCKS {
+            self.user_rates(t, x, &bus, rate);
+        }
+        bus
+    }
+
+    /// The ship block's outputs onto `bus` at `t` (s) for its state `ship_state`: the
+    /// deck's pose and rate and the landing point; in the 3-D approach (`lateral`), the
+    /// equivalent longitudinal pose of its view, which is returned.
+    #[inline(always)]
+    fn ship_outputs(
+        &self,
+        lateral: Option<&LateralLoop>,
+        ship_state: &ShipMotionState,
+        t: f64,
+        x: &[f64],
+        held: &HeldInputs,
+        bus: &mut Signals,
+    ) -> Option<DeckView3d> {
+        match lateral {
+            Some(lateral) => Some(lateral.ship_outputs(
+                &self.ship,
+                &self.deck,
+                ship_state,
+                &self.layout,
+                x,
+                held.lateral.as_ref(),
+                bus,
+            )),
+            None => {
+                bus.ship = self.ship.pose(ship_state, self.ship_initial_x_m, t);
+                bus.ship_rate = self.ship.pose_rate(ship_state);
+                bus.aim_point = self.deck.aim_point(&bus.ship);
+                None
+            }
+        }
+    }
+
+    /// What the outer loops read at `t` (s): the trim, the aircraft's and the hook's
+    /// motion on `bus`, their integrators' states in `x`, and the steady air wake's
+    /// pitch feed-forward for the CG's earth x rate `x_rate_mps` (m/s) where it is on.
+    #[inline(always)]
+    fn outer_loop_inputs(
+        &self,
+        t: f64,
+        x: &[f64],
+        bus: &Signals,
+        x_rate_mps: f64,
+    ) -> OuterLoopInputs {
+        OuterLoopInputs {
             time_s: t,
             theta_trim_rad: self.trim.theta_rad,
             climb_rate_mps: bus.climb_rate_mps,
@@ -289,20 +344,23 @@ impl ClosedLoop {
             hook_h_m: bus.hook_h_m,
             hook_x_rate_mps: bus.hook_x_rate_mps,
             hook_climb_rate_mps: bus.hook_climb_rate_mps,
-            sink_rate_integral_m: layout.sink_rate.scalar(x),
-            guidance_integral_m_s: layout.guidance.scalar(x),
+            sink_rate_integral_m: self.layout.sink_rate.scalar(x),
+            guidance_integral_m_s: self.layout.guidance.scalar(x),
             wake_pitch_feedforward_rad: self.wake_feedforward_lead_s.map_or(0.0, |lead_s| {
                 wake_feedforward::pitch_feedforward_rad(
                     lead_s,
                     self.wind.parameters(),
-                    &bus,
-                    plant.x_rate_mps,
+                    bus,
+                    x_rate_mps,
                 )
             }),
-        };
-        let outer = self
-            .outer
-            .outputs(&outer_inputs, held.deck.as_ref(), held.wave_off, taps);
+        }
+    }
+
+    /// The outer loops' outputs onto `bus`: the path, its error, time to go and
+    /// compensation weight, θ_ref, the climb-rate command and the path's anchor.
+    #[inline(always)]
+    fn write_outer_outputs(&self, outer: &OuterLoopOutputs, held: &HeldInputs, bus: &mut Signals) {
         let path = outer.path;
         bus.path_height_m = path.map(|p| p.height_m);
         bus.glide_path_error_m = outer.height_error_m;
@@ -313,10 +371,137 @@ impl ClosedLoop {
         bus.climb_rate_command_mps = (!matches!(self.outer, OuterLoops::PitchStep { .. }))
             .then_some(outer.climb_rate_command_mps);
         bus.path_anchor_height_m = held.deck.map(|deck| deck.aim.h_m);
+    }
 
-        // pitch_law: θ_ref → elevator command (docs/model.md §4).
+    /// The pitch law's outputs onto `bus`: its elevator command (the held one, if any,
+    /// through the taps) and its disturbance estimate; returns what it read.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn pitch_law_outputs<P: Plant, T: Taps>(
+        &self,
+        aircraft: &P,
+        outer: &OuterLoopOutputs,
+        measurement_age_s: f64,
+        x: &[f64],
+        held: &HeldInputs,
+        taps: &T,
+        bus: &mut Signals,
+    ) -> PitchLawInputs {
         let actuator = aircraft.longitudinal().actuator();
-        let pitch_inputs = PitchLawInputs {
+        let pitch_inputs = self.pitch_law_inputs(outer, measurement_age_s, actuator, bus);
+        let pitch_state = self.layout.pitch_law.of(x);
+        bus.elevator_command_rad = taps.tap(
+            LoopBreak::ElevatorCommand,
+            match held.commands {
+                Some(commands) => commands.elevator_rad,
+                None => self.pitch.surface_command_rad(pitch_state, &pitch_inputs),
+            },
+        );
+        bus.disturbance_estimate_radps2 = self.pitch.disturbance_estimate_radps2(pitch_state);
+        pitch_inputs
+    }
+
+    /// The speed loop's output onto `bus`: its thrust command through the taps; returns
+    /// the airspeed error it flies on (m/s).
+    #[inline(always)]
+    fn speed_outputs<P: Plant, T: Taps>(
+        &self,
+        aircraft: &P,
+        outer: &OuterLoopOutputs,
+        x: &[f64],
+        held: &HeldInputs,
+        taps: &T,
+        bus: &mut Signals,
+    ) -> f64 {
+        let speed_state = self.layout.speed.of(x);
+        let speed_error = self.airspeed_reference_mps
+            - self
+                .speed
+                .feedback_airspeed_mps(speed_state, bus.airspeed_mps);
+        let thrust_command_n =
+            self.thrust_command_n(aircraft, outer, held, speed_state, speed_error);
+        bus.thrust_command_n = taps.tap(LoopBreak::ThrustCommand, thrust_command_n);
+        speed_error
+    }
+
+    /// The lateral blocks' outputs onto `bus`: in the 3-D approach (its loop, its view
+    /// of the deck and the hook's and CG's velocities), the lineup and the lateral laws;
+    /// otherwise the lateral hold of a lateral plant at trim.
+    #[inline(always)]
+    fn lateral_outputs<P: Plant, T: Taps>(
+        &self,
+        aircraft: &P,
+        (lateral_loop, view, velocities): (
+            Option<&LateralLoop>,
+            &Option<DeckView3d>,
+            (EarthVelocity, EarthVelocity),
+        ),
+        x: &[f64],
+        held: &HeldInputs,
+        taps: &T,
+        bus: &mut Signals,
+    ) {
+        match (lateral_loop, view, &held.lateral) {
+            (Some(lateral), Some(view), Some(lateral_held)) => lateral.lineup_and_laws(
+                view,
+                &self.deck,
+                velocities,
+                &self.layout,
+                x,
+                lateral_held,
+                held.commands,
+                taps,
+                bus,
+            ),
+            _ => plant::lateral_hold(aircraft, bus),
+        }
+    }
+
+    /// The rates of the outer loops' sink-rate and guidance integrators into `rate`.
+    #[inline(always)]
+    fn outer_loop_rates(
+        &self,
+        inputs: &OuterLoopInputs,
+        outer: &OuterLoopOutputs,
+        held: &HeldInputs,
+        rate: &mut [f64],
+    ) {
+        let (sink_integral_rate, guidance_integral_rate) =
+            self.outer.integral_rates(inputs, outer, held.wave_off);
+        rate[self.layout.sink_rate.offset] = sink_integral_rate;
+        rate[self.layout.guidance.offset] = guidance_integral_rate;
+    }
+
+    /// The ship's and the aircraft's rates into `rate`: the ship's with the step's noise,
+    /// the aircraft's from its outputs `plant` and the commands on `bus`.
+    #[inline(always)]
+    fn plant_rates<P: Plant>(
+        &self,
+        aircraft: &P,
+        ship_state: &ShipMotionState,
+        plant: &PlantOutputs<P>,
+        held: &HeldInputs,
+        bus: &Signals,
+        rate: &mut [f64],
+    ) {
+        let ship_rate = self.ship.derivative(ship_state, held.ship_noise);
+        self.layout.ship.write_array(rate, &ship_rate.to_array());
+        let aircraft_rate = plant::derivative(aircraft, plant, bus);
+        P::write_state_at(&aircraft_rate, rate, self.layout.aircraft.offset);
+    }
+
+    /// What the pitch law reads: θ_ref and its feed-forward from the `outer` loops, the
+    /// measured attitude `measurement_age_s` (s) old, the pitch rate, the elevator and
+    /// whether it sits on a position limit of `actuator`, and the trim.
+    #[inline(always)]
+    fn pitch_law_inputs(
+        &self,
+        outer: &OuterLoopOutputs,
+        measurement_age_s: f64,
+        actuator: &ElevatorActuator,
+        bus: &Signals,
+    ) -> PitchLawInputs {
+        PitchLawInputs {
             theta_ref_rad: bus.theta_ref_rad,
             theta_ref_rate_radps: outer.theta_ref_rate_radps,
             theta_ref_acceleration_radps2: outer.theta_ref_acceleration_radps2,
@@ -332,92 +517,87 @@ impl ClosedLoop {
                 actuator.max_rad(),
                 SATURATION_TOLERANCE_RAD,
             ),
+        }
+    }
+
+    /// The thrust command before the taps (N): the held command, full thrust of both
+    /// engines in a wave-off (docs/model.md §9), the late abort's thrust blended in by
+    /// its share, or the speed law's for the airspeed error `speed_error` (m/s).
+    #[inline(always)]
+    fn thrust_command_n<P: Plant>(
+        &self,
+        aircraft: &P,
+        outer: &OuterLoopOutputs,
+        held: &HeldInputs,
+        speed_state: &[f64],
+        speed_error: f64,
+    ) -> f64 {
+        match held.commands {
+            Some(commands) => commands.thrust_n,
+            None if held.wave_off => aircraft.longitudinal().engines().max_total_thrust_n(),
+            None if outer.late_abort_thrust_share > 0.0 => {
+                let law = self.speed.thrust_command_n(speed_error, speed_state[0]);
+                let full = aircraft.longitudinal().engines().max_total_thrust_n();
+                law + outer.late_abort_thrust_share * (full - law)
+            }
+            None => self.speed.thrust_command_n(speed_error, speed_state[0]),
+        }
+    }
+
+    /// The direct lift block's outputs onto `bus`, where the approach flies it: its lift
+    /// increment in `x` and its command (through the taps) from the hook's height error
+    /// to the path, at the `aircraft`'s dynamic pressure (Pa).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn direct_lift_outputs<P: Plant, T: Taps>(
+        &self,
+        aircraft: &P,
+        dynamic_pressure_pa: f64,
+        outer: &OuterLoopOutputs,
+        held: &HeldInputs,
+        x: &[f64],
+        taps: &T,
+        bus: &mut Signals,
+    ) {
+        let Some(law) = &self.direct_lift else {
+            return;
         };
-        let pitch_state = layout.pitch_law.of(x);
-        bus.elevator_command_rad = taps.tap(
-            LoopBreak::ElevatorCommand,
+        bus.direct_lift_coefficient = Some(self.layout.direct_lift.scalar(x));
+        bus.direct_lift_command = Some(taps.tap(
+            LoopBreak::DirectLiftCommand,
             match held.commands {
-                Some(commands) => commands.elevator_rad,
-                None => self.pitch.surface_command_rad(pitch_state, &pitch_inputs),
+                Some(commands) => commands.direct_lift,
+                None => direct_lift::command(
+                    law,
+                    outer,
+                    held,
+                    dynamic_pressure_pa,
+                    aircraft.longitudinal().parameters(),
+                    bus,
+                ),
             },
+        ));
+    }
+
+    /// The rates of the pitch law (on its `pitch_inputs`), the speed loop (on the
+    /// airspeed error `speed_error`, m/s) and the direct lift, into `rate`.
+    #[inline(always)]
+    fn law_rates(
+        &self,
+        x: &[f64],
+        pitch_inputs: &PitchLawInputs,
+        speed_error: f64,
+        bus: &Signals,
+        rate: &mut [f64],
+    ) {
+        let layout = &self.layout;
+        self.pitch.derivative(
+            layout.pitch_law.of(x),
+            pitch_inputs,
+            layout.pitch_law.of_mut(rate),
         );
-        bus.disturbance_estimate_radps2 = self.pitch.disturbance_estimate_radps2(pitch_state);
-
-        // speed: airspeed → thrust command (docs/model.md §5).
-        let speed_state = layout.speed.of(x);
-        let speed_error = self.airspeed_reference_mps
-            - self
-                .speed
-                .feedback_airspeed_mps(speed_state, bus.airspeed_mps);
-        bus.thrust_command_n = taps.tap(
-            LoopBreak::ThrustCommand,
-            match held.commands {
-                Some(commands) => commands.thrust_n,
-                // A wave-off: full thrust of both engines (docs/model.md §9).
-                None if held.wave_off => aircraft.longitudinal().engines().max_total_thrust_n(),
-                // The late abort's thrust, blended in by its share.
-                None if outer.late_abort_thrust_share > 0.0 => {
-                    let law = self.speed.thrust_command_n(speed_error, speed_state[0]);
-                    let full = aircraft.longitudinal().engines().max_total_thrust_n();
-                    law + outer.late_abort_thrust_share * (full - law)
-                }
-                None => self.speed.thrust_command_n(speed_error, speed_state[0]),
-            },
-        );
-
-        // lineup and lateral_laws in the 3-D approach (docs/model.md §10.2); otherwise
-        // lateral_hold: the aileron and rudder commands of a lateral plant at trim.
-        match (lateral_loop, &view, &held.lateral) {
-            (Some(lateral), Some(view), Some(lateral_held)) => lateral.lineup_and_laws(
-                view,
-                &self.deck,
-                velocities,
-                layout,
-                x,
-                lateral_held,
-                held.commands,
-                taps,
-                &mut bus,
-            ),
-            _ => plant::lateral_hold(aircraft, &mut bus),
-        }
-
-        // direct_lift: the hook's height error to the path → lift (docs/model.md §5.9).
-        if let Some(law) = &self.direct_lift {
-            bus.direct_lift_coefficient = Some(layout.direct_lift.scalar(x));
-            bus.direct_lift_command = Some(taps.tap(
-                LoopBreak::DirectLiftCommand,
-                match held.commands {
-                    Some(commands) => commands.direct_lift,
-                    None => direct_lift::command(
-                        law,
-                        &outer,
-                        held,
-                        plant.dynamic_pressure_pa,
-                        aircraft.longitudinal().parameters(),
-                        &bus,
-                    ),
-                },
-            ));
-        }
-        if USER_BLOCKS {
-            self.user_outputs(BlockPosition::Commands, t, x, &mut bus);
-        }
-
-        // The rates, block by block.
-        let ship_rate = self.ship.derivative(&ship_state, held.ship_noise);
-        layout.ship.write_array(rate, &ship_rate.to_array());
-        let aircraft_rate = plant::derivative(aircraft, &plant, &bus);
-        P::write_state_at(&aircraft_rate, rate, layout.aircraft.offset);
-        let (sink_integral_rate, guidance_integral_rate) =
-            self.outer
-                .integral_rates(&outer_inputs, &outer, held.wave_off);
-        rate[layout.sink_rate.offset] = sink_integral_rate;
-        rate[layout.guidance.offset] = guidance_integral_rate;
-        self.pitch
-            .derivative(pitch_state, &pitch_inputs, layout.pitch_law.of_mut(rate));
         self.speed.derivative(
-            speed_state,
+            layout.speed.of(x),
             speed_error,
             bus.airspeed_mps,
             layout.speed.of_mut(rate),
@@ -429,34 +609,63 @@ impl ClosedLoop {
         ) {
             rate[layout.direct_lift.offset] = law.increment_rate(increment, command);
         }
-        // The landing point's height again, worked out only for a predictor that reads
-        // it (a sine of the ship's pitch that the RK4 stages otherwise skip); in the 3-D
-        // approach it is the view's, already on the bus.
-        let aim_height_m = || match view {
-            Some(_) => bus.aim_point.h_m,
-            None => aim_point_height_m(&self.deck, bus.ship),
+    }
+
+    /// The deck predictor's rate into `rate`. The landing point's height again, worked
+    /// out only for a predictor that reads it (a sine of the ship's pitch that the RK4
+    /// stages otherwise skip); in the 3-D approach (`three_dimensional`) it is the
+    /// view's, already on the bus.
+    #[inline(always)]
+    fn deck_predictor_rate(
+        &self,
+        three_dimensional: bool,
+        x: &[f64],
+        bus: &Signals,
+        rate: &mut [f64],
+    ) {
+        let aim_height_m = || {
+            if three_dimensional {
+                bus.aim_point.h_m
+            } else {
+                aim_point_height_m(&self.deck, bus.ship)
+            }
         };
         self.deck_predictor.derivative(
-            layout.deck_predictor.of(x),
+            self.layout.deck_predictor.of(x),
             aim_height_m,
-            layout.deck_predictor.of_mut(rate),
+            self.layout.deck_predictor.of_mut(rate),
         );
-        if let (Some(lateral), Some(lateral_held)) = (lateral_loop, &held.lateral) {
-            lateral.derivative(layout, x, lateral_held, taps, &bus, rate);
+    }
+
+    /// The users' blocks' rates into their slots of `rate`.
+    #[inline(always)]
+    fn user_rates(&self, t: f64, x: &[f64], bus: &Signals, rate: &mut [f64]) {
+        for placed in &self.user_blocks {
+            placed
+                .block
+                .derivative(t, placed.slot.of(x), bus, placed.slot.of_mut(rate));
         }
-        if USER_BLOCKS {
-            for placed in &self.user_blocks {
-                placed
-                    .block
-                    .derivative(t, placed.slot.of(x), &bus, placed.slot.of_mut(rate));
-            }
-        }
-        bus
     }
 
     /// Holds the plant's actuators at their stops after a step.
     pub fn constrain(&self, x: &mut [f64]) {
         self.plant.constrain(self.layout.aircraft.of_mut(x));
+    }
+}
+
+/// The pitch sensor's output onto `bus` at `t` (s): the attitude read at the frame's
+/// start when one is held, else θ with the step's noise; returns the reading's age (s).
+#[inline(always)]
+fn pitch_sensor_outputs(t: f64, held: &HeldInputs, bus: &mut Signals) -> f64 {
+    match held.theta_read {
+        Some((read, read_time)) => {
+            bus.theta_measured_rad = read;
+            t - read_time
+        }
+        None => {
+            bus.theta_measured_rad = bus.theta_rad + held.pitch_noise_rad;
+            0.0
+        }
     }
 }
 

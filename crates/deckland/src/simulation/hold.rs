@@ -2,11 +2,15 @@
 //! and sampled and held over the step, the flight computer's frames, and the
 //! turbulence's advance.
 
+use super::blocks::arrival_timing::ArrivalTimingBlock;
 use super::closed_loop::{ClosedLoop, HeldInputs, StepStreams};
 use super::flight_computer::HeldCommands;
 use super::lateral::HeldLateral;
+use super::outer_loops::OuterLoops;
 use super::signals::Signals;
 use super::taps::Taps;
+use crate::aircraft::AircraftState;
+use crate::control::{ArrivalTimingInputs, DeckReference};
 
 impl ClosedLoop {
     /// Draws and samples the inputs held over the step from `t`: the ship filters' white
@@ -175,5 +179,61 @@ impl ClosedLoop {
     /// turbulence, by its exact Gauss–Markov update at the aircraft's airspeed.
     pub fn advance_discrete(&mut self, dt: f64, airspeed_mps: f64) {
         self.wind.advance(dt, airspeed_mps);
+    }
+}
+
+/// The arrival-timing block in the loop (`blocks/arrival_timing.rs`).
+impl ClosedLoop {
+    /// One step of the arrival-timing block at `t` (step `dt`) for the aircraft in
+    /// `aircraft` and the guidance computer's `deck` reference: the change of the
+    /// airspeed reference moves, and the reference with it. Without the block, outside an
+    /// approach, or without a Kalman forecast, nothing changes.
+    pub(crate) fn arrival_timing_step(
+        &mut self,
+        t: f64,
+        dt: f64,
+        aircraft: &AircraftState,
+        deck: Option<&DeckReference>,
+        waving_off: bool,
+    ) {
+        let (Some(block), Some(deck), OuterLoops::Approach { flight_path, .. }, Some(filter)) = (
+            self.arrival_timing.as_mut(),
+            deck,
+            &self.outer,
+            self.deck_predictor.estimator(),
+        ) else {
+            return;
+        };
+        let (sin_t, cos_t) = aircraft.theta_rad.sin_cos();
+        let (hook_x_m, _) = self.hook.position_trig(aircraft, sin_t, cos_t);
+        let (hook_x_rate_mps, _) = self.hook.velocity_trig(aircraft, sin_t, cos_t);
+        let aim_x_m = deck.mean_aim.x_m + flight_path.parameters().touchdown_correction_m;
+        let time_to_go_s = flight_path.time_to_go_s(
+            hook_x_m,
+            hook_x_rate_mps,
+            aim_x_m,
+            deck.mean_aim_velocity.x_mps,
+        );
+        let inputs = ArrivalTimingInputs {
+            time_s: t,
+            dt,
+            time_to_go_s,
+            closure_mps: hook_x_rate_mps - deck.mean_aim_velocity.x_mps,
+            waving_off,
+        };
+        self.airspeed_reference_mps = block.airspeed_reference_mps(
+            &inputs,
+            &self.ship,
+            filter,
+            self.deck.landing_point_aft_of_pitch_centre_m,
+        );
+    }
+
+    /// The arrival-timing block's change of the airspeed reference now (m/s); `None`
+    /// without the block.
+    pub fn arrival_timing_speed_change_mps(&self) -> Option<f64> {
+        self.arrival_timing
+            .as_ref()
+            .map(ArrivalTimingBlock::speed_change_mps)
     }
 }

@@ -25,6 +25,7 @@ pub mod lateral;
 mod layout;
 mod lso;
 mod outcome;
+mod outer_loop_signals;
 mod outer_loops;
 mod pitch_setup;
 mod recorder;
@@ -33,6 +34,7 @@ mod setup;
 mod signals;
 mod taps;
 mod wave_off;
+mod wave_off_flight;
 
 pub use activity::ActuatorActivity;
 pub use alpha_floor::AlphaFloor;

@@ -4,8 +4,9 @@
 
 use super::alpha_floor::AlphaFloor;
 use super::outcome::decision_words;
+use super::outer_loop_signals::{OuterLoopInputs, OuterLoopOutputs};
 use super::taps::{LoopBreak, Taps};
-pub use super::wave_off::WaveOffFlight;
+pub use super::wave_off_flight::WaveOffFlight;
 use crate::control::pitch::command_shaping::JerkLimitedStep;
 use crate::control::{
     CommandRamp, DeckReference, FlightPathGenerator, LoopController, PathReference, WaveOffDecision,
@@ -58,6 +59,89 @@ pub enum OuterLoops {
     },
 }
 
+/// A pitch step's command from trim: the step `step_rad` (rad) from `step_time_s` (s),
+/// or the `shaped` trajectory from then, its rate and acceleration fed forward.
+#[inline(always)]
+fn pitch_step_outputs(
+    step_rad: f64,
+    step_time_s: f64,
+    shaped: Option<&JerkLimitedStep>,
+    inputs: &OuterLoopInputs,
+) -> OuterLoopOutputs {
+    let trim_theta = inputs.theta_trim_rad;
+    match shaped {
+        None => {
+            let step = if inputs.time_s >= step_time_s {
+                step_rad
+            } else {
+                0.0
+            };
+            OuterLoopOutputs::pitch_only(trim_theta + step, 0.0, 0.0)
+        }
+        Some(trajectory) => {
+            let reference = trajectory.reference(inputs.time_s - step_time_s);
+            OuterLoopOutputs::pitch_only(
+                trim_theta + reference.theta_rad,
+                reference.rate_radps,
+                reference.acceleration_radps2,
+            )
+        }
+    }
+}
+
+/// The approach's climb-rate command (m/s) at the hook's `height_error` (m) to `path`:
+/// the path's climb rate plus the guidance's output, or, while a wave-off is flown,
+/// `flight`'s climb blended in over it; through the taps.
+#[inline(always)]
+fn approach_climb_rate_command<T: Taps>(
+    path: &PathReference,
+    height_error: f64,
+    guidance: &LoopController,
+    flight: Option<WaveOffFlight>,
+    inputs: &OuterLoopInputs,
+    taps: &T,
+) -> f64 {
+    let height_error_rate = path.climb_rate_mps - inputs.hook_climb_rate_mps;
+    let approach = || {
+        path.climb_rate_mps
+            + guidance.output(
+                height_error,
+                inputs.guidance_integral_m_s,
+                height_error_rate,
+            )
+    };
+    taps.tap(
+        LoopBreak::ClimbRateCommand,
+        match flight {
+            Some(flight) => flight.climb_rate_command(inputs.time_s, approach),
+            None => approach(),
+        },
+    )
+}
+
+/// The approach's pitch command `theta` (rad) raised by the floor of a wave-off flown
+/// (`flight`) and by the angle-of-attack floor, and whether either raised it.
+#[inline(always)]
+fn floored_pitch(
+    theta: f64,
+    flight: Option<WaveOffFlight>,
+    alpha_floor: &Option<AlphaFloor>,
+    inputs: &OuterLoopInputs,
+    deck: &DeckReference,
+) -> (f64, bool) {
+    let (theta, wave_off_floored) = match flight {
+        Some(flight) => flight.floored_pitch(theta, inputs, deck),
+        None => (theta, false),
+    };
+    match alpha_floor {
+        Some(alpha_floor) => {
+            let (theta, floored) = alpha_floor.floored_pitch(theta, inputs);
+            (theta, wave_off_floored | floored)
+        }
+        None => (theta, wave_off_floored),
+    }
+}
+
 /// The late abort (a staged decision after the wave-off's commit point,
 /// docs/landing-design.md): its share of the direct-lift (and thrust) command, moved
 /// towards 1 while engaged and back to 0 when released at `rate_per_s`, once per step,
@@ -102,6 +186,16 @@ impl LateAbort {
         self.share += (target - self.share).clamp(-most, most);
     }
 
+    /// Its share of full thrust (–): the share when it blends the thrust in, else 0.
+    #[inline]
+    pub fn thrust_share(&self) -> f64 {
+        if self.full_thrust {
+            self.share
+        } else {
+            0.0
+        }
+    }
+
     /// The first decision in words, as a run's reason gives a wave-off's: "late abort at
     /// t = 23.10 s on ramp_strike_probability: probability of a ramp strike (%) 7.52
     /// against the limit 5.00"; `None` if it never engaged.
@@ -109,58 +203,6 @@ impl LateAbort {
         self.first
             .map(|(time_s, decision)| decision_words("late abort", time_s, &decision))
     }
-}
-
-/// The hook's kinematics and the aircraft's climb rate, as the outer loops read them.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct OuterLoopInputs {
-    pub time_s: f64,
-    pub theta_trim_rad: f64,
-    pub climb_rate_mps: f64,
-    /// The air-relative flight-path angle θ − α (rad).
-    pub air_path_angle_rad: f64,
-    /// The pitch attitude θ (rad).
-    pub theta_rad: f64,
-    /// The angle of attack α (rad).
-    pub alpha_rad: f64,
-    /// The pitch rate q (rad/s).
-    pub pitch_rate_radps: f64,
-    pub hook_x_m: f64,
-    pub hook_h_m: f64,
-    pub hook_x_rate_mps: f64,
-    pub hook_climb_rate_mps: f64,
-    /// ∫ climb-rate error dt (m).
-    pub sink_rate_integral_m: f64,
-    /// ∫ hook height error dt (m·s).
-    pub guidance_integral_m_s: f64,
-    /// Pitch fed forward against the steady air wake's vertical wind (rad).
-    pub wake_pitch_feedforward_rad: f64,
-}
-
-/// The outer loops' outputs at one instant.
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct OuterLoopOutputs {
-    /// The pitch command, after the taps (rad).
-    pub theta_ref_rad: f64,
-    /// Its rate (rad/s) when it is a shaped trajectory, else 0.
-    pub theta_ref_rate_radps: f64,
-    /// Its acceleration (rad/s²) when it is a shaped trajectory, else 0.
-    pub theta_ref_acceleration_radps2: f64,
-    /// The climb-rate command (m/s); NaN when no loop commands one.
-    pub climb_rate_command_mps: f64,
-    /// The glide path, in an approach.
-    pub path: Option<PathReference>,
-    /// Height error of the hook to the path h_ref − h (m), 0 outside an approach.
-    pub height_error_m: f64,
-    /// Climb-rate error (m/s), 0 without a sink-rate loop.
-    pub climb_rate_error_mps: f64,
-    /// Whether a wave-off's floor raised the pitch command (the sink-rate integrator
-    /// then holds).
-    pub pitch_floored: bool,
-    /// The late abort's share of full up direct lift (–), 0 outside it.
-    pub late_abort_lift_share: f64,
-    /// The late abort's share of full thrust (–), 0 outside it or without its thrust.
-    pub late_abort_thrust_share: f64,
 }
 
 impl OuterLoops {
@@ -175,114 +217,71 @@ impl OuterLoops {
         taps: &T,
     ) -> OuterLoopOutputs {
         let trim_theta = inputs.theta_trim_rad;
-        let (mut reference_rate, mut reference_acceleration) = (0.0, 0.0);
-        let mut pitch_floored = false;
-        let mut late_abort_share = (0.0, false);
-        let (theta_ref_rad, climb_rate_command_mps, path, height_error_m, climb_rate_error_mps) =
-            match self {
-                Self::PitchStep {
-                    step_rad,
-                    step_time_s,
-                    shaped: None,
-                } => {
-                    let step = if inputs.time_s >= *step_time_s {
-                        *step_rad
-                    } else {
-                        0.0
-                    };
-                    (trim_theta + step, f64::NAN, None, 0.0, 0.0)
+        let outputs = match self {
+            Self::PitchStep {
+                step_rad,
+                step_time_s,
+                shaped,
+            } => pitch_step_outputs(*step_rad, *step_time_s, shaped.as_ref(), inputs),
+            Self::ClimbRate {
+                climb_rate_mps,
+                ramp,
+                theta_feedforward_rad,
+                sink_rate,
+            } => {
+                let fraction = ramp.fraction(inputs.time_s);
+                let command = fraction * climb_rate_mps;
+                let base = trim_theta + fraction * (theta_feedforward_rad - trim_theta);
+                let error = command - inputs.climb_rate_mps;
+                let theta = base + sink_rate.output(error, inputs.sink_rate_integral_m, 0.0);
+                OuterLoopOutputs {
+                    climb_rate_command_mps: command,
+                    climb_rate_error_mps: error,
+                    ..OuterLoopOutputs::pitch_only(theta, 0.0, 0.0)
                 }
-                Self::PitchStep {
-                    step_time_s,
-                    shaped: Some(trajectory),
-                    ..
-                } => {
-                    let reference = trajectory.reference(inputs.time_s - step_time_s);
-                    reference_rate = reference.rate_radps;
-                    reference_acceleration = reference.acceleration_radps2;
-                    (trim_theta + reference.theta_rad, f64::NAN, None, 0.0, 0.0)
-                }
-                Self::ClimbRate {
-                    climb_rate_mps,
-                    ramp,
-                    theta_feedforward_rad,
-                    sink_rate,
-                } => {
-                    let fraction = ramp.fraction(inputs.time_s);
-                    let command = fraction * climb_rate_mps;
-                    let base = trim_theta + fraction * (theta_feedforward_rad - trim_theta);
-                    let error = command - inputs.climb_rate_mps;
-                    let theta = base + sink_rate.output(error, inputs.sink_rate_integral_m, 0.0);
-                    (theta, command, None, 0.0, error)
-                }
-                Self::Approach {
-                    flight_path,
+            }
+            Self::Approach {
+                flight_path,
+                guidance,
+                sink_rate,
+                wave_off: flight,
+                late_abort,
+                alpha_floor,
+            } => {
+                let deck = deck.expect("an approach always holds a deck reference");
+                let path = flight_path.reference(inputs.hook_x_m, inputs.hook_x_rate_mps, deck);
+                let height_error = path.height_m - inputs.hook_h_m;
+                // A wave-off takes over from the guidance's climb-rate command (its blend).
+                let flight = flight.filter(|_| wave_off);
+                let command = approach_climb_rate_command(
+                    &path,
+                    height_error,
                     guidance,
-                    sink_rate,
-                    wave_off: flight,
-                    late_abort,
-                    alpha_floor,
-                } => {
-                    late_abort_share = (late_abort.share, late_abort.full_thrust);
-                    let deck = deck.expect("an approach always holds a deck reference");
-                    let path = flight_path.reference(inputs.hook_x_m, inputs.hook_x_rate_mps, deck);
-                    let height_error = path.height_m - inputs.hook_h_m;
-                    let height_error_rate = path.climb_rate_mps - inputs.hook_climb_rate_mps;
-                    // A wave-off takes over from the guidance's climb-rate command (its blend).
-                    let flight = flight.filter(|_| wave_off);
-                    let approach = || {
-                        path.climb_rate_mps
-                            + guidance.output(
-                                height_error,
-                                inputs.guidance_integral_m_s,
-                                height_error_rate,
-                            )
-                    };
-                    let command = taps.tap(
-                        LoopBreak::ClimbRateCommand,
-                        match flight {
-                            Some(flight) => flight.climb_rate_command(inputs.time_s, approach),
-                            None => approach(),
-                        },
-                    );
-                    let error = command - inputs.climb_rate_mps;
-                    let theta = trim_theta
-                        + sink_rate.output(error, inputs.sink_rate_integral_m, 0.0)
-                        + inputs.wake_pitch_feedforward_rad;
-                    let theta = match flight {
-                        Some(flight) => {
-                            let (theta, floored) = flight.floored_pitch(theta, inputs, deck);
-                            pitch_floored = floored;
-                            theta
-                        }
-                        None => theta,
-                    };
-                    let theta = match alpha_floor {
-                        Some(alpha_floor) => {
-                            let (theta, floored) = alpha_floor.floored_pitch(theta, inputs);
-                            pitch_floored |= floored;
-                            theta
-                        }
-                        None => theta,
-                    };
-                    (theta, command, Some(path), height_error, error)
+                    flight,
+                    inputs,
+                    taps,
+                );
+                let error = command - inputs.climb_rate_mps;
+                let theta = trim_theta
+                    + sink_rate.output(error, inputs.sink_rate_integral_m, 0.0)
+                    + inputs.wake_pitch_feedforward_rad;
+                let (theta, pitch_floored) =
+                    floored_pitch(theta, flight, alpha_floor, inputs, deck);
+                OuterLoopOutputs {
+                    climb_rate_command_mps: command,
+                    path: Some(path),
+                    height_error_m: height_error,
+                    climb_rate_error_mps: error,
+                    pitch_floored,
+                    late_abort_lift_share: late_abort.share,
+                    late_abort_thrust_share: late_abort.thrust_share(),
+                    ..OuterLoopOutputs::pitch_only(theta, 0.0, 0.0)
                 }
-            };
+            }
+        };
         OuterLoopOutputs {
-            theta_ref_rad: taps.tap(LoopBreak::PitchCommand, theta_ref_rad),
-            theta_ref_rate_radps: reference_rate,
-            theta_ref_acceleration_radps2: reference_acceleration,
-            climb_rate_command_mps,
-            path,
-            height_error_m,
-            climb_rate_error_mps,
-            pitch_floored,
-            late_abort_lift_share: late_abort_share.0,
-            late_abort_thrust_share: if late_abort_share.1 {
-                late_abort_share.0
-            } else {
-                0.0
-            },
+            theta_ref_rad: taps.tap(LoopBreak::PitchCommand, outputs.theta_ref_rad),
+            ..outputs
         }
     }
 

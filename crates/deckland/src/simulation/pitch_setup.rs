@@ -3,7 +3,6 @@
 //! fly it.
 
 use super::outer_loops::OuterLoops;
-use super::setup::SetupError;
 use crate::aircraft::LinearModel;
 use crate::control::design::{
     check_tuning, command_bounds, ActuatorKeys, AngleOfAttackCoupling, AxisHardware, DesignRequest,
@@ -22,7 +21,7 @@ pub(super) fn shape_pitch_step(
     scenario: &Scenario,
     context: &PitchDesignContext,
     elevator_trim_rad: f64,
-) -> Result<OuterLoops, SetupError> {
+) -> Result<OuterLoops, ParameterError> {
     let OuterLoops::PitchStep {
         step_rad,
         step_time_s,
@@ -62,8 +61,7 @@ pub(super) fn shape_pitch_step(
                  (got {jerk:.3} rad/s³ and {acceleration:.3} rad/s²): a faster \
                  aircraft.elevator_actuator.rate_limit_degps or `command = \"step\"`"
             ),
-        )
-        .into());
+        ));
     }
     Ok(OuterLoops::PitchStep {
         step_rad,
@@ -83,7 +81,7 @@ pub(super) fn refuse_infeasible_pitch_tuning(
     context: &PitchDesignContext,
     model: &LinearModel,
     elevator_trim_rad: f64,
-) -> Result<(), SetupError> {
+) -> Result<(), ParameterError> {
     let rate_limit = context.actuator.rate_limit_degps;
     let computer = scenario.control.flight_computer_rate_hz;
     if (rate_limit.is_none() && computer.is_none()) || !scenario.control.rate_limit_check {
@@ -152,6 +150,5 @@ pub(super) fn refuse_infeasible_pitch_tuning(
              it anyway, for studies)",
             linear.speed_advice
         ),
-    )
-    .into())
+    ))
 }

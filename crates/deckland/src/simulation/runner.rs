@@ -304,26 +304,7 @@ impl Simulation {
             return Stop::Ended(end.clone());
         }
         let t = self.time_s;
-        if !self.held_for_next_step {
-            self.system.hold_into(
-                t,
-                &self.state,
-                &mut self.streams,
-                self.dt,
-                self.wave_off.is_some(),
-                &mut self.held,
-            );
-            self.inputs_held = true;
-        }
-        self.held_for_next_step = false;
-        // A wave-off the supervisor decided while holding this step's inputs is an event
-        // of this step, flown from now on.
-        if let Some((time_s, decision)) = self.held.wave_off_decided.take() {
-            self.wave_off = Some((time_s, decision));
-            let event = Event::WaveOff { time_s, decision };
-            recorder.event(&event);
-            self.pending.push_back(Stop::Event(event));
-        }
+        self.hold_inputs(t, recorder);
         // The frame's commands with this step's taps (again, if drawn early without),
         // and the signals the step starts from.
         let signals = self.system.compute_frame_and_evaluate(
@@ -339,37 +320,7 @@ impl Simulation {
             self.activity.sample(&signals);
         }
         if approach && end.is_none() {
-            // The glide-path statistics cover the approach, not a wave-off's climb.
-            if self.wave_off.is_none() {
-                self.statistics.sample(&signals);
-                if let Some(cross_track_m) = signals.lateral.cross_track_m {
-                    // Distance to the ramp along the final bearing; height above the
-                    // glide slope (the glide-path error is positive below it).
-                    self.three_dimensional = true;
-                    self.trap_sheet.sample(
-                        signals.range_to_go_m - self.ramp_aft_of_aim_point_m,
-                        -signals.glide_path_error_m,
-                        cross_track_m,
-                    );
-                }
-            }
-            for event in self.detector.detect(&signals).iter() {
-                if let Event::RampCrossing { clearance_m, .. } = event {
-                    self.ramp_clearance_m = Some(*clearance_m);
-                }
-                recorder.event(event);
-                self.pending.push_back(Stop::Event(*event));
-                let judged = match self.wave_off {
-                    Some((decided_at_s, decision)) => {
-                        self.rules.judge_in_wave_off(event, decided_at_s, decision)
-                    }
-                    None => self.rules.judge(event),
-                };
-                if let Some(reason) = judged {
-                    end = Some((reason, event_time(event)));
-                    break;
-                }
-            }
+            end = self.judge_approach(&signals, recorder);
         }
         if end.is_none() && t >= self.end_time_s - 0.5 * self.dt {
             let reason = if approach {
@@ -387,34 +338,7 @@ impl Simulation {
             recorder.sample(&signals);
         }
         if let Some((reason, end_time_s)) = end {
-            let touchdown = self.pending.iter().find_map(|stop| match stop {
-                Stop::Event(Event::Touchdown(touchdown)) => Some(*touchdown),
-                _ => None,
-            });
-            let summary = RunSummary {
-                outcome: reason.outcome(),
-                wire: reason.wire(),
-                reason: (self.system.outer)
-                    .with_late_abort(reason.description_after(self.wave_off)),
-                end_time_s,
-                steps: self.step,
-                touchdown,
-                ramp_clearance_m: self.ramp_clearance_m,
-                glide_path_error_rms_m: self.statistics.rms_m(),
-                glide_path_error_max_m: self.statistics.max_m(),
-                actuator: self.activity.activity(),
-                trap_sheet: self.three_dimensional.then(|| self.trap_sheet.sheet()),
-                lso_grade: None,
-            };
-            let summary = RunSummary {
-                lso_grade: summary.graded_by_lso(),
-                ..summary
-            };
-            recorder.finish(&summary);
-            self.summary = Some(summary);
-            self.end = Some(reason.clone());
-            self.pending.push_back(Stop::Ended(reason));
-            return self.pending.pop_front().unwrap_or(Stop::Running);
+            return self.finish(reason, end_time_s, recorder);
         }
         let stage = HeldLoop {
             system: &self.system,
@@ -426,6 +350,108 @@ impl Simulation {
         self.step += 1;
         self.time_s = self.step as f64 * self.dt;
         self.system.advance_discrete(self.dt, signals.airspeed_mps);
+        self.pending.pop_front().unwrap_or(Stop::Running)
+    }
+
+    /// Holds the step's inputs at `t` (s), unless they were drawn early; a wave-off the
+    /// supervisor decided while holding them is an event of this step, flown from now on.
+    #[inline]
+    fn hold_inputs<R: Recorder + ?Sized>(&mut self, t: f64, recorder: &mut R) {
+        if !self.held_for_next_step {
+            self.system.hold_into(
+                t,
+                &self.state,
+                &mut self.streams,
+                self.dt,
+                self.wave_off.is_some(),
+                &mut self.held,
+            );
+            self.inputs_held = true;
+        }
+        self.held_for_next_step = false;
+        if let Some((time_s, decision)) = self.held.wave_off_decided.take() {
+            self.wave_off = Some((time_s, decision));
+            let event = Event::WaveOff { time_s, decision };
+            recorder.event(&event);
+            self.pending.push_back(Stop::Event(event));
+        }
+    }
+
+    /// An approach's step: its glide-path statistics (the approach's, not a wave-off's
+    /// climb) and its events, each recorded and judged by the landing rules; the end
+    /// the first judged event calls, if any.
+    #[inline]
+    fn judge_approach<R: Recorder + ?Sized>(
+        &mut self,
+        signals: &Signals,
+        recorder: &mut R,
+    ) -> Option<(EndReason, f64)> {
+        if self.wave_off.is_none() {
+            self.statistics.sample(signals);
+            if let Some(cross_track_m) = signals.lateral.cross_track_m {
+                // Distance to the ramp along the final bearing; height above the
+                // glide slope (the glide-path error is positive below it).
+                self.three_dimensional = true;
+                self.trap_sheet.sample(
+                    signals.range_to_go_m - self.ramp_aft_of_aim_point_m,
+                    -signals.glide_path_error_m,
+                    cross_track_m,
+                );
+            }
+        }
+        for event in self.detector.detect(signals).iter() {
+            if let Event::RampCrossing { clearance_m, .. } = event {
+                self.ramp_clearance_m = Some(*clearance_m);
+            }
+            recorder.event(event);
+            self.pending.push_back(Stop::Event(*event));
+            let judged = match self.wave_off {
+                Some((decided_at_s, decision)) => {
+                    self.rules.judge_in_wave_off(event, decided_at_s, decision)
+                }
+                None => self.rules.judge(event),
+            };
+            if let Some(reason) = judged {
+                return Some((reason, event_time(event)));
+            }
+        }
+        None
+    }
+
+    /// Ends the run for `reason` at `end_time_s` (s): its summary, to `recorder` and
+    /// kept; the first stop still to return.
+    fn finish<R: Recorder + ?Sized>(
+        &mut self,
+        reason: EndReason,
+        end_time_s: f64,
+        recorder: &mut R,
+    ) -> Stop {
+        let touchdown = self.pending.iter().find_map(|stop| match stop {
+            Stop::Event(Event::Touchdown(touchdown)) => Some(*touchdown),
+            _ => None,
+        });
+        let summary = RunSummary {
+            outcome: reason.outcome(),
+            wire: reason.wire(),
+            reason: (self.system.outer).with_late_abort(reason.description_after(self.wave_off)),
+            end_time_s,
+            steps: self.step,
+            touchdown,
+            ramp_clearance_m: self.ramp_clearance_m,
+            glide_path_error_rms_m: self.statistics.rms_m(),
+            glide_path_error_max_m: self.statistics.max_m(),
+            actuator: self.activity.activity(),
+            trap_sheet: self.three_dimensional.then(|| self.trap_sheet.sheet()),
+            lso_grade: None,
+        };
+        let summary = RunSummary {
+            lso_grade: summary.graded_by_lso(),
+            ..summary
+        };
+        recorder.finish(&summary);
+        self.summary = Some(summary);
+        self.end = Some(reason.clone());
+        self.pending.push_back(Stop::Ended(reason));
         self.pending.pop_front().unwrap_or(Stop::Running)
     }
 

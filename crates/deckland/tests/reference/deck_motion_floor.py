@@ -1,4 +1,4 @@
-"""Independent numbers for analysis/deck_floor.rs (docs/deck-prediction.md).
+"""Independent numbers for analysis/deck_floor/ (docs/deck-prediction.md).
 
 The physics floor of a deck point's forecast: the covariance the shaping filters'
 white noise builds up over a horizon h from a known state, integrated here as the

@@ -6,7 +6,7 @@ Run: python3 crates/deckland/tests/reference/deck_motion_kalman.py (numpy, scipy
 Prints
 - the steady-state a-posteriori covariance diagonal of the heave and pitch Kalman
   filters (50 Hz, default sensing, paper's sea), from scipy's discrete algebraic Riccati
-  solver: src/estimation/deck_motion.rs pins its filter's converged covariance to them;
+  solver: src/estimation/deck_motion/tests.rs pins its filter's converged covariance to them;
 - the physics floor: the standard deviation of the landing point's height predicted T s
   ahead from the true filter state, sqrt(var heave + 81^2 var pitch) of the noise still to
   come, for the paper's sea and the moderate sea, and as touchdown scatter sigma /

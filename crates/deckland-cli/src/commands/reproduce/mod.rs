@@ -30,7 +30,8 @@ use super::common::{Conditions, ControllerChoice};
 use super::environment;
 use super::land;
 use super::sink;
-use super::step::{self, ControllerRun, StepFlight};
+use super::step;
+use super::step::flight::{ControllerRun, StepFlight};
 use crate::output::OutputDir;
 use crate::plot::Figure;
 
@@ -192,7 +193,7 @@ fn controller_runs(runs: &[PitchStepRun; 2]) -> Vec<ControllerRun> {
 }
 
 /// A sink-rate run of the study ramped in over `ramp_s`, as `deckland sink` draws it.
-fn sink_run(run: &SinkRateRun, ramp_s: f64, seconds: f64) -> sink::SinkRun {
+fn sink_run(run: &SinkRateRun, ramp_s: f64, seconds: f64) -> sink::report::SinkRun {
     sink::sink_run(
         run.clone(),
         ControllerChoice::Opd,

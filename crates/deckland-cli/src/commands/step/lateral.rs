@@ -12,11 +12,12 @@ use std::path::PathBuf;
 use anyhow::{anyhow, bail, Context, Result};
 use deckland::experiments::{
     fly_lateral_step, LateralAxis, LateralSample, LateralSetup, LateralStep, LateralStepReport,
-    LateralStepResponse, LATERAL_STEP_TIME_S,
+    LATERAL_STEP_TIME_S,
 };
 use deckland::scenario::HardwareSet;
 use serde::Serialize;
 
+use super::flight::LateralRun;
 use super::{format_option, prefix, StepArgs, MAX_SECONDS, MIN_SECONDS};
 use crate::commands::common::{Conditions, ControllerChoice};
 use crate::output::OutputDir;
@@ -24,16 +25,6 @@ use crate::plot::step::lateral::lateral_figures;
 
 /// Largest |--step-deg| accepted on the lateral axes (deg).
 const MAX_LATERAL_STEP_DEG: f64 = 30.0;
-
-/// One controller's lateral run.
-pub(crate) struct LateralRun {
-    /// Which controller flew (on both channels).
-    pub(crate) choice: ControllerChoice,
-    /// The recorded samples (every 2 ms).
-    pub(crate) samples: Vec<LateralSample>,
-    /// The response.
-    pub(crate) result: LateralStepResponse,
-}
 
 /// The JSON document of `deckland step --axis roll|yaw --json`: the library's report and
 /// where the files went.

@@ -4,7 +4,7 @@ use deckland::experiments::ApproachRun;
 use deckland::scenario::Scenario;
 use deckland::simulation::{Event, SignalId, Signals};
 
-use crate::commands::land::outcome_text;
+use crate::commands::outcome::outcome_text;
 use crate::plot::{Figure, MarkerShape, Panel, DECK_COLOUR};
 
 /// The hook height at `time_s`, interpolated between the recorded samples.

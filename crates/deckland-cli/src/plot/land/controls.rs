@@ -2,7 +2,7 @@
 
 use deckland::scenario::Scenario;
 
-use crate::commands::land::signed;
+use crate::plot::signed;
 use deckland::simulation::{SignalId, Signals};
 
 use super::{series, Shown, TIME};

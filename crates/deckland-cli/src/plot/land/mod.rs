@@ -17,7 +17,7 @@ use deckland::experiments::ApproachRun;
 use deckland::scenario::Scenario;
 use deckland::simulation::{SignalId, Signals};
 
-use crate::commands::land::outcome_text;
+use crate::commands::outcome::outcome_text;
 use crate::plot::{Figure, Panel};
 
 /// The x axis of the figures over time.

@@ -5,7 +5,7 @@ use deckland::experiments::{
 };
 
 use crate::commands::common::Conditions;
-use crate::commands::step::lateral::LateralRun;
+use crate::commands::step::flight::LateralRun;
 use crate::plot::{Figure, Panel};
 
 fn series(samples: &[LateralSample], value: impl Fn(&LateralSample) -> f64) -> Vec<(f64, f64)> {

@@ -2,7 +2,7 @@
 //! 2nd ed., §2.5, flat earth, body axes, Euler angles), and the plant built on the
 //! longitudinal model. See the module docs of `six_dof` for the equations.
 
-use super::air_data::SixDofAirData;
+use super::air_data::{air_velocity_in_wind, SixDofAirData};
 use super::kinematics::EulerTrig;
 use super::lateral_aerodynamics::lateral_coefficients;
 use super::parameters::{LateralParameters, SurfaceActuatorParameters};
@@ -71,6 +71,32 @@ impl Default for SixDofAircraft {
             SurfaceActuatorParameters::RUDDER,
         )
         .expect("the default lateral parameters are valid")
+    }
+}
+
+/// The air data of the 6-DOF aircraft (`air_data.rs`).
+impl SixDofAircraft {
+    /// The air-relative velocity in body axes for inertial body velocity (u, v, w), Euler
+    /// angles (φ, θ, ψ) and an earth-axis wind: (u, v, w) − R(φ, θ, ψ)·W.
+    #[inline]
+    pub fn air_velocity(&self, velocity: [f64; 3], euler: [f64; 3], wind: &Wind) -> [f64; 3] {
+        self.air_velocity_trig(velocity, &EulerTrig::new(euler), wind)
+    }
+
+    /// [`SixDofAircraft::air_velocity`] with the Euler angles' sines and cosines.
+    #[inline]
+    pub fn air_velocity_trig(&self, velocity: [f64; 3], trig: &EulerTrig, wind: &Wind) -> [f64; 3] {
+        air_velocity_in_wind(velocity, trig, wind)
+    }
+
+    /// Air data of an air-relative body velocity (m/s).
+    #[inline]
+    pub fn air_data(&self, air_velocity: [f64; 3]) -> SixDofAirData {
+        SixDofAirData::new(
+            air_velocity,
+            self.series_trig,
+            self.longitudinal().parameters().air_density_kg_m3,
+        )
     }
 }
 

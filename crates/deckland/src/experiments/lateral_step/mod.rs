@@ -25,7 +25,9 @@
 //!   heading sensor's noise does not enter this experiment.
 //! - **Gust**: optionally a 1 − cos crosswind gust (earth y) to test coordination.
 
-use crate::aircraft::six_dof::{linearize_six_dof, SixDofAircraft, SixDofCommands, SixDofState};
+use crate::aircraft::six_dof::{
+    linearize_six_dof, SixDofAircraft, SixDofCommands, SixDofState, SixDofTrimPoint,
+};
 use crate::control::design::command_shaping::JerkLimitedStep;
 use crate::control::design::{design_command, DesignRequest};
 use crate::control::lateral::design::channel_hardware;
@@ -41,11 +43,9 @@ mod response;
 mod setup;
 mod spec;
 
-pub use response::{LateralStepReport, LateralStepResponse};
+pub use response::{LateralStepReport, LateralStepResponse, LateralStepRun};
 pub use setup::{LateralLaws, LateralSetup};
-pub use spec::{
-    CrosswindGust, LateralAxis, LateralSample, LateralStep, LateralStepError, LateralStepRun,
-};
+pub use spec::{CrosswindGust, LateralAxis, LateralSample, LateralStep, LateralStepError};
 
 /// Time of the step after the start (s).
 pub const LATERAL_STEP_TIME_S: f64 = 1.0;
@@ -77,6 +77,48 @@ struct Disturbances {
     sideslip_noise: NoiseStream,
 }
 
+impl Disturbances {
+    /// The streams of `streams`, the turbulence drawn from its stationary distribution
+    /// in an `adverse` run (else calm).
+    fn new(streams: &RandomStreams, adverse: bool) -> Self {
+        let mut disturbances = Self {
+            turbulence_v_mps: 0.0,
+            turbulence: streams.stream("lateral_turbulence_v"),
+            bank_noise: streams.stream("bank_noise"),
+            sideslip_noise: streams.stream("sideslip_noise"),
+        };
+        if adverse {
+            disturbances.turbulence_v_mps =
+                TURBULENCE_SIGMA_V_MPS * disturbances.turbulence.standard_normal();
+        }
+        disturbances
+    }
+
+    /// The bank and air-data sideslip sensors' noise (rad) of a frame sampled at `t`
+    /// (s); none outside an `adverse` run.
+    fn sensor_noise(&mut self, adverse: bool, t: f64) -> (f64, f64) {
+        if adverse {
+            (
+                BANK_WHITE_SIGMA_RAD * self.bank_noise.standard_normal()
+                    + BANK_SINUSOID_RAD * (BANK_SINUSOID_RADPS * t).sin(),
+                SIDESLIP_WHITE_SIGMA_RAD * self.sideslip_noise.standard_normal(),
+            )
+        } else {
+            (0.0, 0.0)
+        }
+    }
+
+    /// The turbulence one step of `DT_S` on, flown through at `speed_mps` (m/s): the
+    /// first-order Dryden form (module docs).
+    fn advance_turbulence(&mut self, speed_mps: f64) {
+        let decay = (-DT_S * speed_mps / TURBULENCE_SCALE_M).exp();
+        self.turbulence_v_mps = decay * self.turbulence_v_mps
+            + TURBULENCE_SIGMA_V_MPS
+                * (1.0 - decay * decay).sqrt()
+                * self.turbulence.standard_normal();
+    }
+}
+
 /// The lateral signals of a plant state: (φ, β, p, −r) and the air data's sideslip.
 fn sideslip_rad(aircraft: &SixDofAircraft, state: &SixDofState, wind: &Wind) -> f64 {
     let air = aircraft.air_velocity(
@@ -99,6 +141,80 @@ pub fn fly_lateral_step(
     roll: &dyn RollLaw,
     yaw: &dyn YawLaw,
 ) -> Result<LateralStepRun, LateralStepError> {
+    check_step(step, roll, yaw)?;
+    let (aircraft, trim) = (&setup.aircraft, &setup.trim);
+    let channel = match step.axis {
+        LateralAxis::Roll => LateralChannel::Roll,
+        LateralAxis::Yaw => LateralChannel::Yaw,
+    };
+    let shaped = shaped_command(aircraft, trim, step, channel)?;
+    let mut disturbances = Disturbances::new(&RandomStreams::new(step.seed), step.adverse);
+    let mut x = [0.0; N];
+    x[..PLANT].copy_from_slice(&trim.state(0.0, 0.0, ALTITUDE_M).to_array());
+    let mut computer = FlightComputer::new(trim, step)?;
+    let mut samples = Vec::new();
+    let steps = (step.seconds / DT_S).round() as usize;
+    let record_every = ((step.record_interval_s / DT_S).round() as usize).max(1);
+    let mut diverged = false;
+    for k in 0..=steps {
+        let t = k as f64 * DT_S;
+        let plant = SixDofState::from_array(x[..PLANT].try_into().expect("plant slice"));
+        let wind = Wind {
+            x_mps: 0.0,
+            y_mps: disturbances.turbulence_v_mps + step.gust.map_or(0.0, |g| g.wind_mps(t)),
+            z_mps: 0.0,
+        };
+        let beta = sideslip_rad(aircraft, &plant, &wind);
+        let reference = StepReference::at(&shaped, step.axis, trim, t);
+        // The flight computer's frame: sample, compute, and act one frame later.
+        if computer.starts_frame(t) {
+            let (bank_noise, beta_noise) = disturbances.sensor_noise(step.adverse, t);
+            let measured = (
+                plant.phi_rad + bank_noise,
+                computer.measure_sideslip(beta + beta_noise, aircraft, &plant, &wind),
+            );
+            let inputs = law_inputs(aircraft, trim, &plant, &reference, step.axis, measured);
+            computer.compute(k == 0, inputs, (roll, yaw), &mut x);
+        }
+        if k % record_every == 0 {
+            samples.push(lateral_sample(t, &plant, &reference, beta, &wind));
+        }
+        if k == steps {
+            break;
+        }
+        let plant = rk4_step(
+            &mut x,
+            t,
+            &computer.frame,
+            &wind,
+            step.gust,
+            aircraft,
+            (roll, yaw),
+        );
+        if step.adverse {
+            disturbances.advance_turbulence(trim.speed_mps);
+        }
+        if !x.iter().all(|v| v.is_finite()) || plant.phi_rad.abs() > 1.5 {
+            diverged = true;
+            break;
+        }
+    }
+    let mut response = measure(step, channel, &samples, &shaped, aircraft, diverged)?;
+    response.controller = match channel {
+        LateralChannel::Roll => roll.label(),
+        LateralChannel::Yaw => yaw.label(),
+    }
+    .to_owned();
+    Ok(LateralStepRun { samples, response })
+}
+
+/// Refuses a step out of its ranges (a bank or sideslip step within ±30°, 2–600 s) and
+/// laws with more states than the run holds.
+fn check_step(
+    step: &LateralStep,
+    roll: &dyn RollLaw,
+    yaw: &dyn YawLaw,
+) -> Result<(), LateralStepError> {
     let bad = |field: &str, value: f64, expected: &str| {
         Err(LateralStepError::Setup(format!(
             "lateral step `{field}` = {value} is out of range: expected {expected}"
@@ -119,237 +235,313 @@ pub fn fly_lateral_step(
             "a lateral law has at most {LAW} states"
         )));
     }
-    let aircraft = &setup.aircraft;
-    let trim = &setup.trim;
-    let channel = match step.axis {
-        LateralAxis::Roll => LateralChannel::Roll,
-        LateralAxis::Yaw => LateralChannel::Yaw,
-    };
-    // The shaped command, as the design code shapes a step for this channel's surface.
+    Ok(())
+}
+
+/// The step's command, shaped as the design code shapes a step for `channel`'s surface
+/// (module docs); a flat one for a zero step.
+fn shaped_command(
+    aircraft: &SixDofAircraft,
+    trim: &SixDofTrimPoint,
+    step: &LateralStep,
+    channel: LateralChannel,
+) -> Result<JerkLimitedStep, LateralStepError> {
     let model = linearize_six_dof(aircraft, trim);
     let hardware = channel_hardware(aircraft, &model, channel);
-    let shaped = if step.step_deg == 0.0 {
-        JerkLimitedStep::new(0.0, 1.0, 1.0)
-    } else {
-        let request = DesignRequest {
-            design_step_deg: step.step_deg.abs(),
-            ..DesignRequest::default()
-        };
-        let (fastest, _) = design_command(&hardware, &request)
-            .map_err(|e| LateralStepError::Setup(e.to_string()))?;
-        JerkLimitedStep::new(
-            step.step_deg.to_radians(),
-            fastest.jerk_radps3,
-            fastest.acceleration_radps2,
-        )
-    };
-
-    let streams = RandomStreams::new(step.seed);
-    let mut disturbances = Disturbances {
-        turbulence_v_mps: 0.0,
-        turbulence: streams.stream("lateral_turbulence_v"),
-        bank_noise: streams.stream("bank_noise"),
-        sideslip_noise: streams.stream("sideslip_noise"),
-    };
-    if step.adverse {
-        disturbances.turbulence_v_mps =
-            TURBULENCE_SIGMA_V_MPS * disturbances.turbulence.standard_normal();
+    if step.step_deg == 0.0 {
+        return Ok(JerkLimitedStep::new(0.0, 1.0, 1.0));
     }
-    let plant0 = trim.state(0.0, 0.0, ALTITUDE_M);
-    let mut x = [0.0; N];
-    x[..PLANT].copy_from_slice(&plant0.to_array());
-    let commands_trim = SixDofCommands {
-        elevator_rad: trim.elevator_rad,
-        thrust_n: trim.thrust_n,
-        aileron_rad: trim.aileron_rad,
-        rudder_rad: trim.rudder_rad,
+    let request = DesignRequest {
+        design_step_deg: step.step_deg.abs(),
+        ..DesignRequest::default()
     };
-    let mut commands = commands_trim;
-    let mut pending = commands_trim;
-    let (mut roll_inputs, mut yaw_inputs) = (RollLawInputs::default(), YawLawInputs::default());
-    let mut sample_time_s = 0.0;
-    let mut samples = Vec::new();
-    let steps = (step.seconds / DT_S).round() as usize;
-    let record_every = ((step.record_interval_s / DT_S).round() as usize).max(1);
-    let mut frame_index: i64 = -1;
-    let mut blend = step
-        .sideslip_blend_crossover_radps
-        .map(SideslipBlend::new)
-        .transpose()?;
-    let mut last_inertial_rate_radps = 0.0;
-    let mut diverged = false;
-    for k in 0..=steps {
-        let t = k as f64 * DT_S;
-        let plant = SixDofState::from_array(x[..PLANT].try_into().expect("plant slice"));
-        let wind = Wind {
-            x_mps: 0.0,
-            y_mps: disturbances.turbulence_v_mps + step.gust.map_or(0.0, |g| g.wind_mps(t)),
-            z_mps: 0.0,
+    let (fastest, _) =
+        design_command(&hardware, &request).map_err(|e| LateralStepError::Setup(e.to_string()))?;
+    Ok(JerkLimitedStep::new(
+        step.step_deg.to_radians(),
+        fastest.jerk_radps3,
+        fastest.acceleration_radps2,
+    ))
+}
+
+/// What the flight computer holds over a frame: the commands acting, the laws' inputs
+/// sampled at its start, and when (s).
+struct Frame {
+    commands: SixDofCommands,
+    roll_inputs: RollLawInputs,
+    yaw_inputs: YawLawInputs,
+    sample_time_s: f64,
+}
+
+/// The commands of both laws at one instant: the bank and sideslip commands (rad), and
+/// the stepped channel's rate (rad/s) and acceleration (rad/s²) fed forward.
+struct StepReference {
+    bank_rad: f64,
+    sideslip_rad: f64,
+    rate_radps: f64,
+    acceleration_radps2: f64,
+}
+
+impl StepReference {
+    /// The commands at `t` (s): trim until [`LATERAL_STEP_TIME_S`], then the `shaped`
+    /// step added to the stepped `axis`'s trim.
+    fn at(shaped: &JerkLimitedStep, axis: LateralAxis, trim: &SixDofTrimPoint, t: f64) -> Self {
+        let (angle_ref, rate_radps, acceleration_radps2) = if t < LATERAL_STEP_TIME_S {
+            (0.0, 0.0, 0.0)
+        } else {
+            let r = shaped.reference(t - LATERAL_STEP_TIME_S);
+            (r.theta_rad, r.rate_radps, r.acceleration_radps2)
         };
-        let beta = sideslip_rad(aircraft, &plant, &wind);
-        let reference = |at: f64| {
-            if at < LATERAL_STEP_TIME_S {
-                (0.0, 0.0, 0.0)
-            } else {
-                let r = shaped.reference(at - LATERAL_STEP_TIME_S);
-                (r.theta_rad, r.rate_radps, r.acceleration_radps2)
-            }
-        };
-        let (angle_ref, rate_ref, acceleration_ref) = reference(t);
-        let (bank_ref, beta_ref) = match step.axis {
+        let (bank_rad, sideslip_rad) = match axis {
             LateralAxis::Roll => (trim.phi_rad + angle_ref, trim.sideslip_rad),
             LateralAxis::Yaw => (trim.phi_rad, trim.sideslip_rad + angle_ref),
         };
-        // The flight computer's frame: sample, compute, and act one frame later.
-        let frame = (t / FRAME_S + 1e-9).floor() as i64;
-        if frame != frame_index {
-            frame_index = frame;
-            commands = pending;
-            let frame_elapsed_s = t - sample_time_s;
-            sample_time_s = t;
-            let (bank_noise, beta_noise) = if step.adverse {
-                (
-                    BANK_WHITE_SIGMA_RAD * disturbances.bank_noise.standard_normal()
-                        + BANK_SINUSOID_RAD * (BANK_SINUSOID_RADPS * t).sin(),
-                    SIDESLIP_WHITE_SIGMA_RAD * disturbances.sideslip_noise.standard_normal(),
-                )
-            } else {
-                (0.0, 0.0)
-            };
-            let air_data_beta = beta + beta_noise;
-            let sideslip_measured = match blend.as_mut() {
-                None => air_data_beta,
-                Some(blend) => {
-                    // The inertial sideslip rate β̇ ≈ v̇/V over the frame (trapezoid).
-                    let airspeed = norm(aircraft.air_velocity(
-                        [plant.u_mps, plant.v_mps, plant.w_mps],
-                        [plant.phi_rad, plant.theta_rad, plant.psi_rad],
-                        &wind,
-                    ));
-                    let rate = aircraft.derivative(&plant, &commands, &wind).v_mps / airspeed;
-                    let mean_rate = 0.5 * (rate + last_inertial_rate_radps);
-                    last_inertial_rate_radps = rate;
-                    blend.update(air_data_beta, mean_rate, frame_elapsed_s)
-                }
-            };
-            let feed = |stepped: bool| {
-                if stepped {
-                    (rate_ref, acceleration_ref)
-                } else {
-                    (0.0, 0.0)
-                }
-            };
-            let (roll_rate_ref, roll_acc_ref) = feed(step.axis == LateralAxis::Roll);
-            let (yaw_rate_ref, yaw_acc_ref) = feed(step.axis == LateralAxis::Yaw);
-            roll_inputs = RollLawInputs(ChannelInputs {
-                command_rad: bank_ref,
-                command_rate_radps: roll_rate_ref,
-                command_acceleration_radps2: roll_acc_ref,
-                measured_rad: plant.phi_rad + bank_noise,
-                measurement_age_s: 0.0,
-                rate_measured_radps: plant.p_radps,
-                surface_actual_rad: plant.aileron_rad,
-                trim_angle_rad: trim.phi_rad,
-                surface_trim_rad: trim.aileron_rad,
-                surface_saturation: saturation(aircraft.aileron(), plant.aileron_rad),
-            });
-            yaw_inputs = YawLawInputs(ChannelInputs {
-                command_rad: beta_ref,
-                command_rate_radps: yaw_rate_ref,
-                command_acceleration_radps2: yaw_acc_ref,
-                measured_rad: sideslip_measured,
-                measurement_age_s: 0.0,
-                rate_measured_radps: -plant.r_radps,
-                surface_actual_rad: plant.rudder_rad,
-                trim_angle_rad: trim.sideslip_rad,
-                surface_trim_rad: trim.rudder_rad,
-                surface_saturation: saturation(aircraft.rudder(), plant.rudder_rad),
-            });
-            if k == 0 {
-                roll.initial_state(&roll_inputs, &mut x[PLANT..PLANT + LAW]);
-                yaw.initial_state(&yaw_inputs, &mut x[PLANT + LAW..]);
-            }
-            pending = SixDofCommands {
-                aileron_rad: roll.surface_command_rad(&x[PLANT..PLANT + LAW], &roll_inputs),
-                rudder_rad: yaw.surface_command_rad(&x[PLANT + LAW..], &yaw_inputs),
-                ..commands_trim
-            };
-            if k == 0 {
-                commands = pending;
-            }
+        Self {
+            bank_rad,
+            sideslip_rad,
+            rate_radps,
+            acceleration_radps2,
         }
-        if k % record_every == 0 {
-            samples.push(LateralSample {
-                time_s: t,
-                bank_command_deg: bank_ref.to_degrees(),
-                bank_deg: plant.phi_rad.to_degrees(),
-                sideslip_command_deg: beta_ref.to_degrees(),
-                sideslip_deg: beta.to_degrees(),
-                heading_deg: plant.psi_rad.to_degrees(),
-                roll_rate_degps: plant.p_radps.to_degrees(),
-                yaw_rate_degps: plant.r_radps.to_degrees(),
-                aileron_deg: plant.aileron_rad.to_degrees(),
-                aileron_rate_degps: plant.aileron_rate_radps.to_degrees(),
-                rudder_deg: plant.rudder_rad.to_degrees(),
-                rudder_rate_degps: plant.rudder_rate_radps.to_degrees(),
-                wind_y_mps: wind.y_mps,
-                altitude_m: plant.h_m,
-            });
+    }
+
+    /// The rate and acceleration fed forward to the channel: the reference's when it is
+    /// the stepped one, else none.
+    fn feed(&self, stepped: bool) -> (f64, f64) {
+        if stepped {
+            (self.rate_radps, self.acceleration_radps2)
+        } else {
+            (0.0, 0.0)
         }
-        if k == steps {
-            break;
-        }
-        // RK4 over the plant and both laws' states, on the held inputs and commands.
-        let age0 = t - sample_time_s;
-        let derivative = |at: f64, state: &[f64; N]| -> [f64; N] {
-            let plant = SixDofState::from_array(state[..PLANT].try_into().expect("plant"));
-            let mut rate = [0.0; N];
-            let wind_at = Wind {
-                y_mps: wind.y_mps - step.gust.map_or(0.0, |g| g.wind_mps(t))
-                    + step.gust.map_or(0.0, |g| g.wind_mps(at)),
-                ..wind
-            };
-            rate[..PLANT]
-                .copy_from_slice(&aircraft.derivative(&plant, &commands, &wind_at).to_array());
-            let age = age0 + (at - t);
-            let mut roll_now = roll_inputs;
-            roll_now.0.measurement_age_s = age;
-            let mut yaw_now = yaw_inputs;
-            yaw_now.0.measurement_age_s = age;
-            let (roll_rate, yaw_rate) = rate[PLANT..].split_at_mut(LAW);
-            roll.derivative(&state[PLANT..PLANT + LAW], &roll_now, roll_rate);
-            yaw.derivative(&state[PLANT + LAW..], &yaw_now, yaw_rate);
-            rate
+    }
+}
+
+/// The flight computer of the run: at each frame's start it acts on the commands it
+/// computed in the last, samples the sensors and computes the next (module docs).
+struct FlightComputer {
+    /// What acts over the frame.
+    frame: Frame,
+    /// The commands computed this frame, acting from the next.
+    pending: SixDofCommands,
+    /// The trim commands: elevator and thrust stay at trim.
+    commands_trim: SixDofCommands,
+    /// The frame now, −1 before the first.
+    frame_index: i64,
+    /// Time since the last sample at the frame's start (s).
+    frame_elapsed_s: f64,
+    /// With a blend, the sideslip the yaw law reads is blended with the inertial
+    /// sideslip rate; this is the last frame's rate (rad/s).
+    blend: Option<SideslipBlend>,
+    last_inertial_rate_radps: f64,
+}
+
+impl FlightComputer {
+    /// A computer holding `trim`'s commands, before its first frame, with the sideslip
+    /// blend `step` asks for.
+    fn new(trim: &SixDofTrimPoint, step: &LateralStep) -> Result<Self, LateralStepError> {
+        let commands_trim = SixDofCommands {
+            elevator_rad: trim.elevator_rad,
+            thrust_n: trim.thrust_n,
+            aileron_rad: trim.aileron_rad,
+            rudder_rad: trim.rudder_rad,
         };
-        let k1 = derivative(t, &x);
-        let k2 = derivative(t + 0.5 * DT_S, &add(&x, &k1, 0.5 * DT_S));
-        let k3 = derivative(t + 0.5 * DT_S, &add(&x, &k2, 0.5 * DT_S));
-        let k4 = derivative(t + DT_S, &add(&x, &k3, DT_S));
-        for i in 0..N {
-            x[i] += DT_S / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+        Ok(Self {
+            frame: Frame {
+                commands: commands_trim,
+                roll_inputs: RollLawInputs::default(),
+                yaw_inputs: YawLawInputs::default(),
+                sample_time_s: 0.0,
+            },
+            pending: commands_trim,
+            commands_trim,
+            frame_index: -1,
+            frame_elapsed_s: 0.0,
+            blend: (step.sideslip_blend_crossover_radps.map(SideslipBlend::new)).transpose()?,
+            last_inertial_rate_radps: 0.0,
+        })
+    }
+
+    /// Whether a frame starts at `t` (s); if one does, the last frame's commands act
+    /// from now and the sensors are sampled now.
+    fn starts_frame(&mut self, t: f64) -> bool {
+        let frame_now = (t / FRAME_S + 1e-9).floor() as i64;
+        if frame_now == self.frame_index {
+            return false;
         }
-        let mut plant = SixDofState::from_array(x[..PLANT].try_into().expect("plant"));
-        aircraft.constrain(&mut plant);
-        x[..PLANT].copy_from_slice(&plant.to_array());
-        if step.adverse {
-            let decay = (-DT_S * trim.speed_mps / TURBULENCE_SCALE_M).exp();
-            disturbances.turbulence_v_mps = decay * disturbances.turbulence_v_mps
-                + TURBULENCE_SIGMA_V_MPS
-                    * (1.0 - decay * decay).sqrt()
-                    * disturbances.turbulence.standard_normal();
-        }
-        if !x.iter().all(|v| v.is_finite()) || plant.phi_rad.abs() > 1.5 {
-            diverged = true;
-            break;
+        self.frame_index = frame_now;
+        self.frame.commands = self.pending;
+        self.frame_elapsed_s = t - self.frame.sample_time_s;
+        self.frame.sample_time_s = t;
+        true
+    }
+
+    /// The sideslip measured at the frame's start (rad) from the air data's
+    /// `air_data_beta` (rad) and, with a blend, the inertial rate β̇ ≈ v̇/V over the
+    /// time since the last sample (trapezoid), with the frame's commands.
+    fn measure_sideslip(
+        &mut self,
+        air_data_beta: f64,
+        aircraft: &SixDofAircraft,
+        plant: &SixDofState,
+        wind: &Wind,
+    ) -> f64 {
+        match self.blend.as_mut() {
+            None => air_data_beta,
+            Some(blend) => {
+                let airspeed = norm(aircraft.air_velocity(
+                    [plant.u_mps, plant.v_mps, plant.w_mps],
+                    [plant.phi_rad, plant.theta_rad, plant.psi_rad],
+                    wind,
+                ));
+                let rate = aircraft.derivative(plant, &self.frame.commands, wind).v_mps / airspeed;
+                let mean_rate = 0.5 * (rate + self.last_inertial_rate_radps);
+                self.last_inertial_rate_radps = rate;
+                blend.update(air_data_beta, mean_rate, self.frame_elapsed_s)
+            }
         }
     }
-    let mut response = measure(step, channel, &samples, &shaped, aircraft, diverged)?;
-    response.controller = match channel {
-        LateralChannel::Roll => roll.label(),
-        LateralChannel::Yaw => yaw.label(),
+
+    /// Computes the next frame's commands from the laws' `inputs` and their states in
+    /// `x`; on the `first` frame the laws' states start from the inputs and the commands
+    /// act at once.
+    fn compute(
+        &mut self,
+        first: bool,
+        inputs: (RollLawInputs, YawLawInputs),
+        (roll, yaw): (&dyn RollLaw, &dyn YawLaw),
+        x: &mut [f64; N],
+    ) {
+        let frame = &mut self.frame;
+        (frame.roll_inputs, frame.yaw_inputs) = inputs;
+        if first {
+            roll.initial_state(&frame.roll_inputs, &mut x[PLANT..PLANT + LAW]);
+            yaw.initial_state(&frame.yaw_inputs, &mut x[PLANT + LAW..]);
+        }
+        self.pending = SixDofCommands {
+            aileron_rad: roll.surface_command_rad(&x[PLANT..PLANT + LAW], &frame.roll_inputs),
+            rudder_rad: yaw.surface_command_rad(&x[PLANT + LAW..], &frame.yaw_inputs),
+            ..self.commands_trim
+        };
+        if first {
+            frame.commands = self.pending;
+        }
     }
-    .to_owned();
-    Ok(LateralStepRun { samples, response })
+}
+
+/// The roll and yaw laws' inputs at a frame's start: the `reference`'s commands (the
+/// stepped `axis` fed forward), the `measured` bank and sideslip (rad), the plant's rates
+/// and surfaces, and the trim.
+fn law_inputs(
+    aircraft: &SixDofAircraft,
+    trim: &SixDofTrimPoint,
+    plant: &SixDofState,
+    reference: &StepReference,
+    axis: LateralAxis,
+    (bank_measured_rad, sideslip_measured_rad): (f64, f64),
+) -> (RollLawInputs, YawLawInputs) {
+    let (roll_rate_ref, roll_acc_ref) = reference.feed(axis == LateralAxis::Roll);
+    let (yaw_rate_ref, yaw_acc_ref) = reference.feed(axis == LateralAxis::Yaw);
+    let roll = RollLawInputs(ChannelInputs {
+        command_rad: reference.bank_rad,
+        command_rate_radps: roll_rate_ref,
+        command_acceleration_radps2: roll_acc_ref,
+        measured_rad: bank_measured_rad,
+        measurement_age_s: 0.0,
+        rate_measured_radps: plant.p_radps,
+        surface_actual_rad: plant.aileron_rad,
+        trim_angle_rad: trim.phi_rad,
+        surface_trim_rad: trim.aileron_rad,
+        surface_saturation: saturation(aircraft.aileron(), plant.aileron_rad),
+    });
+    let yaw = YawLawInputs(ChannelInputs {
+        command_rad: reference.sideslip_rad,
+        command_rate_radps: yaw_rate_ref,
+        command_acceleration_radps2: yaw_acc_ref,
+        measured_rad: sideslip_measured_rad,
+        measurement_age_s: 0.0,
+        rate_measured_radps: -plant.r_radps,
+        surface_actual_rad: plant.rudder_rad,
+        trim_angle_rad: trim.sideslip_rad,
+        surface_trim_rad: trim.rudder_rad,
+        surface_saturation: saturation(aircraft.rudder(), plant.rudder_rad),
+    });
+    (roll, yaw)
+}
+
+/// The recorded sample at `t` (s) of `plant` flying `reference`, with the air data's
+/// sideslip `beta` (rad) in `wind`.
+fn lateral_sample(
+    t: f64,
+    plant: &SixDofState,
+    reference: &StepReference,
+    beta: f64,
+    wind: &Wind,
+) -> LateralSample {
+    LateralSample {
+        time_s: t,
+        bank_command_deg: reference.bank_rad.to_degrees(),
+        bank_deg: plant.phi_rad.to_degrees(),
+        sideslip_command_deg: reference.sideslip_rad.to_degrees(),
+        sideslip_deg: beta.to_degrees(),
+        heading_deg: plant.psi_rad.to_degrees(),
+        roll_rate_degps: plant.p_radps.to_degrees(),
+        yaw_rate_degps: plant.r_radps.to_degrees(),
+        aileron_deg: plant.aileron_rad.to_degrees(),
+        aileron_rate_degps: plant.aileron_rate_radps.to_degrees(),
+        rudder_deg: plant.rudder_rad.to_degrees(),
+        rudder_rate_degps: plant.rudder_rate_radps.to_degrees(),
+        wind_y_mps: wind.y_mps,
+        altitude_m: plant.h_m,
+    }
+}
+
+/// One RK4 step of `DT_S` from `t` (s) over the plant and both laws' states in `x`, on
+/// the `frame`'s held commands and inputs (the measurement's age growing from its
+/// sample) and the wind at `t`, its `gust` moving with time; the actuators' limits
+/// applied after. Returns the plant's new state.
+fn rk4_step(
+    x: &mut [f64; N],
+    t: f64,
+    frame: &Frame,
+    wind: &Wind,
+    gust: Option<CrosswindGust>,
+    aircraft: &SixDofAircraft,
+    (roll, yaw): (&dyn RollLaw, &dyn YawLaw),
+) -> SixDofState {
+    let age0 = t - frame.sample_time_s;
+    let derivative = |at: f64, state: &[f64; N]| -> [f64; N] {
+        let plant = SixDofState::from_array(state[..PLANT].try_into().expect("plant"));
+        let mut rate = [0.0; N];
+        let wind_at = Wind {
+            y_mps: wind.y_mps - gust.map_or(0.0, |g| g.wind_mps(t))
+                + gust.map_or(0.0, |g| g.wind_mps(at)),
+            ..*wind
+        };
+        rate[..PLANT].copy_from_slice(
+            &aircraft
+                .derivative(&plant, &frame.commands, &wind_at)
+                .to_array(),
+        );
+        let age = age0 + (at - t);
+        let mut roll_now = frame.roll_inputs;
+        roll_now.0.measurement_age_s = age;
+        let mut yaw_now = frame.yaw_inputs;
+        yaw_now.0.measurement_age_s = age;
+        let (roll_rate, yaw_rate) = rate[PLANT..].split_at_mut(LAW);
+        roll.derivative(&state[PLANT..PLANT + LAW], &roll_now, roll_rate);
+        yaw.derivative(&state[PLANT + LAW..], &yaw_now, yaw_rate);
+        rate
+    };
+    let k1 = derivative(t, x);
+    let k2 = derivative(t + 0.5 * DT_S, &add(x, &k1, 0.5 * DT_S));
+    let k3 = derivative(t + 0.5 * DT_S, &add(x, &k2, 0.5 * DT_S));
+    let k4 = derivative(t + DT_S, &add(x, &k3, DT_S));
+    for i in 0..N {
+        x[i] += DT_S / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+    }
+    let mut plant = SixDofState::from_array(x[..PLANT].try_into().expect("plant"));
+    aircraft.constrain(&mut plant);
+    x[..PLANT].copy_from_slice(&plant.to_array());
+    plant
 }
 
 fn norm(v: [f64; 3]) -> f64 {

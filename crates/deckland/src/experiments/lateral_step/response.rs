@@ -1,4 +1,5 @@
-//! The measured response of a lateral step.
+//! The measured response of a lateral step, and the flown step: its samples and
+//! response.
 
 use serde::Serialize;
 
@@ -8,6 +9,15 @@ use crate::aircraft::six_dof::SixDofAircraft;
 use crate::control::design::command_shaping::JerkLimitedStep;
 use crate::control::lateral::LateralChannel;
 use crate::metrics::{root_mean_square, step_response_metrics, StepResponseSpec};
+
+/// A flown lateral step.
+#[derive(Debug, Clone)]
+pub struct LateralStepRun {
+    /// The recorded samples.
+    pub samples: Vec<LateralSample>,
+    /// The measured response.
+    pub response: LateralStepResponse,
+}
 
 /// What a set of lateral steps flew and measured: the document `deckland step --axis
 /// roll|yaw --json` prints (without its output folder) and the Python package returns.

@@ -1,9 +1,8 @@
 //! What a lateral step is: the axis, the step, the gust, the recorded samples, the
-//! errors.
+//! errors (what it measured: `response.rs`).
 
 use serde::Serialize;
 
-use super::response::LateralStepResponse;
 use crate::control::lateral::SIDESLIP_BLEND_CROSSOVER_RADPS;
 use crate::metrics::MetricsError;
 use crate::parameters::ParameterError;
@@ -164,13 +163,4 @@ impl LateralSample {
             self.wind_y_mps,
         ]
     }
-}
-
-/// A flown lateral step.
-#[derive(Debug, Clone)]
-pub struct LateralStepRun {
-    /// The recorded samples.
-    pub samples: Vec<LateralSample>,
-    /// The measured response.
-    pub response: LateralStepResponse,
 }

@@ -5,11 +5,9 @@
 //! a lull"). It reads the Kalman filter of the `estimator` deck predictor, and does
 //! nothing with the others.
 
-use crate::aircraft::AircraftState;
-use crate::control::{ArrivalTiming, ArrivalTimingInputs, ArrivalTimingParameters, DeckReference};
-use crate::environment::{ShipMotionEstimate, ShipMotionPropagator};
-use crate::simulation::closed_loop::ClosedLoop;
-use crate::simulation::outer_loops::OuterLoops;
+use crate::control::{ArrivalTiming, ArrivalTimingInputs, ArrivalTimingParameters};
+use crate::environment::{ShipMotion, ShipMotionEstimate, ShipMotionPropagator};
+use crate::estimation::DeckMotionEstimator;
 
 /// The block's parts: the timing law, a forecast reaching its planning window, and the
 /// approach airspeed it changes.
@@ -38,49 +36,21 @@ impl ArrivalTimingBlock {
     }
 }
 
-impl ClosedLoop {
-    /// One step of the arrival-timing block at `t` (step `dt`) for the aircraft in
-    /// `aircraft` and the guidance computer's `deck` reference: the change of the
-    /// airspeed reference moves, and the reference with it. Without the block, outside an
-    /// approach, or without a Kalman forecast, nothing changes.
-    pub(crate) fn arrival_timing_step(
+impl ArrivalTimingBlock {
+    /// The airspeed reference (m/s) after one step of the timing law on `inputs`: each
+    /// arrival shifted by τ is scored by the expected squared vertical velocity of the
+    /// `ship`'s landing point `arm_m` (m) aft of its pitch centre, the Kalman `filter`'s
+    /// forecast mean squared plus its variance.
+    pub(crate) fn airspeed_reference_mps(
         &mut self,
-        t: f64,
-        dt: f64,
-        aircraft: &AircraftState,
-        deck: Option<&DeckReference>,
-        waving_off: bool,
-    ) {
-        let (Some(block), Some(deck), OuterLoops::Approach { flight_path, .. }, Some(filter)) = (
-            self.arrival_timing.as_mut(),
-            deck,
-            &self.outer,
-            self.deck_predictor.estimator(),
-        ) else {
-            return;
-        };
-        let (sin_t, cos_t) = aircraft.theta_rad.sin_cos();
-        let (hook_x_m, _) = self.hook.position_trig(aircraft, sin_t, cos_t);
-        let (hook_x_rate_mps, _) = self.hook.velocity_trig(aircraft, sin_t, cos_t);
-        let aim_x_m = deck.mean_aim.x_m + flight_path.parameters().touchdown_correction_m;
-        let time_to_go_s = flight_path.time_to_go_s(
-            hook_x_m,
-            hook_x_rate_mps,
-            aim_x_m,
-            deck.mean_aim_velocity.x_mps,
-        );
-        let inputs = ArrivalTimingInputs {
-            time_s: t,
-            dt,
-            time_to_go_s,
-            closure_mps: hook_x_rate_mps - deck.mean_aim_velocity.x_mps,
-            waving_off,
-        };
-        // The expected squared vertical velocity of the landing point at the arrival
-        // shifted by τ: the Kalman forecast's mean squared plus its variance.
-        let (ship, propagator) = (&self.ship, &block.propagator);
-        let arm_m = self.deck.landing_point_aft_of_pitch_centre_m;
-        let age_s = t - filter.time_s();
+        inputs: &ArrivalTimingInputs,
+        ship: &ShipMotion,
+        filter: &DeckMotionEstimator,
+        arm_m: f64,
+    ) -> f64 {
+        let propagator = &self.propagator;
+        let time_to_go_s = inputs.time_to_go_s;
+        let age_s = inputs.time_s - filter.time_s();
         let mut estimate: Option<ShipMotionEstimate> = None;
         let score = |shift_s: f64| {
             let estimate = estimate.get_or_insert_with(|| filter.estimate());
@@ -91,15 +61,12 @@ impl ClosedLoop {
                 propagator.deck_point_sigma(ship, estimate, lead_s, arm_m, forecast.pitch_rad, 1);
             mean * mean + sigma * sigma
         };
-        let change_mps = block.timing.step(&inputs, score);
-        self.airspeed_reference_mps = block.nominal_airspeed_mps + change_mps;
+        let change_mps = self.timing.step(inputs, score);
+        self.nominal_airspeed_mps + change_mps
     }
 
-    /// The arrival-timing block's change of the airspeed reference now (m/s); `None`
-    /// without the block.
-    pub fn arrival_timing_speed_change_mps(&self) -> Option<f64> {
-        self.arrival_timing
-            .as_ref()
-            .map(|block| block.timing.speed_change_mps())
+    /// The timing law's change of the airspeed reference now (m/s).
+    pub(crate) fn speed_change_mps(&self) -> f64 {
+        self.timing.speed_change_mps()
     }
 }

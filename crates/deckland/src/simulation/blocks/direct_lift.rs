@@ -5,7 +5,7 @@
 use crate::aircraft::AircraftParameters;
 use crate::control::DirectLiftParameters;
 use crate::simulation::held::HeldInputs;
-use crate::simulation::outer_loops::OuterLoopOutputs;
+use crate::simulation::outer_loop_signals::OuterLoopOutputs;
 use crate::simulation::Signals;
 
 /// The direct-lift command (–) the law computes this instant from the outer loops'

@@ -10,7 +10,7 @@ use crate::aircraft::{ElevatorActuator, TrimRequest};
 use crate::control::heading_hold::HeadingHold;
 use crate::control::lateral::design::{channel_hardware, channel_plants};
 use crate::control::lateral::{
-    LateralChannel, LateralDesignContext, LateralLawParameters, ObserverPower,
+    LateralChannel, LateralDesignContext, LateralLawParameters, ObserverPower, RollLaw, YawLaw,
 };
 use crate::control::lineup::LineupParameters;
 use crate::control::wave_off_lateral::LateralWaveOffLimits;
@@ -98,62 +98,12 @@ pub(crate) fn build(
     let (sin, cos) = deck.ship_mean_heading_rad().sin_cos();
     let drift = speed * sin;
     let wind = steady_wind(scenario);
-    let request = SixDofTrimRequest {
-        longitudinal: TrimRequest {
-            speed_mps: scenario.approach.airspeed_mps,
-            flight_path_angle_rad,
-        },
-        sideslip_rad: 0.0,
-        // Relative to the drifting centreline: the air's drift with the ship is no cross
-        // wind to it.
-        wind: Wind {
-            y_mps: wind.y_mps - drift,
-            ..wind
-        },
-    };
-    let trim = trim_six_dof(aircraft, &request).map_err(|error| {
-        ParameterError::new(
-            "environment.wind",
-            "crosswind_mps",
-            env.wind.crosswind_mps,
-            format_args!("a crosswind the aircraft can crab into on the approach ({error})"),
-        )
-    })?;
-    check_crab(scenario, trim.psi_rad.to_degrees())?;
-    let model = linearize_six_dof(aircraft, &trim);
-    let (roll_plant, yaw_plant) = channel_plants(&model);
-    let context = |channel, plant| LateralDesignContext {
-        plant,
-        actuator: channel_hardware(aircraft, &model, channel).actuator,
-    };
-    let (roll, yaw) = lateral_laws(scenario);
-    // The observers' fractional power by tables: eight of them a step (module docs of
-    // `FractionalPower`).
-    let power = ObserverPower::Tabulated;
-    let roll = roll.build_roll_with(&context(LateralChannel::Roll, roll_plant), power)?;
-    let yaw = yaw.build_yaw_with(&context(LateralChannel::Yaw, yaw_plant), power)?;
+    let trim = crab_trim(scenario, aircraft, flight_path_angle_rad, &wind, drift)?;
+    let (roll, yaw) = built_laws(scenario, aircraft, &trim)?;
     let ship = LateralShipMotion::new(&env.ship)?;
     let mut ship_streams = LateralShipStreams::new(streams);
     let ship_state = ship.stationary_initial_state(&mut ship_streams);
-    let surface = |actuator: &ElevatorActuator, trim_rad| SurfaceTrim {
-        trim_rad,
-        min_rad: actuator.min_rad(),
-        max_rad: actuator.max_rad(),
-    };
-    let approach = &scenario.approach;
-    let lineup = LineupParameters {
-        gravity_mps2: aircraft.longitudinal().parameters().gravity_mps2,
-        close_natural_frequency_radps: approach.lineup_close_frequency_radps,
-        compensation_station_aft_m: approach.lineup_station_aft_m,
-        ..LineupParameters::default()
-    };
-    lineup.validate()?;
-    let heading_hold = HeadingHold {
-        time_to_go_s: approach.heading_hold_time_to_go_s,
-        blend_s: approach.heading_hold_blend_s,
-        crab_heading_rad: trim.psi_rad,
-        trim_sideslip_rad: trim.sideslip_rad,
-    };
+    let (lineup, heading_hold) = lineup_and_heading_hold(scenario, aircraft, &trim)?;
     let floor = super::floor::AimPointLateralFloor::new(&ship, deck);
     let lateral = LateralLoop {
         ship,
@@ -169,8 +119,8 @@ pub(crate) fn build(
         heading_hold,
         wave_off: LateralWaveOffLimits::default(),
         floor,
-        aileron: surface(aircraft.aileron(), trim.aileron_rad),
-        rudder: surface(aircraft.rudder(), trim.rudder_rad),
+        aileron: surface_trim(aircraft.aileron(), trim.aileron_rad),
+        rudder: surface_trim(aircraft.rudder(), trim.rudder_rad),
         trim_bank_rad: trim.phi_rad,
         trim_sideslip_rad: trim.sideslip_rad,
         bank_noise: env.pitch_noise,
@@ -204,6 +154,98 @@ pub(crate) fn build(
         ship_state,
         trim: SixDofTrimPoint { wind, ..trim },
     })
+}
+
+/// The 6-DOF trim on the air-relative flight path `flight_path_angle_rad` in the crab
+/// that holds the track along the centreline drifting at `drift` (m/s) in the steady
+/// `wind`; a crosswind the aircraft cannot crab into is refused, naming it.
+fn crab_trim(
+    scenario: &Scenario,
+    aircraft: &SixDofAircraft,
+    flight_path_angle_rad: f64,
+    wind: &Wind,
+    drift: f64,
+) -> Result<SixDofTrimPoint, ParameterError> {
+    let request = SixDofTrimRequest {
+        longitudinal: TrimRequest {
+            speed_mps: scenario.approach.airspeed_mps,
+            flight_path_angle_rad,
+        },
+        sideslip_rad: 0.0,
+        // Relative to the drifting centreline: the air's drift with the ship is no cross
+        // wind to it.
+        wind: Wind {
+            y_mps: wind.y_mps - drift,
+            ..*wind
+        },
+    };
+    let trim = trim_six_dof(aircraft, &request).map_err(|error| {
+        ParameterError::new(
+            "environment.wind",
+            "crosswind_mps",
+            scenario.environment.wind.crosswind_mps,
+            format_args!("a crosswind the aircraft can crab into on the approach ({error})"),
+        )
+    })?;
+    check_crab(scenario, trim.psi_rad.to_degrees())?;
+    Ok(trim)
+}
+
+/// The roll and the yaw law, built.
+type BuiltLaws = (Box<dyn RollLaw>, Box<dyn YawLaw>);
+
+/// The scenario's roll and yaw laws designed on the channels of `aircraft` linearised
+/// at `trim`, their observers' fractional power by tables: eight of them a step (module
+/// docs of `FractionalPower`).
+fn built_laws(
+    scenario: &Scenario,
+    aircraft: &SixDofAircraft,
+    trim: &SixDofTrimPoint,
+) -> Result<BuiltLaws, ParameterError> {
+    let model = linearize_six_dof(aircraft, trim);
+    let (roll_plant, yaw_plant) = channel_plants(&model);
+    let context = |channel, plant| LateralDesignContext {
+        plant,
+        actuator: channel_hardware(aircraft, &model, channel).actuator,
+    };
+    let (roll, yaw) = lateral_laws(scenario);
+    let power = ObserverPower::Tabulated;
+    let roll = roll.build_roll_with(&context(LateralChannel::Roll, roll_plant), power)?;
+    let yaw = yaw.build_yaw_with(&context(LateralChannel::Yaw, yaw_plant), power)?;
+    Ok((roll, yaw))
+}
+
+/// The lineup loop's parameters for `aircraft` and the scenario's approach (checked),
+/// and the heading hold in close to the crab of `trim`.
+fn lineup_and_heading_hold(
+    scenario: &Scenario,
+    aircraft: &SixDofAircraft,
+    trim: &SixDofTrimPoint,
+) -> Result<(LineupParameters, HeadingHold), ParameterError> {
+    let approach = &scenario.approach;
+    let lineup = LineupParameters {
+        gravity_mps2: aircraft.longitudinal().parameters().gravity_mps2,
+        close_natural_frequency_radps: approach.lineup_close_frequency_radps,
+        compensation_station_aft_m: approach.lineup_station_aft_m,
+        ..LineupParameters::default()
+    };
+    lineup.validate()?;
+    let heading_hold = HeadingHold {
+        time_to_go_s: approach.heading_hold_time_to_go_s,
+        blend_s: approach.heading_hold_blend_s,
+        crab_heading_rad: trim.psi_rad,
+        trim_sideslip_rad: trim.sideslip_rad,
+    };
+    Ok((lineup, heading_hold))
+}
+
+/// A surface's trim deflection `trim_rad` and its `actuator`'s position limits (rad).
+fn surface_trim(actuator: &ElevatorActuator, trim_rad: f64) -> SurfaceTrim {
+    SurfaceTrim {
+        trim_rad,
+        min_rad: actuator.min_rad(),
+        max_rad: actuator.max_rad(),
+    }
 }
 
 /// The pitch centre's earth (x, y) at t = 0 that puts the mean aim point at the origin.

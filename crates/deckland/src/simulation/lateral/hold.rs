@@ -6,11 +6,13 @@
 //! without one), held over the frame as the laws' reading is.
 
 use super::forecast::{compensation_station, oscillator_forecast};
-use super::HeldLateral;
-use crate::aircraft::six_dof::SixDofAircraft;
+use super::{HeldLateral, LateralLoop, LateralStreams};
+use crate::aircraft::six_dof::{SixDofAircraft, SixDofState};
 use crate::aircraft::Plant;
-use crate::control::WaveOffDecision;
-use crate::environment::{LateralShipMotionState, Wind};
+use crate::control::{WaveOffDecision, WaveOffParameters};
+use crate::environment::{
+    DeckGeometry, LateralShipMotionState, LateralShipNoise, ShipMotionState, Wind,
+};
 use crate::simulation::blocks::plant::BuiltPlant;
 use crate::simulation::closed_loop::{ClosedLoop, StepStreams};
 use crate::simulation::outer_loops::OuterLoops;
@@ -79,61 +81,33 @@ impl ClosedLoop {
             return None;
         };
         let ship_state = LateralShipMotionState::from_array(&self.layout.ship_lateral.array(x));
+        let longitudinal_ship_state = ShipMotionState::from_array(&self.layout.ship.array(x));
         let deck_view = lateral.deck_view(
             &self.ship,
             &self.deck,
-            &crate::environment::ShipMotionState::from_array(&self.layout.ship.array(x)),
+            &longitudinal_ship_state,
             &ship_state,
             t,
         );
         lateral.step_view = Some(deck_view);
-        lateral.sensor.sample(t, &lateral.ship.outputs(&ship_state));
-        while let Some(measurement) = lateral.sensor.receive(t) {
-            lateral.last_measurement = Some(measurement);
-        }
+        lateral.sense_ship(t, &ship_state);
         let ship_noise = lateral.ship.draw_noise(&mut lateral_streams.ship, dt);
-        // Within a flight computer's frame, the guidance's outputs of the frame's start.
-        if let Some(frames) = &mut lateral.guidance_frames {
-            if let (false, Some((held, fresh_read))) = (frames.starts_frame(t), frames.held) {
-                return Some(LateralStep {
-                    held: HeldLateral {
-                        ship_noise,
-                        deck_view_time_s: t,
-                        ..held
-                    },
-                    fresh_read,
-                    decision: None,
-                });
-            }
+        if let Some(step) = lateral.held_in_frame(t, ship_noise) {
+            return Some(step);
         }
         let state = SixDofAircraft::state_at(x, self.layout.aircraft.offset);
         let (kinematic, kinematics) = aircraft.kinematics(&self.hook, state);
         // Time to go from the range to the mean aim point at the closing speed.
-        let mean_pose = self.ship.pose(
-            &crate::environment::ShipMotionState::from_array(&self.layout.ship.array(x)),
-            self.ship_initial_x_m,
-            t,
-        );
+        let mean_pose = self
+            .ship
+            .pose(&longitudinal_ship_state, self.ship_initial_x_m, t);
         let range_m = mean_pose.pitch_centre_x_m
             - self.deck.landing_point_aft_of_pitch_centre_m
             - kinematics.hook.x_m;
         let time_to_go_s = (range_m / lateral.closure_mps).clamp(0.0, 60.0);
-        // The centreline's point the compensation aims at: the station (the ramp) when
-        // the hook will cross it, then the point abreast of the hook.
-        let (horizon_s, aft_m) = compensation_station(
-            range_m,
-            lateral.closure_mps,
-            lateral.lineup.compensation_station_aft_m,
-        );
-        let forecast_m = match lateral.last_measurement {
-            Some(m) => lateral
-                .forecaster
-                .forecast_m(&self.deck, &m, t, horizon_s, aft_m),
-            None => 0.0,
-        };
-        let bank_noise_rad = lateral.draw_bank_noise(t, &mut lateral_streams.bank);
-        let sideslip_noise_rad = lateral.draw_sideslip_noise(&mut lateral_streams.sideslip);
-        let heading_noise_rad = lateral.draw_bank_noise(t, &mut lateral_streams.heading);
+        let forecast_m = lateral.compensation_forecast_m(&self.deck, range_m, t);
+        let (bank_noise_rad, sideslip_noise_rad, heading_noise_rad) =
+            lateral.draw_read_noise(t, lateral_streams);
         let heading_hold_weight = lateral.heading_hold.weight(time_to_go_s);
         let air = aircraft.air_velocity_trig(
             [state.u_mps, state.v_mps, state.w_mps],
@@ -144,61 +118,142 @@ impl ClosedLoop {
         let decision = if decided || !matches!(self.outer, OuterLoops::Approach { .. }) {
             None
         } else {
-            // In the decision window the compensation is fully in (its window is
-            // longer): the error to the forecast centreline, and its rate, carried to
-            // touchdown by the lineup loop's own response (poles at ω, ζ), not by a
-            // straight drift, which the loop is correcting.
-            let error = kinematics.hook.y_m - lateral.mean_drift_rate_mps * t - forecast_m;
-            let rate = kinematics.velocity.y_mps - lateral.mean_drift_rate_mps;
-            let predicted = oscillator_forecast(
-                error,
-                rate,
-                lateral.lineup.natural_frequency_at(1.0),
-                lateral.lineup.damping_ratio.min(0.99),
-                time_to_go_s,
-            );
-            // What the ship's roll, yaw and sway will add unforeseen by touchdown, from
-            // the latest measurement (stationary before the first).
-            let forecast_sigma_m = match lateral.last_measurement {
-                Some(m) => lateral
-                    .floor
-                    .sigma_m(time_to_go_s + (t - m.time_s).max(0.0)),
-                None => lateral.floor.stationary_sigma_m(),
-            };
-            lateral.wave_off.decide(
+            lateral.wave_off_decision(
                 &self.wave_off,
+                t,
+                (kinematics.hook.y_m, kinematics.velocity.y_mps),
+                forecast_m,
                 time_to_go_s,
-                predicted,
-                forecast_sigma_m,
-                rate,
-                f64::NAN,
             )
         };
+        let held = HeldLateral {
+            ship_noise,
+            bank_noise_rad,
+            sideslip_noise_rad,
+            heading_noise_rad,
+            heading_hold_weight,
+            forecast_m,
+            read: None,
+            deck_view_time_s: t,
+        };
         let step = LateralStep {
-            held: HeldLateral {
-                ship_noise,
-                bank_noise_rad,
-                sideslip_noise_rad,
-                heading_noise_rad,
-                heading_hold_weight,
-                forecast_m,
-                read: None,
-                deck_view_time_s: t,
-            },
-            fresh_read: (
-                state.phi_rad + bank_noise_rad,
-                lateral.heading_hold.yaw_channel_angle_rad(
-                    beta + sideslip_noise_rad,
-                    state.psi_rad + heading_noise_rad,
-                    heading_hold_weight,
-                ),
-            ),
+            held,
+            fresh_read: lateral.fresh_read(&state, beta, &held),
             decision,
         };
         if let Some(frames) = &mut lateral.guidance_frames {
             frames.held = Some((step.held, step.fresh_read));
         }
         Some(step)
+    }
+}
+
+impl LateralLoop {
+    /// Within a flight computer's frame (not at its start), the guidance's outputs of
+    /// the frame's start, with this step's `ship_noise` and view time `t` (s); `None`
+    /// at a frame's start or without frames.
+    fn held_in_frame(&mut self, t: f64, ship_noise: LateralShipNoise) -> Option<LateralStep> {
+        let frames = self.guidance_frames.as_mut()?;
+        let (false, Some((held, fresh_read))) = (frames.starts_frame(t), frames.held) else {
+            return None;
+        };
+        Some(LateralStep {
+            held: HeldLateral {
+                ship_noise,
+                deck_view_time_s: t,
+                ..held
+            },
+            fresh_read,
+            decision: None,
+        })
+    }
+
+    /// The bank, sideslip and heading sensors' noise (rad) read at `t` (s), drawn in
+    /// that order.
+    fn draw_read_noise(&self, t: f64, streams: &mut LateralStreams) -> (f64, f64, f64) {
+        let bank_noise_rad = self.draw_bank_noise(t, &mut streams.bank);
+        let sideslip_noise_rad = self.draw_sideslip_noise(&mut streams.sideslip);
+        let heading_noise_rad = self.draw_bank_noise(t, &mut streams.heading);
+        (bank_noise_rad, sideslip_noise_rad, heading_noise_rad)
+    }
+
+    /// Bank and the yaw law's angle (sideslip, or in close the heading error) as the
+    /// sensors give them for the aircraft's `state` with the air data's sideslip `beta`
+    /// (rad), with the noise and heading-hold weight `held` (rad).
+    fn fresh_read(&self, state: &SixDofState, beta: f64, held: &HeldLateral) -> (f64, f64) {
+        (
+            state.phi_rad + held.bank_noise_rad,
+            self.heading_hold.yaw_channel_angle_rad(
+                beta + held.sideslip_noise_rad,
+                state.psi_rad + held.heading_noise_rad,
+                held.heading_hold_weight,
+            ),
+        )
+    }
+
+    /// Samples the ship's lateral motion (`ship_state`) with the sensor at `t` (s) and
+    /// keeps the latest measurement received.
+    fn sense_ship(&mut self, t: f64, ship_state: &LateralShipMotionState) {
+        self.sensor.sample(t, &self.ship.outputs(ship_state));
+        while let Some(measurement) = self.sensor.receive(t) {
+            self.last_measurement = Some(measurement);
+        }
+    }
+
+    /// The forecast offset (m) of the centreline's point the lineup compensation aims at,
+    /// for the hook `range_m` (m) before the mean aim point at `t` (s): the station (the
+    /// ramp) when the hook will cross it, then the point abreast of the hook; 0 before
+    /// the first measurement.
+    fn compensation_forecast_m(&mut self, deck: &DeckGeometry, range_m: f64, t: f64) -> f64 {
+        let (horizon_s, aft_m) = compensation_station(
+            range_m,
+            self.closure_mps,
+            self.lineup.compensation_station_aft_m,
+        );
+        match self.last_measurement {
+            Some(m) => self.forecaster.forecast_m(deck, &m, t, horizon_s, aft_m),
+            None => 0.0,
+        }
+    }
+
+    /// The lateral wave-off decision at `t` (s) for the hook's cross position and its
+    /// rate (`hook_y`: m, m/s) against the `forecast_m` (m) of the compensation's point,
+    /// `time_to_go_s` (s) before touchdown, in the `window` of the wave-off.
+    fn wave_off_decision(
+        &self,
+        window: &WaveOffParameters,
+        t: f64,
+        (hook_y_m, hook_y_rate_mps): (f64, f64),
+        forecast_m: f64,
+        time_to_go_s: f64,
+    ) -> Option<WaveOffDecision> {
+        // In the decision window the compensation is fully in (its window is
+        // longer): the error to the forecast centreline, and its rate, carried to
+        // touchdown by the lineup loop's own response (poles at ω, ζ), not by a
+        // straight drift, which the loop is correcting.
+        let error = hook_y_m - self.mean_drift_rate_mps * t - forecast_m;
+        let rate = hook_y_rate_mps - self.mean_drift_rate_mps;
+        let predicted = oscillator_forecast(
+            error,
+            rate,
+            self.lineup.natural_frequency_at(1.0),
+            self.lineup.damping_ratio.min(0.99),
+            time_to_go_s,
+        );
+        // What the ship's roll, yaw and sway will add unforeseen by touchdown, from
+        // the latest measurement (stationary before the first).
+        let forecast_sigma_m = match self.last_measurement {
+            Some(m) => self.floor.sigma_m(time_to_go_s + (t - m.time_s).max(0.0)),
+            None => self.floor.stationary_sigma_m(),
+        };
+        self.wave_off.decide(
+            window,
+            time_to_go_s,
+            predicted,
+            forecast_sigma_m,
+            rate,
+            f64::NAN,
+        )
     }
 }
 

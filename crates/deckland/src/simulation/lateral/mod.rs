@@ -36,7 +36,7 @@ pub mod touchdown;
 use std::sync::Arc;
 
 pub use build::lateral_laws;
-pub(crate) use build::{attach, flies_three_dimensional, start};
+pub(crate) use build::{attach, flies_three_dimensional, start, ThreeDimensional};
 pub use signals::LateralSignals;
 pub use touchdown::LateralTouchdown;
 

@@ -15,7 +15,7 @@ use deckland::analysis::Mode;
 use deckland::experiments::reproduction::paper;
 
 use super::Findings;
-use crate::commands::step::ControllerResult;
+use crate::commands::step::flight::ControllerResult;
 
 /// One row of the comparison table.
 #[derive(Debug, Clone)]

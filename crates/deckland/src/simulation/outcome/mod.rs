@@ -460,5 +460,4 @@ pub struct RunSummary {
 }
 
 #[cfg(test)]
-#[path = "outcome_tests.rs"]
 mod tests;

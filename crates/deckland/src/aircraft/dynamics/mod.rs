@@ -368,5 +368,4 @@ impl OdeSystem<{ AircraftState::DIMENSION }> for OpenLoopAircraft {
 }
 
 #[cfg(test)]
-#[path = "dynamics_tests.rs"]
 mod tests;

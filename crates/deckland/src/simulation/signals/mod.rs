@@ -468,5 +468,4 @@ impl RecordedColumn {
 }
 
 #[cfg(test)]
-#[path = "signals_tests.rs"]
 mod tests;

@@ -1,7 +1,6 @@
 //! Tests of the wave-off decision (kept apart so that wave_off.rs stays short).
 use super::heavy_sea::stationary_ramp_height_sigma_m;
 use super::*;
-use crate::control::LateAbortInputs;
 
 fn calm() -> WaveOffInputs {
     WaveOffInputs {
@@ -153,81 +152,6 @@ fn a_decision_point_after_the_window_is_refused_by_name() {
     assert_eq!(error.path, "control.wave_off.decision_time_to_go_s");
 }
 
-fn late() -> LateAbortInputs {
-    LateAbortInputs {
-        time_to_go_s: 2.0,
-        before_ramp: true,
-        predicted_ramp_clearance_m: 3.0,
-        ramp_clearance_sigma_m: 1.0,
-        predicted_touchdown_sink_rate_mps: 4.0,
-    }
-}
-
-/// The late abort's ramp criterion by hand, limit 5 % with σ_c = 1 m: a predicted
-/// clearance of 1.5 m gives Φ(−1.5) = 6.681 % (normal table), above the limit; 1.8 m
-/// gives Φ(−1.8) = 3.593 %, below. Before the commit point (2.5 s to go), past the ramp,
-/// with the criterion off or the wave-off off, nothing is decided.
-#[test]
-fn the_late_abort_engages_on_a_predicted_clearance_below_its_limit_and_not_above() {
-    let p = WaveOffParameters {
-        late_abort_ramp_strike_probability: 0.05,
-        ..WaveOffParameters::default()
-    };
-    let low = LateAbortInputs {
-        predicted_ramp_clearance_m: 1.5,
-        ..late()
-    };
-    let d = p.late_abort(&low).expect("late abort");
-    assert_eq!(d.criterion, WaveOffCriterion::RampStrikeProbability);
-    assert!((d.value - 6.681).abs() < 0.001, "{}", d.value);
-    assert_eq!(d.limit, 5.0);
-    assert_eq!(d.predicted_ramp_clearance_m, 1.5);
-    let clear = LateAbortInputs {
-        predicted_ramp_clearance_m: 1.8,
-        ..late()
-    };
-    assert_eq!(p.late_abort(&clear), None);
-    let before_commit = LateAbortInputs {
-        time_to_go_s: 3.0,
-        ..low
-    };
-    assert_eq!(p.late_abort(&before_commit), None);
-    let past_ramp = LateAbortInputs {
-        before_ramp: false,
-        ..low
-    };
-    assert_eq!(p.late_abort(&past_ramp), None);
-    assert_eq!(WaveOffParameters::default().late_abort(&low), None);
-    let no_wave_off = WaveOffParameters {
-        enabled: false,
-        ..p
-    };
-    assert_eq!(no_wave_off.late_abort(&low), None);
-}
-
-/// The sink criterion at 6.5 m/s: 6.6 m/s engages with its value, 6.4 does not; past
-/// the ramp it still holds (it looks at the touchdown).
-#[test]
-fn the_late_abort_engages_on_a_predicted_sink_rate_above_its_limit() {
-    let p = WaveOffParameters {
-        late_abort_touchdown_sink_rate_mps: 6.5,
-        ..WaveOffParameters::default()
-    };
-    let hard = LateAbortInputs {
-        predicted_touchdown_sink_rate_mps: 6.6,
-        before_ramp: false,
-        ..late()
-    };
-    let d = p.late_abort(&hard).expect("late abort");
-    assert_eq!(d.criterion, WaveOffCriterion::TouchdownSinkRate);
-    assert_eq!((d.value, d.limit), (6.6, 6.5));
-    let soft = LateAbortInputs {
-        predicted_touchdown_sink_rate_mps: 6.4,
-        ..hard
-    };
-    assert_eq!(p.late_abort(&soft), None);
-}
-
 #[test]
 fn the_late_abort_keys_outside_their_range_are_refused_by_name() {
     for (parameters, key) in [
@@ -359,7 +283,7 @@ fn the_heavy_sea_limits_move_in_linearly_with_the_sea_state() {
 /// in `the_probabilities_call_the_wave_off_with_their_value_in_percent`), Φ(−1.67/σ)
 /// with σ = 1.2 m: Φ(−1.392) = 8.20 % (normal table). Below the ordinary 20 %, the paper's
 /// sea goes on; with a heavy-sea limit of 5 % the heavy sea's ship (3.0 m, 2.5°) waves
-/// off on it, and its late abort engages on the same probability after the commit point.
+/// off on it (its late abort: `late_abort.rs`).
 #[test]
 fn a_heavy_sea_waves_off_where_the_papers_sea_goes_on() {
     use crate::environment::{DeckGeometry, ShipMotionParameters};
@@ -385,17 +309,6 @@ fn a_heavy_sea_waves_off_where_the_papers_sea_goes_on() {
     assert_eq!(d.criterion, WaveOffCriterion::RampStrikeProbability);
     assert!((d.value - 8.20).abs() < 0.01, "{}", d.value);
     assert_eq!(d.limit, 5.0);
-    let after_commit = LateAbortInputs {
-        predicted_ramp_clearance_m: 1.67,
-        ramp_clearance_sigma_m: 1.2,
-        ..late()
-    };
-    assert_eq!(p.for_ship(&papers, &deck).late_abort(&after_commit), None);
-    let late_abort = p
-        .for_ship(&heavy, &deck)
-        .late_abort(&after_commit)
-        .expect("late abort");
-    assert!((late_abort.value - 8.20).abs() < 0.01);
 }
 
 /// Each heavy-sea key and the α floor's lead outside their ranges are refused by name

@@ -137,7 +137,7 @@ pub struct WaveOffParameters {
     /// laws have (the approach flies α ≈ 7°); a 40 °/s stabilator needs 0.9 s to reverse
     /// a push-over, in which α falls by 7° (docs/landing-design.md).
     pub min_alpha_deg: f64,
-    /// The wave-off's ramp-strike limit in a heavy sea (–, `heavy_sea.rs`); 0.005; 0 off.
+    /// The wave-off's ramp-strike limit in a heavy sea (–, `wave_off/heavy_sea.rs`); 0.005; 0 off.
     pub heavy_sea_ramp_strike_probability: f64,
     /// The late abort's limit in a heavy sea (–) alike; 0.005; 0 off; [0, 1).
     pub heavy_sea_late_abort_ramp_strike_probability: f64,
@@ -219,57 +219,8 @@ impl WaveOffParameters {
             "decision_time_to_go_s",
             self.decision_time_to_go_s,
         )?;
-        Bounds::closed(0.0, 20.0).check(
-            SECTION,
-            "min_ramp_clearance_m",
-            self.min_ramp_clearance_m,
-        )?;
         let probability = Bounds::closed(0.0, 1.0).exclusive_max();
-        probability.check(
-            SECTION,
-            "max_ramp_strike_probability",
-            self.max_ramp_strike_probability,
-        )?;
-        probability.check(
-            SECTION,
-            "max_hard_landing_probability",
-            self.max_hard_landing_probability,
-        )?;
-        Bounds::positive_up_to(20.0).check(
-            SECTION,
-            "hard_landing_sink_rate_mps",
-            self.hard_landing_sink_rate_mps,
-        )?;
-        Bounds::closed(0.0, 5.0).check(
-            SECTION,
-            "touchdown_sink_rate_sigma_mps",
-            self.touchdown_sink_rate_sigma_mps,
-        )?;
-        Bounds::positive_up_to(20.0).check(
-            SECTION,
-            "max_touchdown_sink_rate_mps",
-            self.max_touchdown_sink_rate_mps,
-        )?;
-        Bounds::positive_up_to(50.0).check(
-            SECTION,
-            "max_glide_path_error_m",
-            self.max_glide_path_error_m,
-        )?;
-        Bounds::positive_up_to(50.0).check(
-            SECTION,
-            "max_glide_path_error_rate_mps",
-            self.max_glide_path_error_rate_mps,
-        )?;
-        Bounds::positive_up_to(30.0).check(
-            SECTION,
-            "max_deck_pitch_deg",
-            self.max_deck_pitch_deg,
-        )?;
-        Bounds::positive_up_to(50.0).check(
-            SECTION,
-            "max_landing_point_displacement_m",
-            self.max_landing_point_displacement_m,
-        )?;
+        self.validate_criteria(SECTION, probability)?;
         Bounds::positive_up_to(30.0).check(SECTION, "climb_rate_mps", self.climb_rate_mps)?;
         Bounds::closed(0.0, 2.0).check(SECTION, "climb_blend_s", self.climb_blend_s)?;
         probability.check(
@@ -291,6 +242,79 @@ impl WaveOffParameters {
         self.validate_heavy_sea(SECTION, probability)?;
         Bounds::closed(0.0, 2.0).check(SECTION, "alpha_lead_s", self.alpha_lead_s)
     }
+
+    /// Checks the limits of the decision's criteria: clearance, the probabilities, the
+    /// sink rates, the glide-path error and its rate, deck pitch and displacement.
+    fn validate_criteria(&self, section: &str, probability: Bounds) -> Result<(), ParameterError> {
+        Bounds::closed(0.0, 20.0).check(
+            section,
+            "min_ramp_clearance_m",
+            self.min_ramp_clearance_m,
+        )?;
+        probability.check(
+            section,
+            "max_ramp_strike_probability",
+            self.max_ramp_strike_probability,
+        )?;
+        probability.check(
+            section,
+            "max_hard_landing_probability",
+            self.max_hard_landing_probability,
+        )?;
+        Bounds::positive_up_to(20.0).check(
+            section,
+            "hard_landing_sink_rate_mps",
+            self.hard_landing_sink_rate_mps,
+        )?;
+        Bounds::closed(0.0, 5.0).check(
+            section,
+            "touchdown_sink_rate_sigma_mps",
+            self.touchdown_sink_rate_sigma_mps,
+        )?;
+        Bounds::positive_up_to(20.0).check(
+            section,
+            "max_touchdown_sink_rate_mps",
+            self.max_touchdown_sink_rate_mps,
+        )?;
+        Bounds::positive_up_to(50.0).check(
+            section,
+            "max_glide_path_error_m",
+            self.max_glide_path_error_m,
+        )?;
+        Bounds::positive_up_to(50.0).check(
+            section,
+            "max_glide_path_error_rate_mps",
+            self.max_glide_path_error_rate_mps,
+        )?;
+        Bounds::positive_up_to(30.0).check(
+            section,
+            "max_deck_pitch_deg",
+            self.max_deck_pitch_deg,
+        )?;
+        Bounds::positive_up_to(50.0).check(
+            section,
+            "max_landing_point_displacement_m",
+            self.max_landing_point_displacement_m,
+        )
+    }
+}
+
+/// The values the wave-off's criteria look at, worked out from its inputs.
+struct WaveOffMeasures {
+    /// Predicted ramp clearance (m).
+    clearance: f64,
+    /// Predicted touchdown sink rate relative to the deck (m/s).
+    sink: f64,
+    /// Forecast deck pitch (deg).
+    pitch_deg: f64,
+    /// Forecast landing point's displacement from its mean height (m).
+    displacement: f64,
+    /// The glide-path error's rate when the error grows, else 0 (m/s).
+    drift: f64,
+    /// Ramp-strike probability (–), 0 with its criterion off.
+    ramp_strike: f64,
+    /// Hard-landing probability (–), 0 with its criterion off.
+    hard_landing: f64,
 }
 
 /// Which criterion called the wave-off.
@@ -402,32 +426,16 @@ impl WaveOffParameters {
         if !self.in_window(inputs.time_to_go_s) {
             return None;
         }
-        let forecast = &inputs.forecast;
-        let clearance =
-            inputs.path_height_at_ramp_m - inputs.glide_path_error_m - forecast.ramp_height_m;
-        let sink = -inputs.hook_climb_rate_mps + forecast.landing_point_climb_rate_mps;
-        let pitch_deg = forecast.pitch_rad.to_degrees();
-        let displacement = forecast.landing_point_height_m - inputs.mean_landing_point_height_m;
-        // The error grows when it and its rate have the same sign.
-        let drift = if inputs.glide_path_error_m * inputs.glide_path_error_rate_mps > 0.0 {
-            inputs.glide_path_error_rate_mps.abs()
-        } else {
-            0.0
-        };
+        let WaveOffMeasures {
+            clearance,
+            sink,
+            pitch_deg,
+            displacement,
+            drift,
+            ramp_strike,
+            hard_landing,
+        } = self.measures(inputs);
         let percent = |x: f64| 100.0 * x;
-        let ramp_strike = if self.max_ramp_strike_probability > 0.0 {
-            super::risk::normal_cdf(-clearance / inputs.ramp_clearance_sigma_m.max(1e-9))
-        } else {
-            0.0
-        };
-        let hard_landing = if self.max_hard_landing_probability > 0.0 {
-            let sigma = forecast
-                .landing_point_climb_rate_sigma_mps
-                .hypot(self.touchdown_sink_rate_sigma_mps);
-            super::risk::normal_cdf((sink - self.hard_landing_sink_rate_mps) / sigma.max(1e-9))
-        } else {
-            0.0
-        };
         let checks = [
             (
                 WaveOffCriterion::RampStrikeProbability,
@@ -490,11 +498,47 @@ impl WaveOffParameters {
                 predicted_ramp_clearance_m: clearance,
             })
     }
+
+    /// What the criteria of [`Self::decide`] compare with their limits, on `inputs`.
+    fn measures(&self, inputs: &WaveOffInputs) -> WaveOffMeasures {
+        let forecast = &inputs.forecast;
+        let clearance =
+            inputs.path_height_at_ramp_m - inputs.glide_path_error_m - forecast.ramp_height_m;
+        let sink = -inputs.hook_climb_rate_mps + forecast.landing_point_climb_rate_mps;
+        let pitch_deg = forecast.pitch_rad.to_degrees();
+        let displacement = forecast.landing_point_height_m - inputs.mean_landing_point_height_m;
+        // The error grows when it and its rate have the same sign.
+        let drift = if inputs.glide_path_error_m * inputs.glide_path_error_rate_mps > 0.0 {
+            inputs.glide_path_error_rate_mps.abs()
+        } else {
+            0.0
+        };
+        let ramp_strike = if self.max_ramp_strike_probability > 0.0 {
+            super::risk::normal_cdf(-clearance / inputs.ramp_clearance_sigma_m.max(1e-9))
+        } else {
+            0.0
+        };
+        let hard_landing = if self.max_hard_landing_probability > 0.0 {
+            let sigma = forecast
+                .landing_point_climb_rate_sigma_mps
+                .hypot(self.touchdown_sink_rate_sigma_mps);
+            super::risk::normal_cdf((sink - self.hard_landing_sink_rate_mps) / sigma.max(1e-9))
+        } else {
+            0.0
+        };
+        WaveOffMeasures {
+            clearance,
+            sink,
+            pitch_deg,
+            displacement,
+            drift,
+            ramp_strike,
+            hard_landing,
+        }
+    }
 }
 
-#[path = "heavy_sea.rs"]
 mod heavy_sea;
 
 #[cfg(test)]
-#[path = "wave_off_tests.rs"]
 mod tests;

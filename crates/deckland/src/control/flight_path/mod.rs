@@ -478,5 +478,4 @@ impl FlightPathGenerator {
 }
 
 #[cfg(test)]
-#[path = "flight_path_tests.rs"]
 mod tests;

@@ -324,5 +324,4 @@ impl DeckMotionEstimator {
 }
 
 #[cfg(test)]
-#[path = "deck_motion_tests.rs"]
 mod tests;

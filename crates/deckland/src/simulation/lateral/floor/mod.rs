@@ -122,5 +122,4 @@ pub fn aim_point_sensitivities(deck: &DeckGeometry) -> [f64; 3] {
 }
 
 #[cfg(test)]
-#[path = "floor_tests.rs"]
 mod tests;

@@ -172,5 +172,4 @@ fn simpson(a: f64, b: f64, intervals: usize, f: impl Fn(f64) -> f64) -> f64 {
 }
 
 #[cfg(test)]
-#[path = "deck_floor_tests.rs"]
 mod tests;
