@@ -128,7 +128,7 @@ pub struct OutputDir {
     written: Mutex<Vec<String>>,
     /// The folder, held open with an exclusive lock for the command's life
     /// ([`lock_folder`]); `None` where the file system has no locks.
-    _lock: Option<fs::File>,
+    _lock: Option<FolderLock>,
 }
 
 impl OutputDir {
@@ -147,7 +147,7 @@ impl OutputDir {
         Ok(output)
     }
 
-    fn new(command: &str, path: PathBuf, lock: Option<fs::File>) -> Self {
+    fn new(command: &str, path: PathBuf, lock: Option<FolderLock>) -> Self {
         Self {
             path,
             command: command.to_owned(),
@@ -188,7 +188,7 @@ impl OutputDir {
         command: &str,
         path: &Path,
         force: bool,
-        lock: Option<fs::File>,
+        lock: Option<FolderLock>,
     ) -> Result<Self> {
         let shown = path.display();
         // Nothing is changed in the folder until it is accepted.
@@ -427,28 +427,35 @@ fn read_manifest(folder: &Path) -> Option<(String, Vec<String>)> {
 /// when the command ends, even killed), so that two commands never write one folder: the
 /// second is refused, naming it. `None` where the file system has no locks.
 #[cfg(unix)]
-fn lock_folder(folder: &Path) -> Result<Option<fs::File>> {
+fn lock_folder(folder: &Path) -> Result<Option<FolderLock>> {
+    use nix::errno::Errno;
+    use nix::fcntl::{Flock, FlockArg};
     let handle = fs::File::open(folder)
         .with_context(|| format!("cannot open output folder {}", folder.display()))?;
-    match handle.try_lock() {
-        Ok(()) => Ok(Some(handle)),
-        Err(fs::TryLockError::WouldBlock) => bail!(
+    match Flock::lock(handle, FlockArg::LockExclusiveNonblock) {
+        Ok(lock) => Ok(Some(lock)),
+        Err((_, Errno::EWOULDBLOCK)) => bail!(
             "output folder {} is in use by another deckland command (it holds the folder's \
              lock); wait for it to end or choose another --out",
             folder.display()
         ),
-        Err(fs::TryLockError::Error(error)) if error.kind() == std::io::ErrorKind::Unsupported => {
-            Ok(None)
-        }
-        Err(fs::TryLockError::Error(error)) => {
-            Err(error).with_context(|| format!("cannot lock output folder {}", folder.display()))
-        }
+        Err((_, Errno::ENOTSUP | Errno::ENOLCK)) => Ok(None),
+        Err((_, errno)) => Err(std::io::Error::from(errno))
+            .with_context(|| format!("cannot lock output folder {}", folder.display())),
     }
 }
 
+/// An output folder held open with its lock.
+#[cfg(unix)]
+type FolderLock = nix::fcntl::Flock<fs::File>;
+
+/// No lock off Unix.
+#[cfg(not(unix))]
+type FolderLock = ();
+
 /// Folders are not locked off Unix (a folder cannot be opened as a file there).
 #[cfg(not(unix))]
-fn lock_folder(_folder: &Path) -> Result<Option<fs::File>> {
+fn lock_folder(_folder: &Path) -> Result<Option<FolderLock>> {
     Ok(None)
 }
 
