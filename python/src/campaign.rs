@@ -19,7 +19,7 @@ use deckland::monte_carlo::{
     flies_three_dimensional_approach, lateral_statistics, merge_shards, parse_runs_csv,
     run_campaign, runs_csv_text, CampaignResult, CampaignSpec, CampaignSummary, LateralRow,
     LateralStatistics, RunRecord, RunRow, Shard, ShardIdentity, ShardRows, TrapSheetStatistics,
-    DEFAULT_TARGET_RATE, SHARD_SCHEME,
+    DEFAULT_TARGET_RATE, MAX_CAMPAIGN_SEED, MAX_THREADS, SHARD_SCHEME,
 };
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -127,12 +127,14 @@ pub fn campaign<'py>(
 ) -> PyResult<(Bound<'py, PyDict>, Py<PyAny>)> {
     let runs = whole("runs", runs, 1, MAX_RUNS)?;
     let seed = match seed {
-        Some(seed) => whole("seed", seed, 0, u64::MAX)?,
+        Some(seed) => whole("seed", seed, 0, MAX_CAMPAIGN_SEED)?,
         None => scenario.scenario.seed,
     };
     let threads = match threads {
-        Some(threads) => whole("threads", threads, 1, 1024)? as usize,
-        None => std::thread::available_parallelism().map_or(1, |n| n.get()),
+        Some(threads) => whole("threads", threads, 1, MAX_THREADS)? as usize,
+        None => {
+            std::thread::available_parallelism().map_or(1, |n| n.get().min(MAX_THREADS as usize))
+        }
     };
     let mut spec = CampaignSpec::new(scenario.scenario, runs, seed);
     if compare {
@@ -235,12 +237,14 @@ pub fn campaign_shard(
     let runs = whole("runs", runs, 1, MAX_RUNS)?;
     let count = whole("count", count, 1, MAX_RUNS)?;
     let index = whole("index", index, 0, count - 1)?;
-    let shard = Shard::new(index, count).map_err(value_error)?;
+    let shard = Shard::new(index, count)
+        .and_then(|shard| shard.of_runs(runs))
+        .map_err(value_error)?;
     let seed = match seed {
-        Some(seed) => whole("seed", seed, 0, u64::MAX)?,
+        Some(seed) => whole("seed", seed, 0, MAX_CAMPAIGN_SEED)?,
         None => scenario.scenario.seed,
     };
-    let threads = whole("threads", threads, 1, 1024)? as usize;
+    let threads = whole("threads", threads, 1, MAX_THREADS)? as usize;
     let mut spec = CampaignSpec::new(scenario.scenario, runs, seed);
     if compare {
         spec = spec.comparing_pitch_controllers();

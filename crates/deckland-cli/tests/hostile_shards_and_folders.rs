@@ -608,3 +608,64 @@ fn r2_two_writers_to_one_folder_one_wins_and_nothing_is_lost() {
     }
     let _ = fs::remove_dir_all(&dir);
 }
+
+/// Regression (issue 45, R7): `campaign --runs 4 --shard 0/100000` was accepted, and
+/// merge then refused the shard it wrote. A campaign of N runs has at most N shards,
+/// for `campaign` as for `merge`.
+#[test]
+fn r7_a_shard_count_above_the_run_count_is_refused_before_flying() {
+    let dir = scratch("issue-45-r7");
+    let scenario = short_dispersed_scenario(&dir);
+    for shard in ["0/100000", "0/5", "4/5"] {
+        let out = dir.join("out");
+        let output = short_campaign(&scenario, &out, &["--shard", shard]);
+        assert_refused(&output, 1, &[shard, "at most the number of runs (4)"]);
+        assert!(!out.exists(), "{shard}: nothing is written");
+    }
+    // Four shards of four runs fly and merge.
+    let shards: Vec<PathBuf> = (0..4)
+        .map(|k| {
+            let out = dir.join(format!("s{k}"));
+            assert_success(&short_campaign(
+                &scenario,
+                &out,
+                &["--shard", &format!("{k}/4")],
+            ));
+            out
+        })
+        .collect();
+    assert_success(&merge(&shards, &dir));
+    let _ = fs::remove_dir_all(&dir);
+}
+
+/// Regression (issue 45, R8): the CLI allowed seeds to 2⁶³ − 1 and 256 threads, Python
+/// 2⁶⁴ − 1 and 1024; the CLI's range is the library's, which Python now shares.
+#[test]
+fn r8_seed_and_thread_ranges_are_the_librarys() {
+    assert_eq!(
+        deckland::monte_carlo::MAX_THREADS,
+        256,
+        "--threads says 1 to 256 in its help"
+    );
+    assert_eq!(deckland::monte_carlo::MAX_CAMPAIGN_SEED, (1 << 63) - 1);
+    let dir = scratch("issue-45-r8");
+    let scenario = short_dispersed_scenario(&dir);
+    let output = deckland_within(
+        &["campaign", &scenario, "--runs", "1", "--threads", "257"],
+        60,
+    );
+    assert_refused(&output, 2, &["--threads", "257"]);
+    let output = deckland_within(
+        &[
+            "campaign",
+            &scenario,
+            "--runs",
+            "1",
+            "--seed",
+            "9223372036854775808",
+        ],
+        60,
+    );
+    assert_refused(&output, 2, &["--seed"]);
+    let _ = fs::remove_dir_all(&dir);
+}
