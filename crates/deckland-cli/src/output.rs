@@ -477,10 +477,11 @@ fn is_output_file_name(name: &str) -> bool {
 }
 
 /// The files of the earlier run in `folder` that `--force` replaces: each name on its
-/// list that exists must be a regular file named as deckland's outputs are
-/// ([`is_output_file_name`]); anything else (a folder such as a partitioned
-/// `runs.parquet`, a link, a user's file added to the list) refuses the whole command,
-/// before any file is removed. Names that are gone are skipped.
+/// list that exists must be a regular file (or a link, which is removed itself and never
+/// followed) named as deckland's outputs are ([`is_output_file_name`]); anything else
+/// (a folder such as a partitioned `runs.parquet`, a user's file added to the list)
+/// refuses the whole command, before any file is removed. Names that are gone are
+/// skipped.
 fn earlier_results(folder: &Path, listed: &[String]) -> Result<Vec<PathBuf>> {
     let mut files = Vec::new();
     for name in listed.iter().filter(|n| is_plain_file_name(n)) {
@@ -492,10 +493,11 @@ fn earlier_results(folder: &Path, listed: &[String]) -> Result<Vec<PathBuf>> {
                 return Err(error).with_context(|| format!("cannot inspect {}", file.display()))
             }
         };
-        if !metadata.is_file() {
+        // A link is removed itself, never followed (issue 28, D7): its target is safe.
+        if !metadata.is_file() && !metadata.is_symlink() {
             bail!(
                 "--force refused, nothing removed: {} is listed in {MANIFEST} as an earlier \
-                 result but is not a regular file (a folder or a link); move it away or \
+                 result but is not a file (a folder, a device, a pipe); move it away or \
                  choose another --out",
                 file.display()
             );
