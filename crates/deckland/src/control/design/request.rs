@@ -119,7 +119,7 @@ impl Default for DesignRequest {
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum DesignError {
     /// A request or hardware value is NaN or out of its range.
-    #[error("design parameter `{field}` = {value} is out of range: expected {expected}")]
+    #[error("design parameter `{field}` = {} is out of range: expected {expected}", crate::parameters::readable_number(*value))]
     InvalidParameter {
         /// The parameter's name.
         field: &'static str,
