@@ -207,7 +207,7 @@ def campaign_shard(
     index: int,
     count: int,
     seed: Optional[int] = None,
-    threads: int = 1,
+    threads: Optional[int] = None,
     compare: bool = False,
 ) -> str: ...
 def merge_shards_text(shards: List[str]) -> Tuple[Dict[str, np.ndarray], Dict[str, Any]]: ...

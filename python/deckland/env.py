@@ -19,6 +19,7 @@ cascade would take now (the autopilot as a policy).
 from __future__ import annotations
 
 import copy
+import numbers
 from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 import gymnasium
@@ -78,6 +79,41 @@ def longitudinal_scenario() -> Scenario:
     return scenario
 
 
+def _whole(name: str, value: Any) -> int:
+    """``value`` as an int, refusing what Python would convert without a word: a bool
+    (an int to Python), a float such as 1.5, a string (issue 45, R9)."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise TypeError(f"`{name}` = {value!r} is not allowed: expected a whole number (an int, not a bool, float or string)")
+    return int(value)
+
+
+def _real(name: str, value: Any) -> float:
+    """``value`` as a float, refusing a bool, a complex or a string."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        raise TypeError(f"`{name}` = {value!r} is not allowed: expected a real number (an int or float, not a bool, complex or string)")
+    return float(value)
+
+
+def _flag(name: str, value: Any) -> bool:
+    """``value`` as a bool, refusing anything but True or False (``"no"`` is truthy)."""
+    if not isinstance(value, (bool, np.bool_)):
+        raise TypeError(f"`{name}` = {value!r} is not allowed: expected True or False")
+    return bool(value)
+
+
+def _check_reward_keys(rewards: Optional[Dict[str, Any]], known: Dict[str, Any]) -> None:
+    """Refuses a key of ``rewards`` that ``known`` does not have (it would be ignored)."""
+    if rewards is None:
+        return
+    if not isinstance(rewards, dict):
+        raise TypeError(f"`rewards` = {rewards!r} is not allowed: expected a dict or None")
+    unknown = [key for key in rewards if key not in known]
+    if unknown:
+        raise ValueError(
+            f"`rewards` has the unknown key {unknown[0]!r}: expected keys of {', '.join(known)}"
+        )
+
+
 def _options(
     scenario: Optional[Scenario],
     control: str,
@@ -89,21 +125,23 @@ def _options(
     rewards: Optional[Dict[str, Any]],
     reward: str,
     forecast: bool,
+    known_rewards: Optional[Dict[str, Any]] = None,
 ) -> Tuple[Any, ...]:
+    _check_reward_keys(rewards, REWARDS if known_rewards is None else known_rewards)
     table = dict(REWARDS)
     if rewards is not None:
         table.update(rewards)
     return (
         longitudinal_scenario() if scenario is None else scenario,
         control,
-        float(control_interval_s),
-        float(pitch_command_span_rad),
-        None if thrust_span_n is None else float(thrust_span_n),
-        float(elevator_span_rad),
-        float(climb_rate_span_mps),
+        _real("control_interval_s", control_interval_s),
+        _real("pitch_command_span_rad", pitch_command_span_rad),
+        None if thrust_span_n is None else _real("thrust_span_n", thrust_span_n),
+        _real("elevator_span_rad", elevator_span_rad),
+        _real("climb_rate_span_mps", climb_rate_span_mps),
         table,
         reward,
-        bool(forecast),
+        _flag("forecast", forecast),
     )
 
 
@@ -206,6 +244,8 @@ class CarrierLandingEnv(gymnasium.Env):
         """Starts an episode: ``seed`` flies the scenario with that seed (every random
         stream's); without one the next seed is drawn from the environment's generator,
         itself seeded by the last ``reset(seed=…)``."""
+        if seed is not None:
+            seed = _whole("seed", seed)
         super().reset(seed=seed)
         if seed is None:
             seed = _draw_seed(self.np_random)
@@ -339,6 +379,7 @@ class CarrierLandingVecEnv(VectorEnv):
         """Checks the options, builds the core (``core(max_episode_steps)``) and reads
         its description."""
         _check_render_mode(render_mode)
+        num_envs = _whole("num_envs", num_envs)
         if max_episode_steps is not None and not (isinstance(max_episode_steps, (int, np.integer)) and max_episode_steps > 0):
             raise ValueError(
                 f"`max_episode_steps` = {max_episode_steps!r} is not allowed: expected a positive integer or None"
@@ -377,10 +418,12 @@ class CarrierLandingVecEnv(VectorEnv):
     ) -> Tuple[np.ndarray, Dict[str, Any]]:
         if seed is None:
             seeds: List[Optional[int]] = [None] * self.num_envs
-        elif isinstance(seed, (int, np.integer)):
+        elif isinstance(seed, (int, np.integer)) and not isinstance(seed, (bool, np.bool_)):
             seeds = [int(seed) + i for i in range(self.num_envs)]
+        elif isinstance(seed, (str, bytes, dict)) or not isinstance(seed, Sequence) and not isinstance(seed, np.ndarray):
+            raise TypeError(f"`seed` = {seed!r} is not allowed: expected an int, None or {self.num_envs} seeds")
         else:
-            seeds = list(seed)
+            seeds = [None if s is None else _whole(f"seed[{i}]", s) for i, s in enumerate(seed)]
             if len(seeds) != self.num_envs:
                 raise ValueError(
                     f"`seed` = {seed!r} is not allowed: expected an int, None or {self.num_envs} seeds"

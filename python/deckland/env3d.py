@@ -35,8 +35,10 @@ from .env import (
     REWARDS,
     CarrierLandingEnv,
     CarrierLandingVecEnv,
+    _check_reward_keys,
     _check_render_mode,
     _options,
+    _real,
     _spaces,
 )
 
@@ -83,10 +85,10 @@ def _lateral_spans(
     rudder_span_rad: float,
 ) -> tuple:
     return (
-        float(bank_command_span_rad),
-        float(sideslip_command_span_rad),
-        float(aileron_span_rad),
-        float(rudder_span_rad),
+        _real("bank_command_span_rad", bank_command_span_rad),
+        _real("sideslip_command_span_rad", sideslip_command_span_rad),
+        _real("aileron_span_rad", aileron_span_rad),
+        _real("rudder_span_rad", rudder_span_rad),
     )
 
 
@@ -140,6 +142,7 @@ class CarrierLanding3DEnv(CarrierLandingEnv):
         )
         self.control = control
         self.render_mode = render_mode
+        _check_reward_keys(rewards, REWARDS_3D)
         table = dict(REWARDS_3D)
         if rewards is not None:
             table.update(rewards)
@@ -155,6 +158,7 @@ class CarrierLanding3DEnv(CarrierLandingEnv):
                 table,
                 reward,
                 forecast,
+                REWARDS_3D,
             ),
             lateral_spans=_lateral_spans(
                 bank_command_span_rad, sideslip_command_span_rad, aileron_span_rad, rudder_span_rad
@@ -192,6 +196,7 @@ class CarrierLanding3DVecEnv(CarrierLandingVecEnv):
         render_mode: Optional[str] = None,
         max_episode_steps: Optional[int] = MAX_EPISODE_STEPS,
     ) -> None:
+        _check_reward_keys(rewards, REWARDS_3D)
         table = dict(REWARDS_3D)
         if rewards is not None:
             table.update(rewards)
@@ -213,6 +218,7 @@ class CarrierLanding3DVecEnv(CarrierLandingVecEnv):
                     table,
                     reward,
                     forecast,
+                    REWARDS_3D,
                 ),
                 steps,
                 lateral_spans=_lateral_spans(

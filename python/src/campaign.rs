@@ -19,7 +19,7 @@ use deckland::monte_carlo::{
     flies_three_dimensional_approach, lateral_statistics, merge_shards, parse_runs_csv,
     run_campaign, runs_csv_text, CampaignResult, CampaignSpec, CampaignSummary, LateralRow,
     LateralStatistics, RunRecord, RunRow, Shard, ShardIdentity, ShardRows, TrapSheetStatistics,
-    DEFAULT_TARGET_RATE, SHARD_SCHEME,
+    DEFAULT_TARGET_RATE, MAX_CAMPAIGN_SEED, MAX_THREADS, SHARD_SCHEME,
 };
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -27,7 +27,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::columns::Columns;
 use crate::convert::to_python;
-use crate::errors::{argument_error, value_error};
+use crate::errors::{argument_error, strict_integer, value_error};
 use crate::scenario::Scenario;
 
 /// What the summary holds: the keys of the CLI's `summary.json` (the library's
@@ -120,19 +120,23 @@ fn whole(name: &str, value: i128, min: i128, max: u64) -> PyResult<u64> {
 pub fn campaign<'py>(
     py: Python<'py>,
     scenario: PyRef<'_, Scenario>,
-    runs: i128,
-    seed: Option<i128>,
-    threads: Option<i128>,
+    runs: &Bound<'_, PyAny>,
+    seed: Option<&Bound<'_, PyAny>>,
+    threads: Option<&Bound<'_, PyAny>>,
     compare: bool,
 ) -> PyResult<(Bound<'py, PyDict>, Py<PyAny>)> {
-    let runs = whole("runs", runs, 1, MAX_RUNS)?;
+    let runs = whole("runs", strict_integer("runs", runs)?, 1, MAX_RUNS)?;
+    let seed = seed.map(|s| strict_integer("seed", s)).transpose()?;
+    let threads = threads.map(|t| strict_integer("threads", t)).transpose()?;
     let seed = match seed {
-        Some(seed) => whole("seed", seed, 0, u64::MAX)?,
+        Some(seed) => whole("seed", seed, 0, MAX_CAMPAIGN_SEED)?,
         None => scenario.scenario.seed,
     };
     let threads = match threads {
-        Some(threads) => whole("threads", threads, 1, 1024)? as usize,
-        None => std::thread::available_parallelism().map_or(1, |n| n.get()),
+        Some(threads) => whole("threads", threads, 1, MAX_THREADS)? as usize,
+        None => {
+            std::thread::available_parallelism().map_or(1, |n| n.get().min(MAX_THREADS as usize))
+        }
     };
     let mut spec = CampaignSpec::new(scenario.scenario, runs, seed);
     if compare {
@@ -220,27 +224,38 @@ struct ShardPayload {
 /// Flies shard `index`/`count` of the campaign of `runs` approaches of `scenario` (the
 /// runs i with i mod count = index); returns it as JSON text for `merge_shards`.
 #[pyfunction]
-#[pyo3(signature = (scenario, runs, index, count, seed = None, threads = 1, compare = false))]
+#[pyo3(signature = (scenario, runs, index, count, seed = None, threads = None, compare = false))]
 #[allow(clippy::too_many_arguments)]
 pub fn campaign_shard(
     py: Python<'_>,
     scenario: PyRef<'_, Scenario>,
-    runs: i128,
-    index: i128,
-    count: i128,
-    seed: Option<i128>,
-    threads: i128,
+    runs: &Bound<'_, PyAny>,
+    index: &Bound<'_, PyAny>,
+    count: &Bound<'_, PyAny>,
+    seed: Option<&Bound<'_, PyAny>>,
+    threads: Option<&Bound<'_, PyAny>>,
     compare: bool,
 ) -> PyResult<String> {
-    let runs = whole("runs", runs, 1, MAX_RUNS)?;
+    let runs = whole("runs", strict_integer("runs", runs)?, 1, MAX_RUNS)?;
+    let (index, count) = (
+        strict_integer("index", index)?,
+        strict_integer("count", count)?,
+    );
+    let seed = seed.map(|s| strict_integer("seed", s)).transpose()?;
+    let threads = threads
+        .map(|t| strict_integer("threads", t))
+        .transpose()?
+        .unwrap_or(1);
     let count = whole("count", count, 1, MAX_RUNS)?;
     let index = whole("index", index, 0, count - 1)?;
-    let shard = Shard::new(index, count).map_err(value_error)?;
+    let shard = Shard::new(index, count)
+        .and_then(|shard| shard.of_runs(runs))
+        .map_err(value_error)?;
     let seed = match seed {
-        Some(seed) => whole("seed", seed, 0, u64::MAX)?,
+        Some(seed) => whole("seed", seed, 0, MAX_CAMPAIGN_SEED)?,
         None => scenario.scenario.seed,
     };
-    let threads = whole("threads", threads, 1, 1024)? as usize;
+    let threads = whole("threads", threads, 1, MAX_THREADS)? as usize;
     let mut spec = CampaignSpec::new(scenario.scenario, runs, seed);
     if compare {
         spec = spec.comparing_pitch_controllers();

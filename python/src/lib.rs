@@ -65,6 +65,7 @@ mod _deckland {
         module.add("INPUT_NAMES", deckland::aircraft::INPUT_NAMES.to_vec())?;
         module.add("MAX_SEED", deckland::scenario::MAX_SEED)?;
         module.add("MAX_RUNS", super::campaign::MAX_RUNS)?;
+        module.add("MAX_THREADS", deckland::monte_carlo::MAX_THREADS)?;
         Ok(())
     }
 }

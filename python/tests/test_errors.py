@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 
 import deckland
@@ -141,3 +142,59 @@ def test_a_pitch_law_that_raises_stops_the_step_with_its_exception():
 def test_an_action_of_the_wrong_type_raises_type_error():
     with pytest.raises(TypeError, match="action must be None or a dict"):
         deckland.Approach().step([0.1, 2.0])
+
+
+def _env3d():
+    return pytest.importorskip("deckland.env3d")
+
+
+@pytest.mark.parametrize(
+    "make, name",
+    [
+        (lambda m: m.CarrierLanding3DEnv(forecast="no"), "forecast"),
+        (lambda m: m.CarrierLanding3DEnv(forecast=1), "forecast"),
+        (lambda m: m.CarrierLanding3DEnv(rewards={"trapp": 10.0}), "trapp"),
+        (lambda m: m.CarrierLanding3DEnv(control_interval_s="0.02"), "control_interval_s"),
+        (lambda m: m.CarrierLanding3DEnv(bank_command_span_rad=True), "bank_command_span_rad"),
+        (lambda m: m.CarrierLanding3DVecEnv(num_envs=1.5), "num_envs"),
+        (lambda m: m.CarrierLanding3DVecEnv(num_envs=True), "num_envs"),
+        (lambda m: m.CarrierLanding3DVecEnv(num_envs=2, rewards={"trapp": 10.0}), "trapp"),
+        (lambda m: deckland.campaign(deckland.Scenario.default(), runs=True), "runs"),
+        (lambda m: deckland.campaign(deckland.Scenario.default(), 2, seed=1.5), "seed"),
+        (lambda m: deckland._deckland.campaign_shard(deckland.Scenario.default(), 4, True, 2), "index"),
+    ],
+)
+def test_r9_arguments_python_would_convert_are_refused_naming_them(make, name):
+    """Regression (issue 45, R9): the 3-D environment converted bad arguments without a
+    word: ``forecast="no"`` turned the forecast on, an unknown reward key was ignored,
+    ``num_envs=1.5`` made 1, ``campaign(runs=True)`` flew 1 run."""
+    with pytest.raises((TypeError, ValueError)) as raised:
+        make(_env3d())
+    assert name in str(raised.value)
+
+
+def test_r9_a_complex_or_bool_action_and_fractional_seeds_are_refused():
+    """Regression (issue 45, R9): a complex action lost its imaginary part and
+    ``reset(seed=[1.5, 2])`` flew seeds [1, 2]."""
+    env3d = _env3d()
+    env = env3d.CarrierLanding3DEnv()
+    env.reset(seed=1)
+    width = env.action_space.shape[0]
+    for action in (
+        np.zeros(width, dtype=np.complex128) + 0.1j,
+        [0.0] * (width - 1) + [0.5 + 0.5j],
+        np.zeros(width, dtype=bool),
+        [False] * width,
+        "0" * width,
+    ):
+        with pytest.raises((TypeError, ValueError), match="action"):
+            env.step(action)
+    env.step(np.zeros(width))  # a real action still steps
+    with pytest.raises(TypeError, match="seed"):
+        env.reset(seed=1.5)
+    envs = env3d.CarrierLanding3DVecEnv(num_envs=2)
+    for seeds in ([1.5, 2], [True, 2], "12", 1.0, True):
+        with pytest.raises(TypeError, match="seed"):
+            envs.reset(seed=seeds)
+    envs.reset(seed=[1, 2])
+    envs.reset(seed=np.array([3, 4]))

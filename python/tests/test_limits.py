@@ -176,3 +176,47 @@ def test_a_tampered_shard_raises_value_error_and_never_panics(shard_texts):
         except BaseException as error:  # PanicException is a BaseException
             pytest.fail(f"{name}: {type(error).__name__}: {error}")
     assert tried > 100
+
+
+def test_r5_a_vector_env_the_memory_cannot_hold_raises_memory_error_naming_num_envs():
+    """Regression (issue 45, R5): ``num_envs`` up to 100 000 (about 14 GB) was accepted
+    and the interpreter aborted out of memory (SIGABRT); now a count beyond half the
+    available memory raises ``MemoryError`` at construction, naming ``num_envs``."""
+    env3d = pytest.importorskip("deckland.env3d")
+    available = None
+    try:
+        with open("/proc/meminfo") as meminfo:
+            for line in meminfo:
+                if line.startswith("MemAvailable:"):
+                    available = int(line.split()[1]) * 1024
+    except OSError:
+        pytest.skip("no /proc/meminfo: only the count's limit applies")
+    if available is None or available // 2 >= 100_000 * 192 * 1024:
+        pytest.skip("this machine holds 100 000 environments")
+    with pytest.raises(MemoryError, match="`num_envs` = 100000"):
+        env3d.CarrierLanding3DVecEnv(num_envs=100_000)
+    with pytest.raises(ValueError, match=r"`num_envs` = 100001 is not allowed: expected an integer in \[1, 100000\]"):
+        env3d.CarrierLanding3DVecEnv(num_envs=100_001)
+
+
+def test_r8_seeds_and_threads_have_the_clis_range():
+    """Regression (issue 45, R8): Python took seeds to 2⁶⁴ − 1 and 1024 threads where the
+    CLI takes 2⁶³ − 1 and 256, so a campaign could not be flown again from the CLI."""
+    assert core.MAX_SEED == 2**63 - 1
+    assert core.MAX_THREADS == 256
+    scenario = deckland.Scenario.default()
+    for call in (
+        lambda **kw: deckland.campaign(scenario, 1, **kw),
+        lambda **kw: core.campaign_shard(scenario, 2, 0, 2, **kw),
+    ):
+        with pytest.raises(ValueError, match=f"`seed` = {2**63} is not allowed"):
+            call(seed=2**63)
+        with pytest.raises(ValueError, match="`threads` = 257 is not allowed"):
+            call(threads=257)
+
+
+def test_r7_a_shard_count_above_the_run_count_is_refused():
+    """Regression (issue 45, R7): 4 runs in 100 000 shards were flown, then refused by
+    merge; a campaign of N runs has at most N shards."""
+    with pytest.raises(ValueError, match="at most the number of runs"):
+        core.campaign_shard(deckland.Scenario.default(), 4, 0, 5)

@@ -8,7 +8,9 @@
 //! the earlier run are removed, so no other command's results stay mixed with the new
 //! ones — and never touches a file deckland did not write. A folder that holds files but
 //! no list (`/dev`, a home folder, results of another tool) is refused even with
-//! `--force`.
+//! `--force`. Every listed name is checked before any is removed ([`earlier_results`]):
+//! a refused `--force` removes nothing. A command holds an exclusive lock on its folder
+//! for its life ([`lock_folder`]): a second command writing the same folder is refused.
 //!
 //! Every file is written atomically: to a temporary file
 //! `.partial-<pid>-<token>.deckland-<name>` in the same folder (`<token>` 16 random hex
@@ -124,6 +126,9 @@ pub struct OutputDir {
     command: String,
     /// The files written by this run, in order (the manifest's lines).
     written: Mutex<Vec<String>>,
+    /// The folder, held open with an exclusive lock for the command's life
+    /// ([`lock_folder`]); `None` where the file system has no locks.
+    _lock: Option<FolderLock>,
 }
 
 impl OutputDir {
@@ -142,11 +147,12 @@ impl OutputDir {
         Ok(output)
     }
 
-    fn new(command: &str, path: PathBuf) -> Self {
+    fn new(command: &str, path: PathBuf, lock: Option<FolderLock>) -> Self {
         Self {
             path,
             command: command.to_owned(),
             written: Mutex::new(Vec::new()),
+            _lock: lock,
         }
     }
 
@@ -157,7 +163,12 @@ impl OutputDir {
             Err(error) if error.kind() == std::io::ErrorKind::NotFound => {
                 fs::create_dir_all(path)
                     .with_context(|| format!("cannot create output folder {shown}"))?;
-                return Ok(Self::new(command, path.to_path_buf()));
+                // Another command may have created it meanwhile: the lock decides.
+                let lock = lock_folder(path)?;
+                if fs::read_dir(path).is_ok_and(|mut e| e.next().is_none()) {
+                    return Ok(Self::new(command, path.to_path_buf(), lock));
+                }
+                return Self::prepare_existing(command, path, force, lock);
             }
             Err(error) => {
                 return Err(error).with_context(|| format!("cannot use --out {shown}"));
@@ -167,6 +178,19 @@ impl OutputDir {
             bail!("--out {shown} exists and is not a folder");
         }
         check_owned_by_user(path, &metadata)?;
+        let lock = lock_folder(path)?;
+        Self::prepare_existing(command, path, force, lock)
+    }
+
+    /// Accepts the existing folder `path`, locked by this command: empty, or (with
+    /// `force`) holding an earlier deckland run's results, which are removed.
+    fn prepare_existing(
+        command: &str,
+        path: &Path,
+        force: bool,
+        lock: Option<FolderLock>,
+    ) -> Result<Self> {
+        let shown = path.display();
         // Nothing is changed in the folder until it is accepted.
         let stale = stale_temporary_files(path);
         let entries: Vec<String> = fs::read_dir(path)
@@ -178,7 +202,7 @@ impl OutputDir {
         // Empty, or holding only the list of a run that wrote nothing: use it.
         if entries.iter().all(|name| name == MANIFEST) {
             remove_files(&stale);
-            return Ok(Self::new(command, path.to_path_buf()));
+            return Ok(Self::new(command, path.to_path_buf(), lock));
         }
         let Some((previous_command, previous_files)) = read_manifest(path) else {
             bail!(
@@ -193,24 +217,23 @@ impl OutputDir {
                  {previous_command}`; choose another with --out or pass --force to replace them"
             );
         }
+        // Every name is checked before any is removed: a refused --force removes nothing.
+        let earlier = earlier_results(path, &previous_files)?;
         remove_files(&stale);
         // Remove the earlier run's own files (and only those): its results must not stay
         // mixed with the new ones.
-        for name in previous_files.iter().filter(|n| is_plain_file_name(n)) {
-            match fs::remove_file(path.join(name)) {
+        for file in &earlier {
+            match fs::remove_file(file) {
                 Ok(()) => {}
                 Err(error) if error.kind() == std::io::ErrorKind::NotFound => {}
                 Err(error) => {
                     return Err(error).with_context(|| {
-                        format!(
-                            "cannot remove the earlier result {}",
-                            path.join(name).display()
-                        )
+                        format!("cannot remove the earlier result {}", file.display())
                     })
                 }
             }
         }
-        Ok(Self::new(command, path.to_path_buf()))
+        Ok(Self::new(command, path.to_path_buf(), lock))
     }
 
     fn prepare_default(command: &str, runs: &Path, now: SystemTime) -> Result<Self> {
@@ -235,7 +258,10 @@ impl OutputDir {
             // create_dir (not create_dir_all) fails if the folder exists: a fresh folder
             // even when two runs start within the same second.
             match fs::create_dir(&path) {
-                Ok(()) => return Ok(Self::new(command, path)),
+                Ok(()) => {
+                    let lock = lock_folder(&path)?;
+                    return Ok(Self::new(command, path, lock));
+                }
                 Err(error) if error.kind() == std::io::ErrorKind::AlreadyExists => continue,
                 Err(error) => {
                     return Err(error)
@@ -395,6 +421,98 @@ fn read_manifest(folder: &Path) -> Option<(String, Vec<String>)> {
     let mut lines = text.lines();
     let command = lines.next()?.strip_prefix("deckland ")?.to_owned();
     Some((command, lines.map(str::to_owned).collect()))
+}
+
+/// Opens `folder` and takes an exclusive lock on it (`flock`, released by the system
+/// when the command ends, even killed), so that two commands never write one folder: the
+/// second is refused, naming it. `None` where the file system has no locks.
+#[cfg(unix)]
+fn lock_folder(folder: &Path) -> Result<Option<FolderLock>> {
+    use nix::errno::Errno;
+    use nix::fcntl::{Flock, FlockArg};
+    let handle = fs::File::open(folder)
+        .with_context(|| format!("cannot open output folder {}", folder.display()))?;
+    match Flock::lock(handle, FlockArg::LockExclusiveNonblock) {
+        Ok(lock) => Ok(Some(lock)),
+        Err((_, Errno::EWOULDBLOCK)) => bail!(
+            "output folder {} is in use by another deckland command (it holds the folder's \
+             lock); wait for it to end or choose another --out",
+            folder.display()
+        ),
+        Err((_, Errno::ENOTSUP | Errno::ENOLCK)) => Ok(None),
+        Err((_, errno)) => Err(std::io::Error::from(errno))
+            .with_context(|| format!("cannot lock output folder {}", folder.display())),
+    }
+}
+
+/// An output folder held open with its lock.
+#[cfg(unix)]
+type FolderLock = nix::fcntl::Flock<fs::File>;
+
+/// No lock off Unix.
+#[cfg(not(unix))]
+type FolderLock = ();
+
+/// Folders are not locked off Unix (a folder cannot be opened as a file there).
+#[cfg(not(unix))]
+fn lock_folder(_folder: &Path) -> Result<Option<FolderLock>> {
+    Ok(None)
+}
+
+/// Extensions of the files deckland writes (results, tables, plots, pages).
+const OUTPUT_EXTENSIONS: [&str; 8] = ["csv", "toml", "json", "html", "parquet", "png", "svg", "md"];
+
+/// Whether `name` is named as a file deckland writes: a stem of ASCII letters, digits,
+/// `_` and `-`, and one of [`OUTPUT_EXTENSIONS`]. A name a tampered list adds
+/// (`notes.txt`) is not.
+fn is_output_file_name(name: &str) -> bool {
+    let Some((stem, extension)) = name.rsplit_once('.') else {
+        return false;
+    };
+    !stem.is_empty()
+        && stem
+            .bytes()
+            .all(|b| b.is_ascii_alphanumeric() || b == b'_' || b == b'-')
+        && OUTPUT_EXTENSIONS.contains(&extension)
+}
+
+/// The files of the earlier run in `folder` that `--force` replaces: each name on its
+/// list that exists must be a regular file (or a link, which is removed itself and never
+/// followed) named as deckland's outputs are ([`is_output_file_name`]); anything else
+/// (a folder such as a partitioned `runs.parquet`, a user's file added to the list)
+/// refuses the whole command, before any file is removed. Names that are gone are
+/// skipped.
+fn earlier_results(folder: &Path, listed: &[String]) -> Result<Vec<PathBuf>> {
+    let mut files = Vec::new();
+    for name in listed.iter().filter(|n| is_plain_file_name(n)) {
+        let file = folder.join(name);
+        let metadata = match fs::symlink_metadata(&file) {
+            Ok(metadata) => metadata,
+            Err(error) if error.kind() == std::io::ErrorKind::NotFound => continue,
+            Err(error) => {
+                return Err(error).with_context(|| format!("cannot inspect {}", file.display()))
+            }
+        };
+        // A link is removed itself, never followed (issue 28, D7): its target is safe.
+        if !metadata.is_file() && !metadata.is_symlink() {
+            bail!(
+                "--force refused, nothing removed: {} is listed in {MANIFEST} as an earlier \
+                 result but is not a file (a folder, a device, a pipe); move it away or \
+                 choose another --out",
+                file.display()
+            );
+        }
+        if !is_output_file_name(name) {
+            bail!(
+                "--force refused, nothing removed: {} is listed in {MANIFEST} but is not \
+                 named as a file deckland writes (.{}); move it away or choose another --out",
+                file.display(),
+                OUTPUT_EXTENSIONS.join(", .")
+            );
+        }
+        files.push(file);
+    }
+    Ok(files)
 }
 
 /// Whether `name` is a bare file name (no separator, not `.` or `..`): a manifest line
@@ -594,6 +712,10 @@ mod tests {
         let path = scratch("explicit");
         let first = OutputDir::prepare("test", Some(&path), false).expect("new folder");
         first.write_bytes("a.csv", b"x\n1\n").expect("written");
+        // While the first command holds the folder, no other may use it.
+        let error = OutputDir::prepare("test", Some(&path), true).expect_err("in use");
+        assert!(error.to_string().contains("in use"), "{error}");
+        drop(first);
         assert!(OutputDir::prepare("test", Some(&path), false).is_err());
         let forced = OutputDir::prepare("test", Some(&path), true).expect("forced");
         forced.write_bytes("a.csv", b"x\n2\n").expect("overwritten");
@@ -613,6 +735,7 @@ mod tests {
         let first = OutputDir::prepare("campaign", Some(&path), false).expect("new");
         first.write_bytes("runs.csv", b"a\n").expect("written");
         first.write_bytes("summary.json", b"{}").expect("written");
+        drop(first);
         fs::write(path.join("notes.txt"), b"mine").expect("user file");
         let second = OutputDir::prepare("land", Some(&path), true).expect("forced");
         second
@@ -623,6 +746,7 @@ mod tests {
             fs::read_to_string(path.join(MANIFEST)).expect("manifest"),
             "deckland land\nsummary.json\n"
         );
+        drop(second);
         // A folder with files but no list is not deckland's: refused even with --force.
         fs::remove_file(path.join(MANIFEST)).expect("removed");
         let error = OutputDir::prepare("land", Some(&path), true).expect_err("refused");

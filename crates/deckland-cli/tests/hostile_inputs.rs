@@ -576,3 +576,142 @@ fn regression_every_json_document_has_unique_keys() {
     }
     let _ = fs::remove_dir_all(&dir);
 }
+
+/// `deckland scenario --check FILE`.
+fn check(file: &Path) -> std::process::Output {
+    deckland(["scenario", "--check", file.to_str().unwrap()])
+}
+
+/// Regression (issue 45, R4): `wind_over_deck_mps` ≤ 2.2·10⁻³⁰⁸ passed `--check`; the
+/// periodic wake divides by it and the run ended "diverged: non-finite `airspeed_mps`".
+#[test]
+fn r4_a_wind_over_deck_the_wake_cannot_divide_by_is_refused_at_check() {
+    let dir = scratch("issue-45-r4");
+    for value in ["2.2e-308", "5e-324", "1e-310", "0.001"] {
+        let file = scenario_with(&dir, "calm.toml", &[("wind_over_deck_mps", value)]);
+        assert_refused(
+            &check(&file),
+            1,
+            &[
+                "environment.wind.wind_over_deck_mps",
+                "0.01",
+                "divides by it",
+            ],
+        );
+    }
+    for value in ["0.0", "0.01", "40.0"] {
+        let file = scenario_with(&dir, "calm.toml", &[("wind_over_deck_mps", value)]);
+        assert!(check(&file).status.success(), "{value} is flyable");
+    }
+    let _ = fs::remove_dir_all(&dir);
+}
+
+/// Regression (issue 45, R10): a product of inertia accepted near its bound
+/// (|I_xz| < √(I_x·I_z)) diverged in the first 1-ms step (x = −2.9·10¹⁴ m at 0.001 s).
+#[test]
+fn r10_near_singular_inertia_is_refused_at_check() {
+    let dir = scratch("issue-45-r10");
+    let bound = (31_184.0_f64 * 230_415.0).sqrt();
+    for fraction in [0.999_999, 0.9999, 0.99] {
+        let value = format!("{:.1}", -fraction * bound);
+        let file = scenario_with(&dir, "ixz.toml", &[("product_of_inertia_xz_kg_m2", &value)]);
+        assert_refused(
+            &check(&file),
+            1,
+            &[
+                "aircraft.lateral.product_of_inertia_xz_kg_m2",
+                "principal moment",
+            ],
+        );
+    }
+    // Well inside the bound the aircraft flies as before.
+    let value = format!("{:.1}", -0.9 * bound);
+    let file = scenario_with(&dir, "ixz.toml", &[("product_of_inertia_xz_kg_m2", &value)]);
+    assert!(check(&file).status.success());
+    let _ = fs::remove_dir_all(&dir);
+}
+
+/// Regression (issue 45, R6): `step --axis roll --scenario F` with `model = "3dof"`
+/// silently flew the 6-DOF aircraft.
+#[test]
+fn r6_a_lateral_step_refuses_a_three_dof_scenario_naming_the_key() {
+    let dir = scratch("issue-45-r6");
+    fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("longitudinal.toml");
+    fs::write(&file, "[aircraft]\nmodel = \"3dof\"\n").unwrap();
+    for axis in ["roll", "yaw"] {
+        let output = deckland([
+            "step",
+            "--axis",
+            axis,
+            "--scenario",
+            file.to_str().unwrap(),
+            "--out",
+            dir.join("out").to_str().unwrap(),
+        ]);
+        assert_refused(&output, 1, &["aircraft.model", "3dof", axis]);
+        assert!(!dir.join("out").exists());
+    }
+    let _ = fs::remove_dir_all(&dir);
+}
+
+/// Regression (issue 45, R11): the lateral step's refusal named design parameters that
+/// are not scenario keys (`command_jerk`, `command_rate_fraction`,
+/// `aircraft.aileron_actuator.min_deflection_deg`), and a step of 5·10⁻³²⁴° was accepted
+/// (and printed as 324 digits).
+#[test]
+fn r11_lateral_step_refusals_name_scenario_keys_and_tiny_steps_are_refused() {
+    let dir = scratch("issue-45-r11");
+    fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("out");
+    for step in ["5e-324", "1e-300", "0.001", "1e308", "-31"] {
+        let output = deckland([
+            "step",
+            "--axis",
+            "roll",
+            "--step-deg",
+            step,
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        assert_refused(&output, 1, &["--step-deg", "0.01", step]);
+        assert!(
+            String::from_utf8_lossy(&output.stderr).len() < 400,
+            "readable"
+        );
+    }
+    let file = dir.join("slow.toml");
+    fs::write(
+        &file,
+        "[aircraft.aileron_actuator]\nnatural_frequency_rad_s = 30.74\ndamping_ratio = 0.509\n\
+         travel_deg = 60\nrate_limit_degps = 0.001\n",
+    )
+    .unwrap();
+    let output = deckland([
+        "step",
+        "--axis",
+        "roll",
+        "--scenario",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_refused(
+        &output,
+        1,
+        &[
+            "aircraft.aileron_actuator.rate_limit_degps",
+            "aircraft.aileron_actuator.travel_deg",
+        ],
+    );
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    for design_only in [
+        "command_rate_fraction",
+        "command_travel_fraction",
+        "min_deflection",
+    ] {
+        assert!(!stderr.contains(design_only), "{stderr}");
+    }
+    assert!(!out.exists());
+    let _ = fs::remove_dir_all(&dir);
+}

@@ -521,3 +521,151 @@ fn regression_d5_interrupts_never_leave_a_temporary_file() {
     assert!(interrupted > 0, "no command was interrupted");
     let _ = fs::remove_dir_all(&dir);
 }
+
+/// A campaign of 4 runs of the short scenario into `out` (`extra` appended), within 120 s.
+fn short_campaign(scenario: &str, out: &Path, extra: &[&str]) -> Output {
+    let mut args = vec![
+        "campaign",
+        scenario,
+        "--runs",
+        "4",
+        "--seed",
+        "3",
+        "--threads",
+        "1",
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    args.extend_from_slice(extra);
+    deckland_within(&args, 120)
+}
+
+/// Regression (issue 45, R1): a refused `--force` deleted the earlier results first —
+/// `runs.csv` and `scenario.toml` were gone before the error about a `runs.parquet`
+/// folder, and a user file added to a tampered list was deleted the same way.
+#[test]
+fn r1_refused_force_removes_nothing() {
+    let dir = scratch("issue-45-r1");
+    let scenario = short_dispersed_scenario(&dir);
+    let out = dir.join("c");
+    assert_success(&short_campaign(&scenario, &out, &[]));
+    // A partitioned `to_parquet` writes a folder under the name.
+    fs::remove_file(out.join("runs.parquet")).unwrap();
+    fs::create_dir(out.join("runs.parquet")).unwrap();
+    fs::write(out.join("runs.parquet").join("part-0.parquet"), b"x").unwrap();
+    let before = names(&out);
+    let output = short_campaign(&scenario, &out, &["--force"]);
+    assert_refused(&output, 1, &["runs.parquet", "nothing removed"]);
+    assert_eq!(names(&out), before, "a refused --force removes nothing");
+    assert!(out.join("runs.parquet").join("part-0.parquet").exists());
+    // A user's file added to the list is not deckland's to remove.
+    fs::remove_dir_all(out.join("runs.parquet")).unwrap();
+    fs::write(out.join("notes.txt"), b"mine").unwrap();
+    let manifest = out.join(".deckland-outputs");
+    let listed = fs::read_to_string(&manifest).unwrap();
+    fs::write(&manifest, format!("{listed}notes.txt\n")).unwrap();
+    let before = names(&out);
+    let output = short_campaign(&scenario, &out, &["--force"]);
+    assert_refused(&output, 1, &["notes.txt", "nothing removed"]);
+    assert_eq!(names(&out), before, "a refused --force removes nothing");
+    assert_eq!(fs::read(out.join("notes.txt")).unwrap(), b"mine");
+    let _ = fs::remove_dir_all(&dir);
+}
+
+/// Regression (issue 45, R2): two commands writing the same new `--out` both exited 0
+/// and one result set was silently lost. Now one wins and the other exits non-zero
+/// naming the folder; the winner's results are whole.
+#[test]
+fn r2_two_writers_to_one_folder_one_wins_and_nothing_is_lost() {
+    let dir = scratch("issue-45-r2");
+    let scenario = short_dispersed_scenario(&dir);
+    for trial in 0..3 {
+        let out = dir.join(format!("results{trial}"));
+        let spawn = |shard: &str| {
+            Command::new(env!("CARGO_BIN_EXE_deckland"))
+                .args(["campaign", &scenario, "--runs", "40", "--seed", "3"])
+                .args(["--threads", "1", "--shard", shard, "--out"])
+                .arg(&out)
+                .stdin(Stdio::null())
+                .stdout(Stdio::piped())
+                .stderr(Stdio::piped())
+                .spawn()
+                .unwrap()
+        };
+        let (first, second) = (spawn("0/2"), spawn("1/2"));
+        let outputs = [
+            first.wait_with_output().unwrap(),
+            second.wait_with_output().unwrap(),
+        ];
+        let won: Vec<&Output> = outputs.iter().filter(|o| o.status.success()).collect();
+        let lost: Vec<&Output> = outputs.iter().filter(|o| !o.status.success()).collect();
+        assert_eq!(won.len(), 1, "trial {trial}: exactly one writer wins");
+        let shown = out.display().to_string();
+        assert_refused(lost[0], 1, &[shown.as_str()]);
+        // The winner's shard is whole: merge accepts it as it is.
+        let runs = fs::read_to_string(out.join("runs.csv")).unwrap();
+        assert_eq!(runs.lines().count(), 1 + 20, "trial {trial}: {runs}");
+    }
+    let _ = fs::remove_dir_all(&dir);
+}
+
+/// Regression (issue 45, R7): `campaign --runs 4 --shard 0/100000` was accepted, and
+/// merge then refused the shard it wrote. A campaign of N runs has at most N shards,
+/// for `campaign` as for `merge`.
+#[test]
+fn r7_a_shard_count_above_the_run_count_is_refused_before_flying() {
+    let dir = scratch("issue-45-r7");
+    let scenario = short_dispersed_scenario(&dir);
+    for shard in ["0/100000", "0/5", "4/5"] {
+        let out = dir.join("out");
+        let output = short_campaign(&scenario, &out, &["--shard", shard]);
+        assert_refused(&output, 1, &[shard, "at most the number of runs (4)"]);
+        assert!(!out.exists(), "{shard}: nothing is written");
+    }
+    // Four shards of four runs fly and merge.
+    let shards: Vec<PathBuf> = (0..4)
+        .map(|k| {
+            let out = dir.join(format!("s{k}"));
+            assert_success(&short_campaign(
+                &scenario,
+                &out,
+                &["--shard", &format!("{k}/4")],
+            ));
+            out
+        })
+        .collect();
+    assert_success(&merge(&shards, &dir));
+    let _ = fs::remove_dir_all(&dir);
+}
+
+/// Regression (issue 45, R8): the CLI allowed seeds to 2⁶³ − 1 and 256 threads, Python
+/// 2⁶⁴ − 1 and 1024; the CLI's range is the library's, which Python now shares.
+#[test]
+fn r8_seed_and_thread_ranges_are_the_librarys() {
+    assert_eq!(
+        deckland::monte_carlo::MAX_THREADS,
+        256,
+        "--threads says 1 to 256 in its help"
+    );
+    assert_eq!(deckland::monte_carlo::MAX_CAMPAIGN_SEED, (1 << 63) - 1);
+    let dir = scratch("issue-45-r8");
+    let scenario = short_dispersed_scenario(&dir);
+    let output = deckland_within(
+        &["campaign", &scenario, "--runs", "1", "--threads", "257"],
+        60,
+    );
+    assert_refused(&output, 2, &["--threads", "257"]);
+    let output = deckland_within(
+        &[
+            "campaign",
+            &scenario,
+            "--runs",
+            "1",
+            "--seed",
+            "9223372036854775808",
+        ],
+        60,
+    );
+    assert_refused(&output, 2, &["--seed"]);
+    let _ = fs::remove_dir_all(&dir);
+}

@@ -425,3 +425,106 @@ fn runs_parquet_holds_the_rows_of_runs_csv() {
     assert_parquet_holds_runs_csv(&out_3d);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `runs.csv` of `folder` with each line's fields kept by `keep` (position, field).
+fn edit_runs_csv(folder: &Path, keep: impl Fn(usize, &str, bool) -> Option<String>) {
+    let path = folder.join("runs.csv");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+    let touchdown = header
+        .iter()
+        .position(|c| *c == "touchdown_distance_m")
+        .unwrap();
+    let mut edited = String::new();
+    for (number, line) in text.lines().enumerate() {
+        let fields: Vec<&str> = line.split(',').collect();
+        let touched_down = number > 0 && !fields[touchdown].is_empty();
+        let kept: Vec<String> = fields
+            .iter()
+            .enumerate()
+            .filter_map(|(k, f)| keep(k, f, touched_down))
+            .collect();
+        edited.push_str(&kept.join(","));
+        edited.push('\n');
+    }
+    std::fs::write(&path, edited).unwrap();
+}
+
+/// Regression (issue 45, R3): merge decided "3-D" from the `runs.csv` header alone and
+/// accepted, with status 0, 3-D shards with their lateral columns stripped, 3-D rows
+/// under a `scenario.toml` saying `model = "3dof"`, touched-down rows with blank lateral
+/// values and an empty `scenario.toml` (merged into a 0-byte one).
+#[test]
+fn r3_merge_checks_lateral_columns_against_the_scenario_and_each_row() {
+    let dir = scratch("issue-45-r3");
+    let file = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../scenarios/crosswind.toml");
+    let file = file.to_str().unwrap();
+    let shards: Vec<PathBuf> = (0..2).map(|k| dir.join(format!("shard-{k}"))).collect();
+    for (k, folder) in shards.iter().enumerate() {
+        assert_success(&campaign(file, "4", "11", Some(&format!("{k}/2")), folder));
+    }
+    assert_success(&merge(&[&shards[0], &shards[1]], &dir.join("merged")));
+    let copy = |name: &str| -> Vec<PathBuf> {
+        shards
+            .iter()
+            .map(|from| {
+                let to = dir.join(name).join(from.file_name().unwrap());
+                std::fs::create_dir_all(&to).unwrap();
+                for entry in std::fs::read_dir(from).unwrap() {
+                    let entry = entry.unwrap();
+                    std::fs::copy(entry.path(), to.join(entry.file_name())).unwrap();
+                }
+                to
+            })
+            .collect()
+    };
+    let refused = |copies: &[PathBuf], words: &[&str]| {
+        let output = merge(&[&copies[0], &copies[1]], &dir.join("out"));
+        let text = stderr(&output);
+        assert_eq!(output.status.code(), Some(1), "{text}");
+        for word in words {
+            assert!(text.contains(word), "no `{word}` in: {text}");
+        }
+    };
+    let base_columns = 23; // RUN_COLUMNS: every campaign's columns
+                           // The lateral columns stripped.
+    let stripped = copy("stripped");
+    for folder in &stripped {
+        edit_runs_csv(folder, |k, f, _| (k < base_columns).then(|| f.to_owned()));
+    }
+    refused(&stripped, &["runs.csv columns", "6dof"]);
+    // The scenario says 3dof under 3-D rows.
+    let flat = copy("flat");
+    for folder in &flat {
+        let path = folder.join("scenario.toml");
+        let text = std::fs::read_to_string(&path).unwrap();
+        assert!(text.contains("model = \"6dof\""), "{text}");
+        std::fs::write(
+            &path,
+            text.replacen("model = \"6dof\"", "model = \"3dof\"", 1),
+        )
+        .unwrap();
+    }
+    refused(&flat, &["runs.csv columns", "3dof"]);
+    // Touched-down rows with blank lateral values.
+    let blank = copy("blank");
+    for folder in &blank {
+        edit_runs_csv(folder, |k, f, touched_down| {
+            Some(
+                if touched_down && (base_columns..base_columns + 6).contains(&k) {
+                    String::new()
+                } else {
+                    f.to_owned()
+                },
+            )
+        });
+    }
+    refused(&blank, &["touchdown_lateral_offset_m", "touched down"]);
+    // An empty scenario.toml.
+    let empty = copy("empty");
+    for folder in &empty {
+        std::fs::write(folder.join("scenario.toml"), "").unwrap();
+    }
+    refused(&empty, &["scenario.toml", "empty"]);
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -39,6 +39,18 @@ impl ParameterError {
     }
 }
 
+/// `value` as an error message shows it: Rust's shortest round-trip form between 10⁻⁴
+/// and 10¹⁵ in magnitude (and 0), scientific notation outside (`1e308`, `5e-324`), so that
+/// a huge or tiny value never prints as hundreds of digits.
+pub fn readable_number(value: f64) -> String {
+    let magnitude = value.abs();
+    if !value.is_finite() || magnitude == 0.0 || (1e-4..1e15).contains(&magnitude) {
+        format!("{value}")
+    } else {
+        format!("{value:e}")
+    }
+}
+
 /// `section.key`, or `key` when `section` is empty.
 pub fn join(section: &str, key: &str) -> String {
     if section.is_empty() {
@@ -149,7 +161,7 @@ impl fmt::Display for Bounds {
             } else if value == f64::NEG_INFINITY {
                 "−∞".to_owned()
             } else {
-                format!("{value}")
+                readable_number(value)
             }
         };
         write!(f, "{open}{}, {}{close}", bound(self.min), bound(self.max))
@@ -191,6 +203,17 @@ mod tests {
             assert_eq!(error.value, shown);
             assert_eq!(error.path, "x");
         }
+    }
+
+    /// Regression (issue 45): error messages printed 1e308 as a 309-digit integer.
+    #[test]
+    fn regression_huge_and_tiny_values_read_in_scientific_notation() {
+        assert_eq!(readable_number(1e308), "1e308");
+        assert_eq!(readable_number(-5e-324), "-5e-324");
+        assert_eq!(readable_number(0.0), "0");
+        assert_eq!(readable_number(12.5), "12.5");
+        assert_eq!(readable_number(f64::NAN), "NaN");
+        assert_eq!(Bounds::closed(0.0, 1e300).to_string(), "[0, 1e300]");
     }
 
     #[test]

@@ -23,7 +23,7 @@
 mod shard_fixture;
 
 use deckland::monte_carlo::{
-    merge_shards, parse_runs_csv, run_seed, MergeError, Shard, ShardIdentity, ShardRows,
+    merge_shards, parse_runs_csv, run_seed, LateralRow, MergeError, Shard, ShardIdentity, ShardRows,
 };
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
@@ -250,4 +250,63 @@ fn tampered_and_mismatched_shards_are_refused_or_merge_into_a_campaign() {
     // Most tamperings are caught; a few change nothing (a line swapped with itself).
     let refused = refused.get();
     assert!(refused > cases / 2, "only {refused} of {cases} refused");
+}
+
+/// Regression (issue 45, R3): merge decided "3-D" from the `runs.csv` header alone. It
+/// accepted 3-D shards with their lateral columns stripped, lateral columns under a
+/// `scenario.toml` saying `model = "3dof"`, touched-down rows with blank lateral values
+/// and an empty `scenario.toml`. The columns are now checked against each shard's own
+/// scenario, and each row's lateral values against its touchdown.
+#[test]
+fn r3_merge_checks_lateral_columns_against_the_scenario_and_each_row() {
+    let original = flown_shards();
+    let refused = |shards: Vec<ShardRows>, words: &[&str]| {
+        let message = merge_shards(shards).unwrap_err().to_string();
+        for word in words {
+            assert!(message.contains(word), "no `{word}` in: {message}");
+        }
+    };
+    let mut three_d = shard_fixture::wide_scenario();
+    three_d.aircraft.model = deckland::aircraft::PlantModel::SixDof;
+    let three_d_toml = toml::to_string(&three_d).unwrap();
+    let blank = LateralRow {
+        touchdown: (None, None, None, None, None, None),
+        trap_sheet: [None; 24],
+    };
+    // A 3-D scenario's shards with the lateral columns stripped.
+    let mut stripped = original.clone();
+    for shard in &mut stripped {
+        shard.identity.scenario_toml = three_d_toml.clone();
+    }
+    refused(
+        stripped.clone(),
+        &["s0", "runs.csv columns", "no lateral columns", "6dof"],
+    );
+    // Lateral columns appended under a scenario that says 3dof.
+    let mut appended = original.clone();
+    for shard in &mut appended {
+        shard.lateral = Some(vec![blank; shard.rows.len()]);
+    }
+    refused(
+        appended,
+        &["s0", "runs.csv columns", "`aircraft.model` = \"3dof\""],
+    );
+    // Touched-down rows of a 3-D shard with blank lateral values.
+    let mut blanks = stripped;
+    for shard in &mut blanks {
+        shard.lateral = Some(vec![blank; shard.rows.len()]);
+    }
+    assert!(original
+        .iter()
+        .flat_map(|s| &s.rows)
+        .any(|r| r.touchdown_distance_m.is_some()));
+    refused(blanks, &["touchdown_lateral_offset_m", "touched down"]);
+    // An empty (or blank) scenario.toml, and one that is not a scenario.
+    for text in ["", " \n", "not = [toml"] {
+        let mut empty = original.clone();
+        for shard in &mut empty {
+            shard.identity.scenario_toml = text.to_owned();
+        }
+        refused(empty, &["s0", "scenario.toml"]);
+    }
 }

@@ -3,6 +3,7 @@
 
 #![allow(clippy::unwrap_used)] // tests fail loudly by design
 
+use deckland::aircraft::PlantModel;
 use deckland::monte_carlo::{
     merge_shards, run_campaign, CampaignResult, CampaignSpec, CampaignStatistics, CampaignSummary,
     MergeError, RunRecord, RunRow, Shard, ShardIdentity, ShardRows, DEFAULT_TARGET_RATE,
@@ -10,9 +11,11 @@ use deckland::monte_carlo::{
 use deckland::scenario::{DispersionParameters, Scenario};
 use std::sync::atomic::AtomicBool;
 
-/// Adverse conditions, a short approach (500 m) and every dispersion on.
+/// The longitudinal aircraft (a 3-DOF campaign: no lateral columns), adverse
+/// conditions, a short approach (500 m) and every dispersion on.
 fn short_dispersed_scenario() -> Scenario {
     let mut scenario = Scenario::default();
+    scenario.aircraft.model = PlantModel::ThreeDof;
     scenario.approach.start_range_m = 500.0;
     scenario.dispersion = DispersionParameters {
         start_height_offset_sd_m: 1.0,
@@ -31,7 +34,7 @@ fn shard_rows(result: &CampaignResult, seed: u64, source: &str) -> ShardRows {
     ShardRows {
         identity: ShardIdentity {
             source: source.to_owned(),
-            scenario_toml: "seed = 1\n".to_owned(),
+            scenario_toml: toml::to_string(&short_dispersed_scenario()).unwrap(),
             campaign_seed: seed,
             requested_runs: result.requested_runs,
             controllers: result.controller_labels.clone(),
@@ -125,11 +128,14 @@ fn a_merge_refuses_shards_that_do_not_belong_together() {
     lateral[1].lateral = Some(vec![blank; lateral[1].rows.len()]);
     let error = merge_shards(lateral.clone()).unwrap_err().to_string();
     assert!(error.contains("runs.csv columns"), "{error}");
-    // Lateral columns for fewer rows than the shard has.
+    assert!(error.contains("`aircraft.model` = \"3dof\""), "{error}");
+    // Lateral columns for fewer rows than the shard has, under a 3-D scenario.
+    let mut three_d = short_dispersed_scenario();
+    three_d.aircraft.model = PlantModel::SixDof;
     for shard in &mut lateral {
         shard.lateral = Some(vec![blank; shard.rows.len()]);
+        shard.identity.scenario_toml = toml::to_string(&three_d).unwrap();
     }
-    assert!(merge_shards(lateral.clone()).is_ok());
     lateral[2].lateral.as_mut().unwrap().pop();
     let error = merge_shards(lateral).unwrap_err().to_string();
     assert!(error.contains("one per row"), "{error}");
@@ -185,9 +191,10 @@ fn a_merge_refuses_shards_that_do_not_belong_together() {
         .contains("`shard count M` is 1/4"));
 
     let mut other_scenario = all();
-    other_scenario[1].identity.scenario_toml = "seed = 1\n".to_owned();
+    other_scenario[1].identity.scenario_toml =
+        "seed = 1\n[aircraft]\nmodel = \"3dof\"\n".to_owned();
     other_scenario[0].identity.scenario_toml =
-        "seed = 1\n[approach]\nstart_range_m = 500.0\n".to_owned();
+        "seed = 1\n[aircraft]\nmodel = \"3dof\"\n[approach]\nstart_range_m = 500.0\n".to_owned();
     other_scenario[2].identity.scenario_toml = other_scenario[0].identity.scenario_toml.clone();
     let error = merge_shards(other_scenario).unwrap_err();
     assert!(

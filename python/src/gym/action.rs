@@ -3,6 +3,7 @@
 use deckland::simulation::Signals;
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
+use pyo3::types::{PyBool, PyComplex};
 
 use super::config::EnvConfig;
 use super::control::{AgentTaps, Control};
@@ -154,13 +155,40 @@ pub(super) fn action_values(action: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
             return Ok(values);
         }
     }
-    action.extract::<Vec<f64>>().map_err(|_| {
+    let refused = || {
         argument_error(
             "action",
             action
                 .repr()
                 .map_or_else(|_| "?".to_owned(), |r| r.to_string()),
-            "an array of numbers in [-1, 1]",
+            "an array of real numbers in [-1, 1] (floats or ints: not complex, bool or text)",
         )
-    })
+    };
+    // Anything else converts entry by entry: refuse what only a lossy conversion makes a
+    // number (a complex loses its imaginary part, a bool becomes 0 or 1; issue 45, R9).
+    if !is_real_number_kind(action)? {
+        return Err(refused());
+    }
+    let mut values = Vec::new();
+    for item in action.try_iter().map_err(|_| refused())? {
+        let item = item?;
+        if item.is_instance_of::<PyBool>()
+            || item.is_instance_of::<PyComplex>()
+            || !is_real_number_kind(&item)?
+        {
+            return Err(refused());
+        }
+        values.push(item.extract::<f64>().map_err(|_| refused())?);
+    }
+    Ok(values)
+}
+
+/// Whether `value`'s numpy dtype, if it has one, holds real numbers (float, int or
+/// unsigned int); an object without a dtype is left to the caller.
+fn is_real_number_kind(value: &Bound<'_, PyAny>) -> PyResult<bool> {
+    let Ok(dtype) = value.getattr("dtype") else {
+        return Ok(true);
+    };
+    let kind: String = dtype.getattr("kind")?.extract()?;
+    Ok(matches!(kind.as_str(), "f" | "i" | "u"))
 }

@@ -33,8 +33,32 @@ pub(crate) struct Rewards {
     pub(super) off_centre: f64,
 }
 
+/// The keys of `rewards` beside the outcomes'.
+const OTHER_KEYS: [&str; 4] = ["wire_bonus", "error_weight", "error_cap_m2", "off_centre"];
+
 impl Rewards {
     pub(super) fn from_dict(rewards: &Bound<'_, PyDict>, shaped: bool) -> PyResult<Self> {
+        // A key the rewards do not have would be ignored without a word (issue 45, R9).
+        for key in rewards.keys() {
+            let known = key
+                .extract::<String>()
+                .is_ok_and(|k| OUTCOMES.contains(&k.as_str()) || OTHER_KEYS.contains(&k.as_str()));
+            if !known {
+                return Err(argument_error(
+                    "rewards",
+                    format_args!(
+                        "{{{}: …}}",
+                        key.repr()
+                            .map_or_else(|_| "?".to_owned(), |r| r.to_string())
+                    ),
+                    format_args!(
+                        "only the keys {} and {}",
+                        OUTCOMES.join(", "),
+                        OTHER_KEYS.join(", ")
+                    ),
+                ));
+            }
+        }
         let number = |key: &str| -> PyResult<f64> {
             let value = rewards
                 .get_item(key)?

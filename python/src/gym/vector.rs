@@ -5,6 +5,7 @@ use std::sync::{Arc, Mutex, PoisonError};
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArray3};
 use numpy::{PyReadonlyArray2, PyUntypedArrayMethods};
+use pyo3::exceptions::PyMemoryError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -12,7 +13,7 @@ use super::config::{config, EnvConfig};
 use super::describe::describe;
 use super::episode::{frame_array, seed_value, EnvCore};
 use super::parallel::{for_each_item, helpers};
-use crate::errors::{argument_error, value_error};
+use crate::errors::{argument_error, strict_integer, value_error};
 use crate::render::{draw_side_view, FRAME_HEIGHT, FRAME_WIDTH};
 use crate::scenario::Scenario;
 
@@ -80,7 +81,7 @@ impl VecEnv {
     #[pyo3(signature = (num_envs, scenario, control, control_interval_s, pitch_command_span_rad, thrust_span_n, elevator_span_rad, climb_rate_span_mps, rewards, reward, forecast, max_episode_steps, lateral_spans=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
-        num_envs: usize,
+        num_envs: &Bound<'_, PyAny>,
         scenario: Option<PyRef<'_, Scenario>>,
         control: &str,
         control_interval_s: f64,
@@ -94,13 +95,7 @@ impl VecEnv {
         max_episode_steps: Option<u64>,
         lateral_spans: Option<(f64, f64, f64, f64)>,
     ) -> PyResult<Self> {
-        if !(1..=100_000).contains(&num_envs) {
-            return Err(argument_error(
-                "num_envs",
-                num_envs,
-                "an integer in [1, 100000]",
-            ));
-        }
+        let num_envs = environment_count(strict_integer("num_envs", num_envs)?)?;
         let config = config(
             scenario,
             control,
@@ -117,11 +112,21 @@ impl VecEnv {
             max_episode_steps,
             lateral_spans,
         )?;
+        let refused = |_| environments_do_not_fit(num_envs, None);
+        let mut cores = Vec::new();
+        cores.try_reserve_exact(num_envs).map_err(refused)?;
+        cores.resize_with(num_envs, || None);
+        let mut restart = Vec::new();
+        restart.try_reserve_exact(num_envs).map_err(refused)?;
+        restart.resize(num_envs, false);
+        let mut outcomes = Vec::new();
+        outcomes.try_reserve_exact(num_envs).map_err(refused)?;
+        outcomes.resize(num_envs, (-1, -1, -1));
         Ok(Self {
             config: Arc::new(config),
-            cores: (0..num_envs).map(|_| None).collect(),
-            restart: vec![false; num_envs],
-            outcomes: vec![(-1, -1, -1); num_envs],
+            cores,
+            restart,
+            outcomes,
             started: false,
         })
     }
@@ -356,6 +361,65 @@ fn matrix<T: numpy::Element>(
     let array = Array2::from_shape_vec((rows, columns), values)
         .map_err(|e| value_error(format!("an array of {rows} rows of {columns}: {e}")))?;
     Ok(array.into_pyarray(py))
+}
+
+/// Most environments of one vector environment, whatever the memory.
+const MAX_ENVIRONMENTS: i128 = 100_000;
+
+/// Memory one environment holds once its episode has started (bytes): its simulation,
+/// estimator and buffers. Measured on the 3-D environment (the larger) as the growth of
+/// the resident set over 500 environments: 150 kB after 10 steps, 165 kB after 1500
+/// (100 000 of them took about 14 GB in issue 45); rounded up to 192 kB.
+const ENVIRONMENT_BYTES: u64 = 192 * 1024;
+
+/// Share of the memory available at construction that the environments may take.
+const MEMORY_SHARE: u64 = 2; // one half
+
+/// `num_envs` checked: 1 to [`MAX_ENVIRONMENTS`], and no more than half the memory
+/// available now holds ([`ENVIRONMENT_BYTES`] each), so that a count the machine cannot
+/// hold raises `MemoryError` here instead of the allocator aborting the interpreter
+/// later (issue 45, R5).
+fn environment_count(num_envs: i128) -> PyResult<usize> {
+    if !(1..=MAX_ENVIRONMENTS).contains(&num_envs) {
+        return Err(argument_error(
+            "num_envs",
+            num_envs,
+            format_args!("an integer in [1, {MAX_ENVIRONMENTS}]"),
+        ));
+    }
+    let count = num_envs as u64; // 1 to 100 000
+    if let Some(available) = available_memory_bytes() {
+        if count.saturating_mul(ENVIRONMENT_BYTES) > available / MEMORY_SHARE {
+            return Err(environments_do_not_fit(count as usize, Some(available)));
+        }
+    }
+    Ok(count as usize)
+}
+
+/// The `MemoryError` for `num_envs` environments that do not fit in memory.
+fn environments_do_not_fit(num_envs: usize, available: Option<u64>) -> PyErr {
+    let most = available.map_or_else(String::new, |bytes| {
+        format!(
+            ": {} MB are available and each environment needs about {} kB, so at most {} \
+             fit in half of it",
+            bytes / 1_000_000,
+            ENVIRONMENT_BYTES / 1024,
+            bytes / MEMORY_SHARE / ENVIRONMENT_BYTES
+        )
+    });
+    PyMemoryError::new_err(format!(
+        "`num_envs` = {num_envs} is not allowed: the environments do not fit in memory{most}"
+    ))
+}
+
+/// The memory available to new allocations (bytes): `MemAvailable` of `/proc/meminfo`
+/// on Linux; `None` elsewhere or when it cannot be read (then only the count's limit
+/// applies).
+fn available_memory_bytes() -> Option<u64> {
+    let text = std::fs::read_to_string("/proc/meminfo").ok()?;
+    let line = text.lines().find(|l| l.starts_with("MemAvailable:"))?;
+    let kilobytes: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    kilobytes.checked_mul(1024)
 }
 
 /// The actions, one row of `width` per environment, from a 2-d float32 or float64 array.

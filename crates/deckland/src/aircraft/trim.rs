@@ -141,7 +141,7 @@ impl TrimPoint {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum TrimError {
     /// The request itself is outside the physical range.
-    #[error("trim request `{field}` = {value} is invalid: expected {expected}")]
+    #[error("trim request `{field}` = {} is invalid: expected {expected}", crate::parameters::readable_number(*value))]
     InvalidRequest {
         /// The request field.
         field: &'static str,

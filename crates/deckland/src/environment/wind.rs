@@ -144,14 +144,33 @@ impl Default for WindParameters {
     }
 }
 
+/// Smallest wind over the deck other than 0 (m/s): the periodic wake's phase
+/// X/(0.85·V_wd) (paper Eq. 25) stays finite and meaningful above it (at X = 10 km,
+/// about 10⁶ rad), where 10⁻³⁰⁸ m/s made it infinite and the run diverge. 1 cm/s lies
+/// below any anemometer's resolution, so no real wind is refused.
+pub const MIN_WIND_OVER_DECK_MPS: f64 = 0.01;
+
 impl WindParameters {
-    /// Checks every field: speeds in [0, 40] m/s, σ in [0, 10] m/s, scale in (0, 3000] m,
+    /// Checks every field: speeds in [0, 40] m/s (the wind over the deck 0 or at least
+    /// [`MIN_WIND_OVER_DECK_MPS`]), σ in [0, 10] m/s, scale in (0, 3000] m,
     /// θ_s in [0, 0.5] rad, ω_p in [0, 20] rad/s, crosswind in [−10, 10] m/s, the crab
     /// limit in (0, 30]°.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "environment.wind";
         let sigma = Bounds::closed(0.0, 10.0);
         Bounds::closed(0.0, 40.0).check(SECTION, "wind_over_deck_mps", self.wind_over_deck_mps)?;
+        if self.wind_over_deck_mps > 0.0 && self.wind_over_deck_mps < MIN_WIND_OVER_DECK_MPS {
+            return Err(ParameterError::new(
+                SECTION,
+                "wind_over_deck_mps",
+                self.wind_over_deck_mps,
+                format_args!(
+                    "0 (calm over the deck) or a value in [{MIN_WIND_OVER_DECK_MPS}, 40]: the \
+                     periodic wake's phase divides by it (paper Eq. 25), and a smaller speed \
+                     makes it overflow"
+                ),
+            ));
+        }
         sigma.check(
             SECTION,
             "turbulence_sigma_u_mps",

@@ -32,7 +32,8 @@ pub use environment::{record_environment, EnvironmentRecord, EnvironmentSample};
 pub use lateral_step::{
     fly_lateral_step, CrosswindGust, LateralAxis, LateralLaws, LateralSample, LateralSetup,
     LateralStep, LateralStepError, LateralStepReport, LateralStepResponse, LateralStepRun,
-    LATERAL_SETTLING_BAND_FRACTION, LATERAL_STEP_TIME_S,
+    LATERAL_SETTLING_BAND_FRACTION, LATERAL_STEP_TIME_S, MAX_LATERAL_STEP_DEG,
+    MIN_LATERAL_STEP_DEG,
 };
 pub use pitch_step::{
     fly_pitch_step, PitchStep, PitchStepResponse, PitchStepRun, PITCH_STEP_RECORD_INTERVAL_S,

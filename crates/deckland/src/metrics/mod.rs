@@ -51,7 +51,7 @@ pub enum MetricsError {
         value: f64,
     },
     /// Time does not strictly increase.
-    #[error("time must strictly increase, but sample {index} ({value} s) does not exceed the previous one")]
+    #[error("time must strictly increase, but sample {index} ({} s) does not exceed the previous one", crate::parameters::readable_number(*value))]
     TimeNotIncreasing {
         /// Index of the first offending sample.
         index: usize,
@@ -59,7 +59,7 @@ pub enum MetricsError {
         value: f64,
     },
     /// The record ends before the step time.
-    #[error("the record ends at {end_time_s} s, before the step time {step_time_s} s")]
+    #[error("the record ends at {} s, before the step time {} s", crate::parameters::readable_number(*end_time_s), crate::parameters::readable_number(*step_time_s))]
     RecordEndsBeforeStep {
         /// Step time (s).
         step_time_s: f64,
@@ -67,7 +67,7 @@ pub enum MetricsError {
         end_time_s: f64,
     },
     /// A parameter of the metric is invalid.
-    #[error("metric parameter `{field}` is invalid: {value} ({requirement})")]
+    #[error("metric parameter `{field}` is invalid: {} ({requirement})", crate::parameters::readable_number(*value))]
     InvalidParameter {
         /// Name of the parameter.
         field: &'static str,

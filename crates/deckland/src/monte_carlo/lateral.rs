@@ -126,15 +126,18 @@ impl LateralRow {
 
     /// Checks that a 3-D campaign can have written these values beside a row that
     /// `touched_down` and `flown`: every number finite and within its range, the lateral
-    /// touchdown complete (or absent) and only with a touchdown, `off_centre` true
+    /// touchdown complete with a touchdown and absent without one, `off_centre` true
     /// exactly beyond the limit, and each trap-sheet position all six values or none,
     /// none for a run that never flew.
     pub fn check(&self, touched_down: bool, flown: bool) -> Result<(), RowError> {
-        let error = |column: &'static str, value: Option<f64>, problem: &str| RowError {
-            column,
-            value: value.map_or_else(|| "empty".to_owned(), |v| v.to_string()),
-            problem: problem.to_owned(),
-        };
+        self.check_touchdown(touched_down)?;
+        self.check_trap_sheet(flown)
+    }
+
+    /// Checks the lateral touchdown's columns ([`LATERAL_RUN_COLUMNS`]) of a row that
+    /// `touched_down`: a 3-D run that touched down has its lateral touchdown (a blank
+    /// offset there is a column emptied, not a value), one that did not has none.
+    fn check_touchdown(&self, touched_down: bool) -> Result<(), RowError> {
         let (offset, drift, bank, heading, ramp, off_centre) = self.touchdown;
         let reals = [
             (LATERAL_RUN_COLUMNS[0], offset, LATERAL_LENGTH_LIMIT_M),
@@ -145,7 +148,7 @@ impl LateralRow {
         ];
         for (column, value, limit) in reals {
             if value.is_some_and(|v| !v.is_finite() || v.abs() > limit) {
-                return Err(error(
+                return Err(row_error(
                     column,
                     value,
                     &format!("a campaign writes a finite number within ±{limit}"),
@@ -153,23 +156,18 @@ impl LateralRow {
             }
         }
         let present = offset.is_some();
+        const ALL_OR_NONE: &str =
+            "a lateral touchdown has all of offset, drift, bank, heading and off_centre, or none";
         for (column, value, _) in &reals[..4] {
             if value.is_some() != present {
-                return Err(error(
-                    column,
-                    *value,
-                    "a lateral touchdown has all of offset, drift, bank, heading and \
-                     off_centre, or none",
-                ));
+                return Err(row_error(column, *value, ALL_OR_NONE));
             }
         }
         if off_centre.is_some() != present {
             return Err(RowError {
                 column: LATERAL_RUN_COLUMNS[5],
                 value: off_centre.map_or_else(|| "empty".to_owned(), |v| v.to_string()),
-                problem: "a lateral touchdown has all of offset, drift, bank, heading and \
-                          off_centre, or none"
-                    .to_owned(),
+                problem: ALL_OR_NONE.to_owned(),
             });
         }
         if let (Some(offset), Some(off_centre)) = (offset, off_centre) {
@@ -184,14 +182,32 @@ impl LateralRow {
                 });
             }
         }
+        if touched_down && !present {
+            return Err(row_error(
+                LATERAL_RUN_COLUMNS[0],
+                offset,
+                "a 3-D run that touched down has its lateral touchdown (offset, drift, \
+                 bank, heading, off_centre)",
+            ));
+        }
         if (present || ramp.is_some()) && !touched_down {
             let (column, value) = if present {
                 (LATERAL_RUN_COLUMNS[0], offset)
             } else {
                 (LATERAL_RUN_COLUMNS[4], ramp)
             };
-            return Err(error(column, value, "only a run that touched down has it"));
+            return Err(row_error(
+                column,
+                value,
+                "only a run that touched down has it",
+            ));
         }
+        Ok(())
+    }
+
+    /// Checks the trap sheet's columns ([`TRAP_SHEET_RUN_COLUMNS`]) of a row that was
+    /// `flown`: each position all six deviations or none, none for a run never flown.
+    fn check_trap_sheet(&self, flown: bool) -> Result<(), RowError> {
         for (position, values) in self.trap_sheet.chunks(6).enumerate() {
             let filled = values[0].is_some();
             for (k, value) in values.iter().enumerate() {
@@ -202,25 +218,34 @@ impl LateralRow {
                     LATERAL_LENGTH_LIMIT_M
                 };
                 if value.is_some_and(|v| !v.is_finite() || v.abs() > limit) {
-                    return Err(error(
+                    return Err(row_error(
                         column,
                         *value,
                         &format!("a campaign writes a finite number within ±{limit}"),
                     ));
                 }
                 if value.is_some() != filled {
-                    return Err(error(
+                    return Err(row_error(
                         column,
                         *value,
                         "a position of the trap sheet has all six deviations or none",
                     ));
                 }
                 if value.is_some() && !flown {
-                    return Err(error(column, *value, "a run that never flew has none"));
+                    return Err(row_error(column, *value, "a run that never flew has none"));
                 }
             }
         }
         Ok(())
+    }
+}
+
+/// The error for `column` of a row holding `value` (`empty` when blank).
+fn row_error(column: &'static str, value: Option<f64>, problem: &str) -> RowError {
+    RowError {
+        column,
+        value: value.map_or_else(|| "empty".to_owned(), crate::parameters::readable_number),
+        problem: problem.to_owned(),
     }
 }
 

@@ -14,6 +14,14 @@ pub const MAX_RUNS: u64 = 100_000;
 /// Most shards a campaign is split into (M of K/M): one run per shard at most.
 pub const MAX_SHARDS: u64 = MAX_RUNS;
 
+/// Most worker threads a campaign runs on (`--threads`, Python's `threads`): more than
+/// any machine it runs on has cores, few enough that each thread's stack fits.
+pub const MAX_THREADS: u64 = 256;
+
+/// Largest campaign seed: the largest a scenario file's `seed` holds (TOML integers
+/// are signed 64-bit), so that every campaign can be flown again from the CLI.
+pub const MAX_CAMPAIGN_SEED: u64 = crate::scenario::MAX_SEED;
+
 /// Most controllers one campaign flies side by side (`--compare` flies two; the Python
 /// package may add its own laws).
 pub const MAX_CONTROLLERS: usize = 16;
@@ -37,6 +45,24 @@ pub fn check_runs(runs: u64) -> Result<u64, LimitError> {
     }
 }
 
+/// Whether `threads` is a campaign's thread count: 1 to [`MAX_THREADS`].
+pub fn check_threads(threads: u64) -> Result<u64, LimitError> {
+    if (1..=MAX_THREADS).contains(&threads) {
+        Ok(threads)
+    } else {
+        Err(LimitError::Threads { threads })
+    }
+}
+
+/// Whether `seed` is a campaign seed: 0 to [`MAX_CAMPAIGN_SEED`].
+pub fn check_seed(seed: u64) -> Result<u64, LimitError> {
+    if seed <= MAX_CAMPAIGN_SEED {
+        Ok(seed)
+    } else {
+        Err(LimitError::Seed { seed })
+    }
+}
+
 /// A count beyond the campaign's limits.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
 pub enum LimitError {
@@ -45,6 +71,18 @@ pub enum LimitError {
     Runs {
         /// The count given.
         runs: u64,
+    },
+    /// A thread count of 0 or above [`MAX_THREADS`].
+    #[error("`threads` is {threads}: a campaign runs on 1 to {MAX_THREADS} threads")]
+    Threads {
+        /// The count given.
+        threads: u64,
+    },
+    /// A seed above [`MAX_CAMPAIGN_SEED`].
+    #[error("`seed` is {seed}: a seed is 0 to {MAX_CAMPAIGN_SEED} (2⁶³ − 1, what a scenario file holds)")]
+    Seed {
+        /// The seed given.
+        seed: u64,
     },
 }
 

@@ -14,7 +14,7 @@
 //! row), naming the line and the column at fault, so that every front end (the CLI's
 //! `merge`, Python, Dask) refuses the same inputs with the same words.
 
-use super::lateral::LateralRow;
+use super::lateral::{flies_three_dimensional_approach, LateralRow};
 use super::limits::{
     check_runs, MAX_CONTROLLERS, MAX_CONTROLLER_LABEL_BYTES, MAX_RUNS, MAX_SHARDS,
 };
@@ -22,6 +22,8 @@ use super::merge_error::MergeError;
 use super::row::RunRow;
 use super::seeds::run_seed;
 use super::shard::Shard;
+use crate::aircraft::PlantModel;
+use crate::scenario::load_scenario;
 
 /// Most missing shards a message lists one by one.
 const LISTED_MISSING: usize = 10;
@@ -175,79 +177,170 @@ pub fn merge_shards(mut shards: Vec<ShardRows>) -> Result<MergedCampaign, MergeE
     let first = shards.first().ok_or(MergeError::NoShards)?.identity.clone();
     for shard in &shards {
         check_identity(&shard.identity)?;
+        check_columns_against_scenario(shard)?;
     }
     for shard in &shards {
-        let identity = &shard.identity;
-        if identity.scenario_toml != first.scenario_toml {
-            let (field, first_value, other_value) =
-                first_difference(&first.scenario_toml, &identity.scenario_toml);
-            return Err(MergeError::DifferentScenario {
-                first: first.source.clone(),
-                other: identity.source.clone(),
-                field,
-                first_value,
-                other_value,
-            });
-        }
-        let different =
-            |field: &'static str, first_value: String, other_value: String| MergeError::Different {
-                field,
-                first: first.source.clone(),
-                first_value,
-                other: identity.source.clone(),
-                other_value,
-            };
-        if identity.campaign_seed != first.campaign_seed {
-            return Err(different(
-                "campaign_seed",
-                first.campaign_seed.to_string(),
-                identity.campaign_seed.to_string(),
-            ));
-        }
-        if identity.requested_runs != first.requested_runs {
-            return Err(different(
-                "requested_runs",
-                first.requested_runs.to_string(),
-                identity.requested_runs.to_string(),
-            ));
-        }
-        if identity.controllers != first.controllers {
-            return Err(different(
-                "controllers",
-                first.controllers.join(", "),
-                identity.controllers.join(", "),
-            ));
-        }
-        if identity.shard.count() != first.shard.count() {
-            return Err(different(
-                "shard count M",
-                first.shard.to_string(),
-                identity.shard.to_string(),
-            ));
-        }
-        let kind = |s: &ShardRows| {
-            if s.lateral.is_some() {
-                "a 3-D approach's (with lateral columns)"
-            } else {
-                "a 3-DOF approach's"
-            }
-            .to_owned()
-        };
-        if shard.lateral.is_some() != shards[0].lateral.is_some() {
-            return Err(different("runs.csv columns", kind(&shards[0]), kind(shard)));
-        }
-        if let Some(lateral) = &shard.lateral {
-            if lateral.len() != shard.rows.len() {
-                return Err(MergeError::BadIdentity {
-                    location: identity.source.clone(),
-                    field: "lateral",
-                    value: format!("{} rows of lateral columns", lateral.len()),
-                    problem: format!("one per row: {} rows", shard.rows.len()),
-                });
-            }
-        }
+        check_same_campaign(&first, shard)?;
     }
-    let count = first.shard.count();
+    let by_index = index_shards(&shards, first.shard.count())?;
+    if let Some(partial) = shards.iter().find(|s| s.identity.partial) {
+        return Err(MergeError::Partial {
+            location: partial.identity.source.clone(),
+            shard: partial.identity.shard,
+        });
+    }
+    let position_of = |label: &str| first.controllers.iter().position(|c| c == label);
+    for shard in &mut shards {
+        check_rows(
+            shard,
+            first.campaign_seed,
+            first.requested_runs,
+            &position_of,
+        )?;
+    }
+    let sources = by_index
+        .iter()
+        .flatten()
+        .map(|&p| shards[p].identity.source.clone())
+        .collect();
+    let three_dimensional = shards[0].lateral.is_some();
+    let mut pairs: Vec<(RunRow<'static>, Option<LateralRow>)> =
+        shards.into_iter().flat_map(paired).collect();
+    pairs.sort_by_key(|(r, _)| (r.run_index, position_of(&r.controller)));
+    let (rows, lateral): (Vec<_>, Vec<_>) = pairs.into_iter().unzip();
+    Ok(MergedCampaign {
+        scenario_toml: first.scenario_toml,
+        campaign_seed: first.campaign_seed,
+        requested_runs: first.requested_runs,
+        controllers: first.controllers,
+        rows,
+        lateral: three_dimensional.then(|| lateral.into_iter().flatten().collect()),
+        sources,
+    })
+}
+
+/// Checks that `shard`'s lateral columns are what its own `scenario.toml` flies: the
+/// 3-D approach's columns exactly when the scenario flies the 3-D approach
+/// ([`flies_three_dimensional_approach`]: `[aircraft] model = "6dof"` with
+/// `approach.three_dimensional`), one set per row. The header of `runs.csv` alone
+/// decides nothing: columns stripped from a 3-D shard, or appended to a 3-DOF one, are
+/// refused, as is a `scenario.toml` that is empty or not a scenario.
+fn check_columns_against_scenario(shard: &ShardRows) -> Result<(), MergeError> {
+    let identity = &shard.identity;
+    let bad = |field: &'static str, value: String, problem: String| MergeError::BadIdentity {
+        location: identity.source.clone(),
+        field,
+        value,
+        problem,
+    };
+    if identity.scenario_toml.trim().is_empty() {
+        return Err(bad(
+            "scenario.toml",
+            "empty".to_owned(),
+            "a shard's scenario.toml holds the whole scenario its campaign flew".to_owned(),
+        ));
+    }
+    let scenario = load_scenario(&identity.scenario_toml, "scenario.toml").map_err(|error| {
+        bad(
+            "scenario.toml",
+            "not a scenario".to_owned(),
+            error.to_string(),
+        )
+    })?;
+    let three_dimensional = flies_three_dimensional_approach(&scenario);
+    if shard.lateral.is_some() != three_dimensional {
+        let (has, flies) = if three_dimensional {
+            (
+                "no lateral columns",
+                "the 3-D approach, whose runs.csv has them",
+            )
+        } else {
+            (
+                "the 3-D approach's lateral columns",
+                "no 3-D approach, whose runs.csv has none",
+            )
+        };
+        return Err(bad(
+            "runs.csv columns",
+            has.to_owned(),
+            format!(
+                "its scenario.toml (`aircraft.model` = \"{}\", \
+                 `approach.three_dimensional` = {}) flies {flies}",
+                match scenario.aircraft.model {
+                    PlantModel::ThreeDof => "3dof",
+                    PlantModel::SixDof => "6dof",
+                },
+                scenario.approach.three_dimensional
+            ),
+        ));
+    }
+    match &shard.lateral {
+        Some(lateral) if lateral.len() != shard.rows.len() => Err(bad(
+            "lateral",
+            format!("{} rows of lateral columns", lateral.len()),
+            format!("one per row: {} rows", shard.rows.len()),
+        )),
+        _ => Ok(()),
+    }
+}
+
+/// Checks that `shard` says it is part of the campaign of `first`: the same scenario,
+/// seed, run count, controllers and shard count.
+fn check_same_campaign(first: &ShardIdentity, shard: &ShardRows) -> Result<(), MergeError> {
+    let identity = &shard.identity;
+    if identity.scenario_toml != first.scenario_toml {
+        let (field, first_value, other_value) =
+            first_difference(&first.scenario_toml, &identity.scenario_toml);
+        return Err(MergeError::DifferentScenario {
+            first: first.source.clone(),
+            other: identity.source.clone(),
+            field,
+            first_value,
+            other_value,
+        });
+    }
+    let different =
+        |field: &'static str, first_value: String, other_value: String| MergeError::Different {
+            field,
+            first: first.source.clone(),
+            first_value,
+            other: identity.source.clone(),
+            other_value,
+        };
+    if identity.campaign_seed != first.campaign_seed {
+        return Err(different(
+            "campaign_seed",
+            first.campaign_seed.to_string(),
+            identity.campaign_seed.to_string(),
+        ));
+    }
+    if identity.requested_runs != first.requested_runs {
+        return Err(different(
+            "requested_runs",
+            first.requested_runs.to_string(),
+            identity.requested_runs.to_string(),
+        ));
+    }
+    if identity.controllers != first.controllers {
+        return Err(different(
+            "controllers",
+            first.controllers.join(", "),
+            identity.controllers.join(", "),
+        ));
+    }
+    if identity.shard.count() != first.shard.count() {
+        return Err(different(
+            "shard count M",
+            first.shard.to_string(),
+            identity.shard.to_string(),
+        ));
+    }
+    Ok(())
+}
+
+/// The position in `shards` of each shard 0 … `count` − 1; refuses a shard given twice
+/// and names the shards missing.
+fn index_shards(shards: &[ShardRows], count: u64) -> Result<Vec<Option<usize>>, MergeError> {
     let mut by_index: Vec<Option<usize>> = vec![None; usize::try_from(count).unwrap_or(0)];
     for (position, shard) in shards.iter().enumerate() {
         let identity = &shard.identity;
@@ -275,42 +368,7 @@ pub fn merge_shards(mut shards: Vec<ShardRows>) -> Result<MergedCampaign, MergeE
             count,
         });
     }
-    if let Some(partial) = shards.iter().find(|s| s.identity.partial) {
-        return Err(MergeError::Partial {
-            location: partial.identity.source.clone(),
-            shard: partial.identity.shard,
-        });
-    }
-    let variants = first.controllers.len() as u64;
-    let position_of = |label: &str| first.controllers.iter().position(|c| c == label);
-    for shard in &mut shards {
-        check_rows(
-            shard,
-            first.campaign_seed,
-            first.requested_runs,
-            variants,
-            &position_of,
-        )?;
-    }
-    let sources = by_index
-        .iter()
-        .flatten()
-        .map(|&p| shards[p].identity.source.clone())
-        .collect();
-    let three_dimensional = shards[0].lateral.is_some();
-    let mut pairs: Vec<(RunRow<'static>, Option<LateralRow>)> =
-        shards.into_iter().flat_map(paired).collect();
-    pairs.sort_by_key(|(r, _)| (r.run_index, position_of(&r.controller)));
-    let (rows, lateral): (Vec<_>, Vec<_>) = pairs.into_iter().unzip();
-    Ok(MergedCampaign {
-        scenario_toml: first.scenario_toml,
-        campaign_seed: first.campaign_seed,
-        requested_runs: first.requested_runs,
-        controllers: first.controllers,
-        rows,
-        lateral: three_dimensional.then(|| lateral.into_iter().flatten().collect()),
-        sources,
-    })
+    Ok(by_index)
 }
 
 /// A shard's rows, each with its lateral columns (`None` for a 3-DOF campaign).
@@ -331,67 +389,100 @@ fn check_rows(
     shard: &mut ShardRows,
     campaign_seed: u64,
     runs: u64,
-    variants: u64,
     position_of: &dyn Fn(&str) -> Option<usize>,
 ) -> Result<(), MergeError> {
-    let identity = &shard.identity;
-    let foreign = |row: &RunRow, problem: String| MergeError::ForeignRow {
+    for (position, row) in shard.rows.iter().enumerate() {
+        let lateral = shard.lateral.as_ref().and_then(|l| l.get(position));
+        check_row(&shard.identity, position, row, lateral)?;
+        check_row_belongs(&shard.identity, row, campaign_seed, runs, position_of)?;
+    }
+    sort_rows(shard, position_of);
+    check_every_run_once(shard, runs, position_of)
+}
+
+/// The error for `row` of the shard `identity` that is not one of its runs.
+fn foreign(identity: &ShardIdentity, row: &RunRow, problem: String) -> MergeError {
+    MergeError::ForeignRow {
         location: identity.source.clone(),
         shard: identity.shard,
         run_index: row.run_index,
         controller: row.controller.to_string(),
         problem,
-    };
-    for (position, row) in shard.rows.iter().enumerate() {
-        let lateral_check = shard
-            .lateral
-            .as_ref()
-            .and_then(|l| l.get(position))
-            .map_or(Ok(()), |values| {
-                values.check(row.touchdown_distance_m.is_some(), row.flown())
-            });
-        if let Err(error) = row.check().and(lateral_check) {
-            return Err(MergeError::BadRow {
-                location: identity.source.clone(),
-                row: position as u64 + 1,
-                run_index: row.run_index,
-                controller: row.controller.to_string(),
-                error: Box::new(error),
-            });
-        }
-        if row.run_index >= runs {
-            return Err(foreign(
-                row,
-                format!("is beyond the campaign's {runs} runs"),
-            ));
-        }
-        if !identity.shard.contains(row.run_index) {
-            return Err(foreign(
-                row,
-                format!(
-                    "belongs to shard {}/{}",
-                    row.run_index % identity.shard.count(),
-                    identity.shard.count()
-                ),
-            ));
-        }
-        if position_of(&row.controller).is_none() {
-            return Err(foreign(
-                row,
-                "flies a controller the shard does not list".to_owned(),
-            ));
-        }
-        let seed = run_seed(campaign_seed, row.run_index);
-        if row.seed != seed {
-            return Err(foreign(
-                row,
-                format!(
-                    "has seed {} where campaign seed {campaign_seed} gives {seed}",
-                    row.seed
-                ),
-            ));
-        }
     }
+}
+
+/// Checks the values of the `position`-th row (from 0) against the row schema, and
+/// its lateral columns in a 3-D campaign.
+fn check_row(
+    identity: &ShardIdentity,
+    position: usize,
+    row: &RunRow,
+    lateral: Option<&LateralRow>,
+) -> Result<(), MergeError> {
+    let lateral_check = lateral.map_or(Ok(()), |values| {
+        values.check(row.touchdown_distance_m.is_some(), row.flown())
+    });
+    row.check()
+        .and(lateral_check)
+        .map_err(|error| MergeError::BadRow {
+            location: identity.source.clone(),
+            row: position as u64 + 1,
+            run_index: row.run_index,
+            controller: row.controller.to_string(),
+            error: Box::new(error),
+        })
+}
+
+/// Checks that `row` is a run of the shard `identity`: within the campaign's `runs`,
+/// of this shard, under a listed controller and with its run's seed.
+fn check_row_belongs(
+    identity: &ShardIdentity,
+    row: &RunRow,
+    campaign_seed: u64,
+    runs: u64,
+    position_of: &dyn Fn(&str) -> Option<usize>,
+) -> Result<(), MergeError> {
+    if row.run_index >= runs {
+        return Err(foreign(
+            identity,
+            row,
+            format!("is beyond the campaign's {runs} runs"),
+        ));
+    }
+    if !identity.shard.contains(row.run_index) {
+        return Err(foreign(
+            identity,
+            row,
+            format!(
+                "belongs to shard {}/{}",
+                row.run_index % identity.shard.count(),
+                identity.shard.count()
+            ),
+        ));
+    }
+    if position_of(&row.controller).is_none() {
+        return Err(foreign(
+            identity,
+            row,
+            "flies a controller the shard does not list".to_owned(),
+        ));
+    }
+    let seed = run_seed(campaign_seed, row.run_index);
+    if row.seed != seed {
+        return Err(foreign(
+            identity,
+            row,
+            format!(
+                "has seed {} where campaign seed {campaign_seed} gives {seed}",
+                row.seed
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// Sorts `shard`'s rows (with their lateral columns) by run index and controller.
+fn sort_rows(shard: &mut ShardRows, position_of: &dyn Fn(&str) -> Option<usize>) {
     let three_dimensional = shard.lateral.is_some();
     let mut pairs = paired(ShardRows {
         identity: shard.identity.clone(),
@@ -402,49 +493,48 @@ fn check_rows(
     let (rows, lateral): (Vec<_>, Vec<_>) = pairs.into_iter().unzip();
     shard.rows = rows;
     shard.lateral = three_dimensional.then(|| lateral.into_iter().flatten().collect());
+}
+
+/// Checks that the sorted rows of `shard` are each of its runs under each controller,
+/// once: none twice, none missing.
+fn check_every_run_once(
+    shard: &ShardRows,
+    runs: u64,
+    position_of: &dyn Fn(&str) -> Option<usize>,
+) -> Result<(), MergeError> {
+    let identity = &shard.identity;
+    let variants = identity.controllers.len() as u64;
     let expected = identity.shard.runs_of(runs) * variants;
     let mut expected_keys = (0..identity.shard.runs_of(runs))
         .flat_map(|p| (0..variants).map(move |v| (identity.shard.run_index(p), v as usize)));
+    let missing = |run_index: u64, variant: usize| MergeError::MissingRuns {
+        location: identity.source.clone(),
+        shard: identity.shard,
+        expected,
+        found: shard.rows.len() as u64,
+        first_missing: run_index,
+        controller: identity
+            .controllers
+            .get(variant)
+            .cloned()
+            .unwrap_or_default(),
+    };
     let mut previous: Option<(u64, Option<usize>)> = None;
     for row in &shard.rows {
         let key = (row.run_index, position_of(&row.controller));
         if previous == Some(key) {
-            return Err(foreign(row, "appears twice".to_owned()));
+            return Err(foreign(identity, row, "appears twice".to_owned()));
         }
         previous = Some(key);
         let Some((run_index, variant)) = expected_keys.next() else {
             break;
         };
         if (run_index, Some(variant)) != key {
-            let controller = shard
-                .identity
-                .controllers
-                .get(variant)
-                .cloned()
-                .unwrap_or_default();
-            return Err(MergeError::MissingRuns {
-                location: identity.source.clone(),
-                shard: identity.shard,
-                expected,
-                found: shard.rows.len() as u64,
-                first_missing: run_index,
-                controller,
-            });
+            return Err(missing(run_index, variant));
         }
     }
-    if let Some((run_index, variant)) = expected_keys.next() {
-        return Err(MergeError::MissingRuns {
-            location: identity.source.clone(),
-            shard: identity.shard,
-            expected,
-            found: shard.rows.len() as u64,
-            first_missing: run_index,
-            controller: identity
-                .controllers
-                .get(variant)
-                .cloned()
-                .unwrap_or_default(),
-        });
+    match expected_keys.next() {
+        Some((run_index, variant)) => Err(missing(run_index, variant)),
+        None => Ok(()),
     }
-    Ok(())
 }

@@ -58,8 +58,9 @@ pub use lateral::{
     LateralRow, LateralRunValues, LateralStatistics, LATERAL_RUN_COLUMNS, RAMP_LINEUP_PASS_DEG,
 };
 pub use limits::{
-    check_runs, LimitError, MAX_CONTROLLERS, MAX_CONTROLLER_LABEL_BYTES, MAX_RUNS,
-    MAX_RUNS_CSV_BYTES, MAX_SHARDS, MAX_SUMMARY_JSON_BYTES,
+    check_runs, check_seed, check_threads, LimitError, MAX_CAMPAIGN_SEED, MAX_CONTROLLERS,
+    MAX_CONTROLLER_LABEL_BYTES, MAX_RUNS, MAX_RUNS_CSV_BYTES, MAX_SHARDS, MAX_SUMMARY_JSON_BYTES,
+    MAX_THREADS,
 };
 pub use merge::{merge_shards, MergedCampaign, ShardIdentity, ShardRows};
 pub use merge_error::MergeError;

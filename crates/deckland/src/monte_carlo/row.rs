@@ -21,6 +21,7 @@ use std::borrow::Cow;
 use serde::{Deserialize, Serialize};
 
 use super::record::RunRecord;
+use crate::parameters::readable_number;
 use crate::simulation::{Outcome, SIGNAL_MAGNITUDE_LIMIT};
 
 /// The columns of `runs.csv`, in order (the fields of [`RunRow`]).
@@ -258,60 +259,87 @@ impl<'a> RunRow<'a> {
     /// Checks that a campaign can have written this row (the module's schema); the error
     /// names the first column at fault and its value.
     pub fn check(&self) -> Result<(), RowError> {
-        let error = |column: &'static str, value: String, problem: &str| RowError {
-            column,
-            value,
-            problem: problem.to_owned(),
-        };
+        self.check_outcome()?;
+        self.check_ranges()?;
+        self.check_wire()?;
+        self.check_flight_columns()?;
+        self.check_touchdown_columns()?;
+        self.check_reason()
+    }
+
+    /// The outcome is one a campaign writes.
+    fn check_outcome(&self) -> Result<(), RowError> {
         let outcome = self.outcome.as_ref();
-        if !CAMPAIGN_OUTCOMES.contains(&outcome) {
-            return Err(error(
-                "outcome",
-                format!("`{outcome}`"),
-                &format!(
-                    "not an outcome of a campaign ({})",
-                    CAMPAIGN_OUTCOMES.join(", ")
-                ),
-            ));
+        if CAMPAIGN_OUTCOMES.contains(&outcome) {
+            return Ok(());
         }
+        Err(row_error(
+            "outcome",
+            format!("`{outcome}`"),
+            &format!(
+                "not an outcome of a campaign ({})",
+                CAMPAIGN_OUTCOMES.join(", ")
+            ),
+        ))
+    }
+
+    /// Every number is finite and within its physical range ([`RANGES`]).
+    fn check_ranges(&self) -> Result<(), RowError> {
         for ((column, low, high), value) in RANGES.iter().zip(self.numbers()) {
-            if let Some(value) = value {
-                if !value.is_finite() {
-                    return Err(error(column, format!("{value:?}"), "not a finite number"));
-                }
-                if !(value >= *low && value <= *high) {
-                    return Err(error(
-                        column,
-                        format!("{value:?}"),
-                        &format!("outside its physical range {low} to {high}"),
-                    ));
-                }
+            let Some(value) = value else {
+                continue;
+            };
+            if !value.is_finite() {
+                return Err(row_error(
+                    column,
+                    format!("{value:?}"),
+                    "not a finite number",
+                ));
+            }
+            if !(value >= *low && value <= *high) {
+                return Err(row_error(
+                    column,
+                    format!("{value:?}"),
+                    &format!(
+                        "outside its physical range {} to {}",
+                        readable_number(*low),
+                        readable_number(*high)
+                    ),
+                ));
             }
         }
-        let shown =
-            |value: Option<f64>| value.map_or_else(|| "empty".to_owned(), |v| format!("{v:?}"));
+        Ok(())
+    }
+
+    /// A wire (1 to 4) exactly for a trap, and possibly for a hard landing.
+    fn check_wire(&self) -> Result<(), RowError> {
+        let outcome = self.outcome.as_ref();
         let trap = outcome == Outcome::Trap.name();
         let hard_landing = outcome == Outcome::HardLanding.name();
         match self.wire {
-            Some(wire) if !(1..=4).contains(&wire) => {
-                return Err(error("wire", wire.to_string(), "wires are numbered 1 to 4"));
-            }
-            Some(wire) if !trap && !hard_landing => {
-                return Err(error(
-                    "wire",
-                    wire.to_string(),
-                    &format!("a `{outcome}` catches no wire: only a trap or a hard landing does"),
-                ));
-            }
-            None if trap => {
-                return Err(error(
-                    "wire",
-                    "empty".to_owned(),
-                    "a trap catches a wire (1 to 4)",
-                ));
-            }
-            _ => {}
+            Some(wire) if !(1..=4).contains(&wire) => Err(row_error(
+                "wire",
+                wire.to_string(),
+                "wires are numbered 1 to 4",
+            )),
+            Some(wire) if !trap && !hard_landing => Err(row_error(
+                "wire",
+                wire.to_string(),
+                &format!("a `{outcome}` catches no wire: only a trap or a hard landing does"),
+            )),
+            None if trap => Err(row_error(
+                "wire",
+                "empty".to_owned(),
+                "a trap catches a wire (1 to 4)",
+            )),
+            _ => Ok(()),
         }
+    }
+
+    /// A flown run has the flight's columns; a run that never flew (`invalid`,
+    /// `panicked`) has none of them and no touchdown, clearance or glide-path error.
+    fn check_flight_columns(&self) -> Result<(), RowError> {
+        let outcome = self.outcome.as_ref();
         let set_up = !matches!(outcome, "invalid" | "panicked");
         let flight = [
             ("end_time_s", self.end_time_s),
@@ -323,7 +351,7 @@ impl<'a> RunRow<'a> {
         ];
         for (column, value) in flight {
             if value.is_some() != set_up {
-                return Err(error(
+                return Err(row_error(
                     column,
                     shown(value),
                     &if set_up {
@@ -334,21 +362,30 @@ impl<'a> RunRow<'a> {
                 ));
             }
         }
-        if !set_up {
-            let flown_only = [
-                ("touchdown_distance_m", self.touchdown_distance_m),
-                ("ramp_clearance_m", self.ramp_clearance_m),
-                ("glide_path_error_rms_m", self.glide_path_error_rms_m),
-                ("glide_path_error_max_m", self.glide_path_error_max_m),
-            ];
-            if let Some((column, value)) = flown_only.into_iter().find(|(_, v)| v.is_some()) {
-                return Err(error(
-                    column,
-                    shown(value),
-                    &format!("a run that never flew (`{outcome}`) has none"),
-                ));
-            }
+        if set_up {
+            return Ok(());
         }
+        let flown_only = [
+            ("touchdown_distance_m", self.touchdown_distance_m),
+            ("ramp_clearance_m", self.ramp_clearance_m),
+            ("glide_path_error_rms_m", self.glide_path_error_rms_m),
+            ("glide_path_error_max_m", self.glide_path_error_max_m),
+        ];
+        match flown_only.into_iter().find(|(_, v)| v.is_some()) {
+            Some((column, value)) => Err(row_error(
+                column,
+                shown(value),
+                &format!("a run that never flew (`{outcome}`) has none"),
+            )),
+            None => Ok(()),
+        }
+    }
+
+    /// All four touchdown columns or none, all four for a trap or a hard landing; a ramp
+    /// strike has a negative clearance.
+    fn check_touchdown_columns(&self) -> Result<(), RowError> {
+        let outcome = self.outcome.as_ref();
+        let landed = outcome == Outcome::Trap.name() || outcome == Outcome::HardLanding.name();
         let touchdown = [
             ("touchdown_distance_m", self.touchdown_distance_m),
             ("touchdown_sink_rate_mps", self.touchdown_sink_rate_mps),
@@ -357,13 +394,13 @@ impl<'a> RunRow<'a> {
         ];
         let touched_down = self.touchdown_distance_m.is_some();
         for (column, value) in touchdown {
-            if value.is_some() != touched_down || (!touched_down && (trap || hard_landing)) {
-                return Err(error(
+            if value.is_some() != touched_down || (!touched_down && landed) {
+                return Err(row_error(
                     column,
                     shown(value),
                     &format!(
                         "a `{outcome}` has {}",
-                        if trap || hard_landing {
+                        if landed {
                             "its touchdown (all four touchdown columns)"
                         } else {
                             "all four touchdown columns or none"
@@ -374,27 +411,45 @@ impl<'a> RunRow<'a> {
         }
         if outcome == Outcome::RampStrike.name() && !self.ramp_clearance_m.is_some_and(|c| c < 0.0)
         {
-            return Err(error(
+            return Err(row_error(
                 "ramp_clearance_m",
                 shown(self.ramp_clearance_m),
                 "a ramp strike has the hook below the ramp (a negative clearance)",
             ));
         }
-        let reason = self.reason.as_deref().filter(|r| !r.is_empty());
-        if trap && reason.is_some() {
-            return Err(error(
+        Ok(())
+    }
+
+    /// A trap has no reason; every other outcome says why in words.
+    fn check_reason(&self) -> Result<(), RowError> {
+        let outcome = self.outcome.as_ref();
+        let trap = outcome == Outcome::Trap.name();
+        match self.reason.as_deref().filter(|r| !r.is_empty()) {
+            Some(reason) if trap => Err(row_error(
                 "reason",
-                format!("{:?}", reason.unwrap_or_default()),
+                format!("{reason:?}"),
                 "a trap has no reason",
-            ));
-        }
-        if !trap && reason.is_none() {
-            return Err(error(
+            )),
+            None if !trap => Err(row_error(
                 "reason",
                 "empty".to_owned(),
                 &format!("a `{outcome}` says why in words"),
-            ));
+            )),
+            _ => Ok(()),
         }
-        Ok(())
     }
+}
+
+/// The error for `column` holding `value` (as shown) that breaks the schema.
+fn row_error(column: &'static str, value: String, problem: &str) -> RowError {
+    RowError {
+        column,
+        value,
+        problem: problem.to_owned(),
+    }
+}
+
+/// An optional value as an error shows it: `empty` when blank.
+fn shown(value: Option<f64>) -> String {
+    value.map_or_else(|| "empty".to_owned(), |v| format!("{v:?}"))
 }

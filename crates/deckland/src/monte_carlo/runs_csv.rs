@@ -4,7 +4,7 @@
 use super::lateral::{lateral_row_columns, LateralRow, LATERAL_RUN_COLUMNS};
 use super::limits::{MAX_CONTROLLERS, MAX_RUNS};
 use super::merge_error::MergeError;
-use super::row::{RunRow, RUN_COLUMNS};
+use super::row::{RowError, RunRow, RUN_COLUMNS};
 use super::trap_sheet::TRAP_SHEET_RUN_COLUMNS;
 
 /// A shard's `runs.csv` read back: its rows, and a 3-D campaign's [`LateralRow`] of
@@ -66,11 +66,6 @@ fn text_of(writer: csv::Writer<Vec<u8>>) -> Result<String, csv::Error> {
 /// write ([`RunRow::check`], [`LateralRow::check`]). Every error names the line and the
 /// column at fault.
 pub fn parse_runs_csv(location: &str, text: &str) -> Result<ParsedRuns, MergeError> {
-    let at = |line: u64, problem: String| MergeError::RunsCsv {
-        location: location.to_owned(),
-        line,
-        problem,
-    };
     let header = text
         .lines()
         .next()
@@ -86,41 +81,51 @@ pub fn parse_runs_csv(location: &str, text: &str) -> Result<ParsedRuns, MergeErr
     } else {
         RUN_COLUMNS.to_vec()
     };
-    if columns != expected {
-        let position = expected
-            .iter()
-            .zip(&columns)
-            .position(|(a, b)| a != b)
-            .unwrap_or(columns.len().min(expected.len()));
-        let problem = match (expected.get(position), columns.get(position)) {
-            (Some(expected), Some(found)) => {
-                format!(
-                    "column {} is `{found}` where a campaign writes `{expected}`",
-                    position + 1
-                )
-            }
-            (Some(expected), None) => format!("the column `{expected}` is missing"),
-            (None, Some(found)) => format!("`{found}` is not a column of a campaign"),
-            (None, None) => "no header".to_owned(),
-        };
-        return Err(at(
-            1,
-            format!("{problem} (the header is `{}`)", expected.join(",")),
-        ));
-    }
+    let errors = CsvErrors {
+        location,
+        width: expected.len(),
+    };
+    check_header(&errors, &columns, &expected)?;
     if !text.ends_with('\n') {
         let lines = text.lines().count() as u64;
-        return Err(at(
+        return Err(errors.at(
             lines,
             "the last line does not end: the file is cut short (truncated?)".to_owned(),
         ));
     }
-    let most_rows = MAX_RUNS * MAX_CONTROLLERS as u64;
-    let mut reader = csv::ReaderBuilder::new()
+    let reader = csv::ReaderBuilder::new()
         .has_headers(true)
         .from_reader(text.as_bytes());
-    let width = expected.len();
-    let csv_error = |error: csv::Error, number: u64| {
+    if three_dimensional {
+        parse_three_dimensional_rows(&errors, reader)
+    } else {
+        parse_rows(&errors, reader)
+    }
+}
+
+/// Most rows a `runs.csv` can hold: every run under every controller.
+const MOST_ROWS: u64 = MAX_RUNS * MAX_CONTROLLERS as u64;
+
+/// The errors of one `runs.csv`, each naming it (`location`), its line and column.
+struct CsvErrors<'a> {
+    /// Where the text comes from.
+    location: &'a str,
+    /// How many columns a row has.
+    width: usize,
+}
+
+impl CsvErrors<'_> {
+    /// The error at `line` (from 1) saying `problem`.
+    fn at(&self, line: u64, problem: String) -> MergeError {
+        MergeError::RunsCsv {
+            location: self.location.to_owned(),
+            line,
+            problem,
+        }
+    }
+
+    /// The error of the csv reader at row `number` (from 1), naming the column.
+    fn csv(&self, error: csv::Error, number: u64) -> MergeError {
         let line = error.position().map_or(number + 1, |p| p.line());
         let column = match error.kind() {
             csv::ErrorKind::Deserialize { err, .. } => err
@@ -132,63 +137,110 @@ pub fn parse_runs_csv(location: &str, text: &str) -> Result<ParsedRuns, MergeErr
         };
         let message = match error.kind() {
             csv::ErrorKind::Deserialize { err, .. } => err.kind().to_string(),
-            csv::ErrorKind::UnequalLengths { len, .. } => {
-                format!("{len} fields where a campaign writes {width}: is the row cut short?")
-            }
+            csv::ErrorKind::UnequalLengths { len, .. } => format!(
+                "{len} fields where a campaign writes {}: is the row cut short?",
+                self.width
+            ),
             _ => error.to_string(),
         };
-        at(line, format!("{column}{message}"))
-    };
-    let bad_row = |number: u64, row: &RunRow, error| MergeError::BadRow {
-        location: location.to_owned(),
-        row: number,
-        run_index: row.run_index,
-        controller: row.controller.to_string(),
-        error: Box::new(error),
-    };
-    let mut rows = Vec::new();
-    if !three_dimensional {
-        for (position, row) in reader.deserialize::<RunRow<'static>>().enumerate() {
-            let number = position as u64 + 1;
-            if number > most_rows {
-                return Err(at(
-                    number + 1,
-                    format!("more than {most_rows} rows: more than a campaign has"),
-                ));
-            }
-            let row = row.map_err(|error| csv_error(error, number))?;
-            if let Err(error) = row.check() {
-                return Err(bad_row(number, &row, error));
-            }
-            rows.push(row);
-        }
-        return Ok(ParsedRuns {
-            rows,
-            lateral: None,
-        });
+        self.at(line, format!("{column}{message}"))
     }
+
+    /// Row `number` (from 1) breaks the row schema.
+    fn bad_row(&self, number: u64, row: &RunRow, error: RowError) -> MergeError {
+        MergeError::BadRow {
+            location: self.location.to_owned(),
+            row: number,
+            run_index: row.run_index,
+            controller: row.controller.to_string(),
+            error: Box::new(error),
+        }
+    }
+
+    /// Refuses row `number` (from 1) beyond [`MOST_ROWS`].
+    fn check_count(&self, number: u64) -> Result<(), MergeError> {
+        if number > MOST_ROWS {
+            return Err(self.at(
+                number + 1,
+                format!("more than {MOST_ROWS} rows: more than a campaign has"),
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// Checks that the header's `columns` are the `expected` ones, naming the first that
+/// differs.
+fn check_header(errors: &CsvErrors, columns: &[&str], expected: &[&str]) -> Result<(), MergeError> {
+    if columns == expected {
+        return Ok(());
+    }
+    let position = expected
+        .iter()
+        .zip(columns)
+        .position(|(a, b)| a != b)
+        .unwrap_or(columns.len().min(expected.len()));
+    let problem = match (expected.get(position), columns.get(position)) {
+        (Some(expected), Some(found)) => {
+            format!(
+                "column {} is `{found}` where a campaign writes `{expected}`",
+                position + 1
+            )
+        }
+        (Some(expected), None) => format!("the column `{expected}` is missing"),
+        (None, Some(found)) => format!("`{found}` is not a column of a campaign"),
+        (None, None) => "no header".to_owned(),
+    };
+    Err(errors.at(
+        1,
+        format!("{problem} (the header is `{}`)", expected.join(",")),
+    ))
+}
+
+/// The rows of a 3-DOF campaign's `runs.csv`, each checked.
+fn parse_rows(
+    errors: &CsvErrors,
+    mut reader: csv::Reader<&[u8]>,
+) -> Result<ParsedRuns, MergeError> {
+    let mut rows = Vec::new();
+    for (position, row) in reader.deserialize::<RunRow<'static>>().enumerate() {
+        let number = position as u64 + 1;
+        errors.check_count(number)?;
+        let row = row.map_err(|error| errors.csv(error, number))?;
+        if let Err(error) = row.check() {
+            return Err(errors.bad_row(number, &row, error));
+        }
+        rows.push(row);
+    }
+    Ok(ParsedRuns {
+        rows,
+        lateral: None,
+    })
+}
+
+/// The rows of a 3-D campaign's `runs.csv` with their lateral columns, each checked.
+fn parse_three_dimensional_rows(
+    errors: &CsvErrors,
+    mut reader: csv::Reader<&[u8]>,
+) -> Result<ParsedRuns, MergeError> {
     let headers = csv::StringRecord::from(RUN_COLUMNS.to_vec());
+    let mut rows = Vec::new();
     let mut lateral = Vec::new();
     for (position, record) in reader.records().enumerate() {
         let number = position as u64 + 1;
-        if number > most_rows {
-            return Err(at(
-                number + 1,
-                format!("more than {most_rows} rows: more than a campaign has"),
-            ));
-        }
-        let record = record.map_err(|error| csv_error(error, number))?;
+        errors.check_count(number)?;
+        let record = record.map_err(|error| errors.csv(error, number))?;
         let line = record.position().map_or(number + 1, |p| p.line());
         let base: csv::StringRecord = record.iter().take(RUN_COLUMNS.len()).collect();
         let row: RunRow<'static> = base
             .deserialize(Some(&headers))
-            .map_err(|error| csv_error(error, line - 1))?;
-        let values = lateral_values(&record).map_err(|problem| at(line, problem))?;
+            .map_err(|error| errors.csv(error, line - 1))?;
+        let values = lateral_values(&record).map_err(|problem| errors.at(line, problem))?;
         if let Err(error) = row.check() {
-            return Err(bad_row(number, &row, error));
+            return Err(errors.bad_row(number, &row, error));
         }
         if let Err(error) = values.check(row.touchdown_distance_m.is_some(), row.flown()) {
-            return Err(bad_row(number, &row, error));
+            return Err(errors.bad_row(number, &row, error));
         }
         rows.push(row);
         lateral.push(values);

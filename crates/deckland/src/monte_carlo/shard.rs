@@ -53,6 +53,16 @@ pub enum ShardError {
         /// The M given.
         count: u64,
     },
+    /// M above the campaign's run count: a shard would hold no run, and merge refuses it.
+    #[error("shard `{index}/{count}` of a campaign of {runs} runs: the number of shards M must be at most the number of runs ({runs}), so that every shard flies a run")]
+    MoreShardsThanRuns {
+        /// The K given.
+        index: u64,
+        /// The M given.
+        count: u64,
+        /// The campaign's run count.
+        runs: u64,
+    },
     /// K ≥ M.
     #[error("shard `{index}/{count}`: K must be 0 to M − 1 = {} (shards count from 0, as run indices)", count - 1)]
     IndexOutOfRange {
@@ -79,6 +89,19 @@ impl Shard {
             return Err(ShardError::IndexOutOfRange { index, count });
         }
         Ok(Self { index, count })
+    }
+
+    /// This shard, checked against a campaign of `runs` runs: M at most `runs`, the rule
+    /// `merge` applies to the shards it reads, so a shard `campaign` flies always merges.
+    pub fn of_runs(self, runs: u64) -> Result<Self, ShardError> {
+        if self.count > runs {
+            return Err(ShardError::MoreShardsThanRuns {
+                index: self.index,
+                count: self.count,
+                runs,
+            });
+        }
+        Ok(self)
     }
 
     /// Which shard, from 0 (K of K/M).

@@ -18,7 +18,7 @@ use super::events::EventDetector;
 use super::outcome::{Divergence, EndReason, Event, LandingRules, RunSummary};
 use super::recorder::{GlidePathStatistics, Recorder};
 use super::setup::{build, SetupError, UserParts};
-use super::signals::{Signals, SIGNAL_MAGNITUDE_LIMIT};
+use super::signals::Signals;
 use super::taps::{NoTaps, Taps};
 use crate::aircraft::{ALPHA_MAX_RAD, ALPHA_MIN_RAD};
 use crate::control::WaveOffDecision;
@@ -488,16 +488,7 @@ impl Simulation {
         // Every signal, commands included: a non-finite or absurd command ends the run
         // here, named, before it reaches the plant's next step or a recorder.
         if let Some((signal, value)) = s.first_out_of_range() {
-            return diverged(if value.is_finite() {
-                Divergence::SignalOutOfRange {
-                    time_s: t,
-                    signal,
-                    value,
-                    limit: SIGNAL_MAGNITUDE_LIMIT,
-                }
-            } else {
-                Divergence::NonFiniteSignal { time_s: t, signal }
-            });
+            return diverged(Divergence::of_signal(t, signal, value));
         }
         if !(ALPHA_MIN_RAD..=ALPHA_MAX_RAD).contains(&s.alpha_rad) {
             return diverged(Divergence::AngleOfAttack {

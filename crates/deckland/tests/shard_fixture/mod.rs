@@ -15,10 +15,12 @@ pub const RUNS: u64 = 12;
 /// Shards of the fixture campaign.
 pub const SHARDS: u64 = 3;
 
-/// A short (500 m) approach with wide dispersions, so that the runs end in several ways
-/// (traps, bolters, hard landings, wave-offs, invalid dispersed scenarios).
-fn wide_scenario() -> Scenario {
+/// A short (500 m) approach of the longitudinal aircraft (a 3-DOF campaign, without
+/// lateral columns) with wide dispersions, so that the runs end in several ways (traps,
+/// bolters, hard landings, wave-offs, invalid dispersed scenarios).
+pub fn wide_scenario() -> Scenario {
     let mut scenario = Scenario::default();
+    scenario.aircraft.model = deckland::aircraft::PlantModel::ThreeDof;
     scenario.approach.start_range_m = 500.0;
     scenario.dispersion = DispersionParameters {
         start_height_offset_sd_m: 6.0,

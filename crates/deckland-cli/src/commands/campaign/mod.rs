@@ -89,8 +89,8 @@ fn parse_shard(text: &str) -> Result<Shard, String> {
 /// every front end.
 pub const MAX_RUNS: u64 = deckland::monte_carlo::MAX_RUNS;
 
-/// Most worker threads: more than the cores only adds switching.
-pub const MAX_THREADS: i64 = 256;
+/// Most worker threads: the library's limit, the same for every front end.
+pub const MAX_THREADS: i64 = deckland::monte_carlo::MAX_THREADS as i64;
 
 /// The progress bar on stderr: hidden when stderr is not a terminal or with `--json`.
 fn progress_bar(total: u64, hidden: bool) -> ProgressBar {
@@ -139,7 +139,7 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
         },
         usize::from,
     );
-    let shard = args.shard.unwrap_or(Shard::WHOLE);
+    let shard = args.shard.unwrap_or(Shard::WHOLE).of_runs(args.runs)?;
     spec = spec.sharded(shard);
     let output = OutputDir::prepare("campaign", args.output.out.as_deref(), args.output.force)?;
     let total = shard

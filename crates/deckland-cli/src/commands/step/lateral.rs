@@ -10,10 +10,12 @@
 use std::path::PathBuf;
 
 use anyhow::{anyhow, bail, Context, Result};
+use deckland::aircraft::PlantModel;
 use deckland::experiments::{
     fly_lateral_step, LateralAxis, LateralSample, LateralSetup, LateralStep, LateralStepReport,
-    LATERAL_STEP_TIME_S,
+    LATERAL_STEP_TIME_S, MAX_LATERAL_STEP_DEG, MIN_LATERAL_STEP_DEG,
 };
+use deckland::parameters::readable_number;
 use deckland::scenario::HardwareSet;
 use serde::Serialize;
 
@@ -23,8 +25,6 @@ use crate::commands::common::{Conditions, ControllerChoice};
 use crate::output::OutputDir;
 use crate::plot::step::lateral::lateral_figures;
 
-/// Largest |--step-deg| accepted on the lateral axes (deg).
-const MAX_LATERAL_STEP_DEG: f64 = 30.0;
 
 /// The JSON document of `deckland step --axis roll|yaw --json`: the library's report and
 /// where the files went.
@@ -45,20 +45,21 @@ fn law_name(choice: ControllerChoice) -> &'static str {
 /// Flies and reports the lateral step.
 pub(crate) fn run(args: &StepArgs, axis: LateralAxis) -> Result<()> {
     if !(args.step_deg.is_finite()
-        && args.step_deg != 0.0
-        && args.step_deg.abs() <= MAX_LATERAL_STEP_DEG)
+        && (MIN_LATERAL_STEP_DEG..=MAX_LATERAL_STEP_DEG).contains(&args.step_deg.abs()))
     {
         bail!(
-            "--step-deg must be nonzero with |D| <= {MAX_LATERAL_STEP_DEG} on the {} axis, got {}",
+            "--step-deg must have {MIN_LATERAL_STEP_DEG} <= |D| <= {MAX_LATERAL_STEP_DEG} on \
+             the {} axis (below {MIN_LATERAL_STEP_DEG}° the step is lost in the sensors' \
+             noise and the trim's residue), got {}",
             axis_name(axis),
-            args.step_deg
+            readable_number(args.step_deg)
         );
     }
     if !(args.seconds.is_finite() && (MIN_SECONDS..=MAX_SECONDS).contains(&args.seconds)) {
         bail!(
             "--seconds must lie in [{MIN_SECONDS}, {MAX_SECONDS}] s (the step comes at \
              {LATERAL_STEP_TIME_S} s), got {}",
-            args.seconds
+            readable_number(args.seconds)
         );
     }
     if args.epsilon.is_some() {
@@ -78,6 +79,14 @@ pub(crate) fn run(args: &StepArgs, axis: LateralAxis) -> Result<()> {
             } else {
                 "--hardware paper"
             },
+            axis_name(axis)
+        );
+    }
+    if scenario.aircraft.model == PlantModel::ThreeDof {
+        bail!(
+            "the scenario file sets `aircraft.model` = \"3dof\", the longitudinal aircraft, \
+             which has no {} axis; write `model = \"6dof\"` (or leave the key out) to fly \
+             the lateral step",
             axis_name(axis)
         );
     }

@@ -37,24 +37,47 @@ impl Default for LateralParameters {
     }
 }
 
+/// Smallest moment of inertia about any axis of the x–z plane (kg·m²): the floor of
+/// `roll_inertia_kg_m2` and `yaw_inertia_kg_m2`, and of the principal moments that the
+/// product of inertia leaves ([`LateralParameters::validate`]).
+pub const MIN_INERTIA_KG_M2: f64 = 1000.0;
+
 impl LateralParameters {
-    /// Checks the span (1–100 m), the inertias (10³–10⁸ kg·m²) and the product of
-    /// inertia (|I_xz| < √(I_x·I_z), so that the inertia matrix is positive definite).
+    /// Checks the span (1–100 m), the inertias ([`MIN_INERTIA_KG_M2`]–10⁸ kg·m²) and
+    /// the product of inertia: |I_xz| ≤ √((I_x − I_min)·(I_z − I_min)), I_min =
+    /// [`MIN_INERTIA_KG_M2`]. That is, the smaller principal moment of inertia of the x–z
+    /// plane, ((I_x + I_z) − √((I_x − I_z)² + 4·I_xz²))/2, is at least I_min, the floor of
+    /// I_x and I_z themselves. The roll and yaw equations divide by Γ = I_x·I_z − I_xz²
+    /// (Stevens & Lewis Eq. 1.7-4): |I_xz| < √(I_x·I_z) alone keeps Γ positive, but near
+    /// that bound the roll–yaw accelerations grow as 1/Γ and the 1-ms step diverges
+    /// (x = −2.9·10¹⁴ m at t = 0.001 s at |I_xz| = 0.999999·√(I_x·I_z); the default
+    /// F/A-18 still flies at 0.999, where the smaller principal moment is 55 kg·m²).
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "aircraft.lateral";
         Bounds::closed(1.0, 100.0).check(SECTION, "span_m", self.span_m)?;
-        let inertia = Bounds::closed(1000.0, 1e8);
+        let inertia = Bounds::closed(MIN_INERTIA_KG_M2, 1e8);
         inertia.check(SECTION, "roll_inertia_kg_m2", self.roll_inertia_kg_m2)?;
         inertia.check(SECTION, "yaw_inertia_kg_m2", self.yaw_inertia_kg_m2)?;
-        let limit = (self.roll_inertia_kg_m2 * self.yaw_inertia_kg_m2).sqrt();
-        Bounds::closed(-limit, limit)
-            .exclusive_min()
-            .exclusive_max()
-            .check(
-                SECTION,
-                "product_of_inertia_xz_kg_m2",
-                self.product_of_inertia_xz_kg_m2,
-            )
+        let limit = ((self.roll_inertia_kg_m2 - MIN_INERTIA_KG_M2)
+            * (self.yaw_inertia_kg_m2 - MIN_INERTIA_KG_M2))
+            .sqrt();
+        let product = self.product_of_inertia_xz_kg_m2;
+        if product.is_finite() && product.abs() <= limit {
+            return Ok(());
+        }
+        Err(ParameterError::new(
+            SECTION,
+            "product_of_inertia_xz_kg_m2",
+            product,
+            format_args!(
+                "a value in [{}, {}] for these I_x and I_z: the smaller principal moment of \
+                 inertia of the x–z plane must be at least {MIN_INERTIA_KG_M2} kg·m² (the \
+                 floor of I_x and I_z), or the roll and yaw equations, which divide by \
+                 I_x·I_z − I_xz², diverge within a step",
+                crate::parameters::readable_number(-limit),
+                crate::parameters::readable_number(limit)
+            ),
+        ))
     }
 }
 

@@ -2,7 +2,7 @@
 //! the refusal naming the hardware limit.
 
 use super::command_shaping::JerkLimitedStep;
-use super::request::{check, AxisHardware, DesignError, DesignRequest};
+use super::request::{AxisHardware, DesignError, DesignRequest};
 
 /// Travel from the trim surface position to the nearer stop (rad).
 pub fn nearer_stop_travel_rad(hardware: &AxisHardware) -> f64 {
@@ -49,14 +49,21 @@ pub fn design_command(
         request.command_rate_fraction,
         request.command_travel_fraction,
     );
-    check(
-        "command_jerk (η·R·|M_δ| − |M_q|·A)",
-        jerk.min(f64::MAX),
-        jerk > 0.0,
-        "> 0: a larger command_rate_fraction or a smaller command_travel_fraction",
-    )?;
-    let step = request.design_step_deg.to_radians();
     let actuator = &hardware.actuator;
+    if jerk.is_nan() || jerk <= 0.0 {
+        return Err(DesignError::CommandCannotBeShaped {
+            rate_limit_key: hardware.actuator_keys.rate_limit,
+            rate_limit_degps: actuator.rate_limit_degps.unwrap_or(f64::INFINITY),
+            travel_key: stop,
+            travel_deg: if stop.ends_with("min_deflection_deg") {
+                actuator.min_deflection_deg
+            } else {
+                actuator.max_deflection_deg
+            },
+            jerk_radps3: jerk,
+        });
+    }
+    let step = request.design_step_deg.to_radians();
     let lag_s = 2.0 * actuator.damping_ratio / actuator.natural_frequency_rad_s;
     let fastest = JerkLimitedStep::new(step, jerk, acceleration);
     let minimum_s = fastest.duration_s() + lag_s;

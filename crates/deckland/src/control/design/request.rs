@@ -119,7 +119,7 @@ impl Default for DesignRequest {
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum DesignError {
     /// A request or hardware value is NaN or out of its range.
-    #[error("design parameter `{field}` = {value} is out of range: expected {expected}")]
+    #[error("design parameter `{field}` = {} is out of range: expected {expected}", crate::parameters::readable_number(*value))]
     InvalidParameter {
         /// The parameter's name.
         field: &'static str,
@@ -127,6 +127,27 @@ pub enum DesignError {
         value: f64,
         /// The allowed range, in words.
         expected: &'static str,
+    },
+    /// The surface's rate limit cannot move it against the airframe's rate damping over
+    /// the travel the command may use: no jerk-limited command exists.
+    #[error(
+        "no command can be shaped for this surface: its rate limit `{rate_limit_key}` = \
+         {rate_limit_degps} deg/s cannot drive it over the travel `{travel_key}` = \
+         {travel_deg}° against the airframe's rate damping (command jerk \
+         η·R·|M_δ| − |M_q|·A = {jerk_radps3:.3e} rad/s³, must be > 0); raise \
+         `{rate_limit_key}` or lower `{travel_key}`"
+    )]
+    CommandCannotBeShaped {
+        /// The scenario key of the rate limit.
+        rate_limit_key: &'static str,
+        /// Its value (deg/s).
+        rate_limit_degps: f64,
+        /// The scenario key of the stop the command moves towards.
+        travel_key: &'static str,
+        /// Its value (deg).
+        travel_deg: f64,
+        /// The command's jerk bound, not positive (rad/s³).
+        jerk_radps3: f64,
     },
     /// The requested settling time is shorter than the hardware allows.
     #[error(

@@ -25,15 +25,15 @@ pub const FLIGHT_COMPUTER_DELAY_S: f64 = 1.5 / 80.0;
 
 /// The aileron's scenario keys.
 pub const AILERON_KEYS: ActuatorKeys = ActuatorKeys {
-    min_deflection: "aircraft.aileron_actuator.min_deflection_deg",
-    max_deflection: "aircraft.aileron_actuator.max_deflection_deg",
+    min_deflection: "aircraft.aileron_actuator.travel_deg",
+    max_deflection: "aircraft.aileron_actuator.travel_deg",
     rate_limit: "aircraft.aileron_actuator.rate_limit_degps",
 };
 
 /// The rudder's scenario keys.
 pub const RUDDER_KEYS: ActuatorKeys = ActuatorKeys {
-    min_deflection: "aircraft.rudder_actuator.min_deflection_deg",
-    max_deflection: "aircraft.rudder_actuator.max_deflection_deg",
+    min_deflection: "aircraft.rudder_actuator.travel_deg",
+    max_deflection: "aircraft.rudder_actuator.travel_deg",
     rate_limit: "aircraft.rudder_actuator.rate_limit_degps",
 };
 

@@ -36,6 +36,7 @@ use crate::control::lateral::{
 };
 use crate::control::pitch::ElevatorSaturation;
 use crate::environment::Wind;
+use crate::parameters::readable_number;
 use crate::random::{NoiseStream, RandomStreams};
 use response::measure;
 
@@ -66,6 +67,12 @@ const BANK_SINUSOID_RAD: f64 = 0.001;
 const BANK_SINUSOID_RADPS: f64 = 7.0;
 /// Air-data sideslip: white σ per sample (rad), 0.2°.
 const SIDESLIP_WHITE_SIGMA_RAD: f64 = 0.2 * std::f64::consts::PI / 180.0;
+/// Largest bank or sideslip step (deg).
+pub const MAX_LATERAL_STEP_DEG: f64 = 30.0;
+/// Smallest nonzero bank or sideslip step (deg): a sixth of the bank sensor's noise
+/// (0.057° σ); below it the step's metrics, which are shares of the step (overshoot,
+/// the 5 % settling band), would measure the trim's numerical residue, not the response.
+pub const MIN_LATERAL_STEP_DEG: f64 = 0.01;
 /// Tolerance of "on the rate limit" (deg/s).
 const RATE_LIMIT_TOLERANCE_DEGPS: f64 = 1e-6;
 
@@ -217,14 +224,19 @@ fn check_step(
 ) -> Result<(), LateralStepError> {
     let bad = |field: &str, value: f64, expected: &str| {
         Err(LateralStepError::Setup(format!(
-            "lateral step `{field}` = {value} is out of range: expected {expected}"
+            "lateral step `{field}` = {} is out of range: expected {expected}",
+            readable_number(value)
         )))
     };
-    if !(step.step_deg.is_finite() && step.step_deg.abs() <= 30.0) {
+    let magnitude = step.step_deg.abs();
+    if !(step.step_deg.is_finite()
+        && magnitude <= MAX_LATERAL_STEP_DEG
+        && (magnitude == 0.0 || magnitude >= MIN_LATERAL_STEP_DEG))
+    {
         return bad(
             "step_deg",
             step.step_deg,
-            "a bank or sideslip step within ±30°",
+            "0 (no step) or a bank or sideslip step of 0.01° to 30° either way",
         );
     }
     if !(step.seconds.is_finite() && step.seconds >= 2.0 && step.seconds <= 600.0) {

@@ -6,6 +6,7 @@ use std::fmt;
 use serde::Serialize;
 
 use super::activity::ActuatorActivity;
+use super::signals::SIGNAL_MAGNITUDE_LIMIT;
 use crate::control::WaveOffDecision;
 use crate::metrics::{LsoGrade, TrapSheet};
 use crate::scenario::OutcomeLimits;
@@ -150,6 +151,34 @@ pub enum Divergence {
         /// Time (s).
         time_s: f64,
     },
+    /// The aircraft stopped closing on the landing point (it turned or flew away from
+    /// the ship): the range opens and no time to go exists. A physical end, not a
+    /// numerical one, though the time to go it leaves is infinite.
+    RangeOpening {
+        /// Time (s).
+        time_s: f64,
+    },
+}
+
+impl Divergence {
+    /// Why `signal`, at `value` beyond its range at `time_s`, ends a run: an infinite
+    /// time to go is the range opening (the hook does not close on the landing point,
+    /// `FlightPathGenerator::time_to_go_s`), a physical end; any other non-finite value is
+    /// a numerical one, a finite value beyond [`SIGNAL_MAGNITUDE_LIMIT`] an absurd one.
+    pub fn of_signal(time_s: f64, signal: &'static str, value: f64) -> Self {
+        if signal == "time_to_go_s" && value == f64::INFINITY {
+            Self::RangeOpening { time_s }
+        } else if value.is_finite() {
+            Self::SignalOutOfRange {
+                time_s,
+                signal,
+                value,
+                limit: SIGNAL_MAGNITUDE_LIMIT,
+            }
+        } else {
+            Self::NonFiniteSignal { time_s, signal }
+        }
+    }
 }
 
 impl fmt::Display for Divergence {
@@ -190,6 +219,11 @@ impl fmt::Display for Divergence {
                 "airspeed {airspeed_mps:.1} m/s below the limit {limit_mps:.1} m/s at t = {time_s:.3} s"
             ),
             Self::HookBelowSea { time_s } => write!(f, "hook below sea level at t = {time_s:.3} s"),
+            Self::RangeOpening { time_s } => write!(
+                f,
+                "the aircraft flies away from the ship: the range to the landing point opens \
+                 (no closure, so no time to go) at t = {time_s:.3} s"
+            ),
         }
     }
 }

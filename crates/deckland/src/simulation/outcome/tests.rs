@@ -96,3 +96,31 @@ fn a_catastrophe_after_a_wave_off_names_the_wave_off() {
         None
     );
 }
+
+/// Regression (issue 45): a run whose aircraft turned away ended "non-finite signal
+/// `time_to_go_s`", which reads as a numerical failure; the range opening is physical.
+#[test]
+fn regression_an_infinite_time_to_go_ends_as_the_range_opening() {
+    let end = Divergence::of_signal(12.5, "time_to_go_s", f64::INFINITY);
+    assert_eq!(end, Divergence::RangeOpening { time_s: 12.5 });
+    let words = end.to_string();
+    assert!(words.contains("flies away from the ship"), "{words}");
+    assert!(
+        words.contains("range to the landing point opens"),
+        "{words}"
+    );
+    assert!(!words.contains("non-finite"), "{words}");
+    // A NaN time to go, or another infinite signal, is still a numerical failure.
+    assert!(matches!(
+        Divergence::of_signal(1.0, "time_to_go_s", f64::NAN),
+        Divergence::NonFiniteSignal { .. }
+    ));
+    assert!(matches!(
+        Divergence::of_signal(1.0, "airspeed_mps", f64::INFINITY),
+        Divergence::NonFiniteSignal { .. }
+    ));
+    assert!(matches!(
+        Divergence::of_signal(1.0, "airspeed_mps", 1e300),
+        Divergence::SignalOutOfRange { .. }
+    ));
+}
