@@ -6,7 +6,7 @@
 //! loaded box-shaped hull of length L, draught T and sectional beam B = C_B·B₀ (so that the
 //! box keeps the ship's displacement), in deep water, at Froude number F_n = U/√(gL) and
 //! wave heading μ (180° head seas). With k = ω²/g, k_e = |k cos μ|, σ = k_e L/2,
-//! α = 1 − F_n√(kL)·cos μ (= ω_e/ω), the Smith correction κ = exp(−k_e T) and
+//! α = 1 − F_n√(kL)·cos μ (= ω_e/ω), the Smith correction κ = exp(−kT) and
 //! A = 2 sin(kBα²/2)·exp(−kTα²) (the sectional damping of the box):
 //!
 //! f = √((1 − kT)² + (A²/(kBα³))²),  η = 1/√((1 − 2kTα²)² + (A²/(kBα²))²),
@@ -15,13 +15,16 @@
 //! heave amplitude/wave amplitude = |η F| (m/m) and pitch amplitude/wave amplitude = |η G|
 //! (rad/m). In long waves F → 1 and G → k_e (the wave slope in head seas); in short waves
 //! both vanish. JMO also give phases; they are not used here, because the time-domain
-//! model fits each motion's spectrum on its own (module `fit`). The formulas were read from
-//! their published form as quoted in T. I. Fossen's MSS toolbox (`waveresponse345.m`, which
-//! cites JMO); the paper itself was not at hand, so B = C_B·B₀ is taken from JMO's box
-//! definition as commonly quoted.
+//! model fits each motion's spectrum on its own (module `fit`). The paper itself was not at
+//! hand: the formulas are as implemented, citing JMO, in NetSSE (Mounet & Nielsen, Technical
+//! University of Denmark, `netsse.model.ship.heaveCF`/`pitchCF`), which takes B = C_B·B₀ and
+//! κ = exp(−kT); T. I. Fossen's MSS toolbox (`waveresponse345.m`) writes the same heave and
+//! pitch with κ = exp(−k_e T), identical in head seas (k_e = k) and differing only for the
+//! oblique components of a spread sea.
 //!
 //! **Roll** is a simplification, not JMO's roll expression (JMO derive the roll moment from
-//! the roll damping by a Haskind-type relation, which grows without bound as ω_e → 0): a
+//! the sectional roll damping by a Haskind-type relation, with empirical damping curves in
+//! B/T for a two-box hull that needs the waterplane coefficient and GM_T): a
 //! one-degree-of-freedom oscillator of natural frequency ω_φ = 2π/T_φ and damping ratio ζ_φ
 //! (both named assumptions; MODEL.md §11: T_φ about 20–25 s, ζ about 0.1 with bilge keels)
 //! excited by the effective wave slope k·|sin μ|·κ_φ·sinc(σ), κ_φ = exp(−kT) the Smith
@@ -150,7 +153,7 @@ impl HullParameters {
         let k_e = (k * cos_mu).abs();
         let sigma = k_e * length / 2.0;
         let alpha = 1.0 - self.froude_number() * (k * length).sqrt() * cos_mu;
-        let kappa = (-k_e * draught).exp();
+        let kappa = (-k * draught).exp();
         let a = 2.0 * (k * beam * alpha * alpha / 2.0).sin() * (-k * draught * alpha * alpha).exp();
         // A²/(kBα³) and A²/(kBα²) vanish with α (A ~ kBα²); guard α = 0 exactly.
         let (damping_f, damping_eta) = if alpha.abs() < 1e-9 {

@@ -25,16 +25,16 @@
 //!
 //! | sea state | H_s (m) | T_p (s) | heave (m) | pitch (deg) | roll (deg) |
 //! |---|---|---|---|---|---|
-//! | 3 | 0.88 | 7.5 | 0.009 | 0.008 | 0.002 |
-//! | 4 | 1.88 | 8.8 | 0.044 | 0.045 | 0.009 |
-//! | 5 | 3.25 | 9.7 | 0.111 | 0.122 | 0.021 |
-//! | 6 | 5.0 | 12.4 | 0.342 | 0.409 | 0.077 |
+//! | 3 | 0.88 | 7.5 | 0.006 | 0.007 | 0.002 |
+//! | 4 | 1.88 | 8.8 | 0.036 | 0.038 | 0.009 |
+//! | 5 | 3.25 | 9.7 | 0.094 | 0.108 | 0.021 |
+//! | 6 | 5.0 | 12.4 | 0.308 | 0.384 | 0.077 |
 //!
 //! The hull is long against these waves (λ_p = gT_p²/2π is 147 m in sea state 5 against
 //! L = 317 m), so heave and pitch are small, and in head seas with cos² spreading roll is
 //! excited only by the oblique components, far above the 22-s roll resonance: the
 //! Pierson–Moskowitz sea has almost no energy there (no swell is modelled). In bow seas
-//! (μ₀ = 135°, sea state 5) heave is 0.33 m, pitch 0.18° and roll 0.10° RMS.
+//! (μ₀ = 135°, sea state 5) heave is 0.24 m, pitch 0.15° and roll 0.10° RMS.
 
 mod fit;
 mod hull;
