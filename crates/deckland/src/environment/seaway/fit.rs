@@ -22,7 +22,9 @@
 //!   non-minimum-phase factors, and needs an optimiser this crate does not have;
 //! - each section has relative degree 3 (C·B = 0, C·A·B = 0), so the motion, its rate and
 //!   its acceleration (C·A²·x) all have finite variance, which the issue asks of the deck;
-//!   only the jerk sees the white noise;
+//!   only the jerk sees the white noise. Relative degree 2 would not do: then ÿ = C A² x +
+//!   (C A B) w has white noise in it and infinite variance, the fault of the paper's pitch
+//!   filter 0.773·s²/D(s) (MODEL.md §11);
 //! - the two sections separate a narrow roll resonance from the broad wave-frequency part
 //!   of roll, and the heave and pitch peaks need no more.
 //!
@@ -287,18 +289,20 @@ impl MarkovModel {
         stationary_covariance(&self.a, &self.b)
     }
 
+    /// The rows reading the output, its rate and its acceleration from the state: C, C A and
+    /// C A² (exact, since C B = C A B = 0: no noise feeds through to the acceleration).
+    pub fn output_rows(&self) -> [DMatrix<f64>; 3] {
+        let rate_row = &self.c * &self.a;
+        let acceleration_row = &rate_row * &self.a;
+        [self.c.clone(), rate_row, acceleration_row]
+    }
+
     /// Stationary variances of the output, its rate (C A x) and its acceleration (C A² x),
     /// finite because C B = C A B = 0; `None` if A is unstable.
     pub fn variances(&self) -> Option<[f64; 3]> {
         let p = self.stationary_covariance()?;
-        let rate_row = &self.c * &self.a;
-        let acceleration_row = &rate_row * &self.a;
         let quadratic = |row: &DMatrix<f64>| (row * &p * row.transpose())[(0, 0)];
-        Some([
-            quadratic(&self.c),
-            quadratic(&rate_row),
-            quadratic(&acceleration_row),
-        ])
+        Some(self.output_rows().map(|row| quadratic(&row)))
     }
 
     /// The exact discretisation over `dt_s` seconds (dt > 0), by the matrix exponential and
@@ -721,6 +725,42 @@ mod tests {
                 "{name}: {simulated} vs {target}"
             );
         }
+    }
+
+    #[test]
+    fn simulated_heave_acceleration_matches_the_lyapunov_variance() {
+        // The second difference (y₊ − 2y + y₋)/dt² of the exact-discretised heave at dt 0.05 s
+        // against C A² P (C A²)ᵀ: the acceleration is a finite, smooth signal.
+        let model = sea_state_5();
+        let heave = &model.heave.model;
+        let dt = 0.05;
+        let step = heave.discretise(dt).expect("stable");
+        let n = heave.state_dimension();
+        let mut stream = RandomStreams::new(7).stream("seaway_heave_acceleration");
+        let mut draw =
+            |factor: &DMatrix<f64>| factor * DVector::from_fn(n, |_, _| stream.standard_normal());
+        let mut x = draw(&step.stationary_factor);
+        let mut outputs = Vec::with_capacity(160_000);
+        for _ in 0..160_000 {
+            x = &step.transition * &x + draw(&step.noise_factor);
+            outputs.push((heave.c() * &x)[(0, 0)]);
+        }
+        let second_differences: Vec<f64> = outputs
+            .windows(3)
+            .map(|w| (w[2] - 2.0 * w[1] + w[0]) / (dt * dt))
+            .collect();
+        let sample =
+            second_differences.iter().map(|a| a * a).sum::<f64>() / second_differences.len() as f64;
+        let [_, _, lyapunov] = heave.variances().expect("stable");
+        println!(
+            "heave acceleration RMS: simulated {:.4e}, Lyapunov {:.4e} m/s²",
+            sample.sqrt(),
+            lyapunov.sqrt()
+        );
+        assert!(
+            (sample / lyapunov - 1.0).abs() < 0.1,
+            "{sample} vs {lyapunov}"
+        );
     }
 
     #[test]

@@ -23,12 +23,15 @@
 //! Pierson–Moskowitz, cos² spreading), from the test
 //! `seaway::fit::tests::rms_table_for_sea_states_3_to_6` (`--nocapture` prints it):
 //!
-//! | sea state | H_s (m) | T_p (s) | heave (m) | pitch (deg) | roll (deg) |
-//! |---|---|---|---|---|---|
-//! | 3 | 0.88 | 7.5 | 0.006 | 0.007 | 0.002 |
-//! | 4 | 1.88 | 8.8 | 0.036 | 0.038 | 0.009 |
-//! | 5 | 3.25 | 9.7 | 0.094 | 0.108 | 0.021 |
-//! | 6 | 5.0 | 12.4 | 0.308 | 0.384 | 0.077 |
+//! | sea state | H_s (m) | T_p (s) | heave (m) | pitch (deg) | roll (deg) | landing point (m) |
+//! |---|---|---|---|---|---|---|
+//! | 3 | 0.88 | 7.5 | 0.006 | 0.007 | 0.002 | 0.011 |
+//! | 4 | 1.88 | 8.8 | 0.036 | 0.038 | 0.009 | 0.065 |
+//! | 5 | 3.25 | 9.7 | 0.094 | 0.108 | 0.021 | 0.180 |
+//! | 6 | 5.0 | 12.4 | 0.308 | 0.384 | 0.077 | 0.624 |
+//!
+//! The landing point's height is 81 m aft of the pitch centre, √(σ_H² + (81σ_θ)²), heave and
+//! pitch independent as the model makes them (their correlation would change it).
 //!
 //! The hull is long against these waves (λ_p = gT_p²/2π is 147 m in sea state 5 against
 //! L = 317 m), so heave and pitch are small, and in head seas with cos² spreading roll is
