@@ -785,8 +785,18 @@ mod tests {
                 pitch.shape_error,
                 roll.shape_error,
             );
-            for report in [heave, pitch, roll] {
+            for (report, motion) in [
+                (heave, &model.heave),
+                (pitch, &model.pitch),
+                (roll, &model.roll),
+            ] {
                 assert!((report.variance_ratio - 1.0).abs() < 0.02, "{report:?}");
+                for section in motion.model.sections() {
+                    println!(
+                        "    {:?}: ω₀ {:.3} rad/s, ζ {:.2}",
+                        report.motion, section.centre_frequency_radps, section.damping_ratio
+                    );
+                }
             }
         }
     }
