@@ -12,6 +12,7 @@
 mod angled_deck;
 mod deck;
 pub mod lyapunov;
+pub mod seaway;
 mod ship;
 mod ship_lateral;
 mod ship_prediction;
