@@ -23,9 +23,7 @@ fn folder(name: &str) -> PathBuf {
 }
 
 fn fly(scenario: &Scenario) -> RunSummary {
-    Simulation::new(scenario)
-        .unwrap()
-        .run(&mut SummaryRecorder)
+    Simulation::new(scenario).unwrap().run(&mut SummaryRecorder)
 }
 
 /// The F/A-18 definition with `edit` applied to its text.

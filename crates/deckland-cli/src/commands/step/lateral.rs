@@ -25,7 +25,6 @@ use crate::commands::common::{Conditions, ControllerChoice};
 use crate::output::OutputDir;
 use crate::plot::step::lateral::lateral_figures;
 
-
 /// The JSON document of `deckland step --axis roll|yaw --json`: the library's report and
 /// where the files went.
 #[derive(Debug, Serialize)]
