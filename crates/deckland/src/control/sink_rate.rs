@@ -27,9 +27,8 @@ pub struct SinkRateControllerParameters {
     pub alpha_protection: bool,
     /// The floor α_min of the protection (deg): −1°, 4° inside the aerodynamic model's
     /// range (it ends at −5°; the pitch loop's lag lets α undershoot the floor by up to
-    /// 3° in the heavy sea) and 8° below the approach's α ≈ 7°. At 0° it touched 83 of
-    /// 1000 approaches in the paper's sea (7 fewer boardings), at −2° 22 (4 fewer), and
-    /// α undershot to −4.4° (docs/landing-design.md); [−5, 15].
+    /// 3° in the heavy sea) and 8° below the approach's α ≈ 7°, so that it acts on a
+    /// push-over and seldom on an ordinary approach (docs/landing-design.md); [−5, 15].
     pub min_alpha_deg: f64,
     /// The lead τ of the predicted angle of attack α + τ·q (s): the pitch loop lags its
     /// command by a few tenths of a second, so the floor acts on where α is going;

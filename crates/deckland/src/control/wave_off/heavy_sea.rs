@@ -1,8 +1,7 @@
 //! The wave-off's ramp-strike limits in a heavy sea (docs/landing-design.md,
 //! "Catastrophes first in a heavy sea"): the sea state the estimator's ship model is built
-//! for, and the limits that move with it. The defaults: both limits 0.5 % (tuned on 3000
-//! heavy-sea approaches at each of seeds 2026, 4242 and 9001: no ramp strike, against 2
-//! at each with 2 % and 2 at seed 9001 with 1 %), moving in between a stationary ramp σ
+//! for, and the limits that move with it. The defaults: both limits 0.5 %
+//! (docs/landing-design.md), moving in between a stationary ramp σ
 //! of 4.3 m, the sea in which the guidance's clearance, capped at 4 m, stops holding its
 //! own ramp-strike bound of 10⁻⁴, and 4.5 m, where the capped path's strike probability
 //! is twice the bound (`analysis::deck_floor`'s floor of the ramp over the 1.4 s from the

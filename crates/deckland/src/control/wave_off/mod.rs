@@ -43,16 +43,11 @@ pub struct WaveOffParameters {
     /// Time to go (s) after which the aircraft is committed; 2.5 s, about 1.4 s before
     /// the hook crosses the ramp (a project choice: engines spool with a 0.625-s lag, and
     /// pitching up first swings the hook, 7 m aft of the CG, down, so a wave-off begun
-    /// within a second of the ramp brings the hook closer to it: with 1.5 s (and the
-    /// descent after the ramp), all 10 ramp strikes in 1000 approaches in the paper's sea
-    /// followed a wave-off decision, against
-    /// 3 strikes, none after one, with 2.5 s; over 3000 approaches 23 against 21, with
-    /// half the wave-offs; docs/no-oracle-results.md).
+    /// within a second of the ramp brings the hook closer to it, so later decisions end
+    /// on the ramp more often than they save; docs/no-oracle-results.md).
     pub decision_time_to_go_s: f64,
     /// Smallest predicted hook-to-ramp clearance (m); 0 (off) by default, where the
-    /// ramp-strike probability decides; it was 1.5 m (with 1.0 m, one approach in
-    /// 1000 in the moderate sea struck the ramp and 30 in the paper's sea were lost,
-    /// against 0 and 27 with 1.5 m, docs/no-oracle-results.md). The landing signal
+    /// ramp-strike probability decides (docs/no-oracle-results.md). The landing signal
     /// officer's 10-ft (3.05-m) minimum is the guidance's margin
     /// (`control.flight_path.ramp_clearance_margin_m`); on this deck's geometry (3.7 m
     /// nominal clearance) waving off every pass predicted below 3.05 m waves off half the
@@ -60,22 +55,20 @@ pub struct WaveOffParameters {
     pub min_ramp_clearance_m: f64,
     /// Largest probability of a ramp strike under the forecast (–); the module docs' first
     /// criterion; 0 turns it off; 0.2 (decided 1.5–2.5 s before the ramp, where the
-    /// path still corrects: with the risk-aware path it replaces the 1.5-m clearance limit
-    /// at the same outcomes in the paper's sea and no wave-off in a moderate sea's 400
-    /// approaches against 4, docs/no-oracle-results.md); [0, 1).
+    /// path still corrects, docs/no-oracle-results.md); [0, 1).
     pub max_ramp_strike_probability: f64,
     /// Largest probability of a hard landing under the forecast (–); 0 turns it off, the
-    /// default: at 0.05–0.3 it waved off 10–48 % of the paper's sea's approaches and
-    /// caught none of its hard landings, which the deck makes after the decision point
-    /// (docs/no-oracle-results.md); [0, 1).
+    /// default: the deck makes hard landings after the decision point, where the
+    /// forecast cannot see them, so a limit waves off many approaches for few hard
+    /// landings avoided (docs/no-oracle-results.md); [0, 1).
     pub max_hard_landing_probability: f64,
     /// The touchdown sink rate relative to the deck that the hard-landing probability
     /// counts as hard (m/s); 7.6 m/s, the outcome's limit (docs/model.md §7); (0, 20].
     pub hard_landing_sink_rate_mps: f64,
     /// σ_sink, the scatter of the hook's own sink rate between the decision and
-    /// touchdown (m/s), for the hard-landing probability; an assumption, 1.0 m/s (the
-    /// default approach's touchdown sink rate scatters by 1.3 m/s with the deck's part
-    /// in it, docs/no-oracle-results.md); [0, 5].
+    /// touchdown (m/s), for the hard-landing probability; an assumption, 1.0 m/s, below
+    /// the touchdown sink rate's whole scatter, of which the deck's motion is a part
+    /// (docs/no-oracle-results.md); [0, 5].
     pub touchdown_sink_rate_sigma_mps: f64,
     /// Largest predicted touchdown sink rate relative to the deck (m/s); 7.0 m/s, below
     /// the 7.6-m/s hard-landing limit (docs/model.md §7).
@@ -88,9 +81,7 @@ pub struct WaveOffParameters {
     pub max_deck_pitch_deg: f64,
     /// Largest predicted displacement of the landing point from its mean height (m);
     /// 5.35 m, half of the 35-ft (10.7-m) total deck motion at which recovery stops
-    /// (docs/model.md §3.6). In the paper's sea it calls almost half the wave-offs;
-    /// without it wave-offs fall from 15 % to 9 % but hard landings rise (5 → 6 in 1000,
-    /// 13 → 15 in 3000; docs/no-oracle-results.md).
+    /// (docs/model.md §3.6; what it costs and saves: docs/no-oracle-results.md).
     pub max_landing_point_displacement_m: f64,
     /// Climb rate commanded in the wave-off (m/s, up); 5 m/s.
     pub climb_rate_mps: f64,
@@ -99,8 +90,7 @@ pub struct WaveOffParameters {
     /// fades in, along 3x² − 2x³ from the decision; the attitude floor fades in alike as
     /// the hook passes the ramp, so the pitch command never steps (docs/model.md §9).
     /// 0.4 s, about the pitch attitude's own response (short period and actuator,
-    /// 0.3–0.5 s); it cost no boardings and no catastrophes on 3000 approaches
-    /// (docs/landing-design.md). 0 is the step; [0, 2].
+    /// 0.3–0.5 s; docs/landing-design.md). 0 is the step; [0, 2].
     pub climb_blend_s: f64,
     /// The late abort's ramp criterion (docs/landing-design.md): from the commit point
     /// (`decision_time_to_go_s`) until the hook crosses the ramp, while the probability
@@ -108,17 +98,14 @@ pub struct WaveOffParameters {
     /// late abort is engaged: direct lift blended to full up and, with
     /// `late_abort_full_thrust`, full thrust; released when it falls below or the hook
     /// passes the ramp, the landing going on (–). 0.2, the wave-off's own limit before
-    /// the commit point (tuned on 2000 approaches of the paper's sea, seed 101: 2 ramp
-    /// strikes against 4, boarding 65.7 % against 66.1 %; 0.15 gave 2 for 65.5 %,
-    /// docs/landing-design.md); 0 turns it off (the paper's set, where the wave-off is
-    /// off too); [0, 1).
+    /// the commit point (docs/landing-design.md); 0 turns it off (the paper's set, where
+    /// the wave-off is off too); [0, 1).
     pub late_abort_ramp_strike_probability: f64,
     /// The late abort's sink criterion: from the commit point to touchdown, while the
     /// predicted touchdown sink rate relative to the deck (the second criterion's) is
-    /// above this, the late abort is engaged (m/s); 0 turns it off, the default: at 6 and
-    /// 6.5 m/s with full thrust it caught no more hard landings in 1000 approaches of the
-    /// paper's sea (3 and 2 against 2), at 5 m/s it turned 6 of 9 into bolters and
-    /// traps but engages in most approaches (docs/landing-design.md); [0, 20].
+    /// above this, the late abort is engaged (m/s); 0 turns it off, the default: a limit
+    /// high enough to engage seldom catches no hard landing, one low enough to catch
+    /// them engages on most approaches (docs/landing-design.md); [0, 20].
     pub late_abort_touchdown_sink_rate_mps: f64,
     /// Whether the late abort also blends the thrust command to full thrust of both
     /// engines; on: direct lift is usually at full authority already when the forecast
@@ -146,9 +133,8 @@ pub struct WaveOffParameters {
     /// The σ (m) from which the heavy-sea limits hold in full; 4.5 m; start to 50.
     pub heavy_sea_ramp_sigma_full_m: f64,
     /// The lead τ of the wave-off's α floor (s): it holds α + τ·q, the angle of attack
-    /// predicted τ ahead, as the approach's α protection does; 0.3 s (heavy sea, 1000
-    /// at seed 1: no wave-off diverged, against one at 0; the paper's sea's outcomes
-    /// the same, docs/landing-design.md); 0 holds α itself (the paper's set); [0, 2].
+    /// predicted τ ahead, as the approach's α protection does; 0.3 s, the pitch loop's
+    /// lag (docs/landing-design.md); 0 holds α itself (the paper's set); [0, 2].
     pub alpha_lead_s: f64,
 }
 
