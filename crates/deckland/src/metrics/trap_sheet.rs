@@ -101,6 +101,8 @@ pub struct PositionDeviation {
     /// Mean glide-slope error as the LSO sees it, the angle of the height error seen
     /// from the aim point (deg; + high).
     pub glide_slope_mean_deg: f64,
+    /// Mean angle of attack less the aircraft's on-speed value (deg; + slow).
+    pub alpha_off_on_speed_mean_deg: f64,
     /// Mean lateral offset of the hook from the landing centreline (m; + right).
     pub lineup_mean_m: f64,
     /// Largest |lateral offset| (m), signed (+ right).
@@ -136,6 +138,7 @@ struct Accumulator {
     angle_sum: f64,
     angle_peak: f64,
     glide_angle_sum: f64,
+    alpha_sum: f64,
 }
 
 fn keep_peak(peak: &mut f64, value: f64) {
@@ -148,32 +151,37 @@ fn keep_peak(peak: &mut f64, value: f64) {
 #[derive(Debug, Clone)]
 pub struct TrapSheetRecorder {
     ramp_to_aim_m: f64,
+    on_speed_alpha_rad: f64,
     accumulators: [Accumulator; 4],
 }
 
 impl TrapSheetRecorder {
     /// A recorder for a deck whose aim point lies `ramp_to_aim_m` beyond the ramp along
-    /// the landing centreline (the eye point of the lineup angle).
-    pub fn new(ramp_to_aim_m: f64) -> Self {
+    /// the landing centreline (the eye point of the lineup angle), for an aircraft whose
+    /// on-speed angle of attack is `on_speed_alpha_rad` (the approach's trim).
+    pub fn new(ramp_to_aim_m: f64, on_speed_alpha_rad: f64) -> Self {
         Self {
             ramp_to_aim_m,
+            on_speed_alpha_rad,
             accumulators: [Accumulator::default(); 4],
         }
     }
 
     /// Takes one sample: the hook's distance to the ramp along the final bearing (m, +
-    /// before the ramp), its height error to the glide slope (m, + high) and its lateral
-    /// offset from the landing centreline (m, + right). Samples outside every window,
-    /// or not finite, are ignored.
+    /// before the ramp), its height error to the glide slope (m, + high), its lateral
+    /// offset from the landing centreline (m, + right) and the angle of attack (rad).
+    /// Samples outside every window, or not finite, are ignored.
     pub fn sample(
         &mut self,
         distance_to_ramp_m: f64,
         glide_slope_error_m: f64,
         lineup_offset_m: f64,
+        alpha_rad: f64,
     ) {
         if !(distance_to_ramp_m.is_finite()
             && glide_slope_error_m.is_finite()
-            && lineup_offset_m.is_finite())
+            && lineup_offset_m.is_finite()
+            && alpha_rad.is_finite())
         {
             return;
         }
@@ -188,6 +196,7 @@ impl TrapSheetRecorder {
         a.lineup_sum += lineup_offset_m;
         a.angle_sum += angle_deg;
         a.glide_angle_sum += glide_slope_error_m.atan2(to_aim_m).to_degrees();
+        a.alpha_sum += alpha_rad - self.on_speed_alpha_rad;
         keep_peak(&mut a.glide_peak, glide_slope_error_m);
         keep_peak(&mut a.lineup_peak, lineup_offset_m);
         keep_peak(&mut a.angle_peak, angle_deg);
@@ -207,6 +216,7 @@ impl TrapSheetRecorder {
                     glide_slope_mean_m: a.glide_sum / n,
                     glide_slope_peak_m: a.glide_peak,
                     glide_slope_mean_deg: a.glide_angle_sum / n,
+                    alpha_off_on_speed_mean_deg: (a.alpha_sum / n).to_degrees(),
                     lineup_mean_m: a.lineup_sum / n,
                     lineup_peak_m: a.lineup_peak,
                     lineup_mean_deg: a.angle_sum / n,
@@ -257,12 +267,12 @@ mod tests {
     fn a_pass_high_and_left_in_close_is_graded_there_only() {
         // A pass flown from 1500 m to past the ramp, 1 m steps: on the glide slope and
         // centreline except in close, where it is 2 m high and 3 m left.
-        let mut recorder = TrapSheetRecorder::new(60.0);
+        let mut recorder = TrapSheetRecorder::new(60.0, 0.12);
         let mut d = 1500.0;
         while d > -20.0 {
             let in_close = d <= 463.0 && d > 185.2;
             let (glide, lineup) = if in_close { (2.0, -3.0) } else { (0.0, 0.0) };
-            recorder.sample(d, glide, lineup);
+            recorder.sample(d, glide, lineup, 0.12);
             d -= 1.0;
         }
         let sheet = recorder.sheet();
@@ -285,8 +295,8 @@ mod tests {
     fn the_lineup_angle_is_seen_from_the_aim_point() {
         // 1 m right at 0.05 nmi (92.6 m) before a ramp 60 m before the aim point:
         // atan(1 / 152.6) = 0.37546°.
-        let mut recorder = TrapSheetRecorder::new(60.0);
-        recorder.sample(92.6, 0.5, 1.0);
+        let mut recorder = TrapSheetRecorder::new(60.0, 0.12);
+        recorder.sample(92.6, 0.5, 1.0, 0.12);
         let ar = *recorder.sheet().at(TrapSheetPosition::AtRamp).unwrap();
         assert!((ar.lineup_mean_deg - 0.375_46).abs() < 1e-5, "{ar:?}");
         // 0.5 m high there: atan(0.5 / 152.6) = 0.18773°.
@@ -294,12 +304,27 @@ mod tests {
         assert_eq!(ar.glide_slope_peak_m, 0.5);
     }
 
+    /// The angle of attack is kept against the aircraft's on-speed value: 1° above
+    /// an on-speed 7.1° is 1° slow.
+    #[test]
+    fn the_angle_of_attack_is_kept_against_on_speed() {
+        let on_speed = 7.1_f64.to_radians();
+        let mut recorder = TrapSheetRecorder::new(60.0, on_speed);
+        recorder.sample(300.0, 0.0, 0.0, 8.1_f64.to_radians());
+        recorder.sample(250.0, 0.0, 0.0, 8.1_f64.to_radians());
+        let ic = *recorder.sheet().at(TrapSheetPosition::InClose).unwrap();
+        assert!(
+            (ic.alpha_off_on_speed_mean_deg - 1.0).abs() < 1e-12,
+            "{ic:?}"
+        );
+    }
+
     #[test]
     fn a_wave_off_far_out_grades_only_what_it_flew_and_ignores_non_finite_samples() {
-        let mut recorder = TrapSheetRecorder::new(60.0);
-        recorder.sample(1200.0, 1.0, 0.0);
-        recorder.sample(1100.0, f64::NAN, 0.0);
-        recorder.sample(1000.0, -3.0, 0.5);
+        let mut recorder = TrapSheetRecorder::new(60.0, 0.12);
+        recorder.sample(1200.0, 1.0, 0.0, 0.12);
+        recorder.sample(1100.0, f64::NAN, 0.0, 0.12);
+        recorder.sample(1000.0, -3.0, 0.5, 0.12);
         let sheet = recorder.sheet();
         assert_eq!(sheet.positions.len(), 1);
         let x = sheet.at(TrapSheetPosition::Start).unwrap();

@@ -271,10 +271,10 @@ mod tests {
     #[test]
     fn a_wave_off_leaves_the_positions_it_never_flew_empty() {
         // Flown from 1400 m to 700 m, then waved off (the recorder takes no more samples).
-        let mut recorder = crate::metrics::TrapSheetRecorder::new(60.0);
+        let mut recorder = crate::metrics::TrapSheetRecorder::new(60.0, 0.12);
         let mut d = 1400.0;
         while d > 700.0 {
-            recorder.sample(d, 0.5, -1.0);
+            recorder.sample(d, 0.5, -1.0, 0.12);
             d -= 10.0;
         }
         let values = sheet_values(&recorder.sheet());

@@ -22,8 +22,8 @@ impl RunSummary {
     /// is not an approach (a pitch step, a sink-rate test). The windows are the trap
     /// sheet's (3-D approaches; a 3-DOF approach is graded on how it ended alone), each
     /// graded on its mean glide-slope and lineup angles; in the wires, the bank and the
-    /// drift at touchdown. Angle of attack is not graded yet (the trap sheet does not
-    /// record it).
+    /// drift at touchdown; angle of attack against the aircraft's on-speed value, the
+    /// approach's trim α at its airspeed on the glide path.
     pub fn graded_by_lso(&self) -> Option<LsoGrade> {
         self.graded_by_lso_with(&GradeThresholds::AIRBOSS)
     }
@@ -48,7 +48,7 @@ impl RunSummary {
                 window: window_of(p.position),
                 glide_slope_deg: p.glide_slope_mean_deg,
                 lineup_deg: p.lineup_mean_deg,
-                alpha_off_on_speed_deg: None,
+                alpha_off_on_speed_deg: Some(p.alpha_off_on_speed_mean_deg),
             })
             .collect();
         let wires = lateral.map(|l| (l.bank_deg, l.drift_rate_mps));

@@ -159,6 +159,7 @@ impl Simulation {
         let deck = setup.system.deck;
         let activity =
             ActivityStatistics::new(setup.system.aircraft().actuator(), scenario.time_step_s);
+        let on_speed_alpha_rad = setup.system.trim.alpha_rad;
         Self {
             system: setup.system,
             state: setup.initial,
@@ -176,7 +177,7 @@ impl Simulation {
             rules: LandingRules::new(&scenario.outcome, deck.wire_positions_m),
             detector: EventDetector::new(deck),
             statistics: GlidePathStatistics::default(),
-            trap_sheet: TrapSheetRecorder::new(deck.ramp_aft_of_aim_point_m),
+            trap_sheet: TrapSheetRecorder::new(deck.ramp_aft_of_aim_point_m, on_speed_alpha_rad),
             ramp_aft_of_aim_point_m: deck.ramp_aft_of_aim_point_m,
             three_dimensional: false,
             activity,
@@ -396,6 +397,7 @@ impl Simulation {
                     signals.range_to_go_m - self.ramp_aft_of_aim_point_m,
                     -signals.glide_path_error_m,
                     cross_track_m,
+                    signals.alpha_rad,
                 );
             }
         }
