@@ -335,14 +335,19 @@ fn malformed_shards_are_refused_by_name() {
         );
         assert!(stderr(&output).contains("--shard"), "{spec}");
     }
-    // A shard with no run of the campaign: named, not an empty folder.
+    // More shards than runs, so that a shard would hold no run: named, not an empty
+    // folder (issue 45, R7: merge refuses such a set, so campaign does too).
     let output = campaign(&file, "2", "1", Some("2/3"), &dir.join("empty"));
     assert_eq!(output.status.code(), Some(1));
     assert!(
-        stderr(&output).contains("shard 2/3 of a campaign of 2 runs holds no run"),
+        stderr(&output).contains(
+            "the number of shards M must be at most the number of runs (2), so that every \
+             shard flies a run"
+        ),
         "{}",
         stderr(&output)
     );
+    assert!(!dir.join("empty").exists());
     let _ = std::fs::remove_dir_all(&dir);
 }
 
