@@ -1,5 +1,5 @@
 //! The carrier in a seaway: wave spectra, the hull's response and a fitted time-domain
-//! (Markov) model of heave, pitch and roll (MODEL.md §11; issue 42 items 1–3).
+//! (Markov) model of heave, pitch and roll (docs/model.md §12).
 //!
 //! Data flow: a [`WaveSpectrum`] (ITTC/Pierson–Moskowitz or JONSWAP, set by H_s and T_p
 //! or by a sea-state number) and a wave heading, optionally spread over directions by
