@@ -45,7 +45,12 @@ fn one_and_two_threads_write_byte_identical_runs_csv() {
         assert_eq!(summary["finished_runs"], 20);
         // A 3-DOF campaign has neither lateral nor trap-sheet columns or statistics.
         let text = String::from_utf8(csv[csv.len() - 1].clone()).unwrap();
-        assert!(text.lines().next().unwrap().ends_with(",reason"));
+        // (The LSO's grade, the last columns, follows `reason` directly.)
+        assert!(text
+            .lines()
+            .next()
+            .unwrap()
+            .ends_with(",reason,lso_grade,lso_points,lso_comment"));
         assert!(summary.get("trap_sheet").is_none() && summary.get("lateral").is_none());
         let opd = &summary["controllers"][0];
         assert_eq!(opd["controller"], "O-PD");

@@ -31,11 +31,16 @@ pub struct GradeCount {
 }
 
 /// One deviation (a call in a window, whatever its severity) and how often it was called.
+/// `summary.json` holds its shorthand, count and share (the shorthand names the window
+/// and the call, and keeps the document's keys those of every campaign, also of one
+/// with no deviation).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct DeviationCount {
     /// The window it was called in.
+    #[serde(skip)]
     pub window: Window,
     /// The call.
+    #[serde(skip)]
     pub call: Call,
     /// Call and window in the LSO's shorthand (`LOIC`).
     pub shorthand: String,
