@@ -6,15 +6,16 @@ use crate::html;
 use anyhow::Result;
 use deckland::monte_carlo::{CampaignStatistics, GreenieBoard};
 
-/// Each grade's colour on the board, by its name: green OK, yellow fair, orange bolter,
-/// brown no grade, blue own wave-off, red cut (the squadrons' convention).
+/// Each grade's colours on the board, by its name (background; text): green OK, yellow
+/// fair, orange bolter, brown no grade, blue own wave-off, red cut (the squadrons'
+/// convention), white text on the dark ones.
 const GRADE_COLOURS: [(&str, &str); 6] = [
-    ("ok", "#3c9a3c"),
-    ("fair", "#e8d44d"),
-    ("bolter", "#e8902c"),
-    ("no_grade", "#8b5a2b"),
-    ("own_wave_off", "#3a6fc4"),
-    ("cut", "#c83232"),
+    ("ok", "background:#3c9a3c;color:#fff"),
+    ("fair", "background:#e8d44d"),
+    ("bolter", "background:#e8902c"),
+    ("no_grade", "background:#8b5a2b;color:#fff"),
+    ("own_wave_off", "background:#3a6fc4;color:#fff"),
+    ("cut", "background:#c83232;color:#fff"),
 ];
 
 /// The grade's words on the board: its shorthand and its name in words.
@@ -113,12 +114,12 @@ pub fn board_html(stats: &[CampaignStatistics]) -> String {
         return out + "</tbody>\n</table>\n";
     };
     for (k, grade) in first.greenie_board.grades.iter().enumerate() {
-        let colour = GRADE_COLOURS
+        let style = GRADE_COLOURS
             .iter()
             .find(|(name, _)| *name == grade.grade)
-            .map_or("#ffffff", |(_, colour)| colour);
+            .map_or("", |(_, style)| style);
         out.push_str(&format!(
-            "<tr style=\"background:{colour}\"><td>{}</td>",
+            "<tr style=\"{style}\"><td>{}</td>",
             html::escape(&grade_label(grade.grade, grade.shorthand))
         ));
         for s in stats {
