@@ -19,7 +19,7 @@ use deckland::monte_carlo::{
     flies_three_dimensional_approach, lateral_statistics, merge_shards, parse_runs_csv,
     run_campaign, runs_csv_text, CampaignResult, CampaignSpec, CampaignSummary, LateralRow,
     LateralStatistics, RunRecord, RunRow, Shard, ShardIdentity, ShardRows, TrapSheetStatistics,
-    DEFAULT_TARGET_RATE, MAX_CAMPAIGN_SEED, MAX_THREADS, SHARD_SCHEME,
+    DEFAULT_TARGET_RATE, LSO_RUN_COLUMNS, MAX_CAMPAIGN_SEED, MAX_THREADS, SHARD_SCHEME,
 };
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -90,6 +90,13 @@ fn into_dict<'py>(
     if let Some(lateral) = lateral {
         for (name, column) in crate::columns::into_dict(lateral, py)?.iter() {
             dict.set_item(name, column)?;
+        }
+        // The LSO's columns last, after the lateral ones, as in `runs.csv`.
+        for name in LSO_RUN_COLUMNS {
+            if let Some(column) = dict.get_item(name)? {
+                dict.del_item(name)?;
+                dict.set_item(name, column)?;
+            }
         }
     }
     Ok(dict)

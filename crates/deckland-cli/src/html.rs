@@ -120,6 +120,8 @@ enum Block {
     Figure { svg: String, caption: String },
     /// Verbatim text, such as a TOML or JSON file.
     Verbatim { name: String, text: String },
+    /// HTML the caller built and escaped (a coloured table).
+    Html(String),
 }
 
 /// A section: a heading and its blocks.
@@ -151,6 +153,12 @@ impl Section {
             svg: svg.to_string(),
             caption: caption.into(),
         });
+        self
+    }
+
+    /// Adds HTML as it is: the caller escapes any text in it.
+    pub fn html(&mut self, html: impl Into<String>) -> &mut Self {
+        self.blocks.push(Block::Html(html.into()));
         self
     }
 
@@ -273,6 +281,7 @@ impl Report {
                             inline_markdown(caption)
                         );
                     }
+                    Block::Html(html) => out.push_str(html),
                     Block::Verbatim { name, text } => {
                         let _ = writeln!(
                             out,

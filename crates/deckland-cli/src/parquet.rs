@@ -6,19 +6,23 @@
 //! each whatever the values of a campaign, so the files of several campaigns concatenate:
 //!
 //! - `run_index`, `seed`: required 64-bit integers;
-//! - `controller`, `outcome`, `reason`: UTF-8 text (`reason` missing for a trap);
+//! - `controller`, `outcome`, `reason`, `lso_grade`, `lso_comment`: UTF-8 text (`reason`
+//!   missing for a trap, the LSO's columns for a run that never flew);
 //! - every other column: an optional double (missing where the CSV field is empty; `wire`
 //!   too, as pandas reads it from the CSV).
 //!
 //! A 3-D campaign adds the lateral columns of its `runs.csv` after these
 //! ([`LATERAL_RUN_COLUMNS`], then the trap sheet's [`TRAP_SHEET_RUN_COLUMNS`]): optional
-//! doubles, and `off_centre` an optional boolean.
+//! doubles, and `off_centre` an optional boolean. The LSO's columns (`lso_grade`,
+//! `lso_points`, `lso_comment`) come last, after the lateral ones, as in `runs.csv`.
 //!
 //! One row group, Snappy compression (pandas' default). A value that is not finite is
 //! refused, naming its run and column: nothing non-finite reaches a file.
 
 use anyhow::{bail, Context, Result};
-use deckland::monte_carlo::{LateralRow, RunRow, LATERAL_RUN_COLUMNS, TRAP_SHEET_RUN_COLUMNS};
+use deckland::monte_carlo::{
+    LateralRow, RunRow, LATERAL_RUN_COLUMNS, LSO_RUN_COLUMNS, TRAP_SHEET_RUN_COLUMNS,
+};
 use deckland::recording::{Cell, Columns};
 use parquet::basic::Compression;
 use parquet::data_type::{BoolType, ByteArray, ByteArrayType, DoubleType, Int64Type};
@@ -42,13 +46,15 @@ enum Kind {
 }
 
 /// The columns' kinds by name; a column not listed here is [`Kind::Real`].
-const COLUMN_KINDS: [(&str, Kind); 6] = [
+const COLUMN_KINDS: [(&str, Kind); 8] = [
     ("run_index", Kind::Integer),
     ("seed", Kind::Integer),
     ("controller", Kind::Text),
     ("outcome", Kind::Text),
     ("reason", Kind::Text),
     ("off_centre", Kind::Boolean),
+    ("lso_grade", Kind::Text),
+    ("lso_comment", Kind::Text),
 ];
 
 fn kind_of(name: &str) -> Kind {
@@ -84,11 +90,18 @@ pub fn write_runs(path: &Path, rows: &[RunRow], lateral: Option<&[LateralRow]>) 
         // No row names the columns (a campaign stopped before its first run finished).
         bail!("no finished run to write to runs.parquet");
     }
-    let mut names: Vec<&str> = table.names().to_vec();
+    // The LSO's columns last, after a 3-D campaign's lateral ones, as in `runs.csv`.
+    let mut names: Vec<&str> = table
+        .names()
+        .iter()
+        .copied()
+        .filter(|n| !LSO_RUN_COLUMNS.contains(n))
+        .collect();
     if lateral.is_some() {
         names.extend(LATERAL_RUN_COLUMNS);
         names.extend(TRAP_SHEET_RUN_COLUMNS);
     }
+    names.extend(LSO_RUN_COLUMNS);
     let schema =
         Arc::new(parse_message_type(&schema(&names)).context("cannot make the Parquet schema")?);
     let properties = Arc::new(
@@ -101,66 +114,12 @@ pub fn write_runs(path: &Path, rows: &[RunRow], lateral: Option<&[LateralRow]>) 
     let file = std::fs::File::create(path)?;
     let mut writer = SerializedFileWriter::new(file, schema, properties)?;
     let mut group = writer.next_row_group()?;
-    for (name, cells) in table.into_columns() {
-        let Some(mut column) = group.next_column()? else {
-            bail!("the Parquet schema has no column {name}");
-        };
-        let present: Vec<i16> = cells
-            .iter()
-            .map(|c| i16::from(!matches!(c, Cell::Missing)))
-            .collect();
-        match kind_of(name) {
-            Kind::Integer => {
-                let values = cells
-                    .iter()
-                    .enumerate()
-                    .map(|(row, cell)| match cell {
-                        Cell::Integer(v) => Ok(*v),
-                        other => bail!(
-                            "run {}: `{name}` is {other:?}, not a whole number",
-                            run_indices[row]
-                        ),
-                    })
-                    .collect::<Result<Vec<i64>>>()?;
-                column
-                    .typed::<Int64Type>()
-                    .write_batch(&values, None, None)?;
-            }
-            Kind::Real => {
-                let mut values = Vec::with_capacity(cells.len());
-                for (row, cell) in cells.iter().enumerate() {
-                    match cell {
-                        Cell::Missing => {}
-                        Cell::Float(v) if v.is_finite() => values.push(*v),
-                        Cell::Integer(v) => values.push(*v as f64),
-                        other => bail!(
-                            "run {}: `{name}` is {other:?}, not a finite number",
-                            run_indices[row]
-                        ),
-                    }
-                }
-                column
-                    .typed::<DoubleType>()
-                    .write_batch(&values, Some(&present), None)?;
-            }
-            Kind::Boolean => bail!("`{name}` is not a boolean column of runs.csv"),
-            Kind::Text => {
-                let mut values = Vec::with_capacity(cells.len());
-                for (row, cell) in cells.iter().enumerate() {
-                    match cell {
-                        Cell::Missing => {}
-                        Cell::Text(text) => values.push(ByteArray::from(text.as_str())),
-                        other => {
-                            bail!("run {}: `{name}` is {other:?}, not text", run_indices[row])
-                        }
-                    }
-                }
-                column
-                    .typed::<ByteArrayType>()
-                    .write_batch(&values, Some(&present), None)?;
-            }
-        }
-        column.close()?;
+    let (lso, base): (Vec<_>, Vec<_>) = table
+        .into_columns()
+        .into_iter()
+        .partition(|(name, _)| LSO_RUN_COLUMNS.contains(name));
+    for (name, cells) in &base {
+        write_cells(&mut group, name, cells, &run_indices)?;
     }
     if let Some(lateral) = lateral {
         let write_reals = |group: &mut SerializedRowGroupWriter<'_, std::fs::File>,
@@ -213,8 +172,81 @@ pub fn write_runs(path: &Path, rows: &[RunRow], lateral: Option<&[LateralRow]>) 
             )?;
         }
     }
+    for (name, cells) in &lso {
+        write_cells(&mut group, name, cells, &run_indices)?;
+    }
     group.close()?;
     writer.close()?;
+    Ok(())
+}
+
+/// Writes the next column of `group`, `name` with its `cells` (`run_indices` name the
+/// rows in errors).
+fn write_cells(
+    group: &mut SerializedRowGroupWriter<'_, std::fs::File>,
+    name: &str,
+    cells: &[Cell],
+    run_indices: &[String],
+) -> Result<()> {
+    let Some(mut column) = group.next_column()? else {
+        bail!("the Parquet schema has no column {name}");
+    };
+    let present: Vec<i16> = cells
+        .iter()
+        .map(|c| i16::from(!matches!(c, Cell::Missing)))
+        .collect();
+    match kind_of(name) {
+        Kind::Integer => {
+            let values = cells
+                .iter()
+                .enumerate()
+                .map(|(row, cell)| match cell {
+                    Cell::Integer(v) => Ok(*v),
+                    other => bail!(
+                        "run {}: `{name}` is {other:?}, not a whole number",
+                        run_indices[row]
+                    ),
+                })
+                .collect::<Result<Vec<i64>>>()?;
+            column
+                .typed::<Int64Type>()
+                .write_batch(&values, None, None)?;
+        }
+        Kind::Real => {
+            let mut values = Vec::with_capacity(cells.len());
+            for (row, cell) in cells.iter().enumerate() {
+                match cell {
+                    Cell::Missing => {}
+                    Cell::Float(v) if v.is_finite() => values.push(*v),
+                    Cell::Integer(v) => values.push(*v as f64),
+                    other => bail!(
+                        "run {}: `{name}` is {other:?}, not a finite number",
+                        run_indices[row]
+                    ),
+                }
+            }
+            column
+                .typed::<DoubleType>()
+                .write_batch(&values, Some(&present), None)?;
+        }
+        Kind::Boolean => bail!("`{name}` is not a boolean column of runs.csv"),
+        Kind::Text => {
+            let mut values = Vec::with_capacity(cells.len());
+            for (row, cell) in cells.iter().enumerate() {
+                match cell {
+                    Cell::Missing => {}
+                    Cell::Text(text) => values.push(ByteArray::from(text.as_str())),
+                    other => {
+                        bail!("run {}: `{name}` is {other:?}, not text", run_indices[row])
+                    }
+                }
+            }
+            column
+                .typed::<ByteArrayType>()
+                .write_batch(&values, Some(&present), None)?;
+        }
+    }
+    column.close()?;
     Ok(())
 }
 

@@ -45,7 +45,12 @@ fn one_and_two_threads_write_byte_identical_runs_csv() {
         assert_eq!(summary["finished_runs"], 20);
         // A 3-DOF campaign has neither lateral nor trap-sheet columns or statistics.
         let text = String::from_utf8(csv[csv.len() - 1].clone()).unwrap();
-        assert!(text.lines().next().unwrap().ends_with(",reason"));
+        // (The LSO's grade, the last columns, follows `reason` directly.)
+        assert!(text
+            .lines()
+            .next()
+            .unwrap()
+            .ends_with(",reason,lso_grade,lso_points,lso_comment"));
         assert!(summary.get("trap_sheet").is_none() && summary.get("lateral").is_none());
         let opd = &summary["controllers"][0];
         assert_eq!(opd["controller"], "O-PD");
@@ -471,5 +476,74 @@ fn a_three_d_campaign_adds_the_lateral_columns_and_the_touchdown_plan() {
             assert!((low - (mean - half)).abs() < 1e-6, "{column}: {low}");
         }
     }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 44, items 2 and 3: a campaign of the default scenario grades every pass in
+/// `runs.csv` (the LSO's three columns last) and prints the greenie board.
+#[test]
+fn a_default_campaign_grades_every_pass_and_prints_the_greenie_board() {
+    let dir = scratch("campaign-greenie");
+    std::fs::create_dir_all(&dir).unwrap();
+    let default = deckland(["scenario", "--print-default"]);
+    assert_success(&default);
+    let file = dir.join("default.toml");
+    std::fs::write(&file, &default.stdout).unwrap();
+    let out = dir.join("out");
+    let output = deckland([
+        "campaign",
+        file.to_str().unwrap(),
+        "--runs",
+        "6",
+        "--seed",
+        "3",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_success(&output);
+    let printed = String::from_utf8(output.stdout).unwrap();
+    for line in [
+        "greenie board (LSO grades)",
+        "OK ok",
+        "(OK) fair",
+        "B bolter",
+        "-- no grade",
+        "OWO own wave off",
+        "C cut",
+        "mean points (of 4)",
+        "target wire",
+        "top deviations, ",
+    ] {
+        assert!(printed.contains(line), "no `{line}` in:\n{printed}");
+    }
+    let text = std::fs::read_to_string(out.join("runs.csv")).unwrap();
+    let mut reader = csv::Reader::from_reader(text.as_bytes());
+    let header: Vec<String> = reader.headers().unwrap().iter().map(String::from).collect();
+    let n = header.len();
+    assert_eq!(
+        header[n - 3..],
+        ["lso_grade", "lso_points", "lso_comment"],
+        "{header:?}"
+    );
+    let grades = ["ok", "fair", "bolter", "no_grade", "own_wave_off", "cut"];
+    let mut rows = 0;
+    for record in reader.records() {
+        let record = record.unwrap();
+        rows += 1;
+        assert!(grades.contains(&&record[n - 3]), "{record:?}");
+        let points: f64 = record[n - 2].parse().unwrap();
+        assert!((0.0..=4.0).contains(&points), "{record:?}");
+    }
+    assert_eq!(rows, 6);
+    let summary: Value =
+        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let board = &summary["controllers"][0]["greenie_board"];
+    assert_eq!(board["graded"], 6, "{board}");
+    assert_eq!(board["target_wire"], 3, "{board}");
+    let report = std::fs::read_to_string(out.join("report.html")).unwrap();
+    let board_at = report.find("<table class=\"greenie\">").expect("the board");
+    let chart_at = report.find("<figure>").expect("the outcome chart");
+    assert!(board_at < chart_at, "the board is above the outcome chart");
+    assert!(report.contains("background:#3c9a3c"), "OK in green");
     let _ = std::fs::remove_dir_all(&dir);
 }

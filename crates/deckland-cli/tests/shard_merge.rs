@@ -426,7 +426,11 @@ fn runs_parquet_holds_the_rows_of_runs_csv() {
         header.contains(",off_centre,trap_x_glide_slope_mean_m,"),
         "{header}"
     );
-    assert!(header.ends_with(",trap_ar_lineup_peak_deg"), "{header}");
+    // The LSO's grade last, after the lateral and trap-sheet columns.
+    assert!(
+        header.ends_with(",trap_ar_lineup_peak_deg,lso_grade,lso_points,lso_comment"),
+        "{header}"
+    );
     assert_parquet_holds_runs_csv(&out_3d);
     let _ = std::fs::remove_dir_all(&dir);
 }
@@ -495,7 +499,11 @@ fn r3_merge_checks_lateral_columns_against_the_scenario_and_each_row() {
                            // The lateral columns stripped.
     let stripped = copy("stripped");
     for folder in &stripped {
-        edit_runs_csv(folder, |k, f, _| (k < base_columns).then(|| f.to_owned()));
+        // The LSO's three columns, the last, kept.
+        let lso_columns_from = base_columns + 6 + 24;
+        edit_runs_csv(folder, |k, f, _| {
+            (k < base_columns || k >= lso_columns_from).then(|| f.to_owned())
+        });
     }
     refused(&stripped, &["runs.csv columns", "6dof"]);
     // The scenario says 3dof under 3-D rows.

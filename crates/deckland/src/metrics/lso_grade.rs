@@ -425,6 +425,80 @@ pub fn comment(deviations: &[Deviation]) -> String {
     parts.join(" ")
 }
 
+/// Every window, in the order a pass flies them.
+pub const WINDOWS: [Window; 5] = [
+    Window::Start,
+    Window::Middle,
+    Window::InClose,
+    Window::AtRamp,
+    Window::InTheWires,
+];
+
+/// Every call the LSO makes.
+pub const CALLS: [Call; 10] = [
+    Call::High,
+    Call::Low,
+    Call::LinedUpLeft,
+    Call::LinedUpRight,
+    Call::Slow,
+    Call::Fast,
+    Call::LeftWingDown,
+    Call::RightWingDown,
+    Call::DriftLeft,
+    Call::DriftRight,
+];
+
+/// Why a text is not a comment [`comment`] writes.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[error("`{part}` is not a window's deviations in the LSO's shorthand: {problem}")]
+pub struct CommentError {
+    /// The space-separated part at fault.
+    pub part: String,
+    /// What is wrong with it.
+    pub problem: &'static str,
+}
+
+/// The deviations of a comment, the inverse of [`comment`]: each space-separated part is
+/// calls (`(H)` a little, `H` plain, `_H_` a lot; the calls' shorthands are prefix-free,
+/// so they read greedily) followed by its window's shorthand. The empty text has none.
+pub fn parse_comment(text: &str) -> Result<Vec<Deviation>, CommentError> {
+    let mut deviations = Vec::new();
+    for part in text.split(' ').filter(|p| !p.is_empty()) {
+        let error = |problem| CommentError {
+            part: part.to_owned(),
+            problem,
+        };
+        let (window, mut calls) = WINDOWS
+            .into_iter()
+            .find_map(|w| part.strip_suffix(w.shorthand()).map(|rest| (w, rest)))
+            .ok_or_else(|| error("it does not end in a window (X, IM, IC, AR, IW)"))?;
+        if calls.is_empty() {
+            return Err(error("a window with no call"));
+        }
+        while !calls.is_empty() {
+            let (severity, inner, close) = match calls.as_bytes()[0] {
+                b'(' => (Severity::Little, &calls[1..], ")"),
+                b'_' => (Severity::ALot, &calls[1..], "_"),
+                _ => (Severity::Plain, calls, ""),
+            };
+            let call = CALLS
+                .into_iter()
+                .find(|c| inner.starts_with(c.shorthand()))
+                .ok_or_else(|| error("an unknown call"))?;
+            let rest = &inner[call.shorthand().len()..];
+            calls = rest
+                .strip_prefix(close)
+                .ok_or_else(|| error("a call not closed"))?;
+            deviations.push(Deviation {
+                window,
+                call,
+                severity,
+            });
+        }
+    }
+    Ok(deviations)
+}
+
 /// Whether a window in close or at the ramp left the wave-off window.
 fn outside_wave_off_window(flight: &WindowFlight, t: &GradeThresholds) -> bool {
     matches!(flight.window, Window::InClose | Window::AtRamp)
@@ -561,6 +635,37 @@ mod tests {
                 &GradeThresholds::AIRBOSS,
             );
             assert_eq!((graded.comment.as_str(), graded.grade), (comment, grade));
+        }
+    }
+
+    #[test]
+    fn a_comment_parses_back_to_its_deviations() {
+        let graded = trap(&[
+            window(Window::Start, 0.0, -0.6),
+            window(Window::Middle, 1.6, 0.0),
+            window(Window::InClose, -0.7, 0.0),
+            window(Window::AtRamp, 0.45, 0.6),
+        ]);
+        let parsed = parse_comment(&graded.comment).expect("a comment");
+        assert_eq!(parsed, graded.deviations);
+        assert_eq!(comment(&parsed), graded.comment);
+        // Every call at every severity in every window, and several in one window.
+        let mut all = Vec::new();
+        for window in WINDOWS {
+            for call in CALLS {
+                for severity in [Severity::Little, Severity::Plain, Severity::ALot] {
+                    all.push(Deviation {
+                        window,
+                        call,
+                        severity,
+                    });
+                }
+            }
+        }
+        assert_eq!(parse_comment(&comment(&all)), Ok(all));
+        assert_eq!(parse_comment(""), Ok(Vec::new()));
+        for bad in ["H", "X", "(HX", "QX", "_LO IC", "(H)X  LOIC garbage"] {
+            assert!(parse_comment(bad).is_err(), "{bad}");
         }
     }
 

@@ -34,6 +34,7 @@
 //!   campaign early with the runs that finished ([`CampaignResult::partial`]).
 
 mod campaign;
+mod greenie_board;
 mod lateral;
 mod limits;
 mod merge;
@@ -53,6 +54,7 @@ pub use campaign::{
     controller_label, run_campaign, CampaignError, CampaignResult, CampaignSpec, ControllerVariant,
     SharedPitchLaw,
 };
+pub use greenie_board::{DeviationCount, GradeCount, GreenieBoard, TARGET_WIRE, TOP_DEVIATIONS};
 pub use lateral::{
     flies_three_dimensional_approach, lateral_row_columns, lateral_run_values, lateral_statistics,
     LateralRow, LateralRunValues, LateralStatistics, LATERAL_RUN_COLUMNS, RAMP_LINEUP_PASS_DEG,
@@ -69,7 +71,7 @@ pub use rare_events::{
     RunsNeeded, DEFAULT_TARGET_RATE, UPPER_BOUND_CONFIDENCE, UPPER_BOUND_METHOD,
 };
 pub use record::{RunFailure, RunRecord};
-pub use row::{RowError, RunRow, CAMPAIGN_OUTCOMES, RANGES, RUN_COLUMNS};
+pub use row::{RowError, RunRow, CAMPAIGN_OUTCOMES, LSO_RUN_COLUMNS, RANGES, RUN_COLUMNS};
 pub use run_scenario::dispersed_run_scenario;
 pub use runs_csv::{parse_runs_csv, runs_csv_text, ParsedRuns};
 pub use seeds::{run_seed, splitmix64_mix, SPLITMIX64_GAMMA};

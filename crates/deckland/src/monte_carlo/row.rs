@@ -21,6 +21,7 @@ use std::borrow::Cow;
 use serde::{Deserialize, Serialize};
 
 use super::record::RunRecord;
+use crate::metrics::lso_grade::{parse_comment, Grade};
 use crate::parameters::readable_number;
 use crate::simulation::{Outcome, SIGNAL_MAGNITUDE_LIMIT};
 
@@ -50,6 +51,12 @@ pub const RUN_COLUMNS: [&str; 23] = [
     "wind_over_deck_dispersion_mps",
     "reason",
 ];
+
+/// The columns of the landing signal officer's grade, after every other column of
+/// `runs.csv` (after a 3-D campaign's lateral columns too): the fields of [`RunRow`] after
+/// `reason`. Empty for a run with no grade (one that never flew) and, for the comment,
+/// for a pass with no deviation.
+pub const LSO_RUN_COLUMNS: [&str; 3] = ["lso_grade", "lso_points", "lso_comment"];
 
 /// The outcomes a campaign's row can hold: an approach's [`Outcome`] (a campaign flies
 /// approaches, never a fixed-length `completed` run), `invalid` (the dispersed scenario
@@ -184,6 +191,12 @@ pub struct RunRow<'a> {
     pub wind_over_deck_dispersion_mps: f64,
     /// Why the run did not trap, in words.
     pub reason: Option<String>,
+    /// The LSO's grade ([`Grade::name`]: `ok`, `fair`, `bolter`, …).
+    pub lso_grade: Option<String>,
+    /// The grade's points on the greenie board (0–4).
+    pub lso_points: Option<f64>,
+    /// The LSO's comment in shorthand (`(LUL)X _H_IM LOIC`); `None` for no deviation.
+    pub lso_comment: Option<String>,
 }
 
 impl<'a> RunRow<'a> {
@@ -200,6 +213,7 @@ impl<'a> RunRow<'a> {
     pub fn with_controller(record: &RunRecord, controller: &'a str) -> Self {
         let summary = record.result.as_ref().ok();
         let touchdown = summary.and_then(|s| s.touchdown);
+        let graded = summary.and_then(|s| s.lso_grade.as_ref());
         Self {
             run_index: record.run_index,
             controller: Cow::Borrowed(controller),
@@ -224,6 +238,9 @@ impl<'a> RunRow<'a> {
             sea_state_scale: record.dispersion.sea_state_scale,
             wind_over_deck_dispersion_mps: record.dispersion.wind_over_deck_error_mps,
             reason: record.failure_reason(),
+            lso_grade: graded.map(|g| g.grade.name().to_owned()),
+            lso_points: graded.map(|g| g.points),
+            lso_comment: graded.map(|g| g.comment.clone()).filter(|c| !c.is_empty()),
         }
     }
 
@@ -264,7 +281,45 @@ impl<'a> RunRow<'a> {
         self.check_wire()?;
         self.check_flight_columns()?;
         self.check_touchdown_columns()?;
-        self.check_reason()
+        self.check_reason()?;
+        self.check_lso_grade()
+    }
+
+    /// The grade is one of [`Grade::ALL`] with its own points, the comment one
+    /// [`parse_comment`] reads, and neither points nor comment without a grade.
+    fn check_lso_grade(&self) -> Result<(), RowError> {
+        let Some(name) = self.lso_grade.as_deref() else {
+            if let Some(points) = self.lso_points {
+                return Err(row_error("lso_points", format!("{points:?}"), "no grade"));
+            }
+            return match &self.lso_comment {
+                Some(comment) => Err(row_error("lso_comment", format!("{comment:?}"), "no grade")),
+                None => Ok(()),
+            };
+        };
+        let Some(grade) = Grade::ALL.into_iter().find(|g| g.name() == name) else {
+            let names: Vec<&str> = Grade::ALL.iter().map(|g| g.name()).collect();
+            return Err(row_error(
+                "lso_grade",
+                format!("`{name}`"),
+                &format!("not a grade ({})", names.join(", ")),
+            ));
+        };
+        if self.lso_points != Some(grade.points()) {
+            return Err(row_error(
+                "lso_points",
+                shown(self.lso_points),
+                &format!("a `{name}` is worth {} points", grade.points()),
+            ));
+        }
+        match self.lso_comment.as_deref().map(parse_comment) {
+            Some(Err(problem)) => Err(row_error(
+                "lso_comment",
+                format!("{:?}", self.lso_comment.as_deref().unwrap_or_default()),
+                &problem.to_string(),
+            )),
+            _ => Ok(()),
+        }
     }
 
     /// The outcome is one a campaign writes.

@@ -4,7 +4,7 @@
 use super::lateral::{lateral_row_columns, LateralRow, LATERAL_RUN_COLUMNS};
 use super::limits::{MAX_CONTROLLERS, MAX_RUNS};
 use super::merge_error::MergeError;
-use super::row::{RowError, RunRow, RUN_COLUMNS};
+use super::row::{RowError, RunRow, LSO_RUN_COLUMNS, RUN_COLUMNS};
 use super::trap_sheet::TRAP_SHEET_RUN_COLUMNS;
 
 /// A shard's `runs.csv` read back: its rows, and a 3-D campaign's [`LateralRow`] of
@@ -31,24 +31,45 @@ pub fn runs_csv_text(
         }
         return text_of(writer);
     };
-    let mut header = csv::Writer::from_writer(Vec::new());
-    header.write_record(RUN_COLUMNS.into_iter().chain(lateral_row_columns()))?;
-    let mut text = text_of(header)?;
+    let mut writer = csv::Writer::from_writer(Vec::new());
+    writer.write_record(three_dimensional_columns())?;
+    let base = RUN_COLUMNS.len();
     for (row, values) in rows.iter().zip(lateral) {
-        let mut line = csv::WriterBuilder::new()
-            .has_headers(false)
-            .from_writer(Vec::new());
-        line.serialize(row)?;
-        let base = text_of(line)?;
-        let mut line = csv::WriterBuilder::new()
-            .has_headers(false)
-            .from_writer(Vec::new());
-        line.serialize(values)?;
-        text.push_str(base.trim_end());
-        text.push(',');
-        text.push_str(&text_of(line)?);
+        let row = record_of(row)?;
+        let values = record_of(values)?;
+        let fields = row
+            .iter()
+            .take(base)
+            .chain(values.iter())
+            .chain(row.iter().skip(base));
+        writer.write_record(fields)?;
     }
-    Ok(text)
+    text_of(writer)
+}
+
+/// The columns of a 3-D campaign's `runs.csv`: those of every campaign, the lateral and
+/// trap-sheet ones, then the LSO's grade.
+fn three_dimensional_columns() -> impl Iterator<Item = &'static str> {
+    RUN_COLUMNS
+        .into_iter()
+        .chain(lateral_row_columns())
+        .chain(LSO_RUN_COLUMNS)
+}
+
+/// The fields `value` serialises to, as one CSV record.
+fn record_of(value: &impl serde::Serialize) -> Result<csv::StringRecord, csv::Error> {
+    let mut line = csv::WriterBuilder::new()
+        .has_headers(false)
+        .from_writer(Vec::new());
+    line.serialize(value)?;
+    let text = text_of(line)?;
+    let mut reader = csv::ReaderBuilder::new()
+        .has_headers(false)
+        .from_reader(text.as_bytes());
+    reader
+        .records()
+        .next()
+        .unwrap_or_else(|| Ok(csv::StringRecord::new()))
 }
 
 /// What a CSV writer into memory wrote, as text (the fields are numbers and UTF-8 text).
@@ -61,7 +82,8 @@ fn text_of(writer: csv::Writer<Vec<u8>>) -> Result<String, csv::Error> {
 
 /// Reads the rows of a shard's `runs.csv` text (`location` names it in messages):
 /// exactly the columns of [`RUN_COLUMNS`] in order — for a 3-D approach campaign followed
-/// by those of [`LateralRow`] ([`lateral_row_columns`]) — a last line that ends (a file
+/// by those of [`LateralRow`] ([`lateral_row_columns`]) — then [`LSO_RUN_COLUMNS`] (a
+/// shard written before passes were graded is refused, saying so) — a last line that ends (a file
 /// cut short is refused, even inside a row's text), and every row one a campaign can
 /// write ([`RunRow::check`], [`LateralRow::check`]). Every error names the line and the
 /// column at fault.
@@ -74,12 +96,9 @@ pub fn parse_runs_csv(location: &str, text: &str) -> Result<ParsedRuns, MergeErr
     let columns: Vec<&str> = header.split(',').collect();
     let three_dimensional = columns.get(RUN_COLUMNS.len()) == Some(&LATERAL_RUN_COLUMNS[0]);
     let expected: Vec<&str> = if three_dimensional {
-        RUN_COLUMNS
-            .into_iter()
-            .chain(lateral_row_columns())
-            .collect()
+        three_dimensional_columns().collect()
     } else {
-        RUN_COLUMNS.to_vec()
+        RUN_COLUMNS.into_iter().chain(LSO_RUN_COLUMNS).collect()
     };
     let errors = CsvErrors {
         location,
@@ -130,7 +149,7 @@ impl CsvErrors<'_> {
         let column = match error.kind() {
             csv::ErrorKind::Deserialize { err, .. } => err
                 .field()
-                .and_then(|f| RUN_COLUMNS.get(f as usize))
+                .and_then(|f| RUN_COLUMNS.iter().chain(&LSO_RUN_COLUMNS).nth(f as usize))
                 .map(|c| format!("`{c}`: "))
                 .unwrap_or_default(),
             _ => String::new(),
@@ -174,6 +193,16 @@ impl CsvErrors<'_> {
 fn check_header(errors: &CsvErrors, columns: &[&str], expected: &[&str]) -> Result<(), MergeError> {
     if columns == expected {
         return Ok(());
+    }
+    if columns.len() + LSO_RUN_COLUMNS.len() == expected.len() && expected.starts_with(columns) {
+        return Err(errors.at(
+            1,
+            format!(
+                "the columns `{}` are missing: the shard was written by a deckland that did \
+                 not grade passes yet; fly it again with this version",
+                LSO_RUN_COLUMNS.join("`, `")
+            ),
+        ));
     }
     let position = expected
         .iter()
@@ -223,7 +252,8 @@ fn parse_three_dimensional_rows(
     errors: &CsvErrors,
     mut reader: csv::Reader<&[u8]>,
 ) -> Result<ParsedRuns, MergeError> {
-    let headers = csv::StringRecord::from(RUN_COLUMNS.to_vec());
+    let headers: csv::StringRecord = RUN_COLUMNS.into_iter().chain(LSO_RUN_COLUMNS).collect();
+    let width = three_dimensional_columns().count();
     let mut rows = Vec::new();
     let mut lateral = Vec::new();
     for (position, record) in reader.records().enumerate() {
@@ -231,7 +261,11 @@ fn parse_three_dimensional_rows(
         errors.check_count(number)?;
         let record = record.map_err(|error| errors.csv(error, number))?;
         let line = record.position().map_or(number + 1, |p| p.line());
-        let base: csv::StringRecord = record.iter().take(RUN_COLUMNS.len()).collect();
+        let base: csv::StringRecord = record
+            .iter()
+            .take(RUN_COLUMNS.len())
+            .chain(record.iter().skip(width - LSO_RUN_COLUMNS.len()))
+            .collect();
         let row: RunRow<'static> = base
             .deserialize(Some(&headers))
             .map_err(|error| errors.csv(error, line - 1))?;
@@ -296,9 +330,8 @@ mod tests {
     #[test]
     fn a_three_d_header_needs_every_lateral_and_trap_sheet_column() {
         let full = format!(
-            "{},{}\n",
-            RUN_COLUMNS.join(","),
-            lateral_row_columns().collect::<Vec<_>>().join(",")
+            "{}\n",
+            three_dimensional_columns().collect::<Vec<_>>().join(",")
         );
         let parsed = parse_runs_csv("s1/runs.csv", &full).expect("a 3-D header");
         assert_eq!(parsed.lateral, Some(Vec::new()));
@@ -321,5 +354,17 @@ mod tests {
             error.contains("`trap_x_glide_slope_mean_m` is missing"),
             "{error}"
         );
+    }
+
+    #[test]
+    fn a_shard_without_the_lso_columns_is_refused_by_name() {
+        let old = format!("{}\n", RUN_COLUMNS.join(","));
+        let error = parse_runs_csv("s1/runs.csv", &old).unwrap_err().to_string();
+        assert!(
+            error.contains("`lso_grade`, `lso_points`, `lso_comment` are missing"),
+            "{error}"
+        );
+        let new = format!("{},{}\n", RUN_COLUMNS.join(","), LSO_RUN_COLUMNS.join(","));
+        assert!(parse_runs_csv("s1/runs.csv", &new).is_ok());
     }
 }

@@ -3,6 +3,7 @@
 
 use serde::Serialize;
 
+use super::greenie_board::GreenieBoard;
 use super::rare_events::{upper_bound, UPPER_BOUND_CONFIDENCE};
 use super::record::RunRecord;
 use super::row::RunRow;
@@ -181,6 +182,8 @@ pub struct CampaignStatistics {
     pub elevator_travel_deg: Option<Distribution>,
     /// Thrust-rate RMS of each flown run (kN/s).
     pub thrust_rate_rms_knps: Option<Distribution>,
+    /// The landing signal officer's greenie board of the runs.
+    pub greenie_board: GreenieBoard,
 }
 
 impl CampaignStatistics {
@@ -242,6 +245,7 @@ impl CampaignStatistics {
             thrust_rate_rms_knps: Distribution::of(
                 flown.iter().filter_map(|r| r.thrust_rate_rms_knps),
             ),
+            greenie_board: GreenieBoard::of_rows(rows),
         }
     }
 

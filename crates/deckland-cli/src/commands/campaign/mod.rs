@@ -32,6 +32,7 @@
 //! of every run are kept in memory, and threads beyond the cores buy nothing.
 
 pub mod folder;
+pub mod greenie;
 pub mod paired;
 pub mod report;
 pub mod trap_sheet;

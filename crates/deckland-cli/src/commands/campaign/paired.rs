@@ -131,6 +131,9 @@ mod tests {
             sea_state_scale: 1.0,
             wind_over_deck_dispersion_mps: 0.0,
             reason: None,
+            lso_grade: None,
+            lso_points: None,
+            lso_comment: None,
         }
     }
 

@@ -281,6 +281,12 @@ fn html_report(
          outcomes (trap, bolter, wave-off: the aircraft is intact) are also totalled.",
         report.summary.confidence_interval
     ));
+    outcomes.paragraph(
+        "The greenie board: the landing signal officer's grade of every flown pass \
+         (docs/model.md §11), its points (OK 4, fair 3, bolter 2.5, no grade and own \
+         wave-off 2, cut 0), the wires caught and the deviations called most often.",
+    );
+    outcomes.html(super::greenie::board_html(stats));
     add_plots(outcomes, plots, |stem| stem == "outcomes");
     outcomes.table(&header, outcome_rows(stats));
     let wires: Vec<Vec<String>> = stats
@@ -449,6 +455,7 @@ pub fn print_statistics(report: &CampaignReport) -> Result<()> {
         out!("{:>width$}", format!("{}/{}/{}/{}", w[0], w[1], w[2], w[3]))?;
     }
     outln!()?;
+    super::greenie::print(stats, label_width, width)?;
     if let Some(lateral) = &report.lateral {
         print_lateral(lateral)?;
     }
