@@ -152,7 +152,7 @@ pub const MIN_WIND_OVER_DECK_MPS: f64 = 0.01;
 
 impl WindParameters {
     /// Checks every field: speeds in [0, 40] m/s (the wind over the deck 0 or at least
-    /// [`MIN_WIND_OVER_DECK_MPS`]), σ in [0, 10] m/s, scale in (0, 3000] m,
+    /// `MIN_WIND_OVER_DECK_MPS`, 0.01 m/s), σ in [0, 10] m/s, scale in (0, 3000] m,
     /// θ_s in [0, 0.5] rad, ω_p in [0, 20] rad/s, crosswind in [−10, 10] m/s, the crab
     /// limit in (0, 30]°.
     pub fn validate(&self) -> Result<(), ParameterError> {

@@ -43,9 +43,9 @@ impl Default for LateralParameters {
 pub const MIN_INERTIA_KG_M2: f64 = 1000.0;
 
 impl LateralParameters {
-    /// Checks the span (1–100 m), the inertias ([`MIN_INERTIA_KG_M2`]–10⁸ kg·m²) and
+    /// Checks the span (1–100 m), the inertias (`MIN_INERTIA_KG_M2`, 1000, to 10⁸ kg·m²) and
     /// the product of inertia: |I_xz| ≤ √((I_x − I_min)·(I_z − I_min)), I_min =
-    /// [`MIN_INERTIA_KG_M2`]. That is, the smaller principal moment of inertia of the x–z
+    /// `MIN_INERTIA_KG_M2`. That is, the smaller principal moment of inertia of the x–z
     /// plane, ((I_x + I_z) − √((I_x − I_z)² + 4·I_xz²))/2, is at least I_min, the floor of
     /// I_x and I_z themselves. The roll and yaw equations divide by Γ = I_x·I_z − I_xz²
     /// (Stevens & Lewis Eq. 1.7-4): |I_xz| < √(I_x·I_z) alone keeps Γ positive, but near
