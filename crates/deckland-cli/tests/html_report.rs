@@ -283,5 +283,22 @@ fn a_3d_campaign_report_shows_its_outcomes_chart_on_the_first_screen() {
         "every plot stands beside its table"
     );
     render_in(&chromium, &page, FIRST_SCREEN);
+    // The greenie board stands beside the chart: its OK row's green (#3c9a3c) is on the
+    // first screen too.
+    let shot = image::open(page.with_file_name("screenshot.png"))
+        .unwrap()
+        .to_rgb8();
+    let green = shot
+        .pixels()
+        .filter(|p| {
+            p.0.iter()
+                .zip([60u8, 154, 60])
+                .all(|(a, b)| a.abs_diff(b) <= 8)
+        })
+        .count();
+    assert!(
+        green > 200,
+        "no greenie board on the first screen ({green} green pixels)"
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -7,7 +7,8 @@
 mod shard_fixture;
 
 use deckland::monte_carlo::{
-    merge_shards, parse_runs_csv, MergeError, Shard, ShardError, ShardRows, MAX_RUNS, RUN_COLUMNS,
+    merge_shards, parse_runs_csv, MergeError, Shard, ShardError, ShardRows, LSO_RUN_COLUMNS,
+    MAX_RUNS, RUN_COLUMNS,
 };
 use shard_fixture::{edit_csv, flown_shards, rows_csv};
 
@@ -120,13 +121,16 @@ fn regression_rows_no_campaign_writes_are_refused_by_row_and_column() {
 fn regression_runs_csv_text_must_be_a_whole_campaign_table() {
     let shards = flown_shards();
     let text = rows_csv(&shards[0].rows);
-    // A column removed (from the header and every row).
-    let without_reason: String = text
+    // A column removed (from the header and every row): the last, the LSO's comment.
+    let without_comment: String = text
         .lines()
         .map(|line| line.rsplit_once(',').unwrap().0.to_owned() + "\n")
         .collect();
-    let error = parse_runs_csv("r", &without_reason).unwrap_err();
-    assert!(error.to_string().contains("`reason` is missing"), "{error}");
+    let error = parse_runs_csv("r", &without_comment).unwrap_err();
+    assert!(
+        error.to_string().contains("`lso_comment` is missing"),
+        "{error}"
+    );
     let error = parse_runs_csv("r", &text.replacen("wire,", "wires,", 1)).unwrap_err();
     assert!(error.to_string().contains("`wires`"), "{error}");
     assert!(parse_runs_csv("r", "").is_err());
@@ -142,7 +146,8 @@ fn regression_runs_csv_text_must_be_a_whole_campaign_table() {
     // A quote that never closes swallows the rest of the file.
     let open_quote = text.replacen(",O-PD,", ",\"O-PD,", 1);
     assert!(parse_runs_csv("r", &open_quote).is_err());
-    assert_eq!(RUN_COLUMNS.join(","), text.lines().next().unwrap());
+    let header: Vec<&str> = RUN_COLUMNS.into_iter().chain(LSO_RUN_COLUMNS).collect();
+    assert_eq!(header.join(","), text.lines().next().unwrap());
 }
 
 /// Regression (issue 28, D1 and D4): a huge shard count made a merge allocate petabytes;

@@ -286,8 +286,14 @@ fn html_report(
          (docs/model.md §11), its points (OK 4, fair 3, bolter 2.5, no grade and own \
          wave-off 2, cut 0), the wires caught and the deviations called most often.",
     );
-    outcomes.html(super::greenie::board_html(stats));
+    // The board beside the outcomes' chart, so that both stand on the first screen.
+    outcomes.html(format!(
+        "<div style=\"display:flex;gap:1em;align-items:flex-start\">\n\
+         <div style=\"flex:2;min-width:0\">\n{}</div>\n<div style=\"flex:3;min-width:0\">\n",
+        super::greenie::board_html(stats)
+    ));
     add_plots(outcomes, plots, |stem| stem == "outcomes");
+    outcomes.html("</div>\n</div>\n");
     outcomes.table(&header, outcome_rows(stats));
     let wires: Vec<Vec<String>> = stats
         .iter()
