@@ -1,5 +1,5 @@
 //! The hull's response to regular waves: heave, pitch and roll amplitudes per unit wave
-//! amplitude of a Nimitz-class carrier from its main dimensions (MODEL.md §11).
+//! amplitude of a Nimitz-class carrier from its main dimensions (docs/model.md §12).
 //!
 //! **Heave and pitch** follow Jensen, Mansour & Olsen, *Estimation of ship motions using
 //! closed-form expressions*, Ocean Engineering 31 (2004) 61–85 (JMO), for a homogeneously
@@ -26,7 +26,7 @@
 //! the sectional roll damping by a Haskind-type relation, with empirical damping curves in
 //! B/T for a two-box hull that needs the waterplane coefficient and GM_T): a
 //! one-degree-of-freedom oscillator of natural frequency ω_φ = 2π/T_φ and damping ratio ζ_φ
-//! (both named assumptions; MODEL.md §11: T_φ about 20–25 s, ζ about 0.1 with bilge keels)
+//! (both named assumptions; docs/model.md §12: T_φ about 20–25 s, ζ about 0.1 with bilge keels)
 //! excited by the effective wave slope k·|sin μ|·κ_φ·sinc(σ), κ_φ = exp(−kT) the Smith
 //! factor at the draught and sinc(σ) = sin σ/σ the average of the slope along the length:
 //! roll amplitude/wave amplitude = k|sin μ|κ_φ|sinc σ| / √((1 − r²)² + (2ζ_φ r)²),
@@ -57,11 +57,11 @@ pub struct HullParameters {
     /// Displacement (metric tonnes); default 100 000, Nimitz class full load about
     /// 100 000–104 600 long tons (same public figures), rounded.
     pub displacement_t: f64,
-    /// Ship speed U (m/s); default 15 kn (MODEL.md §11).
+    /// Ship speed U (m/s); default 15 kn (docs/model.md §12).
     pub speed_mps: f64,
-    /// Natural period of roll T_φ (s); default 22, an assumption (MODEL.md §11: 20–25 s).
+    /// Natural period of roll T_φ (s); default 22, an assumption (docs/model.md §12: 20–25 s).
     pub roll_natural_period_s: f64,
-    /// Damping ratio of roll ζ_φ; default 0.1, an assumption (MODEL.md §11, bilge keels).
+    /// Damping ratio of roll ζ_φ; default 0.1, an assumption (docs/model.md §12, bilge keels).
     pub roll_damping_ratio: f64,
 }
 
@@ -196,7 +196,7 @@ mod tests {
     #[test]
     fn nimitz_block_coefficient_from_its_dimensions() {
         // ∇ = 10⁸ kg / 1025 = 97 561 m³; L·B·T = 317·40.8·11.3 = 146 149.7 m³ → 0.6675
-        // (MODEL.md §11: about 0.67).
+        // (docs/model.md §12: about 0.67).
         let c_b = HullParameters::default().block_coefficient();
         assert!((c_b - 97_560.98 / 146_149.68).abs() < 1e-6, "{c_b}");
         assert!((c_b - 0.6675).abs() < 5e-4);

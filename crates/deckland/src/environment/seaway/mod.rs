@@ -107,7 +107,7 @@ pub enum SeawayError {
     },
 }
 
-/// Configuration of the seaway (MODEL.md §11): the waves, their heading and spreading, and
+/// Configuration of the seaway (docs/model.md §12): the waves, their heading and spreading, and
 /// the hull.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]

@@ -1,4 +1,4 @@
-//! Wave spectra, the sea-state table and the encounter frequency (docs: MODEL.md §11).
+//! Wave spectra, the sea-state table and the encounter frequency (docs/model.md §12).
 //!
 //! One-sided spectra S(ω) in m²·s/rad over the wave's circular frequency ω (rad/s), so
 //! that the surface elevation's variance is m₀ = ∫₀^∞ S(ω) dω and the significant wave
@@ -62,7 +62,7 @@ pub struct SeaStateRow {
 /// Open-ocean North Atlantic sea states 3–6, most probable H_s and modal period, from the
 /// NATO table of Bales, Lee & Voelker, *Standardized wave and wind environments for NATO
 /// operational areas*, DTNSRDC/SPD-0919-01 (1981), as commonly cited and as quoted in
-/// MODEL.md §11. The figures are not checked against the report itself here.
+/// docs/model.md §12. The figures are not checked against the report itself here.
 pub const SEA_STATE_TABLE: [SeaStateRow; 4] = [
     SeaStateRow {
         sea_state: 3,

@@ -1,5 +1,5 @@
 //! The time-domain (Markov) model of each motion, fitted to its encounter spectrum
-//! (MODEL.md §11 "Time domain"; issue 42 item 3).
+//! (docs/model.md §12, "Time domain").
 //!
 //! **Target.** For a motion with amplitude per unit wave amplitude H(ω, μ) (module `hull`),
 //! its one-sided spectrum over the encounter frequency is
@@ -24,7 +24,7 @@
 //!   its acceleration (C·A²·x) all have finite variance, which the issue asks of the deck;
 //!   only the jerk sees the white noise. Relative degree 2 would not do: then ÿ = C A² x +
 //!   (C A B) w has white noise in it and infinite variance, the fault of the paper's pitch
-//!   filter 0.773·s²/D(s) (MODEL.md §11);
+//!   filter 0.773·s²/D(s) (docs/model.md §12);
 //! - the two sections separate a narrow roll resonance from the broad wave-frequency part
 //!   of roll, and the heave and pitch peaks need no more.
 //!
