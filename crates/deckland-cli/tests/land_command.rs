@@ -57,6 +57,7 @@ fn land_writes_every_result_and_prints_the_json_summary() {
     assert!((2300..2600).contains(&rows), "{rows} rows");
     let scenario = std::fs::read_to_string(dir.join("scenario.toml")).unwrap();
     assert!(scenario.contains("seed = 1") && scenario.contains("[control.guidance]"));
+    assert_trap_sheet(&dir.join("trap_sheet.csv"), &v);
     for stem in [
         "altitude",
         "glide_path_error",
@@ -183,4 +184,41 @@ fn sink_tracks_a_ramped_command_and_reports_the_paper_step_as_diverged() {
     assert_eq!(v["outcome"], "diverged");
     assert!(v["reason"].as_str().unwrap().contains("angle of attack"));
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// `trap_sheet.csv` holds a row every 0.5 s of the pass before the ramp, each in its
+/// LSO window (blank beyond ¾ nmi), with the pass's grade as summary.json has it.
+fn assert_trap_sheet(path: &std::path::Path, summary: &Value) {
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let column = |name: &str| header.iter().position(|c| *c == name).unwrap();
+    let (time, range, window, grade) = (
+        column("time_s"),
+        column("range_to_ramp_m"),
+        column("window"),
+        column("grade"),
+    );
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    // The 1440 m to the ramp at 61.4 m/s: about 23.5 s, 48 rows.
+    assert!((44..52).contains(&rows.len()), "{} rows", rows.len());
+    for pair in rows.windows(2) {
+        let dt: f64 = pair[1][time].parse::<f64>().unwrap() - pair[0][time].parse::<f64>().unwrap();
+        assert!((dt - 0.5).abs() < 1e-6, "{dt}");
+    }
+    for row in &rows {
+        let d: f64 = row[range].parse().unwrap();
+        let expected = match d {
+            d if d > 1389.0 => "",
+            d if d > 926.0 => "X",
+            d if d > 463.0 => "IM",
+            d if d > 185.2 => "IC",
+            _ => "AR",
+        };
+        assert_eq!(row[window], expected, "{d} m");
+        assert_eq!(row[grade], summary["lso_grade"]["grade"].as_str().unwrap());
+        assert!(row
+            .iter()
+            .all(|cell| !cell.contains("NaN") && !cell.contains("inf")));
+    }
 }

@@ -9,6 +9,7 @@ use super::common::{
     check_set_up, seed_parser, Conditions, ControllerChoice, HardwareChoice, OutputArgs,
 };
 use super::outcome::outcome_text;
+use super::trap_sheet_file::trap_sheet_csv;
 use crate::html;
 use crate::output::OutputDir;
 pub(crate) use crate::plot::land::figures;
@@ -99,6 +100,8 @@ pub fn fly_and_write(
     }
     let bytes = csv.into_inner().map_err(|e| anyhow::anyhow!("{e}"))?;
     output.write_bytes("approach.csv", &bytes)?;
+    let sheet = trap_sheet_csv(&run, scenario.environment.deck.ramp_aft_of_aim_point_m)?;
+    output.write_bytes("trap_sheet.csv", &sheet)?;
     let summary_json = serde_json::to_string_pretty(&report)?;
     output.write_bytes("summary.json", summary_json.as_bytes())?;
     let flown = format!("{controller}, {conditions}, seed {}", scenario.seed);

@@ -15,4 +15,5 @@ pub mod scenario;
 pub mod sink;
 pub mod six_dof;
 pub mod step;
+pub mod trap_sheet_file;
 pub mod trim;

@@ -79,7 +79,7 @@ impl TrapSheetPosition {
 
     /// The position a hook `distance_to_ramp_m` before the ramp is in; `None` beyond ¾
     /// nmi or at and past the ramp.
-    fn at(distance_to_ramp_m: f64) -> Option<Self> {
+    pub fn at(distance_to_ramp_m: f64) -> Option<Self> {
         Self::ALL.into_iter().find(|position| {
             let (outer, inner) = position.window_m();
             distance_to_ramp_m <= outer && distance_to_ramp_m > inner
