@@ -41,7 +41,7 @@ fn study(parameters: ShipMotionParameters, seconds: f64, seed: u64) -> Vec<[f64;
         ship.state(),
         &mut streams.stream(stream_names::SHIP_ESTIMATE_START),
     );
-    let predictor = ShipMotionPropagator::new(HORIZONS_S[HORIZONS_S.len() - 1] + 1.0);
+    let predictor = ShipMotionPropagator::new(ship.model(), HORIZONS_S[HORIZONS_S.len() - 1] + 1.0);
     let mut pending: VecDeque<Pending> = VecDeque::new();
     let mut sums = vec![[0.0; 4]; HORIZONS_S.len()];
     let mut counts = vec![0.0; HORIZONS_S.len()];

@@ -4,7 +4,7 @@
 mod common;
 
 use deckland::control::{DeckPredictorKind, DeckReference};
-use deckland::environment::{ShipMotionPropagator, ShipPose};
+use deckland::environment::{ShipMotion, ShipMotionPropagator, ShipPose};
 use deckland::scenario::Scenario;
 use deckland::simulation::{DeckPredictor, DeckQuery, Simulation};
 
@@ -68,7 +68,10 @@ fn a_users_oracle_flies_bit_for_bit_as_the_built_in_one() {
     let horizon_s = scenario.control.flight_path.compensation_window_s
         + scenario.control.flight_path.compensation_blend_s;
     let mine = MyOracle {
-        propagator: ShipMotionPropagator::new(horizon_s),
+        propagator: ShipMotionPropagator::new(
+            &ShipMotion::new(scenario.environment.ship).expect("valid"),
+            horizon_s,
+        ),
     };
     let flown = fly(Simulation::builder(&scenario)
         .deck_predictor(&mine)

@@ -15,6 +15,7 @@ pub mod lyapunov;
 pub mod seaway;
 mod ship;
 mod ship_lateral;
+mod ship_model;
 mod ship_prediction;
 mod ship_simulator;
 mod turbulence;
@@ -26,13 +27,18 @@ pub use angled_deck::{DeckCentreline, EarthDirection, ShipAttitude};
 pub use deck::{DeckGeometry, EarthPoint, EarthVelocity, ShipPose, ShipPoseRate};
 pub use ship::{
     heave_unit_intensity_variance, pitch_unit_intensity_variance, shaping_filter_companion,
-    unit_intensity_state_covariance, ShipMotion, ShipMotionOutputs, ShipMotionParameters,
-    ShipMotionState, ShipNoise, HEAVE_FILTER_GAIN, PITCH_FILTER_GAIN, SHAPING_FILTER_DENOMINATOR,
+    unit_intensity_state_covariance, ShapingFilter, ShipMotion, ShipMotionOutputs,
+    ShipMotionParameters, ShipMotionState, ShipNoise, HEAVE_FILTER_GAIN, PITCH_FILTER_GAIN,
+    SHAPING_FILTER_DENOMINATOR,
 };
 pub use ship_lateral::{
     roll_filter_companion, roll_unit_intensity_state_covariance, LateralShipMotion,
     LateralShipMotionOutputs, LateralShipMotionState, LateralShipNoise, LateralShipStreams,
     ROLL_FILTER_DAMPING_RATIO, ROLL_FILTER_NATURAL_FREQUENCY_RADPS,
+};
+pub use ship_model::{
+    resolved_ship_parameters, ship_motion, validate_seaway, PaperFilters, SeawayShip, ShipModel,
+    ShipModelKind, ShipMotionShape,
 };
 pub use ship_prediction::{
     DeckPointUncertainty, Matrix4Array, PredictedShipMotion, ShipMotionEstimate,

@@ -18,6 +18,7 @@ use serde::{Deserialize, Serialize};
 
 use super::deck::{ShipPose, ShipPoseRate};
 use super::lyapunov::stationary_covariance;
+use super::ship_model::ShipModelKind;
 use crate::parameters::{Bounds, ParameterError};
 use crate::random::NoiseStream;
 
@@ -28,10 +29,17 @@ pub const HEAVE_FILTER_GAIN: f64 = 1.21;
 /// Numerator gain of the pitch filter G_θ(s) = 0.773·s²/D(s) (paper Eq. 16), rad per unit.
 pub const PITCH_FILTER_GAIN: f64 = 0.773;
 
+/// A 4 × 4 matrix as nested arrays (row major).
+pub type Matrix4Array = [[f64; 4]; 4];
+
 /// Configuration of the ship motion (docs/model.md §3.1).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct ShipMotionParameters {
+    /// The ship-motion model (`filters`, the paper's shaping filters: the default of a
+    /// file that names none; `seaway`: the carrier in the seaway of
+    /// `[environment.seaway]`, docs/model.md §12).
+    pub model: ShipModelKind,
     /// Whether the deck heaves and pitches at all; when false the ship is steady.
     pub enabled: bool,
     /// Stationary RMS of heave (m); docs/model.md §3.1 default 2.0.
@@ -54,6 +62,7 @@ pub struct ShipMotionParameters {
 impl Default for ShipMotionParameters {
     fn default() -> Self {
         Self {
+            model: ShipModelKind::Filters,
             enabled: true,
             heave_rms_m: 2.0,
             pitch_rms_deg: 1.5,
@@ -166,52 +175,128 @@ pub struct ShipMotionOutputs {
     pub pitch_rate_radps: f64,
 }
 
+/// One motion's shaping filter in controllable canonical form (module docs): with
+/// z₁ = u/D(s), D(s) = s⁴ + d₃s³ + d₂s² + d₁s + d₀, the motion is y = g·z₁^(k) (k =
+/// `output_state`, 0 to 2: the transfer function g·sᵏ/D(s)) and its rate g·z₁^(k+1).
+///
+/// The paper's ship is [`ShapingFilter::PAPER_HEAVE`] and [`ShapingFilter::PAPER_PITCH`];
+/// the carrier in a seaway fits a band-pass g·ω₀²·s/(s² + 2ζω₀s + ω₀²)² to each motion
+/// (k = 1, relative degree 3: finite acceleration variance; docs/model.md §12).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ShapingFilter {
+    /// Coefficients (d₀, d₁, d₂, d₃) of the denominator D(s); every root in the open left
+    /// half-plane.
+    pub denominator: [f64; 4],
+    /// k: the motion is state k of the canonical state (z₁, ż₁, z̈₁, z⃛₁), its rate state k + 1.
+    pub output_state: usize,
+    /// g: output units per filter unit.
+    pub gain: f64,
+}
+
+impl ShapingFilter {
+    /// The paper's heave filter 1.21/D(s) (Eq. 15).
+    pub const PAPER_HEAVE: Self = Self {
+        denominator: SHAPING_FILTER_DENOMINATOR,
+        output_state: 0,
+        gain: HEAVE_FILTER_GAIN,
+    };
+    /// The paper's pitch filter 0.773·s²/D(s) (Eq. 16).
+    pub const PAPER_PITCH: Self = Self {
+        denominator: SHAPING_FILTER_DENOMINATOR,
+        output_state: 2,
+        gain: PITCH_FILTER_GAIN,
+    };
+
+    /// The companion matrix A, D(s) in its last row.
+    pub fn companion(&self) -> Matrix4<f64> {
+        let [d0, d1, d2, d3] = self.denominator;
+        #[rustfmt::skip]
+        let a = Matrix4::new(
+            0.0, 1.0, 0.0, 0.0,
+            0.0, 0.0, 1.0, 0.0,
+            0.0, 0.0, 0.0, 1.0,
+            -d0, -d1, -d2, -d3,
+        );
+        a
+    }
+
+    /// The stationary covariance P of the canonical state for unit-intensity white noise,
+    /// A P + P Aᵀ + B Bᵀ = 0; `None` when D(s) is not stable.
+    pub fn unit_intensity_state_covariance(&self) -> Option<Matrix4Array> {
+        let companion = self.companion();
+        let a = DMatrix::from_fn(4, 4, |i, j| companion[(i, j)]);
+        let b = DMatrix::from_row_slice(4, 1, &[0.0, 0.0, 0.0, 1.0]);
+        let p = stationary_covariance(&a, &b)?;
+        Some(std::array::from_fn(|i| std::array::from_fn(|j| p[(i, j)])))
+    }
+
+    /// Time derivative of the canonical state under a held input `u`.
+    #[inline(always)]
+    pub fn derivative(&self, z: &[f64; 4], u: f64) -> [f64; 4] {
+        let [d0, d1, d2, d3] = self.denominator;
+        [
+            z[1],
+            z[2],
+            z[3],
+            u - d0 * z[0] - d1 * z[1] - d2 * z[2] - d3 * z[3],
+        ]
+    }
+
+    /// The motion in state `z`.
+    #[inline(always)]
+    pub fn output(&self, z: &[f64; 4]) -> f64 {
+        self.gain * z[self.output_state]
+    }
+
+    /// The motion's rate in state `z`.
+    #[inline(always)]
+    pub fn rate(&self, z: &[f64; 4]) -> f64 {
+        self.gain * z[self.output_state + 1]
+    }
+
+    /// Checks D(s) is stable and k in 0–2 (`what` names the motion in the error).
+    fn check(&self, what: &'static str) -> Result<Matrix4Array, ParameterError> {
+        let invalid = |allowed: &str| {
+            ParameterError::new("environment.ship", &format!("{what}_filter"), self, allowed)
+        };
+        if self.output_state > 2 || !self.gain.is_finite() || self.gain <= 0.0 {
+            return Err(invalid(
+                "expected a positive gain and an output state of 0 to 2",
+            ));
+        }
+        self.unit_intensity_state_covariance()
+            .filter(|p| p.iter().flatten().all(|v| v.is_finite()) && p[0][0] > 0.0)
+            .ok_or_else(|| invalid("the filter's denominator is not stable"))
+    }
+}
+
 /// The ship motion model: the two shaping filters with noise intensities derived from
 /// the configured RMS (docs/model.md §3.1).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ShipMotion {
     parameters: ShipMotionParameters,
+    heave_filter: ShapingFilter,
+    pitch_filter: ShapingFilter,
     heave_intensity: f64,
     pitch_intensity: f64,
-    /// Lower Cholesky factor L of the filter's unit-intensity stationary covariance P.
-    covariance_factor: [[f64; 4]; 4],
+    /// Lower Cholesky factor L of each filter's unit-intensity stationary covariance P.
+    heave_covariance_factor: Matrix4Array,
+    pitch_covariance_factor: Matrix4Array,
 }
 
-/// The companion matrix A of one shaping filter in controllable canonical form, with
-/// the denominator D(s) of paper Eq. 15–16 in its last row (docs/model.md §3.1).
+/// The companion matrix A of the paper's shaping filter in controllable canonical form,
+/// with the denominator D(s) of paper Eq. 15–16 in its last row (docs/model.md §3.1).
 pub fn shaping_filter_companion() -> Matrix4<f64> {
-    let [d0, d1, d2, d3] = SHAPING_FILTER_DENOMINATOR;
-    #[rustfmt::skip]
-    let a = Matrix4::new(
-        0.0, 1.0, 0.0, 0.0,
-        0.0, 0.0, 1.0, 0.0,
-        0.0, 0.0, 0.0, 1.0,
-        -d0, -d1, -d2, -d3,
-    );
-    a
+    ShapingFilter::PAPER_HEAVE.companion()
 }
 
-/// The companion matrix A and input B of one filter in controllable canonical form.
-fn canonical_form() -> (DMatrix<f64>, DMatrix<f64>) {
-    let a = DMatrix::from_fn(4, 4, |i, j| shaping_filter_companion()[(i, j)]);
-    let b = DMatrix::from_row_slice(4, 1, &[0.0, 0.0, 0.0, 1.0]);
-    (a, b)
-}
-
-/// The stationary covariance P of one canonical filter state for unit-intensity white
-/// noise, A P + P Aᵀ + B Bᵀ = 0 (docs/model.md §3.1). The filter is fixed and stable (its
-/// poles are −1, −1 and −0.04 ± 0.398i), so the solution always exists.
-pub fn unit_intensity_state_covariance() -> [[f64; 4]; 4] {
-    let (a, b) = canonical_form();
-    let p = stationary_covariance(&a, &b)
-        .expect("the fixed shaping filter (s+1)²(s²+0.08s+0.16) is stable");
-    let mut out = [[0.0; 4]; 4];
-    for (i, row) in out.iter_mut().enumerate() {
-        for (j, value) in row.iter_mut().enumerate() {
-            *value = p[(i, j)];
-        }
-    }
-    out
+/// The stationary covariance P of the paper's canonical filter state for unit-intensity
+/// white noise, A P + P Aᵀ + B Bᵀ = 0 (docs/model.md §3.1). The filter is fixed and stable
+/// (its poles are −1, −1 and −0.04 ± 0.398i), so the solution always exists.
+pub fn unit_intensity_state_covariance() -> Matrix4Array {
+    ShapingFilter::PAPER_HEAVE
+        .unit_intensity_state_covariance()
+        .expect("the fixed shaping filter (s+1)²(s²+0.08s+0.16) is stable")
 }
 
 /// Stationary variance of heave for unit-intensity noise, 1.21²·P₁₁ (m²); docs/model.md §3.1
@@ -226,25 +311,60 @@ pub fn pitch_unit_intensity_variance() -> f64 {
     PITCH_FILTER_GAIN.powi(2) * unit_intensity_state_covariance()[2][2]
 }
 
+/// Lower Cholesky factor of a positive-definite 4 × 4 matrix.
+fn cholesky_factor(p: &Matrix4Array) -> Matrix4Array {
+    let matrix = DMatrix::from_fn(4, 4, |i, j| p[i][j]);
+    let cholesky = matrix
+        .cholesky()
+        .expect("the stationary covariance of a stable filter is positive definite");
+    let l = cholesky.l();
+    std::array::from_fn(|i| std::array::from_fn(|j| l[(i, j)]))
+}
+
 impl ShipMotion {
-    /// The model for these parameters; validates them and solves for the intensities.
+    /// The model for these parameters, the paper's filters (§3.1); validates them and
+    /// solves for the intensities.
     pub fn new(parameters: ShipMotionParameters) -> Result<Self, ParameterError> {
+        Self::with_filters(
+            parameters,
+            ShapingFilter::PAPER_HEAVE,
+            ShapingFilter::PAPER_PITCH,
+        )
+    }
+
+    /// The model with these heave and pitch filters, their noise intensities set so that
+    /// heave and pitch have the parameters' RMS; validates both.
+    pub fn with_filters(
+        parameters: ShipMotionParameters,
+        heave_filter: ShapingFilter,
+        pitch_filter: ShapingFilter,
+    ) -> Result<Self, ParameterError> {
         parameters.validate()?;
-        let p = unit_intensity_state_covariance();
-        let heave_variance = HEAVE_FILTER_GAIN.powi(2) * p[0][0];
-        let pitch_variance = PITCH_FILTER_GAIN.powi(2) * p[2][2];
-        let matrix = DMatrix::from_fn(4, 4, |i, j| p[i][j]);
-        let cholesky = matrix
-            .cholesky()
-            .expect("the stationary covariance of a stable filter is positive definite");
-        let l = cholesky.l();
-        let covariance_factor = std::array::from_fn(|i| std::array::from_fn(|j| l[(i, j)]));
+        let heave_p = heave_filter.check("heave")?;
+        let pitch_p = pitch_filter.check("pitch")?;
+        let heave_variance = heave_filter.gain.powi(2)
+            * heave_p[heave_filter.output_state][heave_filter.output_state];
+        let pitch_variance = pitch_filter.gain.powi(2)
+            * pitch_p[pitch_filter.output_state][pitch_filter.output_state];
         Ok(Self {
             parameters,
+            heave_filter,
+            pitch_filter,
             heave_intensity: parameters.heave_rms_m.powi(2) / heave_variance,
             pitch_intensity: parameters.pitch_rms_deg.to_radians().powi(2) / pitch_variance,
-            covariance_factor,
+            heave_covariance_factor: cholesky_factor(&heave_p),
+            pitch_covariance_factor: cholesky_factor(&pitch_p),
         })
+    }
+
+    /// The heave filter.
+    pub fn heave_filter(&self) -> &ShapingFilter {
+        &self.heave_filter
+    }
+
+    /// The pitch filter.
+    pub fn pitch_filter(&self) -> &ShapingFilter {
+        &self.pitch_filter
     }
 
     /// The parameters the model was built from.
@@ -264,18 +384,13 @@ impl ShipMotion {
 
     /// Time derivative of the filter states under held noise inputs (paper Eq. 15–16).
     pub fn derivative(&self, state: &ShipMotionState, noise: ShipNoise) -> ShipMotionState {
-        let filter = |z: &[f64; 4], u: f64| {
-            let [d0, d1, d2, d3] = SHAPING_FILTER_DENOMINATOR;
-            [
-                z[1],
-                z[2],
-                z[3],
-                u - d0 * z[0] - d1 * z[1] - d2 * z[2] - d3 * z[3],
-            ]
-        };
         ShipMotionState {
-            heave_filter: filter(&state.heave_filter, noise.heave),
-            pitch_filter: filter(&state.pitch_filter, noise.pitch),
+            heave_filter: self
+                .heave_filter
+                .derivative(&state.heave_filter, noise.heave),
+            pitch_filter: self
+                .pitch_filter
+                .derivative(&state.pitch_filter, noise.pitch),
         }
     }
 
@@ -309,19 +424,22 @@ impl ShipMotion {
         if !self.parameters.enabled {
             return ShipMotionState::default();
         }
-        let draw = |stream: &mut NoiseStream, intensity: f64| {
+        let draw = |stream: &mut NoiseStream, intensity: f64, factor: &Matrix4Array| {
             let n: [f64; 4] = std::array::from_fn(|_| stream.standard_normal());
             let scale = intensity.sqrt();
-            std::array::from_fn(|i| {
-                scale
-                    * (0..=i)
-                        .map(|j| self.covariance_factor[i][j] * n[j])
-                        .sum::<f64>()
-            })
+            std::array::from_fn(|i| scale * (0..=i).map(|j| factor[i][j] * n[j]).sum::<f64>())
         };
         ShipMotionState {
-            heave_filter: draw(heave_stream, self.heave_intensity),
-            pitch_filter: draw(pitch_stream, self.pitch_intensity),
+            heave_filter: draw(
+                heave_stream,
+                self.heave_intensity,
+                &self.heave_covariance_factor,
+            ),
+            pitch_filter: draw(
+                pitch_stream,
+                self.pitch_intensity,
+                &self.pitch_covariance_factor,
+            ),
         }
     }
 
@@ -331,10 +449,10 @@ impl ShipMotion {
             return ShipMotionOutputs::default();
         }
         ShipMotionOutputs {
-            heave_m: HEAVE_FILTER_GAIN * state.heave_filter[0],
-            heave_rate_mps: HEAVE_FILTER_GAIN * state.heave_filter[1],
-            pitch_rad: PITCH_FILTER_GAIN * state.pitch_filter[2],
-            pitch_rate_radps: PITCH_FILTER_GAIN * state.pitch_filter[3],
+            heave_m: self.heave_filter.output(&state.heave_filter),
+            heave_rate_mps: self.heave_filter.rate(&state.heave_filter),
+            pitch_rad: self.pitch_filter.output(&state.pitch_filter),
+            pitch_rate_radps: self.pitch_filter.rate(&state.pitch_filter),
         }
     }
 

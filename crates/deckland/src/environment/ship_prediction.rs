@@ -17,23 +17,65 @@
 //! state known: the `oracle`) only the second term is left: the physics floor of
 //! prediction, docs/model.md §3.6.
 
-use super::ship::{
-    shaping_filter_companion, unit_intensity_state_covariance, ShipMotion, ShipMotionState,
-    HEAVE_FILTER_GAIN, PITCH_FILTER_GAIN,
-};
+pub use super::ship::Matrix4Array;
+use super::ship::{ShapingFilter, ShipMotion, ShipMotionState};
 use nalgebra::Matrix4;
+use std::sync::Arc;
 
 /// Grid spacing of the tabulated transitions (s).
 const GRID_S: f64 = 0.02;
 
-/// A 4 × 4 matrix as nested arrays (row major).
-pub type Matrix4Array = [[f64; 4]; 4];
+/// One filter's tabulated transitions e^{AT} and unit-intensity stationary covariance.
+#[derive(Debug, Clone, PartialEq)]
+struct FilterTable {
+    filter: ShapingFilter,
+    transitions: Arc<Vec<Matrix4Array>>,
+    stationary: Matrix4Array,
+}
+
+impl FilterTable {
+    fn new(filter: ShapingFilter, count: usize) -> Self {
+        let step = (filter.companion() * GRID_S).exp();
+        let mut transition = Matrix4::identity();
+        let mut transitions = Vec::with_capacity(count);
+        for _ in 0..count {
+            transitions.push(std::array::from_fn(|i| {
+                std::array::from_fn(|j| transition[(i, j)])
+            }));
+            transition *= step;
+        }
+        Self {
+            filter,
+            transitions: Arc::new(transitions),
+            stationary: filter
+                .unit_intensity_state_covariance()
+                .expect("a ShipMotion's filters are checked stable"),
+        }
+    }
+
+    /// Row `row` of e^{AT}, interpolated at the grid position.
+    #[inline]
+    fn row(&self, (index, fraction): (usize, f64), row: usize) -> [f64; 4] {
+        let (r0, r1) = (
+            &self.transitions[index][row],
+            &self.transitions[index + 1][row],
+        );
+        std::array::from_fn(|j| r0[j] + fraction * (r1[j] - r0[j]))
+    }
+
+    /// The unpredictable part of state `i`'s variance after the transition row `row`,
+    /// per unit intensity.
+    #[inline]
+    fn unpredictable(&self, row: &[f64; 4], i: usize) -> f64 {
+        (self.stationary[i][i] - quadratic_form(row, &self.stationary)).max(0.0)
+    }
+}
 
 /// Tabulated transitions e^{AT} of the ship's shaping filters.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ShipMotionPropagator {
-    transitions: Vec<Matrix4Array>,
-    stationary: Matrix4Array,
+    heave: FilterTable,
+    pitch: FilterTable,
 }
 
 /// Predicted heave (m) and pitch (rad).
@@ -132,46 +174,34 @@ fn quadratic_form(row: &[f64; 4], p: &Matrix4Array) -> f64 {
 }
 
 impl ShipMotionPropagator {
-    /// Tabulates the transitions for horizons from 0 to `max_horizon_s` (s); longer
-    /// horizons are clamped to it.
-    pub fn new(max_horizon_s: f64) -> Self {
-        let step = (shaping_filter_companion() * GRID_S).exp();
+    /// Tabulates the transitions of `ship`'s filters for horizons from 0 to
+    /// `max_horizon_s` (s); longer horizons are clamped to it.
+    pub fn new(ship: &ShipMotion, max_horizon_s: f64) -> Self {
         let count = (max_horizon_s.max(0.0) / GRID_S).ceil() as usize + 2;
-        let mut transition = Matrix4::identity();
-        let mut transitions = Vec::with_capacity(count);
-        for _ in 0..count {
-            transitions.push(std::array::from_fn(|i| {
-                std::array::from_fn(|j| transition[(i, j)])
-            }));
-            transition *= step;
-        }
-        Self {
-            transitions,
-            stationary: unit_intensity_state_covariance(),
-        }
+        let heave = FilterTable::new(*ship.heave_filter(), count);
+        let pitch = if ship.pitch_filter().denominator == ship.heave_filter().denominator {
+            // The paper's ship: one table serves both filters.
+            FilterTable {
+                filter: *ship.pitch_filter(),
+                ..heave.clone()
+            }
+        } else {
+            FilterTable::new(*ship.pitch_filter(), count)
+        };
+        Self { heave, pitch }
     }
 
     /// The longest horizon tabulated (s).
     pub fn max_horizon_s(&self) -> f64 {
-        (self.transitions.len() - 2) as f64 * GRID_S
+        (self.heave.transitions.len() - 2) as f64 * GRID_S
     }
 
     /// The grid index and the fraction towards the next point of `horizon_s`.
     #[inline]
     fn grid(&self, horizon_s: f64) -> (usize, f64) {
-        let position = (horizon_s.max(0.0) / GRID_S).min((self.transitions.len() - 2) as f64);
+        let position = (horizon_s.max(0.0) / GRID_S).min((self.heave.transitions.len() - 2) as f64);
         let index = position as usize;
         (index, position - index as f64)
-    }
-
-    /// Row `row` of e^{AT}, interpolated at the grid position.
-    #[inline]
-    fn row(&self, (index, fraction): (usize, f64), row: usize) -> [f64; 4] {
-        let (r0, r1) = (
-            &self.transitions[index][row],
-            &self.transitions[index + 1][row],
-        );
-        std::array::from_fn(|j| r0[j] + fraction * (r1[j] - r0[j]))
     }
 
     /// The expected heave and pitch `horizon_s` seconds after `state` (zero when the ship
@@ -187,18 +217,20 @@ impl ShipMotionPropagator {
             return PredictedShipMotion::default();
         }
         let (index, fraction) = self.grid(horizon_s);
-        let row = |row: usize, z: &[f64; 4]| {
+        let output = |table: &FilterTable, z: &[f64; 4]| {
+            let row = table.filter.output_state;
             let (r0, r1) = (
-                &self.transitions[index][row],
-                &self.transitions[index + 1][row],
+                &table.transitions[index][row],
+                &table.transitions[index + 1][row],
             );
-            (0..4)
-                .map(|j| (r0[j] + fraction * (r1[j] - r0[j])) * z[j])
-                .sum::<f64>()
+            table.filter.gain
+                * (0..4)
+                    .map(|j| (r0[j] + fraction * (r1[j] - r0[j])) * z[j])
+                    .sum::<f64>()
         };
         PredictedShipMotion {
-            heave_m: HEAVE_FILTER_GAIN * row(0, &state.heave_filter),
-            pitch_rad: PITCH_FILTER_GAIN * row(2, &state.pitch_filter),
+            heave_m: output(&self.heave, &state.heave_filter),
+            pitch_rad: output(&self.pitch, &state.pitch_filter),
         }
     }
 
@@ -216,12 +248,15 @@ impl ShipMotionPropagator {
         }
         let grid = self.grid(lead_s);
         let dot = |r: &[f64; 4], z: &[f64; 4]| (0..4).map(|j| r[j] * z[j]).sum::<f64>();
+        let value = |table: &FilterTable, z: &[f64; 4], derivative: usize| {
+            table.filter.gain * dot(&table.row(grid, table.filter.output_state + derivative), z)
+        };
         let (zh, zp) = (&estimate.mean.heave_filter, &estimate.mean.pitch_filter);
         ShipMotionForecast {
-            heave_m: HEAVE_FILTER_GAIN * dot(&self.row(grid, 0), zh),
-            heave_rate_mps: HEAVE_FILTER_GAIN * dot(&self.row(grid, 1), zh),
-            pitch_rad: PITCH_FILTER_GAIN * dot(&self.row(grid, 2), zp),
-            pitch_rate_radps: PITCH_FILTER_GAIN * dot(&self.row(grid, 3), zp),
+            heave_m: value(&self.heave, zh, 0),
+            heave_rate_mps: value(&self.heave, zh, 1),
+            pitch_rad: value(&self.pitch, zp, 0),
+            pitch_rate_radps: value(&self.pitch, zp, 1),
             ..ShipMotionForecast::default()
         }
     }
@@ -239,22 +274,37 @@ impl ShipMotionPropagator {
         }
         let grid = self.grid(lead_s);
         let dot = |r: &[f64; 4], z: &[f64; 4]| (0..4).map(|j| r[j] * z[j]).sum::<f64>();
-        let rows: [[f64; 4]; 4] = std::array::from_fn(|i| self.row(grid, i));
-        let (zh, zp) = (&estimate.mean.heave_filter, &estimate.mean.pitch_filter);
-        let unpredictable = |row: &[f64; 4], i: usize| {
-            (self.stationary[i][i] - quadratic_form(row, &self.stationary)).max(0.0)
+        // Each motion's output and rate rows of e^{AT}, its value, rate and error variance.
+        let motion = |table: &FilterTable, z: &[f64; 4], covariance, intensity: f64| {
+            let k = table.filter.output_state;
+            let (row, rate_row) = (table.row(grid, k), table.row(grid, k + 1));
+            let gain = table.filter.gain;
+            (
+                gain * dot(&row, z),
+                gain * dot(&rate_row, z),
+                gain.powi(2)
+                    * (quadratic_form(&row, covariance) + intensity * table.unpredictable(&row, k)),
+            )
         };
+        let (heave_m, heave_rate_mps, heave_variance_m2) = motion(
+            &self.heave,
+            &estimate.mean.heave_filter,
+            &estimate.heave_covariance,
+            ship.heave_noise_intensity(),
+        );
+        let (pitch_rad, pitch_rate_radps, pitch_variance_rad2) = motion(
+            &self.pitch,
+            &estimate.mean.pitch_filter,
+            &estimate.pitch_covariance,
+            ship.pitch_noise_intensity(),
+        );
         ShipMotionForecast {
-            heave_m: HEAVE_FILTER_GAIN * dot(&rows[0], zh),
-            heave_rate_mps: HEAVE_FILTER_GAIN * dot(&rows[1], zh),
-            pitch_rad: PITCH_FILTER_GAIN * dot(&rows[2], zp),
-            pitch_rate_radps: PITCH_FILTER_GAIN * dot(&rows[3], zp),
-            heave_variance_m2: HEAVE_FILTER_GAIN.powi(2)
-                * (quadratic_form(&rows[0], &estimate.heave_covariance)
-                    + ship.heave_noise_intensity() * unpredictable(&rows[0], 0)),
-            pitch_variance_rad2: PITCH_FILTER_GAIN.powi(2)
-                * (quadratic_form(&rows[2], &estimate.pitch_covariance)
-                    + ship.pitch_noise_intensity() * unpredictable(&rows[2], 2)),
+            heave_m,
+            heave_rate_mps,
+            pitch_rad,
+            pitch_rate_radps,
+            heave_variance_m2,
+            pitch_variance_rad2,
         }
     }
 }
@@ -310,21 +360,20 @@ impl ShipMotionPropagator {
             return 0.0;
         }
         let grid = self.grid(lead_s);
-        let variance = |i: usize, covariance: &Matrix4Array, intensity: f64| {
-            let row = self.row(grid, i);
-            let unpredictable =
-                (self.stationary[i][i] - quadratic_form(&row, &self.stationary)).max(0.0);
-            quadratic_form(&row, covariance) + intensity * unpredictable
+        // Row k + derivative of e^{AT}: the motion (k) or its rate (k + 1); per unit gain.
+        let variance = |table: &FilterTable, covariance: &Matrix4Array, intensity: f64| {
+            let i = table.filter.output_state + derivative;
+            let row = table.row(grid, i);
+            quadratic_form(&row, covariance) + intensity * table.unpredictable(&row, i)
         };
         let (heave, pitch) = (
-            HEAVE_FILTER_GAIN * HEAVE_FILTER_GAIN,
-            PITCH_FILTER_GAIN * PITCH_FILTER_GAIN,
+            self.heave.filter.gain * self.heave.filter.gain,
+            self.pitch.filter.gain * self.pitch.filter.gain,
         );
         let (qh, qp) = (ship.heave_noise_intensity(), ship.pitch_noise_intensity());
         let arm = lever_arm_m * pitch_rad.cos();
-        // Rows: heave 0, heave rate 1; pitch 2, pitch rate 3.
-        let value = heave * variance(derivative, &estimate.heave_covariance, qh)
-            + arm * arm * pitch * variance(2 + derivative, &estimate.pitch_covariance, qp);
+        let value = heave * variance(&self.heave, &estimate.heave_covariance, qh)
+            + arm * arm * pitch * variance(&self.pitch, &estimate.pitch_covariance, qp);
         value.max(0.0).sqrt()
     }
 }
@@ -332,7 +381,9 @@ impl ShipMotionPropagator {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::environment::ShipMotionParameters;
+    use crate::environment::{
+        unit_intensity_state_covariance, ShipMotionParameters, HEAVE_FILTER_GAIN, PITCH_FILTER_GAIN,
+    };
     use crate::integration::{rk4_step, OdeSystem};
 
     struct Free(ShipMotion);
@@ -353,7 +404,7 @@ mod tests {
             heave_filter: [0.5, -0.2, 0.1, 0.05],
             pitch_filter: [0.3, 0.1, -0.02, 0.04],
         };
-        let predictor = ShipMotionPropagator::new(15.0);
+        let predictor = ShipMotionPropagator::new(&ship, 15.0);
         let system = Free(ship.clone());
         let mut x = state.to_array();
         let dt = 0.001;
@@ -387,7 +438,7 @@ mod tests {
             },
             ..ShipMotionEstimate::default()
         };
-        let predictor = ShipMotionPropagator::new(5.0);
+        let predictor = ShipMotionPropagator::new(&ship, 5.0);
         for lead in [0.0, 0.37, 2.0, 9.0] {
             let full = predictor.forecast(&ship, &estimate, lead);
             let mean = predictor.forecast_mean(&ship, &estimate, lead);
@@ -416,7 +467,7 @@ mod tests {
     #[test]
     fn the_oracles_error_is_the_physics_floor_of_the_specification() {
         let ship = ShipMotion::new(ShipMotionParameters::default()).unwrap();
-        let predictor = ShipMotionPropagator::new(10.0);
+        let predictor = ShipMotionPropagator::new(&ship, 10.0);
         let tan = 3.5_f64.to_radians().tan();
         for (horizon, scatter_m) in [(0.5, 5.3), (1.0, 10.4), (2.0, 14.5), (3.0, 15.5)] {
             let forecast = predictor.forecast(&ship, &ShipMotionEstimate::default(), horizon);
@@ -439,7 +490,7 @@ mod tests {
     #[test]
     fn the_deck_points_uncertainty_matches_the_forecast_and_its_limits() {
         let ship = ShipMotion::new(ShipMotionParameters::default()).unwrap();
-        let predictor = ShipMotionPropagator::new(10.0);
+        let predictor = ShipMotionPropagator::new(&ship, 10.0);
         let estimate = ShipMotionEstimate::default();
         for horizon in [0.0, 0.5, 2.0, 5.0] {
             let forecast = predictor.forecast(&ship, &estimate, horizon);

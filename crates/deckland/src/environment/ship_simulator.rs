@@ -43,18 +43,30 @@ impl ShipMotionSimulator {
         streams: &RandomStreams,
         initial_pitch_centre_x_m: f64,
     ) -> Result<Self, ParameterError> {
-        let model = ShipMotion::new(parameters)?;
+        Ok(Self::with_model(
+            ShipMotion::new(parameters)?,
+            streams,
+            initial_pitch_centre_x_m,
+        ))
+    }
+
+    /// As [`ShipMotionSimulator::new`] for a built model (any ship model's filters).
+    pub fn with_model(
+        model: ShipMotion,
+        streams: &RandomStreams,
+        initial_pitch_centre_x_m: f64,
+    ) -> Self {
         let mut heave_stream = streams.stream(stream_names::SHIP_HEAVE);
         let mut pitch_stream = streams.stream(stream_names::SHIP_PITCH);
         let state = model.stationary_initial_state(&mut heave_stream, &mut pitch_stream);
-        Ok(Self {
+        Self {
             model,
             state,
             time_s: 0.0,
             initial_pitch_centre_x_m,
             heave_stream,
             pitch_stream,
-        })
+        }
     }
 
     /// Advances by `dt` (s, > 0) with one RK4 step, one noise sample per filter held

@@ -90,8 +90,10 @@ pub fn record_environment(
     record: &EnvironmentRecord,
 ) -> Result<Vec<EnvironmentSample>, ExperimentError> {
     let streams = RandomStreams::new(record.seed);
-    let mut ship = ShipMotionSimulator::new(environment.ship, &streams, 0.0)
+    let model = environment
+        .ship_motion()
         .map_err(crate::simulation::SetupError::from)?;
+    let mut ship = ShipMotionSimulator::with_model(model, &streams, 0.0);
     let mut wind = WindModel::new(
         environment.wind,
         environment.ship.forward_speed_mps,

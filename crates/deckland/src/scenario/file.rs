@@ -435,6 +435,32 @@ fn finish_scenario(
         }
     }
 
+    // A ship model that derives keys of `[environment.ship]` (the seaway's RMS) refuses
+    // them written beside it: the file would say one sea and fly another.
+    let model = scenario.environment.ship.model;
+    if let Some(key) = model
+        .derived_keys()
+        .iter()
+        .map(|key| format!("environment.ship.{key}"))
+        .find(|path| in_file(path))
+    {
+        let line = index
+            .keys
+            .iter()
+            .find(|k| k.path == key)
+            .map(|k| line_of(text, k.span.start));
+        return Err(ScenarioError::Structure {
+            file: file_name.to_owned(),
+            line,
+            field: key,
+            message: format!(
+                "set by the ship model `{}`: leave it out (the seaway's spectrum and hull set it; \
+                 change `environment.seaway.significant_wave_height_m` instead)",
+                model.name()
+            ),
+        });
+    }
+
     // A file on the paper's hardware takes the paper's values for what it leaves out.
     let scenario =
         scenario

@@ -14,7 +14,10 @@ use crate::control::{
     ArrivalTimingParameters, DirectLiftParameters, FlightPathParameters, GuidanceParameters,
     SinkRateControllerParameters, SpeedControllerParameters, WaveOffParameters,
 };
-use crate::environment::{DeckGeometry, ShipMotionParameters, WindParameters};
+use crate::environment::seaway::SeawayParameters;
+use crate::environment::{
+    resolved_ship_parameters, DeckGeometry, ShipMotion, ShipMotionParameters, WindParameters,
+};
 use crate::parameters::{Bounds, ParameterError};
 use crate::sensors::{PitchNoiseParameters, ShipMotionSensingParameters};
 use serde::{Deserialize, Serialize};
@@ -45,6 +48,9 @@ pub use template::DEFAULT_SCENARIO_TOML;
 pub struct EnvironmentSection {
     /// Ship heave and pitch (docs/model.md §3.1).
     pub ship: ShipMotionParameters,
+    /// The seaway of the `seaway` ship model (docs/model.md §12): read only when
+    /// `ship.model = "seaway"`.
+    pub seaway: SeawayParameters,
     /// Deck geometry (docs/model.md §2.7).
     pub deck: DeckGeometry,
     /// Wind and air wake (docs/model.md §3.2).
@@ -57,9 +63,22 @@ pub struct EnvironmentSection {
 }
 
 impl EnvironmentSection {
+    /// The ship motion this environment's ship model builds (its `ship` and `seaway`).
+    pub fn ship_motion(&self) -> Result<ShipMotion, ParameterError> {
+        crate::environment::ship_motion(&self.ship, &self.seaway)
+    }
+
+    /// The ship parameters as flown: the RMS of heave, pitch and roll the model gives.
+    pub fn resolved_ship(&self) -> Result<ShipMotionParameters, ParameterError> {
+        Ok(resolved_ship_parameters(&self.ship, &self.seaway)?.0)
+    }
+
     /// Checks every part of the environment.
     pub fn validate(&self) -> Result<(), ParameterError> {
         self.ship.validate()?;
+        crate::environment::validate_seaway(&self.seaway)?;
+        // The ship model builds (for the seaway: the fit) or names the key it cannot.
+        resolved_ship_parameters(&self.ship, &self.seaway)?;
         self.deck.validate()?;
         self.wind.validate()?;
         self.pitch_noise.validate()?;

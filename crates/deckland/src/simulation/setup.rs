@@ -197,7 +197,7 @@ impl EnvironmentModels {
     /// The models of `scenario`'s environment on `streams`.
     fn new(scenario: &Scenario, streams: &RandomStreams) -> Result<Self, SetupError> {
         let env = &scenario.environment;
-        let ship = ShipMotion::new(env.ship)?;
+        let ship = env.ship_motion()?;
         let mut ship_heave = streams.stream(stream_names::SHIP_HEAVE);
         let mut ship_pitch = streams.stream(stream_names::SHIP_PITCH);
         let ship_state = ship.stationary_initial_state(&mut ship_heave, &mut ship_pitch);
@@ -358,10 +358,10 @@ fn lay_out_blocks(
 ) -> Result<LaidOutBlocks, SetupError> {
     // Direct lift control flies the glide path: only in an approach, its close-in gain
     // scheduled on the sea state.
+    let ship = scenario.environment.resolved_ship()?;
     let direct_lift = (scenario.mission == Mission::Approach
         && scenario.control.direct_lift.enabled)
         .then(|| {
-            let ship = &scenario.environment.ship;
             scenario.control.direct_lift.for_sea(
                 ship.deck_point_height_rms_m(
                     scenario
@@ -444,6 +444,12 @@ fn start(
         &blocks.layout,
         &mut initial,
     );
+    let arrival_timing = ArrivalTimingBlock::new(
+        scenario.control.arrival_timing,
+        &environment.ship,
+        airspeed,
+        env.ship_sensing.latency_s,
+    );
     let system = ClosedLoop {
         layout: blocks.layout,
         plant: blocks.plant,
@@ -468,11 +474,7 @@ fn start(
         direct_lift: blocks.direct_lift,
         user_blocks: blocks.user_blocks,
         lateral,
-        arrival_timing: ArrivalTimingBlock::new(
-            scenario.control.arrival_timing,
-            airspeed,
-            env.ship_sensing.latency_s,
-        ),
+        arrival_timing,
     };
     Setup {
         system,

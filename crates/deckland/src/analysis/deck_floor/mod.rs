@@ -25,10 +25,7 @@
 //!   rate of strikes needs.
 
 use crate::control::risk::{normal_cdf, normal_upper_quantile};
-use crate::environment::{
-    unit_intensity_state_covariance, ShipMotion, ShipMotionEstimate, ShipMotionPropagator,
-    HEAVE_FILTER_GAIN, PITCH_FILTER_GAIN,
-};
+use crate::environment::{ShapingFilter, ShipMotion, ShipMotionEstimate, ShipMotionPropagator};
 
 /// The physics floor of a deck point's forecast at one horizon.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -45,7 +42,7 @@ pub struct DeckPointFloor {
 /// pitch centre (the landing point is 81 m aft, the ramp 141 m; docs/model.md §2.7), the
 /// ship level: what the oracle's forecast from the ship's exact state leaves.
 pub fn deck_point_floor(ship: &ShipMotion, lever_arm_m: f64, horizon_s: f64) -> DeckPointFloor {
-    let uncertainty = ShipMotionPropagator::new(horizon_s).deck_point_uncertainty(
+    let uncertainty = ShipMotionPropagator::new(ship, horizon_s).deck_point_uncertainty(
         ship,
         &ShipMotionEstimate::default(),
         horizon_s,
@@ -66,12 +63,19 @@ pub fn deck_point_stationary_sigma(ship: &ShipMotion, lever_arm_m: f64) -> (f64,
     if !ship.parameters().enabled {
         return (0.0, 0.0);
     }
-    let p = unit_intensity_state_covariance();
-    let heave = HEAVE_FILTER_GAIN.powi(2) * ship.heave_noise_intensity();
-    let pitch = (lever_arm_m * PITCH_FILTER_GAIN).powi(2) * ship.pitch_noise_intensity();
+    let (hf, pf) = (ship.heave_filter(), ship.pitch_filter());
+    let unit = |filter: &ShapingFilter| {
+        filter
+            .unit_intensity_state_covariance()
+            .expect("a ShipMotion's filters are checked stable")
+    };
+    let (ph, pp) = (unit(hf), unit(pf));
+    let (kh, kp) = (hf.output_state, pf.output_state);
+    let heave = hf.gain.powi(2) * ship.heave_noise_intensity();
+    let pitch = (lever_arm_m * pf.gain).powi(2) * ship.pitch_noise_intensity();
     (
-        (heave * p[0][0] + pitch * p[2][2]).sqrt(),
-        (heave * p[1][1] + pitch * p[3][3]).sqrt(),
+        (heave * ph[kh][kh] + pitch * pp[kp][kp]).sqrt(),
+        (heave * ph[kh + 1][kh + 1] + pitch * pp[kp + 1][kp + 1]).sqrt(),
     )
 }
 

@@ -1,5 +1,5 @@
 use super::*;
-use crate::environment::{ShipMotionParameters, SHAPING_FILTER_DENOMINATOR};
+use crate::environment::{ShipMotionParameters, PITCH_FILTER_GAIN, SHAPING_FILTER_DENOMINATOR};
 use crate::random::RandomStreams;
 
 /// The landing point's and the ramp's lever arms aft of the pitch centre (m,

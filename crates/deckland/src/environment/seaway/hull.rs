@@ -57,7 +57,9 @@ pub struct HullParameters {
     /// Displacement (metric tonnes); default 100 000, Nimitz class full load about
     /// 100 000–104 600 long tons (same public figures), rounded.
     pub displacement_t: f64,
-    /// Ship speed U (m/s); default 15 kn (docs/model.md §12).
+    /// Ship speed U (m/s); default 15 kn (docs/model.md §12). Not a scenario key: the
+    /// ship model sets it to `environment.ship.forward_speed_mps`.
+    #[serde(skip)]
     pub speed_mps: f64,
     /// Natural period of roll T_φ (s); default 22, an assumption (docs/model.md §12: 20–25 s).
     pub roll_natural_period_s: f64,

@@ -3,9 +3,10 @@
 //!
 //! The ship's heave and pitch are the outputs of two independent shaping filters, each
 //! ż = A z + B n in controllable canonical form with white noise n of intensity q
-//! ([`crate::environment::ShipMotion`]). The ship's inertial navigation measures heave
-//! 1.21·z₁ and heave rate 1.21·z₂ of the heave filter, pitch 0.773·z₃ and pitch rate
-//! 0.773·z₄ of the pitch filter, with white noise, at its sample rate; the samples
+//! ([`crate::environment::ShipMotion`]). The ship's inertial navigation measures each
+//! motion g·z_k and its rate g·z_{k+1} ([`crate::environment::ShapingFilter`]; the paper's
+//! heave 1.21·z₁ and 1.21·z₂, pitch 0.773·z₃ and 0.773·z₄), with white noise, at its
+//! sample rate; the samples
 //! arrive a latency later ([`crate::sensors::ShipMotionSensor`]). So each filter has its
 //! own Kalman filter with two measurements (Gelb, *Applied Optimal Estimation*, §4.2,
 //! Table 4.2-1, the discrete filter):
@@ -30,8 +31,7 @@
 use nalgebra::{Cholesky, Matrix2, Matrix2x4, Matrix4, Vector2, Vector4};
 
 use crate::environment::{
-    shaping_filter_companion, unit_intensity_state_covariance, Matrix4Array, ShipMotion,
-    ShipMotionEstimate, ShipMotionState, HEAVE_FILTER_GAIN, PITCH_FILTER_GAIN,
+    Matrix4Array, ShapingFilter, ShipMotion, ShipMotionEstimate, ShipMotionState,
 };
 use crate::random::NoiseStream;
 use crate::sensors::{ShipMotionMeasurement, ShipMotionSensingParameters};
@@ -48,30 +48,55 @@ struct Channel {
     intensity: f64,
     observation: Matrix2x4<f64>,
     measurement_covariance: Matrix2<f64>,
+    /// The filter's companion matrix A and unit-intensity stationary covariance P∞.
+    companion: Matrix4<f64>,
+    stationary: Matrix4<f64>,
+    /// The transitions of the intervals met so far (on a fixed grid there are one or two).
+    transitions: Vec<Transition>,
 }
 
 impl Channel {
-    /// A channel observing z[first] and z[first + 1] times `gain`, with noise σ.
-    fn new(
-        intensity: f64,
-        stationary: &Matrix4<f64>,
-        first: usize,
-        gain: f64,
-        sigmas: [f64; 2],
-    ) -> Self {
+    /// A channel of `filter` observing its motion and rate (states k and k + 1 times
+    /// the gain), with noise σ.
+    fn new(filter: &ShapingFilter, intensity: f64, sigmas: [f64; 2]) -> Self {
+        let p = filter
+            .unit_intensity_state_covariance()
+            .expect("a ShipMotion's filters are checked stable");
+        let stationary = Matrix4::from_fn(|i, j| p[i][j]);
+        let first = filter.output_state;
         let mut observation = Matrix2x4::zeros();
-        observation[(0, first)] = gain;
-        observation[(1, first + 1)] = gain;
+        observation[(0, first)] = filter.gain;
+        observation[(1, first + 1)] = filter.gain;
         Self {
             mean: Vector4::zeros(),
             covariance: stationary * intensity,
             intensity,
             observation,
             measurement_covariance: Matrix2::new(sigmas[0].powi(2), 0.0, 0.0, sigmas[1].powi(2)),
+            companion: filter.companion(),
+            stationary,
+            transitions: Vec::with_capacity(2),
         }
     }
 
-    fn propagate(&mut self, step: &Transition) {
+    /// Propagates over `interval_s` (> 0) with its (cached) transition.
+    fn propagate_over(&mut self, interval_s: f64) {
+        let index = match self
+            .transitions
+            .iter()
+            .position(|t| (t.interval_s - interval_s).abs() <= 1e-12)
+        {
+            Some(index) => index,
+            None => {
+                self.transitions.push(Transition::new(
+                    interval_s,
+                    &self.companion,
+                    &self.stationary,
+                ));
+                self.transitions.len() - 1
+            }
+        };
+        let step = &self.transitions[index];
         self.mean = step.transition * self.mean;
         self.covariance = step.transition * self.covariance * step.transition.transpose()
             + step.unit_noise * self.intensity;
@@ -125,15 +150,9 @@ impl Channel {
     /// estimate of a converged filter are jointly Gaussian, e ⊥ ẑ, so cov(z, e) = P).
     /// Draws four numbers from `stream`; keeps the cold start if P∞ is singular (no
     /// motion).
-    fn start_converged(
-        &mut self,
-        prior: Matrix4<f64>,
-        stationary: &Matrix4<f64>,
-        truth: &[f64; 4],
-        stream: &mut NoiseStream,
-    ) {
+    fn start_converged(&mut self, prior: Matrix4<f64>, truth: &[f64; 4], stream: &mut NoiseStream) {
         let draws = Vector4::from_fn(|_, _| stream.standard_normal());
-        let Some(stationary_inverse) = (stationary * self.intensity).try_inverse() else {
+        let Some(stationary_inverse) = (self.stationary * self.intensity).try_inverse() else {
             return;
         };
         let z = Vector4::from_column_slice(truth);
@@ -189,10 +208,6 @@ pub struct DeckMotionEstimator {
     pitch: Channel,
     /// The time the estimate stands for: the last measurement's (s).
     time_s: f64,
-    companion: Matrix4<f64>,
-    stationary: Matrix4<f64>,
-    /// The transitions of the intervals met so far (on a fixed grid there are one or two).
-    transitions: Vec<Transition>,
     updates: u64,
 }
 
@@ -200,8 +215,6 @@ impl DeckMotionEstimator {
     /// A filter for the ship model `ship` measured by a sensor with `sensing`, knowing
     /// nothing at t = 0 but the stationary distribution.
     pub fn new(ship: &ShipMotion, sensing: &ShipMotionSensingParameters) -> Self {
-        let p = unit_intensity_state_covariance();
-        let stationary = Matrix4::from_fn(|i, j| p[i][j]);
         let [heave_sigma, heave_rate_sigma, pitch_sigma, pitch_rate_sigma] = sensing.sigmas_si();
         let (heave_intensity, pitch_intensity) = if ship.parameters().enabled {
             (ship.heave_noise_intensity(), ship.pitch_noise_intensity())
@@ -210,23 +223,16 @@ impl DeckMotionEstimator {
         };
         Self {
             heave: Channel::new(
+                ship.heave_filter(),
                 heave_intensity,
-                &stationary,
-                0,
-                HEAVE_FILTER_GAIN,
                 [heave_sigma, heave_rate_sigma],
             ),
             pitch: Channel::new(
+                ship.pitch_filter(),
                 pitch_intensity,
-                &stationary,
-                2,
-                PITCH_FILTER_GAIN,
                 [pitch_sigma, pitch_rate_sigma],
             ),
             time_s: 0.0,
-            companion: shaping_filter_companion(),
-            stationary,
-            transitions: Vec::with_capacity(4),
             updates: 0,
         }
     }
@@ -245,11 +251,6 @@ impl DeckMotionEstimator {
         stream: &mut NoiseStream,
     ) -> Self {
         let mut filter = Self::new(ship, sensing);
-        let step = Transition::new(
-            1.0 / sensing.sample_rate_hz,
-            &filter.companion,
-            &filter.stationary,
-        );
         for (channel, state) in [
             (&mut filter.heave, &truth.heave_filter),
             (&mut filter.pitch, &truth.pitch_filter),
@@ -257,8 +258,13 @@ impl DeckMotionEstimator {
             if channel.intensity <= 0.0 {
                 continue; // no motion: nothing to have tracked
             }
+            let step = Transition::new(
+                1.0 / sensing.sample_rate_hz,
+                &channel.companion,
+                &channel.stationary,
+            );
             if let Some(prior) = channel.steady_state_prior(&step) {
-                channel.start_converged(prior, &filter.stationary, state, stream);
+                channel.start_converged(prior, state, stream);
             }
         }
         filter
@@ -278,24 +284,8 @@ impl DeckMotionEstimator {
     pub fn update(&mut self, measurement: &ShipMotionMeasurement) {
         let interval_s = (measurement.time_s - self.time_s).max(0.0);
         if interval_s > 0.0 {
-            let index = match self
-                .transitions
-                .iter()
-                .position(|t| (t.interval_s - interval_s).abs() <= 1e-12)
-            {
-                Some(index) => index,
-                None => {
-                    self.transitions.push(Transition::new(
-                        interval_s,
-                        &self.companion,
-                        &self.stationary,
-                    ));
-                    self.transitions.len() - 1
-                }
-            };
-            let step = &self.transitions[index];
-            self.heave.propagate(step);
-            self.pitch.propagate(step);
+            self.heave.propagate_over(interval_s);
+            self.pitch.propagate_over(interval_s);
         }
         self.heave.update(Vector2::new(
             measurement.heave_m,

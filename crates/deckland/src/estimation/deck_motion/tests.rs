@@ -57,11 +57,11 @@ fn steady_state_covariance_matches_an_independent_riccati_solution() {
 fn the_doubling_solution_is_scipys_riccati_solution() {
     let ship = ShipMotion::new(ShipMotionParameters::default()).unwrap();
     let filter = DeckMotionEstimator::new(&ship, &ShipMotionSensingParameters::default());
-    let step = Transition::new(0.02, &filter.companion, &filter.stationary);
     for (name, channel, reference) in [
         ("heave", &filter.heave, HEAVE_POSTERIOR_DIAGONAL),
         ("pitch", &filter.pitch, PITCH_POSTERIOR_DIAGONAL),
     ] {
+        let step = Transition::new(0.02, &channel.companion, &channel.stationary);
         let mut posterior = channel.clone();
         posterior.covariance = channel.steady_state_prior(&step).unwrap();
         posterior.update(Vector2::zeros());
@@ -145,7 +145,7 @@ fn actual_estimation_error_matches_the_filters_covariance() {
     let mut ship = ShipMotionSimulator::new(parameters, &streams, 0.0).unwrap();
     let mut sensor = ShipMotionSensor::new(sensing, &streams).unwrap();
     let mut estimator = DeckMotionEstimator::new(ship.model(), &sensing);
-    let predictor = ShipMotionPropagator::new(5.0);
+    let predictor = ShipMotionPropagator::new(ship.model(), 5.0);
     let dt = 0.002;
     // Errors of the heave (m) and pitch (rad) estimates, and of their 2-s predictions.
     let (mut heave, mut pitch, mut claimed_heave, mut claimed_pitch, mut n) =

@@ -19,16 +19,18 @@ pub(crate) struct ArrivalTimingBlock {
 }
 
 impl ArrivalTimingBlock {
-    /// The block for `parameters` about the approach airspeed `airspeed_mps`, with the
+    /// The block for `parameters` and `ship`'s filters about the approach airspeed `airspeed_mps`, with the
     /// ship data link's `latency_s`; `None` when it is off.
     pub(crate) fn new(
         parameters: ArrivalTimingParameters,
+        ship: &ShipMotion,
         airspeed_mps: f64,
         latency_s: f64,
     ) -> Option<Self> {
         parameters.enabled().then(|| Self {
             timing: ArrivalTiming::new(parameters),
             propagator: ShipMotionPropagator::new(
+                ship,
                 parameters.start_time_to_go_s + parameters.window_s + latency_s + 1.0,
             ),
             nominal_airspeed_mps: airspeed_mps,

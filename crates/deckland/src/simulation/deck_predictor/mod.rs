@@ -180,7 +180,7 @@ impl BuiltDeckPredictor {
         Ok(match flight_path.deck_motion_predictor {
             DeckPredictorKind::Oracle => Self::Oracle(
                 oracle::Oracle::new(
-                    ShipMotionPropagator::new(horizon_s),
+                    ShipMotionPropagator::new(ship, horizon_s),
                     (flight_path.ramp_aware || scenario.control.wave_off.enabled).then(|| {
                         AnchorShaping::new(flight_path.anchor_filter_frequency_radps)
                             .with_uncertainty(uncertainty)
@@ -202,7 +202,7 @@ impl BuiltDeckPredictor {
                             ),
                             EstimatorStart::Cold => DeckMotionEstimator::new(ship, &sensing),
                         },
-                        ShipMotionPropagator::new(horizon_s + sensing.latency_s + 1.0),
+                        ShipMotionPropagator::new(ship, horizon_s + sensing.latency_s + 1.0),
                         flight_path.anchor_filter_frequency_radps,
                     )
                     .with_uncertainty(uncertainty)

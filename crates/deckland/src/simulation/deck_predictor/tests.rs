@@ -216,7 +216,7 @@ fn the_series_forecast_is_the_librarys_within_rounding() {
     use crate::environment::{ShipMotionParameters, ShipMotionState};
     let ship = ShipMotion::new(ShipMotionParameters::default()).expect("valid");
     let deck = DeckGeometry::default();
-    let predictor = ShipMotionPropagator::new(12.0);
+    let predictor = ShipMotionPropagator::new(&ship, 12.0);
     let streams = RandomStreams::new(5);
     let (mut heave, mut pitch) = (
         streams.stream(stream_names::SHIP_HEAVE),

@@ -100,7 +100,7 @@ pub(crate) fn build(
     let wind = steady_wind(scenario);
     let trim = crab_trim(scenario, aircraft, flight_path_angle_rad, &wind, drift)?;
     let (roll, yaw) = built_laws(scenario, aircraft, &trim)?;
-    let ship = LateralShipMotion::new(&env.ship)?;
+    let ship = LateralShipMotion::new(&env.resolved_ship()?)?;
     let mut ship_streams = LateralShipStreams::new(streams);
     let ship_state = ship.stationary_initial_state(&mut ship_streams);
     let (lineup, heading_hold) = lineup_and_heading_hold(scenario, aircraft, &trim)?;

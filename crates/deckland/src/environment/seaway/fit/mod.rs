@@ -197,7 +197,7 @@ impl ResonantSection {
     }
 
     /// Coefficients (d₀, d₁, d₂, d₃) of (s² + 2ζω₀s + ω₀²)² = s⁴ + d₃s³ + d₂s² + d₁s + d₀.
-    fn denominator(&self) -> [f64; 4] {
+    pub fn denominator(&self) -> [f64; 4] {
         let (w0, zeta) = (self.centre_frequency_radps, self.damping_ratio);
         [
             w0.powi(4),
@@ -375,7 +375,38 @@ impl SeawayModel {
     /// Fits heave, pitch and roll for these parameters; refuses invalid parameters and a
     /// motion with no energy, naming the key or motion.
     pub fn fit(parameters: &SeawayParameters) -> Result<Self, SeawayError> {
-        let fit = |motion| fit_motion(&motion_target(parameters, motion)?, parameters);
+        Self::fit_with(parameters, 2)
+    }
+
+    /// As [`SeawayModel::fit`] with one section per motion (4 states each): the ship that
+    /// a landing simulation flies, whose Kalman estimator and forecast use the same
+    /// 4-state canonical filters as the paper's ship (docs/model.md §12).
+    pub fn fit_single_section(parameters: &SeawayParameters) -> Result<Self, SeawayError> {
+        Self::fit_with(parameters, 1)
+    }
+
+    /// One motion's model with at most `max_sections` sections (1 or 2); refuses a motion
+    /// with no energy ([`SeawayError::NoEnergy`]).
+    pub fn fit_motion(
+        parameters: &SeawayParameters,
+        motion: Motion,
+        max_sections: usize,
+    ) -> Result<MotionModel, SeawayError> {
+        fit_motion(
+            &motion_target(parameters, motion)?,
+            parameters,
+            max_sections,
+        )
+    }
+
+    fn fit_with(parameters: &SeawayParameters, max_sections: usize) -> Result<Self, SeawayError> {
+        let fit = |motion| {
+            fit_motion(
+                &motion_target(parameters, motion)?,
+                parameters,
+                max_sections,
+            )
+        };
         Ok(Self {
             parameters: *parameters,
             heave: fit(Motion::Heave)?,
@@ -394,6 +425,7 @@ impl SeawayModel {
 fn fit_motion(
     target: &MotionTarget,
     parameters: &SeawayParameters,
+    max_sections: usize,
 ) -> Result<MotionModel, SeawayError> {
     let motion = target.motion;
     let target_variance = target.variance();
@@ -408,7 +440,8 @@ fn fit_motion(
         motion: motion.name(),
         reason: reason.to_owned(),
     };
-    let sections = least_squares_sections(target).ok_or_else(|| failed("no candidate fits"))?;
+    let sections =
+        least_squares_sections(target, max_sections).ok_or_else(|| failed("no candidate fits"))?;
     let least_squares = MarkovModel::from_sections(sections.clone());
     let [ls_variance, ..] = least_squares
         .variances()
@@ -443,8 +476,12 @@ fn fit_motion(
     Ok(MotionModel { model, report })
 }
 
-/// The best one or two sections by non-negative least squares over the candidate grid.
-fn least_squares_sections(target: &MotionTarget) -> Option<Vec<ResonantSection>> {
+/// The best one or (`max_sections` ≥ 2) two sections by non-negative least squares over
+/// the candidate grid.
+fn least_squares_sections(
+    target: &MotionTarget,
+    max_sections: usize,
+) -> Option<Vec<ResonantSection>> {
     let (low, high) = (target.quantile(0.002) / 1.5, target.quantile(0.998) * 1.5);
     let points: Vec<f64> = (0..FIT_POINTS)
         .map(|i| low + (high - low) * (i as f64 + 0.5) / FIT_POINTS as f64)
@@ -483,7 +520,12 @@ fn least_squares_sections(target: &MotionTarget) -> Option<Vec<ResonantSection>>
             let weight = projections[i] / gram_diagonal[i];
             consider(weight * projections[i], vec![(i, weight)]);
         }
-        for j in (i + 1)..candidates.len() {
+        let pairs = if max_sections >= 2 {
+            i + 1
+        } else {
+            candidates.len()
+        };
+        for j in pairs..candidates.len() {
             let g_ij = dot(&basis[i], &basis[j]);
             let determinant = gram_diagonal[i] * gram_diagonal[j] - g_ij * g_ij;
             if determinant <= 1e-9 * gram_diagonal[i] * gram_diagonal[j] {
