@@ -7,7 +7,7 @@ this package calls it directly, so every number is the CLI's, bit for bit.
   ready for ``control.ss``); :func:`trim_six_dof` and :func:`linearize_six_dof` the same
   for the 6-DOF aircraft, in sideslip or a crosswind, with the lateral matrices and modes.
 - :class:`Scenario`: every parameter of a run, read and set by dotted path
-  (``s["environment.ship.heave_rms_m"] = 1.0``); a bad value raises ``ValueError``.
+  (``s["environment.seaway.significant_wave_height_m"] = 5.0``); a bad value raises ``ValueError``.
 - :func:`fly`: one approach, with its summary and time series (a pandas DataFrame when
   pandas is installed, else a dict of numpy arrays; the columns of ``approach.csv``).
 - :func:`campaign`: many approaches in parallel (Monte Carlo), the rows of ``runs.csv``;

@@ -63,8 +63,9 @@ REWARDS: Dict[str, Any] = {
 #: scenario: the 3-DOF aircraft behind a stationary ship. The default scenario is the 3-D
 #: approach (6-DOF, the ship at 15 kn); this environment stays the longitudinal one, bit
 #: for bit, with its published observation, reward and speed figures
-#: (``docs/rl-environment.md``, "Scenario").
+#: (``docs/rl-environment.md``, "Scenario"), in the paper's sea (the filter ship).
 LONGITUDINAL_SETTINGS: Dict[str, Any] = {
+    "environment.ship.model": "filters",
     "aircraft.model": "3dof",
     "environment.ship.forward_speed_mps": 0.0,
 }

@@ -57,6 +57,7 @@ REWARDS_3D: Dict[str, Any] = dict(REWARDS, off_centre=-100.0)
 
 #: The crosswind scenario's settings over the default scenario (``scenarios/crosswind.toml``).
 CROSSWIND_SETTINGS: Dict[str, Any] = {
+    "environment.ship.model": "filters",
     "aircraft.model": "6dof",
     "approach.three_dimensional": True,
     "environment.ship.heave_rms_m": 1.0,

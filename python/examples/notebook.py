@@ -88,15 +88,16 @@ if HAVE["matplotlib"]:
 
 # %% [markdown]
 # ## Change the scenario by dotted path
-# A heavier sea; a bad value raises `ValueError` naming the key, as the CLI does.
+# A heavier sea (sea state 6 of the carrier in a seaway); a bad value raises `ValueError`
+# naming the key, as the CLI does.
 
 # %%
 heavy = scenario.copy()
-heavy["environment.ship.heave_rms_m"] = 3.0
-heavy["environment.ship.pitch_rms_deg"] = 2.5
+heavy["environment.seaway.significant_wave_height_m"] = 5.0
+heavy["environment.seaway.peak_period_s"] = 12.4
 print(deckland.fly(heavy, seed=1))
 try:
-    heavy["environment.ship.heave_rms_m"] = -1.0
+    heavy["environment.seaway.significant_wave_height_m"] = -1.0
 except ValueError as error:
     print("ValueError:", error)
 

@@ -327,6 +327,19 @@ fn check_tree(tree: toml::Value, path: &str, tag: Option<&str>) -> PyResult<Rust
         };
         value_error(format!("field `{field}`: {message}"))
     })?;
+    // A key the ship model sets itself (the seaway's RMS) cannot be set: as the file
+    // loader refuses it written beside the model.
+    let model = scenario.environment.ship.model;
+    if let Some(key) = path.strip_prefix("environment.ship.") {
+        if model.derived_keys().contains(&key) {
+            return Err(value_error(format!(
+                "field `{path}`: set by the ship model `{}`: change \
+                 `environment.seaway.significant_wave_height_m` instead, or set \
+                 `environment.ship.model` = \"filters\" first",
+                model.name()
+            )));
+        }
+    }
     // serde ignores extra keys beside the tag of a unit variant: as the file loader.
     if let (Mission::Approach, Some(extra)) = (scenario.mission, approach_extras) {
         return Err(value_error(format!(

@@ -11,14 +11,14 @@ import deckland
 
 # (dotted path, bad value, the same value as written in a TOML file)
 OUT_OF_RANGE = [
-    ("environment.ship.heave_rms_m", -1.0, "[environment.ship]\nheave_rms_m = -1.0\n"),
+    ("environment.ship.yaw_rms_deg", -1.0, "[environment.ship]\nyaw_rms_deg = -1.0\n"),
     ("approach.start_range_m", 1.0, "[approach]\nstart_range_m = 1.0\n"),
     ("time_step_s", 0.5, "time_step_s = 0.5\n"),
     ("control.flight_path.glide_slope_deg", math.inf, "[control.flight_path]\nglide_slope_deg = inf\n"),
 ]
 
 WRONG_TYPE = [
-    ("environment.ship.heave_rms_m", "abc", "[environment.ship]\nheave_rms_m = \"abc\"\n"),
+    ("environment.ship.yaw_rms_deg", "abc", "[environment.ship]\nyaw_rms_deg = \"abc\"\n"),
     ("seed", 1.5, "seed = 1.5\n"),
     ("environment.ship.enabled", 3, "[environment.ship]\nenabled = 3\n"),
     ("environment.ship.swell", 1.0, "[environment.ship]\nswell = 1.0\n"),

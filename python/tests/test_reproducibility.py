@@ -59,13 +59,13 @@ def test_a_campaign_row_flown_again_is_that_run():
 
 def test_a_pickled_or_copied_scenario_is_the_same_scenario():
     scenario = deckland.Scenario.default()
-    scenario["environment.ship.heave_rms_m"] = 1.25
+    scenario["environment.seaway.significant_wave_height_m"] = 2.5
     scenario.name = "calmer"
     for clone in (pickle.loads(pickle.dumps(scenario)), copy.deepcopy(scenario), scenario.copy()):
         assert clone == scenario and clone.name == "calmer"
         assert deckland.fly(clone, seed=2).summary == deckland.fly(scenario, seed=2).summary
-    clone["environment.ship.heave_rms_m"] = 2.0
-    assert scenario["environment.ship.heave_rms_m"] == 1.25
+    clone["environment.seaway.significant_wave_height_m"] = 3.0
+    assert scenario["environment.seaway.significant_wave_height_m"] == 2.5
 
 
 def deckland_scenario(name):

@@ -9,6 +9,11 @@ import deckland
 
 def test_keys_are_read_and_set_by_dotted_path():
     scenario = deckland.Scenario.default()
+    # The default ship is the carrier in a seaway, which sets its own RMS: the filter
+    # ship's keys are refused until the filters are chosen.
+    with pytest.raises(ValueError, match="environment.ship.heave_rms_m"):
+        scenario["environment.ship.heave_rms_m"] = 1.0
+    scenario["environment.ship.model"] = "filters"
     scenario["environment.ship.heave_rms_m"] = 1.0
     assert scenario["environment.ship.heave_rms_m"] == 1.0
     assert scenario["environment.ship"]["heave_rms_m"] == 1.0

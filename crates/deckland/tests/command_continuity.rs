@@ -20,7 +20,7 @@ use deckland::simulation::Simulation;
 fn over_the_ramp(seed: u64, fixed_margin: bool) -> (f64, f64) {
     let mut scenario = Scenario {
         seed,
-        ..Scenario::default()
+        ..Scenario::papers_sea()
     };
     if fixed_margin {
         // The approach: the fixed 2.5-m margin, no risk-aware clearance.
@@ -108,7 +108,7 @@ fn late_abort_share(seed: u64, rate_per_s: f64) -> (f64, f64) {
     use deckland::simulation::{OuterLoops, Stop};
     let mut scenario = Scenario {
         seed,
-        ..Scenario::default()
+        ..Scenario::papers_sea()
     };
     let wave_off = &mut scenario.control.wave_off;
     wave_off.late_abort_ramp_strike_probability = 0.02;
@@ -159,7 +159,7 @@ fn arrival_timing_change(seed: u64) -> (f64, f64, f64) {
     use deckland::simulation::Stop;
     let mut scenario = Scenario {
         seed,
-        ..Scenario::default()
+        ..Scenario::papers_sea()
     };
     scenario.control.arrival_timing.max_speed_change_mps = 1.0;
     let mut simulation = Simulation::new(&scenario).unwrap();
@@ -281,7 +281,7 @@ fn wave_off_take_over(seed: u64, blend_s: f64) -> (f64, f64, f64) {
     use deckland::simulation::{Outcome, Stop};
     let mut scenario = Scenario {
         seed,
-        ..Scenario::default()
+        ..Scenario::papers_sea()
     };
     scenario.control.wave_off.climb_blend_s = blend_s;
     let mut simulation = Simulation::new(&scenario).unwrap();

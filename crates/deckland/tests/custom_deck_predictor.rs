@@ -4,7 +4,7 @@
 mod common;
 
 use deckland::control::{DeckPredictorKind, DeckReference};
-use deckland::environment::{ShipMotion, ShipMotionPropagator, ShipPose};
+use deckland::environment::{ShipMotionPropagator, ShipPose};
 use deckland::scenario::Scenario;
 use deckland::simulation::{DeckPredictor, DeckQuery, Simulation};
 
@@ -69,7 +69,7 @@ fn a_users_oracle_flies_bit_for_bit_as_the_built_in_one() {
         + scenario.control.flight_path.compensation_blend_s;
     let mine = MyOracle {
         propagator: ShipMotionPropagator::new(
-            &ShipMotion::new(scenario.environment.ship).expect("valid"),
+            &scenario.environment.ship_motion().expect("valid"),
             horizon_s,
         ),
     };

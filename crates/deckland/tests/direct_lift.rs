@@ -68,7 +68,7 @@ fn the_increment_stays_within_its_authority_and_returns_towards_zero() {
 
 #[test]
 fn the_realistic_set_flies_it_and_the_papers_does_not() {
-    let default = Simulation::new(&Scenario::default()).unwrap();
+    let default = Simulation::new(&Scenario::papers_sea()).unwrap();
     assert_eq!(default.system().layout().direct_lift.len, 1);
     let paper = Scenario::paper();
     assert!(!paper.control.direct_lift.enabled);
@@ -90,7 +90,7 @@ fn the_realistic_set_flies_it_and_the_papers_does_not() {
     // Nor does a pitch step, which has no glide path.
     let step = Scenario {
         mission: deckland::scenario::Mission::pitch_step(2.0, 6.0, Default::default()),
-        ..Scenario::default()
+        ..Scenario::papers_sea()
     };
     assert_eq!(
         Simulation::new(&step)
@@ -113,7 +113,7 @@ fn the_realistic_set_flies_it_and_the_papers_does_not() {
 fn the_flare_lifts_only_a_hook_sinking_faster_than_its_limit() {
     let fly = |flare_time_to_go_s: f64, limit_mps: f64| {
         // Over a still deck: the 3-DOF behind a stationary ship.
-        let mut scenario = Scenario::default().longitudinal().ideal();
+        let mut scenario = Scenario::papers_sea().longitudinal().ideal();
         scenario.control.direct_lift.flare_time_to_go_s = flare_time_to_go_s;
         scenario.control.direct_lift.flare_sink_rate_mps = limit_mps;
         Simulation::new(&scenario)
@@ -153,7 +153,7 @@ fn the_flare_lowers_the_hardest_touchdowns_in_the_papers_sea() {
             .filter(|&seed| {
                 let mut scenario = Scenario {
                     seed,
-                    ..Scenario::default()
+                    ..Scenario::papers_sea()
                 };
                 if !flare {
                     scenario.control.direct_lift.flare_time_to_go_s = 0.0;

@@ -31,8 +31,8 @@ fn with_pid(mut scenario: Scenario) -> Scenario {
 fn ideal_approach_traps_at_the_aim_point_with_both_controllers() {
     let (slope, deck_angle) = (3.5f64.to_radians(), 9.0f64.to_radians());
     let closure = 69.1 * slope.cos();
-    let longitudinal = Scenario::default().longitudinal().ideal();
-    let three_d = Scenario::default().ideal();
+    let longitudinal = Scenario::papers_sea().longitudinal().ideal();
+    let three_d = Scenario::papers_sea().ideal();
     for (scenario, expected_sink) in [
         (longitudinal, closure * slope.tan()),
         (with_pid(longitudinal), closure * slope.tan()),
@@ -67,7 +67,7 @@ fn ideal_approach_traps_at_the_aim_point_with_both_controllers() {
 fn fixed_ramp_limits(seed: u64) -> Scenario {
     let mut scenario = Scenario {
         seed,
-        ..Scenario::default()
+        ..Scenario::papers_sea()
     };
     scenario.control.flight_path.ramp_clearance_margin_m = 2.5;
     scenario.control.flight_path.ramp_strike_probability_limit = 0.0;
@@ -81,7 +81,7 @@ fn adverse_approaches_trap_or_wave_off_on_the_estimator() {
     // Seed 3 of the default (paper's sea, realistic hardware, estimator) traps.
     let summary = fly(&Scenario {
         seed: 3,
-        ..Scenario::default()
+        ..Scenario::papers_sea()
     });
     assert_eq!(summary.outcome, Outcome::Trap, "{summary:?}");
     let touchdown = summary.touchdown.unwrap();
@@ -105,7 +105,7 @@ fn adverse_approaches_trap_or_wave_off_on_the_estimator() {
 
 #[test]
 fn guidance_with_the_wrong_sign_ends_in_a_detected_failure() {
-    let mut scenario = Scenario::default().ideal();
+    let mut scenario = Scenario::papers_sea().ideal();
     scenario.control.guidance.proportional_per_s = -0.3;
     scenario.control.guidance.integral_per_s2 = -0.02;
     // A start 5 m above the path gives the inverted loop something to diverge from;
@@ -131,7 +131,7 @@ fn guidance_with_the_wrong_sign_ends_in_a_detected_failure() {
 
 #[test]
 fn an_elevator_far_too_weak_ends_in_a_detected_failure() {
-    let mut scenario = Scenario::default();
+    let mut scenario = Scenario::papers_sea();
     // Only ±0.5° of stabilator around neutral: the trim needs −8°.
     scenario.aircraft.elevator_actuator.min_deflection_deg = -0.5;
     scenario.aircraft.elevator_actuator.max_deflection_deg = 0.5;
@@ -150,7 +150,7 @@ fn an_elevator_far_too_weak_ends_in_a_detected_failure() {
 fn the_same_seed_reproduces_the_run_bit_for_bit() {
     let scenario = Scenario {
         seed: 7,
-        ..Scenario::default()
+        ..Scenario::papers_sea()
     };
     let mut first = TimeSeriesRecorder::every(0.007);
     let mut second = TimeSeriesRecorder::every(0.007);
@@ -165,7 +165,7 @@ fn the_same_seed_reproduces_the_run_bit_for_bit() {
     }
     let other = fly(&Scenario {
         seed: 8,
-        ..Scenario::default()
+        ..Scenario::papers_sea()
     });
     assert_ne!(a.touchdown, other.touchdown, "a different seed must differ");
 }
@@ -174,7 +174,7 @@ fn the_same_seed_reproduces_the_run_bit_for_bit() {
 /// conditions: no random draws depend on the step).
 #[test]
 fn touchdown_interpolation_is_consistent_when_the_step_is_halved() {
-    let mut scenario = Scenario::default().ideal();
+    let mut scenario = Scenario::papers_sea().ideal();
     scenario.environment.wind.mean_wind = true;
     scenario.environment.wind.steady_wake = true;
     scenario.environment.wind.periodic_wake = true;
@@ -196,25 +196,25 @@ fn touchdown_interpolation_is_consistent_when_the_step_is_halved() {
 fn invalid_scenarios_are_rejected_with_the_field_named() {
     let scenario = Scenario {
         time_step_s: 0.5,
-        ..Scenario::default()
+        ..Scenario::papers_sea()
     };
     assert!(Simulation::new(&scenario)
         .unwrap_err()
         .to_string()
         .contains("time_step_s"));
-    let mut scenario = Scenario::default();
+    let mut scenario = Scenario::papers_sea();
     scenario.approach.start_range_m = f64::NAN;
     assert!(Simulation::new(&scenario)
         .unwrap_err()
         .to_string()
         .contains("start_range_m"));
-    let mut scenario = Scenario::default();
+    let mut scenario = Scenario::papers_sea();
     scenario.environment.ship.heave_rms_m = -1.0;
     assert!(Simulation::new(&scenario)
         .unwrap_err()
         .to_string()
         .contains("heave_rms_m"));
-    let mut scenario = Scenario::default();
+    let mut scenario = Scenario::papers_sea();
     if let PitchControllerParameters::ObserverPd(p) = &mut scenario.control.pitch {
         p.observer.k2 = 0.1;
     }
@@ -298,7 +298,7 @@ fn regression_the_paper_set_flies_bit_for_bit_what_it_flew_before_the_estimator(
 #[test]
 fn the_wake_feedforward_and_its_lead_take_the_float_out_of_the_steady_wake() {
     let touchdown = |wake: bool, feedforward: bool, lead_s: f64| {
-        let mut scenario = Scenario::default();
+        let mut scenario = Scenario::papers_sea();
         scenario.environment.ship.heave_rms_m = 0.0;
         scenario.environment.ship.pitch_rms_deg = 0.0;
         scenario.environment.wind.turbulence = false;

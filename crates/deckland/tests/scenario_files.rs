@@ -72,7 +72,11 @@ fn every_shipped_scenario_loads_and_flies_one_approach() {
             "crosswind.toml",
             "heavy-sea.toml",
             "moderate-sea.toml",
-            "paper-adverse.toml"
+            "paper-adverse.toml",
+            "sea-state-3.toml",
+            "sea-state-4.toml",
+            "sea-state-5.toml",
+            "sea-state-6.toml"
         ]
     );
     for name in &names {
@@ -90,7 +94,7 @@ fn every_shipped_scenario_loads_and_flies_one_approach() {
         );
     }
     let calm = load_shipped("calm.toml");
-    assert_eq!(calm, Scenario::default().ideal());
+    assert_eq!(calm, Scenario::papers_sea().ideal());
     let heavy = load_shipped("heavy-sea.toml");
     assert_eq!(heavy.environment.ship.heave_rms_m, 3.0);
     assert!(!heavy.dispersion.is_none());

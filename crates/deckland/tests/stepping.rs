@@ -14,7 +14,7 @@ use deckland::simulation::{
 fn default_approach() -> Scenario {
     Scenario {
         seed: 3,
-        ..Scenario::default()
+        ..Scenario::papers_sea()
     }
 }
 
@@ -101,7 +101,7 @@ fn next_step_signals(simulation: &mut Simulation) -> Signals {
 /// deck reference held yet). It now shows the signals the first step starts from.
 #[test]
 fn regression_signals_before_the_first_step_are_those_of_the_first_step() {
-    let scenario = Scenario::default();
+    let scenario = Scenario::papers_sea();
     let simulation = Simulation::new(&scenario).expect("valid");
     let before = simulation.signals();
 
@@ -121,7 +121,7 @@ fn regression_signals_before_the_first_step_are_those_of_the_first_step() {
 fn the_next_step_starts_from_the_signals_looked_at_and_the_run_is_unchanged() {
     let scenario = Scenario {
         seed: 5,
-        ..Scenario::default()
+        ..Scenario::papers_sea()
     };
     let expected = Simulation::new(&scenario)
         .expect("valid")
@@ -157,7 +157,7 @@ fn the_next_step_starts_from_the_signals_looked_at_and_the_run_is_unchanged() {
 /// where the cascade alone holds θ near trim.
 #[test]
 fn regression_a_pitch_command_reaches_the_flight_computer() {
-    let scenario = Scenario::default();
+    let scenario = Scenario::papers_sea();
     assert!(scenario.control.flight_computer_rate_hz.is_some());
     let mut simulation = Simulation::new(&scenario).expect("valid");
     let trim_theta_rad = simulation.signals().theta_ref_rad;
@@ -186,7 +186,7 @@ fn a_wave_off_is_an_event_then_the_end() {
     // margin and 1.5-m wave-off limit: the risk-aware clearance flies this pass higher).
     let mut scenario = Scenario {
         seed: 6,
-        ..Scenario::default()
+        ..Scenario::papers_sea()
     };
     scenario.control.flight_path.ramp_clearance_margin_m = 2.5;
     scenario.control.flight_path.ramp_strike_probability_limit = 0.0;

@@ -3,6 +3,7 @@
 //! the deck's motion leaves unforeseeable (the physics floor and its cost).
 
 mod deck_floor;
+mod forecast_study;
 mod margins;
 mod modes;
 mod open_loop;
@@ -17,6 +18,7 @@ pub use deck_floor::{
     deck_point_floor, deck_point_stationary_sigma, hard_landing_decision_bound,
     ramp_clearance_for_strike_rate, DeckPointFloor, HardLandingBound,
 };
+pub use forecast_study::{forecast_study, ForecastError, ForecastStudy};
 pub use margins::{cascade_margins, LoopMargins};
 
 /// Rate saturation of the elevator: the rate limiter's describing function and the

@@ -27,7 +27,7 @@ pub use angled_deck::{DeckCentreline, EarthDirection, ShipAttitude};
 pub use deck::{DeckGeometry, EarthPoint, EarthVelocity, ShipPose, ShipPoseRate};
 pub use ship::{
     heave_unit_intensity_variance, pitch_unit_intensity_variance, shaping_filter_companion,
-    unit_intensity_state_covariance, ShapingFilter, ShipMotion, ShipMotionOutputs,
+    unit_intensity_state_covariance, ShapingFilter, ShipModelKind, ShipMotion, ShipMotionOutputs,
     ShipMotionParameters, ShipMotionState, ShipNoise, HEAVE_FILTER_GAIN, PITCH_FILTER_GAIN,
     SHAPING_FILTER_DENOMINATOR,
 };
@@ -37,8 +37,8 @@ pub use ship_lateral::{
     ROLL_FILTER_DAMPING_RATIO, ROLL_FILTER_NATURAL_FREQUENCY_RADPS,
 };
 pub use ship_model::{
-    resolved_ship_parameters, ship_motion, validate_seaway, PaperFilters, SeawayShip, ShipModel,
-    ShipModelKind, ShipMotionShape,
+    resolved_ship_parameters, ship_model, ship_motion, validate_seaway, PaperFilters, SeawayShip,
+    ShipModel, ShipMotionShape,
 };
 pub use ship_prediction::{
     DeckPointUncertainty, Matrix4Array, PredictedShipMotion, ShipMotionEstimate,

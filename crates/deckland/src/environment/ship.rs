@@ -18,7 +18,6 @@ use serde::{Deserialize, Serialize};
 
 use super::deck::{ShipPose, ShipPoseRate};
 use super::lyapunov::stationary_covariance;
-use super::ship_model::ShipModelKind;
 use crate::parameters::{Bounds, ParameterError};
 use crate::random::NoiseStream;
 
@@ -29,16 +28,57 @@ pub const HEAVE_FILTER_GAIN: f64 = 1.21;
 /// Numerator gain of the pitch filter G_θ(s) = 0.773·s²/D(s) (paper Eq. 16), rad per unit.
 pub const PITCH_FILTER_GAIN: f64 = 0.773;
 
+/// The ship-motion model of a scenario (`environment.ship.model`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ShipModelKind {
+    /// The paper's shaping filters (docs/model.md §3.1): the paper's set and every file
+    /// that names no model.
+    Filters,
+    /// The carrier in a seaway (docs/model.md §12), from `[environment.seaway]`.
+    Seaway,
+}
+
+impl ShipModelKind {
+    /// The model of a scenario file that names none: the filters, as every file written
+    /// before the seaway flew (the built-in default names `seaway`).
+    pub fn named_by_none() -> Self {
+        Self::Filters
+    }
+
+    /// The name a scenario file gives the model.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Filters => "filters",
+            Self::Seaway => "seaway",
+        }
+    }
+
+    /// The keys of `[environment.ship]` that this model sets itself (a file that names
+    /// the model may not write them).
+    pub fn derived_keys(self) -> &'static [&'static str] {
+        match self {
+            Self::Filters => &[],
+            Self::Seaway => &["heave_rms_m", "pitch_rms_deg", "roll_rms_deg"],
+        }
+    }
+}
+
 /// A 4 × 4 matrix as nested arrays (row major).
 pub type Matrix4Array = [[f64; 4]; 4];
 
 /// Configuration of the ship motion (docs/model.md §3.1).
+///
+/// Written out (a campaign's `scenario.toml`), a ship whose model derives the RMS of
+/// heave, pitch and roll (the seaway) leaves those keys out, so that the file reads back.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
+#[serde(default, deny_unknown_fields, into = "ShipMotionFile")]
 pub struct ShipMotionParameters {
-    /// The ship-motion model (`filters`, the paper's shaping filters: the default of a
-    /// file that names none; `seaway`: the carrier in the seaway of
-    /// `[environment.seaway]`, docs/model.md §12).
+    /// The ship-motion model: `seaway`, the carrier in the seaway of
+    /// `[environment.seaway]` (docs/model.md §12), in the built-in default; `filters`, the
+    /// paper's shaping filters, in the paper's set and in every file that names none (the
+    /// files written before the seaway keep flying as they did).
+    #[serde(default = "ShipModelKind::named_by_none")]
     pub model: ShipModelKind,
     /// Whether the deck heaves and pitches at all; when false the ship is steady.
     pub enabled: bool,
@@ -59,10 +99,43 @@ pub struct ShipMotionParameters {
     pub sway_rms_m: f64,
 }
 
+/// [`ShipMotionParameters`] as a file holds it: the keys the model derives left out.
+#[derive(Serialize)]
+struct ShipMotionFile {
+    model: ShipModelKind,
+    enabled: bool,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    heave_rms_m: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pitch_rms_deg: Option<f64>,
+    forward_speed_mps: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    roll_rms_deg: Option<f64>,
+    yaw_rms_deg: f64,
+    sway_rms_m: f64,
+}
+
+impl From<ShipMotionParameters> for ShipMotionFile {
+    fn from(p: ShipMotionParameters) -> Self {
+        let derived = p.model.derived_keys();
+        let keep = |key: &str, value: f64| (!derived.contains(&key)).then_some(value);
+        Self {
+            model: p.model,
+            enabled: p.enabled,
+            heave_rms_m: keep("heave_rms_m", p.heave_rms_m),
+            pitch_rms_deg: keep("pitch_rms_deg", p.pitch_rms_deg),
+            forward_speed_mps: p.forward_speed_mps,
+            roll_rms_deg: keep("roll_rms_deg", p.roll_rms_deg),
+            yaw_rms_deg: p.yaw_rms_deg,
+            sway_rms_m: p.sway_rms_m,
+        }
+    }
+}
+
 impl Default for ShipMotionParameters {
     fn default() -> Self {
         Self {
-            model: ShipModelKind::Filters,
+            model: ShipModelKind::Seaway,
             enabled: true,
             heave_rms_m: 2.0,
             pitch_rms_deg: 1.5,

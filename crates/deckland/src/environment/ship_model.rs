@@ -5,8 +5,8 @@
 //! loop's ship state, the Kalman estimator, the forecast, the wave-off's sea state) reads
 //! only the [`ShipMotion`] built here.
 //!
-//! A new ship model is one file implementing [`ShipModel`] plus one line in
-//! [`ShipModelKind`] and [`ShipModelKind::model`].
+//! A new ship model is one file implementing [`ShipModel`] plus its name in
+//! [`ShipModelKind`] and one line in [`ship_model`].
 //!
 //! - `filters` ([`PaperFilters`], the default of a file that names none): the paper's
 //!   shaping filters (docs/model.md §3.1) at the RMS of `environment.ship`.
@@ -18,44 +18,15 @@
 
 use std::sync::{Mutex, OnceLock};
 
-use serde::{Deserialize, Serialize};
-
 use super::seaway::{Motion, MotionModel, SeawayError, SeawayModel, SeawayParameters};
-use super::ship::{ShapingFilter, ShipMotion, ShipMotionParameters};
+use super::ship::{ShapingFilter, ShipModelKind, ShipMotion, ShipMotionParameters};
 use crate::parameters::ParameterError;
 
-/// The ship-motion model of a scenario (`environment.ship.model`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum ShipModelKind {
-    /// The paper's shaping filters (docs/model.md §3.1): every file that names no model.
-    #[default]
-    Filters,
-    /// The carrier in a seaway (docs/model.md §12), from `[environment.seaway]`.
-    Seaway,
-}
-
-impl ShipModelKind {
-    /// The registry: the model of each kind.
-    pub fn model(self) -> &'static dyn ShipModel {
-        match self {
-            Self::Filters => &PaperFilters,
-            Self::Seaway => &SeawayShip,
-        }
-    }
-
-    /// The name a scenario file gives the model.
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Filters => "filters",
-            Self::Seaway => "seaway",
-        }
-    }
-
-    /// The keys of `[environment.ship]` that this model sets itself (a file that names
-    /// the model may not write them).
-    pub fn derived_keys(self) -> &'static [&'static str] {
-        self.model().derived_keys()
+/// The registry: the model of each kind (one line per model).
+pub fn ship_model(kind: ShipModelKind) -> &'static dyn ShipModel {
+    match kind {
+        ShipModelKind::Filters => &PaperFilters,
+        ShipModelKind::Seaway => &SeawayShip,
     }
 }
 
@@ -84,11 +55,6 @@ pub trait ShipModel: Sync {
         ship: &ShipMotionParameters,
         seaway: &SeawayParameters,
     ) -> Result<ShipMotionShape, ParameterError>;
-
-    /// The keys of `[environment.ship]` this model derives (module docs).
-    fn derived_keys(&self) -> &'static [&'static str] {
-        &[]
-    }
 }
 
 /// The paper's shaping filters at the configured RMS (docs/model.md §3.1).
@@ -134,10 +100,6 @@ impl ShipModel for SeawayShip {
             pitch_rms_deg: fitted.pitch_rms_deg * scale,
             roll_rms_deg: fitted.roll_rms_deg * scale,
         })
-    }
-
-    fn derived_keys(&self) -> &'static [&'static str] {
-        &["heave_rms_m", "pitch_rms_deg", "roll_rms_deg"]
     }
 }
 
@@ -241,7 +203,7 @@ pub fn resolved_ship_parameters(
     ship: &ShipMotionParameters,
     seaway: &SeawayParameters,
 ) -> Result<(ShipMotionParameters, ShipMotionShape), ParameterError> {
-    let shape = ship.model.model().shape(ship, seaway)?;
+    let shape = ship_model(ship.model).shape(ship, seaway)?;
     Ok((
         ShipMotionParameters {
             heave_rms_m: shape.heave_rms_m,

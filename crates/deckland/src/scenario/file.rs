@@ -462,15 +462,22 @@ fn finish_scenario(
     }
 
     // A file on the paper's hardware takes the paper's values for what it leaves out.
-    let scenario =
-        scenario
-            .with_set_defaults(in_file)
-            .map_err(|message| ScenarioError::Structure {
+    let scenario = match scenario.with_set_defaults(in_file) {
+        Ok(scenario) => scenario,
+        Err(message) => {
+            // The set's defaults pass through JSON, which holds no infinity or NaN: a
+            // value out of range is the file's fault, named by its key.
+            scenario
+                .validate()
+                .map_err(|problem| out_of_range(problem, text, file_name, index))?;
+            return Err(ScenarioError::Structure {
                 file: file_name.to_owned(),
                 line: None,
                 field: "hardware".to_owned(),
                 message,
-            })?;
+            });
+        }
+    };
     scenario
         .validate()
         .map_err(|problem| out_of_range(problem, text, file_name, index))?;

@@ -9,12 +9,12 @@ use deckland::recording::SummaryRecorder;
 use deckland::scenario::Scenario;
 use deckland::simulation::Simulation;
 
-/// The default (realistic) scenario with `seed` in the moderate sea of docs/model.md §3.6
-/// (heave 1.0 m, pitch 0.75° RMS).
+/// The default (realistic) scenario with `seed` in the moderate sea of docs/model.md §3.6:
+/// the filter ship at heave 1.0 m, pitch 0.75° RMS.
 pub fn moderate_sea(seed: u64) -> Scenario {
     let mut scenario = Scenario {
         seed,
-        ..Scenario::default()
+        ..Scenario::papers_sea()
     };
     scenario.environment.ship.heave_rms_m = 1.0;
     scenario.environment.ship.pitch_rms_deg = 0.75;
