@@ -264,6 +264,9 @@ pub struct ShapingFilter {
     pub output_state: usize,
     /// g: output units per filter unit.
     pub gain: f64,
+    /// Whether D(s) is the paper's, whose coefficients the derivative then takes as
+    /// constants (the loop's cost per step; the same arithmetic either way).
+    paper_denominator: bool,
 }
 
 impl ShapingFilter {
@@ -272,13 +275,27 @@ impl ShapingFilter {
         denominator: SHAPING_FILTER_DENOMINATOR,
         output_state: 0,
         gain: HEAVE_FILTER_GAIN,
+        paper_denominator: true,
     };
     /// The paper's pitch filter 0.773·s²/D(s) (Eq. 16).
     pub const PAPER_PITCH: Self = Self {
         denominator: SHAPING_FILTER_DENOMINATOR,
         output_state: 2,
         gain: PITCH_FILTER_GAIN,
+        paper_denominator: true,
     };
+
+    /// The filter g·sᵏ/D(s), D(s) = s⁴ + d₃s³ + d₂s² + d₁s + d₀ with `denominator` =
+    /// (d₀, d₁, d₂, d₃), k = `output_state` (checked, with D's stability, when a
+    /// [`ShipMotion`] is built on it).
+    pub fn new(denominator: [f64; 4], output_state: usize, gain: f64) -> Self {
+        Self {
+            denominator,
+            output_state,
+            gain,
+            paper_denominator: denominator == SHAPING_FILTER_DENOMINATOR,
+        }
+    }
 
     /// The companion matrix A, D(s) in its last row.
     pub fn companion(&self) -> Matrix4<f64> {
@@ -306,7 +323,11 @@ impl ShapingFilter {
     /// Time derivative of the canonical state under a held input `u`.
     #[inline(always)]
     pub fn derivative(&self, z: &[f64; 4], u: f64) -> [f64; 4] {
-        let [d0, d1, d2, d3] = self.denominator;
+        let [d0, d1, d2, d3] = if self.paper_denominator {
+            SHAPING_FILTER_DENOMINATOR
+        } else {
+            self.denominator
+        };
         [
             z[1],
             z[2],
@@ -315,16 +336,27 @@ impl ShapingFilter {
         ]
     }
 
+    /// The states holding the motion and its rate (constant indices: no bounds checks in
+    /// the loop; `output_state` is checked to be 0–2 when the ship is built).
+    #[inline(always)]
+    fn states(&self, z: &[f64; 4]) -> (f64, f64) {
+        match self.output_state {
+            0 => (z[0], z[1]),
+            1 => (z[1], z[2]),
+            _ => (z[2], z[3]),
+        }
+    }
+
     /// The motion in state `z`.
     #[inline(always)]
     pub fn output(&self, z: &[f64; 4]) -> f64 {
-        self.gain * z[self.output_state]
+        self.gain * self.states(z).0
     }
 
     /// The motion's rate in state `z`.
     #[inline(always)]
     pub fn rate(&self, z: &[f64; 4]) -> f64 {
-        self.gain * z[self.output_state + 1]
+        self.gain * self.states(z).1
     }
 
     /// Checks D(s) is stable and k in 0–2 (`what` names the motion in the error).
@@ -456,6 +488,7 @@ impl ShipMotion {
     }
 
     /// Time derivative of the filter states under held noise inputs (paper Eq. 15–16).
+    #[inline]
     pub fn derivative(&self, state: &ShipMotionState, noise: ShipNoise) -> ShipMotionState {
         ShipMotionState {
             heave_filter: self
@@ -517,6 +550,7 @@ impl ShipMotion {
     }
 
     /// Heave, pitch and their rates in `state` (zero when the ship motion is disabled).
+    #[inline]
     pub fn outputs(&self, state: &ShipMotionState) -> ShipMotionOutputs {
         if !self.parameters.enabled {
             return ShipMotionOutputs::default();
@@ -531,6 +565,7 @@ impl ShipMotion {
 
     /// The ship's pose at time `time_s` (s) in `state`, its pitch centre having been at
     /// earth x = `initial_pitch_centre_x_m` (m) at t = 0: x_G = x_G0 + V_ship·t.
+    #[inline]
     pub fn pose(
         &self,
         state: &ShipMotionState,
@@ -547,6 +582,7 @@ impl ShipMotion {
     }
 
     /// Rates of [`ShipMotion::pose`]: ship speed, heave rate and pitch rate.
+    #[inline]
     pub fn pose_rate(&self, state: &ShipMotionState) -> ShipPoseRate {
         let outputs = self.outputs(state);
         ShipPoseRate {

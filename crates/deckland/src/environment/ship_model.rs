@@ -18,7 +18,9 @@
 
 use std::sync::{Mutex, OnceLock};
 
-use super::seaway::{Motion, MotionModel, SeawayError, SeawayModel, SeawayParameters};
+use super::seaway::{
+    motion_target, Motion, MotionModel, SeawayError, SeawayModel, SeawayParameters,
+};
 use super::ship::{ShapingFilter, ShipModelKind, ShipMotion, ShipMotionParameters};
 use crate::parameters::ParameterError;
 
@@ -161,20 +163,22 @@ fn fitted_for_unit_height(seaway: &SeawayParameters) -> Result<ShipMotionShape, 
     }
     let heave = SeawayModel::fit_motion(&key, Motion::Heave, 1)?;
     let pitch = SeawayModel::fit_motion(&key, Motion::Pitch, 1)?;
-    // Roll drives the 3-D approach's roll filter (docs/model.md §3.7) at the seaway's RMS;
-    // long-crested head seas do not roll the hull at all.
-    let roll_variance = match SeawayModel::fit_motion(&key, Motion::Roll, 2) {
-        Ok(roll) => roll.report.model_variance,
-        Err(SeawayError::NoEnergy { .. }) => 0.0,
-        Err(other) => return Err(other),
+    // Roll drives the 3-D approach's roll filter (docs/model.md §3.7) at the seaway's RMS,
+    // the response spectrum's own variance (no fit needed); long-crested head seas do not
+    // roll the hull at all.
+    let roll_variance = motion_target(&key, Motion::Roll)?.variance();
+    let roll_variance = if roll_variance.is_finite() {
+        roll_variance
+    } else {
+        0.0
     };
     let filter = |fitted: &MotionModel| {
         let section = fitted.model.sections()[0];
-        ShapingFilter {
-            denominator: section.denominator(),
-            output_state: 1,
-            gain: section.gain * section.centre_frequency_radps.powi(2),
-        }
+        ShapingFilter::new(
+            section.denominator(),
+            1,
+            section.gain * section.centre_frequency_radps.powi(2),
+        )
     };
     let shape = ShipMotionShape {
         heave: filter(&heave),

@@ -63,6 +63,20 @@ impl FilterTable {
         std::array::from_fn(|j| r0[j] + fraction * (r1[j] - r0[j]))
     }
 
+    /// The motion e^{AT}·z predicts (row k of e^{AT}, interpolated, times z, times g).
+    #[inline(always)]
+    fn output(&self, (index, fraction): (usize, f64), z: &[f64; 4]) -> f64 {
+        let row = self.filter.output_state;
+        let (r0, r1) = (
+            &self.transitions[index][row],
+            &self.transitions[index + 1][row],
+        );
+        self.filter.gain
+            * (0..4)
+                .map(|j| (r0[j] + fraction * (r1[j] - r0[j])) * z[j])
+                .sum::<f64>()
+    }
+
     /// The unpredictable part of state `i`'s variance after the transition row `row`,
     /// per unit intensity.
     #[inline]
@@ -216,21 +230,10 @@ impl ShipMotionPropagator {
         if !ship.parameters().enabled {
             return PredictedShipMotion::default();
         }
-        let (index, fraction) = self.grid(horizon_s);
-        let output = |table: &FilterTable, z: &[f64; 4]| {
-            let row = table.filter.output_state;
-            let (r0, r1) = (
-                &table.transitions[index][row],
-                &table.transitions[index + 1][row],
-            );
-            table.filter.gain
-                * (0..4)
-                    .map(|j| (r0[j] + fraction * (r1[j] - r0[j])) * z[j])
-                    .sum::<f64>()
-        };
+        let grid = self.grid(horizon_s);
         PredictedShipMotion {
-            heave_m: output(&self.heave, &state.heave_filter),
-            pitch_rad: output(&self.pitch, &state.pitch_filter),
+            heave_m: self.heave.output(grid, &state.heave_filter),
+            pitch_rad: self.pitch.output(grid, &state.pitch_filter),
         }
     }
 
