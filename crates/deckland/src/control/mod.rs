@@ -44,4 +44,6 @@ pub use law::{AxisLaw, LinearLaw};
 pub use loop_controller::{LoopController, LoopGains};
 pub use sink_rate::SinkRateControllerParameters;
 pub use speed::{SpeedController, SpeedControllerParameters};
-pub use wave_off::{WaveOffCriterion, WaveOffDecision, WaveOffInputs, WaveOffParameters};
+pub use wave_off::{
+    RecoveryLimits, WaveOffCriterion, WaveOffDecision, WaveOffInputs, WaveOffParameters,
+};

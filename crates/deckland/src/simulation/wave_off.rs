@@ -75,7 +75,11 @@ impl ClosedLoop {
         // The ramp-strike limits of this sea (the ordinary ones but in a heavy sea).
         let wave_off = self.wave_off.for_ship(self.ship.parameters(), &self.deck);
         let inputs = wave_off_inputs(&wave_off, &flight_path, &self.deck, &reference, &hook);
-        let decision = inputs.and_then(|inputs| wave_off.decide(&inputs));
+        let decision = inputs.and_then(|inputs| {
+            wave_off
+                .decide_foul_deck(&inputs)
+                .or_else(|| wave_off.decide(&inputs))
+        });
         if decision.is_some() {
             self.note_wave_off(t);
         }

@@ -136,6 +136,11 @@ pub struct WaveOffParameters {
     /// predicted τ ahead, as the approach's α protection does; 0.3 s, the pitch loop's
     /// lag (docs/landing-design.md); 0 holds α itself (the paper's set); [0, 2].
     pub alpha_lead_s: f64,
+    /// The limits in which a carrier recovers aircraft and the early "foul deck:
+    /// motion" wave-off against them (`wave_off/recovery.rs`); a file with no
+    /// `[control.wave_off.recovery]` section flies without the early check.
+    #[serde(default = "RecoveryLimits::named_by_none")]
+    pub recovery: RecoveryLimits,
 }
 
 impl Default for WaveOffParameters {
@@ -166,6 +171,7 @@ impl Default for WaveOffParameters {
             heavy_sea_ramp_sigma_start_m: 4.3,
             heavy_sea_ramp_sigma_full_m: 4.5,
             alpha_lead_s: 0.3,
+            recovery: RecoveryLimits::default(),
         }
     }
 }
@@ -182,6 +188,7 @@ impl WaveOffParameters {
             heavy_sea_late_abort_ramp_strike_probability: 0.0,
             alpha_lead_s: 0.0,
             min_alpha_deg: 2.0,
+            recovery: RecoveryLimits::named_by_none(),
             ..Self::default()
         }
     }
@@ -226,7 +233,8 @@ impl WaveOffParameters {
         )?;
         Bounds::closed(-5.0, 15.0).check(SECTION, "min_alpha_deg", self.min_alpha_deg)?;
         self.validate_heavy_sea(SECTION, probability)?;
-        Bounds::closed(0.0, 2.0).check(SECTION, "alpha_lead_s", self.alpha_lead_s)
+        Bounds::closed(0.0, 2.0).check(SECTION, "alpha_lead_s", self.alpha_lead_s)?;
+        self.recovery.validate()
     }
 
     /// Checks the limits of the decision's criteria: clearance, the probabilities, the
@@ -328,6 +336,9 @@ pub enum WaveOffCriterion {
     OffCentreProbability,
     /// 3-D approach: drifting across the centreline too fast.
     LineupDriftRate,
+    /// Far from the ramp: the deck forecast for touchdown beyond a recovery limit ("foul
+    /// deck: motion", `wave_off/recovery.rs`).
+    FoulDeckMotion,
 }
 
 impl WaveOffCriterion {
@@ -344,6 +355,7 @@ impl WaveOffCriterion {
             Self::LandingPointDisplacement => "landing_point_displacement",
             Self::OffCentreProbability => "off_centre_probability",
             Self::LineupDriftRate => "lineup_drift_rate",
+            Self::FoulDeckMotion => "foul_deck_motion",
         }
     }
 
@@ -360,6 +372,9 @@ impl WaveOffCriterion {
             Self::LandingPointDisplacement => "predicted landing-point displacement (m)",
             Self::OffCentreProbability => "probability of an off-centre touchdown (%)",
             Self::LineupDriftRate => "drift rate across the centreline (m/s)",
+            Self::FoulDeckMotion => {
+                "foul deck: predicted deck motion at touchdown, largest share of a recovery limit (%)"
+            }
         }
     }
 }
@@ -525,6 +540,9 @@ impl WaveOffParameters {
 }
 
 mod heavy_sea;
+mod recovery;
+
+pub use recovery::RecoveryLimits;
 
 #[cfg(test)]
 mod tests;
