@@ -130,7 +130,7 @@ impl WaveOffParameters {
             return None;
         }
         let share = limits.largest_share_pct(inputs);
-        (share > 100.0).then(|| WaveOffDecision {
+        (share > 100.0).then_some(WaveOffDecision {
             criterion: WaveOffCriterion::FoulDeckMotion,
             value: share,
             limit: 100.0,
