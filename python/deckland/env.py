@@ -400,6 +400,9 @@ class CarrierLandingVecEnv(VectorEnv):
         self._generators: List[Optional[np.random.Generator]] = [None] * self.num_envs
         # The outcome's name by code, None (code -1) for a running or step-limited episode.
         self._outcome_names = np.array(list(self.outcomes) + [None], dtype=object)
+        # The LSO's grade and points by code, None and NaN (code -1) while running.
+        self._grade_names = np.array(list(self.description["lso_grades"]) + [None], dtype=object)
+        self._grade_points = np.array(list(self.description["lso_points"]) + [np.nan])
         # The environments whose episode ended at the last step (None: none).
         self._restart: Optional[List[int]] = None
 
@@ -443,7 +446,7 @@ class CarrierLandingVecEnv(VectorEnv):
             seeds = [0] * self.num_envs
             for i in self._restart:
                 seeds[i] = self._seed(i, None)
-        observation, reward, terminated, truncated, raw, pilot, codes, wires, off_centre = self._core.step(
+        observation, reward, terminated, truncated, raw, pilot, codes, wires, off_centre, grades = self._core.step(
             actions, seeds
         )
         info: Dict[str, Any] = {"raw": raw, "autopilot_action": pilot}
@@ -453,6 +456,11 @@ class CarrierLandingVecEnv(VectorEnv):
             info["_outcome"] = done
             info["wire"] = wires
             info["_wire"] = done
+            # The LSO's grade of each ended pass (docs/model.md §11), None while running.
+            info["lso_grade"] = self._grade_names[grades]
+            info["_lso_grade"] = done
+            info["lso_points"] = self._grade_points[grades]
+            info["_lso_points"] = done
             if self._reports_off_centre:
                 # True or False after a touchdown, None without one (flag -1).
                 info["off_centre"] = _OFF_CENTRE[off_centre + 1]

@@ -239,6 +239,7 @@ def test_the_vectorised_info_reports_off_centre_as_the_single_environment_does()
     names = CONTROL_MODES_3D["attitude"]
     climb = [names.index(name) for name in ("pitch_command", "thrust", "wave_off")]
     ended = {}
+    grades = {}
     for _ in range(3000):
         actions = np.array(info["autopilot_action"], dtype=np.float32)
         actions[1, climb] = 1.0  # environment 1 waves off and climbs away: no touchdown
@@ -246,6 +247,7 @@ def test_the_vectorised_info_reports_off_centre_as_the_single_environment_does()
         if "off_centre" in info:
             for i in np.flatnonzero(info["_off_centre"]):
                 ended.setdefault(int(i), info["off_centre"][i])
+                grades.setdefault(int(i), (info["lso_grade"][i], info["lso_points"][i]))
         if len(ended) == n:
             break
     assert set(ended) == {0, 1}
@@ -254,6 +256,9 @@ def test_the_vectorised_info_reports_off_centre_as_the_single_environment_does()
     assert infos[-1]["outcome"] == "trap"
     assert ended[0] is infos[-1]["off_centre"] is False
     assert ended[1] is None
+    # The LSO's grade, as the single environment gives it; the wave-off is the agent's own.
+    assert grades[0] == (infos[-1]["lso_grade"], infos[-1]["lso_points"])
+    assert grades[1] == ("own_wave_off", 2.0)
 
 
 def test_an_approach_steps_with_lateral_commands_in_place_of_the_lateral_loops():

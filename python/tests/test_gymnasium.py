@@ -148,9 +148,13 @@ def test_the_wave_off_is_the_agents_and_flying_over_the_wires_after_it_is_a_wave
     assert observations[0][waved] == 0.0 and np.all(observations[1:, waved] == 1.0)
     assert terminated and infos[-1]["outcome"] == "wave_off"
     assert rewards[-1] <= REWARDS["wave_off"]
-    # The same flight without the decision: the physics' outcome, a bolter.
+    # The LSO grades the agent's own wave-off OWO, 2 points (AIRBOSS's points table).
+    assert (infos[-1]["lso_grade"], infos[-1]["lso_points"]) == ("own_wave_off", 2.0)
+    assert all("lso_grade" not in info for info in infos[:-1])
+    # The same flight without the decision: the physics' outcome, a bolter (2.5 points).
     _, _, infos, _, _ = run_episode(env, 1, climb(False))
     assert infos[-1]["outcome"] == "bolter"
+    assert (infos[-1]["lso_grade"], infos[-1]["lso_points"]) == ("bolter", 2.5)
     # The autopilot never waves off for the agent: in the scenario it is off.
     assert env.description["scenario"]["control.wave_off.enabled"] is False
 

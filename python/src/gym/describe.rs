@@ -1,5 +1,6 @@
 //! The description of a configuration: the spaces, the observation's table, the trim.
 
+use deckland::metrics::lso_grade::Grade;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
@@ -28,6 +29,9 @@ pub(super) fn describe<'py>(py: Python<'py>, config: &EnvConfig) -> PyResult<Bou
     dict.set_item("actions", config.action_names().to_vec())?;
     dict.set_item("built_in_loops", config.built_in_loops())?;
     dict.set_item("outcomes", OUTCOMES.to_vec())?;
+    // The LSO's grades by code (the vector environment's grade codes) and their points.
+    dict.set_item("lso_grades", Grade::ALL.map(Grade::name).to_vec())?;
+    dict.set_item("lso_points", Grade::ALL.map(Grade::points).to_vec())?;
     dict.set_item("control_interval_s", config.interval_s)?;
     dict.set_item("max_time_s", config.scenario.max_time_s)?;
     let trim = PyDict::new(py);

@@ -1,5 +1,6 @@
 //! One environment's episode: its start, its steps, its reward and outcome.
 
+use deckland::metrics::lso_grade::Grade;
 use deckland::scenario::Scenario as RustScenario;
 use deckland::simulation::{EndReason, Recorder};
 use numpy::{IntoPyArray, PyArray3, PyArrayMethods};
@@ -27,6 +28,9 @@ pub(crate) struct EnvCore {
     pub(super) reason: Option<String>,
     /// A 3-D approach's touchdown off the centreline (`None`: no lateral touchdown).
     pub(super) off_centre: Option<bool>,
+    /// The LSO's grade of the pass and its comment, once ended (an agent's own wave-off
+    /// is graded `own_wave_off`).
+    pub(super) lso: Option<(Grade, String)>,
 }
 
 /// What a step gives besides the observation.
@@ -51,6 +55,7 @@ impl EnvCore {
             outcome: None,
             reason: None,
             off_centre: None,
+            lso: None,
         })
     }
 
@@ -119,6 +124,19 @@ impl EnvCore {
             if self.off_centre == Some(true) {
                 result.reward += config.rewards.off_centre;
             }
+            self.lso = self
+                .stepper
+                .simulation()
+                .summary()
+                .and_then(|s| s.lso_grade.clone())
+                .map(|graded| {
+                    let grade = if name == "wave_off" {
+                        Grade::OwnWaveOff
+                    } else {
+                        graded.grade
+                    };
+                    (grade, graded.comment)
+                });
             self.reason = if name == "wave_off" {
                 Some("the agent waved off and flew over the last wire".to_owned())
             } else {

@@ -142,6 +142,11 @@ impl Env {
             if config.lateral.is_some() {
                 info.set_item("off_centre", core.off_centre)?;
             }
+            if let Some((grade, comment)) = &core.lso {
+                info.set_item("lso_grade", grade.name())?;
+                info.set_item("lso_points", grade.points())?;
+                info.set_item("lso_comment", comment)?;
+            }
         }
         Ok((
             obs.into_pyarray(py),

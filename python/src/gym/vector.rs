@@ -2,6 +2,7 @@
 
 use std::sync::{Arc, Mutex, PoisonError};
 
+use deckland::metrics::lso_grade::Grade;
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArray3};
 use numpy::{PyReadonlyArray2, PyUntypedArrayMethods};
@@ -26,7 +27,7 @@ pub struct VecEnv {
     restart: Vec<bool>,
     /// Each environment's outcome code, wire and off-centre flag at the last step (−1:
     /// none; the flag 1 or 0 after a 3-D touchdown).
-    outcomes: Vec<(i8, i8, i8)>,
+    outcomes: Vec<(i8, i8, i8, i8)>,
     /// Whether every environment has started (`reset`). Kept here rather than read from
     /// the episodes: reading 64 of them would fetch the data the helper threads keep in
     /// their cores' caches.
@@ -51,6 +52,7 @@ type VecStep<'py> = (
     Option<Bound<'py, PyArray1<i8>>>,
     Option<Bound<'py, PyArray1<i8>>>,
     Option<Bound<'py, PyArray1<i8>>>,
+    Option<Bound<'py, PyArray1<i8>>>,
 );
 
 /// Every environment's results of a step, one array each, environment by environment.
@@ -72,7 +74,7 @@ struct Slot<'a> {
     reward: &'a mut f64,
     terminated: &'a mut bool,
     truncated: &'a mut bool,
-    outcome: &'a mut (i8, i8, i8),
+    outcome: &'a mut (i8, i8, i8, i8),
 }
 
 #[pymethods]
@@ -121,7 +123,7 @@ impl VecEnv {
         restart.resize(num_envs, false);
         let mut outcomes = Vec::new();
         outcomes.try_reserve_exact(num_envs).map_err(refused)?;
-        outcomes.resize(num_envs, (-1, -1, -1));
+        outcomes.resize(num_envs, (-1, -1, -1, -1));
         Ok(Self {
             config: Arc::new(config),
             cores,
@@ -217,17 +219,18 @@ impl VecEnv {
             *restart = *terminated || *truncated;
             ended |= *restart;
         }
-        let (codes, wires, off_centre) = if ended {
-            let codes: Vec<i8> = self.outcomes.iter().map(|o| o.0).collect();
-            let wires: Vec<i8> = self.outcomes.iter().map(|o| o.1).collect();
-            let off_centre: Vec<i8> = self.outcomes.iter().map(|o| o.2).collect();
+        let (codes, wires, off_centre, grades) = if ended {
+            let column = |f: fn(&(i8, i8, i8, i8)) -> i8| -> Vec<i8> {
+                self.outcomes.iter().map(f).collect()
+            };
             (
-                Some(codes.into_pyarray(py)),
-                Some(wires.into_pyarray(py)),
-                Some(off_centre.into_pyarray(py)),
+                Some(column(|o| o.0).into_pyarray(py)),
+                Some(column(|o| o.1).into_pyarray(py)),
+                Some(column(|o| o.2).into_pyarray(py)),
+                Some(column(|o| o.3).into_pyarray(py)),
             )
         } else {
-            (None, None, None)
+            (None, None, None, None)
         };
         let k = config.observation_len();
         Ok((
@@ -240,6 +243,7 @@ impl VecEnv {
             codes,
             wires,
             off_centre,
+            grades,
         ))
     }
 
@@ -311,7 +315,7 @@ impl VecEnv {
         let error: Mutex<Option<PyErr>> = Mutex::new(None);
         py.detach(|| {
             for_each_item(helpers(), &mut slots, |i, slot| {
-                *slot.outcome = (-1, -1, -1);
+                *slot.outcome = (-1, -1, -1, -1);
                 if let Some(seed) = plan[i] {
                     match EnvCore::new(config, seed) {
                         Ok(core) => *slot.core = Some(core),
@@ -337,6 +341,12 @@ impl VecEnv {
                             code as i8,
                             wire.map_or(-1, |w| w as i8),
                             core.off_centre.map_or(-1, i8::from),
+                            core.lso.as_ref().map_or(-1, |(grade, _)| {
+                                Grade::ALL
+                                    .iter()
+                                    .position(|g| g == grade)
+                                    .map_or(-1, |i| i as i8)
+                            }),
                         );
                     }
                 }
