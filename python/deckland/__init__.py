@@ -26,8 +26,9 @@ Units are SI and angles radians, except where a name says ``_deg``.
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, field
-from typing import Any, Callable, Dict, Iterator, List, Optional
+from typing import Any, Callable, Dict, Iterator, List, Optional, Union
 
 from . import _deckland
 from ._deckland import (
@@ -80,6 +81,19 @@ class Flight:
     summary: Dict[str, Any]
     time_series: Any
     events: List[Dict[str, Any]] = field(default_factory=list)
+    #: The approach as a Tacview ACMI 2.2 text (``fly(..., acmi=True)``), else None.
+    acmi: Optional[str] = None
+
+    def write_acmi(self, path: Union[str, "os.PathLike[str]"]) -> None:
+        """Writes :attr:`acmi` to ``path`` (``approach.acmi`` of ``deckland land --acmi``),
+        whole or not at all; raises ``ValueError`` if the flight was flown without it."""
+        if self.acmi is None:
+            raise ValueError("this flight has no replay: fly it with acmi=True")
+        target = os.fspath(path)
+        partial = f"{target}.partial"
+        with open(partial, "w", encoding="utf-8") as out:
+            out.write(self.acmi)
+        os.replace(partial, target)
 
     @property
     def outcome(self) -> str:
@@ -141,6 +155,7 @@ def fly(
     disperse: bool = False,
     pitch_law: Optional[Callable[[Dict[str, float]], float]] = None,
     control_interval_s: float = 0.02,
+    acmi: bool = False,
 ) -> Flight:
     """Flies one approach and returns its :class:`Flight`.
 
@@ -153,11 +168,15 @@ def fly(
     ``pitch_law`` flies a Python callable as the pitch law, called once per
     ``control_interval_s`` (see :class:`Approach`); without it the whole run is in Rust
     and the interpreter is released while it flies.
+
+    With ``acmi=True`` the flight also holds the approach as a Tacview ACMI 2.2 replay
+    (:attr:`Flight.acmi`, :meth:`Flight.write_acmi`), the file ``deckland land --acmi``
+    writes.
     """
-    summary, columns, events = _deckland.fly(
-        scenario, seed, disperse, pitch_law, control_interval_s
+    summary, columns, events, replay = _deckland.fly(
+        scenario, seed, disperse, pitch_law, control_interval_s, acmi
     )
-    return Flight(summary=summary, time_series=table(columns), events=events)
+    return Flight(summary=summary, time_series=table(columns), events=events, acmi=replay)
 
 
 def campaign(

@@ -1,6 +1,7 @@
 //! `deckland.fly`: one approach, recorded as `deckland land` and `deckland run` record it.
 
 use deckland::experiments::{fly_approach, APPROACH_RECORD_INTERVAL_S};
+use deckland::recording::acmi::{write_acmi, AcmiReference};
 use deckland::recording::TimeSeriesRecorder;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
@@ -10,10 +11,20 @@ use crate::outputs::{events_list, summary_dict, time_series};
 use crate::scenario::{flown_scenario, scenario_or_default, Scenario};
 use crate::stepping::{python_law_label, Stepper};
 
-/// Flies one approach; returns `(summary, time_series, events)` with the time series
-/// as a dict of numpy arrays (the Python package makes the DataFrame).
+/// What `fly` returns to the Python package: the summary, the time series, the events
+/// and the ACMI replay if asked for.
+type Flown<'py> = (
+    Py<PyAny>,
+    Bound<'py, PyDict>,
+    Bound<'py, PyList>,
+    Option<String>,
+);
+
+/// Flies one approach; returns `(summary, time_series, events, acmi)` with the time
+/// series as a dict of numpy arrays (the Python package makes the DataFrame) and, with
+/// `acmi`, the approach as a Tacview ACMI 2.2 text (`deckland land --acmi`'s file).
 #[pyfunction]
-#[pyo3(signature = (scenario = None, seed = None, disperse = false, pitch_law = None, control_interval_s = 0.02))]
+#[pyo3(signature = (scenario = None, seed = None, disperse = false, pitch_law = None, control_interval_s = 0.02, acmi = false))]
 pub fn fly<'py>(
     py: Python<'py>,
     scenario: Option<PyRef<'_, Scenario>>,
@@ -21,7 +32,8 @@ pub fn fly<'py>(
     disperse: bool,
     pitch_law: Option<Bound<'py, PyAny>>,
     control_interval_s: f64,
-) -> PyResult<(Py<PyAny>, Bound<'py, PyDict>, Bound<'py, PyList>)> {
+    acmi: bool,
+) -> PyResult<Flown<'py>> {
     let base = scenario_or_default(scenario);
     let flown = flown_scenario(&base.scenario, seed, disperse)?;
     let (summary, samples, events, controller) = match pitch_law {
@@ -47,9 +59,18 @@ pub fn fly<'py>(
             (summary, recorder.samples, recorder.events, label)
         }
     };
+    let replay = acmi.then(|| {
+        let reference = AcmiReference {
+            deck_angle_deg: flown.environment.deck.deck_angle_deg,
+            ..AcmiReference::default()
+        };
+        let title = format!("{controller}, seed {}", flown.seed);
+        write_acmi(&reference, &title, &samples, &events, &summary)
+    });
     Ok((
         summary_dict(py, &summary, &controller, &base.name, flown.seed)?,
         time_series(py, &samples)?,
         events_list(py, &events)?,
+        replay,
     ))
 }
