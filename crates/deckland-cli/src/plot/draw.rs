@@ -14,7 +14,37 @@ use super::panel::{OutsideLegend, Panel};
 use super::style::*;
 use super::ticks::{self, AxisLabels, X_LABELS, Y_LABELS};
 
+/// `x` and `y` widened about their centres so that a unit spans as many pixels on both
+/// axes of a plotting area of `(width, height)` pixels.
+pub(super) fn equal_aspect_ranges(
+    x: Range<f64>,
+    y: Range<f64>,
+    (width, height): (i32, i32),
+) -> (Range<f64>, Range<f64>) {
+    let (w, h) = (f64::from(width.max(1)), f64::from(height.max(1)));
+    let (x_span, y_span) = (x.end - x.start, y.end - y.start);
+    let widen = |r: &Range<f64>, span: f64| {
+        let centre = 0.5 * (r.start + r.end);
+        (centre - 0.5 * span)..(centre + 0.5 * span)
+    };
+    if x_span / w >= y_span / h {
+        (x.clone(), widen(&y, x_span / w * h))
+    } else {
+        (widen(&x, y_span / h * w), y)
+    }
+}
+
 impl Panel {
+    /// The plotting area's size (px) that this panel's axes leave on an area of `dims`
+    /// pixels: laid out once on a scratch SVG, as [`Panel::axes`] lays it out.
+    fn plotting_size(&self, dims: (u32, u32)) -> Result<(i32, i32)> {
+        let mut scratch = String::new();
+        let area = SVGBackend::with_string(&mut scratch, dims).into_drawing_area();
+        let chart = self.axes(&area, 0.0..1.0, 0.0..1.0, false)?;
+        let (xs, ys) = chart.plotting_area().get_pixel_range();
+        Ok((xs.end - xs.start, ys.end - ys.start))
+    }
+
     /// The chart's axes, title and grid on `area`.
     pub(super) fn axes<'a, DB: DrawingBackend + 'a>(
         &self,
@@ -115,6 +145,12 @@ impl Panel {
     {
         let error = |e: DrawingAreaErrorKind<DB::ErrorType>| anyhow!("plot drawing failed: {e}");
         let (x_range, y_range) = self.ranges();
+        let (x_range, y_range) = if self.equal_aspect {
+            let size = self.plotting_size(area.dim_in_pixel())?;
+            equal_aspect_ranges(x_range, y_range, size)
+        } else {
+            (x_range, y_range)
+        };
         let mut chart = self.axes(area, x_range.clone(), y_range.clone(), false)?;
         let (xs, ys) = chart.plotting_area().get_pixel_range();
         let plot = PixelRect {

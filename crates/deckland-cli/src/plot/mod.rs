@@ -35,13 +35,13 @@ pub(crate) mod step;
 mod style;
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;
 mod ticks;
 
 pub use figure::Figure;
 pub use legend::MarkerShape;
 pub use panel::{BarGroup, Panel};
-pub(crate) use style::{DECK_COLOUR, FONT_BYTES, FONT_FAMILY};
+pub(crate) use style::{DECK_COLOUR, FONT_BYTES, FONT_FAMILY, SHIP_COLOUR};
 
 /// `value` with its sign, a true minus for negative values: "+10", "−25".
 pub(crate) fn signed(value: f64) -> String {

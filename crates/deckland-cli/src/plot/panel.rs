@@ -90,6 +90,8 @@ pub struct Panel {
     pub(super) x_limits: Option<Range<f64>>,
     /// The legend is that of another panel of the figure: none is drawn here.
     pub(super) shared_legend: bool,
+    /// A metre on the x axis is as long as a metre on the y axis (a map, to scale).
+    pub(super) equal_aspect: bool,
 }
 
 /// Where a panel's legend went: `Some(width)` when it needs the column beside the axes.
@@ -256,6 +258,13 @@ impl Panel {
     /// says so (its title, or the figure's).
     pub fn shared_legend(mut self) -> Self {
         self.shared_legend = true;
+        self
+    }
+
+    /// Draws the axes to one scale, as a map: the y range (or, when the data need more,
+    /// the x range) widens about its centre until a unit is as many pixels on both.
+    pub fn equal_aspect(mut self) -> Self {
+        self.equal_aspect = true;
         self
     }
 

@@ -43,6 +43,8 @@ pub(super) const MARKER_COLOURS: [RGBColor; 4] = [
 
 /// Colour of the ship's deck in pictures of the landing.
 pub(crate) const DECK_COLOUR: RGBColor = RGBColor(60, 60, 60);
+/// The ship's flight-deck outline in the plan view: a light grey under the deck's lines.
+pub(crate) const SHIP_COLOUR: RGBColor = RGBColor(150, 150, 150);
 
 /// Colour of vertical reference lines and their labels.
 pub(super) const VERTICAL_LINE_COLOUR: RGBColor = RGBColor(90, 90, 90);

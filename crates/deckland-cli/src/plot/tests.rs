@@ -6,7 +6,7 @@ use super::style::*;
 use super::*;
 
 /// Registers the bundled font (for tests that measure text).
-pub(super) fn register() {
+pub(crate) fn register() {
     register_bundled_font().expect("the bundled font registers");
 }
 

@@ -8,8 +8,9 @@ use deckland::scenario::Scenario;
 use deckland::simulation::lateral::touchdown::MAX_OFF_CENTRE_M;
 use deckland::simulation::{SignalId, Signals};
 
+use super::ship_outline::ShipAxes;
 use super::{series, Shown, TIME};
-use crate::plot::{Figure, MarkerShape, Panel, DECK_COLOUR};
+use crate::plot::{Figure, MarkerShape, Panel, DECK_COLOUR, SHIP_COLOUR};
 
 /// Length of the approach the plan view shows (m).
 const PLAN_VIEW_M: f64 = 1000.0;
@@ -82,7 +83,8 @@ pub(super) fn figures(
 /// as the deck moved, in earth axes with the origin at the aim point at the moment that
 /// decided the outcome (touchdown, or the end of the run); the angled landing area from
 /// the ramp to past the last wire at that moment, and the touchdown point. Two panels:
-/// the last 1000 m, and a close-up from 190 m aft of the ramp.
+/// the last 1000 m, and a close-up from 190 m aft of the ramp to the bow with the ship's
+/// flight deck drawn to scale at that moment (`ship_outline`) and the ramp.
 fn plan_view(run: &ApproachRun, scenario: &Scenario, title: &str) -> Figure {
     let deck = &scenario.environment.deck;
     let samples = &run.samples;
@@ -118,13 +120,20 @@ fn plan_view(run: &ApproachRun, scenario: &Scenario, title: &str) -> Figure {
         .iter()
         .map(|&s_m| relative(line.point(s_m)))
         .collect();
+    // The flight deck at the moment, to scale, and the ramp on its stern.
+    let axes = ShipAxes::new(line.aim, line.heading_rad, deck);
+    let outline: Vec<(f64, f64)> = axes.outline().into_iter().map(relative).collect();
+    let bow_m = outline.iter().map(|p| p.0).fold(f64::MIN, f64::max);
+    let ramp = relative(line.point(ramp_s));
     let touchdown = run
         .summary
         .touchdown
         .and_then(|t| sample_at(samples, t.time_s))
         .and_then(hook)
         .map(relative);
-    let panel = |heading: String, from_m: f64| {
+    // The flight deck is drawn in the close-up only; the overview lists it (no points) so
+    // that both panels draw the same series in the same colours under one legend.
+    let panel = |heading: String, from_m: f64, to_m: f64, deck_outline: Vec<(f64, f64)>| {
         let in_view = |points: &[(f64, f64)]| -> Vec<(f64, f64)> {
             points
                 .iter()
@@ -137,7 +146,7 @@ fn plan_view(run: &ApproachRun, scenario: &Scenario, title: &str) -> Figure {
             "earth x along the final bearing from the aim point (m)",
             "earth y from the aim point (m, positive right)",
         )
-        .x_limits(from_m..forward_s + 10.0)
+        .x_limits(from_m..to_m)
         .series("hook", in_view(&track))
         .styled_series(
             "landing centreline abeam the hook, as it moved",
@@ -150,7 +159,13 @@ fn plan_view(run: &ApproachRun, scenario: &Scenario, title: &str) -> Figure {
             landing_area.clone(),
             DECK_COLOUR,
         )
-        .scatter("wires 1–4 on the centreline", wires.clone());
+        .coloured_series(
+            "flight deck then, to scale (Nimitz, 333 × 77 m)",
+            deck_outline,
+            SHIP_COLOUR,
+        )
+        .scatter("wires 1–4 on the centreline", wires.clone())
+        .marker("ramp", ramp, MarkerShape::Triangle);
         if let Some(point) = touchdown {
             panel = panel.marker("touchdown", point, MarkerShape::Circle);
         }
@@ -158,14 +173,22 @@ fn plan_view(run: &ApproachRun, scenario: &Scenario, title: &str) -> Figure {
     };
     Figure::new()
         .title(format!("Plan view — {title}"))
-        .panel(panel(format!("The last {PLAN_VIEW_M:.0} m"), -PLAN_VIEW_M))
+        .panel(panel(
+            format!("The last {PLAN_VIEW_M:.0} m"),
+            -PLAN_VIEW_M,
+            forward_s + 10.0,
+            Vec::new(),
+        ))
         .panel(
             panel(
                 format!(
-                    "Over the deck: {CLOSE_UP_AFT_OF_RAMP_M:.0} m aft of the ramp (legend above)"
+                    "Over the deck, to scale: {CLOSE_UP_AFT_OF_RAMP_M:.0} m aft of the ramp to the bow (legend above)"
                 ),
                 ramp_s - CLOSE_UP_AFT_OF_RAMP_M,
+                bow_m + 10.0,
+                outline,
             )
+            .equal_aspect()
             .shared_legend(),
         )
         .panel_height(400)
@@ -219,4 +242,104 @@ fn cross_track(run: &ApproachRun, title: &str) -> Figure {
                     series(samples, SignalId::Sideslip, Shown::Degrees),
                 ),
         )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use deckland::experiments::fly_approach;
+
+    /// The points of an SVG element's `points="x,y x,y …"` attribute.
+    fn points(element: &str) -> Vec<(f64, f64)> {
+        let Some(start) = element.find("points=\"") else {
+            return Vec::new();
+        };
+        let rest = &element[start + 8..];
+        rest[..rest.find('"').unwrap_or(rest.len())]
+            .split_whitespace()
+            .filter_map(|pair| {
+                let (x, y) = pair.split_once(',')?;
+                Some((x.parse().ok()?, y.parse().ok()?))
+            })
+            .collect()
+    }
+
+    /// The SVG elements `<tag …>` of `svg` that hold `needle`.
+    fn elements<'a>(svg: &'a str, tag: &str, needle: &str) -> Vec<&'a str> {
+        svg.split('<')
+            .filter(|e| e.starts_with(tag) && e.contains(needle))
+            .collect()
+    }
+
+    /// The distance (px) from `p` to the segment from `a` to `b`.
+    fn to_segment(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
+        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+        let t = (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / (dx * dx + dy * dy)).clamp(0.0, 1.0);
+        (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
+    }
+
+    /// Whether pixel `p` is inside the closed polygon `outline` (even-odd rule).
+    fn inside(p: (f64, f64), outline: &[(f64, f64)]) -> bool {
+        let mut inside = false;
+        for pair in outline.windows(2) {
+            let ((x0, y0), (x1, y1)) = (pair[0], pair[1]);
+            if (y0 > p.1) != (y1 > p.1) && p.0 < x0 + (p.1 - y0) * (x1 - x0) / (y1 - y0) {
+                inside = !inside;
+            }
+        }
+        inside
+    }
+
+    /// Issue 44's target: in the rendered plan view the ramp's marker stands on the
+    /// flight deck's stern edge within a pixel, and the four wires' dots are on the deck,
+    /// read back from the SVG's pixels (the default approach, seed 1, traps).
+    #[test]
+    fn the_ramp_and_the_wires_are_on_the_drawn_deck_within_a_pixel() {
+        crate::plot::tests::register();
+        let scenario = Scenario::default();
+        let run = fly_approach(&scenario).expect("flies");
+        let svg = plan_view(&run, &scenario, "test")
+            .render_svg()
+            .expect("renders");
+        let grey = format!(
+            "stroke=\"#{:02X}{:02X}{:02X}\"",
+            SHIP_COLOUR.0, SHIP_COLOUR.1, SHIP_COLOUR.2
+        );
+        let outline = elements(&svg, "polyline", &grey)
+            .into_iter()
+            .map(points)
+            .find(|p| p.len() == super::super::ship_outline::FLIGHT_DECK_OUTLINE.len())
+            .expect("the flight deck is drawn");
+        // The close-up's ramp marker: the lowest of the black triangles (the overview's and
+        // the legend's are above it); its centre is the apex plus the half base.
+        let ramp = elements(&svg, "polygon", "fill=\"#000000\"")
+            .into_iter()
+            .map(points)
+            .filter(|p| p.len() == 3)
+            .map(|p| (p[0].0, p[0].1 + 0.5 * (p[2].0 - p[1].0)))
+            .max_by(|a, b| a.1.total_cmp(&b.1))
+            .expect("the ramp is marked");
+        let stern = to_segment(ramp, outline[0], outline[1]);
+        assert!(stern <= 1.0, "the ramp is {stern} px off the stern edge");
+        // The wires' dots in the close-up (below the overview's bottom edge): on the deck.
+        let top = outline.iter().map(|p| p.1).fold(f64::MAX, f64::min);
+        let wires: Vec<(f64, f64)> = elements(&svg, "circle", "r=\"3\"")
+            .into_iter()
+            .filter_map(|e| {
+                let number = |key: &str| -> Option<f64> {
+                    let rest = &e[e.find(key)? + key.len()..];
+                    rest[..rest.find('"')?].parse().ok()
+                };
+                Some((number("cx=\"")?, number("cy=\"")?))
+            })
+            .filter(|p| p.1 > top)
+            .collect();
+        assert_eq!(wires.len(), 4, "{wires:?}");
+        for wire in wires {
+            assert!(
+                inside(wire, &outline),
+                "wire at {wire:?} px is off the deck"
+            );
+        }
+    }
 }

@@ -10,6 +10,7 @@ mod controls;
 mod glide_path_error;
 mod lineup;
 mod pitch;
+mod ship_outline;
 mod wind;
 
 use deckland::environment::STEADY_WAKE_EXTENT_M;
