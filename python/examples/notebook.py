@@ -123,12 +123,12 @@ print(f"Python PD pitch law ({len(approach.events)} events): {summary['outcome']
 
 # %% [markdown]
 # ## A campaign, into pandas
-# 40 approaches of the heavy-sea scenario file with its dispersions, under O-PD and PID
-# on the same seeds (`deckland campaign scenarios/heavy-sea.toml --runs 40 --compare`).
+# 40 approaches of the carrier in sea state 6, under O-PD and PID on the same seeds
+# (`deckland campaign scenarios/sea-state-6.toml --runs 40 --compare`).
 
 # %%
 here = os.path.dirname(os.path.abspath(__file__)) if "__file__" in globals() else os.getcwd()
-scenario_file = os.path.join(here, "..", "..", "scenarios", "heavy-sea.toml")
+scenario_file = os.path.join(here, "..", "..", "scenarios", "sea-state-6.toml")
 campaign_scenario = deckland.Scenario.from_file(scenario_file) if os.path.exists(scenario_file) else heavy
 result = deckland.campaign(campaign_scenario, runs=40, seed=7, compare=True)
 print(result)
