@@ -81,7 +81,9 @@ impl Panel {
                 x_labels.format(*x)
             }
         };
-        let y_format = |y: &f64| y_labels.format(*y);
+        let downward = self.y_downward;
+        // + 0.0 turns −0 into 0: the axis never labels "−0".
+        let y_format = move |y: &f64| y_labels.format(if downward { -*y + 0.0 } else { *y });
         let mut mesh = chart.configure_mesh();
         if categories {
             mesh.disable_x_mesh().x_labels(self.categories.len().max(1));

@@ -92,6 +92,9 @@ pub struct Panel {
     pub(super) shared_legend: bool,
     /// A metre on the x axis is as long as a metre on the y axis (a map, to scale).
     pub(super) equal_aspect: bool,
+    /// The y values are given negated so that y grows downward; the labels say the
+    /// values themselves (a map seen from above with y to the right of x).
+    pub(super) y_downward: bool,
 }
 
 /// Where a panel's legend went: `Some(width)` when it needs the column beside the axes.
@@ -265,6 +268,13 @@ impl Panel {
     /// the x range) widens about its centre until a unit is as many pixels on both.
     pub fn equal_aspect(mut self) -> Self {
         self.equal_aspect = true;
+        self
+    }
+
+    /// Draws y growing downward, as a map from above with y to the right of x: the
+    /// caller gives every y negated (−y) and the axis labels the values themselves.
+    pub fn y_downward(mut self) -> Self {
+        self.y_downward = true;
         self
     }
 

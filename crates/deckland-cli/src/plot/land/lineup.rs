@@ -98,7 +98,9 @@ fn plan_view(run: &ApproachRun, scenario: &Scenario, title: &str) -> Figure {
         return Figure::new().title(format!("Plan view — {title}"));
     };
     let origin = line.aim;
-    let relative = |(x, y): (f64, f64)| (x - origin.0, y - origin.1);
+    // Seen from above with x along the final bearing to the right, y (to the right of the
+    // bearing) points down the page: every y is drawn negated (`Panel::y_downward`).
+    let relative = |(x, y): (f64, f64)| (x - origin.0, origin.1 - y);
     let track: Vec<(f64, f64)> = samples.iter().filter_map(hook).map(relative).collect();
     let centreline: Vec<(f64, f64)> = samples
         .iter()
@@ -144,8 +146,9 @@ fn plan_view(run: &ApproachRun, scenario: &Scenario, title: &str) -> Figure {
         let mut panel = Panel::new(
             heading,
             "earth x along the final bearing from the aim point (m)",
-            "earth y from the aim point (m, positive right)",
+            "earth y from the aim point (m, right of the bearing, down)",
         )
+        .y_downward()
         .x_limits(from_m..to_m)
         .series("hook", in_view(&track))
         .styled_series(
