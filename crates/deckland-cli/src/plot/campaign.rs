@@ -136,7 +136,8 @@ pub(crate) fn figures(folder: &CampaignFolder) -> Vec<(&'static str, Figure)> {
 
 /// A 3-D campaign's touchdowns on the deck seen from above: along the landing area's
 /// centreline from the aim point against the hook's offset from it, with the wires, the
-/// centreline and the off-centre limit; `None` for a 3-DOF campaign.
+/// centreline and the off-centre limit, the offset to the right drawn down the page as seen
+/// from above (`Panel::y_downward`); `None` for a 3-DOF campaign.
 fn touchdown_plan(folder: &CampaignFolder, labels: &[&str]) -> Option<Figure> {
     let lateral = folder.lateral_rows.as_ref()?;
     let statistics = folder.report.lateral.as_ref()?;
@@ -145,8 +146,9 @@ fn touchdown_plan(folder: &CampaignFolder, labels: &[&str]) -> Option<Figure> {
     let mut panel = Panel::new(
         "Touchdown points on the landing area, from above",
         "touchdown along the centreline from the aim point (m, positive forward)",
-        "offset from the centreline (m, positive right)",
-    );
+        "offset from the centreline (m, right of it, down)",
+    )
+    .y_downward();
     let (mut low, mut high) = (deck.wire_positions_m[0], deck.wire_positions_m[3]);
     for label in labels {
         let points: Vec<(f64, f64)> = folder
@@ -155,6 +157,7 @@ fn touchdown_plan(folder: &CampaignFolder, labels: &[&str]) -> Option<Figure> {
             .zip(lateral)
             .filter(|(row, _)| row.controller == *label)
             .filter_map(|(row, values)| row.touchdown_distance_m.zip(values.touchdown.0))
+            .map(|(x, offset)| (x, -offset))
             .collect();
         for (x, _) in &points {
             (low, high) = (low.min(*x), high.max(*x));
