@@ -46,7 +46,7 @@ enum Kind {
 }
 
 /// The columns' kinds by name; a column not listed here is [`Kind::Real`].
-const COLUMN_KINDS: [(&str, Kind); 8] = [
+const COLUMN_KINDS: [(&str, Kind); 9] = [
     ("run_index", Kind::Integer),
     ("seed", Kind::Integer),
     ("controller", Kind::Text),
@@ -55,6 +55,7 @@ const COLUMN_KINDS: [(&str, Kind); 8] = [
     ("off_centre", Kind::Boolean),
     ("lso_grade", Kind::Text),
     ("lso_comment", Kind::Text),
+    ("wave_off_criterion", Kind::Text),
 ];
 
 fn kind_of(name: &str) -> Kind {

@@ -45,12 +45,13 @@ fn one_and_two_threads_write_byte_identical_runs_csv() {
         assert_eq!(summary["finished_runs"], 20);
         // A 3-DOF campaign has neither lateral nor trap-sheet columns or statistics.
         let text = String::from_utf8(csv[csv.len() - 1].clone()).unwrap();
-        // (The LSO's grade, the last columns, follows `reason` directly.)
+        // (The LSO's grade and the wave-off's criterion, the last columns, follow
+        // `reason` directly.)
         assert!(text
             .lines()
             .next()
             .unwrap()
-            .ends_with(",reason,lso_grade,lso_points,lso_comment"));
+            .ends_with(",reason,lso_grade,lso_points,lso_comment,wave_off_criterion"));
         assert!(summary.get("trap_sheet").is_none() && summary.get("lateral").is_none());
         let opd = &summary["controllers"][0];
         assert_eq!(opd["controller"], "O-PD");
@@ -521,8 +522,13 @@ fn a_default_campaign_grades_every_pass_and_prints_the_greenie_board() {
     let header: Vec<String> = reader.headers().unwrap().iter().map(String::from).collect();
     let n = header.len();
     assert_eq!(
-        header[n - 3..],
-        ["lso_grade", "lso_points", "lso_comment"],
+        header[n - 4..],
+        [
+            "lso_grade",
+            "lso_points",
+            "lso_comment",
+            "wave_off_criterion"
+        ],
         "{header:?}"
     );
     let grades = ["ok", "fair", "bolter", "no_grade", "own_wave_off", "cut"];
@@ -530,9 +536,18 @@ fn a_default_campaign_grades_every_pass_and_prints_the_greenie_board() {
     for record in reader.records() {
         let record = record.unwrap();
         rows += 1;
-        assert!(grades.contains(&&record[n - 3]), "{record:?}");
-        let points: f64 = record[n - 2].parse().unwrap();
+        assert!(grades.contains(&&record[n - 4]), "{record:?}");
+        let points: f64 = record[n - 3].parse().unwrap();
         assert!((0.0..=4.0).contains(&points), "{record:?}");
+        // The wave-off's criterion: the name the reason gives, else empty.
+        let criterion = &record[n - 1];
+        let reason = &record[header.iter().position(|h| h == "reason").unwrap()];
+        assert_eq!(
+            criterion.is_empty(),
+            !reason.contains("wave-off at t = "),
+            "{record:?}"
+        );
+        assert!(criterion.is_empty() || reason.contains(&format!(" on {criterion}:")));
     }
     assert_eq!(rows, 6);
     let summary: Value =

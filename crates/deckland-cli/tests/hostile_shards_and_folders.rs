@@ -256,8 +256,8 @@ fn regression_d8_rows_no_campaign_writes_are_refused_by_file_row_and_column() {
                     .collect();
                 fs::write(&path, text).unwrap();
             },
-            // The last column, the LSO's comment since issue 44.
-            &["runs.csv", "line 1", "`lso_comment` is missing"],
+            // The last column, the wave-off's criterion since issue 46.
+            &["runs.csv", "line 1", "`wave_off_criterion` is missing"],
         ),
         (
             "zero-runs",

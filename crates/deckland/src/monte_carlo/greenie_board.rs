@@ -198,6 +198,7 @@ mod tests {
             lso_grade: grade.map(|g| g.0.to_owned()),
             lso_points: grade.map(|g| g.1),
             lso_comment: comment.map(str::to_owned),
+            wave_off_criterion: None,
         }
     }
 

@@ -71,7 +71,9 @@ pub use rare_events::{
     RunsNeeded, DEFAULT_TARGET_RATE, UPPER_BOUND_CONFIDENCE, UPPER_BOUND_METHOD,
 };
 pub use record::{RunFailure, RunRecord};
-pub use row::{RowError, RunRow, CAMPAIGN_OUTCOMES, LSO_RUN_COLUMNS, RANGES, RUN_COLUMNS};
+pub use row::{
+    wave_off_criterion, RowError, RunRow, CAMPAIGN_OUTCOMES, LSO_RUN_COLUMNS, RANGES, RUN_COLUMNS,
+};
 pub use run_scenario::dispersed_run_scenario;
 pub use runs_csv::{parse_runs_csv, runs_csv_text, ParsedRuns};
 pub use seeds::{run_seed, splitmix64_mix, SPLITMIX64_GAMMA};

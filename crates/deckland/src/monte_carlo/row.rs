@@ -21,6 +21,7 @@ use std::borrow::Cow;
 use serde::{Deserialize, Serialize};
 
 use super::record::RunRecord;
+use crate::control::WaveOffCriterion;
 use crate::metrics::lso_grade::{parse_comment, Grade};
 use crate::parameters::readable_number;
 use crate::simulation::{Outcome, SIGNAL_MAGNITUDE_LIMIT};
@@ -52,11 +53,25 @@ pub const RUN_COLUMNS: [&str; 23] = [
     "reason",
 ];
 
-/// The columns of the landing signal officer's grade, after every other column of
-/// `runs.csv` (after a 3-D campaign's lateral columns too): the fields of [`RunRow`] after
-/// `reason`. Empty for a run with no grade (one that never flew) and, for the comment,
-/// for a pass with no deviation.
-pub const LSO_RUN_COLUMNS: [&str; 3] = ["lso_grade", "lso_points", "lso_comment"];
+/// The columns of the landing signal officer's grade and the wave-off's criterion, after
+/// every other column of `runs.csv` (after a 3-D campaign's lateral columns too): the
+/// fields of [`RunRow`] after `reason`. The grade's are empty for a run with no grade (one
+/// that never flew) and, for the comment, for a pass with no deviation; the criterion
+/// ([`WaveOffCriterion::name`]) is empty unless the aircraft waved off.
+pub const LSO_RUN_COLUMNS: [&str; 4] = [
+    "lso_grade",
+    "lso_points",
+    "lso_comment",
+    "wave_off_criterion",
+];
+
+/// The criterion a run's reason names for its wave-off ("… wave-off at t = 23.10 s on
+/// ramp_strike_probability: …"), if it waved off.
+pub fn wave_off_criterion(reason: &str) -> Option<WaveOffCriterion> {
+    let after = &reason[reason.find("wave-off at t = ")?..];
+    let name = after[after.find(" on ")? + 4..].split(':').next()?;
+    WaveOffCriterion::ALL.into_iter().find(|c| c.name() == name)
+}
 
 /// The outcomes a campaign's row can hold: an approach's [`Outcome`] (a campaign flies
 /// approaches, never a fixed-length `completed` run), `invalid` (the dispersed scenario
@@ -197,6 +212,9 @@ pub struct RunRow<'a> {
     pub lso_points: Option<f64>,
     /// The LSO's comment in shorthand (`(LUL)X _H_IM LOIC`); `None` for no deviation.
     pub lso_comment: Option<String>,
+    /// The criterion that called the run's wave-off ([`WaveOffCriterion::name`]); `None`
+    /// if it did not wave off.
+    pub wave_off_criterion: Option<String>,
 }
 
 impl<'a> RunRow<'a> {
@@ -241,6 +259,11 @@ impl<'a> RunRow<'a> {
             lso_grade: graded.map(|g| g.grade.name().to_owned()),
             lso_points: graded.map(|g| g.points),
             lso_comment: graded.map(|g| g.comment.clone()).filter(|c| !c.is_empty()),
+            wave_off_criterion: record
+                .failure_reason()
+                .as_deref()
+                .and_then(wave_off_criterion)
+                .map(|c| c.name().to_owned()),
         }
     }
 
@@ -282,7 +305,25 @@ impl<'a> RunRow<'a> {
         self.check_flight_columns()?;
         self.check_touchdown_columns()?;
         self.check_reason()?;
-        self.check_lso_grade()
+        self.check_lso_grade()?;
+        self.check_wave_off_criterion()
+    }
+
+    /// The criterion is one of [`WaveOffCriterion::ALL`], and the one the reason names.
+    fn check_wave_off_criterion(&self) -> Result<(), RowError> {
+        let named = self.reason.as_deref().and_then(wave_off_criterion);
+        match (self.wave_off_criterion.as_deref(), named) {
+            (None, None) => Ok(()),
+            (Some(given), Some(named)) if given == named.name() => Ok(()),
+            (given, named) => Err(row_error(
+                "wave_off_criterion",
+                given.map_or_else(|| "empty".to_owned(), |g| format!("{g:?}")),
+                &match named {
+                    Some(named) => format!("`{}`, the criterion the reason names", named.name()),
+                    None => "empty: the reason names no wave-off".to_owned(),
+                },
+            )),
+        }
     }
 
     /// The grade is one of [`Grade::ALL`] with its own points, the comment one

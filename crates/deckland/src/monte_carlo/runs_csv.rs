@@ -199,7 +199,7 @@ fn check_header(errors: &CsvErrors, columns: &[&str], expected: &[&str]) -> Resu
             1,
             format!(
                 "the columns `{}` are missing: the shard was written by a deckland that did \
-                 not grade passes yet; fly it again with this version",
+                 not grade passes or name wave-off criteria yet; fly it again with this version",
                 LSO_RUN_COLUMNS.join("`, `")
             ),
         ));
@@ -361,7 +361,9 @@ mod tests {
         let old = format!("{}\n", RUN_COLUMNS.join(","));
         let error = parse_runs_csv("s1/runs.csv", &old).unwrap_err().to_string();
         assert!(
-            error.contains("`lso_grade`, `lso_points`, `lso_comment` are missing"),
+            error.contains(
+                "`lso_grade`, `lso_points`, `lso_comment`, `wave_off_criterion` are missing"
+            ),
             "{error}"
         );
         let new = format!("{},{}\n", RUN_COLUMNS.join(","), LSO_RUN_COLUMNS.join(","));

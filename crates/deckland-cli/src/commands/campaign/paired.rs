@@ -134,6 +134,7 @@ mod tests {
             lso_grade: None,
             lso_points: None,
             lso_comment: None,
+            wave_off_criterion: None,
         }
     }
 

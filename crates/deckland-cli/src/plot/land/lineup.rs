@@ -281,18 +281,6 @@ mod tests {
         (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
     }
 
-    /// Whether pixel `p` is inside the closed polygon `outline` (even-odd rule).
-    fn inside(p: (f64, f64), outline: &[(f64, f64)]) -> bool {
-        let mut inside = false;
-        for pair in outline.windows(2) {
-            let ((x0, y0), (x1, y1)) = (pair[0], pair[1]);
-            if (y0 > p.1) != (y1 > p.1) && p.0 < x0 + (p.1 - y0) * (x1 - x0) / (y1 - y0) {
-                inside = !inside;
-            }
-        }
-        inside
-    }
-
     /// Issue 44's target: in the rendered plan view the ramp's marker stands on the
     /// flight deck's stern edge within a pixel, and the four wires' dots are on the deck,
     /// read back from the SVG's pixels (the default approach, seed 1, traps).
@@ -340,7 +328,7 @@ mod tests {
         assert_eq!(wires.len(), 4, "{wires:?}");
         for wire in wires {
             assert!(
-                inside(wire, &outline),
+                super::super::ship_outline::inside_polygon(wire, &outline),
                 "wire at {wire:?} px is off the deck"
             );
         }

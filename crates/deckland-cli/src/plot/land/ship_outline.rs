@@ -95,8 +95,15 @@ impl ShipAxes {
 /// Whether ship-axes point `p` is inside the outline (even-odd rule).
 #[cfg(test)]
 pub(crate) fn inside_outline(p: (f64, f64)) -> bool {
+    inside_polygon(p, &FLIGHT_DECK_OUTLINE)
+}
+
+/// Whether `p` is inside the closed polygon `polygon` (even-odd rule; the first point
+/// repeated last).
+#[cfg(test)]
+pub(crate) fn inside_polygon(p: (f64, f64), polygon: &[(f64, f64)]) -> bool {
     let mut inside = false;
-    for pair in FLIGHT_DECK_OUTLINE.windows(2) {
+    for pair in polygon.windows(2) {
         let ((x0, y0), (x1, y1)) = (pair[0], pair[1]);
         if (y0 > p.1) != (y1 > p.1) && p.0 < x0 + (p.1 - y0) * (x1 - x0) / (y1 - y0) {
             inside = !inside;

@@ -342,6 +342,21 @@ pub enum WaveOffCriterion {
 }
 
 impl WaveOffCriterion {
+    /// Every criterion, in the order of the decision's checks.
+    pub const ALL: [WaveOffCriterion; 11] = [
+        Self::FoulDeckMotion,
+        Self::RampStrikeProbability,
+        Self::HardLandingProbability,
+        Self::RampClearance,
+        Self::TouchdownSinkRate,
+        Self::GlidePathError,
+        Self::GlidePathErrorRate,
+        Self::DeckPitch,
+        Self::LandingPointDisplacement,
+        Self::OffCentreProbability,
+        Self::LineupDriftRate,
+    ];
+
     /// The criterion's name, as written to files.
     pub fn name(self) -> &'static str {
         match self {

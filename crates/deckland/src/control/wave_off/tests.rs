@@ -363,3 +363,59 @@ fn the_heavy_sea_keys_outside_their_range_are_refused_by_name() {
         assert_eq!(error.value, value);
     }
 }
+
+/// `calm()` at `time_to_go_s` with the deck forecast pitched `pitch_deg` and the landing
+/// point moving at `climb_rate_mps`.
+fn deck_moving(time_to_go_s: f64, pitch_deg: f64, climb_rate_mps: f64) -> WaveOffInputs {
+    let mut inputs = calm();
+    inputs.time_to_go_s = time_to_go_s;
+    inputs.forecast.pitch_rad = pitch_deg.to_radians();
+    inputs.forecast.landing_point_climb_rate_mps = climb_rate_mps;
+    inputs
+}
+
+/// The recovery limits are the summary's numbers: 35 ft and 8 ft in metres, the lens's
+/// angles.
+#[test]
+fn the_recovery_limits_are_35_ft_8_ft_in_4_s_and_the_lens_angles() {
+    const FOOT_M: f64 = 0.3048;
+    let limits = RecoveryLimits::default();
+    assert!((limits.total_deck_motion_m - 35.0 * FOOT_M).abs() < 1e-12);
+    assert!((limits.deck_motion_in_window_m - 8.0 * FOOT_M).abs() < 1e-12);
+    assert_eq!(
+        (limits.lens_pitch_limit_deg, limits.lens_roll_limit_deg),
+        (1.62, 8.19)
+    );
+}
+
+/// Far out, a deck forecast pitched beyond the lens's 1.62° fouls the deck; inside the
+/// limits, in the wave-off window (where the ordinary criteria decide), before the check
+/// starts, or with the check off, it does not.
+#[test]
+fn a_deck_beyond_the_lens_fouls_the_deck_only_far_out() {
+    let on = WaveOffParameters {
+        recovery: RecoveryLimits {
+            foul_deck_time_to_go_s: 10.0,
+            ..RecoveryLimits::default()
+        },
+        ..WaveOffParameters::default()
+    };
+    let decision = on
+        .decide_foul_deck(&deck_moving(8.0, 2.0, 0.0))
+        .expect("foul deck");
+    assert_eq!(decision.criterion, WaveOffCriterion::FoulDeckMotion);
+    assert!((decision.value - 100.0 * 2.0 / 1.62).abs() < 1e-9);
+    assert_eq!(on.decide_foul_deck(&deck_moving(8.0, 1.5, 0.0)), None);
+    assert_eq!(on.decide_foul_deck(&deck_moving(3.0, 2.0, 0.0)), None);
+    assert_eq!(on.decide_foul_deck(&deck_moving(11.0, 2.0, 0.0)), None);
+    let off = WaveOffParameters {
+        recovery: RecoveryLimits::named_by_none(),
+        ..on
+    };
+    assert_eq!(off.decide_foul_deck(&deck_moving(8.0, 2.0, 0.0)), None);
+    // 0.7 m/s over 4 s is 2.8 m, beyond 8 ft.
+    let moving = on
+        .decide_foul_deck(&deck_moving(8.0, 0.0, -0.7))
+        .expect("foul deck");
+    assert!((moving.value - 100.0 * 2.8 / 2.4384).abs() < 1e-9);
+}
