@@ -121,6 +121,25 @@ fn a_file_naming_no_model_flies_the_filters_and_the_seaway_refuses_what_it_sets(
     );
     let period = refusal("[environment.seaway]\npeak_period_s = 40.0\n");
     assert!(period.contains("peak_period_s"), "{period}");
+    // A sea-state number from the table, alone: not 9, not beside the keys it sets.
+    let numbered = load_scenario(
+        "[environment.ship]\nmodel = \"seaway\"\n[environment.seaway]\nsea_state = 6\n",
+        "six.toml",
+    )
+    .expect("valid");
+    let six = SeawayParameters::sea_state(6).expect("in the table");
+    assert_eq!(
+        numbered
+            .environment
+            .seaway
+            .resolved()
+            .expect("in the table"),
+        six
+    );
+    let nine = refusal("[environment.seaway]\nsea_state = 9\n");
+    assert!(nine.contains("environment.seaway.sea_state"), "{nine}");
+    let both = refusal("[environment.seaway]\nsea_state = 5\npeak_period_s = 9.0\n");
+    assert!(both.contains("environment.seaway.peak_period_s"), "{both}");
     let unknown = load_scenario("[environment.ship]\nmodel = \"swell\"\n", "s.toml")
         .expect_err("not a model");
     assert!(unknown.to_string().contains("model"), "{unknown}");

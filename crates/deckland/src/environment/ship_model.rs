@@ -89,8 +89,8 @@ impl ShipModel for SeawayShip {
         ship: &ShipMotionParameters,
         seaway: &SeawayParameters,
     ) -> Result<ShipMotionShape, ParameterError> {
-        // The hull steams at the scenario's ship speed.
-        let mut seaway = *seaway;
+        // The hull steams at the scenario's ship speed; a sea-state number sets H_s and T_p.
+        let mut seaway = seaway.resolved().map_err(seaway_error)?;
         seaway.hull.speed_mps = ship.forward_speed_mps;
         let fitted = fitted_for_unit_height(&seaway).map_err(seaway_error)?;
         // Every motion is linear in the wave amplitude: RMS ∝ H_s at a fixed shape.

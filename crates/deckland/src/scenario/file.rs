@@ -461,6 +461,29 @@ fn finish_scenario(
         });
     }
 
+    // A sea-state number sets H_s and T_p: written beside either, the file says two seas.
+    if in_file("environment.seaway.sea_state") {
+        if let Some(key) = ["significant_wave_height_m", "peak_period_s"]
+            .iter()
+            .map(|key| format!("environment.seaway.{key}"))
+            .find(|path| in_file(path))
+        {
+            let line = index
+                .keys
+                .iter()
+                .find(|k| k.path == key)
+                .map(|k| line_of(text, k.span.start));
+            return Err(ScenarioError::Structure {
+                file: file_name.to_owned(),
+                line,
+                field: key,
+                message: "set by `environment.seaway.sea_state` from the sea-state table: \
+                          leave one of them out"
+                    .to_owned(),
+            });
+        }
+    }
+
     // A file on the paper's hardware takes the paper's values for what it leaves out.
     let scenario = match scenario.with_set_defaults(in_file) {
         Ok(scenario) => scenario,

@@ -112,6 +112,11 @@ pub enum SeawayError {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct SeawayParameters {
+    /// A sea state of [`SEA_STATE_TABLE`] (3–6), whose H_s and T_p the sea then takes in
+    /// place of `significant_wave_height_m` and `peak_period_s` ([`Self::resolved`]);
+    /// none by default (the two keys set the sea).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sea_state: Option<u8>,
     /// The spectrum's shape; default Pierson–Moskowitz (ITTC two-parameter).
     pub spectrum: SpectrumShape,
     /// Significant wave height H_s (m), in (0, 15]; default 3.25 (sea state 5).
@@ -142,6 +147,7 @@ impl SeawayParameters {
     pub fn sea_state(sea_state: u8) -> Result<Self, SeawayError> {
         let row = sea_state_row(sea_state)?;
         Ok(Self {
+            sea_state: None,
             spectrum: SpectrumShape::PiersonMoskowitz,
             significant_wave_height_m: row.significant_wave_height_m,
             peak_period_s: row.modal_period_s,
@@ -161,10 +167,29 @@ impl SeawayParameters {
         )
     }
 
+    /// These parameters with `sea_state`'s H_s and T_p in place of the two keys when it is
+    /// set (and `sea_state` then cleared); refuses a number not in the table.
+    pub fn resolved(&self) -> Result<Self, SeawayError> {
+        let Some(sea_state) = self.sea_state else {
+            return Ok(*self);
+        };
+        let row = sea_state_row(sea_state)?;
+        Ok(Self {
+            sea_state: None,
+            significant_wave_height_m: row.significant_wave_height_m,
+            peak_period_s: row.modal_period_s,
+            ..*self
+        })
+    }
+
     /// Checks every field, naming the key; following and quartering seas with way on are
     /// refused with [`SeawayError::FollowingSeas`].
     pub fn validate(&self) -> Result<(), SeawayError> {
         const SECTION: &str = "environment.seaway";
+        let resolved = self.resolved()?;
+        if resolved.sea_state.is_none() && self.sea_state.is_some() {
+            return resolved.validate();
+        }
         self.wave_spectrum()?;
         self.hull.validate()?;
         Bounds::closed(0.0, 360.0).check(SECTION, "wave_heading_deg", self.wave_heading_deg)?;
