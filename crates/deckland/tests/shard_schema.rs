@@ -121,14 +121,17 @@ fn regression_rows_no_campaign_writes_are_refused_by_row_and_column() {
 fn regression_runs_csv_text_must_be_a_whole_campaign_table() {
     let shards = flown_shards();
     let text = rows_csv(&shards[0].rows);
-    // A column removed (from the header and every row): the last, the LSO's comment.
-    let without_comment: String = text
+    // A column removed (from the header and every row): the last, the wave-off's
+    // criterion.
+    let without_criterion: String = text
         .lines()
         .map(|line| line.rsplit_once(',').unwrap().0.to_owned() + "\n")
         .collect();
-    let error = parse_runs_csv("r", &without_comment).unwrap_err();
+    let error = parse_runs_csv("r", &without_criterion).unwrap_err();
     assert!(
-        error.to_string().contains("`lso_comment` is missing"),
+        error
+            .to_string()
+            .contains("`wave_off_criterion` is missing"),
         "{error}"
     );
     let error = parse_runs_csv("r", &text.replacen("wire,", "wires,", 1)).unwrap_err();
