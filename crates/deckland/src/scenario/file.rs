@@ -435,54 +435,7 @@ fn finish_scenario(
         }
     }
 
-    // A ship model that derives keys of `[environment.ship]` (the seaway's RMS) refuses
-    // them written beside it: the file would say one sea and fly another.
-    let model = scenario.environment.ship.model;
-    if let Some(key) = model
-        .derived_keys()
-        .iter()
-        .map(|key| format!("environment.ship.{key}"))
-        .find(|path| in_file(path))
-    {
-        let line = index
-            .keys
-            .iter()
-            .find(|k| k.path == key)
-            .map(|k| line_of(text, k.span.start));
-        return Err(ScenarioError::Structure {
-            file: file_name.to_owned(),
-            line,
-            field: key,
-            message: format!(
-                "set by the ship model `{}`: leave it out (the seaway's spectrum and hull set it; \
-                 change `environment.seaway.significant_wave_height_m` instead)",
-                model.name()
-            ),
-        });
-    }
-
-    // A sea-state number sets H_s and T_p: written beside either, the file says two seas.
-    if in_file("environment.seaway.sea_state") {
-        if let Some(key) = ["significant_wave_height_m", "peak_period_s"]
-            .iter()
-            .map(|key| format!("environment.seaway.{key}"))
-            .find(|path| in_file(path))
-        {
-            let line = index
-                .keys
-                .iter()
-                .find(|k| k.path == key)
-                .map(|k| line_of(text, k.span.start));
-            return Err(ScenarioError::Structure {
-                file: file_name.to_owned(),
-                line,
-                field: key,
-                message: "set by `environment.seaway.sea_state` from the sea-state table: \
-                          leave one of them out"
-                    .to_owned(),
-            });
-        }
-    }
+    refuse_keys_set_elsewhere(&scenario, text, file_name, index, &in_file)?;
 
     // A file on the paper's hardware takes the paper's values for what it leaves out.
     let scenario = match scenario.with_set_defaults(in_file) {
@@ -505,6 +458,58 @@ fn finish_scenario(
         .validate()
         .map_err(|problem| out_of_range(problem, text, file_name, index))?;
     Ok(scenario)
+}
+
+/// Keys that something else in the file sets, refused when written beside it (the file
+/// would say one sea and fly another): the RMS a ship model derives (the seaway's), and
+/// H_s and T_p beside a sea-state number.
+fn refuse_keys_set_elsewhere(
+    scenario: &Scenario,
+    text: &str,
+    file_name: &str,
+    index: &KeyIndex,
+    in_file: &impl Fn(&str) -> bool,
+) -> Result<(), ScenarioError> {
+    let refuse = |section: &str, keys: &[&str], message: String| {
+        let Some(key) = keys
+            .iter()
+            .map(|key| format!("{section}.{key}"))
+            .find(|path| in_file(path))
+        else {
+            return Ok(());
+        };
+        let line = index
+            .keys
+            .iter()
+            .find(|k| k.path == key)
+            .map(|k| line_of(text, k.span.start));
+        Err(ScenarioError::Structure {
+            file: file_name.to_owned(),
+            line,
+            field: key,
+            message,
+        })
+    };
+    let model = scenario.environment.ship.model;
+    refuse(
+        "environment.ship",
+        model.derived_keys(),
+        format!(
+            "set by the ship model `{}`: leave it out (the seaway's spectrum and hull set it; \
+             change `environment.seaway.significant_wave_height_m` instead)",
+            model.name()
+        ),
+    )?;
+    if in_file("environment.seaway.sea_state") {
+        refuse(
+            "environment.seaway",
+            &["significant_wave_height_m", "peak_period_s"],
+            "set by `environment.seaway.sea_state` from the sea-state table: leave one of \
+             them out"
+                .to_owned(),
+        )?;
+    }
+    Ok(())
 }
 
 /// The range error `problem`, at the line of its key in `text` if the key is there.
