@@ -136,6 +136,9 @@ fn a_file_naming_no_model_flies_the_filters_and_the_seaway_refuses_what_it_sets(
             .expect("in the table"),
         six
     );
+    // Written out (a campaign's scenario.toml, a pickled Python scenario), it reads back.
+    let written = toml::to_string(&numbered).expect("serialises");
+    assert_eq!(load_scenario(&written, "written.toml"), Ok(numbered));
     let nine = refusal("[environment.seaway]\nsea_state = 9\n");
     assert!(nine.contains("environment.seaway.sea_state"), "{nine}");
     let both = refusal("[environment.seaway]\nsea_state = 5\npeak_period_s = 9.0\n");

@@ -109,8 +109,11 @@ pub enum SeawayError {
 
 /// Configuration of the seaway (docs/model.md §12): the waves, their heading and spreading, and
 /// the hull.
+///
+/// Written out (a campaign's `scenario.toml`, a pickled Python scenario), a sea named by
+/// `sea_state` leaves out the H_s and T_p it sets, so that the file reads back.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
+#[serde(default, deny_unknown_fields, into = "SeawayFile")]
 pub struct SeawayParameters {
     /// A sea state of [`SEA_STATE_TABLE`] (3–6), whose H_s and T_p the sea then takes in
     /// place of `significant_wave_height_m` and `peak_period_s` ([`Self::resolved`]);
@@ -133,6 +136,38 @@ pub struct SeawayParameters {
     pub spreading_exponent: f64,
     /// The hull (default the Nimitz-class carrier at 15 kn).
     pub hull: HullParameters,
+}
+
+/// [`SeawayParameters`] as a file holds it: H_s and T_p left out beside a `sea_state`.
+#[derive(Serialize)]
+struct SeawayFile {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    sea_state: Option<u8>,
+    spectrum: SpectrumShape,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    significant_wave_height_m: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    peak_period_s: Option<f64>,
+    wave_heading_deg: f64,
+    long_crested: bool,
+    spreading_exponent: f64,
+    hull: HullParameters,
+}
+
+impl From<SeawayParameters> for SeawayFile {
+    fn from(p: SeawayParameters) -> Self {
+        let own = p.sea_state.is_none();
+        Self {
+            sea_state: p.sea_state,
+            spectrum: p.spectrum,
+            significant_wave_height_m: own.then_some(p.significant_wave_height_m),
+            peak_period_s: own.then_some(p.peak_period_s),
+            wave_heading_deg: p.wave_heading_deg,
+            long_crested: p.long_crested,
+            spreading_exponent: p.spreading_exponent,
+            hull: p.hull,
+        }
+    }
 }
 
 impl Default for SeawayParameters {
