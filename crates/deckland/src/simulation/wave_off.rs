@@ -117,9 +117,7 @@ fn late_abort_inputs(inputs: &WaveOffInputs, before_ramp: bool) -> LateAbortInpu
     LateAbortInputs {
         time_to_go_s: inputs.time_to_go_s,
         before_ramp,
-        predicted_ramp_clearance_m: inputs.path_height_at_ramp_m
-            - inputs.glide_path_error_m
-            - forecast.ramp_height_m,
+        predicted_ramp_clearance_m: inputs.predicted_ramp_clearance_m(),
         ramp_clearance_sigma_m: inputs.ramp_clearance_sigma_m,
         predicted_touchdown_sink_rate_mps: -inputs.hook_climb_rate_mps
             + forecast.landing_point_climb_rate_mps,

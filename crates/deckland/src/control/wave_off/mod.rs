@@ -428,6 +428,15 @@ pub struct WaveOffInputs {
     pub forecast: DeckForecast,
 }
 
+impl WaveOffInputs {
+    /// The predicted hook-to-ramp clearance (m): the path's height at the ramp less the
+    /// hook's error to it, above the forecast ramp.
+    #[inline]
+    pub fn predicted_ramp_clearance_m(&self) -> f64 {
+        self.path_height_at_ramp_m - self.glide_path_error_m - self.forecast.ramp_height_m
+    }
+}
+
 impl WaveOffParameters {
     /// Whether the hook is in the decision window.
     pub fn in_window(&self, time_to_go_s: f64) -> bool {
@@ -518,8 +527,7 @@ impl WaveOffParameters {
     /// What the criteria of [`Self::decide`] compare with their limits, on `inputs`.
     fn measures(&self, inputs: &WaveOffInputs) -> WaveOffMeasures {
         let forecast = &inputs.forecast;
-        let clearance =
-            inputs.path_height_at_ramp_m - inputs.glide_path_error_m - forecast.ramp_height_m;
+        let clearance = inputs.predicted_ramp_clearance_m();
         let sink = -inputs.hook_climb_rate_mps + forecast.landing_point_climb_rate_mps;
         let pitch_deg = forecast.pitch_rad.to_degrees();
         let displacement = forecast.landing_point_height_m - inputs.mean_landing_point_height_m;

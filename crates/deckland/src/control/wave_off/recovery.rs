@@ -134,9 +134,7 @@ impl WaveOffParameters {
             criterion: WaveOffCriterion::FoulDeckMotion,
             value: share,
             limit: 100.0,
-            predicted_ramp_clearance_m: inputs.path_height_at_ramp_m
-                - inputs.glide_path_error_m
-                - inputs.forecast.ramp_height_m,
+            predicted_ramp_clearance_m: inputs.predicted_ramp_clearance_m(),
         })
     }
 }
