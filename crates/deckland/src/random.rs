@@ -129,9 +129,58 @@ impl RandomStreams {
 }
 
 /// One independent stream of random numbers (docs/model.md §3.4).
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Clone, PartialEq, Eq)]
 pub struct NoiseStream {
     generator: ChaCha8Rng,
+}
+
+/// Shows the generator's key (its first eight bytes), stream number and position, so that
+/// a state's debug print shows every stream it holds and where each stands.
+impl std::fmt::Debug for NoiseStream {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let seed = self.generator.get_seed();
+        let mut key = [0u8; 8];
+        key.copy_from_slice(&seed[..8]);
+        write!(
+            f,
+            "NoiseStream {{ key: {:016x}, stream: {:016x}, word: {} }}",
+            u64::from_le_bytes(key),
+            self.generator.get_stream(),
+            self.generator.get_word_pos()
+        )
+    }
+}
+
+/// A part that draws from random streams. A flight copied at some step and continued
+/// with fresh noise (rare-event simulation, docs/rare-events.md) re-keys every stream of
+/// every part: each keeps its stream number (its source's name), so the sources stay
+/// independent, and takes a generator keyed by `key` from its start. The same state and
+/// key give the same continuation, bit for bit; nothing re-keys an ordinary run.
+pub trait Reseed {
+    /// Re-keys every random stream of the part with `key`.
+    fn reseed(&mut self, key: u64);
+}
+
+impl Reseed for NoiseStream {
+    fn reseed(&mut self, key: u64) {
+        let stream = self.generator.get_stream();
+        self.generator = ChaCha8Rng::seed_from_u64(key);
+        self.generator.set_stream(stream);
+    }
+}
+
+impl<T: Reseed, const N: usize> Reseed for [T; N] {
+    fn reseed(&mut self, key: u64) {
+        self.iter_mut().for_each(|part| part.reseed(key));
+    }
+}
+
+impl<T: Reseed> Reseed for Option<T> {
+    fn reseed(&mut self, key: u64) {
+        if let Some(part) = self {
+            part.reseed(key);
+        }
+    }
 }
 
 impl NoiseStream {
@@ -194,6 +243,25 @@ mod tests {
             interleaved.push(pitch.standard_normal());
         }
         assert_eq!(alone, interleaved);
+    }
+
+    #[test]
+    fn a_reseeded_stream_keeps_its_source_and_depends_only_on_the_key() {
+        let streams = RandomStreams::new(3);
+        let mut heave = streams.stream(stream_names::SHIP_HEAVE);
+        let mut pitch = streams.stream(stream_names::SHIP_PITCH);
+        heave.standard_normal();
+        heave.reseed(99);
+        pitch.reseed(99);
+        // Re-keyed with 99, each is the stream of its own name under seed 99, from its start.
+        assert_eq!(
+            (0..20).map(|_| heave.standard_normal()).collect::<Vec<_>>(),
+            first_samples(99, stream_names::SHIP_HEAVE, 20)
+        );
+        assert_eq!(
+            (0..20).map(|_| pitch.standard_normal()).collect::<Vec<_>>(),
+            first_samples(99, stream_names::SHIP_PITCH, 20)
+        );
     }
 
     #[test]

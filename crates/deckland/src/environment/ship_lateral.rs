@@ -24,7 +24,7 @@ use super::ship::{
     unit_intensity_state_covariance, ShipMotionParameters, SHAPING_FILTER_DENOMINATOR,
 };
 use crate::parameters::ParameterError;
-use crate::random::{stream_names, NoiseStream, RandomStreams};
+use crate::random::{stream_names, NoiseStream, RandomStreams, Reseed};
 
 /// Natural frequency ω of the roll filter (rad/s): a natural period of 20 s
 /// (docs/model.md §3.7, an assumption).
@@ -329,6 +329,14 @@ impl LateralShipMotion {
             yaw_rate_radps: outputs.yaw_rate_radps,
             ..rate
         }
+    }
+}
+
+impl Reseed for LateralShipStreams {
+    fn reseed(&mut self, key: u64) {
+        self.roll.reseed(key);
+        self.yaw.reseed(key);
+        self.sway.reseed(key);
     }
 }
 

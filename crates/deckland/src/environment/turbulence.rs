@@ -8,7 +8,7 @@
 //! the autocorrelation e^(−|lag|/τ) for any dt. u1 is positive forward, w1 positive down.
 
 use super::wind::{Wind, WindParameters};
-use crate::random::{stream_names, NoiseStream, RandomStreams};
+use crate::random::{stream_names, NoiseStream, RandomStreams, Reseed};
 
 /// The turbulence state (u1, w1) and its two random streams.
 #[derive(Debug, Clone)]
@@ -62,6 +62,13 @@ impl Turbulence {
     /// The current turbulence (u1, w1) as a wind: x positive forward, z positive down.
     pub fn wind(&self) -> Wind {
         Wind::longitudinal(self.u_mps, self.w_mps)
+    }
+}
+
+impl Reseed for Turbulence {
+    fn reseed(&mut self, key: u64) {
+        self.u_stream.reseed(key);
+        self.w_stream.reseed(key);
     }
 }
 

@@ -12,7 +12,7 @@
 //! `turbulence_v`, so u1 and w1 are unchanged. v1 is positive to the right (earth y).
 
 use super::wind::{Wind, WindParameters};
-use crate::random::{stream_names, NoiseStream, RandomStreams};
+use crate::random::{stream_names, NoiseStream, RandomStreams, Reseed};
 
 /// The lateral turbulence state v1 and its random stream.
 #[derive(Debug, Clone)]
@@ -64,5 +64,11 @@ impl LateralTurbulence {
             y_mps: self.v_mps,
             ..Wind::default()
         }
+    }
+}
+
+impl Reseed for LateralTurbulence {
+    fn reseed(&mut self, key: u64) {
+        self.stream.reseed(key);
     }
 }

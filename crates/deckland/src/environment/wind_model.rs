@@ -9,7 +9,7 @@ use super::wind::{
     mean_wind_over_angled_deck, periodic_wake, steady_wake, Wind, WindComponents, WindParameters,
 };
 use crate::parameters::{Bounds, ParameterError};
-use crate::random::RandomStreams;
+use crate::random::{RandomStreams, Reseed};
 
 /// The wind model: mean wind, turbulence with its state and streams, and the wake
 /// (docs/model.md §3.2).
@@ -126,5 +126,12 @@ impl WindModel {
     /// The total wind at time `time_s` (s) and X = `distance_aft_m` (m, positive aft).
     pub fn wind(&self, time_s: f64, distance_aft_m: f64) -> Wind {
         self.components(time_s, distance_aft_m).total()
+    }
+}
+
+impl Reseed for WindModel {
+    fn reseed(&mut self, key: u64) {
+        self.turbulence.reseed(key);
+        self.lateral_turbulence.reseed(key);
     }
 }

@@ -7,7 +7,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::parameters::{Bounds, ParameterError};
-use crate::random::{stream_names, NoiseStream, RandomStreams};
+use crate::random::{stream_names, NoiseStream, RandomStreams, Reseed};
 
 /// Configuration of the pitch-attitude measurement noise (docs/model.md §3.3).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -108,6 +108,12 @@ impl PitchSensor {
             return 0.0;
         }
         p.sinusoid_amplitude_rad * (p.sinusoid_frequency_radps * time_s).sin()
+    }
+}
+
+impl Reseed for PitchSensor {
+    fn reseed(&mut self, key: u64) {
+        self.stream.reseed(key);
     }
 }
 

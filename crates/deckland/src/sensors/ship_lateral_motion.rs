@@ -17,7 +17,7 @@ use std::collections::VecDeque;
 use super::ShipMotionSensingParameters;
 use crate::environment::LateralShipMotionOutputs;
 use crate::parameters::ParameterError;
-use crate::random::{stream_names, NoiseStream, RandomStreams};
+use crate::random::{stream_names, NoiseStream, RandomStreams, Reseed};
 
 /// One measurement of the ship's roll, yaw and sway, as sent over the data link.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -124,6 +124,12 @@ impl LateralShipMotionSensor {
         } else {
             None
         }
+    }
+}
+
+impl Reseed for LateralShipMotionSensor {
+    fn reseed(&mut self, key: u64) {
+        self.streams.reseed(key);
     }
 }
 

@@ -22,7 +22,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::environment::ShipMotionOutputs;
 use crate::parameters::{Bounds, ParameterError};
-use crate::random::{stream_names, NoiseStream, RandomStreams};
+use crate::random::{stream_names, NoiseStream, RandomStreams, Reseed};
 
 /// Noise, rate and latency of the ship-motion measurements (docs/model.md §3.5).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -243,6 +243,12 @@ impl ShipMotionSensor {
         } else {
             None
         }
+    }
+}
+
+impl Reseed for ShipMotionSensor {
+    fn reseed(&mut self, key: u64) {
+        self.streams.reseed(key);
     }
 }
 

@@ -29,6 +29,7 @@ use crate::environment::{
     ShipPoseRate, WindModel,
 };
 use crate::integration::VectorSystem;
+use crate::random::Reseed;
 use crate::sensors::PitchSensor;
 
 /// The longest state whose dropped rate [`ClosedLoop::signals_at`] writes on the stack.
@@ -67,6 +68,20 @@ pub struct ClosedLoop {
     pub(crate) lateral: Option<LateralLoop>,
     /// The arrival-timing block, when on (docs/landing-design.md).
     pub(crate) arrival_timing: Option<ArrivalTimingBlock>,
+}
+
+impl Reseed for ClosedLoop {
+    /// Re-keys the random streams the loop's parts keep: turbulence, the pitch sensor,
+    /// the ship's sensing (the deck predictor's and the 3-D approach's). The streams the
+    /// loop draws its held inputs from are the run's ([`StepStreams`]).
+    fn reseed(&mut self, key: u64) {
+        self.wind.reseed(key);
+        self.sensor.reseed(key);
+        self.deck_predictor.reseed(key);
+        if let Some(lateral) = &mut self.lateral {
+            lateral.sensor.reseed(key);
+        }
+    }
 }
 
 impl ClosedLoop {

@@ -5,7 +5,7 @@ use super::flight_computer::HeldCommands;
 use super::lateral::{HeldLateral, LateralStreams};
 use crate::control::{DeckReference, WaveOffDecision};
 use crate::environment::{ShipNoise, Wind};
-use crate::random::NoiseStream;
+use crate::random::{NoiseStream, Reseed};
 
 /// Inputs drawn or sampled once per step and held over its four RK4 stages.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -50,4 +50,12 @@ pub struct StepStreams {
     pub ship_pitch: NoiseStream,
     /// The 3-D approach's streams; `None` outside it.
     pub lateral: Option<LateralStreams>,
+}
+
+impl Reseed for StepStreams {
+    fn reseed(&mut self, key: u64) {
+        self.ship_heave.reseed(key);
+        self.ship_pitch.reseed(key);
+        self.lateral.reseed(key);
+    }
 }

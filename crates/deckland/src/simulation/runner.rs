@@ -24,6 +24,7 @@ use crate::aircraft::{ALPHA_MAX_RAD, ALPHA_MIN_RAD};
 use crate::control::WaveOffDecision;
 use crate::integration::Rk4Workspace;
 use crate::metrics::TrapSheetRecorder;
+use crate::random::Reseed;
 use crate::scenario::Scenario;
 
 /// A run set up with a user's own pitch law and blocks ([`Simulation::builder`]).
@@ -259,6 +260,29 @@ impl Simulation {
             self.held_for_next_step = true;
         }
         self.held
+    }
+
+    /// Re-keys every random stream of the run with `key` ([`Reseed`]): from this step on
+    /// it flies fresh noise, the same for the same state and key. A copy of a run
+    /// (`clone`) re-keyed this way continues it as an independent flight from the same
+    /// state: rare-event simulation branches flights so (docs/rare-events.md).
+    pub fn reseed(&mut self, key: u64) {
+        self.system.reseed(key);
+        self.streams.reseed(key);
+    }
+
+    /// Advances the run by one integration step and passes over the events it found
+    /// (each reaches `recorder` as in [`Simulation::step`]); the end, once the run has
+    /// ended.
+    pub fn advance<R: Recorder + ?Sized>(&mut self, recorder: &mut R) -> Option<&EndReason> {
+        self.step(recorder);
+        self.pending.clear();
+        self.end.as_ref()
+    }
+
+    /// The number of integration steps taken.
+    pub fn steps(&self) -> u64 {
+        self.step
     }
 
     /// The result, once the run has ended.

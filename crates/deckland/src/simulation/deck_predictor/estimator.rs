@@ -6,6 +6,7 @@ use super::{DeckPredictor, DeckQuery, DeckView, UncertaintyHold};
 use crate::control::DeckReference;
 use crate::environment::{ShipMotionEstimate, ShipMotionPropagator};
 use crate::estimation::DeckMotionEstimator;
+use crate::random::Reseed;
 use crate::sensors::ShipMotionSensor;
 use crate::simulation::anchor_shaping::AnchorShaping;
 
@@ -89,6 +90,10 @@ impl DeckPredictor for Estimator {
 
     fn estimator(&self) -> Option<&DeckMotionEstimator> {
         Some(&self.estimator)
+    }
+
+    fn reseed(&mut self, key: u64) {
+        self.sensor.reseed(key);
     }
 
     fn clone_box(&self) -> Box<dyn DeckPredictor> {

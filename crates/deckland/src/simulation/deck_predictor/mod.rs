@@ -121,6 +121,13 @@ pub trait DeckPredictor: Debug + Send + Sync {
 
     /// A copy of it, as it is now (a simulation is cloned to look ahead).
     fn clone_box(&self) -> Box<dyn DeckPredictor>;
+
+    /// Re-keys its random streams with `key` ([`crate::random::Reseed`]), for a flight
+    /// continued with fresh noise. A predictor that draws noise must re-key it here; by
+    /// default it draws none.
+    fn reseed(&mut self, key: u64) {
+        let _ = key;
+    }
 }
 
 impl Clone for Box<dyn DeckPredictor> {
@@ -213,6 +220,11 @@ impl BuiltDeckPredictor {
                 DeckMotionFilter::new(flight_path.deck_filter_frequency_radps),
             )),
         })
+    }
+
+    /// Re-keys its random streams ([`DeckPredictor::reseed`]).
+    pub(crate) fn reseed(&mut self, key: u64) {
+        each!(self, p => p.reseed(key))
     }
 
     /// Names of the predictor's continuous states.

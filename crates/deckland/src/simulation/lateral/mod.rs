@@ -46,7 +46,7 @@ use crate::control::lineup::LineupParameters;
 use crate::control::pitch::ElevatorSaturation;
 use crate::control::wave_off_lateral::LateralWaveOffLimits;
 use crate::environment::{LateralShipMotion, LateralShipNoise, LateralShipStreams};
-use crate::random::NoiseStream;
+use crate::random::{NoiseStream, Reseed};
 use crate::sensors::{LateralShipMotionMeasurement, LateralShipMotionSensor, PitchNoiseParameters};
 
 /// Sideslip measurement noise σ of the air data (rad): 0.2° (shared model §10.7, an
@@ -144,6 +144,15 @@ pub struct LateralStreams {
     pub sideslip: NoiseStream,
     /// The heading measurement's white noise.
     pub heading: NoiseStream,
+}
+
+impl Reseed for LateralStreams {
+    fn reseed(&mut self, key: u64) {
+        self.ship.reseed(key);
+        self.bank.reseed(key);
+        self.sideslip.reseed(key);
+        self.heading.reseed(key);
+    }
 }
 
 /// What the 3-D approach holds over a step.
