@@ -41,6 +41,7 @@ pub mod metrics;
 pub mod monte_carlo;
 pub mod parameters;
 pub mod random;
+pub mod rare;
 pub mod recording;
 pub mod scenario;
 pub mod sensors;

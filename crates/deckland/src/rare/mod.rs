@@ -1,0 +1,3 @@
+//! Rare-event simulation (docs/rare-events.md).
+
+pub mod score;

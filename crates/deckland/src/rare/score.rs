@@ -1,0 +1,302 @@
+//! Each catastrophic event's score: a number computed along a flight whose running
+//! maximum reaches 0 exactly when the campaign would call the flight that event
+//! (docs/rare-events.md). Splitting (`super::splitting`) branches the flights that came
+//! closest.
+//!
+//! Every event is decided at one moment, where its *margin* m is measured; the event is
+//! m ≥ 0:
+//!
+//! | event | decided | margin m |
+//! |---|---|---|
+//! | `ramp_strike` | the hook crosses the ramp | c − clearance (c = 0 m: the campaign's ramp strike) |
+//! | `hard_landing` | touchdown | sink rate relative to the deck − the hard-landing limit |
+//! | `off_centre` | touchdown (3-D approach) | \|offset from the centreline\| − 3.05 m |
+//! | `divergence` | the run ends diverged | 0 (the event), else never |
+//!
+//! Before its moment, each event's score is a forecast of its margin passed through
+//! σ(x) = −ln(1 + e^(−x)), which is ≈ x far below 0 and stays below 0: no forecast
+//! can reach the event, only the flight itself.
+//! - `ramp_strike`: the hook's height above the ramp less its sink rate relative to the
+//!   deck times the time to reach the ramp;
+//! - `hard_landing`: the hook's sink rate relative to the deck under it now;
+//! - `off_centre`: the hook's cross-track from the centreline now;
+//! - `divergence`: the largest of |α − α_mid|/half the α range and V_min/V, less 1,
+//!   times 10.
+//!
+//! `lost` is any of them: its score is the largest of theirs (metres, metres per second
+//! and the divergence's scaled margin on one axis).
+
+use crate::aircraft::{ALPHA_MAX_RAD, ALPHA_MIN_RAD};
+use crate::control::wave_off_lateral::MAX_OFF_CENTRE_M;
+use crate::environment::DeckGeometry;
+use crate::scenario::Scenario;
+use crate::simulation::{Event, Outcome, Recorder, RunSummary, Signals};
+use serde::Serialize;
+
+/// A catastrophic event whose probability `deckland rare` estimates.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RareEvent {
+    /// The hook crosses the ramp less than the threshold above it (0 m: a ramp strike).
+    RampStrike,
+    /// Touchdown faster than the threshold relative to the deck (the hard-landing limit).
+    HardLanding,
+    /// Touchdown farther than the threshold from the centreline (3-D approach only).
+    OffCentre,
+    /// The run leaves the model's validity.
+    Divergence,
+    /// Any of the others.
+    Lost,
+}
+
+impl RareEvent {
+    /// Every event, in the order of their names.
+    pub const ALL: [Self; 5] = [
+        Self::RampStrike,
+        Self::HardLanding,
+        Self::OffCentre,
+        Self::Divergence,
+        Self::Lost,
+    ];
+
+    /// The event's name on the command line and in files.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::RampStrike => "ramp_strike",
+            Self::HardLanding => "hard_landing",
+            Self::OffCentre => "off_centre",
+            Self::Divergence => "divergence",
+            Self::Lost => "lost",
+        }
+    }
+
+    /// The event called `name`; the error lists the names.
+    pub fn from_name(name: &str) -> Result<Self, String> {
+        Self::ALL
+            .into_iter()
+            .find(|event| event.name() == name)
+            .ok_or_else(|| {
+                let names: Vec<_> = Self::ALL.iter().map(|e| e.name()).collect();
+                format!(
+                    "unknown event `{name}`: expected one of {}",
+                    names.join(", ")
+                )
+            })
+    }
+
+    /// The threshold's name and unit, for messages and summaries; `None` for the events
+    /// that have none.
+    pub fn threshold_name(self) -> Option<&'static str> {
+        match self {
+            Self::RampStrike => Some("ramp clearance below (m)"),
+            Self::HardLanding => Some("touchdown sink rate above (m/s)"),
+            Self::OffCentre => Some("touchdown offset above (m)"),
+            Self::Divergence | Self::Lost => None,
+        }
+    }
+}
+
+/// The thresholds that define the events: the campaign's by default.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct EventThresholds {
+    /// A ramp strike is a crossing less than this above the ramp (m); 0 in a campaign.
+    pub ramp_clearance_m: f64,
+    /// A hard landing is a touchdown sink rate relative to the deck above this (m/s).
+    pub hard_landing_sink_rate_mps: f64,
+    /// An off-centre touchdown is farther than this from the centreline (m).
+    pub off_centre_m: f64,
+}
+
+impl EventThresholds {
+    /// The campaign's thresholds for `scenario`.
+    pub fn of(scenario: &Scenario) -> Self {
+        Self {
+            ramp_clearance_m: 0.0,
+            hard_landing_sink_rate_mps: scenario.outcome.hard_landing_sink_rate_mps,
+            off_centre_m: MAX_OFF_CENTRE_M,
+        }
+    }
+
+    /// These thresholds with `event`'s set to `value` (events without one are unchanged).
+    pub fn with(mut self, event: RareEvent, value: f64) -> Self {
+        match event {
+            RareEvent::RampStrike => self.ramp_clearance_m = value,
+            RareEvent::HardLanding => self.hard_landing_sink_rate_mps = value,
+            RareEvent::OffCentre => self.off_centre_m = value,
+            RareEvent::Divergence | RareEvent::Lost => {}
+        }
+        self
+    }
+}
+
+/// σ(x) = −ln(1 + e^(−x)): ≈ x for x ≪ 0, always below 0 (kept below −10⁻³⁰⁰ where it
+/// would round to zero), increasing.
+fn below_zero(x: f64) -> f64 {
+    let value = if x > 0.0 {
+        -(-x).exp().ln_1p()
+    } else {
+        x - x.exp().ln_1p()
+    };
+    value.min(-1e-300)
+}
+
+/// One event's state along a flight: its score now, and whether it is decided.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Part {
+    score: f64,
+    decided: bool,
+}
+
+impl Part {
+    const OPEN: Self = Self {
+        score: f64::NEG_INFINITY,
+        decided: false,
+    };
+
+    fn forecast(&mut self, margin: f64) {
+        if !self.decided {
+            self.score = below_zero(margin);
+        }
+    }
+
+    fn decide(&mut self, margin: f64) {
+        if !self.decided {
+            self.score = margin;
+            self.decided = true;
+        }
+    }
+}
+
+/// The score of one event along a flight, as a [`Recorder`] of every step.
+#[derive(Debug, Clone)]
+pub struct EventScore {
+    event: RareEvent,
+    thresholds: EventThresholds,
+    deck: DeckGeometry,
+    min_airspeed_mps: f64,
+    three_dimensional: bool,
+    ramp: Part,
+    hard: Part,
+    off_centre: Part,
+    divergence: Part,
+    ended: bool,
+}
+
+impl EventScore {
+    /// The score of `event` with these thresholds, for a flight of `scenario` over
+    /// `deck`; `three_dimensional` says whether it flies the 3-D approach (an off-centre
+    /// touchdown needs it).
+    pub fn new(
+        event: RareEvent,
+        thresholds: EventThresholds,
+        scenario: &Scenario,
+        deck: DeckGeometry,
+        three_dimensional: bool,
+    ) -> Self {
+        Self {
+            event,
+            thresholds,
+            deck,
+            min_airspeed_mps: scenario.outcome.min_airspeed_mps,
+            three_dimensional,
+            ramp: Part::OPEN,
+            hard: Part::OPEN,
+            off_centre: Part::OPEN,
+            divergence: Part::OPEN,
+            ended: false,
+        }
+    }
+
+    /// The score now: 0 or more once the event has happened.
+    pub fn score(&self) -> f64 {
+        let (parts, count) = self.parts();
+        parts[..count]
+            .iter()
+            .map(|part| part.score)
+            .fold(f64::NEG_INFINITY, f64::max)
+    }
+
+    /// Whether nothing can change the score any more: the run ended, or every part of
+    /// the event is decided.
+    pub fn finished(&self) -> bool {
+        let (parts, count) = self.parts();
+        self.ended || parts[..count].iter().all(|part| part.decided)
+    }
+
+    /// The parts the event is made of (the first `count` of the four).
+    fn parts(&self) -> ([Part; 4], usize) {
+        let all = [self.ramp, self.hard, self.off_centre, self.divergence];
+        match self.event {
+            RareEvent::RampStrike => ([self.ramp; 4], 1),
+            RareEvent::HardLanding => ([self.hard; 4], 1),
+            RareEvent::OffCentre => ([self.off_centre; 4], 1),
+            RareEvent::Divergence => ([self.divergence; 4], 1),
+            RareEvent::Lost if self.three_dimensional => (all, 4),
+            RareEvent::Lost => ([self.ramp, self.hard, self.divergence, self.divergence], 3),
+        }
+    }
+
+    /// The forecasts of every part at one step.
+    fn forecast(&mut self, s: &Signals) {
+        let ramp = self.deck.ramp(&s.ship);
+        let along_deck_m = self.deck.distance_along_deck(&s.ship, s.hook_x_m);
+        let deck_velocity = self
+            .deck
+            .velocity_along_deck(&s.ship, &s.ship_rate, along_deck_m);
+        let sink_rate_mps = deck_velocity.h_mps - s.hook_climb_rate_mps;
+        let closing_mps = (s.hook_x_rate_mps - s.ship_rate.pitch_centre_x_rate_mps).max(1.0);
+        let to_ramp_s = ((ramp.x_m - s.hook_x_m) / closing_mps).max(0.0);
+        let clearance_m = s.hook_h_m - ramp.h_m - sink_rate_mps * to_ramp_s;
+        self.ramp
+            .forecast(self.thresholds.ramp_clearance_m - clearance_m);
+        self.hard
+            .forecast(sink_rate_mps - self.thresholds.hard_landing_sink_rate_mps);
+        if let Some(cross_track_m) = s.lateral.cross_track_m {
+            self.off_centre
+                .forecast(cross_track_m.abs() - self.thresholds.off_centre_m);
+        }
+        let alpha_mid = 0.5 * (ALPHA_MAX_RAD + ALPHA_MIN_RAD);
+        let alpha_half = 0.5 * (ALPHA_MAX_RAD - ALPHA_MIN_RAD);
+        let used = ((s.alpha_rad - alpha_mid).abs() / alpha_half)
+            .max(self.min_airspeed_mps / s.airspeed_mps.max(1e-9));
+        self.divergence.forecast(10.0 * (used - 1.0));
+    }
+}
+
+impl Recorder for EventScore {
+    fn sample_interval_s(&self) -> Option<f64> {
+        Some(0.0)
+    }
+
+    fn sample(&mut self, signals: &Signals) {
+        if signals.first_out_of_range().is_none() {
+            self.forecast(signals);
+        }
+    }
+
+    fn event(&mut self, event: &Event) {
+        match event {
+            Event::RampCrossing { clearance_m, .. } => self
+                .ramp
+                .decide(self.thresholds.ramp_clearance_m - clearance_m),
+            Event::Touchdown(touchdown) => {
+                self.ramp.decide(f64::NEG_INFINITY);
+                self.hard
+                    .decide(touchdown.sink_rate_mps - self.thresholds.hard_landing_sink_rate_mps);
+                if let Some(lateral) = touchdown.lateral {
+                    self.off_centre
+                        .decide(lateral.offset_m.abs() - self.thresholds.off_centre_m);
+                }
+                self.divergence.decide(f64::NEG_INFINITY);
+            }
+            Event::PassedLastWire { .. } | Event::WaveOff { .. } => {}
+        }
+    }
+
+    fn finish(&mut self, summary: &RunSummary) {
+        if summary.outcome == Outcome::Diverged {
+            self.divergence.decide(0.0);
+        }
+        self.ended = true;
+    }
+}
