@@ -1,3 +1,29 @@
-//! Rare-event simulation (docs/rare-events.md).
+//! Rare-event simulation (docs/rare-events.md): the probability of a catastrophe per
+//! approach, down to one in a million, with a confidence interval.
+//!
+//! - [`splitting`]: generalised adaptive multilevel splitting (AMS) after
+//!   C.-E. Bréhier, M. Gazeau, L. Goudenège, T. Lelièvre & M. Rousset,
+//!   "Unbiasedness of some generalized adaptive multilevel splitting
+//!   algorithms", Annals of Applied Probability 26 (2016), with independent
+//!   repetitions and a 95 % confidence interval; generic over any
+//!   [`Trajectory`].
+//! - [`ornstein_uhlenbeck`]: an exactly discretised Ornstein–Uhlenbeck
+//!   process whose exceedance probability is computed without simulation;
+//!   it validates the estimator.
+//! - [`score`]: each catastrophic event's score along an approach.
+//! - [`flight`]: an approach as a trajectory splitting can branch.
 
+pub mod flight;
+pub mod ornstein_uhlenbeck;
+pub mod rate;
 pub mod score;
+pub mod splitting;
+
+pub use flight::{ApproachFlight, FlightError};
+pub use rate::{estimate_rate, replay_event_flight, RareError, RareRequest, RareResult};
+pub use score::{EventScore, EventThresholds, RareEvent};
+pub use splitting::{
+    estimate, estimate_observed, refly, repetition_seed, run, Advance, AmsError, Branch, Budget,
+    Estimate, EventParticle, Outcome, PartialReason, Run, Settings, Stop, Trajectory,
+    MIN_REPETITIONS_FOR_TARGET, REPETITIONS_PER_BATCH,
+};

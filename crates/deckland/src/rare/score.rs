@@ -4,7 +4,7 @@
 //! closest.
 //!
 //! Every event is decided at one moment, where its *margin* m is measured; the event is
-//! m ≥ 0:
+//! m ≥ 0 (the table's margins; σ₀ below divides them):
 //!
 //! | event | decided | margin m |
 //! |---|---|---|
@@ -13,22 +13,24 @@
 //! | `off_centre` | touchdown (3-D approach) | \|offset from the centreline\| − 3.05 m |
 //! | `divergence` | the run ends diverged | 0 (the event), else never |
 //!
-//! Before its moment, each event's score is a forecast of its margin passed through
-//! σ(x) = −ln(1 + e^(−x)), which is ≈ x far below 0 and stays below 0: no forecast
-//! can reach the event, only the flight itself.
-//! - `ramp_strike`: the hook's height above the ramp less its sink rate relative to the
-//!   deck times the time to reach the ramp;
-//! - `hard_landing`: the hook's sink rate relative to the deck under it now;
-//! - `off_centre`: the hook's cross-track from the centreline now;
+//! At its moment the score is m/σ₀; before, it is a forecast of the margin over how far
+//! a forecast τ seconds ahead may miss, m̂/σ(τ) with σ(τ) = σ₀ + a·τ + b·τ²,
+//! passed through −ln(1 + e^(−x)), which is ≈ x far below 0 and stays below 0: no
+//! forecast can reach the event, only the flight itself. The forecasts:
+//! - `ramp_strike`: the hook's height τ ahead at its climb rate now (τ the time to reach
+//!   the ramp), less the ramp's then: its height in a calm sea plus its displacement now,
+//!   carried ahead at its rate for at most 2 s, weighted by e^(−τ/2 s);
+//! - `hard_landing`: the aim point's sink rate now, weighted the same, less the hook's
+//!   climb rate, τ the time to the aim point;
+//! - `off_centre`: the hook's cross-track from the centreline now, τ as for the sink rate;
 //! - `divergence`: the largest of |α − α_mid|/half the α range and V_min/V, less 1,
 //!   times 10.
 //!
-//! `lost` is any of them: its score is the largest of theirs (metres, metres per second
-//! and the divergence's scaled margin on one axis).
+//! `lost` is any of them: its score is the largest of theirs (all without units).
 
 use crate::aircraft::{ALPHA_MAX_RAD, ALPHA_MIN_RAD};
 use crate::control::wave_off_lateral::MAX_OFF_CENTRE_M;
-use crate::environment::DeckGeometry;
+use crate::environment::{DeckGeometry, ShipPose};
 use crate::scenario::Scenario;
 use crate::simulation::{Event, Outcome, Recorder, RunSummary, Signals};
 use serde::Serialize;
@@ -238,22 +240,39 @@ impl EventScore {
 
     /// The forecasts of every part at one step.
     fn forecast(&mut self, s: &Signals) {
-        let ramp = self.deck.ramp(&s.ship);
-        let along_deck_m = self.deck.distance_along_deck(&s.ship, s.hook_x_m);
-        let deck_velocity = self
-            .deck
-            .velocity_along_deck(&s.ship, &s.ship_rate, along_deck_m);
-        let sink_rate_mps = deck_velocity.h_mps - s.hook_climb_rate_mps;
+        let deck = &self.deck;
         let closing_mps = (s.hook_x_rate_mps - s.ship_rate.pitch_centre_x_rate_mps).max(1.0);
+        let ramp = deck.ramp(&s.ship);
         let to_ramp_s = ((ramp.x_m - s.hook_x_m) / closing_mps).max(0.0);
-        let clearance_m = s.hook_h_m - ramp.h_m - sink_rate_mps * to_ramp_s;
+        let to_touchdown_s = (s.range_to_go_m / closing_mps).max(0.0);
+        // The ramp's height and rate now carry over a few seconds; farther ahead, the
+        // ramp is at its height in a calm sea (its motion's mean).
+        let calm = ShipPose {
+            heave_m: 0.0,
+            pitch_rad: 0.0,
+            roll_rad: 0.0,
+            ..s.ship
+        };
+        let ramp_rate =
+            deck.velocity_along_deck(&s.ship, &s.ship_rate, -deck.ramp_aft_of_aim_point_m);
+        let ramp_calm_m = deck.ramp(&calm).h_m;
+        let carried = (-to_ramp_s / DECK_MEMORY_S).exp();
+        let ramp_then_m = ramp_calm_m
+            + carried * (ramp.h_m - ramp_calm_m + ramp_rate.h_mps * to_ramp_s.min(DECK_MEMORY_S));
+        let clearance_m = s.hook_h_m + s.hook_climb_rate_mps * to_ramp_s - ramp_then_m;
+        let aim_rate = deck.velocity_along_deck(&s.ship, &s.ship_rate, 0.0);
+        let sink_rate_mps =
+            (-to_touchdown_s / DECK_MEMORY_S).exp() * aim_rate.h_mps - s.hook_climb_rate_mps;
+        let t = &self.thresholds;
         self.ramp
-            .forecast(self.thresholds.ramp_clearance_m - clearance_m);
-        self.hard
-            .forecast(sink_rate_mps - self.thresholds.hard_landing_sink_rate_mps);
+            .forecast((t.ramp_clearance_m - clearance_m) / RAMP_SPREAD.at(to_ramp_s));
+        self.hard.forecast(
+            (sink_rate_mps - t.hard_landing_sink_rate_mps) / SINK_SPREAD.at(to_touchdown_s),
+        );
         if let Some(cross_track_m) = s.lateral.cross_track_m {
-            self.off_centre
-                .forecast(cross_track_m.abs() - self.thresholds.off_centre_m);
+            self.off_centre.forecast(
+                (cross_track_m.abs() - t.off_centre_m) / OFFSET_SPREAD.at(to_touchdown_s),
+            );
         }
         let alpha_mid = 0.5 * (ALPHA_MAX_RAD + ALPHA_MIN_RAD);
         let alpha_half = 0.5 * (ALPHA_MAX_RAD - ALPHA_MIN_RAD);
@@ -262,6 +281,52 @@ impl EventScore {
         self.divergence.forecast(10.0 * (used - 1.0));
     }
 }
+
+/// How long the deck's motion now says something of its motion ahead (s): its weight in
+/// a forecast τ ahead is e^(−τ/2 s), and its rate is carried at most this long.
+const DECK_MEMORY_S: f64 = 2.0;
+
+/// How far a forecast `τ` seconds ahead may miss, σ(τ) = σ₀ + a·τ + b·τ²: the scores
+/// divide a forecast margin by it, so that a margin forecast from far out counts for far
+/// less than the same margin in close (an approximation of the committor, the probability
+/// of the event from here, which is the ideal score for splitting). Far out the forecasts
+/// are also biased (the path is not straight), hence the square.
+#[derive(Debug, Clone, Copy)]
+struct Spread {
+    /// σ₀, at the moment that decides the event (the margin's unit).
+    now: f64,
+    /// a (the margin's unit per second).
+    linear: f64,
+    /// b (the margin's unit per second squared).
+    quadratic: f64,
+}
+
+impl Spread {
+    fn at(self, ahead_s: f64) -> f64 {
+        self.now + ahead_s * (self.linear + self.quadratic * ahead_s)
+    }
+}
+
+/// The ramp clearance's spread (m).
+const RAMP_SPREAD: Spread = Spread {
+    now: 0.2,
+    linear: 0.5,
+    quadratic: 0.05,
+};
+
+/// The touchdown sink rate's spread (m/s).
+const SINK_SPREAD: Spread = Spread {
+    now: 0.2,
+    linear: 0.3,
+    quadratic: 0.05,
+};
+
+/// The touchdown offset's spread (m).
+const OFFSET_SPREAD: Spread = Spread {
+    now: 0.2,
+    linear: 0.3,
+    quadratic: 0.05,
+};
 
 impl Recorder for EventScore {
     fn sample_interval_s(&self) -> Option<f64> {
@@ -278,14 +343,17 @@ impl Recorder for EventScore {
         match event {
             Event::RampCrossing { clearance_m, .. } => self
                 .ramp
-                .decide(self.thresholds.ramp_clearance_m - clearance_m),
+                .decide((self.thresholds.ramp_clearance_m - clearance_m) / RAMP_SPREAD.now),
             Event::Touchdown(touchdown) => {
                 self.ramp.decide(f64::NEG_INFINITY);
-                self.hard
-                    .decide(touchdown.sink_rate_mps - self.thresholds.hard_landing_sink_rate_mps);
+                self.hard.decide(
+                    (touchdown.sink_rate_mps - self.thresholds.hard_landing_sink_rate_mps)
+                        / SINK_SPREAD.now,
+                );
                 if let Some(lateral) = touchdown.lateral {
-                    self.off_centre
-                        .decide(lateral.offset_m.abs() - self.thresholds.off_centre_m);
+                    self.off_centre.decide(
+                        (lateral.offset_m.abs() - self.thresholds.off_centre_m) / OFFSET_SPREAD.now,
+                    );
                 }
                 self.divergence.decide(f64::NEG_INFINITY);
             }

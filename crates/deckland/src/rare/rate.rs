@@ -1,0 +1,191 @@
+//! The rate of a catastrophe per approach of a scenario, by splitting (`deckland rare`,
+//! Python's `deckland.rare`): [`estimate_rate`].
+
+use serde::Serialize;
+
+use super::flight::{ApproachFlight, FlightError};
+use super::score::{EventThresholds, RareEvent};
+use super::splitting::{
+    estimate_observed, AmsError, Budget, Estimate, EventParticle, Run, Settings,
+};
+use crate::parameters::{Bounds, ParameterError};
+use crate::recording::SummaryRecorder;
+use crate::scenario::Scenario;
+use crate::simulation::Simulation;
+
+/// Steps between two stored copies of a flight (1 s at the 1-ms step): a branch replays at
+/// most this many steps, and a flight of 30 s keeps about 30 copies.
+pub const CHECKPOINT_EVERY_STEPS: usize = 1000;
+
+/// At most this many flights that reached the event are kept for replay.
+pub const MAX_EVENT_FLIGHTS: usize = 20;
+
+/// What to estimate and how far to go.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct RareRequest {
+    /// The event.
+    pub event: RareEvent,
+    /// Its threshold (the campaign's when `None`): a ramp clearance below it (m), a
+    /// touchdown sink rate (m/s) or offset (m) above it.
+    pub threshold: Option<f64>,
+    /// Seed of the splitting (its choices and every branch's noise).
+    pub seed: u64,
+    /// Stop once the estimate's relative standard error is at most this (checked from
+    /// 32 repetitions on).
+    pub target_rel_error: f64,
+    /// Stop once this many approaches' worth of steps is spent.
+    pub max_runs: u64,
+    /// Particles per repetition.
+    pub particles: usize,
+}
+
+impl RareRequest {
+    /// `event` with the defaults: the campaign's threshold, 10 % relative error, at most
+    /// 100 000 approaches' worth, 100 particles.
+    pub fn new(event: RareEvent, seed: u64) -> Self {
+        Self {
+            event,
+            threshold: None,
+            seed,
+            target_rel_error: 0.1,
+            max_runs: 100_000,
+            particles: 100,
+        }
+    }
+
+    /// Checks the numbers; the error names the option and its value.
+    pub fn validate(&self) -> Result<(), ParameterError> {
+        const SECTION: &str = "rare";
+        Bounds::positive_up_to(1.0).check(SECTION, "target_rel_error", self.target_rel_error)?;
+        Bounds::closed(1.0, 1e9).check(SECTION, "max_runs", self.max_runs as f64)?;
+        Bounds::closed(4.0, 100_000.0).check(SECTION, "particles", self.particles as f64)?;
+        if let Some(threshold) = self.threshold {
+            let bounds = match self.event {
+                RareEvent::RampStrike => Bounds::closed(-30.0, 30.0),
+                RareEvent::HardLanding | RareEvent::OffCentre => Bounds::positive_up_to(30.0),
+                RareEvent::Divergence | RareEvent::Lost => {
+                    return Err(ParameterError::new(
+                        SECTION,
+                        "threshold",
+                        threshold,
+                        format!("no threshold: the event `{}` has none", self.event.name()),
+                    ))
+                }
+            };
+            bounds.check(SECTION, "threshold", threshold)?;
+        }
+        Ok(())
+    }
+}
+
+/// Why no rate could be estimated.
+#[derive(Debug, thiserror::Error)]
+pub enum RareError {
+    /// A request value is out of range.
+    #[error(transparent)]
+    Request(#[from] ParameterError),
+    /// The scenario cannot be flown or scored.
+    #[error(transparent)]
+    Flight(#[from] FlightError),
+    /// Splitting could not give an estimate.
+    #[error(transparent)]
+    Splitting(#[from] AmsError),
+}
+
+/// The estimate with what it cost and the flights that reached the event.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RareResult {
+    /// The request.
+    pub request: RareRequest,
+    /// The thresholds flown.
+    pub thresholds: EventThresholds,
+    /// The probability per approach, its 95 % interval and the work done.
+    pub estimate: Estimate,
+    /// Steps of one whole approach (the scenario's seed, flown without splitting): the
+    /// unit of the costs below.
+    pub approach_steps: u64,
+    /// The steps spent, in approaches.
+    pub approaches_spent: f64,
+    /// The approaches a plain campaign would need for the same relative standard error,
+    /// (1 − p)/(p·ε²); `None` without a positive estimate and an error.
+    pub brute_force_approaches: Option<f64>,
+    /// Approaches spent over those of the plain campaign.
+    pub cost_factor: Option<f64>,
+    /// Each repetition's levels, in the score's units (0 is the event), in order.
+    pub levels: Vec<Vec<f64>>,
+    /// Flights that reached the event (at most [`MAX_EVENT_FLIGHTS`]): the repetition
+    /// and the particle, with the branches to fly it again ([`replay_event_flight`]).
+    pub event_flights: Vec<(u64, EventParticle)>,
+}
+
+/// Estimates the probability per approach of `request.event` in `scenario` by adaptive
+/// multilevel splitting, calling `progress` with each repetition's run.
+pub fn estimate_rate(
+    scenario: &Scenario,
+    request: &RareRequest,
+    mut progress: impl FnMut(u64, &Run),
+) -> Result<RareResult, RareError> {
+    request.validate()?;
+    let thresholds = match request.threshold {
+        Some(value) => EventThresholds::of(scenario).with(request.event, value),
+        None => EventThresholds::of(scenario),
+    };
+    let start = ApproachFlight::new(scenario, request.event, thresholds)?;
+    let approach_steps = Simulation::new(scenario)
+        .map_err(FlightError::from)?
+        .run(&mut SummaryRecorder)
+        .steps
+        .max(1);
+    let settings = Settings {
+        particles: request.particles,
+        killed_per_iteration: (request.particles / 10).max(1),
+        checkpoint_every: CHECKPOINT_EVERY_STEPS,
+        ..Settings::new(0.0)
+    };
+    let budget = Budget {
+        target_rel_error: Some(request.target_rel_error),
+        max_repetitions: u64::MAX,
+        max_steps: request.max_runs.saturating_mul(approach_steps),
+    };
+    let mut levels = Vec::new();
+    let mut event_flights = Vec::new();
+    let estimate = estimate_observed(&start, &settings, request.seed, budget, |r, run| {
+        levels.push(run.levels.clone());
+        for particle in &run.events {
+            if event_flights.len() < MAX_EVENT_FLIGHTS {
+                event_flights.push((r, particle.clone()));
+            }
+        }
+        progress(r, run);
+    })?;
+    let approaches_spent = estimate.steps as f64 / approach_steps as f64;
+    let p = estimate.probability;
+    let brute_force_approaches = estimate
+        .relative_standard_error
+        .filter(|e| *e > 0.0 && p > 0.0)
+        .map(|e| (1.0 - p) / (p * e * e));
+    Ok(RareResult {
+        request: *request,
+        thresholds,
+        approach_steps,
+        approaches_spent,
+        cost_factor: brute_force_approaches.map(|n| approaches_spent / n),
+        brute_force_approaches,
+        estimate,
+        levels,
+        event_flights,
+    })
+}
+
+/// Flies again, recorded, the flight of `particle` from `scenario`'s start as the
+/// estimate flew it: the same flight, bit for bit.
+pub fn replay_event_flight(
+    scenario: &Scenario,
+    thresholds: EventThresholds,
+    event: RareEvent,
+    particle: &EventParticle,
+) -> Result<Option<crate::experiments::ApproachRun>, FlightError> {
+    let start = ApproachFlight::new(scenario, event, thresholds)?.recorded();
+    let flight = super::splitting::refly(&start, &particle.lineage, 0.0, |_| {});
+    Ok(flight.into_run())
+}

@@ -1,0 +1,95 @@
+//! Splitting on approaches (docs/rare-events.md): a flight that reached the event, flown
+//! again from the start along its branches, reaches it again, bit for bit; the result
+//! does not depend on the thread count; bad requests are named.
+
+use deckland::rare::{
+    estimate_rate, replay_event_flight, run, ApproachFlight, EventThresholds, RareEvent,
+    RareRequest, Settings,
+};
+use deckland::scenario::Scenario;
+
+/// The paper's set in the paper's sea with the longitudinal aircraft: fast, and the
+/// hook often crosses the ramp less than 3 m above it.
+fn scenario() -> Scenario {
+    Scenario {
+        seed: 17,
+        ..Scenario::paper()
+    }
+}
+
+#[test]
+fn a_flight_that_reached_the_event_reaches_it_again_when_replayed() {
+    let scenario = scenario();
+    let thresholds = EventThresholds::of(&scenario).with(RareEvent::RampStrike, 2.0);
+    let start = ApproachFlight::new(&scenario, RareEvent::RampStrike, thresholds).expect("valid");
+    let settings = Settings {
+        particles: 8,
+        killed_per_iteration: 2,
+        checkpoint_every: 1000,
+        ..Settings::new(0.0)
+    };
+    let result = run(&start, &settings, 5, 10_000_000).expect("runs");
+    assert!(!result.events.is_empty(), "{result:?}");
+    for particle in &result.events {
+        let flight = replay_event_flight(&scenario, thresholds, RareEvent::RampStrike, particle)
+            .expect("valid")
+            .expect("recorded");
+        let clearance = flight.summary.ramp_clearance_m.expect("crossed the ramp");
+        assert!(clearance < 2.0, "replayed clearance {clearance} m");
+        // Recorded as `land` records: every 10 ms from the start.
+        assert_eq!(flight.samples[0].time_s, 0.0);
+        assert!((flight.samples[1].time_s - 0.01).abs() < 1e-9);
+    }
+}
+
+#[test]
+fn the_estimate_is_the_same_on_one_and_on_two_threads() {
+    let request = RareRequest {
+        threshold: Some(1.0),
+        particles: 8,
+        max_runs: 300,
+        ..RareRequest::new(RareEvent::RampStrike, 3)
+    };
+    let on = |threads| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("pool")
+            .install(|| estimate_rate(&scenario(), &request, |_, _| {}))
+            .expect("estimate")
+    };
+    let one = on(1);
+    assert!(one.estimate.repetitions >= 1);
+    assert_eq!(one, on(2));
+}
+
+#[test]
+fn bad_requests_are_named() {
+    let scenario = scenario();
+    let error = |request: RareRequest| {
+        estimate_rate(&scenario, &request, |_, _| {})
+            .expect_err("refused")
+            .to_string()
+    };
+    let base = RareRequest::new(RareEvent::RampStrike, 1);
+    let message = error(RareRequest {
+        target_rel_error: 0.0,
+        ..base
+    });
+    assert!(message.contains("target_rel_error"), "{message}");
+    let message = error(RareRequest {
+        threshold: Some(-1e9),
+        ..base
+    });
+    assert!(
+        message.contains("threshold") && message.contains("-1000000000"),
+        "{message}"
+    );
+    let message = error(RareRequest {
+        threshold: Some(1.0),
+        ..RareRequest::new(RareEvent::Lost, 1)
+    });
+    assert!(message.contains("no threshold"), "{message}");
+    let message = error(RareRequest::new(RareEvent::OffCentre, 1));
+    assert!(message.contains("3-D approach"), "{message}");
+}
