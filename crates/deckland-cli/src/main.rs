@@ -50,6 +50,9 @@ enum Command {
     /// Merge the shard folders of a campaign (`campaign --shard K/M`) into the campaign
     /// folder of the campaign flown whole.
     Merge(commands::merge::MergeArgs),
+    /// Estimate the probability per approach of a catastrophe (ramp strike, hard
+    /// landing, …) down to one in a million, by splitting: summary, levels, the flights.
+    Rare(commands::rare::RareArgs),
 }
 
 fn run(cli: &Cli) -> Result<()> {
@@ -66,6 +69,7 @@ fn run(cli: &Cli) -> Result<()> {
         Command::Run(args) => commands::run::run(args),
         Command::Campaign(args) => commands::campaign::run(args),
         Command::Merge(args) => commands::merge::run(args),
+        Command::Rare(args) => commands::rare::run(args),
     }
 }
 

@@ -9,6 +9,7 @@ pub mod land;
 pub mod linearize;
 pub mod merge;
 pub mod outcome;
+pub mod rare;
 pub mod reproduce;
 pub mod run;
 pub mod scenario;
