@@ -15,7 +15,7 @@
 //!
 //! At its moment the score is m/σ₀; before, it is a forecast of the margin over how far
 //! a forecast τ seconds ahead may miss, m̂/σ(τ) with σ(τ) = σ₀ + a·τ + b·τ²,
-//! passed through −ln(1 + e^(−x)), which is ≈ x far below 0 and stays below 0: no
+//! passed through g(x) = x − 1 below 0 and −1/(1 + x) above, which stays below 0: no
 //! forecast can reach the event, only the flight itself. The forecasts:
 //! - `ramp_strike`: the hook's height τ ahead at its climb rate now (τ the time to reach
 //!   the ramp), less the ramp's then: its height in a calm sea plus its displacement now,
@@ -131,15 +131,14 @@ impl EventThresholds {
     }
 }
 
-/// σ(x) = −ln(1 + e^(−x)): ≈ x for x ≪ 0, always below 0 (kept below −10⁻³⁰⁰ where it
-/// would round to zero), increasing.
+/// g(x) = x − 1 below 0 and −1/(1 + x) above: increasing, smooth (g(0) = −1, slope 1 on
+/// both sides) and always below 0, which it approaches without ever rounding to it.
 fn below_zero(x: f64) -> f64 {
-    let value = if x > 0.0 {
-        -(-x).exp().ln_1p()
+    if x < 0.0 {
+        x - 1.0
     } else {
-        x - x.exp().ln_1p()
-    };
-    value.min(-1e-300)
+        -1.0 / (1.0 + x)
+    }
 }
 
 /// One event's state along a flight: its score now, and whether it is decided.
