@@ -14,14 +14,16 @@
 //! | `divergence` | the run ends diverged | 0 (the event), else never |
 //!
 //! At its moment the score is m/σ₀; before, it is a forecast of the margin over how far
-//! a forecast τ seconds ahead may miss, m̂/σ(τ) with σ(τ) = σ₀ + a·τ + b·τ²,
-//! passed through g(x) = x − 1 below 0 and −1/(1 + x) above, which stays below 0: no
-//! forecast can reach the event, only the flight itself. The forecasts:
-//! - `ramp_strike`: the hook's height τ ahead at its climb rate now (τ the time to reach
-//!   the ramp), less the ramp's then: its height in a calm sea plus its displacement now,
-//!   carried ahead at its rate for at most 2 s, weighted by e^(−τ/2 s);
+//! a forecast τ seconds ahead may miss, m̂/σ(τ) with σ(τ) = σ₀ + σ_∞·(1 − e^(−τ/T)),
+//! passed through g(x) = x up to −1 and −1/(2 + x) above, which stays below 0: no
+//! forecast can reach the event, only the flight itself. A decided margin below 0 scores
+//! g(m/σ₀) too, so a forecast converging on it meets it without a jump. The forecasts:
+//! - `ramp_strike`: the glide path's height at the ramp less the glide-path error now,
+//!   weighted by e^(−τ/4 s) (τ the time to reach the ramp), less the ramp's height then:
+//!   its height in a calm sea plus its displacement now, carried ahead at its rate for
+//!   at most 2 s, weighted by e^(−τ/2 s);
 //! - `hard_landing`: the aim point's sink rate now, weighted the same, less the hook's
-//!   climb rate, τ the time to the aim point;
+//!   climb rate, τ the time the hook takes to come down to the aim point's height;
 //! - `off_centre`: the hook's cross-track from the centreline now, τ as for the sink rate;
 //! - `divergence`: the largest of |α − α_mid|/half the α range and V_min/V, less 1,
 //!   times 10.
@@ -131,13 +133,25 @@ impl EventThresholds {
     }
 }
 
-/// g(x) = x − 1 below 0 and −1/(1 + x) above: increasing, smooth (g(0) = −1, slope 1 on
+/// g(x) = x up to −1 and −1/(2 + x) above: increasing, smooth (g(−1) = −1, slope 1 on
 /// both sides) and always below 0, which it approaches without ever rounding to it.
 fn below_zero(x: f64) -> f64 {
-    if x < 0.0 {
-        x - 1.0
+    if x < -1.0 {
+        x
     } else {
-        -1.0 / (1.0 + x)
+        -1.0 / (2.0 + x)
+    }
+}
+
+/// The score of a decided margin `x` (in spreads): x at and above 0 (the event), g(x)
+/// below, as the forecasts, so that a forecast that converges on the margin reaches the
+/// decision without a jump (a jump at the decision would make it every flight's highest
+/// score, and splitting would branch copies with nothing left to fly).
+fn decided(x: f64) -> f64 {
+    if x >= 0.0 {
+        x
+    } else {
+        below_zero(x)
     }
 }
 
@@ -162,7 +176,7 @@ impl Part {
 
     fn decide(&mut self, margin: f64) {
         if !self.decided {
-            self.score = margin;
+            self.score = decided(margin);
             self.decided = true;
         }
     }
@@ -243,7 +257,7 @@ impl EventScore {
         let closing_mps = (s.hook_x_rate_mps - s.ship_rate.pitch_centre_x_rate_mps).max(1.0);
         let ramp = deck.ramp(&s.ship);
         let to_ramp_s = ((ramp.x_m - s.hook_x_m) / closing_mps).max(0.0);
-        let to_touchdown_s = (s.range_to_go_m / closing_mps).max(0.0);
+
         // The ramp's height and rate now carry over a few seconds; farther ahead, the
         // ramp is at its height in a calm sea (its motion's mean).
         let calm = ShipPose {
@@ -258,8 +272,22 @@ impl EventScore {
         let carried = (-to_ramp_s / DECK_MEMORY_S).exp();
         let ramp_then_m = ramp_calm_m
             + carried * (ramp.h_m - ramp_calm_m + ramp_rate.h_mps * to_ramp_s.min(DECK_MEMORY_S));
-        let clearance_m = s.hook_h_m + s.hook_climb_rate_mps * to_ramp_s - ramp_then_m;
+        // The hook at the ramp: on the glide path there (a straight line down to its
+        // anchor), off it by the error now, which the guidance takes out over a few
+        // seconds.
+        let anchor_m = s.path_anchor_height_m.unwrap_or(s.aim_point.h_m);
+        let path_m = s.path_height_m.unwrap_or(s.hook_h_m);
+        let ramp_share = (deck.ramp_aft_of_aim_point_m
+            / s.range_to_go_m.max(deck.ramp_aft_of_aim_point_m))
+        .clamp(0.0, 1.0);
+        let path_at_ramp_m = anchor_m + (path_m - anchor_m) * ramp_share;
+        let error_kept = (-to_ramp_s / PATH_ERROR_MEMORY_S).exp();
+        let clearance_m = path_at_ramp_m - s.glide_path_error_m * error_kept - ramp_then_m;
         let aim_rate = deck.velocity_along_deck(&s.ship, &s.ship_rate, 0.0);
+        // The time until the hook comes down to the aim point's height at its sink rate
+        // relative to it now (0.5 m/s at least): 0 at touchdown.
+        let above_aim_m = (s.hook_h_m - s.aim_point.h_m).max(0.0);
+        let to_touchdown_s = above_aim_m / (aim_rate.h_mps - s.hook_climb_rate_mps).max(0.5);
         let sink_rate_mps =
             (-to_touchdown_s / DECK_MEMORY_S).exp() * aim_rate.h_mps - s.hook_climb_rate_mps;
         let t = &self.thresholds;
@@ -281,50 +309,53 @@ impl EventScore {
     }
 }
 
+/// How long a glide-path error now persists (s): the guidance takes it out.
+const PATH_ERROR_MEMORY_S: f64 = 4.0;
+
 /// How long the deck's motion now says something of its motion ahead (s): its weight in
 /// a forecast τ ahead is e^(−τ/2 s), and its rate is carried at most this long.
 const DECK_MEMORY_S: f64 = 2.0;
 
-/// How far a forecast `τ` seconds ahead may miss, σ(τ) = σ₀ + a·τ + b·τ²: the scores
-/// divide a forecast margin by it, so that a margin forecast from far out counts for far
-/// less than the same margin in close (an approximation of the committor, the probability
-/// of the event from here, which is the ideal score for splitting). Far out the forecasts
-/// are also biased (the path is not straight), hence the square.
+/// How far a forecast `τ` seconds ahead may miss, σ(τ) = σ₀ + σ_∞·(1 − e^(−τ/T)): the
+/// scores divide a forecast margin by it, so that the forecast margin is in spreads, an
+/// approximation of the committor (the probability of the event from here, which is the
+/// ideal score for splitting) that saturates far out, where the forecast says no more
+/// than the approach's nominal value.
 #[derive(Debug, Clone, Copy)]
 struct Spread {
     /// σ₀, at the moment that decides the event (the margin's unit).
     now: f64,
-    /// a (the margin's unit per second).
-    linear: f64,
-    /// b (the margin's unit per second squared).
-    quadratic: f64,
+    /// σ_∞, far out (the margin's unit).
+    far: f64,
+    /// T (s).
+    time_s: f64,
 }
 
 impl Spread {
     fn at(self, ahead_s: f64) -> f64 {
-        self.now + ahead_s * (self.linear + self.quadratic * ahead_s)
+        self.now + self.far * (1.0 - (-ahead_s / self.time_s).exp())
     }
 }
 
 /// The ramp clearance's spread (m).
 const RAMP_SPREAD: Spread = Spread {
     now: 0.2,
-    linear: 0.5,
-    quadratic: 0.05,
+    far: 1.5,
+    time_s: 2.0,
 };
 
 /// The touchdown sink rate's spread (m/s).
 const SINK_SPREAD: Spread = Spread {
     now: 0.2,
-    linear: 0.3,
-    quadratic: 0.05,
+    far: 1.0,
+    time_s: 2.0,
 };
 
 /// The touchdown offset's spread (m).
 const OFFSET_SPREAD: Spread = Spread {
     now: 0.2,
-    linear: 0.3,
-    quadratic: 0.05,
+    far: 1.0,
+    time_s: 3.0,
 };
 
 impl Recorder for EventScore {
