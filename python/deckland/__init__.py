@@ -58,6 +58,7 @@ __all__ = [
     "Trim",
     "campaign",
     "fly",
+    "rare",
     "lateral_step",
     "linearize",
     "linearize_six_dof",
@@ -200,6 +201,34 @@ def campaign(
     """
     columns, summary = _deckland.campaign(scenario, runs, seed, threads, compare)
     return Campaign(runs=table(columns), summary=summary)
+
+
+def rare(
+    scenario: Scenario,
+    event: str,
+    threshold: Optional[float] = None,
+    target_rel_error: Optional[float] = None,
+    max_runs: Optional[int] = None,
+    particles: Optional[int] = None,
+    seed: Optional[int] = None,
+    threads: Optional[int] = None,
+) -> Dict[str, Any]:
+    """The probability per approach of a catastrophe, by splitting, as ``deckland rare``.
+
+    ``event`` is ``"ramp_strike"``, ``"hard_landing"``, ``"off_centre"`` (3-D approach),
+    ``"divergence"`` or ``"lost"`` (any of them); ``threshold`` moves it (a ramp clearance
+    below it in m, a touchdown sink rate or offset above it). Splitting stops at
+    ``target_rel_error`` (default 0.1, checked from 32 repetitions on) or once
+    ``max_runs`` approaches' worth is spent (default 100 000). Returns the dict that
+    ``deckland rare`` writes as ``summary.json`` (without the folder and the time): the
+    estimate under ``estimate`` (``probability``, ``interval``,
+    ``relative_standard_error``, ``stop``), each repetition's ``levels``, the approaches
+    spent and those a plain campaign would need. The result does not depend on
+    ``threads``; a bad argument or a budget too small raises ``ValueError``.
+    """
+    return _deckland.rare(
+        scenario, event, threshold, target_rel_error, max_runs, particles, seed, threads
+    )
 
 
 def _register_gymnasium() -> None:

@@ -201,6 +201,16 @@ def campaign(
     threads: Optional[int] = None,
     compare: bool = False,
 ) -> Tuple[Dict[str, np.ndarray], Dict[str, Any]]: ...
+def rare(
+    scenario: Scenario,
+    event: str,
+    threshold: Optional[float] = None,
+    target_rel_error: Optional[float] = None,
+    max_runs: Optional[int] = None,
+    particles: Optional[int] = None,
+    seed: Optional[int] = None,
+    threads: Optional[int] = None,
+) -> Dict[str, Any]: ...
 def campaign_shard(
     scenario: Scenario,
     runs: int,

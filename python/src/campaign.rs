@@ -108,7 +108,7 @@ fn into_dict<'py>(
 pub(crate) const MAX_RUNS: u64 = deckland::monte_carlo::MAX_RUNS;
 
 /// A whole number argument in [`min`, `max`], else `ValueError` naming it and the range.
-fn whole(name: &str, value: i128, min: i128, max: u64) -> PyResult<u64> {
+pub(crate) fn whole(name: &str, value: i128, min: i128, max: u64) -> PyResult<u64> {
     match u64::try_from(value) {
         Ok(v) if value >= min && v <= max => Ok(v),
         _ => Err(argument_error(

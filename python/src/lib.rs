@@ -29,6 +29,7 @@ mod flight;
 mod gym;
 mod lateral_step;
 mod outputs;
+mod rare;
 mod render;
 mod scenario;
 mod six_dof;
@@ -51,6 +52,8 @@ mod _deckland {
     use super::gym::{Env, VecEnv};
     #[pymodule_export]
     use super::lateral_step::lateral_step;
+    #[pymodule_export]
+    use super::rare::rare;
     #[pymodule_export]
     use super::scenario::Scenario;
     #[pymodule_export]

@@ -195,3 +195,36 @@ def test_the_default_scenario_is_the_cli_default(cli):
     # `deckland scenario --print-default` is the commented template of the default.
     text = cli.run(["scenario", "--print-default"]).stdout
     assert deckland.Scenario.from_toml(text) == deckland.Scenario.default()
+
+
+def test_rare_is_deckland_rare(cli, tmp_path):
+    # The same splitting, bit for bit: the estimate, its interval and every level.
+    shutil.copy(SCENARIOS / "paper-adverse.toml", tmp_path / "paper-adverse.toml")
+    out = tmp_path / "rare"
+    args = ["--event", "ramp_strike", "--threshold", "1.0", "--particles", "8", "--max-runs", "150", "--seed", "4"]
+    expected = cli.json(
+        ["rare", "paper-adverse.toml", *args, "--save-flights", "0", "--json", "--out", str(out)],
+        cwd=tmp_path,
+    )
+    scenario = deckland.Scenario.from_file(tmp_path / "paper-adverse.toml")
+    actual = deckland.rare(
+        scenario, "ramp_strike", threshold=1.0, particles=8, max_runs=150, seed=4, threads=1
+    )
+    for key in ("estimate", "levels", "request", "thresholds", "approach_steps"):
+        assert actual[key] == expected[key], key
+    assert 0.0 < actual["estimate"]["probability"] < 1.0
+
+
+@pytest.mark.parametrize(
+    "kwargs,error,message",
+    [
+        ({"event": "crash"}, ValueError, "crash"),
+        ({"event": "ramp_strike", "threshold": True}, TypeError, "threshold"),
+        ({"event": "ramp_strike", "threshold": 99.0}, ValueError, "threshold"),
+        ({"event": "ramp_strike", "particles": 1.5}, TypeError, "particles"),
+        ({"event": "off_centre"}, ValueError, "3-D approach"),
+    ],
+)
+def test_rare_refuses_bad_arguments_by_name(kwargs, error, message):
+    with pytest.raises(error, match=message):
+        deckland.rare(deckland.Scenario.paper(), **kwargs)
