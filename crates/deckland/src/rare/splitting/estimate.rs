@@ -4,6 +4,8 @@
 use rayon::prelude::*;
 use serde::Serialize;
 
+use crate::monte_carlo::regularized_incomplete_beta;
+
 use super::{run, AmsError, Outcome, PartialReason, Run, Settings, Trajectory};
 
 /// Independent repetitions run in parallel per batch; a fixed size keeps the
@@ -270,7 +272,7 @@ fn summarise(tally: Tally, stop: Stop, budget: u64) -> Result<Estimate, AmsError
 /// 3rd ed., 2007, §6.4 and §6.14).
 pub(super) fn student_t_quantile(probability: f64, dof: f64) -> f64 {
     let tail = 1.0 - probability;
-    let upper = |t: f64| 0.5 * incomplete_beta(dof / 2.0, 0.5, dof / (dof + t * t));
+    let upper = |t: f64| 0.5 * regularized_incomplete_beta(dof / 2.0, 0.5, dof / (dof + t * t));
     let mut high = 1.0;
     while upper(high) > tail && high < 1e12 {
         high *= 2.0;
@@ -288,72 +290,4 @@ pub(super) fn student_t_quantile(probability: f64, dof: f64) -> f64 {
         }
     }
     0.5 * (low + high)
-}
-
-/// Regularised incomplete beta function `I_x(a, b)` (Numerical Recipes §6.4).
-fn incomplete_beta(a: f64, b: f64, x: f64) -> f64 {
-    if x <= 0.0 {
-        return 0.0;
-    }
-    if x >= 1.0 {
-        return 1.0;
-    }
-    let ln_front = ln_gamma(a + b) - ln_gamma(a) - ln_gamma(b) + a * x.ln() + b * (-x).ln_1p();
-    if x < (a + 1.0) / (a + b + 2.0) {
-        ln_front.exp() * beta_fraction(a, b, x) / a
-    } else {
-        1.0 - ln_front.exp() * beta_fraction(b, a, 1.0 - x) / b
-    }
-}
-
-/// Continued fraction of the incomplete beta function by the modified
-/// Lentz method (Numerical Recipes §6.4, `betacf`).
-fn beta_fraction(a: f64, b: f64, x: f64) -> f64 {
-    const TINY: f64 = 1e-300;
-    let guard = |v: f64| if v.abs() < TINY { TINY } else { v };
-    let mut c = 1.0;
-    let mut d = 1.0 / guard(1.0 - (a + b) * x / (a + 1.0));
-    let mut h = d;
-    for m in 1..10_000 {
-        let m = f64::from(m);
-        let even = m * (b - m) * x / ((a + 2.0 * m - 1.0) * (a + 2.0 * m));
-        d = 1.0 / guard(1.0 + even * d);
-        c = guard(1.0 + even / c);
-        h *= d * c;
-        let odd = -(a + m) * (a + b + m) * x / ((a + 2.0 * m) * (a + 2.0 * m + 1.0));
-        d = 1.0 / guard(1.0 + odd * d);
-        c = guard(1.0 + odd / c);
-        let delta = d * c;
-        h *= delta;
-        if (delta - 1.0).abs() < 1e-16 {
-            break;
-        }
-    }
-    h
-}
-
-/// `ln Γ(x)` for `x ≥ 0.5`: the Lanczos approximation with g = 7 and nine
-/// coefficients (C. Lanczos, "A precision approximation of the gamma
-/// function", SIAM J. Numer. Anal. B 1, 1964; coefficients of P. Godfrey,
-/// 2001), relative error near 1e-15.
-pub(super) fn ln_gamma(x: f64) -> f64 {
-    const G: f64 = 7.0;
-    const C: [f64; 9] = [
-        0.999_999_999_999_809_9,
-        676.520_368_121_885_1,
-        -1_259.139_216_722_402_8,
-        771.323_428_777_653_1,
-        -176.615_029_162_140_6,
-        12.507_343_278_686_905,
-        -0.138_571_095_265_720_12,
-        9.984_369_578_019_572e-6,
-        1.505_632_735_149_311_6e-7,
-    ];
-    let x = x - 1.0;
-    let sum = C[1..]
-        .iter()
-        .enumerate()
-        .fold(C[0], |acc, (i, c)| acc + c / (x + i as f64 + 1.0));
-    let t = x + G + 0.5;
-    0.5 * (2.0 * std::f64::consts::PI).ln() + (x + 0.5) * t.ln() - t + sum.ln()
 }
