@@ -12,14 +12,7 @@ use deckland::simulation::{Outcome, RunSummary, Simulation};
 /// and the run's summary.
 fn fly(scenario: &Scenario, event: RareEvent, thresholds: EventThresholds) -> (f64, RunSummary) {
     let mut simulation = Simulation::new(scenario).expect("valid");
-    let three_dimensional = simulation.signals().lateral.cross_track_m.is_some();
-    let mut score = EventScore::new(
-        event,
-        thresholds,
-        scenario,
-        *simulation.system().deck(),
-        three_dimensional,
-    );
+    let mut score = EventScore::new(event, thresholds, scenario, *simulation.system().deck());
     let mut maximum = f64::NEG_INFINITY;
     while simulation.advance(&mut score).is_none() {
         maximum = maximum.max(score.score());

@@ -52,17 +52,10 @@ impl ApproachFlight {
     ) -> Result<Self, FlightError> {
         let scenario = Arc::new(*scenario);
         let simulation = Simulation::new(&dispersed_run_scenario(&scenario, scenario.seed).0)?;
-        let three_dimensional = simulation.signals().lateral.cross_track_m.is_some();
-        if event == RareEvent::OffCentre && !three_dimensional {
+        if event == RareEvent::OffCentre && simulation.signals().lateral.cross_track_m.is_none() {
             return Err(FlightError::NeedsThreeDimensions);
         }
-        let score = EventScore::new(
-            event,
-            thresholds,
-            &scenario,
-            *simulation.system().deck(),
-            three_dimensional,
-        );
+        let score = EventScore::new(event, thresholds, &scenario, *simulation.system().deck());
         Ok(Self {
             scenario,
             event,
@@ -142,7 +135,6 @@ impl ApproachFlight {
             self.thresholds,
             &self.scenario,
             *self.simulation.system().deck(),
-            self.simulation.signals().lateral.cross_track_m.is_some(),
         );
     }
 }

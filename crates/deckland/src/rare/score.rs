@@ -189,7 +189,6 @@ pub struct EventScore {
     thresholds: EventThresholds,
     deck: DeckGeometry,
     min_airspeed_mps: f64,
-    three_dimensional: bool,
     ramp: Part,
     hard: Part,
     off_centre: Part,
@@ -199,21 +198,18 @@ pub struct EventScore {
 
 impl EventScore {
     /// The score of `event` with these thresholds, for a flight of `scenario` over
-    /// `deck`; `three_dimensional` says whether it flies the 3-D approach (an off-centre
-    /// touchdown needs it).
+    /// `deck`.
     pub fn new(
         event: RareEvent,
         thresholds: EventThresholds,
         scenario: &Scenario,
         deck: DeckGeometry,
-        three_dimensional: bool,
     ) -> Self {
         Self {
             event,
             thresholds,
             deck,
             min_airspeed_mps: scenario.outcome.min_airspeed_mps,
-            three_dimensional,
             ramp: Part::OPEN,
             hard: Part::OPEN,
             off_centre: Part::OPEN,
@@ -246,8 +242,7 @@ impl EventScore {
             RareEvent::HardLanding => ([self.hard; 4], 1),
             RareEvent::OffCentre => ([self.off_centre; 4], 1),
             RareEvent::Divergence => ([self.divergence; 4], 1),
-            RareEvent::Lost if self.three_dimensional => (all, 4),
-            RareEvent::Lost => ([self.ramp, self.hard, self.divergence, self.divergence], 3),
+            RareEvent::Lost => (all, 4),
         }
     }
 
@@ -296,11 +291,10 @@ impl EventScore {
         self.hard.forecast(
             (sink_rate_mps - t.hard_landing_sink_rate_mps) / SINK_SPREAD.at(to_touchdown_s),
         );
-        if let Some(cross_track_m) = s.lateral.cross_track_m {
-            self.off_centre.forecast(
-                (cross_track_m.abs() - t.off_centre_m) / OFFSET_SPREAD.at(to_touchdown_s),
-            );
-        }
+        // The longitudinal approach is flown on the centreline: its cross-track is 0.
+        let cross_track_m = s.lateral.cross_track_m.unwrap_or(0.0);
+        self.off_centre
+            .forecast((cross_track_m.abs() - t.off_centre_m) / OFFSET_SPREAD.at(to_touchdown_s));
         let alpha_mid = 0.5 * (ALPHA_MAX_RAD + ALPHA_MIN_RAD);
         let alpha_half = 0.5 * (ALPHA_MAX_RAD - ALPHA_MIN_RAD);
         let used = ((s.alpha_rad - alpha_mid).abs() / alpha_half)
@@ -380,11 +374,9 @@ impl Recorder for EventScore {
                     (touchdown.sink_rate_mps - self.thresholds.hard_landing_sink_rate_mps)
                         / SINK_SPREAD.now,
                 );
-                if let Some(lateral) = touchdown.lateral {
-                    self.off_centre.decide(
-                        (lateral.offset_m.abs() - self.thresholds.off_centre_m) / OFFSET_SPREAD.now,
-                    );
-                }
+                let offset_m = touchdown.lateral.map_or(0.0, |lateral| lateral.offset_m);
+                self.off_centre
+                    .decide((offset_m.abs() - self.thresholds.off_centre_m) / OFFSET_SPREAD.now);
                 self.divergence.decide(f64::NEG_INFINITY);
             }
             Event::PassedLastWire { .. } | Event::WaveOff { .. } => {}

@@ -78,9 +78,7 @@ impl Reseed for ClosedLoop {
         self.wind.reseed(key);
         self.sensor.reseed(key);
         self.deck_predictor.reseed(key);
-        if let Some(lateral) = &mut self.lateral {
-            lateral.sensor.reseed(key);
-        }
+        self.lateral.reseed(key);
     }
 }
 

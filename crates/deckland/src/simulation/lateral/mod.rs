@@ -146,6 +146,13 @@ pub struct LateralStreams {
     pub heading: NoiseStream,
 }
 
+/// The 3-D approach's parts keep one stream source: the ship's lateral sensing.
+impl Reseed for LateralLoop {
+    fn reseed(&mut self, key: u64) {
+        self.sensor.reseed(key);
+    }
+}
+
 impl Reseed for LateralStreams {
     fn reseed(&mut self, key: u64) {
         self.ship.reseed(key);
