@@ -5,32 +5,39 @@ mod common;
 
 use common::{deckland, scratch};
 use std::fs;
+use std::path::Path;
+use std::process::Output;
 
 const PAPER: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
     "/../../scenarios/paper-adverse.toml"
 );
 
-#[test]
-fn rare_writes_the_estimate_the_levels_and_the_flights_that_reached_the_event() {
-    let out = scratch("rare");
-    let result = deckland([
+/// `deckland rare` on the paper's adverse set for the hook less than `threshold` m over
+/// the ramp, with 8 particles and at most `max_runs` approaches, into `out`.
+fn rare_ramp(threshold: &str, max_runs: &str, out: &Path, more: &[&str]) -> Output {
+    let mut args = vec![
         "rare",
         PAPER,
         "--event",
         "ramp_strike",
         "--threshold",
-        "1.0",
+        threshold,
         "--particles",
         "8",
         "--max-runs",
-        "150",
-        "--save-flights",
-        "1",
+        max_runs,
         "--out",
         out.to_str().expect("utf-8"),
-        "--json",
-    ]);
+    ];
+    args.extend_from_slice(more);
+    deckland(args)
+}
+
+#[test]
+fn rare_writes_the_estimate_the_levels_and_the_flights_that_reached_the_event() {
+    let out = scratch("rare");
+    let result = rare_ramp("1.0", "150", &out, &["--save-flights", "1", "--json"]);
     assert!(
         result.status.success(),
         "{}",
@@ -72,20 +79,7 @@ fn rare_writes_the_estimate_the_levels_and_the_flights_that_reached_the_event() 
 fn an_event_no_flight_can_reach_is_said_so_not_a_silent_zero() {
     let out = scratch("rare-unreachable");
     // The hook 29 m below the ramp: no approach of the paper's sea goes there.
-    let result = deckland([
-        "rare",
-        PAPER,
-        "--event",
-        "ramp_strike",
-        "--threshold",
-        "-29",
-        "--particles",
-        "8",
-        "--max-runs",
-        "300",
-        "--out",
-        out.to_str().expect("utf-8"),
-    ]);
+    let result = rare_ramp("-29", "300", &out, &[]);
     let stderr = String::from_utf8_lossy(&result.stderr);
     let stdout = String::from_utf8_lossy(&result.stdout);
     // Either every repetition went extinct (said, with the highest level reached), or

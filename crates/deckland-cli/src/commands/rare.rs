@@ -6,6 +6,7 @@
 //! and under `event_flights/` each saved flight that reached the event, replayed from its
 //! start along its branches: `approach.csv`, `summary.json` and the plots of `land`.
 
+use super::campaign::{threads_or_cpus, MAX_THREADS};
 use super::common::{load_scenario_file, seed_parser, OutputArgs};
 use crate::commands::land::figures;
 use crate::html::{number, Report};
@@ -23,9 +24,6 @@ use deckland::scenario::{Mission, Scenario};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use std::io::IsTerminal;
 use std::path::PathBuf;
-
-/// Most worker threads, as for `campaign`.
-const MAX_THREADS: u16 = 256;
 
 /// Options of `deckland rare`.
 #[derive(Debug, Clone, Args)]
@@ -56,7 +54,7 @@ pub struct RareArgs {
     pub seed: Option<u64>,
     /// Worker threads, 1 to 256 (default: the number of CPUs). The result does not
     /// depend on it.
-    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=MAX_THREADS as i64))]
+    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=MAX_THREADS), allow_negative_numbers = true)]
     pub threads: Option<u16>,
     /// Flights that reached the event to save with their plots (at most 20).
     #[arg(long, default_value_t = 3)]
@@ -94,15 +92,7 @@ pub fn run(args: &RareArgs) -> Result<()> {
         None => EventThresholds::of(&scenario),
     };
     ApproachFlight::new(&scenario, request.event, thresholds)?;
-    let threads = args.threads.map_or_else(
-        || {
-            std::thread::available_parallelism()
-                .map(|n| n.get())
-                .unwrap_or(1)
-                .min(MAX_THREADS as usize)
-        },
-        usize::from,
-    );
+    let threads = threads_or_cpus(args.threads);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()

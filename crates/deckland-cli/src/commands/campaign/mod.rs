@@ -93,6 +93,19 @@ pub const MAX_RUNS: u64 = deckland::monte_carlo::MAX_RUNS;
 /// Most worker threads: the library's limit, the same for every front end.
 pub const MAX_THREADS: i64 = deckland::monte_carlo::MAX_THREADS as i64;
 
+/// `--threads`, else the number of CPUs (at most [`MAX_THREADS`]).
+pub fn threads_or_cpus(threads: Option<u16>) -> usize {
+    threads.map_or_else(
+        || {
+            std::thread::available_parallelism()
+                .map(|n| n.get())
+                .unwrap_or(1)
+                .min(MAX_THREADS as usize)
+        },
+        usize::from,
+    )
+}
+
 /// The progress bar on stderr: hidden when stderr is not a terminal or with `--json`.
 fn progress_bar(total: u64, hidden: bool) -> ProgressBar {
     if hidden || !std::io::stderr().is_terminal() {
@@ -131,15 +144,7 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
     if args.compare {
         spec = spec.comparing_pitch_controllers();
     }
-    let threads = args.threads.map_or_else(
-        || {
-            std::thread::available_parallelism()
-                .map(|n| n.get())
-                .unwrap_or(1)
-                .min(MAX_THREADS as usize)
-        },
-        usize::from,
-    );
+    let threads = threads_or_cpus(args.threads);
     let shard = args.shard.unwrap_or(Shard::WHOLE).of_runs(args.runs)?;
     spec = spec.sharded(shard);
     let output = OutputDir::prepare("campaign", args.output.out.as_deref(), args.output.force)?;
