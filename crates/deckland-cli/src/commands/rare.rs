@@ -111,6 +111,7 @@ pub fn run(args: &RareArgs) -> Result<()> {
         })?;
     bar.finish_and_clear();
     let elapsed_s = started.elapsed().as_secs_f64();
+    warn_if_extinct(&result);
     write_outputs(&scenario, &result, &output, args.save_flights, elapsed_s)?;
     if args.output.json {
         outln!(
@@ -338,6 +339,22 @@ fn print_result(result: &RareResult, elapsed_s: f64, output: &OutputDir) -> Resu
     for row in result_rows(result) {
         outln!("{:<28} {}", row[0], row[1])?;
     }
+    if let Some(factor) = result.cost_factor {
+        outln!(
+            "{:<28} {:.2} % of a plain campaign's approaches",
+            "cost",
+            100.0 * factor
+        )?;
+    }
+    outln!("{:<28} {:.0} s", "time", elapsed_s)?;
+    outln!("results in {}", output.path().display())?;
+    Ok(())
+}
+
+/// The warning of an estimate of 0: every repetition went extinct (on stderr, with or
+/// without `--json`, which also holds `extinct_repetitions`).
+fn warn_if_extinct(result: &RareResult) {
+    let e = &result.estimate;
     if e.probability == 0.0 {
         let level = result
             .levels
@@ -351,14 +368,4 @@ fn print_result(result: &RareResult, elapsed_s: f64, output: &OutputDir) -> Resu
             e.repetitions
         ));
     }
-    if let Some(factor) = result.cost_factor {
-        outln!(
-            "{:<28} {:.2} % of a plain campaign's approaches",
-            "cost",
-            100.0 * factor
-        )?;
-    }
-    outln!("{:<28} {:.0} s", "time", elapsed_s)?;
-    outln!("results in {}", output.path().display())?;
-    Ok(())
 }
