@@ -335,7 +335,6 @@ fn stop_text(stop: Stop) -> &'static str {
 }
 
 fn print_result(result: &RareResult, elapsed_s: f64, output: &OutputDir) -> Result<()> {
-    let e = &result.estimate;
     for row in result_rows(result) {
         outln!("{:<28} {}", row[0], row[1])?;
     }
