@@ -17,8 +17,7 @@ use anyhow::{bail, Context, Result};
 use clap::Args;
 use deckland::experiments::ApproachRow;
 use deckland::rare::{
-    estimate_rate, replay_event_flight, ApproachFlight, EventThresholds, RareEvent, RareRequest,
-    RareResult, Run, Stop,
+    estimate_rate, replay_event_flight, RareEvent, RareRequest, RareResult, Run, Stop,
 };
 use deckland::scenario::{Mission, Scenario};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
@@ -85,13 +84,8 @@ pub fn run(args: &RareArgs) -> Result<()> {
         particles: args.particles,
         ..RareRequest::new(args.event, args.seed.unwrap_or(scenario.seed))
     };
-    request.validate()?;
     // The scenario must fly and be scored before the output folder is made.
-    let thresholds = match request.threshold {
-        Some(value) => EventThresholds::of(&scenario).with(request.event, value),
-        None => EventThresholds::of(&scenario),
-    };
-    ApproachFlight::new(&scenario, request.event, thresholds)?;
+    request.start(&scenario)?;
     let threads = threads_or_cpus(args.threads);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)

@@ -78,6 +78,26 @@ impl RareRequest {
     }
 }
 
+impl RareRequest {
+    /// Checks the request and sets up the approach it starts from, with the thresholds
+    /// it flies (the scenario's, `threshold` moving the event's): everything that can be
+    /// refused before any flying.
+    pub fn start(
+        &self,
+        scenario: &Scenario,
+    ) -> Result<(ApproachFlight, EventThresholds), RareError> {
+        self.validate()?;
+        let thresholds = match self.threshold {
+            Some(value) => EventThresholds::of(scenario).with(self.event, value),
+            None => EventThresholds::of(scenario),
+        };
+        Ok((
+            ApproachFlight::new(scenario, self.event, thresholds)?,
+            thresholds,
+        ))
+    }
+}
+
 /// Why no rate could be estimated.
 #[derive(Debug, thiserror::Error)]
 pub enum RareError {
@@ -125,12 +145,7 @@ pub fn estimate_rate(
     request: &RareRequest,
     mut progress: impl FnMut(u64, &Run),
 ) -> Result<RareResult, RareError> {
-    request.validate()?;
-    let thresholds = match request.threshold {
-        Some(value) => EventThresholds::of(scenario).with(request.event, value),
-        None => EventThresholds::of(scenario),
-    };
-    let start = ApproachFlight::new(scenario, request.event, thresholds)?;
+    let (start, thresholds) = request.start(scenario)?;
     let approach_steps = Simulation::new(scenario)
         .map_err(FlightError::from)?
         .run(&mut SummaryRecorder)
