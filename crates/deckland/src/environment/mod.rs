@@ -11,6 +11,7 @@
 
 mod angled_deck;
 mod deck;
+mod deck_window;
 pub mod lyapunov;
 pub mod seaway;
 mod ship;
