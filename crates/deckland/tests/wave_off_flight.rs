@@ -38,3 +38,53 @@ fn a_wave_off_in_the_wake_stops_its_push_over_in_time() {
     assert_eq!(default.outcome, Outcome::WaveOff, "{default:?}");
     assert!(lowest > -4.0, "α fell to {lowest:.2}°");
 }
+
+/// Run 58 of `deckland campaign FILE --runs 400 --seed 90210` (seed
+/// 1272364221688779689), FILE `scenarios/sea-state-6.toml` with the early check of the
+/// first release (`[control.wave_off.recovery] foul_deck_time_to_go_s = 10.0`), waves
+/// off on `foul_deck_motion` at t = 15.1 s, 10 s from the deck. At full thrust
+/// throughout, the aircraft accelerates from 68 to 109 m/s in 7.5 s, the climb
+/// overshoots its 5 m/s sevenfold, and α falls below the aerodynamic model's −5° at
+/// 22.7 s: the run ends diverged. With the wave-off's airspeed limit (10 m/s over the
+/// approach airspeed, the default) the thrust comes off above it, by m/τ_e per m/s: the
+/// run ends a wave-off, its airspeed at most 9 m/s over the limit (it reaches 86.5 m/s
+/// against 79.1 m/s: about its 7.5 m/s² times the engines' 0.625 s) and α above −2°.
+#[test]
+fn an_early_wave_off_holds_its_airspeed_and_climbs_away() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../scenarios/sea-state-6.toml"
+    );
+    let text = std::fs::read_to_string(path).unwrap()
+        + "\n[control.wave_off.recovery]\nfoul_deck_time_to_go_s = 10.0\n";
+    let sea = load_scenario(&text, "sea-state-6-early.toml").unwrap();
+    assert_eq!(sea.control.wave_off.climb_out_airspeed_margin_mps, 0.0);
+    let (scenario, _) = dispersed_run_scenario(&sea, 1_272_364_221_688_779_689);
+    let fly = |margin_mps: f64| {
+        let mut scenario = scenario;
+        scenario.control.wave_off.climb_out_airspeed_margin_mps = margin_mps;
+        let recorder =
+            common::fly_recorded(deckland::simulation::Simulation::new(&scenario).unwrap());
+        let highest = |f: fn(&deckland::simulation::Signals) -> f64| {
+            recorder
+                .samples
+                .iter()
+                .map(f)
+                .fold(f64::NEG_INFINITY, f64::max)
+        };
+        let fastest = highest(|s| s.airspeed_mps);
+        let lowest_alpha = -highest(|s| -s.alpha_rad.to_degrees());
+        (recorder.summary.unwrap(), fastest, lowest_alpha)
+    };
+    let (full, fastest, _) = fly(0.0);
+    assert_eq!(full.outcome, Outcome::Diverged, "{full:?}");
+    assert!(fastest > 100.0, "{fastest} m/s");
+    let (limited, fastest, lowest_alpha) = fly(10.0);
+    assert_eq!(limited.outcome, Outcome::WaveOff, "{limited:?}");
+    let limit_mps = scenario.approach.airspeed_mps + 10.0;
+    assert!(
+        fastest < limit_mps + 9.0,
+        "{fastest} m/s against {limit_mps}"
+    );
+    assert!(lowest_alpha > -2.0, "α fell to {lowest_alpha:.2}°");
+}

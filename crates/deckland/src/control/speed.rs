@@ -159,6 +159,25 @@ impl SpeedController {
         self.trim_thrust_n + self.mass_kg * self.loop_controller.output(error_mps, integral_m, 0.0)
     }
 
+    /// The wave-off's thrust (N) at the airspeed error `error_mps` (reference minus
+    /// airspeed): `full_n` up to `margin_mps` over the reference, then less by
+    /// m·`gain_per_s` per m/s beyond, not below 0; `margin_mps` 0 is full thrust at any
+    /// airspeed.
+    #[inline]
+    pub fn climb_out_thrust_n(
+        &self,
+        error_mps: f64,
+        margin_mps: f64,
+        gain_per_s: f64,
+        full_n: f64,
+    ) -> f64 {
+        let over_mps = -error_mps - margin_mps;
+        if margin_mps <= 0.0 || over_mps <= 0.0 {
+            return full_n;
+        }
+        (full_n - self.mass_kg * gain_per_s * over_mps).max(0.0)
+    }
+
     /// Rate of the integral state (m/s), frozen while the thrust is saturated.
     #[inline]
     pub fn integral_rate(&self, error_mps: f64, integral_m: f64) -> f64 {

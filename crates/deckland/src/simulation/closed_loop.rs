@@ -534,7 +534,7 @@ impl ClosedLoop {
     }
 
     /// The thrust command before the taps (N): the held command, full thrust of both
-    /// engines in a wave-off (docs/model.md §9), the late abort's thrust blended in by
+    /// engines in a wave-off up to its airspeed limit (docs/model.md §9), the late abort's thrust blended in by
     /// its share, or the speed law's for the airspeed error `speed_error` (m/s).
     #[inline(always)]
     fn thrust_command_n<P: Plant>(
@@ -547,7 +547,15 @@ impl ClosedLoop {
     ) -> f64 {
         match held.commands {
             Some(commands) => commands.thrust_n,
-            None if held.wave_off => aircraft.longitudinal().engines().max_total_thrust_n(),
+            None if held.wave_off => {
+                let engines = aircraft.longitudinal().engines();
+                self.speed.climb_out_thrust_n(
+                    speed_error,
+                    self.wave_off.climb_out_airspeed_margin_mps,
+                    1.0 / engines.parameters().time_constant_s,
+                    engines.max_total_thrust_n(),
+                )
+            }
             None if outer.late_abort_thrust_share > 0.0 => {
                 let law = self.speed.thrust_command_n(speed_error, speed_state[0]);
                 let full = aircraft.longitudinal().engines().max_total_thrust_n();

@@ -136,6 +136,19 @@ pub struct WaveOffParameters {
     /// predicted τ ahead, as the approach's α protection does; 0.3 s, the pitch loop's
     /// lag (docs/landing-design.md); 0 holds α itself (the paper's set); [0, 2].
     pub alpha_lead_s: f64,
+    /// The wave-off's airspeed limit, as a margin over the approach airspeed (m/s): the
+    /// wave-off flies full thrust of both engines until the airspeed passes the approach
+    /// airspeed plus this; above it the thrust comes off by m/τ_e per m/s over (τ_e
+    /// the engines' time constant: the fastest they follow, which damps the speed at
+    /// about 0.5; the aircraft overshoots the limit by about its acceleration times τ_e,
+    /// some 7 m/s). 10 m/s (about 20 kn, a project choice
+    /// far below the flaps' 250-kn limit): a wave-off at full thrust from 10 s out
+    /// reached 109 m/s, where the α floor could no longer hold the pitch loop and α fell
+    /// below the aerodynamic model's −5° (docs/seaway-results.md). 0 is no limit (full
+    /// thrust throughout, the paper's set and a file whose `[control.wave_off]` names
+    /// none); [0, 50].
+    #[serde(default = "WaveOffParameters::no_airspeed_limit")]
+    pub climb_out_airspeed_margin_mps: f64,
     /// The limits in which a carrier recovers aircraft and the early "foul deck:
     /// motion" wave-off against them (`wave_off/recovery.rs`); a file with no
     /// `[control.wave_off.recovery]` section flies without the early check.
@@ -171,6 +184,7 @@ impl Default for WaveOffParameters {
             heavy_sea_ramp_sigma_start_m: 4.3,
             heavy_sea_ramp_sigma_full_m: 4.5,
             alpha_lead_s: 0.3,
+            climb_out_airspeed_margin_mps: 10.0,
             recovery: RecoveryLimits::default(),
         }
     }
@@ -188,9 +202,26 @@ impl WaveOffParameters {
             heavy_sea_late_abort_ramp_strike_probability: 0.0,
             alpha_lead_s: 0.0,
             min_alpha_deg: 2.0,
+            climb_out_airspeed_margin_mps: Self::no_airspeed_limit(),
             recovery: RecoveryLimits::named_by_none(),
             ..Self::default()
         }
+    }
+
+    /// The wave-off of a file whose `[control]` or `[control.wave_off]` section names
+    /// none of the keys the seaway's recovery brought: no airspeed limit and no early
+    /// check, as every file written before them flies.
+    pub fn named_by_none() -> Self {
+        Self {
+            climb_out_airspeed_margin_mps: Self::no_airspeed_limit(),
+            recovery: RecoveryLimits::named_by_none(),
+            ..Self::default()
+        }
+    }
+
+    /// No airspeed limit in the wave-off (full thrust throughout).
+    pub fn no_airspeed_limit() -> f64 {
+        0.0
     }
 
     /// Checks every limit: window 0–30 s, decision point 0–30 s and not after the window
@@ -234,6 +265,11 @@ impl WaveOffParameters {
         Bounds::closed(-5.0, 15.0).check(SECTION, "min_alpha_deg", self.min_alpha_deg)?;
         self.validate_heavy_sea(SECTION, probability)?;
         Bounds::closed(0.0, 2.0).check(SECTION, "alpha_lead_s", self.alpha_lead_s)?;
+        Bounds::closed(0.0, 50.0).check(
+            SECTION,
+            "climb_out_airspeed_margin_mps",
+            self.climb_out_airspeed_margin_mps,
+        )?;
         self.recovery.validate()
     }
 
@@ -565,7 +601,7 @@ impl WaveOffParameters {
 mod heavy_sea;
 mod recovery;
 
-pub use recovery::RecoveryLimits;
+pub use recovery::{FoulDeckModel, RecoveryLimits};
 
 #[cfg(test)]
 mod tests;
