@@ -33,6 +33,7 @@ from ._deckland import Scenario, _Env, _VecEnv
 from .env import (
     MAX_EPISODE_STEPS,
     REWARDS,
+    WAVE_OFF_BEFORE_RECOVERY,
     CarrierLandingEnv,
     CarrierLandingVecEnv,
     _check_reward_keys,
@@ -67,6 +68,7 @@ CROSSWIND_SETTINGS: Dict[str, Any] = {
     "environment.ship.sway_rms_m": 0.25,
     "environment.ship.forward_speed_mps": 7.7,
     "environment.wind.crosswind_mps": 5.0,
+    **WAVE_OFF_BEFORE_RECOVERY,
 }
 
 

@@ -45,5 +45,6 @@ pub use loop_controller::{LoopController, LoopGains};
 pub use sink_rate::SinkRateControllerParameters;
 pub use speed::{SpeedController, SpeedControllerParameters};
 pub use wave_off::{
-    RecoveryLimits, WaveOffCriterion, WaveOffDecision, WaveOffInputs, WaveOffParameters,
+    FoulDeckModel, RecoveryLimits, WaveOffCriterion, WaveOffDecision, WaveOffInputs,
+    WaveOffParameters,
 };

@@ -117,7 +117,10 @@ pub struct ControlSection {
     pub guidance: GuidanceParameters,
     /// Glide path and deck-motion compensation.
     pub flight_path: FlightPathParameters,
-    /// Automatic wave-off (docs/model.md §9).
+    /// Automatic wave-off (docs/model.md §9); a file whose `[control]` names no
+    /// `wave_off` section flies it without the keys the seaway's recovery brought
+    /// ([`WaveOffParameters::named_by_none`]).
+    #[serde(default = "WaveOffParameters::named_by_none")]
     pub wave_off: WaveOffParameters,
     /// Direct lift control (docs/model.md §5.9).
     pub direct_lift: DirectLiftParameters,
@@ -145,6 +148,15 @@ impl Default for ControlSection {
 }
 
 impl ControlSection {
+    /// The section of a file that names no `[control]`: the default's, with the wave-off
+    /// of a file that names none ([`WaveOffParameters::named_by_none`]).
+    pub fn named_by_none() -> Self {
+        Self {
+            wave_off: WaveOffParameters::named_by_none(),
+            ..Self::default()
+        }
+    }
+
     /// Checks every controller.
     pub fn validate(&self) -> Result<(), ParameterError> {
         if let Some(rate) = self.flight_computer_rate_hz {
@@ -361,7 +373,9 @@ pub struct Scenario {
     pub aircraft: AircraftSection,
     /// Ship motion, deck geometry, wind and sensor noise.
     pub environment: EnvironmentSection,
-    /// The controllers.
+    /// The controllers; a file that names no `[control]` flies
+    /// [`ControlSection::named_by_none`].
+    #[serde(default = "ControlSection::named_by_none")]
     pub control: ControlSection,
     /// The start of an approach.
     pub approach: ApproachParameters,

@@ -17,7 +17,9 @@ use crate::aircraft::{linearize, trim, Aircraft, PlantModel, TrimError, TrimPoin
 use crate::control::pitch::{
     AxisLaw, AxisPlantDerivatives, BuiltPitchLaw, PitchDesignContext, PitchLaw, PitchLawInputs,
 };
-use crate::control::{CommandRamp, DirectLiftParameters, FlightPathGenerator, SpeedController};
+use crate::control::{
+    CommandRamp, DirectLiftParameters, FlightPathGenerator, SpeedController, WaveOffParameters,
+};
 use crate::environment::{mean_wind, DeckGeometry, ShipMotion, ShipMotionState, Wind, WindModel};
 use crate::parameters::ParameterError;
 use crate::random::{stream_names, NoiseStream, RandomStreams};
@@ -450,6 +452,10 @@ fn start(
         airspeed,
         env.ship_sensing.latency_s,
     );
+    let wave_off = WaveOffParameters {
+        recovery: (scenario.control.wave_off.recovery).for_ship(&environment.ship, &env.deck),
+        ..scenario.control.wave_off
+    };
     let system = ClosedLoop {
         layout: blocks.layout,
         plant: blocks.plant,
@@ -469,7 +475,7 @@ fn start(
             .control
             .flight_computer_rate_hz
             .map(|rate| FlightComputer::new(rate, initial.len())),
-        wave_off: scenario.control.wave_off,
+        wave_off,
         wake_feedforward_lead_s: wake_feedforward_lead_s(scenario),
         direct_lift: blocks.direct_lift,
         user_blocks: blocks.user_blocks,

@@ -347,6 +347,9 @@ pub struct DeckForecast {
     pub ramp_height_sigma_m: f64,
     /// σ of the landing point's predicted climb rate at touchdown (m/s); 0 likewise.
     pub landing_point_climb_rate_sigma_mps: f64,
+    /// Predicted ship roll at touchdown (rad, starboard down); 0 without a roll forecast
+    /// (the longitudinal approach).
+    pub roll_rad: f64,
 }
 
 /// The generator's output for the hook.

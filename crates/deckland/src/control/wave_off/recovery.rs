@@ -6,7 +6,31 @@
 use serde::{Deserialize, Serialize};
 
 use super::{WaveOffCriterion, WaveOffDecision, WaveOffInputs, WaveOffParameters};
+use crate::environment::{DeckGeometry, ShipMotion};
 use crate::parameters::{Bounds, ParameterError};
+
+/// How the early check reads the deck forecast against the limits
+/// (`foul_deck_model`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FoulDeckModel {
+    /// Pitch against the lens, twice the excursion against the total motion, and the
+    /// landing point's vertical velocity times the window against the motion in it; no
+    /// roll. The check as it first came, and of a file that names no model.
+    Linear,
+    /// As `linear`, with the forecast roll against the lens's roll limit, and the motion
+    /// in the window as the stationary sea's best estimate from the vertical velocity,
+    /// β·ḣ (docs/model.md §12): the velocity times the window overstates a sea's motion
+    /// over 4 s, by about a third at a 9-s encounter period. The default.
+    Stationary,
+}
+
+impl FoulDeckModel {
+    /// The model of a file that names none: the check as it first came.
+    pub fn named_by_none() -> Self {
+        Self::Linear
+    }
+}
 
 /// The recovery limits (the LSO NATOPS manual as summarised in public sources; each an
 /// assumption of that summary, docs/model.md §12) and the early check against them.
@@ -22,13 +46,19 @@ pub struct RecoveryLimits {
     /// designed for decisions in the last 4 s.
     #[serde(default = "RecoveryLimits::off")]
     pub foul_deck_time_to_go_s: f64,
+    /// How the early check reads the forecast against the limits: `stationary` (the
+    /// default) or `linear` (the check as it first came, and of a file that names
+    /// none); [`FoulDeckModel`].
+    #[serde(default = "FoulDeckModel::named_by_none")]
+    pub foul_deck_model: FoulDeckModel,
     /// Total deck motion at which recovery stops (m): 35 ft, 10.67 m, peak to peak; the
     /// check doubles the landing point's predicted excursion from its mean height.
     pub total_deck_motion_m: f64,
     /// The lens's stabilisation limit in ship pitch (deg): ±1.62°.
     pub lens_pitch_limit_deg: f64,
-    /// The lens's stabilisation limit in ship roll (deg): ±8.19°. Named for the record;
-    /// the early check does not read it yet (the longitudinal forecast has no roll).
+    /// The lens's stabilisation limit in ship roll (deg): ±8.19°; checked by the
+    /// `stationary` model against the forecast roll (the 3-D approach's; the
+    /// longitudinal approach forecasts none).
     pub lens_roll_limit_deg: f64,
     /// Deck motion in `deck_motion_window_s` beyond which recovery stops (m): 8 ft,
     /// 2.44 m; the check takes the landing point's predicted vertical velocity at
@@ -36,17 +66,24 @@ pub struct RecoveryLimits {
     pub deck_motion_in_window_m: f64,
     /// The window of that motion (s): 4 s.
     pub deck_motion_window_s: f64,
+    /// β, the motion in the window per m/s of the landing point's vertical velocity
+    /// (s), of the ship flown: set when the loop is built
+    /// ([`RecoveryLimits::for_ship`]); `None`, the window itself.
+    #[serde(skip)]
+    pub window_motion_per_rate_s: Option<f64>,
 }
 
 impl Default for RecoveryLimits {
     fn default() -> Self {
         Self {
-            foul_deck_time_to_go_s: 0.0,
+            foul_deck_time_to_go_s: 10.0,
+            foul_deck_model: FoulDeckModel::Stationary,
             total_deck_motion_m: 10.668, // 35 ft of 0.3048 m
             lens_pitch_limit_deg: 1.62,
             lens_roll_limit_deg: 8.19,
             deck_motion_in_window_m: 2.4384, // 8 ft
             deck_motion_window_s: 4.0,
+            window_motion_per_rate_s: None,
         }
     }
 }
@@ -61,7 +98,26 @@ impl RecoveryLimits {
     pub fn named_by_none() -> Self {
         Self {
             foul_deck_time_to_go_s: 0.0,
+            foul_deck_model: FoulDeckModel::named_by_none(),
             ..Self::default()
+        }
+    }
+
+    /// These limits for the ship `ship` and deck `deck` flown: with the `stationary`
+    /// model and the check on, β of the landing point over the window
+    /// ([`ShipMotion::deck_point_window_motion_per_rate_s`]).
+    pub fn for_ship(self, ship: &ShipMotion, deck: &DeckGeometry) -> Self {
+        let on = self.foul_deck_time_to_go_s > 0.0;
+        let window_motion_per_rate_s = (on && self.foul_deck_model == FoulDeckModel::Stationary)
+            .then(|| {
+                ship.deck_point_window_motion_per_rate_s(
+                    deck.landing_point_aft_of_pitch_centre_m,
+                    self.deck_motion_window_s,
+                )
+            });
+        Self {
+            window_motion_per_rate_s,
+            ..self
         }
     }
 
@@ -104,17 +160,27 @@ impl RecoveryLimits {
 
     /// The largest share (%) of a limit that the deck forecast for touchdown reaches:
     /// pitch against the lens's, twice the landing point's excursion from its mean
-    /// against the total motion, and its vertical velocity times the window against the
-    /// motion in the window.
+    /// against the total motion, and its vertical velocity times the window (`linear`)
+    /// or β (`stationary`) against the motion in the window; with `stationary`, roll
+    /// against the lens's too.
     pub fn largest_share_pct(&self, inputs: &WaveOffInputs) -> f64 {
         let forecast = &inputs.forecast;
         let pitch = forecast.pitch_rad.to_degrees().abs() / self.lens_pitch_limit_deg;
         let excursion = 2.0
             * (forecast.landing_point_height_m - inputs.mean_landing_point_height_m).abs()
             / self.total_deck_motion_m;
-        let window = forecast.landing_point_climb_rate_mps.abs() * self.deck_motion_window_s
+        let window_motion_s = self
+            .window_motion_per_rate_s
+            .unwrap_or(self.deck_motion_window_s);
+        let window = forecast.landing_point_climb_rate_mps.abs() * window_motion_s
             / self.deck_motion_in_window_m;
-        100.0 * pitch.max(excursion).max(window)
+        let roll = match self.foul_deck_model {
+            FoulDeckModel::Linear => 0.0,
+            FoulDeckModel::Stationary => {
+                forecast.roll_rad.to_degrees().abs() / self.lens_roll_limit_deg
+            }
+        };
+        100.0 * pitch.max(excursion).max(window).max(roll)
     }
 }
 

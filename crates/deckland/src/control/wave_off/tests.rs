@@ -20,6 +20,7 @@ fn calm() -> WaveOffInputs {
             ramp_climb_rate_mps: 0.0,
             ramp_height_sigma_m: 0.0,
             landing_point_climb_rate_sigma_mps: 0.0,
+            roll_rad: 0.0,
         },
     }
 }
@@ -418,4 +419,44 @@ fn a_deck_beyond_the_lens_fouls_the_deck_only_far_out() {
         .decide_foul_deck(&deck_moving(8.0, 0.0, -0.7))
         .expect("foul deck");
     assert!((moving.value - 100.0 * 2.8 / 2.4384).abs() < 1e-9);
+}
+
+/// The `stationary` model reads the motion in the window as β·ḣ (β set for the ship
+/// flown) and checks the forecast roll against the lens's 8.19°; the `linear` model, the
+/// check as it first came, reads ḣ·W and no roll. At ḣ = 0.7 m/s: ḣ·4 s = 2.8 m fouls
+/// the deck, β·ḣ = 3.06 s · 0.7 m/s = 2.14 m does not; a forecast roll of 9° fouls it
+/// only under `stationary`, at 100·9/8.19 %.
+#[test]
+fn the_stationary_model_reads_beta_and_roll_and_the_linear_neither() {
+    use crate::control::FoulDeckModel;
+    let stationary = WaveOffParameters {
+        recovery: RecoveryLimits {
+            foul_deck_time_to_go_s: 10.0,
+            foul_deck_model: FoulDeckModel::Stationary,
+            window_motion_per_rate_s: Some(3.06),
+            ..RecoveryLimits::default()
+        },
+        ..WaveOffParameters::default()
+    };
+    let linear = WaveOffParameters {
+        recovery: RecoveryLimits {
+            foul_deck_model: FoulDeckModel::Linear,
+            window_motion_per_rate_s: None,
+            ..stationary.recovery
+        },
+        ..stationary
+    };
+    let moving = deck_moving(8.0, 0.0, 0.7);
+    assert_eq!(stationary.decide_foul_deck(&moving), None);
+    let share = stationary.recovery.largest_share_pct(&moving);
+    assert!(
+        (share - 100.0 * 3.06 * 0.7 / 2.4384).abs() < 1e-9,
+        "{share}"
+    );
+    assert!(linear.decide_foul_deck(&moving).is_some());
+    let mut rolled = deck_moving(8.0, 0.0, 0.0);
+    rolled.forecast.roll_rad = 9.0_f64.to_radians();
+    let decision = stationary.decide_foul_deck(&rolled).expect("foul deck");
+    assert!((decision.value - 100.0 * 9.0 / 8.19).abs() < 1e-9);
+    assert_eq!(linear.decide_foul_deck(&rolled), None);
 }

@@ -489,6 +489,7 @@ pub(crate) fn forecast_deck(
         ramp_climb_rate_mps: at_ramp.deck_point_climb_rate_at_cosine_mps(ramp_arm_m, cos_ramp),
         ramp_height_sigma_m,
         landing_point_climb_rate_sigma_mps,
+        roll_rad: 0.0,
     }
 }
 

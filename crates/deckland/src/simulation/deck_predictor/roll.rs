@@ -50,6 +50,7 @@ impl SensedRoll {
             ramp_height_m: forecast.ramp_height_m + self.ramp_rise_m * sin_ramp_roll,
             ramp_climb_rate_mps: forecast.ramp_climb_rate_mps
                 + self.ramp_rise_m * cos_ramp_roll * ramp_roll_rate,
+            roll_rad: roll,
             ..forecast
         }
     }

@@ -13,6 +13,7 @@ fn forecast(landing_point_height_m: f64, ramp_height_m: f64) -> DeckForecast {
         ramp_climb_rate_mps: 0.0,
         ramp_height_sigma_m: 0.0,
         landing_point_climb_rate_sigma_mps: 0.0,
+        roll_rad: 0.0,
     }
 }
 

@@ -325,6 +325,7 @@ mod tests {
             ramp_climb_rate_mps: -0.1,
             ramp_height_sigma_m: 0.3,
             landing_point_climb_rate_sigma_mps: 0.4,
+            roll_rad: 0.0,
         };
         let roll = SensedRoll {
             measurement: LateralShipMotionMeasurement {
