@@ -16,8 +16,9 @@ SETUP = {
     "crates/deckland/src/simulation/pitch_setup.rs",
     "crates/deckland/src/simulation/lateral/build.rs",
     "crates/deckland/src/experiments/lateral_step/setup.rs",
-    # the plant registry: the models by name
+    # the plant registry: the models by name, and the built plant of each
     "crates/deckland/src/aircraft/plant.rs",
+    "crates/deckland/src/aircraft/built_plant.rs",
     # reading scenario files
     "crates/deckland/src/scenario/aircraft.rs",
 }
