@@ -7,6 +7,7 @@ mod html;
 mod interrupt;
 mod parquet;
 mod plot;
+mod progress;
 
 use anyhow::Result;
 use clap::{Parser, Subcommand};

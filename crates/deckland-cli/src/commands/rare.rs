@@ -13,6 +13,7 @@ use crate::html::{number, Report};
 use crate::output::print_stderr;
 use crate::output::OutputDir;
 use crate::plot::{Figure, Panel};
+use crate::progress::Progress;
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use deckland::experiments::ApproachRow;
@@ -20,8 +21,6 @@ use deckland::rare::{
     estimate_rate, replay_event_flight, RareEvent, RareRequest, RareResult, Run, Stop,
 };
 use deckland::scenario::{Mission, Scenario};
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use std::io::IsTerminal;
 use std::path::PathBuf;
 
 /// Options of `deckland rare`.
@@ -92,7 +91,7 @@ pub fn run(args: &RareArgs) -> Result<()> {
         .build()
         .with_context(|| format!("cannot start {threads} worker threads"))?;
     let output = OutputDir::prepare("rare", args.output.out.as_deref(), args.output.force)?;
-    let bar = progress(args.output.json);
+    let bar = Progress::spinner("rare");
     let started = std::time::Instant::now();
     let result = pool
         .install(|| estimate_rate(&scenario, &request, |r, run| show(&bar, r, run)))
@@ -118,21 +117,8 @@ pub fn run(args: &RareArgs) -> Result<()> {
     Ok(())
 }
 
-/// A spinner on a terminal, nothing otherwise.
-fn progress(hidden: bool) -> ProgressBar {
-    if hidden || !std::io::stderr().is_terminal() {
-        return ProgressBar::with_draw_target(None, ProgressDrawTarget::hidden());
-    }
-    let bar = ProgressBar::with_draw_target(None, ProgressDrawTarget::stderr());
-    if let Ok(style) = ProgressStyle::with_template("{elapsed_precise} {spinner} {msg}") {
-        bar.set_style(style);
-    }
-    bar.enable_steady_tick(std::time::Duration::from_millis(200));
-    bar
-}
-
-fn show(bar: &ProgressBar, repetition: u64, run: &Run) {
-    bar.set_message(format!(
+fn show(bar: &Progress, repetition: u64, run: &Run) {
+    bar.message(format!(
         "splitting repetition {} done: {} levels, estimate {}",
         repetition + 1,
         run.levels.len(),

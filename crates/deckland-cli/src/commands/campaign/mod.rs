@@ -47,8 +47,6 @@ use deckland::monte_carlo::{
 };
 use deckland::scenario::Mission;
 use folder::{CampaignFolder, CampaignReport};
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressState, ProgressStyle};
-use std::io::IsTerminal;
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -106,28 +104,6 @@ pub fn threads_or_cpus(threads: Option<u16>) -> usize {
     )
 }
 
-/// The progress bar on stderr: hidden when stderr is not a terminal or with `--json`.
-fn progress_bar(total: u64, hidden: bool) -> ProgressBar {
-    if hidden || !std::io::stderr().is_terminal() {
-        return ProgressBar::with_draw_target(Some(total), ProgressDrawTarget::hidden());
-    }
-    let bar = ProgressBar::with_draw_target(Some(total), ProgressDrawTarget::stderr());
-    let style = ProgressStyle::with_template(
-        "{elapsed_precise} [{bar:40}] {pos}/{len} runs, {rate}, ETA {eta}",
-    )
-    .map(|s| {
-        s.progress_chars("=> ").with_key(
-            "rate",
-            |state: &ProgressState, w: &mut dyn std::fmt::Write| {
-                let _ = write!(w, "{:.0} runs/s", state.per_sec());
-            },
-        )
-    })
-    .unwrap_or_else(|_| ProgressStyle::default_bar());
-    bar.set_style(style);
-    bar
-}
-
 /// Runs `deckland campaign`.
 pub fn run(args: &CampaignArgs) -> Result<()> {
     let scenario = load_scenario_file(&args.scenario)?;
@@ -151,7 +127,7 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
     let total = shard
         .runs_of(args.runs)
         .saturating_mul(spec.controllers.len() as u64);
-    let bar = progress_bar(total, args.output.json);
+    let bar = crate::progress::Progress::counted("campaign", total, "runs");
     let stop = crate::interrupt::graceful_stop();
     let started = Instant::now();
     let result = run_campaign(&spec, threads, &|_: &RunRecord| bar.inc(1), stop)
@@ -193,7 +169,7 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
     };
     report::write_folder(&folder, &output)?;
     if args.output.json {
-        outln!("{}", serde_json::to_string_pretty(&report)?)?;
+        outln!("{}", json_naming_the_folder(&report, &output)?)?;
     } else {
         report::print_statistics(&report)?;
         let controllers: Vec<&str> = summary
@@ -214,4 +190,17 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
         std::process::exit(crate::interrupt::INTERRUPTED_STATUS);
     }
     Ok(())
+}
+
+/// `report` as the JSON `--json` prints: `summary.json`'s fields and `output_folder`,
+/// where the files went.
+fn json_naming_the_folder(report: &CampaignReport, output: &OutputDir) -> Result<String> {
+    let mut json = serde_json::to_value(report)?;
+    if let serde_json::Value::Object(fields) = &mut json {
+        fields.insert(
+            "output_folder".to_owned(),
+            serde_json::Value::String(output.path().display().to_string()),
+        );
+    }
+    Ok(serde_json::to_string_pretty(&json)?)
 }
