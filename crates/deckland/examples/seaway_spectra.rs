@@ -23,9 +23,7 @@
 
 use std::f64::consts::PI;
 
-use deckland::environment::seaway::{
-    motion_target, Motion, MotionTarget, SeawayModel, SeawayParameters,
-};
+use deckland::environment::seaway::{motion_target, Motion, SeawayModel, SeawayParameters};
 use deckland::environment::{ship_motion, ShipMotionParameters, ShipMotionSimulator};
 use deckland::random::RandomStreams;
 
@@ -89,7 +87,7 @@ fn main() {
                 println!(
                     "{sea_state},{},{omega_e:.5},{:.6e},{:.6e},{simulated}",
                     motion.name(),
-                    interpolate(&target, omega_e) * unit2,
+                    target.interpolate(omega_e) * unit2,
                     fitted.model.spectral_density(omega_e) * unit2,
                 );
             }
@@ -97,7 +95,7 @@ fn main() {
             let fit_integral = simpson(|w| fitted.model.spectral_density(w), 0.0, 60.0, 600_000);
             let window =
                 |f: &dyn Fn(f64) -> f64| simpson(f, GRID_LOW_RADPS, GRID_HIGH_RADPS, 20_000);
-            let target_window = window(&|w| interpolate(&target, w));
+            let target_window = window(&|w| target.interpolate(w));
             eprintln!(
                 "SS{sea_state} {:5}: RMS {:.4} {}; target {:.5e}, fit ∫ {:.5e} / Lyapunov \
                  {:.5e} = {:.5}, / target = {:.5}; window holds {:.2} % of the target; \
@@ -134,18 +132,6 @@ fn main() {
             }
         }
     }
-}
-
-/// The target's density at ω_e by linear interpolation between its cells' midpoints (0
-/// outside them).
-fn interpolate(target: &MotionTarget, omega_e: f64) -> f64 {
-    let position = omega_e / target.cell_width_radps - 0.5;
-    if position < 0.0 || position >= (target.density.len() - 1) as f64 {
-        return 0.0;
-    }
-    let index = position.floor() as usize;
-    let fraction = position - index as f64;
-    target.density[index] * (1.0 - fraction) + target.density[index + 1] * fraction
 }
 
 /// Composite Simpson's rule of f over [a, b] with `n` (even) intervals.

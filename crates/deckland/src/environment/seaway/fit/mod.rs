@@ -107,7 +107,7 @@ impl MotionTarget {
     }
 
     /// The density at ω_e (rad/s) by linear interpolation between midpoints (0 outside).
-    fn interpolate(&self, omega_e: f64) -> f64 {
+    pub fn interpolate(&self, omega_e: f64) -> f64 {
         let position = omega_e / self.cell_width_radps - 0.5;
         if position < 0.0 || position >= (self.density.len() - 1) as f64 {
             return 0.0;
