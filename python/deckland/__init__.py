@@ -74,7 +74,8 @@ class Flight:
     ``summary`` is the dict of ``summary.json`` (``controller``, ``conditions``,
     ``seed``, ``outcome``, ``wire``, ``reason``, ``end_time_s``, ``steps``,
     ``touchdown``, ``ramp_clearance_m``, ``glide_path_error_rms_m``,
-    ``glide_path_error_max_m``); ``time_series`` has the columns of ``approach.csv``
+    ``glide_path_error_max_m``, ``deck_within_recovery_limits_pct``: the share of the run
+    with the true deck within the recovery limits); ``time_series`` has the columns of ``approach.csv``
     (every 10 ms and the last step); ``events`` lists the ramp crossing, touchdown and
     passing of the last wire, as dicts.
     """
@@ -196,7 +197,10 @@ def campaign(
     (``aircraft.model = "6dof"``, ``approach.three_dimensional``) adds, as the CLI does,
     the lateral touchdown and the trap sheet's columns after the others (``off_centre``
     1 or 0, NaN where the run did not touch down) and their statistics under the
-    summary's ``lateral`` and ``trap_sheet``. ``runs`` is 1 to :data:`MAX_RUNS` (100 000,
+    summary's ``lateral`` and ``trap_sheet``. The last column, ``deck_within_limits_pct``,
+    is the share of each run's time (%) with the true deck within every recovery limit
+    (lens pitch and roll, total motion, motion in 4 s; NaN for a run that never flew),
+    summarised per controller as ``deck_within_limits_pct``. ``runs`` is 1 to :data:`MAX_RUNS` (100 000,
     as ``deckland campaign --runs``); beyond, ``ValueError``.
     """
     columns, summary = _deckland.campaign(scenario, runs, seed, threads, compare)

@@ -23,7 +23,8 @@ def test_the_time_series_is_a_dataframe_or_a_dict_of_the_same_arrays():
 def test_campaign_columns_have_the_types_of_their_values():
     scenario = deckland.Scenario.default()
     deckland._tables.use_pandas = False
-    runs = deckland.campaign(scenario, 3, seed=1).runs
+    result = deckland.campaign(scenario, 3, seed=1)
+    runs = result.runs
     assert runs["run_index"].dtype == np.int64 and list(runs["run_index"]) == [0, 1, 2]
     assert runs["seed"].dtype == np.int64
     assert runs["touchdown_distance_m"].dtype == np.float64
@@ -33,3 +34,15 @@ def test_campaign_columns_have_the_types_of_their_values():
     # pandas.read_csv reads an empty column of runs.csv.
     reasons = runs["reason"]
     assert reasons.dtype == object or np.all(np.isnan(reasons))
+    # The share of each run's time with the deck within the recovery limits: the last
+    # column, a number in [0, 100] for every flown run, and its mean and least in the
+    # summary.
+    assert list(runs)[-1] == "deck_within_limits_pct"
+    deck = runs["deck_within_limits_pct"]
+    flown = deck[~np.isnan(deck)]
+    assert deck.dtype == np.float64 and len(flown) >= 1
+    assert np.all((flown >= 0.0) & (flown <= 100.0))
+    shares = result.statistics[0]["deck_within_limits_pct"]
+    assert shares["count"] == len(flown)
+    assert abs(shares["mean"] - float(np.mean(flown))) < 1e-9
+    assert shares["min"] == float(np.min(flown))

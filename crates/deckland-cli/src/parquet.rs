@@ -6,15 +6,17 @@
 //! each whatever the values of a campaign, so the files of several campaigns concatenate:
 //!
 //! - `run_index`, `seed`: required 64-bit integers;
-//! - `controller`, `outcome`, `reason`, `lso_grade`, `lso_comment`: UTF-8 text (`reason`
-//!   missing for a trap, the LSO's columns for a run that never flew);
+//! - `controller`, `outcome`, `reason`, `lso_grade`, `lso_comment`,
+//!   `wave_off_criterion`: UTF-8 text (`reason` missing for a trap, the LSO's columns for
+//!   a run that never flew, the criterion for a run that did not wave off);
 //! - every other column: an optional double (missing where the CSV field is empty; `wire`
 //!   too, as pandas reads it from the CSV).
 //!
 //! A 3-D campaign adds the lateral columns of its `runs.csv` after these
 //! ([`LATERAL_RUN_COLUMNS`], then the trap sheet's [`TRAP_SHEET_RUN_COLUMNS`]): optional
-//! doubles, and `off_centre` an optional boolean. The LSO's columns (`lso_grade`,
-//! `lso_points`, `lso_comment`) come last, after the lateral ones, as in `runs.csv`.
+//! doubles, and `off_centre` an optional boolean. The columns appended last
+//! ([`LSO_RUN_COLUMNS`]: `lso_grade`, `lso_points`, `lso_comment`, `wave_off_criterion`,
+//! `deck_within_limits_pct`) come last, after the lateral ones, as in `runs.csv`.
 //!
 //! One row group, Snappy compression (pandas' default). A value that is not finite is
 //! refused, naming its run and column: nothing non-finite reaches a file.

@@ -45,13 +45,11 @@ fn one_and_two_threads_write_byte_identical_runs_csv() {
         assert_eq!(summary["finished_runs"], 20);
         // A 3-DOF campaign has neither lateral nor trap-sheet columns or statistics.
         let text = String::from_utf8(csv[csv.len() - 1].clone()).unwrap();
-        // (The LSO's grade and the wave-off's criterion, the last columns, follow
-        // `reason` directly.)
-        assert!(text
-            .lines()
-            .next()
-            .unwrap()
-            .ends_with(",reason,lso_grade,lso_points,lso_comment,wave_off_criterion"));
+        // (The LSO's grade, the wave-off's criterion and the deck's share within the
+        // recovery limits, the last columns, follow `reason` directly.)
+        assert!(text.lines().next().unwrap().ends_with(
+            ",reason,lso_grade,lso_points,lso_comment,wave_off_criterion,deck_within_limits_pct"
+        ));
         assert!(summary.get("trap_sheet").is_none() && summary.get("lateral").is_none());
         let opd = &summary["controllers"][0];
         assert_eq!(opd["controller"], "O-PD");
@@ -481,7 +479,9 @@ fn a_three_d_campaign_adds_the_lateral_columns_and_the_touchdown_plan() {
 }
 
 /// Issue 44, items 2 and 3: a campaign of the default scenario grades every pass in
-/// `runs.csv` (the LSO's three columns last) and prints the greenie board.
+/// `runs.csv` (the LSO's three columns near the end) and prints the greenie board; issue
+/// 42, item 5: the last column is each run's share of time with the deck within the
+/// recovery limits, whose mean and least the summary and the terminal give.
 #[test]
 fn a_default_campaign_grades_every_pass_and_prints_the_greenie_board() {
     let dir = scratch("campaign-greenie");
@@ -522,25 +522,30 @@ fn a_default_campaign_grades_every_pass_and_prints_the_greenie_board() {
     let header: Vec<String> = reader.headers().unwrap().iter().map(String::from).collect();
     let n = header.len();
     assert_eq!(
-        header[n - 4..],
+        header[n - 5..],
         [
             "lso_grade",
             "lso_points",
             "lso_comment",
-            "wave_off_criterion"
+            "wave_off_criterion",
+            "deck_within_limits_pct"
         ],
         "{header:?}"
     );
     let grades = ["ok", "fair", "bolter", "no_grade", "own_wave_off", "cut"];
     let mut rows = 0;
+    let mut deck_shares = Vec::new();
     for record in reader.records() {
         let record = record.unwrap();
         rows += 1;
-        assert!(grades.contains(&&record[n - 4]), "{record:?}");
-        let points: f64 = record[n - 3].parse().unwrap();
+        assert!(grades.contains(&&record[n - 5]), "{record:?}");
+        let points: f64 = record[n - 4].parse().unwrap();
         assert!((0.0..=4.0).contains(&points), "{record:?}");
+        let share: f64 = record[n - 1].parse().unwrap();
+        assert!((0.0..=100.0).contains(&share), "{record:?}");
+        deck_shares.push(share);
         // The wave-off's criterion: the name the reason gives, else empty.
-        let criterion = &record[n - 1];
+        let criterion = &record[n - 2];
         let reason = &record[header.iter().position(|h| h == "reason").unwrap()];
         assert_eq!(
             criterion.is_empty(),
@@ -555,6 +560,19 @@ fn a_default_campaign_grades_every_pass_and_prints_the_greenie_board() {
     let board = &summary["controllers"][0]["greenie_board"];
     assert_eq!(board["graded"], 6, "{board}");
     assert_eq!(board["target_wire"], 3, "{board}");
+    // The deck's share: its mean and least over the rows, in summary.json and printed.
+    let deck = &summary["controllers"][0]["deck_within_limits_pct"];
+    let mean = deck_shares.iter().sum::<f64>() / deck_shares.len() as f64;
+    let least = deck_shares.iter().copied().fold(f64::INFINITY, f64::min);
+    assert!(
+        (deck["mean"].as_f64().unwrap() - mean).abs() < 1e-9,
+        "{deck}"
+    );
+    assert_eq!(deck["min"].as_f64().unwrap(), least, "{deck}");
+    assert_eq!(deck["count"], 6, "{deck}");
+    let line =
+        format!("deck within the recovery limits: mean {mean:.1} % of the time (min {least:.1} %)");
+    assert!(printed.contains(&line), "no `{line}` in:\n{printed}");
     let report = std::fs::read_to_string(out.join("report.html")).unwrap();
     let board_at = report.find("<table class=\"greenie\">").expect("the board");
     let chart_at = report.find("<figure>").expect("the outcome chart");

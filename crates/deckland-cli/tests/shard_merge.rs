@@ -426,11 +426,12 @@ fn runs_parquet_holds_the_rows_of_runs_csv() {
         header.contains(",off_centre,trap_x_glide_slope_mean_m,"),
         "{header}"
     );
-    // The LSO's grade and the wave-off's criterion last, after the lateral and
-    // trap-sheet columns.
+    // The LSO's grade, the wave-off's criterion and the deck's share within the
+    // recovery limits last, after the lateral and trap-sheet columns.
     assert!(
         header.ends_with(
-            ",trap_ar_lineup_peak_deg,lso_grade,lso_points,lso_comment,wave_off_criterion"
+            ",trap_ar_lineup_peak_deg,lso_grade,lso_points,lso_comment,wave_off_criterion,\
+             deck_within_limits_pct"
         ),
         "{header}"
     );

@@ -86,6 +86,25 @@ fn regression_rows_no_campaign_writes_are_refused_by_row_and_column() {
         (trap, "end_time_s", "inf", "end_time_s"),
         (trap, "end_time_s", "", "end_time_s"),
         (trap, "time_on_stops_pct", "100.5", "time_on_stops_pct"),
+        (
+            trap,
+            "deck_within_limits_pct",
+            "100.5",
+            "deck_within_limits_pct",
+        ),
+        (
+            trap,
+            "deck_within_limits_pct",
+            "-0.1",
+            "deck_within_limits_pct",
+        ),
+        (
+            trap,
+            "deck_within_limits_pct",
+            "NaN",
+            "deck_within_limits_pct",
+        ),
+        (trap, "deck_within_limits_pct", "", "deck_within_limits_pct"),
         (trap, "sea_state_scale", "0", "sea_state_scale"),
         (trap, "reason", "edited", "reason"),
         (not_trap, "reason", "", "reason"),
@@ -121,17 +140,17 @@ fn regression_rows_no_campaign_writes_are_refused_by_row_and_column() {
 fn regression_runs_csv_text_must_be_a_whole_campaign_table() {
     let shards = flown_shards();
     let text = rows_csv(&shards[0].rows);
-    // A column removed (from the header and every row): the last, the wave-off's
-    // criterion.
-    let without_criterion: String = text
+    // A column removed (from the header and every row): the last, the deck's share
+    // within the recovery limits (a shard of the deckland before it).
+    let without_deck_share: String = text
         .lines()
         .map(|line| line.rsplit_once(',').unwrap().0.to_owned() + "\n")
         .collect();
-    let error = parse_runs_csv("r", &without_criterion).unwrap_err();
+    let error = parse_runs_csv("r", &without_deck_share).unwrap_err();
     assert!(
         error
             .to_string()
-            .contains("`wave_off_criterion` is missing"),
+            .contains("`deck_within_limits_pct` is missing"),
         "{error}"
     );
     let error = parse_runs_csv("r", &text.replacen("wire,", "wires,", 1)).unwrap_err();
@@ -143,8 +162,13 @@ fn regression_runs_csv_text_must_be_a_whole_campaign_table() {
         let error = parse_runs_csv("r", &text[..cut]);
         assert!(error.is_err(), "cut at byte {cut} was accepted");
     }
-    // A row with a field less.
-    let short = text.replacen(",\n", "\n", 1);
+    // A row with a field less: the first row's last.
+    let (header_line, rows) = text.split_once('\n').unwrap();
+    let (first_row, rest) = rows.split_once('\n').unwrap();
+    let short = format!(
+        "{header_line}\n{}\n{rest}",
+        first_row.rsplit_once(',').unwrap().0
+    );
     assert!(parse_runs_csv("r", &short).is_err());
     // A quote that never closes swallows the rest of the file.
     let open_quote = text.replacen(",O-PD,", ",\"O-PD,", 1);

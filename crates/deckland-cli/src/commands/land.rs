@@ -251,6 +251,11 @@ pub(crate) fn summary_rows(report: &LandingReport) -> Vec<Vec<String>> {
         ),
         row("end of the run", html::number(s.end_time_s, 2), "s"),
         row("integration steps", s.steps.to_string(), ""),
+        row(
+            "deck within the recovery limits",
+            html::number(s.deck_within_recovery_limits_pct, 1),
+            "% of the time",
+        ),
     ]);
     rows
 }
@@ -418,6 +423,10 @@ fn print_summary(report: &LandingReport, output: &OutputDir) -> Result<()> {
     outln!(
         "  thrust rate           RMS {:.1} kN/s",
         a.thrust_rate_rms_knps
+    )?;
+    outln!(
+        "  deck                  within the recovery limits {:.1} % of the time",
+        s.deck_within_recovery_limits_pct
     )?;
     outln!("  results in            {}", output.path().display())?;
     Ok(())

@@ -89,6 +89,7 @@ mod tests {
             glide_path_error_rms_m: None,
             glide_path_error_max_m: None,
             actuator: Default::default(),
+            deck_within_recovery_limits_pct: 100.0,
             trap_sheet: None,
             lso_grade: None,
         }

@@ -199,6 +199,7 @@ mod tests {
             lso_points: grade.map(|g| g.1),
             lso_comment: comment.map(str::to_owned),
             wave_off_criterion: None,
+            deck_within_limits_pct: None,
         }
     }
 

@@ -10,8 +10,8 @@
 //! - a wire (1–4) is given for a trap, may be for a hard landing, and for no other
 //!   outcome;
 //! - the fields an outcome requires are present: a flown run (every outcome but
-//!   `invalid` and `panicked`) has its end time and actuator activity, a setup that
-//!   failed has none of them; a trap or a hard landing has its touchdown (all four
+//!   `invalid` and `panicked`) has its end time, actuator activity and share of time
+//!   with the deck within the recovery limits, a setup that failed has none of them; a trap or a hard landing has its touchdown (all four
 //!   touchdown fields or none); a ramp strike has a negative ramp clearance; every
 //!   outcome but a trap has its reason, a trap none;
 //! - every number is finite and within its physical range ([`RANGES`]).
@@ -53,16 +53,19 @@ pub const RUN_COLUMNS: [&str; 23] = [
     "reason",
 ];
 
-/// The columns of the landing signal officer's grade and the wave-off's criterion, after
-/// every other column of `runs.csv` (after a 3-D campaign's lateral columns too): the
-/// fields of [`RunRow`] after `reason`. The grade's are empty for a run with no grade (one
-/// that never flew) and, for the comment, for a pass with no deviation; the criterion
-/// ([`WaveOffCriterion::name`]) is empty unless the aircraft waved off.
-pub const LSO_RUN_COLUMNS: [&str; 4] = [
+/// The columns of the landing signal officer's grade, the wave-off's criterion and the
+/// share of the run with the deck within the recovery limits, after every other column of
+/// `runs.csv` (after a 3-D campaign's lateral columns too), each appended at the end as
+/// it came: the fields of [`RunRow`] after `reason`. The grade's are empty for a run with
+/// no grade (one that never flew) and, for the comment, for a pass with no deviation; the
+/// criterion ([`WaveOffCriterion::name`]) is empty unless the aircraft waved off; the
+/// deck's share is empty for a run that never flew.
+pub const LSO_RUN_COLUMNS: [&str; 5] = [
     "lso_grade",
     "lso_points",
     "lso_comment",
     "wave_off_criterion",
+    "deck_within_limits_pct",
 ];
 
 /// The criterion a run's reason names for its wave-off ("… wave-off at t = 23.10 s on
@@ -106,7 +109,7 @@ const DISPERSION_SIGMAS: f64 = 50.0;
 /// The physical range of every number of a row: (column, lowest, highest), inclusive.
 /// The dispersions' ranges are `DISPERSION_SIGMAS` (50) times the largest standard deviations a
 /// scenario allows (start height 20 m, airspeed and wind 10 m/s, log sea state 1).
-pub const RANGES: [(&str, f64, f64); 17] = [
+pub const RANGES: [(&str, f64, f64); 18] = [
     ("touchdown_distance_m", -LENGTH_LIMIT_M, LENGTH_LIMIT_M),
     ("touchdown_sink_rate_mps", -SPEED_LIMIT_MPS, SPEED_LIMIT_MPS),
     ("touchdown_pitch_deg", -180.0, 180.0),
@@ -141,6 +144,7 @@ pub const RANGES: [(&str, f64, f64); 17] = [
         -DISPERSION_SIGMAS * 10.0,
         DISPERSION_SIGMAS * 10.0,
     ),
+    ("deck_within_limits_pct", 0.0, 100.0),
 ];
 
 /// Why a row is not one a campaign can write: the column and its value.
@@ -156,7 +160,8 @@ pub struct RowError {
 }
 
 /// One run of a campaign under one controller, flattened (outcome, wire, touchdown, ramp
-/// clearance, glide-path error, the actuators' activity, the dispersions drawn, the failure reason). Fields that
+/// clearance, glide-path error, the actuators' activity, the dispersions drawn, the failure reason, the LSO's
+/// grade, the wave-off's criterion, the deck's time within the recovery limits). Fields that
 /// a run did not produce (no touchdown, a failed setup) are `None`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct RunRow<'a> {
@@ -215,6 +220,10 @@ pub struct RunRow<'a> {
     /// The criterion that called the run's wave-off ([`WaveOffCriterion::name`]); `None`
     /// if it did not wave off.
     pub wave_off_criterion: Option<String>,
+    /// The share of the run with the true deck within every recovery limit at once
+    /// (%; `RunSummary::deck_within_recovery_limits_pct`); `None` for a run that never
+    /// flew.
+    pub deck_within_limits_pct: Option<f64>,
 }
 
 impl<'a> RunRow<'a> {
@@ -264,6 +273,7 @@ impl<'a> RunRow<'a> {
                 .as_deref()
                 .and_then(wave_off_criterion)
                 .map(|c| c.name().to_owned()),
+            deck_within_limits_pct: summary.map(|s| s.deck_within_recovery_limits_pct),
         }
     }
 
@@ -274,7 +284,7 @@ impl<'a> RunRow<'a> {
     }
 
     /// The row's numbers by column, in [`RANGES`] order (`None`: empty).
-    fn numbers(&self) -> [Option<f64>; 17] {
+    fn numbers(&self) -> [Option<f64>; 18] {
         [
             self.touchdown_distance_m,
             self.touchdown_sink_rate_mps,
@@ -293,6 +303,7 @@ impl<'a> RunRow<'a> {
             Some(self.airspeed_dispersion_mps),
             Some(self.sea_state_scale),
             Some(self.wind_over_deck_dispersion_mps),
+            self.deck_within_limits_pct,
         ]
     }
 
@@ -444,6 +455,7 @@ impl<'a> RunRow<'a> {
             ("time_on_stops_pct", self.time_on_stops_pct),
             ("elevator_travel_deg", self.elevator_travel_deg),
             ("thrust_rate_rms_knps", self.thrust_rate_rms_knps),
+            ("deck_within_limits_pct", self.deck_within_limits_pct),
         ];
         for (column, value) in flight {
             if value.is_some() != set_up {

@@ -83,10 +83,10 @@ fn text_of(writer: csv::Writer<Vec<u8>>) -> Result<String, csv::Error> {
 /// Reads the rows of a shard's `runs.csv` text (`location` names it in messages):
 /// exactly the columns of [`RUN_COLUMNS`] in order — for a 3-D approach campaign followed
 /// by those of [`LateralRow`] ([`lateral_row_columns`]) — then [`LSO_RUN_COLUMNS`] (a
-/// shard written before passes were graded is refused, saying so) — a last line that ends (a file
-/// cut short is refused, even inside a row's text), and every row one a campaign can
-/// write ([`RunRow::check`], [`LateralRow::check`]). Every error names the line and the
-/// column at fault.
+/// shard written before the last of them came is refused, naming the columns it lacks)
+/// — a last line that ends (a file cut short is refused, even inside a row's text), and
+/// every row one a campaign can write ([`RunRow::check`], [`LateralRow::check`]). Every
+/// error names the line and the column at fault.
 pub fn parse_runs_csv(location: &str, text: &str) -> Result<ParsedRuns, MergeError> {
     let header = text
         .lines()
@@ -194,13 +194,21 @@ fn check_header(errors: &CsvErrors, columns: &[&str], expected: &[&str]) -> Resu
     if columns == expected {
         return Ok(());
     }
-    if columns.len() + LSO_RUN_COLUMNS.len() == expected.len() && expected.starts_with(columns) {
+    // The columns appended last, one release after another: a shard without the last
+    // of them was written by an older deckland.
+    let appended = expected.len() - LSO_RUN_COLUMNS.len();
+    if columns.len() >= appended && columns.len() < expected.len() && expected.starts_with(columns)
+    {
+        let missing = &expected[columns.len()..];
         return Err(errors.at(
             1,
             format!(
-                "the columns `{}` are missing: the shard was written by a deckland that did \
-                 not grade passes or name wave-off criteria yet; fly it again with this version",
-                LSO_RUN_COLUMNS.join("`, `")
+                "the column{} `{}` {} missing: the shard was written by a deckland that did \
+                 not grade passes, name wave-off criteria or share the deck's time within the \
+                 recovery limits yet; fly it again with this version",
+                if missing.len() == 1 { "" } else { "s" },
+                missing.join("`, `"),
+                if missing.len() == 1 { "is" } else { "are" }
             ),
         ));
     }
@@ -362,11 +370,34 @@ mod tests {
         let error = parse_runs_csv("s1/runs.csv", &old).unwrap_err().to_string();
         assert!(
             error.contains(
-                "`lso_grade`, `lso_points`, `lso_comment`, `wave_off_criterion` are missing"
+                "`lso_grade`, `lso_points`, `lso_comment`, `wave_off_criterion`, \
+                 `deck_within_limits_pct` are missing"
             ),
             "{error}"
         );
         let new = format!("{},{}\n", RUN_COLUMNS.join(","), LSO_RUN_COLUMNS.join(","));
         assert!(parse_runs_csv("s1/runs.csv", &new).is_ok());
+    }
+
+    /// A shard of the deckland before the deck's share within the recovery limits (its
+    /// four LSO and wave-off columns last, 3-DOF or 3-D) is refused, naming the column.
+    #[test]
+    fn a_shard_without_the_deck_within_limits_column_is_refused_by_name() {
+        let [before @ .., _] = LSO_RUN_COLUMNS;
+        let three_dof = format!("{},{}\n", RUN_COLUMNS.join(","), before.join(","));
+        let three_d: Vec<&str> = RUN_COLUMNS
+            .into_iter()
+            .chain(lateral_row_columns())
+            .chain(before)
+            .collect();
+        for old in [three_dof, format!("{}\n", three_d.join(","))] {
+            let error = parse_runs_csv("s1/runs.csv", &old).unwrap_err().to_string();
+            assert!(
+                error.contains("line 1")
+                    && error.contains("the column `deck_within_limits_pct` is missing")
+                    && error.contains("fly it again with this version"),
+                "{error}"
+            );
+        }
     }
 }

@@ -182,6 +182,8 @@ pub struct CampaignStatistics {
     pub elevator_travel_deg: Option<Distribution>,
     /// Thrust-rate RMS of each flown run (kN/s).
     pub thrust_rate_rms_knps: Option<Distribution>,
+    /// Share of each flown run with the true deck within every recovery limit (%).
+    pub deck_within_limits_pct: Option<Distribution>,
     /// The landing signal officer's greenie board of the runs.
     pub greenie_board: GreenieBoard,
 }
@@ -244,6 +246,9 @@ impl CampaignStatistics {
             ),
             thrust_rate_rms_knps: Distribution::of(
                 flown.iter().filter_map(|r| r.thrust_rate_rms_knps),
+            ),
+            deck_within_limits_pct: Distribution::of(
+                flown.iter().filter_map(|r| r.deck_within_limits_pct),
             ),
             greenie_board: GreenieBoard::of_rows(rows),
         }

@@ -13,6 +13,7 @@ use super::blocks::{Block, BlockPosition};
 
 use super::activity::ActivityStatistics;
 use super::closed_loop::{ClosedLoop, HeldInputs, HeldLoop, StepStreams};
+use super::deck_limits::DeckLimitStatistics;
 use super::deck_predictor::DeckPredictor;
 use super::events::EventDetector;
 use super::outcome::{Divergence, EndReason, Event, LandingRules, RunSummary};
@@ -109,6 +110,8 @@ pub struct Simulation {
     /// Whether the run flies the 3-D approach (its signals carry a cross track).
     three_dimensional: bool,
     activity: ActivityStatistics,
+    /// The share of the run with the true deck within the recovery limits.
+    deck_limits: DeckLimitStatistics,
     ramp_clearance_m: Option<f64>,
     /// The wave-off decision, once the supervisor has emitted it: its time (s) and why.
     wave_off: Option<(f64, WaveOffDecision)>,
@@ -160,6 +163,11 @@ impl Simulation {
         let deck = setup.system.deck;
         let activity =
             ActivityStatistics::new(setup.system.aircraft().actuator(), scenario.time_step_s);
+        let deck_limits = DeckLimitStatistics::new(
+            &scenario.control.wave_off.recovery,
+            deck.deck_height_m,
+            scenario.time_step_s,
+        );
         let on_speed_alpha_rad = setup.system.trim.alpha_rad;
         Self {
             system: setup.system,
@@ -182,6 +190,7 @@ impl Simulation {
             ramp_aft_of_aim_point_m: deck.ramp_aft_of_aim_point_m,
             three_dimensional: false,
             activity,
+            deck_limits,
             ramp_clearance_m: None,
             wave_off: None,
             pending: VecDeque::with_capacity(4),
@@ -343,6 +352,7 @@ impl Simulation {
         let mut end = self.check_state(&signals);
         if end.is_none() {
             self.activity.sample(&signals);
+            self.deck_limits.sample(&signals);
         }
         if approach && end.is_none() {
             end = self.judge_approach(&signals, recorder);
@@ -467,6 +477,7 @@ impl Simulation {
             glide_path_error_rms_m: self.statistics.rms_m(),
             glide_path_error_max_m: self.statistics.max_m(),
             actuator: self.activity.activity(),
+            deck_within_recovery_limits_pct: self.deck_limits.within_pct(),
             trap_sheet: self.three_dimensional.then(|| self.trap_sheet.sheet()),
             lso_grade: None,
         };

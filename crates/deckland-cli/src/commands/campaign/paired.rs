@@ -135,6 +135,7 @@ mod tests {
             lso_points: None,
             lso_comment: None,
             wave_off_criterion: None,
+            deck_within_limits_pct: None,
         }
     }
 

@@ -503,10 +503,34 @@ pub fn print_statistics(report: &CampaignReport) -> Result<()> {
             outln!()?;
         }
     }
+    for line in deck_within_limits_lines(stats) {
+        outln!("  {line}")?;
+    }
     for line in rare_event_lines(report.summary) {
         outln!("  {line}")?;
     }
     Ok(())
+}
+
+/// The share of the runs' time with the true deck within the recovery limits
+/// (`deck_within_limits_pct` of `runs.csv`): its mean and its least over the flown runs,
+/// one line per controller (named when there are several); none without a flown run.
+pub fn deck_within_limits_lines(stats: &[CampaignStatistics]) -> Vec<String> {
+    stats
+        .iter()
+        .filter_map(|s| {
+            let d = s.deck_within_limits_pct?;
+            let whose = if stats.len() > 1 {
+                format!(" ({})", s.controller)
+            } else {
+                String::new()
+            };
+            Some(format!(
+                "deck within the recovery limits{whose}: mean {:.1} % of the time (min {:.1} %)",
+                d.mean, d.min
+            ))
+        })
+        .collect()
 }
 
 /// Prints the paired differences of `campaign --compare` on stdout.

@@ -481,6 +481,10 @@ pub struct RunSummary {
     pub glide_path_error_max_m: Option<f64>,
     /// What the elevator and the engines did over the run.
     pub actuator: ActuatorActivity,
+    /// The share of the run (%) with the true deck within every recovery limit at once
+    /// (`[control.wave_off.recovery]`: lens pitch and roll, total motion, motion in the
+    /// window), checked every 10 ms; see `DeckLimitStatistics` (simulation/deck_limits.rs).
+    pub deck_within_recovery_limits_pct: f64,
     /// The landing signal officer's trap sheet of a 3-D approach (glide-slope and lineup
     /// deviations at the start, the middle, in close and at the ramp; docs/model.md
     /// §10.8); `None` for a longitudinal approach.
