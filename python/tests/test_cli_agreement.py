@@ -152,6 +152,8 @@ def test_campaign_is_deckland_campaign(cli, tmp_path, threads):
         ["campaign", "heavy-sea.toml", "--runs", "6", "--seed", "11", "--compare", "--threads", "2", "--json", "--out", str(out)],
         cwd=tmp_path,
     )
+    # The printed JSON is summary.json's fields and where the files went.
+    assert expected_summary.pop("output_folder") == str(out)
     scenario = deckland.Scenario.from_file(tmp_path / "heavy-sea.toml")
     result = deckland.campaign(scenario, 6, seed=11, threads=threads, compare=True)
     expected = read_csv_columns(out / "runs.csv")
@@ -177,6 +179,7 @@ def test_a_three_d_campaign_is_deckland_campaign_with_its_lateral_columns(cli, t
         ["campaign", "crosswind.toml", "--runs", "3", "--seed", "5", "--threads", "2", "--json", "--out", str(out)],
         cwd=tmp_path,
     )
+    assert expected_summary.pop("output_folder") == str(out)
     scenario = deckland.Scenario.from_file(tmp_path / "crosswind.toml")
     result = deckland.campaign(scenario, 3, seed=5, threads=2)
     expected = read_csv_columns(out / "runs.csv")
