@@ -1,5 +1,5 @@
 //! Drawing a panel: its axes, then its lines, scatter, markers, histograms and reference
-//! lines, or its bar chart, and its legend where nothing is drawn.
+//! lines, or its bar chart (`bars`), and its legend where nothing is drawn.
 
 use std::ops::Range;
 
@@ -7,12 +7,81 @@ use anyhow::{anyhow, Result};
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::legend::{draw_marker, Legend, MarkerShape, Occupancy, PixelRect, Sample};
+use super::legend::{draw_marker, Legend, MarkerShape, MarkerStyle, Occupancy, PixelRect, Sample};
 use super::panel::{OutsideLegend, Panel};
 use super::style::*;
 use super::ticks::{self, AxisLabels, X_LABELS, Y_LABELS};
+
+/// A panel's chart: data coordinates to pixels.
+pub(super) type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// The error of a failed drawing call.
+pub(super) fn failed<E: std::error::Error + Send + Sync>(
+    e: DrawingAreaErrorKind<E>,
+) -> anyhow::Error {
+    anyhow!("plot drawing failed: {e}")
+}
+
+/// What the layers of a panel draw on and record: the area and its chart, the plotting
+/// area's pixels, what was drawn where, the legend, and the axes' ranges.
+pub(super) struct Canvas<'a, DB: DrawingBackend> {
+    pub(super) area: &'a DrawingArea<DB, Shift>,
+    pub(super) chart: Chart<'a, DB>,
+    pub(super) plot: PixelRect,
+    pub(super) occupancy: Occupancy,
+    pub(super) legend: Legend,
+    pub(super) x_range: Range<f64>,
+    pub(super) y_range: Range<f64>,
+}
+
+impl<'a, DB: DrawingBackend> Canvas<'a, DB> {
+    /// The canvas of `chart` on `area` over the ranges, with `notes` atop its legend.
+    pub(super) fn new(
+        area: &'a DrawingArea<DB, Shift>,
+        chart: Chart<'a, DB>,
+        (x_range, y_range): (Range<f64>, Range<f64>),
+        notes: Vec<String>,
+    ) -> Self {
+        let (xs, ys) = chart.plotting_area().get_pixel_range();
+        let plot = PixelRect {
+            left: xs.start,
+            top: ys.start,
+            right: xs.end,
+            bottom: ys.end,
+        };
+        Self {
+            area,
+            chart,
+            plot,
+            occupancy: Occupancy::new(plot),
+            legend: Legend {
+                notes,
+                entries: Vec::new(),
+            },
+            x_range,
+            y_range,
+        }
+    }
+
+    /// The pixel of a data point, relative to the area (for elements drawn on it).
+    pub(super) fn area_pixel(&self, point: (f64, f64)) -> (i32, i32) {
+        let pixel = self.chart.backend_coord(&point);
+        let base = self.area.get_base_pixel();
+        (pixel.0 - base.0, pixel.1 - base.1)
+    }
+
+    /// Whether a data point lies within the axes.
+    fn contains(&self, (x, y): (f64, f64)) -> bool {
+        let within = |r: &Range<f64>, v: f64| v >= r.start.min(r.end) && v <= r.start.max(r.end);
+        within(&self.x_range, x) && within(&self.y_range, y)
+    }
+
+    /// The legend, what was drawn where, and the plotting area.
+    pub(super) fn finish(self) -> (Legend, Occupancy, PixelRect) {
+        (self.legend, self.occupancy, self.plot)
+    }
+}
 
 /// `x` and `y` widened about their centres so that a unit spans as many pixels on both
 /// axes of a plotting area of `(width, height)` pixels.
@@ -67,7 +136,9 @@ impl Panel {
             .build_cartesian_2d(x_range.clone(), y_range.clone())
             .map_err(error)?;
         let x_labels = AxisLabels::new(&x_range, X_LABELS, false);
-        let y_labels = AxisLabels::new(&y_range, Y_LABELS, self.integer_y);
+        // A log axis labels the whole powers of ten (its values are their exponents).
+        let log = self.log_y;
+        let y_labels = AxisLabels::new(&y_range, Y_LABELS, self.integer_y || log);
         let names = self.categories.clone();
         let x_format = move |x: &f64| {
             if categories {
@@ -83,7 +154,10 @@ impl Panel {
         };
         let downward = self.y_downward;
         // + 0.0 turns −0 into 0: the axis never labels "−0".
-        let y_format = move |y: &f64| y_labels.format(if downward { -*y + 0.0 } else { *y });
+        let y_format = move |y: &f64| match y_labels.format(if downward { -*y + 0.0 } else { *y }) {
+            label if log && !label.is_empty() => ticks::power_of_ten(y.round()),
+            label => label,
+        };
         let mut mesh = chart.configure_mesh();
         if categories {
             mesh.disable_x_mesh().x_labels(self.categories.len().max(1));
@@ -97,7 +171,7 @@ impl Panel {
             .y_desc(&self.y_label)
             .label_style((FONT_FAMILY, 14))
             .axis_desc_style((FONT_FAMILY, 16))
-            .max_light_lines(4)
+            .max_light_lines(if log { 0 } else { 4 })
             .light_line_style(RGBColor(242, 242, 242))
             .bold_line_style(RGBColor(218, 218, 218))
             .draw()
@@ -105,9 +179,9 @@ impl Panel {
         Ok(chart)
     }
 
-    /// Draws the panel on `area`; its legend goes inside if a free place exists, else
-    /// into `column` (if given). Returns the width the legend needs beside the axes when
-    /// it found no free place.
+    /// Draws the panel on `area`; its legend goes into `column` if given, else inside if a
+    /// free place exists. Returns the width the legend needs beside the axes when it is
+    /// in the column or found no free place.
     pub(super) fn draw<DB: DrawingBackend>(
         &self,
         area: &DrawingArea<DB, Shift>,
@@ -125,13 +199,14 @@ impl Panel {
             return Ok(None);
         }
         let size = legend.size(area)?;
-        if let Some(place) = occupancy.free_place(size) {
-            legend.draw(area, place, size)?;
-            return Ok(None);
-        }
+        // With a legend column beside the figure, every legend goes there: beside the
+        // panel whose legend fits inside its axes, the column would stay empty.
         if let Some(column) = column {
             let base = column.get_base_pixel();
             legend.draw(column, (base.0 + 4, plot.top), size)?;
+        } else if let Some(place) = occupancy.free_place(size) {
+            legend.draw(area, place, size)?;
+            return Ok(None);
         }
         Ok(Some(size.0 + 12))
     }
@@ -145,74 +220,92 @@ impl Panel {
     where
         DB::ErrorType: 'static,
     {
-        let error = |e: DrawingAreaErrorKind<DB::ErrorType>| anyhow!("plot drawing failed: {e}");
         let (x_range, y_range) = self.ranges();
-        let (x_range, y_range) = if self.equal_aspect {
+        let ranges = if self.equal_aspect {
             let size = self.plotting_size(area.dim_in_pixel())?;
             equal_aspect_ranges(x_range, y_range, size)
         } else {
             (x_range, y_range)
         };
-        let mut chart = self.axes(area, x_range.clone(), y_range.clone(), false)?;
-        let (xs, ys) = chart.plotting_area().get_pixel_range();
-        let plot = PixelRect {
-            left: xs.start,
-            top: ys.start,
-            right: xs.end,
-            bottom: ys.end,
+        let chart = self.axes(area, ranges.0.clone(), ranges.1.clone(), false)?;
+        let mut canvas = Canvas::new(area, chart, ranges, self.notes.clone());
+        let histogram_entries = self.draw_histograms(&mut canvas)?;
+        self.draw_lines(&mut canvas)?;
+        for (name, sample) in histogram_entries {
+            canvas.legend.push(&name, sample);
+        }
+        self.draw_reference_lines(&mut canvas)?;
+        self.draw_vertical_lines(&mut canvas)?;
+        self.draw_scatter(&mut canvas)?;
+        self.draw_markers(&mut canvas)?;
+        Ok(canvas.finish())
+    }
+
+    /// Draws the histograms side by side within each bin; returns their legend entries.
+    fn draw_histograms<DB: DrawingBackend>(
+        &self,
+        canvas: &mut Canvas<DB>,
+    ) -> Result<Vec<(String, Sample)>>
+    where
+        DB::ErrorType: 'static,
+    {
+        let mut entries = Vec::new();
+        let Some(bins) = self.bins() else {
+            return Ok(entries);
         };
-        let mut occupancy = Occupancy::new(plot);
+        let (start, width, _) = bins;
+        let groups = self.histograms.len();
+        let opacity = if groups > 1 { 0.85 } else { 0.6 };
+        let sub_width = width / groups as f64;
+        for (index, histogram) in self.histograms.iter().enumerate() {
+            let colour = PALETTE[index % PALETTE.len()];
+            let counts = Self::bin_counts(&histogram.values, bins);
+            let boxes: Vec<[(f64, f64); 2]> = counts
+                .into_iter()
+                .enumerate()
+                .filter(|(_, count)| *count > 0)
+                .map(|(bin, count)| {
+                    let left = start + width * bin as f64 + sub_width * index as f64;
+                    [(left, 0.0), (left + sub_width, count as f64)]
+                })
+                .collect();
+            for corners in &boxes {
+                canvas.occupancy.mark_rect(PixelRect::spanning(
+                    canvas.chart.backend_coord(&corners[0]),
+                    canvas.chart.backend_coord(&corners[1]),
+                ));
+            }
+            let fill = colour.mix(opacity).filled();
+            let chart = &mut canvas.chart;
+            chart
+                .draw_series(boxes.iter().map(|c| Rectangle::new(*c, fill)))
+                .map_err(failed)?;
+            chart
+                .draw_series(
+                    boxes
+                        .iter()
+                        .map(|c| Rectangle::new(*c, colour.stroke_width(1))),
+                )
+                .map_err(failed)?;
+            entries.push((histogram.name.clone(), Sample::Patch { colour, opacity }));
+        }
+        Ok(entries)
+    }
+
+    /// Draws the line series, solid or dashed, 2 px wide.
+    fn draw_lines<DB: DrawingBackend>(&self, canvas: &mut Canvas<DB>) -> Result<()>
+    where
+        DB::ErrorType: 'static,
+    {
+        let (xs, ys) = canvas.chart.plotting_area().get_pixel_range();
+        let (x_range, y_range) = (&canvas.x_range, &canvas.y_range);
         // One pixel in data units.
         let pixel_x = (x_range.end - x_range.start) / f64::from((xs.end - xs.start).max(1));
         let pixel_y = (y_range.end - y_range.start) / f64::from((ys.end - ys.start).max(1));
-        let mut legend = Legend {
-            notes: self.notes.clone(),
-            entries: Vec::new(),
-        };
-        let mut histogram_entries = Vec::new();
-        if let Some(bins) = self.bins() {
-            let (start, width, _) = bins;
-            let groups = self.histograms.len();
-            let opacity = if groups > 1 { 0.85 } else { 0.6 };
-            let sub_width = width / groups as f64;
-            for (index, histogram) in self.histograms.iter().enumerate() {
-                let colour = PALETTE[index % PALETTE.len()];
-                let counts = Self::bin_counts(&histogram.values, bins);
-                let boxes: Vec<[(f64, f64); 2]> = counts
-                    .into_iter()
-                    .enumerate()
-                    .filter(|(_, count)| *count > 0)
-                    .map(|(bin, count)| {
-                        let left = start + width * bin as f64 + sub_width * index as f64;
-                        [(left, 0.0), (left + sub_width, count as f64)]
-                    })
-                    .collect();
-                for corners in &boxes {
-                    occupancy.mark_rect(PixelRect::spanning(
-                        chart.backend_coord(&corners[0]),
-                        chart.backend_coord(&corners[1]),
-                    ));
-                }
-                chart
-                    .draw_series(
-                        boxes
-                            .iter()
-                            .map(|c| Rectangle::new(*c, colour.mix(opacity).filled())),
-                    )
-                    .map_err(error)?;
-                chart
-                    .draw_series(
-                        boxes
-                            .iter()
-                            .map(|c| Rectangle::new(*c, colour.stroke_width(1))),
-                    )
-                    .map_err(error)?;
-                histogram_entries.push((histogram.name.clone(), Sample::Patch { colour, opacity }));
-            }
-        }
         for (index, line) in self.lines.iter().enumerate() {
             let colour = line.colour.unwrap_or(PALETTE[index % PALETTE.len()]);
             let points = finite(&line.points);
+            let chart = &mut canvas.chart;
             let pixels: Vec<(i32, i32)> = points.iter().map(|p| chart.backend_coord(p)).collect();
             // A jagged line is drawn 1 px wide three times, offset by one pixel right and
             // down, so that it looks as heavy as the others (2 px) without breaking up.
@@ -220,268 +313,183 @@ impl Panel {
             let width = 2;
             let dash = line.dashed.then_some(line.pattern.unwrap_or((10, 6)));
             match dash {
-                Some((dash, gap)) => chart
-                    .draw_series(DashedLineSeries::new(
-                        points,
-                        dash,
-                        gap,
-                        colour.stroke_width(width),
-                    ))
-                    .map(|_| ())
-                    .map_err(error)?,
+                Some((dash, gap)) => {
+                    let style = colour.stroke_width(width);
+                    let series = DashedLineSeries::new(points, dash, gap, style);
+                    chart.draw_series(series).map_err(failed)?;
+                }
                 None if jagged => {
                     for (dx, dy) in [(0.0, 0.0), (pixel_x, 0.0), (0.0, -pixel_y)] {
                         let shifted = points.iter().map(|(x, y)| (x + dx, y + dy));
                         chart
                             .draw_series(LineSeries::new(shifted, colour.stroke_width(1)))
-                            .map_err(error)?;
+                            .map_err(failed)?;
                     }
                 }
-                None => chart
-                    .draw_series(LineSeries::new(points, colour.stroke_width(width)))
-                    .map(|_| ())
-                    .map_err(error)?,
-            }
-            occupancy.mark_path(&pixels, 2);
-            legend.push(
-                &line.name,
-                Sample::Line {
-                    colour,
-                    width,
-                    dash,
-                },
-            );
-        }
-        for (name, sample) in histogram_entries {
-            legend.push(&name, sample);
-        }
-        let mut reference_names: Vec<&str> = Vec::new();
-        for line in self.reference_lines.iter().filter(|l| l.y.is_finite()) {
-            let index = match reference_names.iter().position(|n| *n == line.name) {
-                Some(index) => index,
                 None => {
-                    reference_names.push(&line.name);
-                    reference_names.len() - 1
+                    let series = LineSeries::new(points, colour.stroke_width(width));
+                    chart.draw_series(series).map_err(failed)?;
                 }
+            }
+            canvas.occupancy.mark_path(&pixels, 2);
+            let sample = Sample::Line {
+                colour,
+                width,
+                dash,
             };
-            let (colour, (dash, gap)) = REFERENCE_STYLES[index % REFERENCE_STYLES.len()];
-            let style = colour.stroke_width(1);
-            let ends = [(x_range.start, line.y), (x_range.end, line.y)];
-            let pixels = ends.map(|p| chart.backend_coord(&p));
-            chart
-                .draw_series(DashedLineSeries::new(ends, dash, gap, style))
-                .map_err(error)?;
-            occupancy.mark_path(&pixels, 1);
-            legend.push(
-                &line.name,
-                Sample::Line {
-                    colour,
-                    width: 1,
-                    dash: Some((dash, gap)),
-                },
-            );
+            canvas.legend.push(&line.name, sample);
         }
+        Ok(())
+    }
+
+    /// Draws the horizontal reference lines within the axes, each name in its own style;
+    /// a limit beyond the axes is named in a note.
+    fn draw_reference_lines<DB: DrawingBackend>(&self, canvas: &mut Canvas<DB>) -> Result<()>
+    where
+        DB::ErrorType: 'static,
+    {
+        let mut names: Vec<&str> = Vec::new();
+        let mut beyond: Vec<(&str, f64)> = Vec::new();
+        for line in self.reference_lines.iter().filter(|l| l.y.is_finite()) {
+            let index = names
+                .iter()
+                .position(|n| *n == line.name)
+                .unwrap_or_else(|| {
+                    names.push(&line.name);
+                    names.len() - 1
+                });
+            let x_range = canvas.x_range.clone();
+            if !canvas.contains((x_range.start, line.y)) {
+                beyond.extend(line.limit.then_some((line.name.as_str(), line.y)));
+                continue;
+            }
+            let (colour, (dash, gap)) = REFERENCE_STYLES[index % REFERENCE_STYLES.len()];
+            let ends = [(x_range.start, line.y), (x_range.end, line.y)];
+            let pixels = ends.map(|p| canvas.chart.backend_coord(&p));
+            let series = DashedLineSeries::new(ends, dash, gap, colour.stroke_width(1));
+            canvas.chart.draw_series(series).map_err(failed)?;
+            canvas.occupancy.mark_path(&pixels, 1);
+            let sample = Sample::Line {
+                colour,
+                width: 1,
+                dash: Some((dash, gap)),
+            };
+            canvas.legend.push(&line.name, sample);
+        }
+        let y_range = canvas.y_range.clone();
+        for name in names {
+            let sides: Vec<bool> = beyond
+                .iter()
+                .filter(|(n, _)| *n == name)
+                .map(|(_, y)| *y > y_range.end)
+                .collect();
+            let side = match (sides.contains(&true), sides.contains(&false)) {
+                (false, false) => continue,
+                (true, false) => "above",
+                (false, true) => "below",
+                (true, true) => "above and below",
+            };
+            canvas.legend.notes.push(format!("{name}: {side} the axis"));
+        }
+        Ok(())
+    }
+
+    /// Draws the vertical reference lines, each labelled at the top of the axes.
+    fn draw_vertical_lines<DB: DrawingBackend>(&self, canvas: &mut Canvas<DB>) -> Result<()>
+    where
+        DB::ErrorType: 'static,
+    {
         let label_style = (FONT_FAMILY, 13).into_font().color(&VERTICAL_LINE_COLOUR);
+        let (area, y_range, plot) = (canvas.area, canvas.y_range.clone(), canvas.plot);
         for line in self.vertical_lines.iter().filter(|l| l.x.is_finite()) {
             let style = VERTICAL_LINE_COLOUR.stroke_width(1);
             let ends = [(line.x, y_range.start), (line.x, y_range.end)];
-            let pixels = ends.map(|p| chart.backend_coord(&p));
-            chart
+            let pixels = ends.map(|p| canvas.chart.backend_coord(&p));
+            canvas
+                .chart
                 .draw_series(DashedLineSeries::new(ends, 2, 3, style))
-                .map_err(error)?;
-            occupancy.mark_path(&pixels, 1);
+                .map_err(failed)?;
+            canvas.occupancy.mark_path(&pixels, 1);
             let (w, h) = area
                 .estimate_text_size(&line.name, &label_style)
-                .map_err(error)?;
+                .map_err(failed)?;
             let (w, h) = (i32::try_from(w).unwrap_or(0), i32::try_from(h).unwrap_or(0));
-            let top = chart.backend_coord(&(line.x, y_range.end));
+            let top = canvas.chart.backend_coord(&(line.x, y_range.end));
             // The label right of the line, or left of it where it would leave the axes.
             let left = if top.0 + 4 + w > plot.right {
                 top.0 - 4 - w
             } else {
                 top.0 + 4
             };
-            occupancy.mark_rect(PixelRect::at((left - 2, top.1 + 2), (w + 4, h + 4)));
+            canvas
+                .occupancy
+                .mark_rect(PixelRect::at((left - 2, top.1 + 2), (w + 4, h + 4)));
             let base = area.get_base_pixel();
-            area.draw(&Text::new(
-                line.name.clone(),
-                (left - base.0, top.1 + 4 - base.1),
-                label_style.clone(),
-            ))
-            .map_err(error)?;
+            let at = (left - base.0, top.1 + 4 - base.1);
+            area.draw(&Text::new(line.name.clone(), at, label_style.clone()))
+                .map_err(failed)?;
         }
+        Ok(())
+    }
+
+    /// Draws the scatter series, in the order added: as dots in the palette's colours
+    /// after the lines', or as markers of their own style (those within the axes); then
+    /// the keys' legend entries.
+    fn draw_scatter<DB: DrawingBackend>(&self, canvas: &mut Canvas<DB>) -> Result<()>
+    where
+        DB::ErrorType: 'static,
+    {
         let offset = self.lines.len();
         for (index, series) in self.scatter.iter().enumerate() {
-            let colour = PALETTE[(offset + index) % PALETTE.len()];
             let points = finite(&series.points);
+            let style = match series.style {
+                Some(style) => style,
+                None => {
+                    let colour = PALETTE[(offset + index) % PALETTE.len()];
+                    MarkerStyle::filled(MarkerShape::Circle, colour, 3).opacity(0.7)
+                }
+            };
+            let radius = i32::try_from(style.size).unwrap_or(3) + 1;
             for point in &points {
-                occupancy.mark_point(chart.backend_coord(point), 4);
+                let pixel = canvas.chart.backend_coord(point);
+                canvas.occupancy.mark_point(pixel, radius);
             }
-            chart
-                .draw_series(
-                    points
-                        .into_iter()
-                        .map(move |p| Circle::new(p, 3, colour.mix(0.7).filled())),
-                )
-                .map_err(error)?;
-            legend.push(
-                &series.name,
-                Sample::Marker {
-                    colour,
-                    opacity: 0.7,
-                    shape: MarkerShape::Circle,
-                    size: 3,
-                },
-            );
+            if series.style.is_some() {
+                for point in points.into_iter().filter(|p| canvas.contains(*p)) {
+                    draw_marker(canvas.area, canvas.area_pixel(point), style).map_err(failed)?;
+                }
+            } else {
+                let fill = style.colour.mix(style.opacity).filled();
+                canvas
+                    .chart
+                    .draw_series(points.into_iter().map(move |p| Circle::new(p, 3, fill)))
+                    .map_err(failed)?;
+            }
+            canvas.legend.push(&series.name, Sample::Marker(style));
         }
-        let base = area.get_base_pixel();
+        for (name, style) in &self.keys {
+            canvas.legend.push(name, Sample::Marker(*style));
+        }
+        Ok(())
+    }
+
+    /// Draws the named point markers.
+    fn draw_markers<DB: DrawingBackend>(&self, canvas: &mut Canvas<DB>) -> Result<()>
+    where
+        DB::ErrorType: 'static,
+    {
         for (index, marker) in self.markers.iter().enumerate() {
             let (x, y) = marker.point;
             if !(x.is_finite() && y.is_finite()) {
                 continue;
             }
             let colour = MARKER_COLOURS[index % MARKER_COLOURS.len()];
-            let pixel = chart.backend_coord(&marker.point);
-            occupancy.mark_point(pixel, 8);
-            draw_marker(
-                area,
-                (pixel.0 - base.0, pixel.1 - base.1),
-                marker.shape,
-                colour.mix(1.0),
-                6,
-            )
-            .map_err(error)?;
-            legend.push(
-                &marker.name,
-                Sample::Marker {
-                    colour,
-                    opacity: 1.0,
-                    shape: marker.shape,
-                    size: 6,
-                },
-            );
+            let style = MarkerStyle::filled(marker.shape, colour, 6);
+            let pixel = canvas.chart.backend_coord(&marker.point);
+            canvas.occupancy.mark_point(pixel, 8);
+            draw_marker(canvas.area, canvas.area_pixel(marker.point), style).map_err(failed)?;
+            canvas.legend.push(&marker.name, Sample::Marker(style));
         }
-        Ok((legend, occupancy, plot))
-    }
-
-    /// Draws the panel as a bar chart: categories along x, the groups side by side, each
-    /// bar with its interval and its label above.
-    pub(super) fn draw_bar_chart<DB: DrawingBackend>(
-        &self,
-        area: &DrawingArea<DB, Shift>,
-    ) -> Result<(Legend, Occupancy, PixelRect)>
-    where
-        DB::ErrorType: 'static,
-    {
-        let error = |e: DrawingAreaErrorKind<DB::ErrorType>| anyhow!("plot drawing failed: {e}");
-        let categories = self.categories.len();
-        let highest = self
-            .bars
-            .iter()
-            .flat_map(|b| {
-                b.values
-                    .iter()
-                    .copied()
-                    .chain(b.intervals.iter().map(|i| i.1))
-            })
-            .filter(|v| v.is_finite())
-            .fold(0.0_f64, f64::max);
-        let top = if highest > 0.0 { highest * 1.15 } else { 1.0 };
-        let x_range = -0.5..(categories as f64 - 0.5);
-        let mut chart = self.axes(area, x_range, 0.0..top, true)?;
-        let (xs, ys) = chart.plotting_area().get_pixel_range();
-        let plot = PixelRect {
-            left: xs.start,
-            top: ys.start,
-            right: xs.end,
-            bottom: ys.end,
-        };
-        let mut occupancy = Occupancy::new(plot);
-        let mut legend = Legend {
-            notes: self.notes.clone(),
-            entries: Vec::new(),
-        };
-        let groups = self.bars.len().max(1);
-        let group_width = 0.8 / groups as f64;
-        let base = area.get_base_pixel();
-        let text_style = (FONT_FAMILY, 13)
-            .into_font()
-            .color(&RGBColor(40, 40, 40))
-            .pos(Pos::new(HPos::Center, VPos::Bottom));
-        let interval_colour = RGBColor(0, 0, 0);
-        for (index, group) in self.bars.iter().enumerate() {
-            let colour = PALETTE[index % PALETTE.len()];
-            for (category, &value) in group.values.iter().enumerate() {
-                let left = category as f64 - 0.4 + group_width * index as f64;
-                let centre = left + group_width / 2.0;
-                let height = if value.is_finite() { value } else { 0.0 };
-                let corners = [(left, 0.0), (left + group_width, height)];
-                chart
-                    .draw_series(std::iter::once(Rectangle::new(corners, colour.filled())))
-                    .map_err(error)?;
-                occupancy.mark_rect(PixelRect::spanning(
-                    chart.backend_coord(&corners[0]),
-                    chart.backend_coord(&corners[1]),
-                ));
-                let mut label_at = height;
-                if let Some(&(low, high)) = group.intervals.get(category) {
-                    if low.is_finite() && high.is_finite() {
-                        let half_cap = group_width * 0.18;
-                        let style = interval_colour.stroke_width(2);
-                        for path in [
-                            vec![(centre, low), (centre, high)],
-                            vec![(centre - half_cap, low), (centre + half_cap, low)],
-                            vec![(centre - half_cap, high), (centre + half_cap, high)],
-                        ] {
-                            let pixels: Vec<_> =
-                                path.iter().map(|p| chart.backend_coord(p)).collect();
-                            occupancy.mark_path(&pixels, 2);
-                            chart
-                                .draw_series(std::iter::once(PathElement::new(path, style)))
-                                .map_err(error)?;
-                        }
-                        label_at = label_at.max(high);
-                    }
-                }
-                let label = group.labels.get(category).cloned().unwrap_or_else(|| {
-                    if value.is_finite() {
-                        ticks::format_tick(value, if value.fract() == 0.0 { 0 } else { 1 })
-                    } else {
-                        "—".to_string()
-                    }
-                });
-                let anchor = chart.backend_coord(&(centre, label_at));
-                let (w, h) = area
-                    .estimate_text_size(&label, &text_style)
-                    .map_err(error)?;
-                let (w, h) = (i32::try_from(w).unwrap_or(0), i32::try_from(h).unwrap_or(0));
-                occupancy.mark_rect(PixelRect::at(
-                    (anchor.0 - w / 2 - 2, anchor.1 - 4 - h),
-                    (w + 4, h + 4),
-                ));
-                area.draw(&Text::new(
-                    label,
-                    (anchor.0 - base.0, anchor.1 - 4 - base.1),
-                    text_style.clone(),
-                ))
-                .map_err(error)?;
-            }
-            legend.push(
-                &group.name,
-                Sample::Patch {
-                    colour,
-                    opacity: 1.0,
-                },
-            );
-        }
-        if self.bars.iter().any(|b| !b.intervals.is_empty()) {
-            legend.push(
-                &self.interval_name,
-                Sample::Interval {
-                    colour: interval_colour,
-                },
-            );
-        }
-        Ok((legend, occupancy, plot))
+        Ok(())
     }
 }

@@ -56,7 +56,8 @@ impl Figure {
     }
 
     /// Draws the figure with a legend column `column` px wide beside every panel (0 for
-    /// none); returns the widest legend that found no free place inside its axes.
+    /// none), which then holds every panel's legend; returns the widest legend drawn in
+    /// the column, or, without one, the widest that found no free place inside its axes.
     fn draw<DB: DrawingBackend>(&self, root: DrawingArea<DB, Shift>, column: i32) -> Result<i32>
     where
         DB::ErrorType: 'static,
@@ -88,8 +89,8 @@ impl Figure {
     }
 
     /// The width of the legend column: 0 when every legend finds a free place inside its
-    /// axes, else the widest of those that do not (found by drawing to a scratch SVG,
-    /// again with the column, since narrower axes may push out another legend).
+    /// axes, else the widest legend of the figure, since the column then holds them all
+    /// (found by drawing to a scratch SVG, again with the column).
     pub(super) fn legend_column(&self) -> Result<i32> {
         let mut column = 0;
         for _ in 0..3 {

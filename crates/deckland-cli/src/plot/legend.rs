@@ -231,10 +231,61 @@ impl Occupancy {
 /// The shape of a point marker.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum MarkerShape {
-    /// A filled circle.
+    /// A circle.
     Circle,
-    /// A filled triangle, point up.
+    /// A triangle, point up.
     Triangle,
+    /// A square.
+    Square,
+    /// A diamond (a square on its corner).
+    Diamond,
+    /// A triangle, point down.
+    TriangleDown,
+    /// A diagonal cross (×): lines only, the same filled or hollow.
+    Cross,
+}
+
+/// How a point marker is drawn: its shape, colour and opacity, its size (the radius of a
+/// circle, px), and whether it is filled or only outlined (hollow: what lies under it
+/// shows through).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MarkerStyle {
+    /// The shape.
+    pub shape: MarkerShape,
+    /// The colour of its fill, or of its outline when hollow.
+    pub colour: RGBColor,
+    /// Opacity, 0–1.
+    pub opacity: f64,
+    /// Size (px): the radius of a circle; the other shapes are as large to the eye.
+    pub size: u32,
+    /// Filled, or only outlined.
+    pub filled: bool,
+}
+
+impl MarkerStyle {
+    /// A filled marker of `shape` in `colour`, `size` px, opaque.
+    pub fn filled(shape: MarkerShape, colour: RGBColor, size: u32) -> Self {
+        Self {
+            shape,
+            colour,
+            opacity: 1.0,
+            size,
+            filled: true,
+        }
+    }
+
+    /// The same marker with `opacity`.
+    pub fn opacity(self, opacity: f64) -> Self {
+        Self { opacity, ..self }
+    }
+
+    /// The same marker, outlined only.
+    pub fn hollow(self) -> Self {
+        Self {
+            filled: false,
+            ..self
+        }
+    }
 }
 
 /// How an entry's sample is drawn: exactly as the thing it names.
@@ -246,13 +297,8 @@ pub(crate) enum Sample {
         width: u32,
         dash: Option<(u32, u32)>,
     },
-    /// A point marker of `size` px (radius).
-    Marker {
-        colour: RGBColor,
-        opacity: f64,
-        shape: MarkerShape,
-        size: u32,
-    },
+    /// A point marker.
+    Marker(MarkerStyle),
     /// A filled patch (histogram or bar), with an outline of the same colour.
     Patch { colour: RGBColor, opacity: f64 },
     /// An error bar with caps.
@@ -410,55 +456,11 @@ impl Legend {
             y += LINE_HEIGHT;
         }
         for entry in &self.entries {
-            let middle = y + LINE_HEIGHT / 2 - 2;
             let left = x0 + PADDING;
-            let right = left + SAMPLE_WIDTH;
-            match entry.sample {
-                Sample::Line {
-                    colour,
-                    width,
-                    dash,
-                } => {
-                    let style = colour.stroke_width(width);
-                    let ends = vec![at(left, middle), at(right, middle)];
-                    match dash {
-                        Some((dash, gap)) => area
-                            .draw(&DashedPathElement::new(ends, dash, gap, style))
-                            .map_err(error)?,
-                        None => area.draw(&PathElement::new(ends, style)).map_err(error)?,
-                    }
-                }
-                Sample::Marker {
-                    colour,
-                    opacity,
-                    shape,
-                    size,
-                } => {
-                    let centre = at((left + right) / 2, middle);
-                    draw_marker(area, centre, shape, colour.mix(opacity), size).map_err(error)?;
-                }
-                Sample::Patch { colour, opacity } => {
-                    let corners = [at(left + 3, middle - 6), at(right - 3, middle + 6)];
-                    area.draw(&Rectangle::new(corners, colour.mix(opacity).filled()))
-                        .map_err(error)?;
-                    area.draw(&Rectangle::new(corners, colour.stroke_width(1)))
-                        .map_err(error)?;
-                }
-                Sample::Interval { colour } => {
-                    let x = (left + right) / 2;
-                    let style = colour.stroke_width(2);
-                    for path in [
-                        vec![at(x, middle - 7), at(x, middle + 7)],
-                        vec![at(x - 5, middle - 7), at(x + 5, middle - 7)],
-                        vec![at(x - 5, middle + 7), at(x + 5, middle + 7)],
-                    ] {
-                        area.draw(&PathElement::new(path, style)).map_err(error)?;
-                    }
-                }
-            }
+            draw_sample(area, entry.sample, at(left, y + LINE_HEIGHT / 2 - 2)).map_err(error)?;
             area.draw(&Text::new(
                 entry.label.clone(),
-                at(right + 6, y),
+                at(left + SAMPLE_WIDTH + 6, y),
                 text_style(),
             ))
             .map_err(error)?;
@@ -468,22 +470,111 @@ impl Legend {
     }
 }
 
+/// Draws an entry's sample with its left end at `start` (area-relative pixels, at the
+/// middle of the entry's line).
+fn draw_sample<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    sample: Sample,
+    start: Pixel,
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
+    let (left, middle) = start;
+    let right = left + SAMPLE_WIDTH;
+    match sample {
+        Sample::Line {
+            colour,
+            width,
+            dash,
+        } => {
+            let style = colour.stroke_width(width);
+            let ends = vec![(left, middle), (right, middle)];
+            match dash {
+                Some((dash, gap)) => area.draw(&DashedPathElement::new(ends, dash, gap, style)),
+                None => area.draw(&PathElement::new(ends, style)),
+            }
+        }
+        Sample::Marker(style) => draw_marker(area, ((left + right) / 2, middle), style),
+        Sample::Patch { colour, opacity } => {
+            let corners = [(left + 3, middle - 6), (right - 3, middle + 6)];
+            area.draw(&Rectangle::new(corners, colour.mix(opacity).filled()))?;
+            area.draw(&Rectangle::new(corners, colour.stroke_width(1)))
+        }
+        Sample::Interval { colour } => {
+            let x = (left + right) / 2;
+            let style = colour.stroke_width(2);
+            for path in [
+                vec![(x, middle - 7), (x, middle + 7)],
+                vec![(x - 5, middle - 7), (x + 5, middle - 7)],
+                vec![(x - 5, middle + 7), (x + 5, middle + 7)],
+            ] {
+                area.draw(&PathElement::new(path, style))?;
+            }
+            Ok(())
+        }
+    }
+}
+
+/// The corners of a marker's polygon of `shape` and size `s` centred on (x, y); none for
+/// a circle or a cross.
+fn marker_polygon(shape: MarkerShape, (x, y): Pixel, s: i32) -> Vec<Pixel> {
+    match shape {
+        MarkerShape::Triangle => vec![(x, y - s), (x - s, y + s * 3 / 4), (x + s, y + s * 3 / 4)],
+        MarkerShape::TriangleDown => {
+            vec![(x, y + s), (x + s, y - s * 3 / 4), (x - s, y - s * 3 / 4)]
+        }
+        // As large as the circle to the eye: a side of 1.8 s, a half diagonal of 1.25 s.
+        MarkerShape::Square => {
+            let h = (s * 9 / 10).max(1);
+            vec![
+                (x - h, y - h),
+                (x + h, y - h),
+                (x + h, y + h),
+                (x - h, y + h),
+            ]
+        }
+        MarkerShape::Diamond => {
+            let d = (s * 5 / 4).max(1);
+            vec![(x, y - d), (x + d, y), (x, y + d), (x - d, y)]
+        }
+        MarkerShape::Circle | MarkerShape::Cross => Vec::new(),
+    }
+}
+
 /// Draws one marker centred on `centre` (area-relative pixels).
 pub(crate) fn draw_marker<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     centre: Pixel,
-    shape: MarkerShape,
-    colour: RGBAColor,
-    size: u32,
+    style: MarkerStyle,
 ) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
-    let s = i32::try_from(size).unwrap_or(4);
-    let (x, y) = centre;
-    match shape {
-        MarkerShape::Circle => area.draw(&Circle::new(centre, size, colour.filled())),
-        MarkerShape::Triangle => area.draw(&Polygon::new(
-            vec![(x, y - s), (x - s, y + s * 3 / 4), (x + s, y + s * 3 / 4)],
-            colour.filled(),
-        )),
+    let colour = style.colour.mix(style.opacity);
+    let outline = colour.stroke_width(1);
+    let s = i32::try_from(style.size).unwrap_or(4);
+    match style.shape {
+        MarkerShape::Circle if style.filled => {
+            area.draw(&Circle::new(centre, style.size, colour.filled()))
+        }
+        MarkerShape::Circle => area.draw(&Circle::new(centre, style.size, outline)),
+        MarkerShape::Cross => {
+            let (x, y) = centre;
+            let d = (s * 4 / 5).max(1);
+            let width = if style.filled { 2 } else { 1 };
+            for ends in [
+                [(x - d, y - d), (x + d, y + d)],
+                [(x - d, y + d), (x + d, y - d)],
+            ] {
+                area.draw(&PathElement::new(ends, colour.stroke_width(width)))?;
+            }
+            Ok(())
+        }
+        shape => {
+            let corners = marker_polygon(shape, centre, s);
+            if style.filled {
+                area.draw(&Polygon::new(corners, colour.filled()))
+            } else {
+                let mut closed = corners.clone();
+                closed.extend(corners.first().copied());
+                area.draw(&PathElement::new(closed, outline))
+            }
+        }
     }
 }
 

@@ -5,7 +5,11 @@ use std::ops::Range;
 
 use plotters::prelude::*;
 
-use super::legend::MarkerShape;
+use super::legend::{MarkerShape, MarkerStyle};
+
+/// How far beyond the data a limit line may lie and still widen the axis to show it: a
+/// fraction of the data's span (`Panel::limit_line`).
+pub(super) const LIMIT_REACH: f64 = 0.25;
 
 /// One named line: (x, y) points in data units.
 #[derive(Debug, Clone)]
@@ -18,11 +22,12 @@ pub(super) struct Line {
     pub(super) pattern: Option<(u32, u32)>,
 }
 
-/// A named set of points drawn as dots.
+/// A named set of points drawn as dots, or as markers of a style of their own.
 #[derive(Debug, Clone)]
 pub(super) struct Scatter {
     pub(super) name: String,
     pub(super) points: Vec<(f64, f64)>,
+    pub(super) style: Option<MarkerStyle>,
 }
 
 /// One named point drawn as a marker.
@@ -34,10 +39,12 @@ pub(super) struct Marker {
 }
 
 /// A horizontal reference line at `y`; lines of the same name share a style and an entry.
+/// A limit widens the axis only when it lies near the data; else a note names it.
 #[derive(Debug, Clone)]
 pub(super) struct ReferenceLine {
     pub(super) name: String,
     pub(super) y: f64,
+    pub(super) limit: bool,
 }
 
 /// A vertical reference line at `x`, labelled at the top of the axes.
@@ -77,6 +84,8 @@ pub struct Panel {
     pub(super) y_label: String,
     pub(super) lines: Vec<Line>,
     pub(super) scatter: Vec<Scatter>,
+    /// Legend entries for markers drawn by the styled scatter series (their key).
+    pub(super) keys: Vec<(String, MarkerStyle)>,
     pub(super) markers: Vec<Marker>,
     pub(super) histograms: Vec<Histogram>,
     pub(super) histogram_bins: usize,
@@ -87,6 +96,8 @@ pub struct Panel {
     pub(super) interval_name: String,
     pub(super) notes: Vec<String>,
     pub(super) integer_y: bool,
+    /// A bar chart's y axis is logarithmic (`Panel::log_y`).
+    pub(super) log_y: bool,
     pub(super) x_limits: Option<Range<f64>>,
     /// The legend is that of another panel of the figure: none is drawn here.
     pub(super) shared_legend: bool,
@@ -182,6 +193,19 @@ impl Panel {
         self.reference_lines.push(ReferenceLine {
             name: name.into(),
             y,
+            limit: false,
+        });
+        self
+    }
+
+    /// Adds a limit: a reference line at `y` drawn when it lies within [`LIMIT_REACH`] of
+    /// the data's span beyond the data, so that the axis spans the data; a limit farther
+    /// away is named in a note instead ("… above the axis"). Say its value in `name`.
+    pub fn limit_line(mut self, name: impl Into<String>, y: f64) -> Self {
+        self.reference_lines.push(ReferenceLine {
+            name: name.into(),
+            y,
+            limit: true,
         });
         self
     }
@@ -191,7 +215,31 @@ impl Panel {
         self.scatter.push(Scatter {
             name: name.into(),
             points,
+            style: None,
         });
+        self
+    }
+
+    /// Adds a series drawn as markers of `style`, in the order added (the last on top);
+    /// an empty `name` gives no legend entry (see [`Panel::legend_entry`]).
+    pub fn styled_scatter(
+        mut self,
+        name: impl Into<String>,
+        points: Vec<(f64, f64)>,
+        style: MarkerStyle,
+    ) -> Self {
+        self.scatter.push(Scatter {
+            name: name.into(),
+            points,
+            style: Some(style),
+        });
+        self
+    }
+
+    /// Adds a legend entry for a marker of `style` that names no series of its own: the
+    /// key to markers whose shape says one thing and colour another.
+    pub fn legend_entry(mut self, name: impl Into<String>, style: MarkerStyle) -> Self {
+        self.keys.push((name.into(), style));
         self
     }
 
@@ -242,6 +290,15 @@ impl Panel {
     /// Adds a group of bars with their intervals and labels.
     pub fn bar_group(mut self, group: BarGroup) -> Self {
         self.bars.push(group);
+        self
+    }
+
+    /// Draws a bar chart's y axis on a logarithmic scale, so that shares of 1 in 10 000
+    /// stand beside shares near 100 %: every bar rises from the axis' floor, the power of
+    /// ten below half the smallest positive value or interval end; a zero value draws no
+    /// bar, and an interval that reaches zero is thin and grey, without a lower cap.
+    pub fn log_y(mut self) -> Self {
+        self.log_y = true;
         self
     }
 
@@ -316,8 +373,10 @@ impl Panel {
         counts
     }
 
-    /// Data ranges, padded and never empty; a count axis starts at zero.
-    pub(super) fn ranges(&self) -> (Range<f64>, Range<f64>) {
+    /// What the axes must span, (x min, x max, y min, y max), infinite when nothing
+    /// finite is drawn: the data in the x window, the reference lines, the limits near
+    /// the data and the vertical lines.
+    fn extent(&self) -> (f64, f64, f64, f64) {
         let mut extra: Vec<(f64, f64)> = Vec::new();
         if let Some(bins) = self.bins() {
             let (start, width, count) = bins;
@@ -350,12 +409,29 @@ impl Panel {
             (x_min, x_max) = (x_min.min(x), x_max.max(x));
             (y_min, y_max) = (y_min.min(y), y_max.max(y));
         }
-        for line in self.reference_lines.iter().filter(|l| l.y.is_finite()) {
+        let lines = self.reference_lines.iter().filter(|l| l.y.is_finite());
+        for line in lines.clone().filter(|l| !l.limit) {
             (y_min, y_max) = (y_min.min(line.y), y_max.max(line.y));
+        }
+        // A limit near the data widens the axis to show it; a far one is left out.
+        let reach = LIMIT_REACH * (y_max - y_min);
+        let (data_min, data_max) = (y_min, y_max);
+        for line in lines.filter(|l| l.limit) {
+            if !(data_min.is_finite() && data_max.is_finite())
+                || (line.y >= data_min - reach && line.y <= data_max + reach)
+            {
+                (y_min, y_max) = (y_min.min(line.y), y_max.max(line.y));
+            }
         }
         for line in self.vertical_lines.iter().filter(|l| l.x.is_finite()) {
             (x_min, x_max) = (x_min.min(line.x), x_max.max(line.x));
         }
+        (x_min, x_max, y_min, y_max)
+    }
+
+    /// Data ranges, padded and never empty; a count axis starts at zero.
+    pub(super) fn ranges(&self) -> (Range<f64>, Range<f64>) {
+        let (x_min, x_max, y_min, y_max) = self.extent();
         let x_fraction =
             if self.scatter.is_empty() && self.vertical_lines.is_empty() && self.markers.is_empty()
             {

@@ -24,6 +24,11 @@ pub(super) const PALETTE: [RGBColor; 7] = [
     RGBColor(0, 0, 0),
 ];
 
+/// The palette's colour for the series at `index` (repeating).
+pub(crate) fn palette(index: usize) -> RGBColor {
+    PALETTE[index % PALETTE.len()]
+}
+
 /// Colours and dash patterns (dash, gap in px) of horizontal reference lines, in the
 /// order their names first appear: distinct from each other and from the data.
 pub(super) const REFERENCE_STYLES: [(RGBColor, (u32, u32)); 4] = [

@@ -140,6 +140,20 @@ impl AxisLabels {
     }
 }
 
+/// The label of a log axis' tick at the power of ten `exponent` (a whole number):
+/// "0.01", "1", "100".
+pub(crate) fn power_of_ten(exponent: f64) -> String {
+    if !exponent.is_finite() || exponent.abs() > 300.0 {
+        return String::new();
+    }
+    let decimals = if exponent < 0.0 {
+        -exponent as usize
+    } else {
+        0
+    };
+    format_tick(10_f64.powf(exponent), decimals)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -207,6 +221,14 @@ mod tests {
             AxisLabels::new(&(-400.0..400.0), X_LABELS, false).count,
             X_LABELS
         );
+    }
+
+    #[test]
+    fn a_log_axis_labels_powers_of_ten_as_decimals() {
+        assert_eq!(power_of_ten(-3.0), "0.001");
+        assert_eq!(power_of_ten(0.0), "1");
+        assert_eq!(power_of_ten(2.0), "100");
+        assert_eq!(power_of_ten(f64::NAN), "");
     }
 
     #[test]

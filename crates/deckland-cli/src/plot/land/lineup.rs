@@ -3,6 +3,8 @@
 //! Both are drawn only for a plant with lateral states (the 6-DOF aircraft); a 3-DOF
 //! approach has no lineup to show.
 
+use std::ops::Range;
+
 use deckland::experiments::ApproachRun;
 use deckland::scenario::Scenario;
 use deckland::simulation::lateral::touchdown::MAX_OFF_CENTRE_M;
@@ -79,6 +81,63 @@ pub(super) fn figures(
     ]
 }
 
+/// What the plan view draws, relative to the aim point at the moment that decided the
+/// outcome (y negated, drawn down the page).
+struct PlanLayers {
+    moment_s: f64,
+    track: Vec<(f64, f64)>,
+    centreline: Vec<(f64, f64)>,
+    landing_area: Vec<(f64, f64)>,
+    wires: Vec<(f64, f64)>,
+    ramp: (f64, f64),
+    touchdown: Option<(f64, f64)>,
+}
+
+impl PlanLayers {
+    /// One panel of the plan view over `window` along x. The flight deck is drawn in the
+    /// close-up only; the overview lists it (no points) so that both panels draw the same
+    /// series in the same colours under one legend.
+    fn panel(&self, heading: String, window: Range<f64>, deck_outline: Vec<(f64, f64)>) -> Panel {
+        let in_view = |points: &[(f64, f64)]| -> Vec<(f64, f64)> {
+            points
+                .iter()
+                .copied()
+                .filter(|(x, _)| *x >= window.start)
+                .collect()
+        };
+        let mut panel = Panel::new(
+            heading,
+            "earth x along the final bearing from the aim point (m)",
+            "earth y from the aim point (m, right of the bearing, down)",
+        )
+        .y_downward()
+        .x_limits(window.clone())
+        .series("hook", in_view(&self.track))
+        .styled_series(
+            "landing centreline abeam the hook, as it moved",
+            in_view(&self.centreline),
+            Some(DECK_COLOUR),
+            Some(CENTRELINE_DASH),
+        )
+        .coloured_series(
+            format!("landing area's centreline at t = {:.2} s", self.moment_s),
+            self.landing_area.clone(),
+            DECK_COLOUR,
+        )
+        .coloured_series(
+            "flight deck then, to scale (Nimitz, 333 × 77 m)",
+            deck_outline,
+            SHIP_COLOUR,
+        )
+        .scatter("wires 1–4 on the centreline", self.wires.clone())
+        .marker("ramp", self.ramp, MarkerShape::Triangle);
+        if let Some(point) = self.touchdown {
+            panel = panel.marker("touchdown", point, MarkerShape::Circle);
+        }
+        panel
+    }
+}
+
 /// The approach from above: the hook's track and the landing area's centreline abeam it
 /// as the deck moved, in earth axes with the origin at the aim point at the moment that
 /// decided the outcome (touchdown, or the end of the run); the angled landing area from
@@ -133,72 +192,40 @@ fn plan_view(run: &ApproachRun, scenario: &Scenario, title: &str) -> Figure {
         .and_then(|t| sample_at(samples, t.time_s))
         .and_then(hook)
         .map(relative);
-    // The flight deck is drawn in the close-up only; the overview lists it (no points) so
-    // that both panels draw the same series in the same colours under one legend.
-    let panel = |heading: String, from_m: f64, to_m: f64, deck_outline: Vec<(f64, f64)>| {
-        let in_view = |points: &[(f64, f64)]| -> Vec<(f64, f64)> {
-            points
-                .iter()
-                .copied()
-                .filter(|(x, _)| *x >= from_m)
-                .collect()
-        };
-        let mut panel = Panel::new(
-            heading,
-            "earth x along the final bearing from the aim point (m)",
-            "earth y from the aim point (m, right of the bearing, down)",
-        )
-        .y_downward()
-        .x_limits(from_m..to_m)
-        .series("hook", in_view(&track))
-        .styled_series(
-            "landing centreline abeam the hook, as it moved",
-            in_view(&centreline),
-            Some(DECK_COLOUR),
-            Some(CENTRELINE_DASH),
-        )
-        .coloured_series(
-            format!("landing area's centreline at t = {:.2} s", moment.time_s),
-            landing_area.clone(),
-            DECK_COLOUR,
-        )
-        .coloured_series(
-            "flight deck then, to scale (Nimitz, 333 × 77 m)",
-            deck_outline,
-            SHIP_COLOUR,
-        )
-        .scatter("wires 1–4 on the centreline", wires.clone())
-        .marker("ramp", ramp, MarkerShape::Triangle);
-        if let Some(point) = touchdown {
-            panel = panel.marker("touchdown", point, MarkerShape::Circle);
-        }
-        panel
+    let layers = PlanLayers {
+        moment_s: moment.time_s,
+        track,
+        centreline,
+        landing_area,
+        wires,
+        ramp,
+        touchdown,
     };
     Figure::new()
         .title(format!("Plan view — {title}"))
-        .panel(panel(
+        .panel(layers.panel(
             format!("The last {PLAN_VIEW_M:.0} m"),
-            -PLAN_VIEW_M,
-            forward_s + 10.0,
+            -PLAN_VIEW_M..(forward_s + 10.0),
             Vec::new(),
         ))
         .panel(
-            panel(
-                format!(
-                    "Over the deck, to scale: {CLOSE_UP_AFT_OF_RAMP_M:.0} m aft of the ramp to the bow (legend above)"
-                ),
-                ramp_s - CLOSE_UP_AFT_OF_RAMP_M,
-                bow_m + 10.0,
-                outline,
-            )
-            .equal_aspect()
-            .shared_legend(),
+            layers
+                .panel(
+                    format!(
+                        "Over the deck, to scale: {CLOSE_UP_AFT_OF_RAMP_M:.0} m aft of the ramp to the bow (legend above)"
+                    ),
+                    (ramp_s - CLOSE_UP_AFT_OF_RAMP_M)..(bow_m + 10.0),
+                    outline,
+                )
+                .equal_aspect()
+                .shared_legend(),
         )
         .panel_height(400)
 }
 
 /// The hook's lateral offset from the landing area's moving centreline over time, with
-/// the off-centre limit, and the bank (commanded and flown), heading and sideslip that
+/// the off-centre limit (or a note naming it, when it lies far beyond the offsets flown),
+/// and the bank (commanded and flown), heading and sideslip that
 /// correct it.
 fn cross_track(run: &ApproachRun, title: &str) -> Figure {
     let samples = &run.samples;
@@ -212,11 +239,11 @@ fn cross_track(run: &ApproachRun, title: &str) -> Figure {
         series(samples, SignalId::CrossTrack, Shown::AsRegistered),
     )
     .reference_line("on the centreline", 0.0)
-    .reference_line(
+    .limit_line(
         format!("off-centre limit ±{MAX_OFF_CENTRE_M} m"),
         MAX_OFF_CENTRE_M,
     )
-    .reference_line(
+    .limit_line(
         format!("off-centre limit ±{MAX_OFF_CENTRE_M} m"),
         -MAX_OFF_CENTRE_M,
     );
@@ -281,15 +308,54 @@ mod tests {
         (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
     }
 
+    /// The default approach (seed 1), flown once for the tests.
+    fn default_run() -> &'static (Scenario, ApproachRun) {
+        static RUN: std::sync::OnceLock<(Scenario, ApproachRun)> = std::sync::OnceLock::new();
+        RUN.get_or_init(|| {
+            let scenario = Scenario::default();
+            let run = fly_approach(&scenario).expect("flies");
+            (scenario, run)
+        })
+    }
+
+    /// Issue 46, 5: the cross-track figure's offset axis spans the offsets flown; the
+    /// off-centre limit, far beyond them, is named in a note rather than drawn (the default
+    /// approach stays within ±4 m of the centreline, the limit is ±6.1 m); and both panels'
+    /// legends stand in the column beside the axes, none inside the upper panel beside an
+    /// empty column.
+    #[test]
+    fn cross_track_spans_the_offsets_and_names_the_far_limit() {
+        use crate::plot::tests::{svg_text, text_x};
+        crate::plot::tests::register();
+        let (_, run) = default_run();
+        let offsets: Vec<f64> = series(&run.samples, SignalId::CrossTrack, Shown::AsRegistered)
+            .into_iter()
+            .map(|(_, y)| y)
+            .collect();
+        let (low, high) = offsets
+            .iter()
+            .fold((f64::MAX, f64::MIN), |(l, h), y| (l.min(*y), h.max(*y)));
+        let reach = crate::plot::panel::LIMIT_REACH * (high - low);
+        assert!(high + reach < MAX_OFF_CENTRE_M && low - reach > -MAX_OFF_CENTRE_M);
+        let svg = cross_track(run, "test").render_svg().expect("renders");
+        let text = svg_text(&svg);
+        let note = format!("off-centre limit ±{MAX_OFF_CENTRE_M} m: above and below the axis");
+        assert!(text.contains(&note), "{text}");
+        // No line in the limit's colour (the second reference line's).
+        let limit = crate::plot::tests::hex(crate::plot::style::REFERENCE_STYLES[1].0);
+        assert!(!svg.contains(&format!("stroke=\"{limit}\"")));
+        let (upper, lower) = (text_x(&svg, "hook offset"), text_x(&svg, "bank command"));
+        assert!(upper.is_some() && upper == lower, "{upper:?} {lower:?}");
+    }
+
     /// Issue 44's target: in the rendered plan view the ramp's marker stands on the
     /// flight deck's stern edge within a pixel, and the four wires' dots are on the deck,
     /// read back from the SVG's pixels (the default approach, seed 1, traps).
     #[test]
     fn the_ramp_and_the_wires_are_on_the_drawn_deck_within_a_pixel() {
         crate::plot::tests::register();
-        let scenario = Scenario::default();
-        let run = fly_approach(&scenario).expect("flies");
-        let svg = plan_view(&run, &scenario, "test")
+        let (scenario, run) = default_run();
+        let svg = plan_view(run, scenario, "test")
             .render_svg()
             .expect("renders");
         let grey = format!(
