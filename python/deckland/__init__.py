@@ -27,6 +27,8 @@ Units are SI and angles radians, except where a name says ``_deg``.
 from __future__ import annotations
 
 import os
+import sys
+import time
 from dataclasses import dataclass, field
 from typing import Any, Callable, Dict, Iterator, List, Optional, Union
 
@@ -181,12 +183,53 @@ def fly(
     return Flight(summary=summary, time_series=table(columns), events=events, acmi=replay)
 
 
+def progress_callback(
+    progress: Union[bool, Callable[[int, int], Any], None], label: str
+) -> Optional[Callable[[int, int], Any]]:
+    """The ``progress(done, total)`` callable of a ``progress`` argument: ``True`` gives
+    :class:`ProgressLines` on stderr, a callable itself, ``None`` or ``False`` none;
+    anything else raises ``TypeError``."""
+    if progress is None or progress is False:
+        return None
+    if progress is True:
+        return ProgressLines(label)
+    if callable(progress):
+        return progress
+    raise TypeError(
+        f"`progress` = {progress!r}: expected True, False, None or a callable progress(done, total)"
+    )
+
+
+class ProgressLines:
+    """Writes ``label: done/total runs (p %), t s`` to stderr at each tenth of the work,
+    the lines ``deckland campaign`` writes when stderr is not a terminal."""
+
+    def __init__(self, label: str) -> None:
+        self.label = label
+        self.tenth = 0
+        self.started = time.monotonic()
+
+    def __call__(self, done: int, total: int) -> None:
+        if total <= 0:
+            return
+        tenth = min(10, min(done, total) * 10 // total)
+        if tenth > self.tenth:
+            self.tenth = tenth
+            elapsed = time.monotonic() - self.started
+            print(
+                f"{self.label}: {done}/{total} runs ({tenth * 10} %), {elapsed:.0f} s",
+                file=sys.stderr,
+                flush=True,
+            )
+
+
 def campaign(
     scenario: Scenario,
     runs: int,
     seed: Optional[int] = None,
     threads: Optional[int] = None,
     compare: bool = False,
+    progress: Union[bool, Callable[[int, int], Any], None] = None,
 ) -> Campaign:
     """Flies ``runs`` approaches of ``scenario`` in parallel, as ``deckland campaign``.
 
@@ -202,8 +245,15 @@ def campaign(
     (lens pitch and roll, total motion, motion in 4 s; NaN for a run that never flew),
     summarised per controller as ``deck_within_limits_pct``. ``runs`` is 1 to :data:`MAX_RUNS` (100 000,
     as ``deckland campaign --runs``); beyond, ``ValueError``.
+    ``progress`` reports how far the campaign got: ``True`` writes a line to stderr at
+    each tenth of the runs (as ``deckland campaign`` does when stderr is not a terminal),
+    a callable is called as ``progress(done, total)`` with the runs flown (at most every
+    0.25 s and at the end; an exception it raises stops the campaign); ``None`` (the
+    default) or ``False``, nothing.
     """
-    columns, summary = _deckland.campaign(scenario, runs, seed, threads, compare)
+    columns, summary = _deckland.campaign(
+        scenario, runs, seed, threads, compare, progress_callback(progress, "campaign")
+    )
     return Campaign(runs=table(columns), summary=summary)
 
 

@@ -200,6 +200,7 @@ def campaign(
     seed: Optional[int] = None,
     threads: Optional[int] = None,
     compare: bool = False,
+    progress: Optional[Callable[[int, int], Any]] = None,
 ) -> Tuple[Dict[str, np.ndarray], Dict[str, Any]]: ...
 def rare(
     scenario: Scenario,

@@ -15,9 +15,9 @@ on every worker.
 
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import Any, Callable, Optional, Union
 
-from . import Campaign, Scenario, _deckland
+from . import Campaign, Scenario, _deckland, progress_callback
 from ._tables import table
 
 __all__ = ["campaign"]
@@ -45,6 +45,7 @@ def campaign(
     *,
     compare: bool = False,
     threads_per_shard: int = 1,
+    progress: Union[bool, Callable[[int, int], Any], None] = None,
 ) -> Campaign:
     """Flies ``runs`` approaches of ``scenario`` as shards on the cluster of ``client``.
 
@@ -58,6 +59,10 @@ def campaign(
     arguments, except the timing keys of the summary; ``summary["merged_from"]`` names
     the shards. Raises ``ValueError`` if a shard comes back partial (a worker stopped)
     or does not belong to the campaign.
+
+    ``progress`` is :func:`deckland.campaign`'s, counted as the shards come back:
+    ``True`` writes a line to stderr at each tenth of the runs, a callable is called as
+    ``progress(done, total)`` with the runs of the shards finished so far.
     """
     if not isinstance(runs, int) or isinstance(runs, bool) or not 1 <= runs <= _deckland.MAX_RUNS:
         raise ValueError(f"`runs` = {runs!r} is not allowed: expected a whole number in [1, {_deckland.MAX_RUNS}]")
@@ -77,6 +82,27 @@ def campaign(
         compare=compare,
         pure=False,
     )
+    report = progress_callback(progress, "dask campaign")
+    if report is not None:
+        _report_shards(futures, runs, shards, 2 if compare else 1, report)
     texts = client.gather(futures)
     columns, summary = _deckland.merge_shards_text(list(texts))
     return Campaign(runs=table(columns), summary=summary)
+
+
+def _report_shards(
+    futures: Any, runs: int, shards: int, controllers: int, report: Callable[[int, int], Any]
+) -> None:
+    """Calls ``report(done, total)`` as each shard's future completes, with the runs of
+    the finished shards (shard K of M flies the runs i < ``runs`` with i mod M = K)."""
+    from distributed import as_completed
+
+    index = {future.key: k for k, future in enumerate(futures)}
+    total = runs * controllers
+    done = 0
+    report(0, total)
+    for future in as_completed(futures):
+        k = index[future.key]
+        done += (runs - k + shards - 1) // shards * controllers
+        report(done, total)
+

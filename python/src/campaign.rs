@@ -12,7 +12,7 @@
 //! Dask cluster with them.
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::time::{Duration, Instant};
 
 use deckland::monte_carlo::{
@@ -121,9 +121,10 @@ pub(crate) fn whole(name: &str, value: i128, min: i128, max: u64) -> PyResult<u6
 
 /// Flies `runs` approaches of `scenario` (with its dispersions) in parallel; returns
 /// `(runs, summary)`: the rows of `runs.csv` as a dict of numpy arrays, and the summary
-/// as `summary.json`.
+/// as `summary.json`. `progress`, a callable, is called as `progress(done, total)` with
+/// the runs flown at most every 0.25 s and at the end.
 #[pyfunction]
-#[pyo3(signature = (scenario, runs, seed = None, threads = None, compare = false))]
+#[pyo3(signature = (scenario, runs, seed = None, threads = None, compare = false, progress = None))]
 pub fn campaign<'py>(
     py: Python<'py>,
     scenario: PyRef<'_, Scenario>,
@@ -131,7 +132,13 @@ pub fn campaign<'py>(
     seed: Option<&Bound<'_, PyAny>>,
     threads: Option<&Bound<'_, PyAny>>,
     compare: bool,
+    progress: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<(Bound<'py, PyDict>, Py<PyAny>)> {
+    if let Some(progress) = progress.filter(|p| !p.is_callable()) {
+        return Err(pyo3::exceptions::PyTypeError::new_err(format!(
+            "`progress` = {progress}: expected a callable progress(done, total) or None"
+        )));
+    }
     let runs = whole("runs", strict_integer("runs", runs)?, 1, MAX_RUNS)?;
     let seed = seed.map(|s| strict_integer("seed", s)).transpose()?;
     let threads = threads.map(|t| strict_integer("threads", t)).transpose()?;
@@ -150,7 +157,7 @@ pub fn campaign<'py>(
         spec = spec.comparing_pitch_controllers();
     }
     let started = Instant::now();
-    let result = fly(py, &spec, threads)?;
+    let result = fly(py, &spec, threads, progress)?;
     let elapsed_s = started.elapsed().as_secs_f64();
 
     let rows: Vec<RunRow> = result
@@ -185,22 +192,59 @@ fn lateral_rows(spec: &CampaignSpec, result: &CampaignResult) -> Option<Vec<Late
         .then(|| result.records.iter().map(LateralRow::of).collect())
 }
 
-/// Flies `spec` on `threads` workers with the GIL released; Ctrl-C stops the workers
-/// and raises `KeyboardInterrupt`.
-fn fly(py: Python<'_>, spec: &CampaignSpec, threads: usize) -> PyResult<CampaignResult> {
+/// How often a campaign calls its `progress` callback at most.
+const PROGRESS_INTERVAL: Duration = Duration::from_millis(250);
+
+/// Flies `spec` on `threads` workers with the GIL released; Ctrl-C, or an exception
+/// raised by `progress`, stops the workers and raises it. `progress(done, total)` is
+/// called with the runs flown and the runs to fly at most every 0.25 s and once at the
+/// end.
+fn fly(
+    py: Python<'_>,
+    spec: &CampaignSpec,
+    threads: usize,
+    progress: Option<&Bound<'_, PyAny>>,
+) -> PyResult<CampaignResult> {
     let stop = AtomicBool::new(false);
+    let done = AtomicU64::new(0);
+    let total = spec
+        .shard
+        .runs_of(spec.runs)
+        .saturating_mul(spec.controllers.len() as u64);
+    let progress = progress.map(|p| p.clone().unbind());
+    let count = |_: &RunRecord| {
+        done.fetch_add(1, Ordering::Relaxed);
+    };
     let mut interrupted: Option<PyErr> = None;
     let result = py.detach(|| {
         std::thread::scope(|scope| {
-            let worker = scope.spawn(|| run_campaign(spec, threads, &|_: &RunRecord| {}, &stop));
-            while !worker.is_finished() {
-                std::thread::sleep(Duration::from_millis(20));
+            let worker = scope.spawn(|| run_campaign(spec, threads, &count, &stop));
+            let mut reported = (Instant::now(), u64::MAX);
+            loop {
+                let finished = worker.is_finished();
                 if interrupted.is_none() {
-                    if let Err(error) = Python::attach(|py| py.check_signals()) {
+                    let now = done.load(Ordering::Relaxed);
+                    let due = finished || reported.0.elapsed() >= PROGRESS_INTERVAL;
+                    let call = progress.as_ref().filter(|_| due && now != reported.1);
+                    let checked = Python::attach(|py| {
+                        py.check_signals()?;
+                        if let Some(callback) = call {
+                            callback.call1(py, (now, total))?;
+                        }
+                        Ok::<(), PyErr>(())
+                    });
+                    if call.is_some() {
+                        reported = (Instant::now(), now);
+                    }
+                    if let Err(error) = checked {
                         stop.store(true, Ordering::Relaxed);
                         interrupted = Some(error);
                     }
                 }
+                if finished {
+                    break;
+                }
+                std::thread::sleep(Duration::from_millis(20));
             }
             worker.join()
         })
@@ -269,7 +313,7 @@ pub fn campaign_shard(
     }
     spec = spec.sharded(shard);
     let started = Instant::now();
-    let result = fly(py, &spec, threads)?;
+    let result = fly(py, &spec, threads, None)?;
     let elapsed_s = started.elapsed().as_secs_f64();
     let rows: Vec<RunRow> = result
         .records

@@ -134,3 +134,17 @@ def test_rare_event_bounds_match_scipy(cli, tmp_path):
     assert needed[0] == math.ceil(math.log(0.05) / math.log(1 - 1e-4))
     for events in (1, 2, 3):
         assert needed[events] == runs_needed(events), events
+
+
+def test_a_dask_campaign_reports_its_shards_as_they_come_back(client, capsys):
+    # The callable sees the runs of the finished shards, from 0 to all of them (2 × 5
+    # with --compare); True writes deckland campaign's lines to stderr.
+    scenario = deckland.Scenario.from_file(SCENARIOS / "heavy-sea.toml")
+    calls = []
+    deckland.dask.campaign(
+        client, scenario, 5, seed=1, shards=3, compare=True, progress=lambda d, t: calls.append((d, t))
+    )
+    assert calls[0] == (0, 10) and calls[-1] == (10, 10)
+    assert len(calls) == 4 and all(a[0] <= b[0] for a, b in zip(calls, calls[1:]))
+    deckland.dask.campaign(client, scenario, 5, seed=1, shards=2, progress=True)
+    assert "dask campaign: 5/5 runs (100 %)" in capsys.readouterr().err
