@@ -22,7 +22,6 @@ use super::merge_error::MergeError;
 use super::row::RunRow;
 use super::seeds::run_seed;
 use super::shard::Shard;
-use crate::aircraft::PlantModel;
 use crate::scenario::load_scenario;
 
 /// Most missing shards a message lists one by one.
@@ -266,10 +265,7 @@ fn check_columns_against_scenario(shard: &ShardRows) -> Result<(), MergeError> {
             format!(
                 "its scenario.toml (`aircraft.model` = \"{}\", \
                  `approach.three_dimensional` = {}) flies {flies}",
-                match scenario.aircraft.model {
-                    PlantModel::ThreeDof => "3dof",
-                    PlantModel::SixDof => "6dof",
-                },
+                scenario.aircraft.model.name(),
                 scenario.approach.three_dimensional
             ),
         ));
