@@ -254,16 +254,21 @@ pub fn lateral_touchdown(record: &RunRecord) -> Option<LateralTouchdown> {
     record.result.as_ref().ok()?.touchdown?.lateral
 }
 
-/// The values of [`LATERAL_RUN_COLUMNS`] for `record`.
+/// The values of [`LATERAL_RUN_COLUMNS`] for `record`: all empty where it did not
+/// touch down on the 3-D approach.
 pub fn lateral_run_values(record: &RunRecord) -> LateralRunValues {
-    let lateral = lateral_touchdown(record);
+    lateral_touchdown(record).map_or((None, None, None, None, None, None), touchdown_values)
+}
+
+/// The values of [`LATERAL_RUN_COLUMNS`] of a lateral touchdown.
+fn touchdown_values(l: LateralTouchdown) -> LateralRunValues {
     (
-        lateral.map(|l| l.offset_m),
-        lateral.map(|l| l.drift_rate_mps),
-        lateral.map(|l| l.bank_deg),
-        lateral.map(|l| l.heading_to_centreline_deg),
-        lateral.and_then(|l| l.ramp_lineup_error_deg),
-        lateral.map(|l| l.off_centre),
+        Some(l.offset_m),
+        Some(l.drift_rate_mps),
+        Some(l.bank_deg),
+        Some(l.heading_to_centreline_deg),
+        l.ramp_lineup_error_deg,
+        Some(l.off_centre),
     )
 }
 
