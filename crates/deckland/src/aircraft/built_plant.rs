@@ -83,3 +83,24 @@ impl BuiltPlant {
         }
     }
 }
+
+/// Work done with the plant a loop flies, generic over the plant: through
+/// [`BuiltPlant::with`], the registry's one dispatch from a built plant to the work's
+/// monomorphic instantiation for it (no dynamic dispatch in the hot path).
+pub trait WithPlant {
+    /// What the work gives.
+    type Output;
+    /// Does the work with `plant`.
+    fn with<P: Plant>(self, plant: &P) -> Self::Output;
+}
+
+impl BuiltPlant {
+    /// Does `work` with the plant, whichever it is.
+    #[inline(always)]
+    pub fn with<W: WithPlant>(&self, work: W) -> W::Output {
+        match self {
+            Self::ThreeDof(plant) => work.with(plant),
+            Self::SixDof(plant) => work.with(plant),
+        }
+    }
+}

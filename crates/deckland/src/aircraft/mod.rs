@@ -33,7 +33,7 @@ pub use aerodynamics::{
     aerodynamic_coefficients, aerodynamic_coefficients_trig, AerodynamicCoefficients,
     ALPHA_MAX_RAD, ALPHA_MIN_RAD,
 };
-pub use built_plant::BuiltPlant;
+pub use built_plant::{BuiltPlant, WithPlant};
 pub use configuration::{AerodynamicConfiguration, ConfigurationName};
 pub use dynamics::{AirData, Aircraft, AircraftCommands, AirframeInputs, OpenLoopAircraft};
 pub use engine::{EngineParameters, Engines};

@@ -20,8 +20,9 @@ use super::outer_loop_signals::{OuterLoopInputs, OuterLoopOutputs};
 use super::outer_loops::OuterLoops;
 use super::signals::Signals;
 use super::taps::{LoopBreak, NoTaps, Taps};
-use crate::aircraft::six_dof::SixDofAircraft;
-use crate::aircraft::{Aircraft, AircraftState, ElevatorActuator, HookGeometry, Plant, TrimPoint};
+use crate::aircraft::{
+    Aircraft, AircraftState, ElevatorActuator, HookGeometry, Plant, TrimPoint, WithPlant,
+};
 use crate::control::pitch::{AxisLaw, BuiltPitchLaw, ElevatorSaturation, PitchLawInputs};
 use crate::control::{DirectLiftParameters, SpeedController, WaveOffParameters};
 use crate::environment::{
@@ -68,6 +69,42 @@ pub struct ClosedLoop {
     pub(crate) lateral: Option<LateralLoop>,
     /// The arrival-timing block, when on (docs/landing-design.md).
     pub(crate) arrival_timing: Option<ArrivalTimingBlock>,
+}
+
+/// One evaluation of the loop, as work with its plant ([`WithPlant`]): the blocks'
+/// instantiation for the plant, with or without users' blocks and the 3-D approach's.
+struct Evaluation<'a, T> {
+    system: &'a ClosedLoop,
+    t: f64,
+    x: &'a [f64],
+    held: &'a HeldInputs,
+    taps: &'a T,
+    rate: &'a mut [f64],
+}
+
+impl<T: Taps> WithPlant for Evaluation<'_, T> {
+    type Output = Signals;
+
+    #[inline(always)]
+    fn with<P: Plant>(self, plant: &P) -> Signals {
+        let Self {
+            system,
+            t,
+            x,
+            held,
+            taps,
+            rate,
+        } = self;
+        match (system.user_blocks.is_empty(), system.lateral.is_some()) {
+            (true, false) => {
+                system.evaluate_blocks::<T, P, false, false>(plant, t, x, held, taps, rate)
+            }
+            (true, true) => {
+                system.evaluate_blocks::<T, P, false, true>(plant, t, x, held, taps, rate)
+            }
+            (false, _) => system.evaluate_blocks::<T, P, true, true>(plant, t, x, held, taps, rate),
+        }
+    }
 }
 
 impl Reseed for ClosedLoop {
@@ -166,31 +203,14 @@ impl ClosedLoop {
         // function (no cost over a loop written by hand): the RK4 stages, which drop it,
         // neither clear it nor compute what only it carries. Users' blocks and the 3-D
         // approach's lateral blocks are passed it. Each plant has its own instantiations.
-        match (
-            &self.plant,
-            self.user_blocks.is_empty(),
-            self.lateral.is_some(),
-        ) {
-            (BuiltPlant::ThreeDof(aircraft), true, false) => {
-                self.evaluate_blocks::<T, Aircraft, false, false>(aircraft, t, x, held, taps, rate)
-            }
-            (BuiltPlant::ThreeDof(aircraft), true, true) => {
-                self.evaluate_blocks::<T, Aircraft, false, true>(aircraft, t, x, held, taps, rate)
-            }
-            (BuiltPlant::ThreeDof(aircraft), false, _) => {
-                self.evaluate_blocks::<T, Aircraft, true, true>(aircraft, t, x, held, taps, rate)
-            }
-            (BuiltPlant::SixDof(aircraft), true, false) => self
-                .evaluate_blocks::<T, SixDofAircraft, false, false>(
-                    aircraft, t, x, held, taps, rate,
-                ),
-            (BuiltPlant::SixDof(aircraft), true, true) => self
-                .evaluate_blocks::<T, SixDofAircraft, false, true>(
-                    aircraft, t, x, held, taps, rate,
-                ),
-            (BuiltPlant::SixDof(aircraft), false, _) => self
-                .evaluate_blocks::<T, SixDofAircraft, true, true>(aircraft, t, x, held, taps, rate),
-        }
+        self.plant.with(Evaluation {
+            system: self,
+            t,
+            x,
+            held,
+            taps,
+            rate,
+        })
     }
 
     /// The signals at (`t`, `x`) with the inputs `held` and no taps, for an observation
