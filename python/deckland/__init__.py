@@ -240,10 +240,15 @@ def campaign(
     (``aircraft.model = "6dof"``, ``approach.three_dimensional``) adds, as the CLI does,
     the lateral touchdown and the trap sheet's columns after the others (``off_centre``
     1 or 0, NaN where the run did not touch down) and their statistics under the
-    summary's ``lateral`` and ``trap_sheet``. The last column, ``deck_within_limits_pct``,
+    summary's ``lateral`` and ``trap_sheet``. The column ``deck_within_limits_pct``
     is the share of each run's time (%) with the true deck within every recovery limit
     (lens pitch and roll, total motion, motion in 4 s; NaN for a run that never flew),
-    summarised per controller as ``deck_within_limits_pct``. ``runs`` is 1 to :data:`MAX_RUNS` (100 000,
+    summarised per controller as ``deck_within_limits_pct``. The last three,
+    ``commit_ramp_strike_probability``, ``commit_hard_landing_probability`` and
+    ``commit_off_centre_probability``, are the probabilities the forecast gave at the
+    commit point (NaN for a run that never reached it, the off-centre one for a 3-DOF
+    approach too), held against the outcomes per controller as ``calibration``.
+    ``runs`` is 1 to :data:`MAX_RUNS` (100 000,
     as ``deckland campaign --runs``); beyond, ``ValueError``.
     ``progress`` reports how far the campaign got: ``True`` writes a line to stderr at
     each tenth of the runs (as ``deckland campaign`` does when stderr is not a terminal),

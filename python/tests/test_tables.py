@@ -34,10 +34,9 @@ def test_campaign_columns_have_the_types_of_their_values():
     # pandas.read_csv reads an empty column of runs.csv.
     reasons = runs["reason"]
     assert reasons.dtype == object or np.all(np.isnan(reasons))
-    # The share of each run's time with the deck within the recovery limits: the last
-    # column, a number in [0, 100] for every flown run, and its mean and least in the
-    # summary.
-    assert list(runs)[-1] == "deck_within_limits_pct"
+    # The share of each run's time with the deck within the recovery limits: a number in
+    # [0, 100] for every flown run, and its mean and least in the summary.
+    assert list(runs)[-4] == "deck_within_limits_pct"
     deck = runs["deck_within_limits_pct"]
     flown = deck[~np.isnan(deck)]
     assert deck.dtype == np.float64 and len(flown) >= 1
@@ -46,3 +45,24 @@ def test_campaign_columns_have_the_types_of_their_values():
     assert shares["count"] == len(flown)
     assert abs(shares["mean"] - float(np.mean(flown))) < 1e-9
     assert shares["min"] == float(np.min(flown))
+    # The probabilities the forecast gave at the commit point: the last three columns, in
+    # [0, 1] (NaN for a run that never reached it), summed and counted per criterion in
+    # the summary's calibration.
+    names = ["commit_ramp_strike_probability", "commit_hard_landing_probability",
+             "commit_off_centre_probability"]
+    assert list(runs)[-3:] == names
+    calibration = result.statistics[0]["calibration"]
+    ramp = runs["commit_ramp_strike_probability"]
+    reached = ramp[~np.isnan(ramp)]
+    assert calibration["runs_at_commit"] == len(reached)
+    for name, key, outcome in [
+        (names[0], "ramp_strike", "ramp_strike"),
+        (names[1], "hard_landing", "hard_landing"),
+    ]:
+        p = runs[name][~np.isnan(ramp)]
+        assert np.all((p >= 0.0) & (p <= 1.0))
+        if len(reached) > 0:
+            criterion = calibration[key]
+            assert abs(criterion["expected_events"] - float(np.sum(p))) < 1e-12
+            observed = sum(1 for o, r in zip(runs["outcome"], ramp) if o == outcome and r == r)
+            assert criterion["observed_events"] == observed

@@ -16,7 +16,9 @@
 //! ([`LATERAL_RUN_COLUMNS`], then the trap sheet's [`TRAP_SHEET_RUN_COLUMNS`]): optional
 //! doubles, and `off_centre` an optional boolean. The columns appended last
 //! ([`LSO_RUN_COLUMNS`]: `lso_grade`, `lso_points`, `lso_comment`, `wave_off_criterion`,
-//! `deck_within_limits_pct`) come last, after the lateral ones, as in `runs.csv`.
+//! `deck_within_limits_pct` and the commit point's `commit_ramp_strike_probability`,
+//! `commit_hard_landing_probability`, `commit_off_centre_probability`, optional doubles)
+//! come last, after the lateral ones, as in `runs.csv`.
 //!
 //! One row group, Snappy compression (pandas' default). A value that is not finite is
 //! refused, naming its run and column: nothing non-finite reaches a file.

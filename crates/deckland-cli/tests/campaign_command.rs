@@ -45,10 +45,13 @@ fn one_and_two_threads_write_byte_identical_runs_csv() {
         assert_eq!(summary["finished_runs"], 20);
         // A 3-DOF campaign has neither lateral nor trap-sheet columns or statistics.
         let text = String::from_utf8(csv[csv.len() - 1].clone()).unwrap();
-        // (The LSO's grade, the wave-off's criterion and the deck's share within the
-        // recovery limits, the last columns, follow `reason` directly.)
+        // (The LSO's grade, the wave-off's criterion, the deck's share within the
+        // recovery limits and the commit point's probabilities, the last columns, follow
+        // `reason` directly.)
         assert!(text.lines().next().unwrap().ends_with(
-            ",reason,lso_grade,lso_points,lso_comment,wave_off_criterion,deck_within_limits_pct"
+            ",reason,lso_grade,lso_points,lso_comment,wave_off_criterion,deck_within_limits_pct,\
+             commit_ramp_strike_probability,commit_hard_landing_probability,\
+             commit_off_centre_probability"
         ));
         assert!(summary.get("trap_sheet").is_none() && summary.get("lateral").is_none());
         let opd = &summary["controllers"][0];
@@ -480,8 +483,10 @@ fn a_three_d_campaign_adds_the_lateral_columns_and_the_touchdown_plan() {
 
 /// Issue 44, items 2 and 3: a campaign of the default scenario grades every pass in
 /// `runs.csv` (the LSO's three columns near the end) and prints the greenie board; issue
-/// 42, item 5: the last column is each run's share of time with the deck within the
-/// recovery limits, whose mean and least the summary and the terminal give.
+/// 42, item 5: a column near the end is each run's share of time with the deck within
+/// the recovery limits, whose mean and least the summary and the terminal give; issue
+/// 45, item 1: the last three the probabilities the forecast gave at the commit point,
+/// which the summary, the terminal and the page hold against the outcomes.
 #[test]
 fn a_default_campaign_grades_every_pass_and_prints_the_greenie_board() {
     let dir = scratch("campaign-greenie");
@@ -522,30 +527,34 @@ fn a_default_campaign_grades_every_pass_and_prints_the_greenie_board() {
     let header: Vec<String> = reader.headers().unwrap().iter().map(String::from).collect();
     let n = header.len();
     assert_eq!(
-        header[n - 5..],
+        header[n - 8..],
         [
             "lso_grade",
             "lso_points",
             "lso_comment",
             "wave_off_criterion",
-            "deck_within_limits_pct"
+            "deck_within_limits_pct",
+            "commit_ramp_strike_probability",
+            "commit_hard_landing_probability",
+            "commit_off_centre_probability"
         ],
         "{header:?}"
     );
     let grades = ["ok", "fair", "bolter", "no_grade", "own_wave_off", "cut"];
     let mut rows = 0;
     let mut deck_shares = Vec::new();
+    let mut records = Vec::new();
     for record in reader.records() {
         let record = record.unwrap();
         rows += 1;
-        assert!(grades.contains(&&record[n - 5]), "{record:?}");
-        let points: f64 = record[n - 4].parse().unwrap();
+        assert!(grades.contains(&&record[n - 8]), "{record:?}");
+        let points: f64 = record[n - 7].parse().unwrap();
         assert!((0.0..=4.0).contains(&points), "{record:?}");
-        let share: f64 = record[n - 1].parse().unwrap();
+        let share: f64 = record[n - 4].parse().unwrap();
         assert!((0.0..=100.0).contains(&share), "{record:?}");
         deck_shares.push(share);
         // The wave-off's criterion: the name the reason gives, else empty.
-        let criterion = &record[n - 2];
+        let criterion = &record[n - 5];
         let reason = &record[header.iter().position(|h| h == "reason").unwrap()];
         assert_eq!(
             criterion.is_empty(),
@@ -553,6 +562,7 @@ fn a_default_campaign_grades_every_pass_and_prints_the_greenie_board() {
             "{record:?}"
         );
         assert!(criterion.is_empty() || reason.contains(&format!(" on {criterion}:")));
+        records.push(record);
     }
     assert_eq!(rows, 6);
     let summary: Value =
@@ -578,5 +588,100 @@ fn a_default_campaign_grades_every_pass_and_prints_the_greenie_board() {
     let chart_at = report.find("<figure>").expect("the outcome chart");
     assert!(board_at < chart_at, "the board is above the outcome chart");
     assert!(report.contains("background:#3c9a3c"), "OK in green");
+    check_calibration(&header, &records, &summary["controllers"][0], &printed);
+    assert!(
+        report.contains("Calibration at the commit point"),
+        "no calibration section"
+    );
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 45, item 1: the commit point's probabilities of the rows of a 3-D campaign
+/// (`records`, with their `header`) in [0, 1], the ramp strike's, the hard landing's and
+/// the off-centre one together or none; the controller's `calibration` in `summary.json`
+/// counts the rows that have them, sums their probabilities and counts their outcomes,
+/// and the terminal (`printed`) gives each criterion's line.
+fn check_calibration(
+    header: &[String],
+    records: &[csv::StringRecord],
+    statistics: &Value,
+    printed: &str,
+) {
+    let column = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let (outcome, off_centre) = (column("outcome"), column("off_centre"));
+    let n = header.len();
+    let mut sums = [0.0; 3];
+    let mut events = [0_u64; 3];
+    let mut reached = 0;
+    for record in records {
+        let p: Vec<Option<f64>> = (n - 3..n).map(|i| record[i].parse().ok()).collect();
+        let reached_it = p[0].is_some();
+        assert!(p.iter().all(|q| q.is_some() == reached_it), "{record:?}");
+        if !reached_it {
+            continue;
+        }
+        reached += 1;
+        let happened = [
+            &record[outcome] == "ramp_strike",
+            &record[outcome] == "hard_landing",
+            &record[off_centre] == "true",
+        ];
+        for k in 0..3 {
+            let p = p[k].unwrap();
+            assert!((0.0..=1.0).contains(&p), "{record:?}");
+            sums[k] += p;
+            events[k] += u64::from(happened[k]);
+        }
+    }
+    let calibration = &statistics["calibration"];
+    assert_eq!(calibration["runs_at_commit"], reached, "{calibration}");
+    assert!(reached > 0, "no run reached the commit point");
+    for (k, key) in ["ramp_strike", "hard_landing", "off_centre"]
+        .iter()
+        .enumerate()
+    {
+        let criterion = &calibration[key];
+        assert_eq!(criterion["runs"], reached, "{criterion}");
+        let expected = criterion["expected_events"].as_f64().unwrap();
+        assert!(
+            (expected - sums[k]).abs() <= 1e-12 * (1.0 + sums[k]),
+            "{criterion}"
+        );
+        assert_eq!(criterion["observed_events"], events[k], "{criterion}");
+        let (low, high) = (
+            &criterion["interval_95"]["low"],
+            &criterion["interval_95"]["high"],
+        );
+        let within = (low.as_u64().unwrap()..=high.as_u64().unwrap()).contains(&events[k]);
+        assert_eq!(criterion["calibrated"], within, "{criterion}");
+        assert_eq!(
+            criterion["bins"].as_array().unwrap().len(),
+            7,
+            "{criterion}"
+        );
+    }
+    // The terminal's line of each criterion, its expected count as the CLI writes it
+    // (one decimal from 0.1, else in powers of ten).
+    for (key, name) in [
+        ("ramp_strike", "ramp strike"),
+        ("hard_landing", "hard landing"),
+        ("off_centre", "off-centre touchdown"),
+    ] {
+        let criterion = &calibration[key];
+        let expected = criterion["expected_events"].as_f64().unwrap();
+        let expected = if expected == 0.0 {
+            "0".to_owned()
+        } else if expected >= 0.095 {
+            format!("{expected:.1}")
+        } else {
+            format!("{expected:.1e}")
+        };
+        let line = format!(
+            "{name}: predicted {expected} (95 %: {}–{}), observed {}",
+            criterion["interval_95"]["low"],
+            criterion["interval_95"]["high"],
+            criterion["observed_events"]
+        );
+        assert!(printed.contains(&line), "no `{line}` in:\n{printed}");
+    }
 }

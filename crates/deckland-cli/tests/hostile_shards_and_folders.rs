@@ -256,12 +256,12 @@ fn regression_d8_rows_no_campaign_writes_are_refused_by_file_row_and_column() {
                     .collect();
                 fs::write(&path, text).unwrap();
             },
-            // The last column, the deck's share within the recovery limits since issue
-            // 42 (item 5): a shard of the deckland before it.
+            // The last column, the off-centre probability at the commit point since
+            // issue 45 (item 1): a shard of the deckland before it.
             &[
                 "runs.csv",
                 "line 1",
-                "`deck_within_limits_pct` is missing",
+                "`commit_off_centre_probability` is missing",
                 "fly it again with this version",
             ],
         ),
@@ -290,8 +290,8 @@ fn regression_d8_rows_no_campaign_writes_are_refused_by_file_row_and_column() {
             |s| {
                 let path = s.join("runs.csv");
                 let text = fs::read_to_string(&path).unwrap();
-                // The first row without its last field (since issue 42, item 5, a flown
-                // run's last field is a number, not an empty one).
+                // The first row without its last field (whether a number or, as the
+                // off-centre probability of a 3-DOF run since issue 45, item 1, empty).
                 let (header, rows) = text.split_once('\n').unwrap();
                 let (first, rest) = rows.split_once('\n').unwrap();
                 let first = first.rsplit_once(',').unwrap().0;

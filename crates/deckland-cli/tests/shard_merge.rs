@@ -426,12 +426,14 @@ fn runs_parquet_holds_the_rows_of_runs_csv() {
         header.contains(",off_centre,trap_x_glide_slope_mean_m,"),
         "{header}"
     );
-    // The LSO's grade, the wave-off's criterion and the deck's share within the
-    // recovery limits last, after the lateral and trap-sheet columns.
+    // The LSO's grade, the wave-off's criterion, the deck's share within the recovery
+    // limits and the commit point's probabilities last, after the lateral and trap-sheet
+    // columns.
     assert!(
         header.ends_with(
             ",trap_ar_lineup_peak_deg,lso_grade,lso_points,lso_comment,wave_off_criterion,\
-             deck_within_limits_pct"
+             deck_within_limits_pct,commit_ramp_strike_probability,\
+             commit_hard_landing_probability,commit_off_centre_probability"
         ),
         "{header}"
     );

@@ -55,6 +55,12 @@ fn regression_rows_no_campaign_writes_are_refused_by_row_and_column() {
         .position(|r| r.outcome != "trap")
         .expect("another outcome in the fixture")
         + 1;
+    let committed = shards[0]
+        .rows
+        .iter()
+        .position(|r| r.commit_ramp_strike_probability.is_some())
+        .expect("a run of the fixture that reached the commit point")
+        + 1;
     // (row, column, new value, the column the error names)
     let cases: &[(usize, &str, &str, &str)] = &[
         (trap, "outcome", "crash", "outcome"),
@@ -105,6 +111,38 @@ fn regression_rows_no_campaign_writes_are_refused_by_row_and_column() {
             "deck_within_limits_pct",
         ),
         (trap, "deck_within_limits_pct", "", "deck_within_limits_pct"),
+        // The commit point's probabilities (issue 45, item 1): within [0, 1], finite,
+        // the ramp strike's and the hard landing's both or neither.
+        (
+            committed,
+            "commit_ramp_strike_probability",
+            "1.5",
+            "commit_ramp_strike_probability",
+        ),
+        (
+            committed,
+            "commit_hard_landing_probability",
+            "-1e-3",
+            "commit_hard_landing_probability",
+        ),
+        (
+            committed,
+            "commit_ramp_strike_probability",
+            "NaN",
+            "commit_ramp_strike_probability",
+        ),
+        (
+            committed,
+            "commit_hard_landing_probability",
+            "",
+            "commit_hard_landing_probability",
+        ),
+        (
+            committed,
+            "commit_off_centre_probability",
+            "inf",
+            "commit_off_centre_probability",
+        ),
         (trap, "sea_state_scale", "0", "sea_state_scale"),
         (trap, "reason", "edited", "reason"),
         (not_trap, "reason", "", "reason"),
@@ -123,6 +161,30 @@ fn regression_rows_no_campaign_writes_are_refused_by_row_and_column() {
             assert_eq!(found, row as u64, "{message}");
         }
     }
+    // An off-centre probability without the commit point's others; probabilities for a
+    // run that never flew.
+    const BOTH: [&str; 2] = [
+        "commit_ramp_strike_probability",
+        "commit_hard_landing_probability",
+    ];
+    let set_both = |row: usize, value: &str| {
+        BOTH.iter()
+            .fold(text.clone(), |t, column| edit_csv(&t, row, column, value))
+    };
+    let edited = set_both(committed, "");
+    let edited = edit_csv(&edited, committed, "commit_off_centre_probability", "0.5");
+    let error = parse_runs_csv("s0/runs.csv", &edited)
+        .unwrap_err()
+        .to_string();
+    assert!(error.contains("`commit_off_centre_probability`"), "{error}");
+    if let Some(never) = shards[0].rows.iter().position(|r| !r.flown()) {
+        let error = parse_runs_csv("s0/runs.csv", &set_both(never + 1, "0.1")).unwrap_err();
+        let error = error.to_string();
+        assert!(
+            error.contains("`commit_ramp_strike_probability`"),
+            "{error}"
+        );
+    }
     // Numbers a field's type cannot hold, named by column and line.
     for (column, value) in [("wire", "300"), ("run_index", "-1"), ("seed", "x")] {
         let error = parse_runs_csv("r", &edit_csv(&text, trap, column, value)).unwrap_err();
@@ -140,17 +202,17 @@ fn regression_rows_no_campaign_writes_are_refused_by_row_and_column() {
 fn regression_runs_csv_text_must_be_a_whole_campaign_table() {
     let shards = flown_shards();
     let text = rows_csv(&shards[0].rows);
-    // A column removed (from the header and every row): the last, the deck's share
-    // within the recovery limits (a shard of the deckland before it).
-    let without_deck_share: String = text
+    // A column removed (from the header and every row): the last, the off-centre
+    // probability at the commit point (since issue 45, item 1).
+    let without_off_centre: String = text
         .lines()
         .map(|line| line.rsplit_once(',').unwrap().0.to_owned() + "\n")
         .collect();
-    let error = parse_runs_csv("r", &without_deck_share).unwrap_err();
+    let error = parse_runs_csv("r", &without_off_centre).unwrap_err();
     assert!(
         error
             .to_string()
-            .contains("`deck_within_limits_pct` is missing"),
+            .contains("`commit_off_centre_probability` is missing"),
         "{error}"
     );
     let error = parse_runs_csv("r", &text.replacen("wire,", "wires,", 1)).unwrap_err();

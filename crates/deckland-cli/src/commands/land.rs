@@ -257,7 +257,24 @@ pub(crate) fn summary_rows(report: &LandingReport) -> Vec<Vec<String>> {
             "% of the time",
         ),
     ]);
+    if let Some(text) = commit_forecast_text(s) {
+        rows.push(row("forecast at the commit point", text, ""));
+    }
     rows
+}
+
+/// What the forecast gave at the commit point (`RunSummary::commit_forecast`), in words:
+/// "P(ramp strike) 2.7e-2, P(hard landing) 2.3e-4, P(off centre) 3.3e-38"; `None` for a
+/// run that never reached it.
+fn commit_forecast_text(s: &deckland::simulation::RunSummary) -> Option<String> {
+    let c = s.commit_forecast?;
+    let off_centre = c
+        .off_centre_probability
+        .map_or_else(String::new, |p| format!(", P(off centre) {p:.1e}"));
+    Some(format!(
+        "P(ramp strike) {:.1e}, P(hard landing) {:.1e}{off_centre}",
+        c.ramp_strike_probability, c.hard_landing_probability
+    ))
 }
 
 /// The actuator block of `report.html`, as the terminal prints it.
@@ -428,6 +445,9 @@ fn print_summary(report: &LandingReport, output: &OutputDir) -> Result<()> {
         "  deck                  within the recovery limits {:.1} % of the time",
         s.deck_within_recovery_limits_pct
     )?;
+    if let Some(text) = commit_forecast_text(s) {
+        outln!("  commit point          forecast {text}")?;
+    }
     outln!("  results in            {}", output.path().display())?;
     Ok(())
 }

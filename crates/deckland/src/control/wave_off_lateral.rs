@@ -51,6 +51,15 @@ pub fn off_centre_probability(predicted_m: f64, sigma_m: f64, limit_m: f64) -> f
 }
 
 impl LateralWaveOffLimits {
+    /// The probability of an off-centre touchdown (module docs) for a lineup error
+    /// predicted to be `predicted_error_m` at touchdown, the deck's unforeseen motion
+    /// adding σ `forecast_sigma_m`: σ = hypot(σ_f, σ_h) beyond [`MAX_OFF_CENTRE_M`]
+    /// either side; what the off-centre criterion compares with its limit.
+    pub fn probability(&self, predicted_error_m: f64, forecast_sigma_m: f64) -> f64 {
+        let sigma = forecast_sigma_m.hypot(self.lineup_scatter_m);
+        off_centre_probability(predicted_error_m, sigma, MAX_OFF_CENTRE_M)
+    }
+
     /// The decision at `time_to_go_s` for a hook whose lineup error is predicted to be
     /// `predicted_error_m` at touchdown (right of the forecast centreline), the deck's
     /// unforeseen motion adding σ `forecast_sigma_m` by then, and which drifts across
@@ -69,8 +78,7 @@ impl LateralWaveOffLimits {
         if !window.in_window(time_to_go_s) {
             return None;
         }
-        let sigma = forecast_sigma_m.hypot(self.lineup_scatter_m);
-        let probability = off_centre_probability(predicted_error_m, sigma, MAX_OFF_CENTRE_M);
+        let probability = self.probability(predicted_error_m, forecast_sigma_m);
         let checks = [
             (
                 WaveOffCriterion::OffCentreProbability,

@@ -90,6 +90,7 @@ mod tests {
             glide_path_error_max_m: None,
             actuator: Default::default(),
             deck_within_recovery_limits_pct: 100.0,
+            commit_forecast: None,
             trap_sheet: None,
             lso_grade: None,
         }

@@ -29,10 +29,15 @@
 //!   [`TRAP_SHEET_RUN_COLUMNS`]) after the columns of every campaign; their statistics
 //!   ([`LateralStatistics`], [`TrapSheetStatistics`]) are computed from those columns, so
 //!   merged shards have them too.
+//! - Calibration ([`Calibration`]): the probabilities the forecast gave at each run's
+//!   commit point (the `commit_*_probability` columns) against what the runs did, per
+//!   criterion and controller, with the count's Poisson-binomial interval and reliability
+//!   bins.
 //! - Failures are data (after nyx): a run that diverges, times out or whose dispersed
 //!   scenario is invalid is a record with its reason, never an abort. A stop flag ends a
 //!   campaign early with the runs that finished ([`CampaignResult::partial`]).
 
+mod calibration;
 mod campaign;
 mod greenie_board;
 mod lateral;
@@ -50,6 +55,11 @@ mod statistics;
 mod summary;
 mod trap_sheet;
 
+pub use calibration::{
+    clopper_pearson_interval, count_interval, poisson_binomial, reliability_bins, Calibration,
+    CountInterval, CriterionCalibration, IntervalMethod, ReliabilityBin, CALIBRATION_BIN_EDGES,
+    CALIBRATION_METHOD, EXACT_COUNT_LIMIT, NORMAL_VARIANCE,
+};
 pub use campaign::{
     controller_label, run_campaign, CampaignError, CampaignResult, CampaignSpec, ControllerVariant,
     SharedPitchLaw,

@@ -13,7 +13,9 @@
 //!   `invalid` and `panicked`) has its end time, actuator activity and share of time
 //!   with the deck within the recovery limits, a setup that failed has none of them; a trap or a hard landing has its touchdown (all four
 //!   touchdown fields or none); a ramp strike has a negative ramp clearance; every
-//!   outcome but a trap has its reason, a trap none;
+//!   outcome but a trap has its reason, a trap none; the commit point's probabilities
+//!   of a ramp strike and a hard landing are both given or neither, the off-centre one
+//!   only with them, none for a run that never flew;
 //! - every number is finite and within its physical range ([`RANGES`]).
 
 use std::borrow::Cow;
@@ -59,13 +61,18 @@ pub const RUN_COLUMNS: [&str; 23] = [
 /// it came: the fields of [`RunRow`] after `reason`. The grade's are empty for a run with
 /// no grade (one that never flew) and, for the comment, for a pass with no deviation; the
 /// criterion ([`WaveOffCriterion::name`]) is empty unless the aircraft waved off; the
-/// deck's share is empty for a run that never flew.
-pub const LSO_RUN_COLUMNS: [&str; 5] = [
+/// deck's share is empty for a run that never flew; the probabilities the forecast gave
+/// at the commit point ([`crate::control::CommitForecast`]) are empty for a run that never
+/// reached it, the off-centre one also for a longitudinal (3-DOF) approach.
+pub const LSO_RUN_COLUMNS: [&str; 8] = [
     "lso_grade",
     "lso_points",
     "lso_comment",
     "wave_off_criterion",
     "deck_within_limits_pct",
+    "commit_ramp_strike_probability",
+    "commit_hard_landing_probability",
+    "commit_off_centre_probability",
 ];
 
 /// The criterion a run's reason names for its wave-off ("… wave-off at t = 23.10 s on
@@ -109,7 +116,7 @@ const DISPERSION_SIGMAS: f64 = 50.0;
 /// The physical range of every number of a row: (column, lowest, highest), inclusive.
 /// The dispersions' ranges are `DISPERSION_SIGMAS` (50) times the largest standard deviations a
 /// scenario allows (start height 20 m, airspeed and wind 10 m/s, log sea state 1).
-pub const RANGES: [(&str, f64, f64); 18] = [
+pub const RANGES: [(&str, f64, f64); 21] = [
     ("touchdown_distance_m", -LENGTH_LIMIT_M, LENGTH_LIMIT_M),
     ("touchdown_sink_rate_mps", -SPEED_LIMIT_MPS, SPEED_LIMIT_MPS),
     ("touchdown_pitch_deg", -180.0, 180.0),
@@ -145,6 +152,9 @@ pub const RANGES: [(&str, f64, f64); 18] = [
         DISPERSION_SIGMAS * 10.0,
     ),
     ("deck_within_limits_pct", 0.0, 100.0),
+    ("commit_ramp_strike_probability", 0.0, 1.0),
+    ("commit_hard_landing_probability", 0.0, 1.0),
+    ("commit_off_centre_probability", 0.0, 1.0),
 ];
 
 /// Why a row is not one a campaign can write: the column and its value.
@@ -161,7 +171,8 @@ pub struct RowError {
 
 /// One run of a campaign under one controller, flattened (outcome, wire, touchdown, ramp
 /// clearance, glide-path error, the actuators' activity, the dispersions drawn, the failure reason, the LSO's
-/// grade, the wave-off's criterion, the deck's time within the recovery limits). Fields that
+/// grade, the wave-off's criterion, the deck's time within the recovery limits, the forecast's
+/// probabilities at the commit point). Fields that
 /// a run did not produce (no touchdown, a failed setup) are `None`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct RunRow<'a> {
@@ -224,6 +235,14 @@ pub struct RunRow<'a> {
     /// (%; `RunSummary::deck_within_recovery_limits_pct`); `None` for a run that never
     /// flew.
     pub deck_within_limits_pct: Option<f64>,
+    /// The probability of a ramp strike the forecast gave at the commit point
+    /// (`RunSummary::commit_forecast`); `None` for a run that never reached it.
+    pub commit_ramp_strike_probability: Option<f64>,
+    /// The probability of a hard landing the forecast gave there; `None` likewise.
+    pub commit_hard_landing_probability: Option<f64>,
+    /// The probability of an off-centre touchdown the forecast gave there (3-D
+    /// approach); `None` likewise and for a longitudinal approach.
+    pub commit_off_centre_probability: Option<f64>,
 }
 
 impl<'a> RunRow<'a> {
@@ -241,6 +260,7 @@ impl<'a> RunRow<'a> {
         let summary = record.result.as_ref().ok();
         let touchdown = summary.and_then(|s| s.touchdown);
         let graded = summary.and_then(|s| s.lso_grade.as_ref());
+        let commit = summary.and_then(|s| s.commit_forecast);
         Self {
             run_index: record.run_index,
             controller: Cow::Borrowed(controller),
@@ -274,6 +294,9 @@ impl<'a> RunRow<'a> {
                 .and_then(wave_off_criterion)
                 .map(|c| c.name().to_owned()),
             deck_within_limits_pct: summary.map(|s| s.deck_within_recovery_limits_pct),
+            commit_ramp_strike_probability: commit.map(|c| c.ramp_strike_probability),
+            commit_hard_landing_probability: commit.map(|c| c.hard_landing_probability),
+            commit_off_centre_probability: commit.and_then(|c| c.off_centre_probability),
         }
     }
 
@@ -284,7 +307,7 @@ impl<'a> RunRow<'a> {
     }
 
     /// The row's numbers by column, in [`RANGES`] order (`None`: empty).
-    fn numbers(&self) -> [Option<f64>; 18] {
+    fn numbers(&self) -> [Option<f64>; 21] {
         [
             self.touchdown_distance_m,
             self.touchdown_sink_rate_mps,
@@ -304,6 +327,9 @@ impl<'a> RunRow<'a> {
             Some(self.sea_state_scale),
             Some(self.wind_over_deck_dispersion_mps),
             self.deck_within_limits_pct,
+            self.commit_ramp_strike_probability,
+            self.commit_hard_landing_probability,
+            self.commit_off_centre_probability,
         ]
     }
 
@@ -317,7 +343,40 @@ impl<'a> RunRow<'a> {
         self.check_touchdown_columns()?;
         self.check_reason()?;
         self.check_lso_grade()?;
-        self.check_wave_off_criterion()
+        self.check_wave_off_criterion()?;
+        self.check_commit_columns()
+    }
+
+    /// The commit point's probabilities: the ramp strike's and the hard landing's both
+    /// or neither, the off-centre one only with them, none for a run that never flew.
+    fn check_commit_columns(&self) -> Result<(), RowError> {
+        let ramp = self.commit_ramp_strike_probability;
+        let hard = self.commit_hard_landing_probability;
+        let off_centre = self.commit_off_centre_probability;
+        let reached = ramp.is_some();
+        if hard.is_some() != reached {
+            return Err(row_error(
+                "commit_hard_landing_probability",
+                shown(hard),
+                "a run that reached the commit point has both the ramp strike's and the hard \
+                 landing's probability, one that did not neither",
+            ));
+        }
+        if off_centre.is_some() && !reached {
+            return Err(row_error(
+                "commit_off_centre_probability",
+                shown(off_centre),
+                "only a run that reached the commit point has it",
+            ));
+        }
+        if reached && !self.flown() {
+            return Err(row_error(
+                "commit_ramp_strike_probability",
+                shown(ramp),
+                &format!("a run that never flew (`{}`) has none", self.outcome),
+            ));
+        }
+        Ok(())
     }
 
     /// The criterion is one of [`WaveOffCriterion::ALL`], and the one the reason names.

@@ -204,8 +204,9 @@ fn check_header(errors: &CsvErrors, columns: &[&str], expected: &[&str]) -> Resu
             1,
             format!(
                 "the column{} `{}` {} missing: the shard was written by a deckland that did \
-                 not grade passes, name wave-off criteria or share the deck's time within the \
-                 recovery limits yet; fly it again with this version",
+                 not grade passes, name wave-off criteria, share the deck's time within the \
+                 recovery limits or keep the forecast at the commit point yet; fly it again \
+                 with this version",
                 if missing.len() == 1 { "" } else { "s" },
                 missing.join("`, `"),
                 if missing.len() == 1 { "is" } else { "are" }
@@ -371,7 +372,9 @@ mod tests {
         assert!(
             error.contains(
                 "`lso_grade`, `lso_points`, `lso_comment`, `wave_off_criterion`, \
-                 `deck_within_limits_pct` are missing"
+                 `deck_within_limits_pct`, `commit_ramp_strike_probability`, \
+                 `commit_hard_landing_probability`, `commit_off_centre_probability` are \
+                 missing"
             ),
             "{error}"
         );
@@ -380,22 +383,47 @@ mod tests {
     }
 
     /// A shard of the deckland before the deck's share within the recovery limits (its
-    /// four LSO and wave-off columns last, 3-DOF or 3-D) is refused, naming the column.
+    /// four LSO and wave-off columns last, 3-DOF or 3-D) is refused, naming the column
+    /// (and those that came after it).
     #[test]
     fn a_shard_without_the_deck_within_limits_column_is_refused_by_name() {
-        let [before @ .., _] = LSO_RUN_COLUMNS;
+        let before = &LSO_RUN_COLUMNS[..4];
         let three_dof = format!("{},{}\n", RUN_COLUMNS.join(","), before.join(","));
         let three_d: Vec<&str> = RUN_COLUMNS
             .into_iter()
             .chain(lateral_row_columns())
-            .chain(before)
+            .chain(before.iter().copied())
             .collect();
         for old in [three_dof, format!("{}\n", three_d.join(","))] {
             let error = parse_runs_csv("s1/runs.csv", &old).unwrap_err().to_string();
             assert!(
                 error.contains("line 1")
-                    && error.contains("the column `deck_within_limits_pct` is missing")
+                    && error.contains("the columns `deck_within_limits_pct`, `commit_")
                     && error.contains("fly it again with this version"),
+                "{error}"
+            );
+        }
+    }
+
+    /// Issue 45, item 1: a shard of the deckland before the commit point's forecast (the
+    /// deck's share its last column, 3-DOF or 3-D) is refused, naming the three columns.
+    #[test]
+    fn a_shard_without_the_commit_forecast_columns_is_refused_by_name() {
+        let before = &LSO_RUN_COLUMNS[..5];
+        let three_dof = format!("{},{}\n", RUN_COLUMNS.join(","), before.join(","));
+        let three_d: Vec<&str> = RUN_COLUMNS
+            .into_iter()
+            .chain(lateral_row_columns())
+            .chain(before.iter().copied())
+            .collect();
+        for old in [three_dof, format!("{}\n", three_d.join(","))] {
+            let error = parse_runs_csv("s1/runs.csv", &old).unwrap_err().to_string();
+            assert!(
+                error.contains(
+                    "the columns `commit_ramp_strike_probability`, \
+                     `commit_hard_landing_probability`, `commit_off_centre_probability` are \
+                     missing"
+                ) && error.contains("fly it again with this version"),
                 "{error}"
             );
         }

@@ -3,6 +3,7 @@
 
 use serde::Serialize;
 
+use super::calibration::Calibration;
 use super::greenie_board::GreenieBoard;
 use super::rare_events::{upper_bound, UPPER_BOUND_CONFIDENCE};
 use super::record::RunRecord;
@@ -186,23 +187,42 @@ pub struct CampaignStatistics {
     pub deck_within_limits_pct: Option<Distribution>,
     /// The landing signal officer's greenie board of the runs.
     pub greenie_board: GreenieBoard,
+    /// The probabilities the forecast gave at the commit point against what the runs did
+    /// (issue 45, item 1; [`Calibration`]).
+    pub calibration: Calibration,
 }
 
 impl CampaignStatistics {
     /// The statistics of the records of controller `controller` labelled `label`.
     pub fn of(records: &[RunRecord], controller: usize, label: &str) -> Self {
-        let rows: Vec<RunRow> = records
+        let own: Vec<&RunRecord> = records
             .iter()
             .filter(|r| r.controller == controller)
+            .collect();
+        let rows: Vec<RunRow> = own
+            .iter()
             .map(|r| RunRow::with_controller(r, label))
             .collect();
-        Self::of_rows(&rows, label)
+        Self::of_rows_observed(&rows, Some(&Calibration::off_centre_of(&own)), label)
     }
 
     /// The statistics of `rows`, the rows of one controller labelled `label`: the same
     /// numbers as [`Self::of`] on the records the rows were made from, so a campaign
-    /// merged from its shards' `runs.csv` has the statistics of the campaign flown whole.
+    /// merged from its shards' `runs.csv` has the statistics of the campaign flown whole
+    /// — but for the calibration of the off-centre probability, which needs the rows'
+    /// `off_centre` column ([`Self::of_rows_observed`]).
     pub fn of_rows(rows: &[RunRow], label: &str) -> Self {
+        Self::of_rows_observed(rows, None, label)
+    }
+
+    /// As [`Self::of_rows`], with each row's `off_centre` column (a 3-D campaign's
+    /// [`super::LateralRow`], in the same order) for the calibration of the off-centre
+    /// probability at the commit point.
+    pub fn of_rows_observed(
+        rows: &[RunRow],
+        off_centre: Option<&[Option<bool>]>,
+        label: &str,
+    ) -> Self {
         let runs = rows.len() as u64;
         let count =
             |outcome: Outcome| rows.iter().filter(|r| r.outcome == outcome.name()).count() as u64;
@@ -251,6 +271,7 @@ impl CampaignStatistics {
                 flown.iter().filter_map(|r| r.deck_within_limits_pct),
             ),
             greenie_board: GreenieBoard::of_rows(rows),
+            calibration: Calibration::of_rows(rows, off_centre),
         }
     }
 

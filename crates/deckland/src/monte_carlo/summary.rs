@@ -11,6 +11,7 @@
 
 use serde::Serialize;
 
+use super::calibration::Calibration;
 use super::campaign::CampaignResult;
 use super::rare_events::{RareEventTarget, UPPER_BOUND_METHOD};
 use super::row::RunRow;
@@ -63,12 +64,16 @@ impl CampaignSummary {
         let expected_rows = merged
             .requested_runs
             .saturating_mul(merged.controllers.len() as u64);
-        Self::of_rows(
+        let off_centre: Option<Vec<Option<bool>>> = merged
+            .lateral
+            .as_ref()
+            .map(|lateral| lateral.iter().map(|row| row.touchdown.5).collect());
+        Self::of_rows_observed(
             &merged.rows,
+            off_centre.as_deref(),
             &merged.controllers,
             merged.campaign_seed,
-            merged.requested_runs,
-            expected_rows,
+            (merged.requested_runs, expected_rows),
             target_rate,
         )
     }
@@ -83,15 +88,39 @@ impl CampaignSummary {
         expected_rows: u64,
         target_rate: f64,
     ) -> Self {
+        Self::of_rows_observed(
+            rows,
+            None,
+            labels,
+            campaign_seed,
+            (requested_runs, expected_rows),
+            target_rate,
+        )
+    }
+
+    /// As [`Self::of_rows`], with each row's `off_centre` column (`off_centre`, in the
+    /// rows' order: a 3-D campaign's) for the calibration of the off-centre probability
+    /// ([`CampaignStatistics::of_rows_observed`]); the runs are given as (requested
+    /// runs, expected rows).
+    pub fn of_rows_observed(
+        rows: &[RunRow],
+        off_centre: Option<&[Option<bool>]>,
+        labels: &[String],
+        campaign_seed: u64,
+        (requested_runs, expected_rows): (u64, u64),
+        target_rate: f64,
+    ) -> Self {
+        let off_centre = off_centre.filter(|o| o.len() == rows.len());
         let controllers = labels
             .iter()
             .map(|label| {
-                let own: Vec<RunRow> = rows
-                    .iter()
-                    .filter(|r| r.controller == label.as_str())
-                    .cloned()
+                let own: Vec<usize> = (0..rows.len())
+                    .filter(|&i| rows[i].controller == label.as_str())
                     .collect();
-                CampaignStatistics::of_rows(&own, label)
+                let own_rows: Vec<RunRow> = own.iter().map(|&i| rows[i].clone()).collect();
+                let observed: Option<Vec<Option<bool>>> =
+                    off_centre.map(|o| own.iter().map(|&i| o[i]).collect());
+                CampaignStatistics::of_rows_observed(&own_rows, observed.as_deref(), label)
             })
             .collect();
         let finished_runs = rows.len() as u64;
@@ -129,12 +158,13 @@ impl CampaignSummary {
             .shard
             .runs_of(result.requested_runs)
             .saturating_mul(result.controller_labels.len() as u64);
-        Self::of_rows(
+        let records: Vec<&super::RunRecord> = result.records.iter().collect();
+        Self::of_rows_observed(
             &rows,
+            Some(&Calibration::off_centre_of(&records)),
             &result.controller_labels,
             campaign_seed,
-            result.requested_runs,
-            expected,
+            (result.requested_runs, expected),
             target_rate,
         )
     }

@@ -10,6 +10,7 @@
 use super::blocks::arrival_timing::ArrivalTimingBlock;
 use super::blocks::plant::{BuiltPlant, PlantOutputs};
 use super::blocks::{direct_lift, plant, wake_feedforward, BlockPosition, PlacedBlock};
+use super::commit::CommitPoint;
 use super::deck_predictor::BuiltDeckPredictor;
 use super::flight_computer::FlightComputer;
 pub use super::held::{HeldInputs, StepStreams};
@@ -69,6 +70,8 @@ pub struct ClosedLoop {
     pub(crate) lateral: Option<LateralLoop>,
     /// The arrival-timing block, when on (docs/landing-design.md).
     pub(crate) arrival_timing: Option<ArrivalTimingBlock>,
+    /// The approach's commit point and what the forecast gave there (`commit`).
+    pub(crate) commit: CommitPoint,
 }
 
 /// One evaluation of the loop, as work with its plant ([`WithPlant`]): the blocks'
@@ -143,6 +146,13 @@ impl ClosedLoop {
     /// The deck geometry.
     pub fn deck(&self) -> &DeckGeometry {
         &self.deck
+    }
+
+    /// What the forecast gave at the approach's commit point, once the loop has passed
+    /// it (`simulation/commit.rs`); `None` before, outside an approach, and without a
+    /// wave-off or a deck forecast.
+    pub fn commit_forecast(&self) -> Option<crate::control::CommitForecast> {
+        self.commit.forecast()
     }
 
     /// The longitudinal aircraft model (the whole plant of the 3-DOF; the one the 6-DOF

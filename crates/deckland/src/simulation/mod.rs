@@ -16,6 +16,7 @@ mod alpha_floor;
 mod anchor_shaping;
 pub mod blocks;
 mod closed_loop;
+mod commit;
 mod deck_limits;
 pub mod deck_predictor;
 mod events;

@@ -478,6 +478,7 @@ impl Simulation {
             glide_path_error_max_m: self.statistics.max_m(),
             actuator: self.activity.activity(),
             deck_within_recovery_limits_pct: self.deck_limits.within_pct(),
+            commit_forecast: self.system.commit.forecast(),
             trap_sheet: self.three_dimensional.then(|| self.trap_sheet.sheet()),
             lso_grade: None,
         };

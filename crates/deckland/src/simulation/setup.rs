@@ -8,6 +8,7 @@ use super::blocks::arrival_timing::ArrivalTimingBlock;
 use super::blocks::plant::BuiltPlant;
 use super::blocks::{check_placement, Block, BlockPlacementError, BlockPosition, PlacedBlock};
 use super::closed_loop::{ClosedLoop, LoopLayout, StepStreams};
+use super::commit::CommitPoint;
 use super::deck_predictor::{BuiltDeckPredictor, DeckPredictor, DeckView};
 use super::flight_computer::FlightComputer;
 use super::outer_loops::{approach_flight_path_angle, LateAbort, OuterLoops, WaveOffFlight};
@@ -481,6 +482,7 @@ fn start(
         user_blocks: blocks.user_blocks,
         lateral,
         arrival_timing,
+        commit: CommitPoint::default(),
     };
     Setup {
         system,

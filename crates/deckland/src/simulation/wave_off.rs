@@ -82,6 +82,12 @@ impl ClosedLoop {
         });
         if decision.is_some() {
             self.note_wave_off(t);
+        } else if let Some(inputs) = inputs
+            .filter(|i| !self.commit.reached() && i.time_to_go_s <= wave_off.decision_time_to_go_s)
+        {
+            // The commit point: what the forecast gives now (`simulation/commit.rs`).
+            self.commit
+                .record(wave_off.commit_forecast(&inputs), self.lateral.is_some());
         }
         if decision.is_none() && wave_off.late_abort_enabled() {
             let ramp_x_m = reference.mean_aim.x_m - self.deck.ramp_aft_of_aim_point_m;

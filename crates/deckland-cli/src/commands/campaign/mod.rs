@@ -11,7 +11,8 @@
 //!   same rows as `runs.parquet`;
 //! - `summary.json`: outcome rates with 95 % Wilson score intervals and exact 95 % upper
 //!   bounds, the runs needed to show a target rate, touchdown distance and sink-rate
-//!   mean, standard deviation and percentiles, per controller;
+//!   mean, standard deviation and percentiles, and the calibration of the forecast's
+//!   probabilities at the commit point (`calibration`), per controller;
 //! - plots: `touchdown_dispersion` (touchdown point along the deck against sink rate,
 //!   with the wires and the ramp), `touchdown_histograms`, `outcomes`.
 //!
@@ -31,6 +32,7 @@
 //! `--runs` is at most [`MAX_RUNS`] and `--threads` at most [`MAX_THREADS`]: the records
 //! of every run are kept in memory, and threads beyond the cores buy nothing.
 
+pub mod calibration;
 pub mod folder;
 pub mod greenie;
 pub mod paired;

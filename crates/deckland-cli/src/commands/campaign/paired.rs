@@ -136,6 +136,9 @@ mod tests {
             lso_comment: None,
             wave_off_criterion: None,
             deck_within_limits_pct: None,
+            commit_ramp_strike_probability: None,
+            commit_hard_landing_probability: None,
+            commit_off_centre_probability: None,
         }
     }
 

@@ -377,6 +377,9 @@ fn html_report(
             100.0 * target.confidence,
             runs_needed(report.summary)
         ));
+    if super::calibration::any(stats) {
+        super::calibration::html_section(page.section("Calibration at the commit point"), stats);
+    }
     let others = |stem: &str| stem != "outcomes" && !is_touchdown_plot(stem);
     if plots.iter().any(|(stem, _)| others(stem)) {
         add_plots(page.section("Plots"), plots, others);
@@ -509,7 +512,7 @@ pub fn print_statistics(report: &CampaignReport) -> Result<()> {
     for line in rare_event_lines(report.summary) {
         outln!("  {line}")?;
     }
-    Ok(())
+    super::calibration::print(stats)
 }
 
 /// The share of the runs' time with the true deck within the recovery limits

@@ -574,15 +574,12 @@ impl WaveOffParameters {
             0.0
         };
         let ramp_strike = if self.max_ramp_strike_probability > 0.0 {
-            super::risk::normal_cdf(-clearance / inputs.ramp_clearance_sigma_m.max(1e-9))
+            ramp_strike_probability(clearance, inputs.ramp_clearance_sigma_m)
         } else {
             0.0
         };
         let hard_landing = if self.max_hard_landing_probability > 0.0 {
-            let sigma = forecast
-                .landing_point_climb_rate_sigma_mps
-                .hypot(self.touchdown_sink_rate_sigma_mps);
-            super::risk::normal_cdf((sink - self.hard_landing_sink_rate_mps) / sigma.max(1e-9))
+            self.hard_landing_probability(sink, forecast)
         } else {
             0.0
         };
@@ -596,6 +593,56 @@ impl WaveOffParameters {
             hard_landing,
         }
     }
+
+    /// The probability of a hard landing under the forecast for a predicted touchdown
+    /// sink rate relative to the deck `sink` (m/s): Φ((sink − limit)/σ), σ the hypot of
+    /// the forecast's σ of the landing point's climb rate (0 when nothing asked the deck
+    /// predictor for it) and the hook's own `touchdown_sink_rate_sigma_mps`.
+    fn hard_landing_probability(&self, sink: f64, forecast: &DeckForecast) -> f64 {
+        let sigma = forecast
+            .landing_point_climb_rate_sigma_mps
+            .hypot(self.touchdown_sink_rate_sigma_mps);
+        super::risk::normal_cdf((sink - self.hard_landing_sink_rate_mps) / sigma.max(1e-9))
+    }
+
+    /// The probabilities the forecast gives on `inputs` for the wave-off's probabilistic
+    /// criteria, with the criteria's formulas whether they are on or off: what the
+    /// approach is committed on at the commit point ([`CommitForecast`]; the off-centre
+    /// probability of a 3-D approach is the lateral criterion's, added by the caller).
+    pub fn commit_forecast(&self, inputs: &WaveOffInputs) -> CommitForecast {
+        let sink = -inputs.hook_climb_rate_mps + inputs.forecast.landing_point_climb_rate_mps;
+        CommitForecast {
+            ramp_strike_probability: ramp_strike_probability(
+                inputs.predicted_ramp_clearance_m(),
+                inputs.ramp_clearance_sigma_m,
+            ),
+            hard_landing_probability: self.hard_landing_probability(sink, &inputs.forecast),
+            off_centre_probability: None,
+        }
+    }
+}
+
+/// The probability of a ramp strike under the forecast: Φ(−c/σ_c) for the predicted
+/// hook-to-ramp clearance `clearance_m` (m) and its σ `sigma_m` (m).
+fn ramp_strike_probability(clearance_m: f64, sigma_m: f64) -> f64 {
+    super::risk::normal_cdf(-clearance_m / sigma_m.max(1e-9))
+}
+
+/// What the forecast gave at the commit point of an approach (the first step with the
+/// time to go at or below `decision_time_to_go_s`, the approach not waving off by then):
+/// the probabilities of the wave-off's probabilistic criteria, computed whether the
+/// criteria are on or off, to be held against what the flight did (docs/no-oracle-results.md,
+/// "Calibration at the commit point").
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct CommitForecast {
+    /// Probability of a ramp strike, Φ(−c/σ_c) (–).
+    pub ramp_strike_probability: f64,
+    /// Probability of a hard landing, Φ((sink − limit)/σ) (–).
+    pub hard_landing_probability: f64,
+    /// 3-D approach: probability of an off-centre touchdown, the lateral criterion's
+    /// (`control::wave_off_lateral`), at the lateral guidance's first frame from the
+    /// commit point (–); `None` for a longitudinal approach.
+    pub off_centre_probability: Option<f64>,
 }
 
 mod heavy_sea;

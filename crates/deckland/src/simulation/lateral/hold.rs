@@ -15,6 +15,7 @@ use crate::environment::{
 };
 use crate::simulation::blocks::plant::BuiltPlant;
 use crate::simulation::closed_loop::{ClosedLoop, StepStreams};
+use crate::simulation::commit::CommitPoint;
 use crate::simulation::outer_loops::OuterLoops;
 
 /// The lateral guidance's frames: those of the flight computer
@@ -115,17 +116,17 @@ impl ClosedLoop {
             wind,
         );
         let beta = aircraft.air_data(air).beta_rad;
-        let decision = if decided || !matches!(self.outer, OuterLoops::Approach { .. }) {
-            None
-        } else {
-            lateral.wave_off_decision(
-                &self.wave_off,
-                t,
-                (kinematics.hook.y_m, kinematics.velocity.y_mps),
-                forecast_m,
-                time_to_go_s,
-            )
+        let lineup = LineupAtFrame {
+            time_s: t,
+            hook_y_m: kinematics.hook.y_m,
+            hook_y_rate_mps: kinematics.velocity.y_mps,
+            forecast_m,
+            time_to_go_s,
         };
+        let approach = matches!(self.outer, OuterLoops::Approach { .. });
+        let decision = approach
+            .then(|| lateral.approach_frame(&self.wave_off, &mut self.commit, &lineup, decided))
+            .flatten();
         let held = HeldLateral {
             ship_noise,
             bank_noise_rad,
@@ -216,23 +217,48 @@ impl LateralLoop {
         }
     }
 
-    /// The lateral wave-off decision at `t` (s) for the hook's cross position and its
-    /// rate (`hook_y`: m, m/s) against the `forecast_m` (m) of the compensation's point,
-    /// `time_to_go_s` (s) before touchdown, in the `window` of the wave-off.
-    fn wave_off_decision(
+    /// At a frame of the lateral guidance in an approach: the lateral wave-off decision
+    /// on `lineup` in the `window` of the wave-off (none once a wave-off is `decided`),
+    /// and, when the `commit` point was reached and waits for it, the off-centre
+    /// probability the criterion gives now (whatever its limit).
+    fn approach_frame(
         &self,
         window: &WaveOffParameters,
-        t: f64,
-        (hook_y_m, hook_y_rate_mps): (f64, f64),
-        forecast_m: f64,
-        time_to_go_s: f64,
+        commit: &mut CommitPoint,
+        lineup: &LineupAtFrame,
+        decided: bool,
     ) -> Option<WaveOffDecision> {
+        if decided && !commit.lateral_pending() {
+            return None;
+        }
+        let (predicted, forecast_sigma_m, rate) = self.lineup_prediction(lineup);
+        if commit.lateral_pending() {
+            commit.record_off_centre(self.wave_off.probability(predicted, forecast_sigma_m));
+        }
+        if decided {
+            return None;
+        }
+        self.wave_off.decide(
+            window,
+            lineup.time_to_go_s,
+            predicted,
+            forecast_sigma_m,
+            rate,
+            f64::NAN,
+        )
+    }
+
+    /// The lineup error predicted at touchdown for `lineup` (m), the σ the deck's
+    /// unforeseen lateral motion adds by then (m), and the drift across the forecast
+    /// centreline now (m/s): what the lateral wave-off criteria look at.
+    fn lineup_prediction(&self, lineup: &LineupAtFrame) -> (f64, f64, f64) {
+        let (t, time_to_go_s) = (lineup.time_s, lineup.time_to_go_s);
         // In the decision window the compensation is fully in (its window is
         // longer): the error to the forecast centreline, and its rate, carried to
         // touchdown by the lineup loop's own response (poles at ω, ζ), not by a
         // straight drift, which the loop is correcting.
-        let error = hook_y_m - self.mean_drift_rate_mps * t - forecast_m;
-        let rate = hook_y_rate_mps - self.mean_drift_rate_mps;
+        let error = lineup.hook_y_m - self.mean_drift_rate_mps * t - lineup.forecast_m;
+        let rate = lineup.hook_y_rate_mps - self.mean_drift_rate_mps;
         let predicted = oscillator_forecast(
             error,
             rate,
@@ -246,15 +272,21 @@ impl LateralLoop {
             Some(m) => self.floor.sigma_m(time_to_go_s + (t - m.time_s).max(0.0)),
             None => self.floor.stationary_sigma_m(),
         };
-        self.wave_off.decide(
-            window,
-            time_to_go_s,
-            predicted,
-            forecast_sigma_m,
-            rate,
-            f64::NAN,
-        )
+        (predicted, forecast_sigma_m, rate)
     }
+}
+
+/// Where the hook is across the deck at a frame of the lateral guidance.
+struct LineupAtFrame {
+    /// The frame's time (s).
+    time_s: f64,
+    /// The hook's cross position (m, right of the final bearing) and its rate (m/s).
+    hook_y_m: f64,
+    hook_y_rate_mps: f64,
+    /// The forecast offset of the compensation's point (m).
+    forecast_m: f64,
+    /// The lateral guidance's time to go (s).
+    time_to_go_s: f64,
 }
 
 #[cfg(test)]

@@ -7,7 +7,7 @@ use serde::Serialize;
 
 use super::activity::ActuatorActivity;
 use super::signals::SIGNAL_MAGNITUDE_LIMIT;
-use crate::control::WaveOffDecision;
+use crate::control::{CommitForecast, WaveOffDecision};
 use crate::metrics::{LsoGrade, TrapSheet};
 use crate::scenario::OutcomeLimits;
 
@@ -485,6 +485,13 @@ pub struct RunSummary {
     /// (`[control.wave_off.recovery]`: lens pitch and roll, total motion, motion in the
     /// window), checked every 10 ms; see `DeckLimitStatistics` (simulation/deck_limits.rs).
     pub deck_within_recovery_limits_pct: f64,
+    /// What the forecast gave at the approach's commit point (the first step with the
+    /// time to go at or below `decision_time_to_go_s`, no wave-off decided before): the
+    /// probabilities of a ramp strike, a hard landing and (3-D approach) an off-centre
+    /// touchdown, whether their criteria are on or off (`simulation/commit.rs`). `None`
+    /// when the run never reached it (a wave-off before it, a run that is not an
+    /// approach, no wave-off or no deck forecast to give them).
+    pub commit_forecast: Option<CommitForecast>,
     /// The landing signal officer's trap sheet of a 3-D approach (glide-slope and lineup
     /// deviations at the start, the middle, in close and at the ramp; docs/model.md
     /// §10.8); `None` for a longitudinal approach.

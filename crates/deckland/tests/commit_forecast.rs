@@ -1,0 +1,201 @@
+//! Issue 45, item 1: each approach keeps what the forecast gave at its commit point
+//! (`RunSummary::commit_forecast`): the probabilities of a ramp strike, a hard landing
+//! and, on the 3-D approach, an off-centre touchdown, at the first step with the time to
+//! go at or below `decision_time_to_go_s`, the approach not waving off by then.
+//!
+//! The ramp strike's and the hard landing's are checked against a recomputation, step by
+//! step, from the run's state (the hook where the guidance computer sees it, from the
+//! longitudinal state and the hook's geometry), the glide path and the deck forecast held
+//! over the step (`Simulation::next_step_inputs`, which changes nothing of the run), with
+//! Φ by quadrature: the recorded time series (`approach.csv`) alone cannot give them, since
+//! it holds neither the forecast ramp height, the ramp's and the landing point's predicted
+//! climb rates nor their σ, and its hook (the 6-DOF's, with its whole attitude) differs a
+//! little from the one the guidance computer reads (2.5·10⁻⁴ of the probability in the
+//! paper's sea). The off-centre probability is checked for presence and range only: the
+//! lineup prediction it rests on (the lineup loop's response, the ship's lateral
+//! measurement, the floor's σ) is internal to the lateral guidance and in no signal.
+
+#![allow(clippy::unwrap_used)] // tests fail loudly by design
+
+use deckland::control::CommitForecast;
+use deckland::recording::SummaryRecorder;
+use deckland::scenario::Scenario;
+use deckland::simulation::{OuterLoops, Recorder, RunSummary, Simulation, Stop};
+
+struct Nothing;
+impl Recorder for Nothing {}
+
+/// Φ(x) by Simpson's rule over [x − 12, x] of the normal density (for x ≤ 0; by symmetry
+/// above), 24 000 intervals: relative error far below 10⁻⁹, independent of the library's
+/// fit of erfc.
+fn normal_cdf(x: f64) -> f64 {
+    if x > 0.0 {
+        return 1.0 - normal_cdf(-x);
+    }
+    let n = 24_000;
+    let (a, h) = (x - 12.0, 12.0 / f64::from(n));
+    let density = |t: f64| (-0.5 * t * t).exp() / (2.0 * std::f64::consts::PI).sqrt();
+    let inner: f64 = (1..n)
+        .map(|k| density(a + f64::from(k) * h) * if k % 2 == 1 { 4.0 } else { 2.0 })
+        .sum();
+    h / 3.0 * (density(a) + inner + density(x))
+}
+
+/// The commit point's probabilities of a ramp strike and a hard landing, worked out
+/// afresh at the first step whose time to go (the glide path's, for the hook of the
+/// longitudinal state) is at or below the decision point's, before any wave-off: the
+/// predicted clearance from the path's height at the mean ramp, the hook's error to it
+/// and the forecast ramp, its σ from the forecast's and the flight path's σ; the
+/// predicted sink rate relative to the deck. Also the summary of the run, flown step by
+/// step to the end.
+fn recomputed(scenario: &Scenario) -> (Option<(f64, f64)>, RunSummary) {
+    let mut simulation = Simulation::new(scenario).unwrap();
+    let wave_off = scenario.control.wave_off;
+    let mut found = None;
+    loop {
+        let held = simulation.next_step_inputs();
+        let system = simulation.system();
+        let OuterLoops::Approach { flight_path, .. } = system.outer_loops() else {
+            panic!("an approach");
+        };
+        // The hook as the guidance computer sees it: the longitudinal state's.
+        let aircraft = system.aircraft_state(simulation.state());
+        let (hook_x_m, hook_h_m) = scenario.aircraft.hook.position(&aircraft);
+        let (hook_x_rate_mps, hook_climb_rate_mps) = scenario.aircraft.hook.velocity(&aircraft);
+        let deck = held.deck.unwrap();
+        let path = flight_path.reference(hook_x_m, hook_x_rate_mps, &deck);
+        let committed = path.time_to_go_s <= wave_off.decision_time_to_go_s;
+        if found.is_none() && committed && simulation.wave_off_decision().is_none() {
+            let parameters = flight_path.parameters();
+            let forecast = deck.forecast.unwrap();
+            let ramp_x_m = deck.mean_aim.x_m - system.deck().ramp_aft_of_aim_point_m;
+            let path_at_ramp_m = path.height_m - (ramp_x_m - hook_x_m) * flight_path.tan_slope();
+            let clearance_m = path_at_ramp_m - (path.height_m - hook_h_m) - forecast.ramp_height_m;
+            let timing = forecast.ramp_climb_rate_mps * parameters.ramp_crossing_time_sigma_s;
+            let sigma_c = (forecast.ramp_height_sigma_m.powi(2)
+                + parameters.hook_height_sigma_m.powi(2)
+                + timing * timing)
+                .sqrt();
+            let sink = -hook_climb_rate_mps + forecast.landing_point_climb_rate_mps;
+            let sigma_sink = forecast
+                .landing_point_climb_rate_sigma_mps
+                .hypot(wave_off.touchdown_sink_rate_sigma_mps);
+            found = Some((
+                normal_cdf(-clearance_m / sigma_c),
+                normal_cdf((sink - wave_off.hard_landing_sink_rate_mps) / sigma_sink),
+            ));
+        }
+        if matches!(simulation.step(&mut Nothing), Stop::Ended(_)) {
+            return (found, simulation.summary().unwrap().clone());
+        }
+    }
+}
+
+/// `got` and `want` agree to a millionth of their size (the library's Φ is good to
+/// 1.2·10⁻⁷ of its value).
+fn assert_close(what: &str, got: f64, want: f64) {
+    assert!(
+        (got - want).abs() <= 1e-6 * want.abs() + 1e-300,
+        "{what}: {got:e} against {want:e} recomputed"
+    );
+}
+
+fn in_unit_interval(p: f64) -> bool {
+    (0.0..=1.0).contains(&p)
+}
+
+/// The paper's sea (`scenarios/paper-adverse.toml`'s filter ship) on the realistic
+/// default (the 3-D approach, the wave-off on): every run that reached the commit point
+/// has probabilities in [0, 1], its off-centre probability too, and its ramp strike's
+/// and hard landing's are the recomputed ones; flown step by step with the inputs drawn
+/// early, the run is the one flown straight through.
+#[test]
+fn in_the_papers_sea_the_commit_forecast_is_the_recomputed_one() {
+    let mut reached = 0;
+    for seed in 1..=5 {
+        let scenario = Scenario {
+            seed,
+            ..Scenario::papers_sea()
+        };
+        let (recomputed, summary) = recomputed(&scenario);
+        let straight = Simulation::new(&scenario)
+            .unwrap()
+            .run(&mut SummaryRecorder);
+        assert_eq!(
+            summary, straight,
+            "seed {seed}: drawing early changed the run"
+        );
+        match (summary.commit_forecast, recomputed) {
+            (None, None) => {}
+            (Some(forecast), Some((ramp, hard))) => {
+                reached += 1;
+                let CommitForecast {
+                    ramp_strike_probability,
+                    hard_landing_probability,
+                    off_centre_probability,
+                } = forecast;
+                let off_centre = off_centre_probability.expect("a 3-D approach's");
+                for p in [
+                    ramp_strike_probability,
+                    hard_landing_probability,
+                    off_centre,
+                ] {
+                    assert!(in_unit_interval(p), "seed {seed}: {forecast:?}");
+                }
+                assert_close(&format!("seed {seed} ramp"), ramp_strike_probability, ramp);
+                assert_close(&format!("seed {seed} hard"), hard_landing_probability, hard);
+            }
+            other => panic!("seed {seed}: recorded and recomputed disagree: {other:?}"),
+        }
+    }
+    assert!(
+        reached >= 3,
+        "only {reached} of 5 runs reached the commit point"
+    );
+}
+
+/// A longitudinal approach (the 3-DOF aircraft) has no off-centre probability; a
+/// scenario without the wave-off (the paper's set) none at all; and an approach that
+/// waves off before the commit point (a ramp-strike limit of 10⁻³⁰⁰, which any forecast
+/// exceeds as the window opens) never reaches it.
+#[test]
+fn only_an_approach_that_reaches_the_commit_point_with_a_forecast_has_one() {
+    let longitudinal: Vec<CommitForecast> = (1..=6)
+        .filter_map(|seed| {
+            let scenario = Scenario {
+                seed,
+                ..Scenario::papers_sea().longitudinal()
+            };
+            let summary = Simulation::new(&scenario)
+                .unwrap()
+                .run(&mut SummaryRecorder);
+            summary.commit_forecast
+        })
+        .collect();
+    assert!(
+        !longitudinal.is_empty(),
+        "no 3-DOF run reached the commit point"
+    );
+    for forecast in longitudinal {
+        assert_eq!(forecast.off_centre_probability, None);
+        assert!(in_unit_interval(forecast.ramp_strike_probability));
+        assert!(in_unit_interval(forecast.hard_landing_probability));
+    }
+    let path = format!(
+        "{}/../../scenarios/paper-adverse.toml",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let paper = deckland::scenario::load_scenario(&std::fs::read_to_string(path).unwrap(), "paper")
+        .unwrap();
+    assert!(!paper.control.wave_off.enabled);
+    let summary = Simulation::new(&paper).unwrap().run(&mut SummaryRecorder);
+    assert_eq!(summary.commit_forecast, None);
+    let mut early = Scenario {
+        seed: 2,
+        ..Scenario::papers_sea()
+    };
+    early.control.wave_off.max_ramp_strike_probability = 1e-300;
+    let summary = Simulation::new(&early).unwrap().run(&mut SummaryRecorder);
+    assert_eq!(summary.outcome.name(), "wave_off", "{:?}", summary.reason);
+    assert_eq!(summary.commit_forecast, None);
+}
