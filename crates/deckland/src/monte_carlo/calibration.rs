@@ -23,10 +23,9 @@
 
 use serde::Serialize;
 
-use super::rare_events::{binomial_cdf, upper_bound};
+use super::rare_events::{binomial_cdf, upper_bound, CONFIDENCE_Z_95};
 use super::record::RunRecord;
 use super::row::RunRow;
-use super::statistics::CONFIDENCE_Z_95;
 use crate::simulation::Outcome;
 
 /// The edges of the reliability bins: [e_k, e_k+1), the last closed at 1.

@@ -14,6 +14,9 @@
 
 use serde::Serialize;
 
+/// The standard normal quantile of a two-sided 95 % interval, z = Φ⁻¹(0.975).
+pub const CONFIDENCE_Z_95: f64 = 1.959_963_984_540_054;
+
 /// Confidence of the upper bounds in summaries: 95 %.
 pub const UPPER_BOUND_CONFIDENCE: f64 = 0.95;
 

@@ -10,8 +10,7 @@ use super::record::RunRecord;
 use super::row::RunRow;
 use crate::simulation::Outcome;
 
-/// The standard normal quantile of a two-sided 95 % interval, z = Φ⁻¹(0.975).
-pub const CONFIDENCE_Z_95: f64 = 1.959_963_984_540_054;
+pub use super::rare_events::CONFIDENCE_Z_95;
 
 /// The Wilson score interval (Wilson 1927; Brown, Cai & DasGupta, "Interval estimation
 /// for a binomial proportion", Statistical Science 2001) of `successes` out of `trials`
