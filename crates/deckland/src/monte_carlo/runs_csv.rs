@@ -382,19 +382,23 @@ mod tests {
         assert!(parse_runs_csv("s1/runs.csv", &new).is_ok());
     }
 
+    /// The 3-DOF and the 3-D header of a deckland whose last columns were `last`.
+    fn headers_of_a_deckland_ending_with(last: &[&'static str]) -> [String; 2] {
+        let three_dof = format!("{},{}\n", RUN_COLUMNS.join(","), last.join(","));
+        let three_d: Vec<&str> = RUN_COLUMNS
+            .into_iter()
+            .chain(lateral_row_columns())
+            .chain(last.iter().copied())
+            .collect();
+        [three_dof, format!("{}\n", three_d.join(","))]
+    }
+
     /// A shard of the deckland before the deck's share within the recovery limits (its
     /// four LSO and wave-off columns last, 3-DOF or 3-D) is refused, naming the column
     /// (and those that came after it).
     #[test]
     fn a_shard_without_the_deck_within_limits_column_is_refused_by_name() {
-        let before = &LSO_RUN_COLUMNS[..4];
-        let three_dof = format!("{},{}\n", RUN_COLUMNS.join(","), before.join(","));
-        let three_d: Vec<&str> = RUN_COLUMNS
-            .into_iter()
-            .chain(lateral_row_columns())
-            .chain(before.iter().copied())
-            .collect();
-        for old in [three_dof, format!("{}\n", three_d.join(","))] {
+        for old in headers_of_a_deckland_ending_with(&LSO_RUN_COLUMNS[..4]) {
             let error = parse_runs_csv("s1/runs.csv", &old).unwrap_err().to_string();
             assert!(
                 error.contains("line 1")
@@ -409,14 +413,7 @@ mod tests {
     /// deck's share its last column, 3-DOF or 3-D) is refused, naming the three columns.
     #[test]
     fn a_shard_without_the_commit_forecast_columns_is_refused_by_name() {
-        let before = &LSO_RUN_COLUMNS[..5];
-        let three_dof = format!("{},{}\n", RUN_COLUMNS.join(","), before.join(","));
-        let three_d: Vec<&str> = RUN_COLUMNS
-            .into_iter()
-            .chain(lateral_row_columns())
-            .chain(before.iter().copied())
-            .collect();
-        for old in [three_dof, format!("{}\n", three_d.join(","))] {
+        for old in headers_of_a_deckland_ending_with(&LSO_RUN_COLUMNS[..5]) {
             let error = parse_runs_csv("s1/runs.csv", &old).unwrap_err().to_string();
             assert!(
                 error.contains(
