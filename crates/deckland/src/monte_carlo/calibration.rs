@@ -349,7 +349,7 @@ impl Calibration {
     pub fn off_centre_of(records: &[&RunRecord]) -> Vec<Option<bool>> {
         records
             .iter()
-            .map(|r| super::lateral::lateral_run_values(r).5)
+            .map(|r| r.lateral_touchdown().map(|l| l.off_centre))
             .collect()
     }
 }

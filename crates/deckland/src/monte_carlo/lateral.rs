@@ -251,7 +251,7 @@ fn row_error(column: &'static str, value: Option<f64>, problem: &str) -> RowErro
 
 /// The lateral outcome of `record`, if it is a 3-D approach that touched down.
 pub fn lateral_touchdown(record: &RunRecord) -> Option<LateralTouchdown> {
-    record.result.as_ref().ok()?.touchdown?.lateral
+    record.lateral_touchdown()
 }
 
 /// The values of [`LATERAL_RUN_COLUMNS`] for `record`: all empty where it did not

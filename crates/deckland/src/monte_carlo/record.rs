@@ -2,6 +2,7 @@
 //! summary, or why it produced no flight.
 
 use crate::scenario::DispersionSample;
+use crate::simulation::lateral::LateralTouchdown;
 use crate::simulation::{RunSummary, SetupError};
 
 /// Why a run produced no flight.
@@ -38,6 +39,11 @@ impl RunRecord {
             Err(RunFailure::Invalid(_)) => "invalid",
             Err(RunFailure::Panicked(_)) => "panicked",
         }
+    }
+
+    /// The lateral outcome, if the run is a 3-D approach that touched down.
+    pub fn lateral_touchdown(&self) -> Option<LateralTouchdown> {
+        self.result.as_ref().ok()?.touchdown?.lateral
     }
 
     /// Why the run did not trap, in words (`None` for a trap).
