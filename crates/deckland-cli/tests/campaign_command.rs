@@ -583,7 +583,28 @@ fn a_default_campaign_grades_every_pass_and_prints_the_greenie_board() {
     let line =
         format!("deck within the recovery limits: mean {mean:.1} % of the time (min {least:.1} %)");
     assert!(printed.contains(&line), "no `{line}` in:\n{printed}");
+    // The ramp-strike margin: the hook's height over the ramp, summarised over the rows
+    // that crossed it, in summary.json and on the terminal.
+    let ramp_column = header.iter().position(|h| h == "ramp_clearance_m").unwrap();
+    let clearances: Vec<f64> = records
+        .iter()
+        .filter_map(|r| r[ramp_column].parse().ok())
+        .collect();
+    let ramp = &summary["controllers"][0]["ramp_clearance_m"];
+    assert_eq!(ramp["count"], clearances.len(), "{ramp}");
+    let ramp_mean = clearances.iter().sum::<f64>() / clearances.len() as f64;
+    assert!(
+        (ramp["mean"].as_f64().unwrap() - ramp_mean).abs() < 1e-9,
+        "{ramp}"
+    );
+    let least = clearances.iter().copied().fold(f64::INFINITY, f64::min);
+    assert_eq!(ramp["min"].as_f64().unwrap(), least, "{ramp}");
+    assert!(
+        printed.contains("hook over the ramp (m): mean ± sd"),
+        "{printed}"
+    );
     let report = std::fs::read_to_string(out.join("report.html")).unwrap();
+    assert!(report.contains("hook over the ramp (m, the ramp-strike margin)"));
     let board_at = report.find("<table class=\"greenie\">").expect("the board");
     let chart_at = report.find("<figure>").expect("the outcome chart");
     assert!(board_at < chart_at, "the board is above the outcome chart");

@@ -170,6 +170,9 @@ pub struct CampaignStatistics {
     pub touchdown_distance_m: Option<Distribution>,
     /// Hook sink rate relative to the deck at touchdown (m/s), over the same runs.
     pub touchdown_sink_rate_mps: Option<Distribution>,
+    /// The hook's height above the ramp as it crossed it (m), the ramp-strike margin,
+    /// over the runs that crossed it (a ramp strike's is below 0).
+    pub ramp_clearance_m: Option<Distribution>,
     /// RMS glide-path error of each flown run (m).
     pub glide_path_error_rms_m: Option<Distribution>,
     /// Elevator-rate RMS of each flown run (deg/s).
@@ -250,6 +253,7 @@ impl CampaignStatistics {
             traps_per_wire,
             touchdown_distance_m: Distribution::of(touchdowns.iter().map(|t| t.0)),
             touchdown_sink_rate_mps: Distribution::of(touchdowns.iter().map(|t| t.1)),
+            ramp_clearance_m: Distribution::of(flown.iter().filter_map(|r| r.ramp_clearance_m)),
             glide_path_error_rms_m: Distribution::of(
                 flown.iter().filter_map(|r| r.glide_path_error_rms_m),
             ),

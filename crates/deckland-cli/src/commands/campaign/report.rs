@@ -126,6 +126,9 @@ fn distribution_rows(stats: &[CampaignStatistics]) -> Vec<Vec<String>> {
             ("touchdown sink rate relative to the deck (m/s)", |s| {
                 s.touchdown_sink_rate_mps
             }),
+            ("hook over the ramp (m, the ramp-strike margin)", |s| {
+                s.ramp_clearance_m
+            }),
             ("glide-path error RMS (m)", |s| s.glide_path_error_rms_m),
         ],
     )
@@ -471,11 +474,12 @@ pub fn print_statistics(report: &CampaignReport) -> Result<()> {
     if let Some(sheet) = &report.trap_sheet {
         super::trap_sheet::print(sheet)?;
     }
-    let touchdown: [(&str, bool, DistributionOf); 2] = [
+    let touchdown: [(&str, bool, DistributionOf); 3] = [
         ("touchdown from aim (m)", true, |s| s.touchdown_distance_m),
         ("touchdown sink rate (m/s)", false, |s| {
             s.touchdown_sink_rate_mps
         }),
+        ("hook over the ramp (m)", false, |s| s.ramp_clearance_m),
     ];
     for (name, signed, get) in touchdown.into_iter().chain(ACTUATOR_QUANTITIES) {
         for (line, part) in [": mean ± sd", "  p5 / p50 / p95"].iter().enumerate() {
