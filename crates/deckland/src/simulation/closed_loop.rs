@@ -621,7 +621,8 @@ impl ClosedLoop {
                 None => direct_lift::command(
                     law,
                     outer,
-                    held,
+                    held.deck,
+                    held.wave_off,
                     dynamic_pressure_pa,
                     aircraft.longitudinal().parameters(),
                     bus,

@@ -23,6 +23,7 @@ mod events;
 mod flight_computer;
 mod held;
 mod hold;
+mod hold_lateral;
 pub mod lateral;
 mod layout;
 mod lso;

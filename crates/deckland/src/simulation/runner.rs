@@ -31,14 +31,14 @@ use crate::scenario::Scenario;
 /// A run set up with a user's own pitch law and blocks ([`Simulation::builder`]).
 pub struct SimulationBuilder<'a> {
     scenario: &'a Scenario,
-    pitch_law: Option<&'a super::PitchLawFactory>,
+    pitch_law: Option<&'a super::setup::PitchLawFactory>,
     deck_predictor: Option<&'a dyn DeckPredictor>,
     blocks: Vec<(BlockPosition, Arc<dyn Block>)>,
 }
 
 impl<'a> SimulationBuilder<'a> {
     /// Flies `factory`'s law instead of the scenario's pitch law.
-    pub fn pitch_law(mut self, factory: &'a super::PitchLawFactory) -> Self {
+    pub fn pitch_law(mut self, factory: &'a super::setup::PitchLawFactory) -> Self {
         self.pitch_law = Some(factory);
         self
     }
@@ -133,7 +133,7 @@ impl Simulation {
     /// (a user's own law; see `examples/custom_pitch_law.rs`).
     pub fn with_pitch_law(
         scenario: &Scenario,
-        pitch_law: &super::PitchLawFactory,
+        pitch_law: &super::setup::PitchLawFactory,
     ) -> Result<Self, SetupError> {
         Ok(Self::from_setup(
             build(

@@ -3,19 +3,19 @@
 //! (docs/model.md §5.9) and the late abort's blend to full lift (docs/landing-design.md).
 
 use crate::aircraft::AircraftParameters;
-use crate::control::DirectLiftParameters;
-use crate::simulation::held::HeldInputs;
+use crate::control::{DeckReference, DirectLiftParameters};
 use crate::simulation::outer_loop_signals::OuterLoopOutputs;
-use crate::simulation::Signals;
+use crate::simulation::signals::Signals;
 
 /// The direct-lift command (–) the law computes this instant from the outer loops'
-/// `outer` outputs and the held deck reference (before any tap or frame hold), at
-/// dynamic pressure `dynamic_pressure_pa` (Pa).
+/// `outer` outputs and the held deck reference `deck` (before any tap or frame hold),
+/// `wave_off` when a wave-off is flown, at dynamic pressure `dynamic_pressure_pa` (Pa).
 #[inline(always)]
 pub(crate) fn command(
     law: &DirectLiftParameters,
     outer: &OuterLoopOutputs,
-    held: &HeldInputs,
+    deck: Option<DeckReference>,
+    wave_off: bool,
     dynamic_pressure_pa: f64,
     aircraft: &AircraftParameters,
     bus: &Signals,
@@ -24,7 +24,7 @@ pub(crate) fn command(
     let error_rate = outer
         .path
         .map_or(0.0, |p| p.climb_rate_mps - hook_climb_rate_mps);
-    match (outer.path, held.deck) {
+    match (outer.path, deck) {
         (Some(path), Some(deck)) => {
             // The path moves with its anchor by the compensation weight
             // (FlightPathGenerator): on the unfiltered anchor it is this much higher, and
@@ -45,7 +45,7 @@ pub(crate) fn command(
             } else {
                 feedforward
             };
-            let command = law.command(error_m, error_rate, feedforward, held.wave_off);
+            let command = law.command(error_m, error_rate, feedforward, wave_off);
             // The flare on the deck forecast: the landing point's predicted climb rate at
             // touchdown less the hook's.
             let command = deck.forecast.map_or(command, |forecast| {
@@ -57,6 +57,6 @@ pub(crate) fn command(
             });
             law.late_abort(command, outer.late_abort_lift_share)
         }
-        _ => law.command(bus.glide_path_error_m, error_rate, 0.0, held.wave_off),
+        _ => law.command(bus.glide_path_error_m, error_rate, 0.0, wave_off),
     }
 }

@@ -6,7 +6,7 @@
 
 pub use crate::aircraft::BuiltPlant;
 use crate::aircraft::{HookGeometry, Plant, PlantCommands};
-use crate::simulation::Signals;
+use crate::simulation::signals::Signals;
 
 /// What the aircraft's outputs leave for the other blocks beside the registered signals:
 /// the plant's own intermediate results and the CG's earth x rate.

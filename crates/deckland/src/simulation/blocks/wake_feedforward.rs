@@ -2,7 +2,7 @@
 //! wind, with a lead for the flight path's lag behind pitch (docs/model.md §5.7).
 
 use crate::environment::{steady_wake, WindParameters};
-use crate::simulation::Signals;
+use crate::simulation::signals::Signals;
 
 /// The pitch fed forward (rad): Δθ = (W_z + τ·dW_z/dt)/V, the wake's W_z at the
 /// aircraft's distance aft on the bus, led by `lead_s` along the closure (air sinking,

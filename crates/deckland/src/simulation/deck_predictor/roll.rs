@@ -19,6 +19,20 @@ pub struct SensedRoll {
 }
 
 impl SensedRoll {
+    /// The ship's latest sensed roll, `measurement` (`None` before the first one
+    /// arrives), with the landing point's and the ramp's rise per unit sin φ_s
+    /// `rise_m` (m).
+    pub fn latest(
+        measurement: Option<crate::sensors::LateralShipMotionMeasurement>,
+        rise_m: (f64, f64),
+    ) -> Option<Self> {
+        measurement.map(|measurement| Self {
+            measurement,
+            landing_point_rise_m: rise_m.0,
+            ramp_rise_m: rise_m.1,
+        })
+    }
+
     /// `forecast` with the landing point's and the ramp's heights and climb rates moved
     /// by the roll forecast at the touchdown and the ramp crossing, `now_s` + the
     /// horizons (`time_to_go_s`, and the ramp `ramp_aft_m` earlier at `closure_mps`).

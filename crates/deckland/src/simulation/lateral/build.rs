@@ -282,7 +282,7 @@ pub(crate) fn attach(
     plant: &crate::simulation::blocks::plant::BuiltPlant,
     flight_path_angle_rad: f64,
     streams: &RandomStreams,
-    layout: &mut crate::simulation::LoopLayout,
+    layout: &mut crate::simulation::layout::LoopLayout,
 ) -> Result<Option<ThreeDimensional>, ParameterError> {
     let crate::simulation::blocks::plant::BuiltPlant::SixDof(aircraft) = plant else {
         return Ok(None);
@@ -303,7 +303,7 @@ pub(crate) fn attach(
 /// the wind in three dimensions. Returns the loop's part, its streams and the wind.
 pub(crate) fn start(
     built: Option<ThreeDimensional>,
-    layout: &crate::simulation::LoopLayout,
+    layout: &crate::simulation::layout::LoopLayout,
     (x_m, h_m): (f64, f64),
     initial: &mut [f64],
     wind: crate::environment::WindModel,

@@ -9,8 +9,8 @@ use crate::environment::{
 };
 use crate::simulation::flight_computer::HeldCommands;
 use crate::simulation::layout::LoopLayout;
+use crate::simulation::signals::Signals;
 use crate::simulation::taps::{LoopBreak, Taps};
-use crate::simulation::Signals;
 
 impl LateralLoop {
     /// `ship`: the 3-D pose onto the bus (the longitudinal blocks see its equivalent

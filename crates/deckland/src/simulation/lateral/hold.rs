@@ -7,16 +7,10 @@
 
 use super::forecast::{compensation_station, oscillator_forecast};
 use super::{HeldLateral, LateralLoop, LateralStreams};
-use crate::aircraft::six_dof::{SixDofAircraft, SixDofState};
-use crate::aircraft::Plant;
+use crate::aircraft::six_dof::SixDofState;
 use crate::control::{WaveOffDecision, WaveOffParameters};
-use crate::environment::{
-    DeckGeometry, LateralShipMotionState, LateralShipNoise, ShipMotionState, Wind,
-};
-use crate::simulation::blocks::plant::BuiltPlant;
-use crate::simulation::closed_loop::{ClosedLoop, StepStreams};
+use crate::environment::{DeckGeometry, LateralShipMotionState, LateralShipNoise};
 use crate::simulation::commit::CommitPoint;
-use crate::simulation::outer_loops::OuterLoops;
 
 /// The lateral guidance's frames: those of the flight computer
 /// ([`crate::simulation::flight_computer`]: a frame starts at the first step from each
@@ -63,97 +57,23 @@ pub(crate) struct LateralStep {
     pub decision: Option<WaveOffDecision>,
 }
 
-impl ClosedLoop {
-    /// The 3-D approach's part of [`ClosedLoop::hold`] at `t` (state `x`, the wind held
-    /// over the step `wind`); `None` outside it. `decided` says whether a wave-off is
-    /// flown or decided already (then no lateral decision is taken).
-    pub(crate) fn hold_lateral(
-        &mut self,
-        t: f64,
-        x: &[f64],
-        streams: &mut StepStreams,
-        dt: f64,
-        decided: bool,
-        wind: &Wind,
-    ) -> Option<LateralStep> {
-        let (Some(lateral), Some(lateral_streams), BuiltPlant::SixDof(aircraft)) =
-            (&mut self.lateral, &mut streams.lateral, &self.plant)
-        else {
-            return None;
-        };
-        let ship_state = LateralShipMotionState::from_array(&self.layout.ship_lateral.array(x));
-        let longitudinal_ship_state = ShipMotionState::from_array(&self.layout.ship.array(x));
-        let deck_view = lateral.deck_view(
-            &self.ship,
-            &self.deck,
-            &longitudinal_ship_state,
-            &ship_state,
-            t,
-        );
-        lateral.step_view = Some(deck_view);
-        lateral.sense_ship(t, &ship_state);
-        let ship_noise = lateral.ship.draw_noise(&mut lateral_streams.ship, dt);
-        if let Some(step) = lateral.held_in_frame(t, ship_noise) {
-            return Some(step);
-        }
-        let state = SixDofAircraft::state_at(x, self.layout.aircraft.offset);
-        let (kinematic, kinematics) = aircraft.kinematics(&self.hook, state);
-        // Time to go from the range to the mean aim point at the closing speed.
-        let mean_pose = self
-            .ship
-            .pose(&longitudinal_ship_state, self.ship_initial_x_m, t);
-        let range_m = mean_pose.pitch_centre_x_m
-            - self.deck.landing_point_aft_of_pitch_centre_m
-            - kinematics.hook.x_m;
-        let time_to_go_s = (range_m / lateral.closure_mps).clamp(0.0, 60.0);
-        let forecast_m = lateral.compensation_forecast_m(&self.deck, range_m, t);
-        let (bank_noise_rad, sideslip_noise_rad, heading_noise_rad) =
-            lateral.draw_read_noise(t, lateral_streams);
-        let heading_hold_weight = lateral.heading_hold.weight(time_to_go_s);
-        let air = aircraft.air_velocity_trig(
-            [state.u_mps, state.v_mps, state.w_mps],
-            &kinematic.trig,
-            wind,
-        );
-        let beta = aircraft.air_data(air).beta_rad;
-        let lineup = LineupAtFrame {
-            time_s: t,
-            hook_y_m: kinematics.hook.y_m,
-            hook_y_rate_mps: kinematics.velocity.y_mps,
-            forecast_m,
-            time_to_go_s,
-        };
-        let approach = matches!(self.outer, OuterLoops::Approach { .. });
-        let decision = approach
-            .then(|| lateral.approach_frame(&self.wave_off, &mut self.commit, &lineup, decided))
-            .flatten();
-        let held = HeldLateral {
-            ship_noise,
-            bank_noise_rad,
-            sideslip_noise_rad,
-            heading_noise_rad,
-            heading_hold_weight,
-            forecast_m,
-            read: None,
-            deck_view_time_s: t,
-        };
-        let step = LateralStep {
-            held,
-            fresh_read: lateral.fresh_read(&state, beta, &held),
-            decision,
-        };
-        if let Some(frames) = &mut lateral.guidance_frames {
+impl LateralLoop {
+    /// Keeps what the guidance computed at a frame's start, `step`, for the rest of the
+    /// frame (without frames, nothing).
+    pub(crate) fn keep_for_frame(&mut self, step: &LateralStep) {
+        if let Some(frames) = &mut self.guidance_frames {
             frames.held = Some((step.held, step.fresh_read));
         }
-        Some(step)
     }
-}
 
-impl LateralLoop {
     /// Within a flight computer's frame (not at its start), the guidance's outputs of
     /// the frame's start, with this step's `ship_noise` and view time `t` (s); `None`
     /// at a frame's start or without frames.
-    fn held_in_frame(&mut self, t: f64, ship_noise: LateralShipNoise) -> Option<LateralStep> {
+    pub(crate) fn held_in_frame(
+        &mut self,
+        t: f64,
+        ship_noise: LateralShipNoise,
+    ) -> Option<LateralStep> {
         let frames = self.guidance_frames.as_mut()?;
         let (false, Some((held, fresh_read))) = (frames.starts_frame(t), frames.held) else {
             return None;
@@ -171,7 +91,7 @@ impl LateralLoop {
 
     /// The bank, sideslip and heading sensors' noise (rad) read at `t` (s), drawn in
     /// that order.
-    fn draw_read_noise(&self, t: f64, streams: &mut LateralStreams) -> (f64, f64, f64) {
+    pub(crate) fn draw_read_noise(&self, t: f64, streams: &mut LateralStreams) -> (f64, f64, f64) {
         let bank_noise_rad = self.draw_bank_noise(t, &mut streams.bank);
         let sideslip_noise_rad = self.draw_sideslip_noise(&mut streams.sideslip);
         let heading_noise_rad = self.draw_bank_noise(t, &mut streams.heading);
@@ -181,7 +101,12 @@ impl LateralLoop {
     /// Bank and the yaw law's angle (sideslip, or in close the heading error) as the
     /// sensors give them for the aircraft's `state` with the air data's sideslip `beta`
     /// (rad), with the noise and heading-hold weight `held` (rad).
-    fn fresh_read(&self, state: &SixDofState, beta: f64, held: &HeldLateral) -> (f64, f64) {
+    pub(crate) fn fresh_read(
+        &self,
+        state: &SixDofState,
+        beta: f64,
+        held: &HeldLateral,
+    ) -> (f64, f64) {
         (
             state.phi_rad + held.bank_noise_rad,
             self.heading_hold.yaw_channel_angle_rad(
@@ -194,7 +119,7 @@ impl LateralLoop {
 
     /// Samples the ship's lateral motion (`ship_state`) with the sensor at `t` (s) and
     /// keeps the latest measurement received.
-    fn sense_ship(&mut self, t: f64, ship_state: &LateralShipMotionState) {
+    pub(crate) fn sense_ship(&mut self, t: f64, ship_state: &LateralShipMotionState) {
         self.sensor.sample(t, &self.ship.outputs(ship_state));
         while let Some(measurement) = self.sensor.receive(t) {
             self.last_measurement = Some(measurement);
@@ -205,7 +130,12 @@ impl LateralLoop {
     /// for the hook `range_m` (m) before the mean aim point at `t` (s): the station (the
     /// ramp) when the hook will cross it, then the point abreast of the hook; 0 before
     /// the first measurement.
-    fn compensation_forecast_m(&mut self, deck: &DeckGeometry, range_m: f64, t: f64) -> f64 {
+    pub(crate) fn compensation_forecast_m(
+        &mut self,
+        deck: &DeckGeometry,
+        range_m: f64,
+        t: f64,
+    ) -> f64 {
         let (horizon_s, aft_m) = compensation_station(
             range_m,
             self.closure_mps,
@@ -221,7 +151,7 @@ impl LateralLoop {
     /// on `lineup` in the `window` of the wave-off (none once a wave-off is `decided`),
     /// and, when the `commit` point was reached and waits for it, the off-centre
     /// probability the criterion gives now (whatever its limit).
-    fn approach_frame(
+    pub(crate) fn approach_frame(
         &self,
         window: &WaveOffParameters,
         commit: &mut CommitPoint,
@@ -277,16 +207,16 @@ impl LateralLoop {
 }
 
 /// Where the hook is across the deck at a frame of the lateral guidance.
-struct LineupAtFrame {
+pub(crate) struct LineupAtFrame {
     /// The frame's time (s).
-    time_s: f64,
+    pub(crate) time_s: f64,
     /// The hook's cross position (m, right of the final bearing) and its rate (m/s).
-    hook_y_m: f64,
-    hook_y_rate_mps: f64,
+    pub(crate) hook_y_m: f64,
+    pub(crate) hook_y_rate_mps: f64,
     /// The forecast offset of the compensation's point (m).
-    forecast_m: f64,
+    pub(crate) forecast_m: f64,
     /// The lateral guidance's time to go (s).
-    time_to_go_s: f64,
+    pub(crate) time_to_go_s: f64,
 }
 
 #[cfg(test)]

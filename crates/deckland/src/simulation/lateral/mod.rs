@@ -30,14 +30,14 @@ pub mod forecast;
 mod free_response;
 mod hold;
 pub(crate) mod pose;
-mod signals;
 pub mod touchdown;
 
 use std::sync::Arc;
 
+pub use crate::simulation::signals::LateralSignals;
 pub use build::lateral_laws;
 pub(crate) use build::{attach, flies_three_dimensional, start, ThreeDimensional};
-pub use signals::LateralSignals;
+pub(crate) use hold::{LateralStep, LineupAtFrame};
 pub use touchdown::LateralTouchdown;
 
 use crate::control::heading_hold::HeadingHold;
@@ -197,20 +197,6 @@ pub(crate) struct LateralMeasurements {
     pub heading_rad: f64,
     pub aileron_rad: f64,
     pub rudder_rad: f64,
-}
-
-impl LateralLoop {
-    /// The ship's latest sensed roll for the longitudinal deck forecast (`None` before
-    /// the first measurement arrives).
-    pub(crate) fn sensed_roll(&self) -> Option<crate::simulation::deck_predictor::SensedRoll> {
-        self.last_measurement.map(
-            |measurement| crate::simulation::deck_predictor::SensedRoll {
-                measurement,
-                landing_point_rise_m: self.roll_rise_m.0,
-                ramp_rise_m: self.roll_rise_m.1,
-            },
-        )
-    }
 }
 
 impl LateralLoop {

@@ -8,8 +8,10 @@
 //! ([`Signals::first_out_of_range`]); a run whose signals leave it ends as diverged,
 //! naming the signal.
 
-use super::lateral::LateralSignals;
+mod lateral;
+
 use crate::environment::{EarthPoint, ShipPose, ShipPoseRate, Wind};
+pub use lateral::LateralSignals;
 
 /// The largest magnitude any signal may reach before the run is declared diverged. No
 /// signal of the model comes near it (positions are kilometres, thrust about 10⁵ N); a

@@ -1,0 +1,95 @@
+//! The 3-D approach's part of the closed loop's discrete step ([`ClosedLoop::hold`],
+//! docs/model.md §10.3): the lateral loop's ship sensing, noise and guidance frame,
+//! held over the step.
+
+use super::blocks::plant::BuiltPlant;
+use super::closed_loop::{ClosedLoop, StepStreams};
+use super::lateral::{HeldLateral, LateralStep, LineupAtFrame};
+use super::outer_loops::OuterLoops;
+use crate::aircraft::six_dof::SixDofAircraft;
+use crate::aircraft::Plant;
+use crate::environment::{LateralShipMotionState, ShipMotionState, Wind};
+
+impl ClosedLoop {
+    /// The 3-D approach's part of [`ClosedLoop::hold`] at `t` (state `x`, the wind held
+    /// over the step `wind`); `None` outside it. `decided` says whether a wave-off is
+    /// flown or decided already (then no lateral decision is taken).
+    pub(crate) fn hold_lateral(
+        &mut self,
+        t: f64,
+        x: &[f64],
+        streams: &mut StepStreams,
+        dt: f64,
+        decided: bool,
+        wind: &Wind,
+    ) -> Option<LateralStep> {
+        let (Some(lateral), Some(lateral_streams), BuiltPlant::SixDof(aircraft)) =
+            (&mut self.lateral, &mut streams.lateral, &self.plant)
+        else {
+            return None;
+        };
+        let ship_state = LateralShipMotionState::from_array(&self.layout.ship_lateral.array(x));
+        let longitudinal_ship_state = ShipMotionState::from_array(&self.layout.ship.array(x));
+        let deck_view = lateral.deck_view(
+            &self.ship,
+            &self.deck,
+            &longitudinal_ship_state,
+            &ship_state,
+            t,
+        );
+        lateral.step_view = Some(deck_view);
+        lateral.sense_ship(t, &ship_state);
+        let ship_noise = lateral.ship.draw_noise(&mut lateral_streams.ship, dt);
+        if let Some(step) = lateral.held_in_frame(t, ship_noise) {
+            return Some(step);
+        }
+        let state = SixDofAircraft::state_at(x, self.layout.aircraft.offset);
+        let (kinematic, kinematics) = aircraft.kinematics(&self.hook, state);
+        // Time to go from the range to the mean aim point at the closing speed.
+        let mean_pose = self
+            .ship
+            .pose(&longitudinal_ship_state, self.ship_initial_x_m, t);
+        let range_m = mean_pose.pitch_centre_x_m
+            - self.deck.landing_point_aft_of_pitch_centre_m
+            - kinematics.hook.x_m;
+        let time_to_go_s = (range_m / lateral.closure_mps).clamp(0.0, 60.0);
+        let forecast_m = lateral.compensation_forecast_m(&self.deck, range_m, t);
+        let (bank_noise_rad, sideslip_noise_rad, heading_noise_rad) =
+            lateral.draw_read_noise(t, lateral_streams);
+        let heading_hold_weight = lateral.heading_hold.weight(time_to_go_s);
+        let air = aircraft.air_velocity_trig(
+            [state.u_mps, state.v_mps, state.w_mps],
+            &kinematic.trig,
+            wind,
+        );
+        let beta = aircraft.air_data(air).beta_rad;
+        let lineup = LineupAtFrame {
+            time_s: t,
+            hook_y_m: kinematics.hook.y_m,
+            hook_y_rate_mps: kinematics.velocity.y_mps,
+            forecast_m,
+            time_to_go_s,
+        };
+        let approach = matches!(self.outer, OuterLoops::Approach { .. });
+        let decision = approach
+            .then(|| lateral.approach_frame(&self.wave_off, &mut self.commit, &lineup, decided))
+            .flatten();
+        let held = HeldLateral {
+            ship_noise,
+            bank_noise_rad,
+            sideslip_noise_rad,
+            heading_noise_rad,
+            heading_hold_weight,
+            forecast_m,
+            read: None,
+            deck_view_time_s: t,
+        };
+        let step = LateralStep {
+            held,
+            fresh_read: lateral.fresh_read(&state, beta, &held),
+            decision,
+        };
+        lateral.keep_for_frame(&step);
+        Some(step)
+    }
+}
