@@ -7,7 +7,8 @@ use pyo3::types::{PyBool, PyComplex};
 
 use super::config::EnvConfig;
 use super::control::{AgentTaps, Control};
-use super::lateral::{self, LateralTaps};
+use super::control::LateralTaps;
+use super::lateral;
 use crate::errors::argument_error;
 
 impl EnvConfig {

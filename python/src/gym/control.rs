@@ -3,7 +3,6 @@
 use deckland::simulation::{LoopBreak, Taps};
 use pyo3::prelude::*;
 
-use super::lateral::LateralTaps;
 use crate::errors::argument_error;
 
 /// Who flies what: the control mode of the environment.
@@ -111,5 +110,28 @@ impl Taps for AgentTaps {
     #[inline(always)]
     fn idempotent(&self) -> bool {
         true
+    }
+}
+
+/// The agent's lateral commands for one interval (`None`: the built-in loop's).
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct LateralTaps {
+    pub bank_command_rad: Option<f64>,
+    pub sideslip_command_rad: Option<f64>,
+    pub aileron_rad: Option<f64>,
+    pub rudder_rad: Option<f64>,
+}
+
+impl LateralTaps {
+    /// The agent's command at `at`, if it gives one there.
+    #[inline]
+    pub(crate) fn at(&self, at: LoopBreak) -> Option<f64> {
+        match at {
+            LoopBreak::BankCommand => self.bank_command_rad,
+            LoopBreak::SideslipCommand => self.sideslip_command_rad,
+            LoopBreak::AileronCommand => self.aileron_rad,
+            LoopBreak::RudderCommand => self.rudder_rad,
+            _ => None,
+        }
     }
 }

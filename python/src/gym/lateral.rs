@@ -6,8 +6,8 @@ use deckland::scenario::Scenario as RustScenario;
 use deckland::simulation::{LoopBreak, LoopCut, Signals, Simulation};
 use pyo3::prelude::*;
 
-use super::control::Control;
-use super::observation::ObservationSpec;
+use super::control::{Control, LateralTaps};
+use super::spec::ObservationSpec;
 use crate::errors::{argument_error, value_error};
 
 const DEG: f64 = std::f64::consts::PI / 180.0;
@@ -42,29 +42,6 @@ pub(crate) struct LateralConfig {
     pub trim_sideslip_rad: f64,
     pub trim_aileron_rad: f64,
     pub trim_rudder_rad: f64,
-}
-
-/// The agent's lateral commands for one interval (`None`: the built-in loop's).
-#[derive(Debug, Clone, Copy, Default)]
-pub(crate) struct LateralTaps {
-    pub bank_command_rad: Option<f64>,
-    pub sideslip_command_rad: Option<f64>,
-    pub aileron_rad: Option<f64>,
-    pub rudder_rad: Option<f64>,
-}
-
-impl LateralTaps {
-    /// The agent's command at `at`, if it gives one there.
-    #[inline]
-    pub(crate) fn at(&self, at: LoopBreak) -> Option<f64> {
-        match at {
-            LoopBreak::BankCommand => self.bank_command_rad,
-            LoopBreak::SideslipCommand => self.sideslip_command_rad,
-            LoopBreak::AileronCommand => self.aileron_rad,
-            LoopBreak::RudderCommand => self.rudder_rad,
-            _ => None,
-        }
-    }
 }
 
 /// The action's entries of the 3-D environment, in order (the 2-D mode's longitudinal

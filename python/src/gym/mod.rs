@@ -37,6 +37,7 @@ mod observation;
 mod parallel;
 mod reward;
 mod single;
+mod spec;
 mod vector;
 
 pub use single::Env;

@@ -5,20 +5,8 @@ use deckland::simulation::Signals;
 
 use super::config::{EnvConfig, Normalisation};
 use super::lateral::{LateralConfig, LATERAL_ENTRIES, LATERAL_OBSERVATIONS};
+pub(crate) use super::spec::ObservationSpec;
 use crate::stepping::Look;
-
-/// One entry of the observation: its name, unit, where it comes from, and its scale
-/// and realistic range (the normalised value is (raw − offset)/scale, clipped to the
-/// range's image).
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct ObservationSpec {
-    pub name: &'static str,
-    pub unit: &'static str,
-    pub source: &'static str,
-    pub scale: f64,
-    pub low: f64,
-    pub high: f64,
-}
 
 const DEG: f64 = std::f64::consts::PI / 180.0;
 
