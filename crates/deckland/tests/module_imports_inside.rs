@@ -214,6 +214,16 @@ fn the_environment_modules_import_each_other_in_no_circle() {
 }
 
 #[test]
+fn the_simulation_modules_import_each_other_in_no_circle() {
+    // The loop's parts (issue 41): the closed loop uses the lateral loop, the blocks and
+    // the bus; none of them reaches back up to it, and none imports through the facade.
+    let graph = assert_acyclic("simulation", "crate::simulation");
+    assert!(graph["closed_loop"].contains("lateral"), "{graph:?}");
+    assert!(!graph["lateral"].contains("closed_loop"), "{graph:?}");
+    assert!(!graph["signals"].contains("lateral"), "{graph:?}");
+}
+
+#[test]
 fn the_circle_finder_sees_a_group_import_and_a_planted_circle() {
     assert_eq!(
         group_heads("{a, b::{c, d}, E}"),

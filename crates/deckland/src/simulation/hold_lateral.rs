@@ -93,3 +93,43 @@ impl ClosedLoop {
         Some(step)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn the_off_centre_probability_waves_off_in_the_loop() {
+        // The default 3-D approach with a limit of 0: any probability above it waves off,
+        // so the wave-off comes at the window's first frame, on the off-centre
+        // probability, with a value (in percent) the floor and the scatter make small
+        // but positive. With the default limit the same approach does not wave off on it.
+        use crate::control::WaveOffCriterion;
+        use crate::scenario::Scenario;
+        use crate::simulation::recorder::Recorder;
+        use crate::simulation::runner::{Simulation, Stop};
+        struct Nothing;
+        impl Recorder for Nothing {}
+        let fly = |limit: Option<f64>| {
+            let scenario = Scenario {
+                seed: 3,
+                ..Scenario::default()
+            };
+            let mut simulation = Simulation::new(&scenario).unwrap();
+            if let Some(limit) = limit {
+                let lateral = simulation.system_mut().lateral.as_mut().expect("3-D");
+                lateral.wave_off.max_off_centre_probability = limit;
+            }
+            while !matches!(simulation.step(&mut Nothing), Stop::Ended(_)) {}
+            simulation.wave_off_decision().map(|(_, decision)| decision)
+        };
+        let decision = fly(Some(0.0)).expect("waves off");
+        assert_eq!(decision.criterion, WaveOffCriterion::OffCentreProbability);
+        assert!(
+            decision.value > 0.0 && decision.value < 1e-6,
+            "{} %",
+            decision.value
+        );
+        assert_eq!(decision.limit, 0.0);
+        assert!(fly(None)
+            .is_none_or(|decision| decision.criterion != WaveOffCriterion::OffCentreProbability));
+    }
+}

@@ -1,4 +1,4 @@
-//! The pitch law's part of building the loop (`super::setup`): a jerk-limited pitch step
+//! The pitch law's part of building the loop (in `setup.rs`): a jerk-limited pitch step
 //! shaped for the elevator, and a registered pitch law refused when the hardware cannot
 //! fly it.
 

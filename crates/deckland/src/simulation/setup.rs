@@ -46,7 +46,7 @@ pub enum SetupError {
     Block(#[from] BlockPlacementError),
 }
 
-/// Everything [`super::Simulation`] needs to start.
+/// Everything `Simulation` needs to start.
 pub(crate) struct Setup {
     pub system: ClosedLoop,
     pub initial: Vec<f64>,

@@ -2,7 +2,7 @@
 //!
 //! The loop is an ordered list of blocks, [`BUILT_IN_BLOCKS`]: each declares the
 //! registered signals it reads and writes ([`crate::simulation::SIGNALS`]), and its
-//! continuous states, which [`super::LoopLayout`] lays out in the list's order. At every
+//! continuous states, which `LoopLayout` lays out in the list's order. At every
 //! evaluation the blocks compute their outputs in that order onto the bus (a
 //! [`Signals`], every registered signal of one instant), then their state rates. A block
 //! only reads what a block before it wrote, or the time, which the loop writes first (a
@@ -18,13 +18,13 @@
 //! command filter) is inserted at one of the named points in brackets
 //! ([`BlockPosition`]), with its own states; see `examples/custom_block.rs`. The built-in
 //! blocks are evaluated monomorphically, in the list's order, by
-//! [`super::ClosedLoop::evaluate`]; without user blocks the bus never leaves registers
+//! `ClosedLoop::evaluate`; without user blocks the bus never leaves registers
 //! (no cost over a hand-written loop, BENCHMARKS.md).
 //!
 //! The discrete parts — the ship's sensing and the deck-motion estimator, the wave-off
 //! supervisor, the flight-control computer's frames — run once per step, before the
-//! evaluations, in [`super::ClosedLoop::hold`]; what they decide reaches the blocks as
-//! held inputs ([`super::HeldInputs`]) and the run loop as events.
+//! evaluations, in `ClosedLoop::hold`; what they decide reaches the blocks as
+//! held inputs (`HeldInputs`) and the run loop as events.
 
 pub(crate) mod arrival_timing;
 pub(crate) mod direct_lift;

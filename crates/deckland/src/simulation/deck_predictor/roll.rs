@@ -69,3 +69,75 @@ impl SensedRoll {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sensors::LateralShipMotionMeasurement;
+    use crate::simulation::lateral::forecast::roll_forecast;
+
+    #[test]
+    fn the_sensed_roll_moves_the_longitudinal_forecast_by_the_points_rise() {
+        let forecast = DeckForecast {
+            ramp_height_m: 1.0,
+            landing_point_climb_rate_mps: 0.2,
+            landing_point_height_m: 2.0,
+            pitch_rad: 0.01,
+            ramp_climb_rate_mps: -0.1,
+            ramp_height_sigma_m: 0.3,
+            landing_point_climb_rate_sigma_mps: 0.4,
+            roll_rad: 0.0,
+        };
+        let roll = SensedRoll {
+            measurement: LateralShipMotionMeasurement {
+                time_s: 10.0,
+                roll_rad: 0.02,
+                roll_rate_radps: 0.005,
+                yaw_rad: 0.0,
+                yaw_rate_radps: 0.0,
+                sway_m: 0.0,
+                sway_rate_mps: 0.0,
+            },
+            landing_point_rise_m: 10.0,
+            ramp_rise_m: 0.6,
+        };
+        // Touchdown 3 s after a measurement 0.5 s old; the ramp, 60 m aft at 60 m/s, 1 s
+        // before it. The roll at each horizon is the oscillator's, checked above.
+        let moved = roll.add_to(forecast, 10.5, 2.5, 60.0, 60.0);
+        let (at_touchdown, rate_at_touchdown) = roll_forecast(&roll.measurement, 3.0);
+        let (at_ramp, rate_at_ramp) = roll_forecast(&roll.measurement, 2.0);
+        let close = |a: f64, b: f64| (a - b).abs() < 1e-12;
+        assert!(close(
+            moved.landing_point_height_m,
+            2.0 + 10.0 * at_touchdown.sin()
+        ));
+        assert!(close(
+            moved.landing_point_climb_rate_mps,
+            0.2 + 10.0 * at_touchdown.cos() * rate_at_touchdown
+        ));
+        assert!(close(moved.ramp_height_m, 1.0 + 0.6 * at_ramp.sin()));
+        assert!(close(
+            moved.ramp_climb_rate_mps,
+            -0.1 + 0.6 * at_ramp.cos() * rate_at_ramp
+        ));
+        // The σ and the pitch are the heave-and-pitch forecast's.
+        assert_eq!(
+            (
+                moved.pitch_rad,
+                moved.ramp_height_sigma_m,
+                moved.landing_point_climb_rate_sigma_mps
+            ),
+            (0.01, 0.3, 0.4)
+        );
+        // A level ship at rest moves nothing.
+        let level = SensedRoll {
+            measurement: LateralShipMotionMeasurement {
+                roll_rad: 0.0,
+                roll_rate_radps: 0.0,
+                ..roll.measurement
+            },
+            ..roll
+        };
+        assert_eq!(level.add_to(forecast, 10.5, 2.5, 60.0, 60.0), forecast);
+    }
+}

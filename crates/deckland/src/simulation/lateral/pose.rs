@@ -316,7 +316,7 @@ mod tests {
             ..ShipMotionParameters::default()
         })
         .expect("valid");
-        let lateral = super::super::build::test_loop(&deck, &ship);
+        let lateral = crate::simulation::lateral::build::test_loop(&deck, &ship);
         let ship_state = ShipMotionState::from_array(&[0.3, 0.1, -0.05, 0.01, 0.2, 0.0, 0.03, 0.0]);
         let lateral_state = LateralShipMotionState::from_array(&[
             0.01, 0.002, 0.003, 0.001, 0.0, 0.0, 0.4, 0.05, 0.0, 0.0,

@@ -122,7 +122,7 @@ pub struct Signals {
 /// One signal of the loop, declared once in [`SIGNALS`]: its name, its unit (SI, the
 /// unit the code computes in) and how to read it from [`Signals`]. Every list of
 /// signals — the divergence check, the recorded columns ([`RecordedColumn`]), the loop's
-/// taps ([`super::LoopBreak::signal`]) — refers to this registry.
+/// taps (`LoopBreak::signal`) — refers to this registry.
 #[derive(Clone, Copy)]
 pub struct SignalSpec {
     /// The signal's identifier.

@@ -107,7 +107,7 @@ fn numbered_signals() -> Signals {
         aileron_command_rad: Some(48.0),
         rudder_rad: Some(49.0),
         rudder_command_rad: Some(50.0),
-        lateral: crate::simulation::lateral::LateralSignals {
+        lateral: crate::simulation::signals::LateralSignals {
             cross_track_m: Some(51.0),
             cross_track_rate_mps: Some(52.0),
             aim_point_y_m: Some(53.0),
