@@ -212,6 +212,26 @@ def rare(
     seed: Optional[int] = None,
     threads: Optional[int] = None,
 ) -> Dict[str, Any]: ...
+def rare_repetition(
+    scenario: Scenario,
+    event: str,
+    repetition: int,
+    share: int,
+    threshold: Optional[float] = None,
+    particles: Optional[int] = None,
+    seed: Optional[int] = None,
+    threads: Optional[int] = None,
+) -> Any: ...
+def rare_batched(
+    scenario: Scenario,
+    event: str,
+    run_batch: Callable[[int, int, int], List[Any]],
+    threshold: Optional[float] = None,
+    target_rel_error: Optional[float] = None,
+    max_runs: Optional[int] = None,
+    particles: Optional[int] = None,
+    seed: Optional[int] = None,
+) -> Dict[str, Any]: ...
 def campaign_shard(
     scenario: Scenario,
     runs: int,

@@ -1,4 +1,6 @@
-"""Campaigns on a Dask cluster: the shards of one campaign flown by Dask workers.
+"""Campaigns and rare-event estimates on a Dask cluster.
+
+Campaigns: the shards of one campaign flown by Dask workers.
 
 :func:`campaign` splits a campaign into shards (shard K of M flies the runs i with
 i mod M = K), maps them over a ``dask.distributed`` cluster — each task calls the
@@ -9,18 +11,23 @@ only sees a :class:`distributed.Client`, whether it talks to a ``LocalCluster``,
 Slurm or PBS through ``dask-jobqueue``, or to Kubernetes through ``dask-kubernetes``
 (python/README.md shows each).
 
+Rare events: :func:`rare` flies each batch of splitting's independent repetitions as
+Dask tasks, one repetition a task, and drives the estimate with the same Rust code as
+:func:`deckland.rare`: repetition r depends only on the scenario, the request and r, so
+the estimate is :func:`deckland.rare`'s, bit for bit.
+
 Needs the ``dask`` extra (``pip install "deckland[dask]"``) here and deckland installed
 on every worker.
 """
 
 from __future__ import annotations
 
-from typing import Any, Callable, Optional, Union
+from typing import Any, Callable, Dict, List, Optional, Union
 
 from . import Campaign, Scenario, _deckland, progress_callback
 from ._tables import table
 
-__all__ = ["campaign"]
+__all__ = ["campaign", "rare"]
 
 
 def _fly_shard(
@@ -106,3 +113,92 @@ def _report_shards(
         done += (runs - k + shards - 1) // shards * controllers
         report(done, total)
 
+
+
+def _fly_repetition(
+    repetition: int,
+    scenario: Scenario,
+    event: str,
+    share: int,
+    threshold: Optional[float],
+    particles: Optional[int],
+    seed: Optional[int],
+    threads: int,
+) -> Any:
+    """One task: repetition ``repetition`` of the estimate, on a worker."""
+    return _deckland.rare_repetition(
+        scenario, event, repetition, share, threshold, particles, seed, threads
+    )
+
+
+def rare(
+    client: Any,
+    scenario: Scenario,
+    event: str,
+    threshold: Optional[float] = None,
+    target_rel_error: Optional[float] = None,
+    max_runs: Optional[int] = None,
+    particles: Optional[int] = None,
+    seed: Optional[int] = None,
+    *,
+    threads_per_task: int = 1,
+    progress: Union[bool, Callable[[int, int], Any], None] = None,
+) -> Dict[str, Any]:
+    """:func:`deckland.rare` on the cluster of ``client``: the probability per approach of
+    ``event`` by splitting, each repetition a Dask task.
+
+    The arguments are :func:`deckland.rare`'s; each task flies one repetition on
+    ``threads_per_task`` threads of its worker. Returns the dict that
+    :func:`deckland.rare` returns for the same arguments, bit for bit. Splitting decides
+    after each batch of 8 repetitions whether the target is met, so the cluster keeps at
+    most 8 tasks busy; larger clusters pay off through ``threads_per_task``.
+
+    ``progress``: ``True`` writes a line to stderr at each batch, a callable is called as
+    ``progress(done, None)`` with the repetitions finished so far (the total is not known
+    in advance: splitting stops at the target).
+    """
+    if progress is True:
+        report: Optional[Callable[[int, Any], Any]] = _repetition_lines()
+    elif progress is None or progress is False or callable(progress):
+        report = progress or None
+    else:
+        raise TypeError(
+            f"`progress` = {progress!r}: expected True, False, None or a callable progress(done, total)"
+        )
+    done = [0]
+
+    def run_batch(first: int, size: int, share: int) -> List[Any]:
+        futures = client.map(
+            _fly_repetition,
+            list(range(first, first + size)),
+            scenario=scenario,
+            event=event,
+            share=share,
+            threshold=threshold,
+            particles=particles,
+            seed=seed,
+            threads=threads_per_task,
+            pure=False,
+        )
+        runs = client.gather(futures)
+        done[0] += size
+        if report is not None:
+            report(done[0], None)
+        return runs
+
+    return _deckland.rare_batched(
+        scenario, event, run_batch, threshold, target_rel_error, max_runs, particles, seed
+    )
+
+
+def _repetition_lines() -> Callable[[int, Any], None]:
+    """Writes ``dask rare: N repetitions, t s`` to stderr after each batch."""
+    import sys
+    import time
+
+    started = time.monotonic()
+
+    def report(done: int, _total: Any) -> None:
+        print(f"dask rare: {done} repetitions, {time.monotonic() - started:.0f} s", file=sys.stderr, flush=True)
+
+    return report

@@ -53,7 +53,7 @@ mod _deckland {
     #[pymodule_export]
     use super::lateral_step::lateral_step;
     #[pymodule_export]
-    use super::rare::rare;
+    use super::rare::{rare, rare_batched, rare_repetition};
     #[pymodule_export]
     use super::scenario::Scenario;
     #[pymodule_export]

@@ -1,8 +1,13 @@
 //! `deckland.rare`: the probability per approach of a catastrophe by splitting, as
-//! `deckland rare` (docs/rare-events.md).
+//! `deckland rare` (docs/rare-events.md); and its Dask form's two halves: one repetition
+//! flown on a worker (`rare_repetition`), and the estimate driven from batches of them
+//! (`rare_batched`).
 
 use deckland::monte_carlo::{MAX_CAMPAIGN_SEED, MAX_THREADS};
-use deckland::rare::{estimate_rate, RareEvent, RareRequest};
+use deckland::rare::{
+    estimate_rate, estimate_rate_batched, fly_repetition, AmsError, Branch, EventParticle,
+    Outcome, PartialReason, RareEvent, RareRequest, Run,
+};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyFloat, PyInt};
@@ -29,14 +34,11 @@ fn real(name: &str, value: &Bound<'_, PyAny>) -> PyResult<f64> {
     value.extract::<f64>()
 }
 
-/// Estimates the probability per approach of `event` in `scenario` by adaptive
-/// multilevel splitting; returns the result as `deckland rare` writes `summary.json`.
-#[pyfunction]
-#[pyo3(signature = (scenario, event, threshold = None, target_rel_error = None, max_runs = None, particles = None, seed = None, threads = None))]
+/// The request of the arguments that `deckland.rare` shares with its Dask form, and the
+/// thread count: each checked and defaulted as `deckland rare` does.
 #[allow(clippy::too_many_arguments)]
-pub fn rare(
-    py: Python<'_>,
-    scenario: PyRef<'_, Scenario>,
+fn request_of(
+    scenario: &Scenario,
     event: &str,
     threshold: Option<&Bound<'_, PyAny>>,
     target_rel_error: Option<&Bound<'_, PyAny>>,
@@ -44,7 +46,7 @@ pub fn rare(
     particles: Option<&Bound<'_, PyAny>>,
     seed: Option<&Bound<'_, PyAny>>,
     threads: Option<&Bound<'_, PyAny>>,
-) -> PyResult<Py<PyAny>> {
+) -> PyResult<(RareRequest, usize)> {
     let event = RareEvent::from_name(event).map_err(value_error)?;
     let defaults = RareRequest::new(event, scenario.scenario.seed);
     let integer = |name: &str, value: Option<&Bound<'_, PyAny>>, min, max, default| match value {
@@ -71,7 +73,36 @@ pub fn rare(
     let default_threads =
         std::thread::available_parallelism().map_or(1, |n| n.get().min(MAX_THREADS as usize));
     let threads = integer("threads", threads, 1, MAX_THREADS, default_threads as u64)? as usize;
-    let flown = scenario.scenario;
+    Ok((request, threads))
+}
+
+/// Estimates the probability per approach of `event` in `scenario` by adaptive
+/// multilevel splitting; returns the result as `deckland rare` writes `summary.json`.
+#[pyfunction]
+#[pyo3(signature = (scenario, event, threshold = None, target_rel_error = None, max_runs = None, particles = None, seed = None, threads = None))]
+#[allow(clippy::too_many_arguments)]
+pub fn rare(
+    py: Python<'_>,
+    scenario: PyRef<'_, Scenario>,
+    event: &str,
+    threshold: Option<&Bound<'_, PyAny>>,
+    target_rel_error: Option<&Bound<'_, PyAny>>,
+    max_runs: Option<&Bound<'_, PyAny>>,
+    particles: Option<&Bound<'_, PyAny>>,
+    seed: Option<&Bound<'_, PyAny>>,
+    threads: Option<&Bound<'_, PyAny>>,
+) -> PyResult<Py<PyAny>> {
+    let (request, threads) = request_of(
+        &scenario,
+        event,
+        threshold,
+        target_rel_error,
+        max_runs,
+        particles,
+        seed,
+        threads,
+    )?;
+    let flown = scenario.scenario.clone();
     let result = py.detach(|| {
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
@@ -82,4 +113,179 @@ pub fn rare(
     });
     let result = result.map_err(|e| value_error(format!("cannot estimate the rate: {e}")))?;
     to_python(py, &result)
+}
+
+/// Repetition `repetition` of `deckland.rare(scenario, event, ...)` flown here on at most
+/// `share` steps and `threads` threads: a Dask task. Returns the run as plain Python
+/// values (`run_from_python` reads it back, every number exact).
+#[pyfunction]
+#[pyo3(signature = (scenario, event, repetition, share, threshold = None, particles = None, seed = None, threads = None))]
+#[allow(clippy::too_many_arguments)]
+pub fn rare_repetition(
+    py: Python<'_>,
+    scenario: PyRef<'_, Scenario>,
+    event: &str,
+    repetition: u64,
+    share: u64,
+    threshold: Option<&Bound<'_, PyAny>>,
+    particles: Option<&Bound<'_, PyAny>>,
+    seed: Option<&Bound<'_, PyAny>>,
+    threads: Option<&Bound<'_, PyAny>>,
+) -> PyResult<Py<PyAny>> {
+    let (request, threads) = request_of(
+        &scenario, event, threshold, None, None, particles, seed, threads,
+    )?;
+    let flown = scenario.scenario.clone();
+    let run = py.detach(|| {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .map_err(|e| e.to_string())?;
+        pool.install(|| fly_repetition(&flown, &request, repetition, share))
+            .map_err(|e| e.to_string())
+    });
+    let run = run.map_err(|e| value_error(format!("cannot fly the repetition: {e}")))?;
+    run_to_python(py, &run)
+}
+
+/// `deckland.rare`'s estimate with each batch of repetitions flown by
+/// `run_batch(first, size, share)`, which returns the runs of repetitions `first` …
+/// `first + size − 1` as `rare_repetition` gives them, in order: the same result to the
+/// bit. An exception of `run_batch` ends the estimate with it.
+#[pyfunction]
+#[pyo3(signature = (scenario, event, run_batch, threshold = None, target_rel_error = None, max_runs = None, particles = None, seed = None))]
+#[allow(clippy::too_many_arguments)]
+pub fn rare_batched(
+    py: Python<'_>,
+    scenario: PyRef<'_, Scenario>,
+    event: &str,
+    run_batch: &Bound<'_, PyAny>,
+    threshold: Option<&Bound<'_, PyAny>>,
+    target_rel_error: Option<&Bound<'_, PyAny>>,
+    max_runs: Option<&Bound<'_, PyAny>>,
+    particles: Option<&Bound<'_, PyAny>>,
+    seed: Option<&Bound<'_, PyAny>>,
+) -> PyResult<Py<PyAny>> {
+    if !run_batch.is_callable() {
+        return Err(PyTypeError::new_err(format!(
+            "`run_batch` = {run_batch}: expected a callable run_batch(first, size, share)"
+        )));
+    }
+    let (request, _) = request_of(
+        &scenario,
+        event,
+        threshold,
+        target_rel_error,
+        max_runs,
+        particles,
+        seed,
+        None,
+    )?;
+    let mut failure: Option<PyErr> = None;
+    let batch = |repetitions: std::ops::Range<u64>, share: u64| {
+        let size = repetitions.end - repetitions.start;
+        let runs = run_batch
+            .call1((repetitions.start, size, share))
+            .and_then(|list| {
+                list.try_iter()?
+                    .map(|item| run_from_python(&item?))
+                    .collect::<PyResult<Vec<Run>>>()
+            });
+        match runs {
+            Ok(runs) => runs.into_iter().map(Ok).collect(),
+            Err(error) => {
+                let message = error.to_string();
+                failure.get_or_insert(error);
+                repetitions
+                    .map(|_| Err(AmsError::Batch(message.clone())))
+                    .collect()
+            }
+        }
+    };
+    let result = estimate_rate_batched(&scenario.scenario, &request, batch, |_, _| {});
+    if let Some(error) = failure {
+        return Err(error);
+    }
+    let result = result.map_err(|e| value_error(format!("cannot estimate the rate: {e}")))?;
+    to_python(py, &result)
+}
+
+/// A run as plain Python values, every number exact (a float for each f64, infinities
+/// included): `(estimate, (outcome, level, limit), iterations, levels, killed, steps,
+/// trajectories, reached, events)`, an event `(index, max, [(step, key), ...])`.
+fn run_to_python(py: Python<'_>, run: &Run) -> PyResult<Py<PyAny>> {
+    let outcome = match run.outcome {
+        Outcome::Converged => ("converged", 0.0, 0u64),
+        Outcome::Extinct { level } => ("extinct", level, 0),
+        Outcome::Partial(PartialReason::StepBudget { budget }) => ("step_budget", 0.0, budget),
+        Outcome::Partial(PartialReason::MaxIterations { limit }) => ("max_iterations", 0.0, limit),
+    };
+    let events: Vec<(usize, f64, Vec<(usize, u64)>)> = run
+        .events
+        .iter()
+        .map(|e| {
+            let lineage = e.lineage.iter().map(|b| (b.step, b.key)).collect();
+            (e.index, e.max, lineage)
+        })
+        .collect();
+    let value = (
+        run.estimate,
+        outcome,
+        run.iterations,
+        run.levels.clone(),
+        run.killed.clone(),
+        run.steps,
+        run.trajectories,
+        run.reached,
+        events,
+    );
+    Ok(value.into_pyobject(py)?.into_any().unbind())
+}
+
+/// The run that [`run_to_python`] wrote (`ValueError` for anything else).
+fn run_from_python(value: &Bound<'_, PyAny>) -> PyResult<Run> {
+    type Events = Vec<(usize, f64, Vec<(usize, u64)>)>;
+    #[allow(clippy::type_complexity)]
+    let (estimate, (outcome, level, limit), iterations, levels, killed, steps, trajectories, reached, events): (
+        Option<f64>,
+        (String, f64, u64),
+        u64,
+        Vec<f64>,
+        Vec<usize>,
+        u64,
+        u64,
+        usize,
+        Events,
+    ) = value.extract().map_err(|e| {
+        value_error(format!("a repetition came back as something other than a run: {e}"))
+    })?;
+    let outcome = match outcome.as_str() {
+        "converged" => Outcome::Converged,
+        "extinct" => Outcome::Extinct { level },
+        "step_budget" => Outcome::Partial(PartialReason::StepBudget { budget: limit }),
+        "max_iterations" => Outcome::Partial(PartialReason::MaxIterations { limit }),
+        other => return Err(value_error(format!("a repetition came back with outcome {other:?}"))),
+    };
+    let events = events
+        .into_iter()
+        .map(|(index, max, lineage)| EventParticle {
+            index,
+            max,
+            lineage: lineage
+                .into_iter()
+                .map(|(step, key)| Branch { step, key })
+                .collect(),
+        })
+        .collect();
+    Ok(Run {
+        estimate,
+        outcome,
+        iterations,
+        levels,
+        killed,
+        steps,
+        trajectories,
+        reached,
+        events,
+    })
 }

@@ -1,7 +1,8 @@
 """Shards, merges and Dask: ``deckland.dask.campaign`` on a local cluster of two worker
 processes is ``deckland.campaign``, bit for bit; the CLI's ``runs.parquet`` reads as its
 ``runs.csv``; the rare-event bounds match scipy's beta quantiles (an independent
-implementation: Clopper–Pearson's bound is the beta distribution's 95 % quantile)."""
+implementation: Clopper–Pearson's bound is the beta distribution's 95 % quantile);
+``deckland.dask.rare`` is ``deckland.rare``, bit for bit."""
 
 from __future__ import annotations
 
@@ -148,3 +149,33 @@ def test_a_dask_campaign_reports_its_shards_as_they_come_back(client, capsys):
     assert len(calls) == 4 and all(a[0] <= b[0] for a, b in zip(calls, calls[1:]))
     deckland.dask.campaign(client, scenario, 5, seed=1, shards=2, progress=True)
     assert "dask campaign: 5/5 runs (100 %)" in capsys.readouterr().err
+
+
+def test_a_dask_rare_estimate_is_the_single_machine_one(client):
+    # Splitting's repetitions flown as tasks on two worker processes: the same estimate,
+    # interval, levels and flights that reached the event, to the bit, as on one machine.
+    scenario = deckland.Scenario.from_file(SCENARIOS / "paper-adverse.toml")
+    request = dict(threshold=1.0, particles=8, max_runs=150, seed=4)
+    expected = deckland.rare(scenario, "ramp_strike", threads=1, **request)
+    seen = []
+    actual = deckland.dask.rare(
+        client, scenario, "ramp_strike", progress=lambda done, total: seen.append(done), **request
+    )
+    assert actual == expected
+    assert 0.0 < actual["estimate"]["probability"] < 1.0
+    assert len(actual["levels"]) == actual["estimate"]["repetitions"] + actual["estimate"]["partial_repetitions"]
+    assert seen and seen == sorted(seen) and seen[-1] == len(actual["levels"])
+
+
+def test_a_failing_dask_rare_batch_raises_its_error(client):
+    scenario = deckland.Scenario.paper()
+
+    def broken(first, size, share):
+        raise RuntimeError(f"worker lost at repetition {first}")
+
+    with pytest.raises(RuntimeError, match="worker lost at repetition 0"):
+        deckland._deckland.rare_batched(scenario, "ramp_strike", broken, 1.0, None, 150, 8, 4)
+    with pytest.raises(ValueError, match="other than a run"):
+        deckland._deckland.rare_batched(
+            scenario, "ramp_strike", lambda first, size, share: [None] * size, 1.0, None, 150, 8, 4
+        )

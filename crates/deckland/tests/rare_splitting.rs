@@ -1,10 +1,11 @@
 //! Splitting on approaches (docs/rare-events.md): a flight that reached the event, flown
 //! again from the start along its branches, reaches it again, bit for bit; the result
-//! does not depend on the thread count; bad requests are named.
+//! does not depend on the thread count, nor on where the repetitions are flown; bad
+//! requests are named.
 
 use deckland::rare::{
-    estimate_rate, replay_event_flight, run, ApproachFlight, EventThresholds, RareEvent,
-    RareRequest, Settings,
+    estimate_rate, estimate_rate_batched, fly_repetition, replay_event_flight, run, AmsError,
+    ApproachFlight, EventThresholds, RareEvent, RareRequest, Settings,
 };
 use deckland::scenario::Scenario;
 
@@ -61,6 +62,43 @@ fn the_estimate_is_the_same_on_one_and_on_two_threads() {
     let one = on(1);
     assert!(one.estimate.repetitions >= 1);
     assert_eq!(one, on(2));
+}
+
+#[test]
+fn repetitions_flown_one_by_one_elsewhere_give_the_same_estimate() {
+    // What Dask's workers do (deckland.dask.rare): each repetition flown by itself from the
+    // scenario and the request, the batches driven by estimate_rate_batched.
+    let request = RareRequest {
+        threshold: Some(1.0),
+        particles: 8,
+        max_runs: 300,
+        ..RareRequest::new(RareEvent::RampStrike, 3)
+    };
+    let whole = estimate_rate(&scenario(), &request, |_, _| {}).expect("estimate");
+    let mut batches = Vec::new();
+    let batched = estimate_rate_batched(
+        &scenario(),
+        &request,
+        |repetitions, share| {
+            batches.push(repetitions.clone());
+            repetitions
+                .map(|r| {
+                    fly_repetition(&scenario(), &request, r, share)
+                        .map_err(|e| AmsError::Batch(e.to_string()))
+                })
+                .collect()
+        },
+        |_, _| {},
+    )
+    .expect("estimate");
+    assert_eq!(whole, batched);
+    assert_eq!(batches.first(), Some(&(0..8)));
+    // A batch that does not come back whole ends the estimate with a named error.
+    let short = estimate_rate_batched(&scenario(), &request, |_, _| Vec::new(), |_, _| {});
+    assert!(
+        matches!(&short, Err(e) if e.to_string().contains("0 runs came back for the 8 repetitions from 0")),
+        "{short:?}"
+    );
 }
 
 #[test]

@@ -20,10 +20,13 @@ pub mod score;
 pub mod splitting;
 
 pub use flight::{ApproachFlight, FlightError};
-pub use rate::{estimate_rate, replay_event_flight, RareError, RareRequest, RareResult};
+pub use rate::{
+    estimate_rate, estimate_rate_batched, fly_repetition, replay_event_flight, RareError,
+    RareRequest, RareResult,
+};
 pub use score::{EventScore, EventThresholds, RareEvent};
 pub use splitting::{
-    estimate, estimate_observed, refly, repetition_seed, run, Advance, AmsError, Branch, Budget,
-    Estimate, EventParticle, Outcome, PartialReason, Run, Settings, Stop, Trajectory,
-    MIN_REPETITIONS_FOR_TARGET, REPETITIONS_PER_BATCH,
+    estimate, estimate_batched, estimate_observed, refly, repetition_seed, run, Advance, AmsError,
+    Branch, Budget, Estimate, EventParticle, Outcome, PartialReason, Run, Settings, Stop,
+    Trajectory, MIN_REPETITIONS_FOR_TARGET, REPETITIONS_PER_BATCH,
 };

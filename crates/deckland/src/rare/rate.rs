@@ -1,12 +1,14 @@
 //! The rate of a catastrophe per approach of a scenario, by splitting (`deckland rare`,
-//! Python's `deckland.rare`): [`estimate_rate`].
+//! Python's `deckland.rare`): [`estimate_rate`]; with the repetitions flown elsewhere
+//! (Dask's workers), [`estimate_rate_batched`] and [`fly_repetition`].
 
 use serde::Serialize;
 
 use super::flight::{ApproachFlight, FlightError};
 use super::score::{EventThresholds, RareEvent};
 use super::splitting::{
-    estimate_observed, AmsError, Budget, Estimate, EventParticle, Run, Settings,
+    estimate_batched, repetition_seed, run, AmsError, Budget, Estimate, EventParticle, Run,
+    Settings,
 };
 use crate::parameters::{Bounds, ParameterError};
 use crate::recording::SummaryRecorder;
@@ -79,6 +81,17 @@ impl RareRequest {
 }
 
 impl RareRequest {
+    /// The splitting's settings: `particles`, a tenth of them dropped at each level
+    /// (at least one), a stored copy every [`CHECKPOINT_EVERY_STEPS`], the event at 0.
+    pub fn settings(&self) -> Settings {
+        Settings {
+            particles: self.particles,
+            killed_per_iteration: (self.particles / 10).max(1),
+            checkpoint_every: CHECKPOINT_EVERY_STEPS,
+            ..Settings::new(0.0)
+        }
+    }
+
     /// Checks the request and sets up the approach it starts from, with the thresholds
     /// it flies (the scenario's, `threshold` moving the event's): everything that can be
     /// refused before any flying.
@@ -143,20 +156,55 @@ pub struct RareResult {
 pub fn estimate_rate(
     scenario: &Scenario,
     request: &RareRequest,
+    progress: impl FnMut(u64, &Run),
+) -> Result<RareResult, RareError> {
+    let (start, _) = request.start(scenario)?;
+    let settings = request.settings();
+    let run_batch = |repetitions: std::ops::Range<u64>, share: u64| {
+        use rayon::prelude::*;
+        repetitions
+            .into_par_iter()
+            .map(|r| run(&start, &settings, repetition_seed(request.seed, r), share))
+            .collect()
+    };
+    estimate_rate_batched(scenario, request, run_batch, progress)
+}
+
+/// Repetition `repetition` of the estimate of `request` in `scenario`, flown on at most
+/// `share` steps: what [`estimate_rate`] flies for it, to the bit, wherever it is flown
+/// (a cluster's worker gets the scenario and the request, not the flight).
+pub fn fly_repetition(
+    scenario: &Scenario,
+    request: &RareRequest,
+    repetition: u64,
+    share: u64,
+) -> Result<Run, RareError> {
+    let (start, _) = request.start(scenario)?;
+    let settings = request.settings();
+    Ok(run(
+        &start,
+        &settings,
+        repetition_seed(request.seed, repetition),
+        share,
+    )?)
+}
+
+/// As [`estimate_rate`], with each batch of repetitions flown by
+/// `run_batch(repetitions, share)` ([`fly_repetition`] for each, in order): the same
+/// result to the bit.
+pub fn estimate_rate_batched(
+    scenario: &Scenario,
+    request: &RareRequest,
+    run_batch: impl FnMut(std::ops::Range<u64>, u64) -> Vec<Result<Run, AmsError>>,
     mut progress: impl FnMut(u64, &Run),
 ) -> Result<RareResult, RareError> {
-    let (start, thresholds) = request.start(scenario)?;
+    let (_, thresholds) = request.start(scenario)?;
+    request.settings().validate()?;
     let approach_steps = Simulation::new(scenario)
         .map_err(FlightError::from)?
         .run(&mut SummaryRecorder)
         .steps
         .max(1);
-    let settings = Settings {
-        particles: request.particles,
-        killed_per_iteration: (request.particles / 10).max(1),
-        checkpoint_every: CHECKPOINT_EVERY_STEPS,
-        ..Settings::new(0.0)
-    };
     let budget = Budget {
         target_rel_error: Some(request.target_rel_error),
         max_repetitions: u64::MAX,
@@ -164,7 +212,7 @@ pub fn estimate_rate(
     };
     let mut levels = Vec::new();
     let mut event_flights = Vec::new();
-    let estimate = estimate_observed(&start, &settings, request.seed, budget, |r, run| {
+    let estimate = estimate_batched(budget, run_batch, |r, run| {
         levels.push(run.levels.clone());
         for particle in &run.events {
             if event_flights.len() < MAX_EVENT_FLIGHTS {

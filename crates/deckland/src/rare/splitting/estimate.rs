@@ -180,6 +180,26 @@ pub fn estimate_observed<T: Trajectory>(
     settings: &Settings,
     seed: u64,
     budget: Budget,
+    observe: impl FnMut(u64, &Run),
+) -> Result<Estimate, AmsError> {
+    settings.validate()?;
+    let run_batch = |repetitions: std::ops::Range<u64>, share: u64| {
+        repetitions
+            .into_par_iter()
+            .map(|r| run(start, settings, repetition_seed(seed, r), share))
+            .collect()
+    };
+    estimate_batched(budget, run_batch, observe)
+}
+
+/// As [`estimate_observed`], with each batch flown by `run_batch(repetitions, share)`:
+/// the runs of the repetitions in `repetitions`, in order, each on at most `share`
+/// steps, as [`run`] gives them from [`repetition_seed`] (elsewhere, for example by a
+/// cluster's workers, each from the same start and settings). The estimate is the same
+/// as [`estimate_observed`]'s to the bit whenever `run_batch` returns those runs.
+pub fn estimate_batched(
+    budget: Budget,
+    mut run_batch: impl FnMut(std::ops::Range<u64>, u64) -> Vec<Result<Run, AmsError>>,
     mut observe: impl FnMut(u64, &Run),
 ) -> Result<Estimate, AmsError> {
     let Budget {
@@ -187,7 +207,6 @@ pub fn estimate_observed<T: Trajectory>(
         max_repetitions,
         max_steps: max_steps_budget,
     } = budget;
-    settings.validate()?;
     if let Some(target) = target_rel_error.filter(|t| !(t.is_finite() && *t > 0.0)) {
         return Err(AmsError::BadTarget(target));
     }
@@ -205,10 +224,13 @@ pub fn estimate_observed<T: Trajectory>(
         if share == 0 {
             break Stop::StepBudget;
         }
-        let runs: Vec<_> = (next..next + size)
-            .into_par_iter()
-            .map(|r| run(start, settings, repetition_seed(seed, r), share))
-            .collect();
+        let runs = run_batch(next..next + size, share);
+        if runs.len() as u64 != size {
+            return Err(AmsError::Batch(format!(
+                "{} runs came back for the {size} repetitions from {next}",
+                runs.len()
+            )));
+        }
         for (r, result) in (next..).zip(&runs) {
             if let Ok(run) = result {
                 observe(r, run);

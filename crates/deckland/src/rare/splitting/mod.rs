@@ -16,7 +16,7 @@
 use rand::{Rng, RngCore, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use thiserror::Error;
 
 /// One random trajectory that can be copied at any step and continued with fresh noise.
@@ -133,13 +133,17 @@ pub enum AmsError {
     /// `target_rel_error` is not a finite positive number.
     #[error("target_rel_error = {0}: must be finite and positive")]
     BadTarget(f64),
+    /// A batch of repetitions flown elsewhere (a cluster's workers,
+    /// [`estimate_batched`]) did not come back.
+    #[error("a batch of repetitions failed: {0}")]
+    Batch(String),
     /// Every repetition of [`estimate`] stopped early: there is no estimate.
     #[error("no repetition completed: {0}")]
     NoCompleteRepetition(PartialReason),
 }
 
 /// Why a run stopped before its end.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 pub enum PartialReason {
     /// The step budget (in steps) was spent.
     StepBudget {
@@ -163,7 +167,7 @@ impl std::fmt::Display for PartialReason {
 }
 
 /// How a run ended.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub enum Outcome {
     /// The level reached the threshold: the estimate is final.
     Converged,
@@ -189,7 +193,7 @@ impl std::fmt::Display for Outcome {
 
 /// A reseed on the way from the start state: advance to `step`, then
 /// `reseed(key)`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Branch {
     /// Steps from the start state.
     pub step: usize,
@@ -199,7 +203,7 @@ pub struct Branch {
 
 /// A final particle that reached the event, with what [`refly`] needs to
 /// fly it again from the start state.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct EventParticle {
     /// Index among the final particles.
     pub index: usize,
@@ -210,7 +214,7 @@ pub struct EventParticle {
 }
 
 /// The result of one AMS run.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Run {
     /// `Π_q (1 − K_q/N) · #{max ≥ threshold}/N`; `None` when partial.
     pub estimate: Option<f64>,
@@ -540,7 +544,7 @@ pub fn refly<T: Trajectory>(
 mod estimate;
 
 pub use estimate::{
-    estimate, estimate_observed, repetition_seed, Budget, Estimate, Stop,
+    estimate, estimate_batched, estimate_observed, repetition_seed, Budget, Estimate, Stop,
     MIN_REPETITIONS_FOR_TARGET, REPETITIONS_PER_BATCH,
 };
 
