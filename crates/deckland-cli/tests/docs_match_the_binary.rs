@@ -288,7 +288,7 @@ fn options_of(command: &str) -> BTreeSet<String> {
         .collect()
 }
 
-/// Every synopsis in the README (the ```sh block line `cargo run --release -- COMMAND
+/// Every synopsis in the README (the ```sh synopsis block line `cargo run --release -- COMMAND
 /// [--option …]` and its continuation lines) names exactly the options of the command's
 /// `--help` (issue 29: the step synopsis left out `--hardware`).
 #[test]
