@@ -5,8 +5,8 @@
 
 use deckland::monte_carlo::{MAX_CAMPAIGN_SEED, MAX_THREADS};
 use deckland::rare::{
-    estimate_rate, estimate_rate_batched, fly_repetition, AmsError, Branch, EventParticle,
-    Outcome, PartialReason, RareEvent, RareRequest, Run,
+    estimate_rate, estimate_rate_batched, fly_repetition, AmsError, Branch, EventParticle, Outcome,
+    PartialReason, RareEvent, RareRequest, Run,
 };
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
@@ -102,7 +102,7 @@ pub fn rare(
         seed,
         threads,
     )?;
-    let flown = scenario.scenario.clone();
+    let flown = scenario.scenario;
     let result = py.detach(|| {
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
@@ -135,7 +135,7 @@ pub fn rare_repetition(
     let (request, threads) = request_of(
         &scenario, event, threshold, None, None, particles, seed, threads,
     )?;
-    let flown = scenario.scenario.clone();
+    let flown = scenario.scenario;
     let run = py.detach(|| {
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
@@ -220,7 +220,7 @@ fn run_to_python(py: Python<'_>, run: &Run) -> PyResult<Py<PyAny>> {
         Outcome::Partial(PartialReason::StepBudget { budget }) => ("step_budget", 0.0, budget),
         Outcome::Partial(PartialReason::MaxIterations { limit }) => ("max_iterations", 0.0, limit),
     };
-    let events: Vec<(usize, f64, Vec<(usize, u64)>)> = run
+    let events: Vec<EventValues> = run
         .events
         .iter()
         .map(|e| {
@@ -242,29 +242,49 @@ fn run_to_python(py: Python<'_>, run: &Run) -> PyResult<Py<PyAny>> {
     Ok(value.into_pyobject(py)?.into_any().unbind())
 }
 
+/// A final particle as plain values: its index, maximum and lineage of (step, key).
+type EventValues = (usize, f64, Vec<(usize, u64)>);
+
+/// A run as plain values ([`run_to_python`]).
+type RunValues = (
+    Option<f64>,
+    (String, f64, u64),
+    u64,
+    Vec<f64>,
+    Vec<usize>,
+    u64,
+    u64,
+    usize,
+    Vec<EventValues>,
+);
+
 /// The run that [`run_to_python`] wrote (`ValueError` for anything else).
 fn run_from_python(value: &Bound<'_, PyAny>) -> PyResult<Run> {
-    type Events = Vec<(usize, f64, Vec<(usize, u64)>)>;
-    #[allow(clippy::type_complexity)]
-    let (estimate, (outcome, level, limit), iterations, levels, killed, steps, trajectories, reached, events): (
-        Option<f64>,
-        (String, f64, u64),
-        u64,
-        Vec<f64>,
-        Vec<usize>,
-        u64,
-        u64,
-        usize,
-        Events,
-    ) = value.extract().map_err(|e| {
-        value_error(format!("a repetition came back as something other than a run: {e}"))
+    let (
+        estimate,
+        (outcome, level, limit),
+        iterations,
+        levels,
+        killed,
+        steps,
+        trajectories,
+        reached,
+        events,
+    ): RunValues = value.extract().map_err(|e| {
+        value_error(format!(
+            "a repetition came back as something other than a run: {e}"
+        ))
     })?;
     let outcome = match outcome.as_str() {
         "converged" => Outcome::Converged,
         "extinct" => Outcome::Extinct { level },
         "step_budget" => Outcome::Partial(PartialReason::StepBudget { budget: limit }),
         "max_iterations" => Outcome::Partial(PartialReason::MaxIterations { limit }),
-        other => return Err(value_error(format!("a repetition came back with outcome {other:?}"))),
+        other => {
+            return Err(value_error(format!(
+                "a repetition came back with outcome {other:?}"
+            )))
+        }
     };
     let events = events
         .into_iter()

@@ -6,8 +6,8 @@ use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyComplex};
 
 use super::config::EnvConfig;
-use super::control::{AgentTaps, Control};
 use super::control::LateralTaps;
+use super::control::{AgentTaps, Control};
 use super::lateral;
 use crate::errors::argument_error;
 
