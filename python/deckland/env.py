@@ -1,11 +1,17 @@
-"""The Gymnasium environment ``deckland/CarrierLanding-v1``: land the F/A-18 on the
-moving carrier deck, with the authority the ``control`` mode gives the agent.
+"""The Gymnasium environments ``deckland/CarrierLanding-v1`` (the longitudinal approach:
+land the F/A-18 on the moving carrier deck, with the authority the ``control`` mode gives
+the agent) and ``deckland/CarrierLanding3D-v0`` (the 3-D approach of the 6-DOF F/A-18 to
+the angled deck, with roll and yaw commands added to the action): one environment class,
+:class:`CarrierLandingEnv`, and one vectorised class, :class:`CarrierLandingVecEnv`, each
+2-D or 3-D by its option ``three_dimensional``; :class:`CarrierLanding3DEnv` and
+:class:`CarrierLanding3DVecEnv` are the same classes 3-D by default (the 3-D id's entry
+points; :mod:`deckland.env3d` re-exports them with the 3-D constants).
 
 The whole specification (modes, spaces, observation table with units and sources,
-reward term by term, seeding, vectorised stepping, rendering) is in
-``docs/rl-environment.md``; this module's objects carry it:
-:data:`CONTROL_MODES`, :data:`REWARDS`, :class:`CarrierLandingEnv`,
-:class:`CarrierLandingVecEnv`.
+reward term by term, seeding, vectorised stepping, rendering, and what the 3-D
+environment adds) is in ``docs/rl-environment.md``; this module's objects carry it:
+:data:`CONTROL_MODES`, :data:`CONTROL_MODES_3D`, :data:`REWARDS`, :data:`REWARDS_3D`,
+:class:`CarrierLandingEnv`, :class:`CarrierLandingVecEnv`.
 
 In short: one step is one control interval (20 ms), stepped in Rust. The automatic
 wave-off is off in every mode: the last action entry is the agent's wave-off (> 0
@@ -14,6 +20,24 @@ crossing, touchdown, the wires; flying over the last wire after waving off is a
 ``wave_off``, without it a ``bolter``). The observation is normalised (``info["raw"]``
 holds it in physical units); ``info["autopilot_action"]`` is the action the built-in
 cascade would take now (the autopilot as a policy).
+
+The 3-D environment (``three_dimensional=True``) adds:
+
+- the action's lateral entries, before the wave-off (:data:`CONTROL_MODES_3D`): in
+  ``attitude`` the bank command and the sideslip command (the built-in roll and yaw laws
+  fly the aileron and rudder), in ``surfaces`` the aileron and rudder commands, in
+  ``guidance`` the bank command; the built-in lineup guidance's bank command is replaced
+  in every mode;
+- the observation's lateral entries after the 2-D ones: cross track and its rate, bank,
+  heading to the centreline, sideslip, roll and yaw rate, aileron and rudder;
+- the shaped reward's error: the hook's distance to the glide path's line (the
+  glide-path error and the cross track, squared and summed);
+- at the end, ``info["off_centre"]`` (the touchdown more than 6.1 m off the
+  centreline; None without a touchdown) and :data:`REWARDS_3D`'s ``off_centre`` added.
+
+Its default scenario is :func:`crosswind_scenario`: the moderate sea with a 5 m/s
+crosswind (``scenarios/crosswind.toml``); the 2-D environment's is
+:func:`longitudinal_scenario`.
 """
 
 from __future__ import annotations
@@ -31,6 +55,7 @@ from gymnasium.vector.utils import batch_space
 from ._deckland import MAX_SEED, Scenario, _Env, _VecEnv
 
 ENV_ID = "deckland/CarrierLanding-v1"
+ENV_ID_3D = "deckland/CarrierLanding3D-v0"
 
 #: The episode's step limit in the registration: the default scenario's time limit
 #: (60 s) in 20-ms steps.
@@ -41,6 +66,13 @@ CONTROL_MODES = {
     "surfaces": ("elevator", "thrust", "direct_lift", "wave_off"),
     "attitude": ("pitch_command", "thrust", "wave_off"),
     "guidance": ("climb_rate_command", "wave_off"),
+}
+
+#: The control modes of the 3-D environment: the action's entries in order.
+CONTROL_MODES_3D = {
+    "surfaces": ("elevator", "thrust", "direct_lift", "aileron", "rudder", "wave_off"),
+    "attitude": ("pitch_command", "thrust", "bank_command", "sideslip_command", "wave_off"),
+    "guidance": ("climb_rate_command", "bank_command", "wave_off"),
 }
 
 #: The rewards: at the end per outcome, a trap's wire bonus, and the shaped reward's
@@ -56,6 +88,19 @@ REWARDS: Dict[str, Any] = {
     "timeout": 0.0,
     "error_weight": 0.1,
     "error_cap_m2": 100.0,
+}
+
+#: The rewards of the 3-D environment: the 2-D environment's and, added at the end of an
+#: approach that touched down off the centreline, ``off_centre``.
+REWARDS_3D: Dict[str, Any] = dict(REWARDS, off_centre=-100.0)
+
+#: The spans of the 3-D environment's lateral action entries (rad) when not given: a
+#: full entry (±1) is the trim ± the span.
+LATERAL_SPANS: Dict[str, float] = {
+    "bank_command_span_rad": float(np.deg2rad(20.0)),
+    "sideslip_command_span_rad": float(np.deg2rad(5.0)),
+    "aileron_span_rad": float(np.deg2rad(10.0)),
+    "rudder_span_rad": float(np.deg2rad(10.0)),
 }
 
 
@@ -80,14 +125,40 @@ LONGITUDINAL_SETTINGS: Dict[str, Any] = {
     **WAVE_OFF_BEFORE_RECOVERY,
 }
 
+#: The crosswind scenario's settings over the default scenario (``scenarios/crosswind.toml``).
+CROSSWIND_SETTINGS: Dict[str, Any] = {
+    "environment.ship.model": "filters",
+    "aircraft.model": "6dof",
+    "approach.three_dimensional": True,
+    "environment.ship.heave_rms_m": 1.0,
+    "environment.ship.pitch_rms_deg": 0.75,
+    "environment.ship.roll_rms_deg": 0.5,
+    "environment.ship.yaw_rms_deg": 0.15,
+    "environment.ship.sway_rms_m": 0.25,
+    "environment.ship.forward_speed_mps": 7.7,
+    "environment.wind.crosswind_mps": 5.0,
+    **WAVE_OFF_BEFORE_RECOVERY,
+}
+
+
+def _default_with(settings: Dict[str, Any]) -> Scenario:
+    """The default scenario with ``settings`` set."""
+    scenario = Scenario.default()
+    for key, value in settings.items():
+        scenario[key] = value
+    return scenario
+
 
 def longitudinal_scenario() -> Scenario:
     """The longitudinal environment's default: the default scenario flown by the 3-DOF
     aircraft behind a stationary ship (:data:`LONGITUDINAL_SETTINGS`)."""
-    scenario = Scenario.default()
-    for key, value in LONGITUDINAL_SETTINGS.items():
-        scenario[key] = value
-    return scenario
+    return _default_with(LONGITUDINAL_SETTINGS)
+
+
+def crosswind_scenario() -> Scenario:
+    """The 3-D environment's default: the 6-DOF approach in a moderate sea with a 5 m/s
+    crosswind (the settings of ``scenarios/crosswind.toml``, :data:`CROSSWIND_SETTINGS`)."""
+    return _default_with(CROSSWIND_SETTINGS)
 
 
 def _whole(name: str, value: Any) -> int:
@@ -125,35 +196,58 @@ def _check_reward_keys(rewards: Optional[Dict[str, Any]], known: Dict[str, Any])
         )
 
 
-def _options(
-    scenario: Optional[Scenario],
-    control: str,
-    control_interval_s: float,
-    pitch_command_span_rad: float,
-    thrust_span_n: Optional[float],
-    elevator_span_rad: float,
-    climb_rate_span_mps: float,
-    rewards: Optional[Dict[str, Any]],
-    reward: str,
-    forecast: bool,
-    known_rewards: Optional[Dict[str, Any]] = None,
-) -> Tuple[Any, ...]:
-    _check_reward_keys(rewards, REWARDS if known_rewards is None else known_rewards)
-    table = dict(REWARDS)
+def _arguments(given: Dict[str, Any]) -> Dict[str, Any]:
+    """A constructor's arguments (its ``locals()`` as it starts), without ``self``."""
+    return {name: value for name, value in given.items() if name not in ("self", "__class__")}
+
+
+def _is_three_dimensional(env: Any, three_dimensional: Optional[bool]) -> bool:
+    """Whether ``env`` is 3-D: ``three_dimensional``, else its class's default."""
+    if three_dimensional is None:
+        return bool(env.three_dimensional_by_default)
+    return _flag("three_dimensional", three_dimensional)
+
+
+def _core_options(three_dimensional: bool, options: Dict[str, Any]) -> Dict[str, Any]:
+    """The keyword arguments of the Rust core (``_Env``, ``_VecEnv``) from the options of
+    :class:`CarrierLandingEnv` (by name), checked: a wrong type, an unknown reward and a
+    lateral span given to the 2-D environment are refused by name."""
+    known = REWARDS_3D if three_dimensional else REWARDS
+    rewards = options["rewards"]
+    _check_reward_keys(rewards, known)
+    table = dict(known)
     if rewards is not None:
         table.update(rewards)
-    return (
-        longitudinal_scenario() if scenario is None else scenario,
-        control,
-        _real("control_interval_s", control_interval_s),
-        _real("pitch_command_span_rad", pitch_command_span_rad),
-        None if thrust_span_n is None else _real("thrust_span_n", thrust_span_n),
-        _real("elevator_span_rad", elevator_span_rad),
-        _real("climb_rate_span_mps", climb_rate_span_mps),
-        table,
-        reward,
-        _flag("forecast", forecast),
+    spans = {name: options[name] for name in LATERAL_SPANS}
+    if not three_dimensional:
+        for name, value in spans.items():
+            if value is not None:
+                raise ValueError(
+                    f"`{name}` = {value!r} is not allowed: the 2-D environment has no lateral "
+                    "action (it is an option of the 3-D one, three_dimensional=True)"
+                )
+    scenario = options["scenario"]
+    if scenario is None:
+        scenario = crosswind_scenario() if three_dimensional else longitudinal_scenario()
+    thrust_span_n = options["thrust_span_n"]
+    core = dict(
+        scenario=scenario,
+        control=options["control"],
+        control_interval_s=_real("control_interval_s", options["control_interval_s"]),
+        pitch_command_span_rad=_real("pitch_command_span_rad", options["pitch_command_span_rad"]),
+        thrust_span_n=None if thrust_span_n is None else _real("thrust_span_n", thrust_span_n),
+        elevator_span_rad=_real("elevator_span_rad", options["elevator_span_rad"]),
+        climb_rate_span_mps=_real("climb_rate_span_mps", options["climb_rate_span_mps"]),
+        rewards=table,
+        reward=options["reward"],
+        forecast=_flag("forecast", options["forecast"]),
+        lateral_spans=None,
     )
+    if three_dimensional:
+        core["lateral_spans"] = tuple(
+            _real(name, LATERAL_SPANS[name] if value is None else value) for name, value in spans.items()
+        )
+    return core
 
 
 def _spaces(description: Dict[str, Any]) -> Tuple[spaces.Box, spaces.Box]:
@@ -167,6 +261,16 @@ def _spaces(description: Dict[str, Any]) -> Tuple[spaces.Box, spaces.Box]:
     )
 
 
+def _read_description(env: Any) -> Tuple[spaces.Box, spaces.Box]:
+    """Sets ``env``'s description and names from its core; returns the spaces of one
+    environment (action, observation)."""
+    env.description = env._core.describe()
+    env.observation_names = tuple(row["name"] for row in env.description["observations"])
+    env.action_names = tuple(env.description["actions"])
+    env.built_in_loops = tuple(env.description["built_in_loops"])
+    return _spaces(env.description)
+
+
 def _check_render_mode(render_mode: Optional[str]) -> None:
     if render_mode not in (None, "rgb_array"):
         raise ValueError(f"`render_mode` = {render_mode!r} is not allowed: expected None or 'rgb_array'")
@@ -177,21 +281,32 @@ def _draw_seed(generator: np.random.Generator) -> int:
 
 
 class CarrierLandingEnv(gymnasium.Env):
-    """Land the F/A-18 on the moving carrier deck (``docs/rl-environment.md``).
+    """Land the F/A-18 on the moving carrier deck (``docs/rl-environment.md``): the
+    longitudinal approach (``deckland/CarrierLanding-v1``) or, with
+    ``three_dimensional=True``, the 3-D approach of the 6-DOF aircraft to the angled
+    deck (``deckland/CarrierLanding3D-v0``).
 
     ``control`` is ``"surfaces"``, ``"attitude"`` (the default) or ``"guidance"``
-    (:data:`CONTROL_MODES`); ``scenario`` a :class:`deckland.Scenario` (the default:
-    :func:`longitudinal_scenario`, adverse conditions on the 3-DOF aircraft behind a
-    stationary ship; its automatic wave-off is turned off); ``control_interval_s``
-    the length of a step; the spans scale the actions (zero is the trim):
-    ``pitch_command_span_rad`` (10°), ``thrust_span_n`` (a quarter of the maximum
-    thrust), ``elevator_span_rad`` (10°), ``climb_rate_span_mps`` (5 m/s); ``reward``
-    is ``"shaped"`` or ``"sparse"``; ``rewards`` replaces entries of :data:`REWARDS`;
-    ``forecast=True`` adds the deck forecast and its uncertainty to the observation; ``render_mode`` is
-    None or ``"rgb_array"``.
+    (:data:`CONTROL_MODES`, :data:`CONTROL_MODES_3D`); ``scenario`` a
+    :class:`deckland.Scenario` (the default: :func:`longitudinal_scenario`, adverse
+    conditions on the 3-DOF aircraft behind a stationary ship; in 3-D
+    :func:`crosswind_scenario`, and it must be a 3-D approach; its automatic wave-off is
+    turned off); ``control_interval_s`` the length of a step; the spans scale the
+    actions (zero is the trim): ``pitch_command_span_rad`` (10°), ``thrust_span_n`` (a
+    quarter of the maximum thrust), ``elevator_span_rad`` (10°), ``climb_rate_span_mps``
+    (5 m/s), and in 3-D only (:data:`LATERAL_SPANS`) ``bank_command_span_rad`` (20°),
+    ``sideslip_command_span_rad`` (5°), ``aileron_span_rad`` (10°), ``rudder_span_rad``
+    (10°); ``reward`` is ``"shaped"`` or ``"sparse"``; ``rewards`` replaces entries of
+    :data:`REWARDS` (3-D: :data:`REWARDS_3D`); ``forecast=True`` adds the deck forecast
+    and its uncertainty to the observation; ``render_mode`` is None or ``"rgb_array"``.
+    ``three_dimensional`` not given is the class's :attr:`three_dimensional_by_default`
+    (False here, True in :class:`CarrierLanding3DEnv`).
     """
 
     metadata = {"render_modes": ["rgb_array"], "render_fps": 50}
+
+    #: Whether the environment is 3-D when ``three_dimensional`` is not given.
+    three_dimensional_by_default = False
 
     def __init__(
         self,
@@ -206,47 +321,22 @@ class CarrierLandingEnv(gymnasium.Env):
         reward: str = "shaped",
         forecast: bool = False,
         render_mode: Optional[str] = None,
+        *,
+        three_dimensional: Optional[bool] = None,
+        bank_command_span_rad: Optional[float] = None,
+        sideslip_command_span_rad: Optional[float] = None,
+        aileron_span_rad: Optional[float] = None,
+        rudder_span_rad: Optional[float] = None,
     ) -> None:
+        # The arguments as given, to build a copy (first: nothing else is local yet).
+        self._kwargs = _arguments(locals())
         super().__init__()
         _check_render_mode(render_mode)
-        self._kwargs = dict(
-            control=control,
-            scenario=scenario,
-            control_interval_s=control_interval_s,
-            pitch_command_span_rad=pitch_command_span_rad,
-            thrust_span_n=thrust_span_n,
-            elevator_span_rad=elevator_span_rad,
-            climb_rate_span_mps=climb_rate_span_mps,
-            rewards=rewards,
-            reward=reward,
-            forecast=forecast,
-            render_mode=render_mode,
-        )
+        self.three_dimensional = _is_three_dimensional(self, three_dimensional)
         self.control = control
         self.render_mode = render_mode
-        self._core = _Env(
-            *_options(
-                scenario,
-                control,
-                control_interval_s,
-                pitch_command_span_rad,
-                thrust_span_n,
-                elevator_span_rad,
-                climb_rate_span_mps,
-                rewards,
-                reward,
-                forecast,
-            )
-        )
-        self._describe()
-
-    def _describe(self) -> None:
-        """The description, names and spaces of the core built."""
-        self.description = self._core.describe()
-        self.observation_names = tuple(row["name"] for row in self.description["observations"])
-        self.action_names = tuple(self.description["actions"])
-        self.built_in_loops = tuple(self.description["built_in_loops"])
-        self.action_space, self.observation_space = _spaces(self.description)
+        self._core = _Env(**_core_options(self.three_dimensional, self._kwargs))
+        self.action_space, self.observation_space = _read_description(self)
         self._episode_seed: Optional[int] = None
 
     def reset(
@@ -319,7 +409,9 @@ class CarrierLandingVecEnv(VectorEnv):
     """``num_envs`` environments of :class:`CarrierLandingEnv` stepped in one call to
     Rust, over threads (``RAYON_NUM_THREADS`` in all, the calling one included;
     default: one per core): numpy arrays in and out, no Python per environment; ``info``
-    is a dict of arrays (``docs/rl-environment.md``).
+    is a dict of arrays (``docs/rl-environment.md``). The 3-D environments' ``info``
+    also holds, when episodes end, ``off_centre`` (an object array: True or False after
+    a touchdown, None without one) and its mask ``_off_centre``.
 
     Autoreset is Gymnasium's next-step mode: the step after an episode ends resets
     that environment (its action ignored, reward 0). Seeds follow Gymnasium:
@@ -328,7 +420,8 @@ class CarrierLandingVecEnv(VectorEnv):
     as a single environment does, so environment i flies what a single environment
     reset with the same seed flies, bit for bit. ``max_episode_steps`` truncates an
     episode (the registration's 3000 by default). Same options as
-    :class:`CarrierLandingEnv`.
+    :class:`CarrierLandingEnv` (``three_dimensional`` not given: False here, True in
+    :class:`CarrierLanding3DVecEnv`).
     """
 
     metadata = {
@@ -337,8 +430,8 @@ class CarrierLandingVecEnv(VectorEnv):
         "autoreset_mode": AutoresetMode.NEXT_STEP,
     }
 
-    #: Whether ``info`` reports ``off_centre`` (the 3-D environment's).
-    _reports_off_centre = False
+    #: Whether the environments are 3-D when ``three_dimensional`` is not given.
+    three_dimensional_by_default = False
 
     def __init__(
         self,
@@ -355,40 +448,14 @@ class CarrierLandingVecEnv(VectorEnv):
         forecast: bool = False,
         render_mode: Optional[str] = None,
         max_episode_steps: Optional[int] = MAX_EPISODE_STEPS,
+        *,
+        three_dimensional: Optional[bool] = None,
+        bank_command_span_rad: Optional[float] = None,
+        sideslip_command_span_rad: Optional[float] = None,
+        aileron_span_rad: Optional[float] = None,
+        rudder_span_rad: Optional[float] = None,
     ) -> None:
-        self._init_vector(
-            num_envs,
-            render_mode,
-            max_episode_steps,
-            control,
-            lambda steps: _VecEnv(
-                int(num_envs),
-                *_options(
-                    scenario,
-                    control,
-                    control_interval_s,
-                    pitch_command_span_rad,
-                    thrust_span_n,
-                    elevator_span_rad,
-                    climb_rate_span_mps,
-                    rewards,
-                    reward,
-                    forecast,
-                ),
-                steps,
-            ),
-        )
-
-    def _init_vector(
-        self,
-        num_envs: int,
-        render_mode: Optional[str],
-        max_episode_steps: Optional[int],
-        control: str,
-        core: Any,
-    ) -> None:
-        """Checks the options, builds the core (``core(max_episode_steps)``) and reads
-        its description."""
+        options = _arguments(locals())
         _check_render_mode(render_mode)
         num_envs = _whole("num_envs", num_envs)
         if max_episode_steps is not None and not (isinstance(max_episode_steps, (int, np.integer)) and max_episode_steps > 0):
@@ -396,15 +463,16 @@ class CarrierLandingVecEnv(VectorEnv):
                 f"`max_episode_steps` = {max_episode_steps!r} is not allowed: expected a positive integer or None"
             )
         self.num_envs = int(num_envs)
+        self.three_dimensional = _is_three_dimensional(self, three_dimensional)
         self.control = control
         self.render_mode = render_mode
-        self._core = core(None if max_episode_steps is None else int(max_episode_steps))
-        self.description = self._core.describe()
-        self.observation_names = tuple(row["name"] for row in self.description["observations"])
-        self.action_names = tuple(self.description["actions"])
-        self.built_in_loops = tuple(self.description["built_in_loops"])
+        self._core = _VecEnv(
+            num_envs=self.num_envs,
+            max_episode_steps=None if max_episode_steps is None else int(max_episode_steps),
+            **_core_options(self.three_dimensional, options),
+        )
+        self.single_action_space, self.single_observation_space = _read_description(self)
         self.outcomes = tuple(self.description["outcomes"])
-        self.single_action_space, self.single_observation_space = _spaces(self.description)
         self.action_space = batch_space(self.single_action_space, self.num_envs)
         self.observation_space = batch_space(self.single_observation_space, self.num_envs)
         self._generators: List[Optional[np.random.Generator]] = [None] * self.num_envs
@@ -471,7 +539,7 @@ class CarrierLandingVecEnv(VectorEnv):
             info["_lso_grade"] = done
             info["lso_points"] = self._grade_points[grades]
             info["_lso_points"] = done
-            if self._reports_off_centre:
+            if self.three_dimensional:
                 # True or False after a touchdown, None without one (flag -1).
                 info["off_centre"] = _OFF_CENTRE[off_centre + 1]
                 info["_off_centre"] = done
@@ -487,12 +555,36 @@ class CarrierLandingVecEnv(VectorEnv):
         return tuple(self._core.render(i) for i in range(self.num_envs))
 
 
+class CarrierLanding3DEnv(CarrierLandingEnv):
+    """:class:`CarrierLandingEnv`, 3-D unless ``three_dimensional=False``: the entry
+    point of ``deckland/CarrierLanding3D-v0`` (``docs/rl-environment.md``, "The 3-D
+    environment")."""
+
+    three_dimensional_by_default = True
+
+
+class CarrierLanding3DVecEnv(CarrierLandingVecEnv):
+    """:class:`CarrierLandingVecEnv`, 3-D unless ``three_dimensional=False``: the vector
+    entry point of ``deckland/CarrierLanding3D-v0``."""
+
+    three_dimensional_by_default = True
+
+
+#: The registered ids: (id, entry point, vector entry point), the classes of this module.
+REGISTRATIONS: Tuple[Tuple[str, str, str], ...] = (
+    (ENV_ID, "CarrierLandingEnv", "CarrierLandingVecEnv"),
+    (ENV_ID_3D, "CarrierLanding3DEnv", "CarrierLanding3DVecEnv"),
+)
+
+
 def register() -> None:
-    """Registers :data:`ENV_ID` with gymnasium (once), with its vector entry point."""
-    if ENV_ID not in gymnasium.registry:
-        gymnasium.register(
-            id=ENV_ID,
-            entry_point="deckland.env:CarrierLandingEnv",
-            vector_entry_point="deckland.env:CarrierLandingVecEnv",
-            max_episode_steps=MAX_EPISODE_STEPS,
-        )
+    """Registers :data:`ENV_ID` and :data:`ENV_ID_3D` with gymnasium (once each), with
+    their vector entry points."""
+    for env_id, single, vector in REGISTRATIONS:
+        if env_id not in gymnasium.registry:
+            gymnasium.register(
+                id=env_id,
+                entry_point=f"deckland.env:{single}",
+                vector_entry_point=f"deckland.env:{vector}",
+                max_episode_steps=MAX_EPISODE_STEPS,
+            )

@@ -1,4 +1,5 @@
-//! Many environments of one configuration stepped in one call: the Python class `_VecEnv`.
+//! Environments of one configuration stepped in one call ([`Lanes`]): the Python class
+//! `_VecEnv`, and, as one lane stepped on the calling thread, `_Env` ([`super::single`]).
 
 use std::sync::{Arc, Mutex, PoisonError};
 
@@ -21,13 +22,9 @@ use crate::scenario::Scenario;
 /// Many environments of one configuration, stepped in one call over threads.
 #[pyclass(name = "_VecEnv", module = "deckland._deckland")]
 pub struct VecEnv {
-    config: Arc<EnvConfig>,
-    cores: Vec<Option<EnvCore>>,
+    lanes: Lanes,
     /// The environments whose episode ended at the last step: the next starts them again.
     restart: Vec<bool>,
-    /// Each environment's outcome code, wire and off-centre flag at the last step (−1:
-    /// none; the flag 1 or 0 after a 3-D touchdown).
-    outcomes: Vec<(i8, i8, i8, i8)>,
     /// Whether every environment has started (`reset`). Kept here rather than read from
     /// the episodes: reading 64 of them would fetch the data the helper threads keep in
     /// their cores' caches.
@@ -56,13 +53,13 @@ type VecStep<'py> = (
 );
 
 /// Every environment's results of a step, one array each, environment by environment.
-struct Outputs {
-    observations: Vec<f32>,
-    raw: Vec<f64>,
-    pilot: Vec<f32>,
-    rewards: Vec<f64>,
-    terminated: Vec<bool>,
-    truncated: Vec<bool>,
+pub(super) struct Outputs {
+    pub(super) observations: Vec<f32>,
+    pub(super) raw: Vec<f64>,
+    pub(super) pilot: Vec<f32>,
+    pub(super) rewards: Vec<f64>,
+    pub(super) terminated: Vec<bool>,
+    pub(super) truncated: Vec<bool>,
 }
 
 /// One environment in a step: its episode and where its results go.
@@ -114,34 +111,28 @@ impl VecEnv {
             max_episode_steps,
             lateral_spans,
         )?;
-        let refused = |_| environments_do_not_fit(num_envs, None);
-        let mut cores = Vec::new();
-        cores.try_reserve_exact(num_envs).map_err(refused)?;
-        cores.resize_with(num_envs, || None);
+        let lanes = Lanes::new(num_envs, config, true)?;
         let mut restart = Vec::new();
-        restart.try_reserve_exact(num_envs).map_err(refused)?;
+        restart
+            .try_reserve_exact(num_envs)
+            .map_err(|_| environments_do_not_fit(num_envs, None))?;
         restart.resize(num_envs, false);
-        let mut outcomes = Vec::new();
-        outcomes.try_reserve_exact(num_envs).map_err(refused)?;
-        outcomes.resize(num_envs, (-1, -1, -1, -1));
         Ok(Self {
-            config: Arc::new(config),
-            cores,
+            lanes,
             restart,
-            outcomes,
             started: false,
         })
     }
 
     /// The spaces, the observation's table, the loops still flying, the trim.
     fn describe<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        describe(py, &self.config)
+        self.lanes.describe(py)
     }
 
     /// Starts every environment's episode, environment i with `seeds[i]`: (observations,
     /// raw observations, autopilot actions).
     fn reset<'py>(&mut self, py: Python<'py>, seeds: Vec<i128>) -> PyResult<VecReset<'py>> {
-        let n = self.cores.len();
+        let n = self.lanes.len();
         if seeds.len() != n {
             return Err(argument_error(
                 "seeds",
@@ -154,10 +145,11 @@ impl VecEnv {
             .map(|s| seed_value(s).map(Some))
             .collect::<PyResult<Vec<_>>>()?;
         self.started = false;
-        let out = self.run(py, &[], &seeds)?;
+        let out = self.lanes.run(py, &[], &seeds)?;
         self.started = true;
         self.restart.iter_mut().for_each(|r| *r = false);
-        let (k, width) = (self.config.observation_len(), self.config.action_len());
+        let config = &self.lanes.config;
+        let (k, width) = (config.observation_len(), config.action_len());
         Ok((
             matrix(py, out.observations, k)?,
             matrix(py, out.raw, k)?,
@@ -169,17 +161,17 @@ impl VecEnv {
     /// ended at the previous step: they start again with their entry of `seeds` (needed
     /// then, one per environment, the others' ignored), their action ignored, reward 0.
     /// Returns (observations, rewards, terminated, truncated, raw observations, autopilot
-    /// actions, outcome codes, wires, off-centre flags), the last three only when an
-    /// episode ended (else None; −1: running, or truncated by the step limit; no wire; no
-    /// 3-D touchdown; the flag 1 for a touchdown off centre, 0 within the limit).
+    /// actions, outcome codes, wires, off-centre flags, LSO grades), the last four only
+    /// when an episode ended (else None; −1: running, or truncated by the step limit; no
+    /// wire; no 3-D touchdown; the flag 1 for a touchdown off centre, 0 within the limit).
     fn step<'py>(
         &mut self,
         py: Python<'py>,
         actions: &Bound<'py, PyAny>,
         seeds: Option<Vec<i128>>,
     ) -> PyResult<VecStep<'py>> {
-        let n = self.cores.len();
-        let config = Arc::clone(&self.config);
+        let n = self.lanes.len();
+        let config = Arc::clone(&self.lanes.config);
         let width = config.action_len();
         let actions = action_rows(actions, n, width)?;
         if !self.started {
@@ -209,7 +201,7 @@ impl VecEnv {
                 config.check_action(row, &format!("actions[{i}]"))?;
             }
         }
-        let out = self.run(py, &actions, &plan)?;
+        let out = self.lanes.run(py, &actions, &plan)?;
         let mut ended = false;
         for (restart, (terminated, truncated)) in self
             .restart
@@ -220,14 +212,14 @@ impl VecEnv {
             ended |= *restart;
         }
         let (codes, wires, off_centre, grades) = if ended {
-            let column = |f: fn(&(i8, i8, i8, i8)) -> i8| -> Vec<i8> {
-                self.outcomes.iter().map(f).collect()
+            let column = |f: fn(&(i8, i8, i8, i8)) -> i8| {
+                Some(self.lanes.outcome_column(f).into_pyarray(py))
             };
             (
-                Some(column(|o| o.0).into_pyarray(py)),
-                Some(column(|o| o.1).into_pyarray(py)),
-                Some(column(|o| o.2).into_pyarray(py)),
-                Some(column(|o| o.3).into_pyarray(py)),
+                column(|o| o.0),
+                column(|o| o.1),
+                column(|o| o.2),
+                column(|o| o.3),
             )
         } else {
             (None, None, None, None)
@@ -249,26 +241,65 @@ impl VecEnv {
 
     /// The side view of environment `index` now.
     fn render<'py>(&mut self, py: Python<'py>, index: usize) -> PyResult<Bound<'py, PyArray3<u8>>> {
-        let config = Arc::clone(&self.config);
-        let core = self
-            .cores
-            .get_mut(index)
-            .ok_or_else(|| argument_error("index", index, "an environment's index"))?;
-        let frame = match core.as_mut() {
-            Some(core) => {
-                let look = core.stepper.look();
-                draw_side_view(&config.scenario, &look.signals, core.waved_off)
-            }
-            None => vec![255; FRAME_HEIGHT * FRAME_WIDTH * 3],
-        };
-        frame_array(py, frame)
+        self.lanes.render(py, index)
     }
 }
 
-impl VecEnv {
-    /// Steps every environment over threads, the interpreter released: those with a seed
-    /// in `plan` start again with it, the others take their row of `actions`.
-    fn run(&mut self, py: Python<'_>, actions: &[f64], plan: &[Option<u64>]) -> PyResult<Outputs> {
+/// Environments of one configuration, each a lane, stepped in one call: the single
+/// environment is one lane of it, the vectorised one many.
+pub(super) struct Lanes {
+    pub(super) config: Arc<EnvConfig>,
+    cores: Vec<Option<EnvCore>>,
+    /// Each environment's outcome code, wire, off-centre flag and LSO grade at the last
+    /// step (−1: none; the flag 1 or 0 after a 3-D touchdown).
+    outcomes: Vec<(i8, i8, i8, i8)>,
+    /// Whether a step spreads the lanes over the helper threads ([`helpers`]), the
+    /// interpreter released (the vectorised environment), or steps them on the calling
+    /// thread, the interpreter held (the single one).
+    threads: bool,
+}
+
+impl Lanes {
+    /// `count` lanes of `config`, none started (a `MemoryError` if they do not fit).
+    pub(super) fn new(count: usize, config: EnvConfig, threads: bool) -> PyResult<Self> {
+        let refused = |_| environments_do_not_fit(count, None);
+        let mut cores = Vec::new();
+        cores.try_reserve_exact(count).map_err(refused)?;
+        cores.resize_with(count, || None);
+        let mut outcomes = Vec::new();
+        outcomes.try_reserve_exact(count).map_err(refused)?;
+        outcomes.resize(count, (-1, -1, -1, -1));
+        Ok(Self {
+            config: Arc::new(config),
+            cores,
+            outcomes,
+            threads,
+        })
+    }
+
+    /// The number of lanes.
+    pub(super) fn len(&self) -> usize {
+        self.cores.len()
+    }
+
+    /// Lane `index`'s episode (None before its first start).
+    pub(super) fn core(&self, index: usize) -> Option<&EnvCore> {
+        self.cores.get(index).and_then(Option::as_ref)
+    }
+
+    /// The spaces, the observation's table, the loops still flying, the trim.
+    pub(super) fn describe<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        describe(py, &self.config)
+    }
+
+    /// Steps every lane: those with a seed in `plan` start again with it, the others
+    /// take their row of `actions` (checked by the caller).
+    pub(super) fn run(
+        &mut self,
+        py: Python<'_>,
+        actions: &[f64],
+        plan: &[Option<u64>],
+    ) -> PyResult<Outputs> {
         let config = &*self.config;
         let (n, k, width) = (
             self.cores.len(),
@@ -313,51 +344,80 @@ impl VecEnv {
         // The first error of an environment's start, if any (none after the configuration's
         // own start succeeded, short of memory).
         let error: Mutex<Option<PyErr>> = Mutex::new(None);
-        py.detach(|| {
-            for_each_item(helpers(), &mut slots, |i, slot| {
-                *slot.outcome = (-1, -1, -1, -1);
-                if let Some(seed) = plan[i] {
-                    match EnvCore::new(config, seed) {
-                        Ok(core) => *slot.core = Some(core),
-                        Err(e) => {
-                            error
-                                .lock()
-                                .unwrap_or_else(PoisonError::into_inner)
-                                .get_or_insert(e);
-                            return;
-                        }
+        let work = |i: usize, slot: &mut Slot<'_>| {
+            *slot.outcome = (-1, -1, -1, -1);
+            if let Some(seed) = plan[i] {
+                match EnvCore::new(config, seed) {
+                    Ok(core) => *slot.core = Some(core),
+                    Err(e) => {
+                        error
+                            .lock()
+                            .unwrap_or_else(PoisonError::into_inner)
+                            .get_or_insert(e);
+                        return;
                     }
                 }
-                let Some(core) = slot.core.as_mut() else {
-                    return;
-                };
-                if plan[i].is_none() {
-                    let result = core.step(config, &actions[i * width..(i + 1) * width]);
-                    *slot.reward = result.reward;
-                    *slot.terminated = result.terminated;
-                    *slot.truncated = result.truncated;
-                    if let Some((code, wire)) = core.outcome {
-                        *slot.outcome = (
-                            code as i8,
-                            wire.map_or(-1, |w| w as i8),
-                            core.off_centre.map_or(-1, i8::from),
-                            core.lso.as_ref().map_or(-1, |(grade, _)| {
-                                Grade::ALL
-                                    .iter()
-                                    .position(|g| g == grade)
-                                    .map_or(-1, |i| i as i8)
-                            }),
-                        );
-                    }
+            }
+            let Some(core) = slot.core.as_mut() else {
+                return;
+            };
+            if plan[i].is_none() {
+                let result = core.step(config, &actions[i * width..(i + 1) * width]);
+                *slot.reward = result.reward;
+                *slot.terminated = result.terminated;
+                *slot.truncated = result.truncated;
+                if let Some((code, wire)) = core.outcome {
+                    *slot.outcome = (
+                        code as i8,
+                        wire.map_or(-1, |w| w as i8),
+                        core.off_centre.map_or(-1, i8::from),
+                        core.lso.as_ref().map_or(-1, |(grade, _)| {
+                            Grade::ALL
+                                .iter()
+                                .position(|g| g == grade)
+                                .map_or(-1, |i| i as i8)
+                        }),
+                    );
                 }
-                core.observe(config, slot.observation, slot.raw, slot.pilot);
-            });
-        });
+            }
+            core.observe(config, slot.observation, slot.raw, slot.pilot);
+        };
+        if self.threads {
+            py.detach(|| for_each_item(helpers(), &mut slots, work));
+        } else {
+            for_each_item(None, &mut slots, work);
+        }
         drop(slots);
         if let Some(error) = error.into_inner().unwrap_or_else(PoisonError::into_inner) {
             return Err(error);
         }
         Ok(out)
+    }
+
+    /// The side view of lane `index` now (white before its first start).
+    pub(super) fn render<'py>(
+        &mut self,
+        py: Python<'py>,
+        index: usize,
+    ) -> PyResult<Bound<'py, PyArray3<u8>>> {
+        let config = Arc::clone(&self.config);
+        let core = self
+            .cores
+            .get_mut(index)
+            .ok_or_else(|| argument_error("index", index, "an environment's index"))?;
+        let frame = match core.as_mut() {
+            Some(core) => {
+                let look = core.stepper.look();
+                draw_side_view(&config.scenario, &look.signals, core.waved_off)
+            }
+            None => vec![255; FRAME_HEIGHT * FRAME_WIDTH * 3],
+        };
+        frame_array(py, frame)
+    }
+
+    /// One column of the lanes' outcomes at the last step.
+    fn outcome_column(&self, field: fn(&(i8, i8, i8, i8)) -> i8) -> Vec<i8> {
+        self.outcomes.iter().map(field).collect()
     }
 }
 
