@@ -48,7 +48,7 @@ pub fn aerodynamic_coefficients(
 
 /// The coefficients of the aircraft whose aerodynamic data are `data`, as
 /// [`aerodynamic_coefficients`], with sin α and cos α already computed.
-#[inline]
+#[inline(always)]
 pub fn aerodynamic_coefficients_trig(
     data: &AerodynamicData,
     alpha: f64,

@@ -96,6 +96,7 @@ impl WindModel {
     }
 
     /// Every component at time `time_s` (s) and X = `distance_aft_m` (m, positive aft).
+    #[inline]
     pub fn components(&self, time_s: f64, distance_aft_m: f64) -> WindComponents {
         let p = &self.parameters;
         let wake = p.wake_weight(distance_aft_m);
@@ -124,6 +125,7 @@ impl WindModel {
     }
 
     /// The total wind at time `time_s` (s) and X = `distance_aft_m` (m, positive aft).
+    #[inline]
     pub fn wind(&self, time_s: f64, distance_aft_m: f64) -> Wind {
         self.components(time_s, distance_aft_m).total()
     }

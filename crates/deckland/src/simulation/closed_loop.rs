@@ -59,6 +59,10 @@ pub struct ClosedLoop {
     pub(crate) airspeed_reference_mps: f64,
     pub(crate) computer: Option<FlightComputer>,
     pub(crate) wave_off: WaveOffParameters,
+    /// The wave-off's ramp-strike limits in this ship's sea
+    /// ([`WaveOffParameters::for_ship`]), worked out once: the sea does not change over a
+    /// run.
+    pub(crate) wave_off_in_sea: WaveOffParameters,
     /// The steady air wake fed forward into the pitch command, with this lead (s);
     /// `None` when it is not.
     pub(crate) wake_feedforward_lead_s: Option<f64>,

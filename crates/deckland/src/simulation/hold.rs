@@ -188,6 +188,7 @@ impl ClosedLoop {
     /// `aircraft` and the guidance computer's `deck` reference: the change of the
     /// airspeed reference moves, and the reference with it. Without the block, outside an
     /// approach, or without a Kalman forecast, nothing changes.
+    #[inline]
     pub(crate) fn arrival_timing_step(
         &mut self,
         t: f64,

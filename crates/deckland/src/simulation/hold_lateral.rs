@@ -14,6 +14,7 @@ impl ClosedLoop {
     /// The 3-D approach's part of [`ClosedLoop::hold`] at `t` (state `x`, the wind held
     /// over the step `wind`); `None` outside it. `decided` says whether a wave-off is
     /// flown or decided already (then no lateral decision is taken).
+    #[inline]
     pub(crate) fn hold_lateral(
         &mut self,
         t: f64,

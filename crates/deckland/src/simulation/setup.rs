@@ -457,6 +457,7 @@ fn start(
         recovery: (scenario.control.wave_off.recovery).for_ship(&environment.ship, &env.deck),
         ..scenario.control.wave_off
     };
+    let wave_off_in_sea = wave_off.for_ship(environment.ship.parameters(), &env.deck);
     let system = ClosedLoop {
         layout: blocks.layout,
         plant: blocks.plant,
@@ -477,6 +478,7 @@ fn start(
             .flight_computer_rate_hz
             .map(|rate| FlightComputer::new(rate, initial.len())),
         wave_off,
+        wave_off_in_sea,
         wake_feedforward_lead_s: wake_feedforward_lead_s(scenario),
         direct_lift: blocks.direct_lift,
         user_blocks: blocks.user_blocks,

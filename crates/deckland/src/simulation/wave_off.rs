@@ -21,6 +21,7 @@ impl ClosedLoop {
     /// the step, on which the wave-off supervisor decides (unless `waving_off` already):
     /// the reference and the decision, if one is taken now. The ship is its motion state,
     /// pose and pose rate at `t` and `x` ([`ClosedLoop::ship_pose`]).
+    #[inline(always)]
     pub(crate) fn guidance_computer_step(
         &mut self,
         t: f64,
@@ -62,7 +63,7 @@ impl ClosedLoop {
             &track,
         );
         if waving_off {
-            self.note_wave_off(t);
+            note_wave_off(&mut self.outer, t);
             return (Some(reference), None);
         }
         let hook = HookKinematics {
@@ -72,7 +73,7 @@ impl ClosedLoop {
             climb_rate_mps: hook_climb_rate_mps,
         };
         // The ramp-strike limits of this sea (the ordinary ones but in a heavy sea).
-        let wave_off = self.wave_off.for_ship(self.ship.parameters(), &self.deck);
+        let wave_off = &self.wave_off_in_sea;
         let inputs = wave_off_inputs(&wave_off, &flight_path, &self.deck, &reference, &hook);
         let decision = inputs.and_then(|inputs| {
             wave_off
@@ -80,7 +81,7 @@ impl ClosedLoop {
                 .or_else(|| wave_off.decide(&inputs))
         });
         if decision.is_some() {
-            self.note_wave_off(t);
+            note_wave_off(&mut self.outer, t);
         } else if let Some(inputs) = inputs
             .filter(|i| !self.commit.reached() && i.time_to_go_s <= wave_off.decision_time_to_go_s)
         {
@@ -101,17 +102,15 @@ impl ClosedLoop {
     }
 }
 
-impl ClosedLoop {
-    /// Notes in the wave-off's flight that it was decided at `t` (s), unless noted
-    /// already: its take-over blends from then (`WaveOffFlight::share`).
-    fn note_wave_off(&mut self, t: f64) {
-        if let OuterLoops::Approach {
-            wave_off: Some(flight),
-            ..
-        } = &mut self.outer
-        {
-            flight.decided_at_s.get_or_insert(t);
-        }
+/// Notes in the wave-off's flight that it was decided at `t` (s), unless noted
+/// already: its take-over blends from then (`WaveOffFlight::share`).
+fn note_wave_off(outer: &mut OuterLoops, t: f64) {
+    if let OuterLoops::Approach {
+        wave_off: Some(flight),
+        ..
+    } = outer
+    {
+        flight.decided_at_s.get_or_insert(t);
     }
 }
 

@@ -208,7 +208,7 @@ impl Aircraft {
         self.body_accelerations_from(u, w, q, sin_t, cos_t, inputs, &air, 0.0)
     }
 
-    #[inline]
+    #[inline(always)]
     #[allow(clippy::too_many_arguments)]
     fn body_accelerations_from(
         &self,

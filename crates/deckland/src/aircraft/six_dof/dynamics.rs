@@ -4,7 +4,7 @@
 
 use super::air_data::{air_velocity_in_wind, SixDofAirData};
 use super::kinematics::EulerTrig;
-use super::lateral_aerodynamics::lateral_coefficients;
+use super::lateral_aerodynamics::LateralTable;
 use super::parameters::{LateralParameters, SurfaceActuatorParameters};
 use super::state::SixDofState;
 use crate::aircraft::{aerodynamic_coefficients_trig, Aircraft, ElevatorActuator, Wind};
@@ -60,6 +60,9 @@ pub struct SixDofAircraft {
     /// atan of v/√(u² + w²) (the 3-D approach), rather than the library's sin, cos and
     /// atan2.
     pub(super) series_trig: bool,
+    /// The lateral derivatives' polynomials by power, from the longitudinal plant's
+    /// aerodynamic data: built once, evaluated at every derivative.
+    lateral_table: LateralTable,
 }
 
 impl Default for SixDofAircraft {
@@ -115,6 +118,7 @@ impl SixDofAircraft {
     ) -> Result<Self, ParameterError> {
         lateral.validate()?;
         Ok(Self {
+            lateral_table: LateralTable::of(longitudinal.aerodynamics()),
             longitudinal,
             lateral,
             aileron: aileron.build(Self::AILERON_SECTION)?,
@@ -238,9 +242,7 @@ impl SixDofAircraft {
             c.lift * (lift_factor - 1.0) * cos_a + c.drag * (drag_factor - 1.0) * sin_a;
         let pitch_coefficient = c.moment - config.cg_ahead_of_reference_chords * normal_change;
         let half_span_over_speed = lat.span_m / (2.0 * airspeed);
-        let l = lateral_coefficients(
-            self.longitudinal.aerodynamics(),
-            data.alpha_rad,
+        let l = self.lateral_table.at(data.alpha_rad).coefficients(
             beta,
             inputs.aileron_rad,
             inputs.rudder_rad,

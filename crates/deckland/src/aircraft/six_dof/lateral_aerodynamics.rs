@@ -16,6 +16,7 @@
 //! public flap or gear increments were found), and the transfer of C_n to the CG is
 //! made by the equations of motion. The numbers are data ([`AerodynamicData`]).
 
+use crate::aircraft::aerodynamic_data::MAX_POLYNOMIAL_TERMS;
 use crate::aircraft::AerodynamicData;
 
 /// The lateral stability and control derivatives at one angle of attack (per rad).
@@ -61,21 +62,77 @@ impl LateralDerivatives {
     /// (rad), each polynomial by Horner's rule.
     #[inline]
     pub fn of(data: &AerodynamicData, alpha: f64) -> Self {
+        LateralTable::of(data).at(alpha)
+    }
+}
+
+/// The number of lateral derivatives, and of the lanes of [`LateralTable`] (one more, a
+/// zero polynomial, makes the count even for two-wide vector arithmetic).
+const DERIVATIVES: usize = 13;
+const LANES: usize = DERIVATIVES + 1;
+
+/// The lateral derivatives' polynomials laid out by power: `by_power[k][i]` is
+/// derivative i's coefficient of α^k (zero past its last), in the order of
+/// [`LateralDerivatives`]. Horner's rule runs over all the derivatives at once, power by
+/// power, which the compiler turns into vector arithmetic; each lane does exactly the
+/// operations of [`Polynomial::horner`](crate::aircraft::Polynomial::horner), so the values
+/// are the same to the bit. Built once with the aircraft.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LateralTable {
+    by_power: [[f64; LANES]; MAX_POLYNOMIAL_TERMS],
+}
+
+impl LateralTable {
+    /// The table of the aircraft whose data are `data`.
+    pub fn of(data: &AerodynamicData) -> Self {
         let (l, n, y) = (&data.rolling_moment, &data.yawing_moment, &data.side_force);
-        Self {
-            roll_beta: l.beta.horner(alpha),
-            roll_aileron: l.aileron.horner(alpha),
-            roll_rudder: l.rudder.horner(alpha),
-            roll_p: l.roll_rate.horner(alpha),
-            roll_r: l.yaw_rate.horner(alpha),
-            yaw_beta: n.beta.horner(alpha),
-            yaw_aileron: n.aileron.horner(alpha),
-            yaw_rudder: n.rudder.horner(alpha),
-            yaw_p: n.roll_rate.horner(alpha),
-            yaw_r: n.yaw_rate.horner(alpha),
-            side_beta: y.beta.horner(alpha),
-            side_aileron: y.aileron.horner(alpha),
-            side_rudder: y.rudder.horner(alpha),
+        let polynomials = [
+            &l.beta,
+            &l.aileron,
+            &l.rudder,
+            &l.roll_rate,
+            &l.yaw_rate,
+            &n.beta,
+            &n.aileron,
+            &n.rudder,
+            &n.roll_rate,
+            &n.yaw_rate,
+            &y.beta,
+            &y.aileron,
+            &y.rudder,
+        ];
+        let mut by_power = [[0.0; LANES]; MAX_POLYNOMIAL_TERMS];
+        for (i, polynomial) in polynomials.iter().enumerate() {
+            for (k, c) in polynomial.coefficients().iter().enumerate() {
+                by_power[k][i] = *c;
+            }
+        }
+        Self { by_power }
+    }
+
+    /// The derivatives at angle of attack `alpha` (rad).
+    #[inline(always)]
+    pub fn at(&self, alpha: f64) -> LateralDerivatives {
+        let mut sum = [0.0; LANES];
+        for row in self.by_power.iter().rev() {
+            for (s, c) in sum.iter_mut().zip(row) {
+                *s = *s * alpha + c;
+            }
+        }
+        LateralDerivatives {
+            roll_beta: sum[0],
+            roll_aileron: sum[1],
+            roll_rudder: sum[2],
+            roll_p: sum[3],
+            roll_r: sum[4],
+            yaw_beta: sum[5],
+            yaw_aileron: sum[6],
+            yaw_rudder: sum[7],
+            yaw_p: sum[8],
+            yaw_r: sum[9],
+            side_beta: sum[10],
+            side_aileron: sum[11],
+            side_rudder: sum[12],
         }
     }
 }
@@ -104,19 +161,36 @@ pub fn lateral_coefficients(
     p_hat: f64,
     r_hat: f64,
 ) -> LateralCoefficients {
-    let d = LateralDerivatives::of(data, alpha);
-    LateralCoefficients {
-        roll: d.roll_beta * beta
-            + d.roll_aileron * aileron
-            + d.roll_rudder * rudder
-            + d.roll_p * p_hat
-            + d.roll_r * r_hat,
-        yaw: d.yaw_beta * beta
-            + d.yaw_aileron * aileron
-            + d.yaw_rudder * rudder
-            + d.yaw_p * p_hat
-            + d.yaw_r * r_hat,
-        side: d.side_beta * beta + d.side_aileron * aileron + d.side_rudder * rudder,
+    LateralTable::of(data)
+        .at(alpha)
+        .coefficients(beta, aileron, rudder, p_hat, r_hat)
+}
+
+impl LateralDerivatives {
+    /// The coefficients at β, aileron δa, rudder δr (rad) and normalised rates p̂, r̂ (–).
+    #[inline(always)]
+    pub fn coefficients(
+        &self,
+        beta: f64,
+        aileron: f64,
+        rudder: f64,
+        p_hat: f64,
+        r_hat: f64,
+    ) -> LateralCoefficients {
+        let d = self;
+        LateralCoefficients {
+            roll: d.roll_beta * beta
+                + d.roll_aileron * aileron
+                + d.roll_rudder * rudder
+                + d.roll_p * p_hat
+                + d.roll_r * r_hat,
+            yaw: d.yaw_beta * beta
+                + d.yaw_aileron * aileron
+                + d.yaw_rudder * rudder
+                + d.yaw_p * p_hat
+                + d.yaw_r * r_hat,
+            side: d.side_beta * beta + d.side_aileron * aileron + d.side_rudder * rudder,
+        }
     }
 }
 
