@@ -3,6 +3,7 @@
 
 #![allow(clippy::unwrap_used)] // tests fail loudly by design
 
+use deckland::environment::ShipModelKind;
 use deckland::recording::SummaryRecorder;
 use deckland::scenario::{load_scenario, Scenario, ScenarioError, DEFAULT_SCENARIO_TOML};
 use deckland::simulation::{Outcome, Simulation};
@@ -56,9 +57,30 @@ fn keys_left_out_take_the_values_of_the_files_hardware_set() {
     assert_eq!(gains.integral_per_s3, 7.0);
     // A realistic file that names no `[control]` takes the default's, but for the
     // wave-off keys that came with the recovery limits (a file must name them).
+    // Nor a ship model: a file without `[environment.ship]`, or without `[environment]`,
+    // flies the paper's filter ship, as one whose section names no `model` does (the files
+    // written before the seaway became the default).
     let mut realistic = Scenario::default();
     realistic.control.wave_off = deckland::control::WaveOffParameters::named_by_none();
+    realistic.environment.ship.model = ShipModelKind::Filters;
     assert_eq!(load_scenario("", "r.toml").unwrap(), realistic);
+    for text in [
+        "[environment.wind]\nturbulence = true\n",
+        "[environment.ship]\nforward_speed_mps = 7.7\n",
+    ] {
+        let flown = load_scenario(text, "r.toml").unwrap();
+        assert_eq!(
+            flown.environment.ship.model,
+            ShipModelKind::Filters,
+            "{text}"
+        );
+    }
+    let seaway = load_scenario("[environment.ship]\nmodel = \"seaway\"\n", "r.toml").unwrap();
+    assert_eq!(seaway.environment.ship.model, ShipModelKind::Seaway);
+    assert_eq!(
+        Scenario::default().environment.ship.model,
+        ShipModelKind::Seaway
+    );
 }
 
 #[test]

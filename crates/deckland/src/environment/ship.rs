@@ -148,6 +148,16 @@ impl Default for ShipMotionParameters {
 }
 
 impl ShipMotionParameters {
+    /// The ship of a scenario file with no `[environment.ship]`: the built-in default's
+    /// values with the model of a file that names none ([`ShipModelKind::named_by_none`]),
+    /// as a section without `model` reads.
+    pub fn named_by_none() -> Self {
+        Self {
+            model: ShipModelKind::named_by_none(),
+            ..Self::default()
+        }
+    }
+
     /// The configured sea's stationary σ of the height of a deck point `lever_arm_m` aft of
     /// the pitch centre (m): √(σ_H² + (r·σ_θ)²), heave and pitch independent and the pitch
     /// small (§3.1), whether or not the motion is `enabled`: 2.91 m at the landing point

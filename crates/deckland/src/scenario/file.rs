@@ -697,18 +697,20 @@ mod tests {
         let _ = std::fs::remove_dir_all(&folder);
     }
 
-    /// An empty file is the default scenario, but for the wave-off keys that came with
-    /// the seaway's recovery limits, which a file must name (every file written before
-    /// them flies as it did): the early check off, no airspeed limit in the wave-off.
-    /// Naming them gives the default itself.
+    /// An empty file is the default scenario, but for what came with the seaway, which
+    /// a file must name (every file written before it flies as it did): the filter ship,
+    /// the early check off, no airspeed limit in the wave-off. Naming them gives the
+    /// default itself.
     #[test]
-    fn an_empty_file_is_the_default_scenario_but_for_the_recovery_keys() {
+    fn an_empty_file_is_the_default_scenario_but_for_the_seaway_and_its_recovery_keys() {
         let mut expected = Scenario::default();
+        expected.environment.ship.model = crate::environment::ShipModelKind::Filters;
         expected.control.wave_off.recovery.foul_deck_time_to_go_s = 0.0;
         expected.control.wave_off.recovery.foul_deck_model = crate::control::FoulDeckModel::Linear;
         expected.control.wave_off.climb_out_airspeed_margin_mps = 0.0;
         assert_eq!(load_scenario("", "empty.toml"), Ok(expected));
-        let named = "[control.wave_off]\nclimb_out_airspeed_margin_mps = 10.0\n\
+        let named = "[environment.ship]\nmodel = \"seaway\"\n\
+                     [control.wave_off]\nclimb_out_airspeed_margin_mps = 10.0\n\
                      [control.wave_off.recovery]\nfoul_deck_time_to_go_s = 10.0\n\
                      foul_deck_model = \"stationary\"\n";
         assert_eq!(load_scenario(named, "named.toml"), Ok(Scenario::default()));

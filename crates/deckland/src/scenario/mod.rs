@@ -46,7 +46,9 @@ pub use template::DEFAULT_SCENARIO_TOML;
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct EnvironmentSection {
-    /// Ship heave and pitch (docs/model.md §3.1).
+    /// Ship heave and pitch (docs/model.md §3.1); a file with no `[environment.ship]`
+    /// names no ship model ([`ShipMotionParameters::named_by_none`]).
+    #[serde(default = "ShipMotionParameters::named_by_none")]
     pub ship: ShipMotionParameters,
     /// The seaway of the `seaway` ship model (docs/model.md §12): read only when
     /// `ship.model = "seaway"`.
@@ -63,6 +65,16 @@ pub struct EnvironmentSection {
 }
 
 impl EnvironmentSection {
+    /// The environment of a scenario file with no `[environment]`: the built-in
+    /// default's, with the ship of a file that names no model
+    /// ([`ShipMotionParameters::named_by_none`]).
+    pub fn named_by_none() -> Self {
+        Self {
+            ship: ShipMotionParameters::named_by_none(),
+            ..Self::default()
+        }
+    }
+
     /// The ship motion this environment's ship model builds (its `ship` and `seaway`).
     pub fn ship_motion(&self) -> Result<ShipMotion, ParameterError> {
         crate::environment::ship_motion(&self.ship, &self.seaway)
@@ -371,7 +383,9 @@ pub struct Scenario {
     pub mission: Mission,
     /// The aircraft.
     pub aircraft: AircraftSection,
-    /// Ship motion, deck geometry, wind and sensor noise.
+    /// Ship motion, deck geometry, wind and sensor noise; a file with no
+    /// `[environment]` names no ship model ([`EnvironmentSection::named_by_none`]).
+    #[serde(default = "EnvironmentSection::named_by_none")]
     pub environment: EnvironmentSection,
     /// The controllers; a file that names no `[control]` flies
     /// [`ControlSection::named_by_none`].
