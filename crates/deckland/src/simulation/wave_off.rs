@@ -74,7 +74,7 @@ impl ClosedLoop {
         };
         // The ramp-strike limits of this sea (the ordinary ones but in a heavy sea).
         let wave_off = &self.wave_off_in_sea;
-        let inputs = wave_off_inputs(&wave_off, &flight_path, &self.deck, &reference, &hook);
+        let inputs = wave_off_inputs(wave_off, &flight_path, &self.deck, &reference, &hook);
         let decision = inputs.and_then(|inputs| {
             wave_off
                 .decide_foul_deck(&inputs)
