@@ -56,7 +56,30 @@ enum Command {
     Rare(commands::rare::RareArgs),
 }
 
+/// The figure options of a command that writes figures.
+fn figure_args(command: &Command) -> Option<&plot::FigureArgs> {
+    match command {
+        Command::Land(args) => Some(&args.figures),
+        Command::Sink(args) => Some(&args.figures),
+        Command::Environment(args) => Some(&args.figures),
+        Command::Step(args) => Some(&args.figures),
+        Command::Reproduce(args) => Some(&args.figures),
+        Command::Run(args) => Some(&args.figures),
+        Command::Campaign(args) => Some(&args.figures),
+        Command::Merge(args) => Some(&args.figures),
+        Command::Rare(args) => Some(&args.figures),
+        Command::Trim(_) | Command::Linearize(_) | Command::Scenario(_) | Command::Aircraft(_) => {
+            None
+        }
+    }
+}
+
 fn run(cli: &Cli) -> Result<()> {
+    // Every figure the command writes is sized by its options, checked before anything
+    // is flown or written.
+    if let Some(figures) = figure_args(&cli.command) {
+        plot::options::set(figures.options()?);
+    }
     match &cli.command {
         Command::Trim(args) => commands::trim::run(args),
         Command::Linearize(args) => commands::linearize::run(args),

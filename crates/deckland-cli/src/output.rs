@@ -460,7 +460,9 @@ fn lock_folder(_folder: &Path) -> Result<Option<FolderLock>> {
 }
 
 /// Extensions of the files deckland writes (results, tables, plots, pages).
-const OUTPUT_EXTENSIONS: [&str; 8] = ["csv", "toml", "json", "html", "parquet", "png", "svg", "md"];
+const OUTPUT_EXTENSIONS: [&str; 9] = [
+    "csv", "toml", "json", "html", "parquet", "png", "svg", "pdf", "md",
+];
 
 /// Whether `name` is named as a file deckland writes: a stem of ASCII letters, digits,
 /// `_` and `-`, and one of [`OUTPUT_EXTENSIONS`]. A name a tampered list adds

@@ -36,6 +36,9 @@ pub struct EnvironmentArgs {
         allow_negative_numbers = true
     )]
     pub(crate) airspeed_mps: f64,
+    /// Figure size on paper, text size, PNG resolution and PDF.
+    #[command(flatten)]
+    pub(crate) figures: crate::plot::FigureArgs,
     /// Output folder (default: a new `runs/environment-<UTC time>`).
     #[arg(long)]
     pub(crate) out: Option<PathBuf>,

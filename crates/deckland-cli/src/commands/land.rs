@@ -52,6 +52,9 @@ pub struct LandArgs {
     /// the outcome as events.
     #[arg(long)]
     pub acmi: bool,
+    /// Figure size on paper, text size, PNG resolution and PDF.
+    #[command(flatten)]
+    pub figures: crate::plot::FigureArgs,
     /// Output folder, overwriting and JSON printing.
     #[command(flatten)]
     pub output: OutputArgs,

@@ -42,6 +42,9 @@ pub struct MergeArgs {
     /// any order.
     #[arg(required = true)]
     pub shards: Vec<PathBuf>,
+    /// Figure size on paper, text size, PNG resolution and PDF.
+    #[command(flatten)]
+    pub figures: crate::plot::FigureArgs,
     /// Output folder, overwriting and JSON printing.
     #[command(flatten)]
     pub output: OutputArgs,

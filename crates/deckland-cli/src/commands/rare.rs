@@ -57,6 +57,9 @@ pub struct RareArgs {
     /// Flights that reached the event to save with their plots (at most 20).
     #[arg(long, default_value_t = 3)]
     pub save_flights: usize,
+    /// Figure size on paper, text size, PNG resolution and PDF.
+    #[command(flatten)]
+    pub figures: crate::plot::FigureArgs,
     /// Output folder, overwriting and JSON printing.
     #[command(flatten)]
     pub output: OutputArgs,

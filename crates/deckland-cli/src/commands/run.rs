@@ -36,6 +36,9 @@ pub struct RunArgs {
     /// `land` does.
     #[arg(long)]
     pub acmi: bool,
+    /// Figure size on paper, text size, PNG resolution and PDF.
+    #[command(flatten)]
+    pub figures: crate::plot::FigureArgs,
     /// Output folder, overwriting and JSON printing.
     #[command(flatten)]
     pub output: OutputArgs,

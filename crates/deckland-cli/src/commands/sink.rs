@@ -59,6 +59,9 @@ pub struct SinkArgs {
     /// The hardware set, or a scenario file, to fly the command with.
     #[command(flatten)]
     pub base: BaseScenarioArgs,
+    /// Figure size on paper, text size, PNG resolution and PDF.
+    #[command(flatten)]
+    pub figures: crate::plot::FigureArgs,
     /// Output folder, overwriting and JSON printing.
     #[command(flatten)]
     pub output: OutputArgs,

@@ -202,13 +202,13 @@ where
                 (centre - half_cap, bottom),
                 (centre + half_cap, bottom),
             ]);
-            INTERVAL_COLOUR.stroke_width(2)
+            INTERVAL_COLOUR.stroke_width(pxu(2))
         }
-        None => OPEN_INTERVAL_COLOUR.stroke_width(1),
+        None => OPEN_INTERVAL_COLOUR.stroke_width(pxu(1)),
     };
     for path in paths {
         let pixels: Vec<_> = path.iter().map(|p| canvas.chart.backend_coord(p)).collect();
-        canvas.occupancy.mark_path(&pixels, 2);
+        canvas.occupancy.mark_path(&pixels, px(2));
         canvas
             .chart
             .draw_series(std::iter::once(PathElement::new(path, style)))
@@ -226,7 +226,7 @@ fn draw_label<DB: DrawingBackend>(
 where
     DB::ErrorType: 'static,
 {
-    let text_style = (FONT_FAMILY, 13)
+    let text_style = (FONT_FAMILY, font_px(f64::from(TEXT_SIZE)))
         .into_font()
         .color(&RGBColor(40, 40, 40))
         .pos(Pos::new(HPos::Center, VPos::Bottom));
@@ -237,13 +237,13 @@ where
         .map_err(failed)?;
     let (w, h) = (i32::try_from(w).unwrap_or(0), i32::try_from(h).unwrap_or(0));
     canvas.occupancy.mark_rect(PixelRect::at(
-        (pixel.0 - w / 2 - 2, pixel.1 - 4 - h),
-        (w + 4, h + 4),
+        (pixel.0 - w / 2 - px(2), pixel.1 - px(4) - h),
+        (w + px(4), h + px(4)),
     ));
     let at = canvas.area_pixel(anchor);
     canvas
         .area
-        .draw(&Text::new(label, (at.0, at.1 - 4), text_style))
+        .draw(&Text::new(label, (at.0, at.1 - px(4)), text_style))
         .map_err(failed)?;
     Ok(())
 }
@@ -257,7 +257,8 @@ where
     let decades = y.start.floor() as i32..=y.end.ceil() as i32;
     let heights = decades.flat_map(|k| (2..10).map(move |m| f64::from(k) + f64::from(m).log10()));
     for h in heights.filter(|h| y.contains(h)) {
-        let path = PathElement::new(vec![(x.start, h), (x.end, h)], MINOR_GRID_COLOUR);
+        let style = MINOR_GRID_COLOUR.stroke_width(pxu(1));
+        let path = PathElement::new(vec![(x.start, h), (x.end, h)], style);
         canvas
             .chart
             .draw_series(std::iter::once(path))

@@ -7,14 +7,59 @@ use anyhow::{anyhow, Result};
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::legend::{draw_marker, Legend, MarkerShape, MarkerStyle, Occupancy, PixelRect, Sample};
-use super::panel::{OutsideLegend, Panel};
+use super::panel::{Outside, OutsideLegend, Panel};
 use super::style::*;
 use super::ticks::{self, AxisLabels, X_LABELS, Y_LABELS};
 
+/// Design pixels of a plotting area's width per label asked for on its x axis, and of its
+/// height per label on its y axis: a narrow figure asks for fewer, so that its labels
+/// stand apart.
+const LABEL_SPACING: (i32, i32) = (55, 22);
+
 /// A panel's chart: data coordinates to pixels.
 pub(super) type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// How a panel's text around its axes is set ([`Panel::chrome`]); lengths in layout px.
+pub(super) struct Chrome {
+    /// Around the panel.
+    pub(super) margin: i32,
+    /// The title's lines and font size.
+    pub(super) caption: (Vec<String>, f64),
+    /// Above and below the title.
+    pub(super) caption_padding: i32,
+    /// The height the title takes, with its padding.
+    pub(super) caption_band: i32,
+    /// The x axis's label: lines and font size.
+    pub(super) x_label: (Vec<String>, f64),
+    /// The y axis's label: lines and font size.
+    pub(super) y_label: (Vec<String>, f64),
+    /// Height of the x axis's label area.
+    pub(super) x_area: i32,
+    /// Width of the y axis's label area.
+    pub(super) y_area: i32,
+    /// A bar chart's categories are turned to read upwards.
+    pub(super) turned_categories: bool,
+}
+
+impl Chrome {
+    /// The height beyond what one line of each label and of the title takes.
+    pub(super) fn extra_height(&self) -> i32 {
+        extra_lines(&self.caption) + self.x_area - px(48)
+    }
+}
+
+/// The height of the lines of `text` (lines, font size) after its first.
+fn extra_lines((lines, size): &(Vec<String>, f64)) -> i32 {
+    lines_before(lines.len().saturating_sub(1)) * line_height(*size)
+}
+
+/// `count` as a number of lines.
+fn lines_before(count: usize) -> i32 {
+    i32::try_from(count).unwrap_or(0)
+}
 
 /// The error of a failed drawing call.
 pub(super) fn failed<E: std::error::Error + Send + Sync>(
@@ -114,7 +159,77 @@ impl Panel {
         Ok((xs.end - xs.start, ys.end - ys.start))
     }
 
-    /// The chart's axes, title and grid on `area`.
+    /// How the panel's text around its axes is set on `area`: the title and the axis
+    /// labels on as many lines as they need to fit, the categories of a bar chart turned
+    /// when they do not fit side by side, and the label areas that leaves.
+    pub(super) fn chrome<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>) -> Chrome {
+        let (width, height) = area.dim_in_pixel();
+        let (width, height) = (
+            i32::try_from(width).unwrap_or(0),
+            i32::try_from(height).unwrap_or(0),
+        );
+        let margin = px(12);
+        // The title, as plotters' caption: centred, half its height above and below (at
+        // most 5 px), inside the margin.
+        let caption_width = u32::try_from(width - px(30)).unwrap_or(0);
+        let caption = fitted_lines(area, &self.title, (19, 15), caption_width);
+        let caption_style = TextStyle::from((FONT_FAMILY, caption.1).into_font());
+        let caption_height = text_height(area, &caption_style);
+        let padding = (caption_height / 2).min(px(5));
+        let caption_band = 2 * padding + caption_height + extra_lines(&caption);
+        // Categories too wide for their share of the axis are turned to read upwards.
+        let small = TextStyle::from((FONT_FAMILY, font_px(f64::from(TEXT_SIZE))).into_font());
+        let widest_category = self
+            .categories
+            .iter()
+            .filter_map(|name| area.estimate_text_size(name, &small).ok())
+            .map(|(w, _)| i32::try_from(w).unwrap_or(0))
+            .max()
+            .unwrap_or(0);
+        let mut turned = 0;
+        // The axis labels, wrapped to the plotting area's sides: laid out twice, since the
+        // extra lines of each shorten the other's side.
+        let (mut x_area, mut y_area) = (px(48), px(72));
+        let mut x_label = (Vec::new(), 0.0);
+        let mut y_label = (Vec::new(), 0.0);
+        for _ in 0..2 {
+            let plot_width = width - 2 * margin - y_area;
+            let plot_height = height - 2 * margin - caption_band - x_area;
+            let share = plot_width / i32::try_from(self.categories.len().max(1)).unwrap_or(1);
+            turned = if widest_category > share - px(8) {
+                (widest_category - text_height(area, &small)).max(0)
+            } else {
+                0
+            };
+            x_label = fitted_lines(
+                area,
+                &self.x_label,
+                (16, TEXT_SIZE),
+                u32::try_from(plot_width).unwrap_or(0),
+            );
+            y_label = fitted_lines(
+                area,
+                &self.y_label,
+                (16, TEXT_SIZE),
+                u32::try_from(plot_height).unwrap_or(0),
+            );
+            x_area = px(48) + turned + extra_lines(&x_label);
+            y_area = px(72) + extra_lines(&y_label);
+        }
+        Chrome {
+            margin,
+            caption,
+            caption_padding: padding,
+            caption_band,
+            x_label,
+            y_label,
+            x_area,
+            y_area,
+            turned_categories: turned > 0,
+        }
+    }
+
+    /// The chart's axes, title and grid on `area` (see [`Panel::chrome`]).
     pub(super) fn axes<'a, DB: DrawingBackend + 'a>(
         &self,
         area: &'a DrawingArea<DB, Shift>,
@@ -126,20 +241,89 @@ impl Panel {
         DB::ErrorType: 'static,
     {
         let error = |e: DrawingAreaErrorKind<DB::ErrorType>| anyhow!("plot drawing failed: {e}");
-        let width = area.dim_in_pixel().0.saturating_sub(30);
-        let caption_size = fitted_font_size(area, &self.title, 19, width);
+        let chrome = self.chrome(area);
+        let margin = chrome.margin;
+        let (width, height) = area.dim_in_pixel();
+        let (width, height) = (
+            i32::try_from(width).unwrap_or(0),
+            i32::try_from(height).unwrap_or(0),
+        );
         let mut chart = ChartBuilder::on(area)
-            .caption(&self.title, (FONT_FAMILY, caption_size))
-            .margin(12)
-            .x_label_area_size(48)
-            .y_label_area_size(72)
+            .margin_top(margin + chrome.caption_band)
+            .margin_bottom(margin)
+            .margin_left(margin)
+            .margin_right(margin)
+            .x_label_area_size(chrome.x_area)
+            .y_label_area_size(chrome.y_area)
             .build_cartesian_2d(x_range.clone(), y_range.clone())
             .map_err(error)?;
-        let x_labels = AxisLabels::new(&x_range, X_LABELS, false);
+        let (xs, ys) = chart.plotting_area().get_pixel_range();
+        let base = area.get_base_pixel();
+        let (caption, caption_size) = &chrome.caption;
+        let caption_style = TextStyle::from((FONT_FAMILY, *caption_size).into_font())
+            .pos(Pos::new(HPos::Center, VPos::Top));
+        for (index, line) in caption.iter().enumerate() {
+            let down = lines_before(index) * line_height(*caption_size);
+            let at = (width / 2, margin + chrome.caption_padding + down);
+            area.draw(&Text::new(line.clone(), at, caption_style.clone()))
+                .map_err(error)?;
+        }
+        // As plotters' axis descriptions: the x label's last line on the bottom of its
+        // area, centred under the plotting area; the y label turned, its first line on
+        // the left of its area, centred beside the plotting area.
+        let (x_lines, x_size) = &chrome.x_label;
+        let style = TextStyle::from((FONT_FAMILY, *x_size).into_font())
+            .pos(Pos::new(HPos::Center, VPos::Bottom));
+        let centre = (xs.start + xs.end) / 2 - base.0;
+        for (index, line) in x_lines.iter().enumerate() {
+            let up = lines_before(x_lines.len() - 1 - index) * line_height(*x_size);
+            let at = (centre, height - margin - up);
+            area.draw(&Text::new(line.clone(), at, style.clone()))
+                .map_err(error)?;
+        }
+        let (y_lines, y_size) = &chrome.y_label;
+        let style = TextStyle::from((FONT_FAMILY, *y_size).into_font())
+            .transform(FontTransform::Rotate270)
+            .pos(Pos::new(HPos::Center, VPos::Top));
+        let middle = (ys.start + ys.end) / 2 - base.1;
+        for (index, line) in y_lines.iter().enumerate() {
+            let at = (margin + lines_before(index) * line_height(*y_size), middle);
+            area.draw(&Text::new(line.clone(), at, style.clone()))
+                .map_err(error)?;
+        }
+        // Turned categories: reading upwards, each ending under its tick.
+        if categories && chrome.turned_categories {
+            let style = TextStyle::from((FONT_FAMILY, font_px(f64::from(TEXT_SIZE))).into_font())
+                .transform(FontTransform::Rotate270)
+                .pos(Pos::new(HPos::Right, VPos::Center));
+            for (index, name) in self.categories.iter().enumerate() {
+                let x = chart.backend_coord(&(index as f64, y_range.start)).0 - base.0;
+                let at = (x, ys.end - base.1 + px(10));
+                area.draw(&Text::new(name.clone(), at, style.clone()))
+                    .map_err(error)?;
+            }
+        }
+        let labels = |pixels: i32, spacing: i32, most: usize| {
+            let fit = f64::from(pixels) / f64::from(px(spacing));
+            (fit.floor().max(0.0) as usize).clamp(2, most)
+        };
+        let x_labels = AxisLabels::new(
+            &x_range,
+            labels(xs.end - xs.start, LABEL_SPACING.0, X_LABELS),
+            false,
+        );
         // A log axis labels the whole powers of ten (its values are their exponents).
         let log = self.log_y;
-        let y_labels = AxisLabels::new(&y_range, Y_LABELS, self.integer_y || log);
-        let names = self.categories.clone();
+        let y_labels = AxisLabels::new(
+            &y_range,
+            labels(ys.end - ys.start, LABEL_SPACING.1, Y_LABELS),
+            self.integer_y || log,
+        );
+        let names = if chrome.turned_categories {
+            Vec::new()
+        } else {
+            self.categories.clone()
+        };
         let x_format = move |x: &f64| {
             if categories {
                 let nearest = x.round();
@@ -167,25 +351,26 @@ impl Panel {
         mesh.y_labels(y_labels.count)
             .x_label_formatter(&x_format)
             .y_label_formatter(&y_format)
-            .x_desc(&self.x_label)
-            .y_desc(&self.y_label)
-            .label_style((FONT_FAMILY, 14))
-            .axis_desc_style((FONT_FAMILY, 16))
+            // A font, not a (family, size) pair, which plotters would round to whole px.
+            .label_style((FONT_FAMILY, font_px(f64::from(TEXT_SIZE))).into_font())
+            .set_all_tick_mark_size(px(5))
+            .axis_style(BLACK.stroke_width(pxu(1)))
             .max_light_lines(if log { 0 } else { 4 })
-            .light_line_style(RGBColor(242, 242, 242))
-            .bold_line_style(RGBColor(218, 218, 218))
+            .light_line_style(RGBColor(242, 242, 242).stroke_width(pxu(1)))
+            .bold_line_style(RGBColor(218, 218, 218).stroke_width(pxu(1)))
             .draw()
             .map_err(error)?;
         Ok(chart)
     }
 
-    /// Draws the panel on `area`; its legend goes into `column` if given, else inside if a
-    /// free place exists. Returns the width the legend needs beside the axes when it is
-    /// in the column or found no free place.
+    /// Draws the panel on `area`; its legend goes into a column beside the axes if given
+    /// one, else inside where a free place exists, else under the axes if given a place
+    /// there. Returns the size the legend needs outside the axes (with its spacing) when
+    /// it is in the column or found no free place.
     pub(super) fn draw<DB: DrawingBackend>(
         &self,
         area: &DrawingArea<DB, Shift>,
-        column: Option<&DrawingArea<DB, Shift>>,
+        outside: Outside<'_, DB>,
     ) -> Result<OutsideLegend>
     where
         DB::ErrorType: 'static,
@@ -199,16 +384,28 @@ impl Panel {
             return Ok(None);
         }
         let size = legend.size(area)?;
-        // With a legend column beside the figure, every legend goes there: beside the
-        // panel whose legend fits inside its axes, the column would stay empty.
-        if let Some(column) = column {
-            let base = column.get_base_pixel();
-            legend.draw(column, (base.0 + 4, plot.top), size)?;
-        } else if let Some(place) = occupancy.free_place(size) {
-            legend.draw(area, place, size)?;
-            return Ok(None);
+        match outside {
+            // With a legend column beside the figure, every legend goes there: beside the
+            // panel whose legend fits inside its axes, the column would stay empty.
+            Outside::Column(column) => {
+                let base = column.get_base_pixel();
+                legend.draw(column, (base.0 + px(4), plot.top), size)?;
+            }
+            Outside::Nowhere | Outside::Below(_) => {
+                if let Some(place) = occupancy.free_place(size) {
+                    legend.draw(area, place, size)?;
+                    return Ok(None);
+                }
+                // Under the axes, from their left edge, within the strip.
+                if let Outside::Below(strip) = outside {
+                    let base = strip.get_base_pixel();
+                    let right = base.0 + i32::try_from(strip.dim_in_pixel().0).unwrap_or(0);
+                    let left = plot.left.min(right - px(4) - size.0).max(base.0 + px(4));
+                    legend.draw(strip, (left, base.1 + px(2)), size)?;
+                }
+            }
         }
-        Ok(Some(size.0 + 12))
+        Ok(Some((size.0 + px(12), size.1 + px(8))))
     }
 
     /// Draws lines, histograms, points and reference lines; returns the legend, what was
@@ -284,7 +481,7 @@ impl Panel {
                 .draw_series(
                     boxes
                         .iter()
-                        .map(|c| Rectangle::new(*c, colour.stroke_width(1))),
+                        .map(|c| Rectangle::new(*c, colour.stroke_width(pxu(1)))),
                 )
                 .map_err(failed)?;
             entries.push((histogram.name.clone(), Sample::Patch { colour, opacity }));
@@ -297,41 +494,26 @@ impl Panel {
     where
         DB::ErrorType: 'static,
     {
-        let (xs, ys) = canvas.chart.plotting_area().get_pixel_range();
-        let (x_range, y_range) = (&canvas.x_range, &canvas.y_range);
-        // One pixel in data units.
-        let pixel_x = (x_range.end - x_range.start) / f64::from((xs.end - xs.start).max(1));
-        let pixel_y = (y_range.end - y_range.start) / f64::from((ys.end - ys.start).max(1));
         for (index, line) in self.lines.iter().enumerate() {
             let colour = line.colour.unwrap_or(PALETTE[index % PALETTE.len()]);
             let points = finite(&line.points);
             let chart = &mut canvas.chart;
             let pixels: Vec<(i32, i32)> = points.iter().map(|p| chart.backend_coord(p)).collect();
-            // A jagged line is drawn 1 px wide three times, offset by one pixel right and
-            // down, so that it looks as heavy as the others (2 px) without breaking up.
-            let jagged = !line.dashed && is_jagged(&pixels);
+            // Widths and dashes in design pixels (the legend's sample draws them alike).
             let width = 2;
             let dash = line.dashed.then_some(line.pattern.unwrap_or((10, 6)));
             match dash {
                 Some((dash, gap)) => {
-                    let style = colour.stroke_width(width);
-                    let series = DashedLineSeries::new(points, dash, gap, style);
+                    let style = colour.stroke_width(pxu(width));
+                    let series = DashedLineSeries::new(points, pxu(dash), pxu(gap), style);
                     chart.draw_series(series).map_err(failed)?;
                 }
-                None if jagged => {
-                    for (dx, dy) in [(0.0, 0.0), (pixel_x, 0.0), (0.0, -pixel_y)] {
-                        let shifted = points.iter().map(|(x, y)| (x + dx, y + dy));
-                        chart
-                            .draw_series(LineSeries::new(shifted, colour.stroke_width(1)))
-                            .map_err(failed)?;
-                    }
-                }
                 None => {
-                    let series = LineSeries::new(points, colour.stroke_width(width));
+                    let series = LineSeries::new(points, colour.stroke_width(pxu(width)));
                     chart.draw_series(series).map_err(failed)?;
                 }
             }
-            canvas.occupancy.mark_path(&pixels, 2);
+            canvas.occupancy.mark_path(&pixels, px(2));
             let sample = Sample::Line {
                 colour,
                 width,
@@ -366,9 +548,10 @@ impl Panel {
             let (colour, (dash, gap)) = REFERENCE_STYLES[index % REFERENCE_STYLES.len()];
             let ends = [(x_range.start, line.y), (x_range.end, line.y)];
             let pixels = ends.map(|p| canvas.chart.backend_coord(&p));
-            let series = DashedLineSeries::new(ends, dash, gap, colour.stroke_width(1));
+            let style = colour.stroke_width(pxu(1));
+            let series = DashedLineSeries::new(ends, pxu(dash), pxu(gap), style);
             canvas.chart.draw_series(series).map_err(failed)?;
-            canvas.occupancy.mark_path(&pixels, 1);
+            canvas.occupancy.mark_path(&pixels, px(1));
             let sample = Sample::Line {
                 colour,
                 width: 1,
@@ -394,38 +577,45 @@ impl Panel {
         Ok(())
     }
 
-    /// Draws the vertical reference lines, each labelled at the top of the axes.
+    /// Draws the vertical reference lines, each labelled at the top of the axes (a label
+    /// that would overlap one before it a line lower).
     fn draw_vertical_lines<DB: DrawingBackend>(&self, canvas: &mut Canvas<DB>) -> Result<()>
     where
         DB::ErrorType: 'static,
     {
-        let label_style = (FONT_FAMILY, 13).into_font().color(&VERTICAL_LINE_COLOUR);
+        let label_style = (FONT_FAMILY, font_px(f64::from(TEXT_SIZE)))
+            .into_font()
+            .color(&VERTICAL_LINE_COLOUR);
         let (area, y_range, plot) = (canvas.area, canvas.y_range.clone(), canvas.plot);
+        let mut labels: Vec<PixelRect> = Vec::new();
         for line in self.vertical_lines.iter().filter(|l| l.x.is_finite()) {
-            let style = VERTICAL_LINE_COLOUR.stroke_width(1);
+            let style = VERTICAL_LINE_COLOUR.stroke_width(pxu(1));
             let ends = [(line.x, y_range.start), (line.x, y_range.end)];
             let pixels = ends.map(|p| canvas.chart.backend_coord(&p));
             canvas
                 .chart
-                .draw_series(DashedLineSeries::new(ends, 2, 3, style))
+                .draw_series(DashedLineSeries::new(ends, pxu(2), pxu(3), style))
                 .map_err(failed)?;
-            canvas.occupancy.mark_path(&pixels, 1);
+            canvas.occupancy.mark_path(&pixels, px(1));
             let (w, h) = area
                 .estimate_text_size(&line.name, &label_style)
                 .map_err(failed)?;
             let (w, h) = (i32::try_from(w).unwrap_or(0), i32::try_from(h).unwrap_or(0));
             let top = canvas.chart.backend_coord(&(line.x, y_range.end));
             // The label right of the line, or left of it where it would leave the axes.
-            let left = if top.0 + 4 + w > plot.right {
-                top.0 - 4 - w
+            let left = if top.0 + px(4) + w > plot.right {
+                top.0 - px(4) - w
             } else {
-                top.0 + 4
+                top.0 + px(4)
             };
-            canvas
-                .occupancy
-                .mark_rect(PixelRect::at((left - 2, top.1 + 2), (w + 4, h + 4)));
+            let mut rect = PixelRect::at((left - px(2), top.1 + px(2)), (w + px(4), h + px(4)));
+            while labels.iter().any(|other| other.overlaps(&rect)) {
+                rect = PixelRect::at((rect.left, rect.bottom), (w + px(4), h + px(4)));
+            }
+            labels.push(rect);
+            canvas.occupancy.mark_rect(rect);
             let base = area.get_base_pixel();
-            let at = (left - base.0, top.1 + 4 - base.1);
+            let at = (left - base.0, rect.top + px(2) - base.1);
             area.draw(&Text::new(line.name.clone(), at, label_style.clone()))
                 .map_err(failed)?;
         }
@@ -449,7 +639,7 @@ impl Panel {
                     MarkerStyle::filled(MarkerShape::Circle, colour, 3).opacity(0.7)
                 }
             };
-            let radius = i32::try_from(style.size).unwrap_or(3) + 1;
+            let radius = px(i32::try_from(style.size).unwrap_or(3) + 1);
             for point in &points {
                 let pixel = canvas.chart.backend_coord(point);
                 canvas.occupancy.mark_point(pixel, radius);
@@ -462,7 +652,11 @@ impl Panel {
                 let fill = style.colour.mix(style.opacity).filled();
                 canvas
                     .chart
-                    .draw_series(points.into_iter().map(move |p| Circle::new(p, 3, fill)))
+                    .draw_series(
+                        points
+                            .into_iter()
+                            .map(move |p| Circle::new(p, pxu(3), fill)),
+                    )
                     .map_err(failed)?;
             }
             canvas.legend.push(&series.name, Sample::Marker(style));
@@ -486,7 +680,7 @@ impl Panel {
             let colour = MARKER_COLOURS[index % MARKER_COLOURS.len()];
             let style = MarkerStyle::filled(marker.shape, colour, 6);
             let pixel = canvas.chart.backend_coord(&marker.point);
-            canvas.occupancy.mark_point(pixel, 8);
+            canvas.occupancy.mark_point(pixel, px(8));
             draw_marker(canvas.area, canvas.area_pixel(marker.point), style).map_err(failed)?;
             canvas.legend.push(&marker.name, Sample::Marker(style));
         }

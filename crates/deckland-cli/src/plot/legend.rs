@@ -8,24 +8,24 @@ use plotters::coord::Shift;
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 
+use super::style::{figure_width, font_px, px, pxu, TEXT_SIZE};
 use super::FONT_FAMILY;
 
 /// A point in backend pixels.
 pub(crate) type Pixel = (i32, i32);
 
-/// Font size of legend text (px).
-const TEXT_SIZE: u32 = 14;
-/// Height of one legend line (px).
+// Lengths in design pixels (`style::px`), but for the occupancy grid's cell.
+/// Height of one legend line.
 const LINE_HEIGHT: i32 = 19;
-/// Width of an entry's sample (px).
+/// Width of an entry's sample.
 const SAMPLE_WIDTH: i32 = 30;
-/// Widest line of a note before it is wrapped (px).
-const NOTE_WIDTH: u32 = 300;
-/// Padding inside the legend box (px).
+/// Widest line of a note before it is wrapped.
+const NOTE_WIDTH: i32 = 300;
+/// Padding inside the legend box.
 const PADDING: i32 = 7;
-/// Distance kept between the legend and anything drawn, and the axes (px).
+/// Distance kept between the legend and anything drawn, and the axes.
 const CLEARANCE: i32 = 4;
-/// Side of a cell of the occupancy grid (px).
+/// Side of a cell of the occupancy grid (layout px).
 const CELL: i32 = 2;
 
 /// A rectangle in backend pixels, `right` and `bottom` excluded.
@@ -56,6 +56,14 @@ impl PixelRect {
             right: top_left.0 + width,
             bottom: top_left.1 + height,
         }
+    }
+
+    /// Whether `self` and `other` share a pixel.
+    pub(crate) fn overlaps(&self, other: &PixelRect) -> bool {
+        self.left < other.right
+            && other.left < self.right
+            && self.top < other.bottom
+            && other.top < self.bottom
     }
 
     fn width(&self) -> i32 {
@@ -173,10 +181,11 @@ impl Occupancy {
     pub(crate) fn free_place(&self, size: (i32, i32)) -> Option<Pixel> {
         let area = self.area;
         let (width, height) = size;
-        let left = area.left + CLEARANCE;
-        let right = area.right - CLEARANCE - width;
-        let top = area.top + CLEARANCE;
-        let bottom = area.bottom - CLEARANCE - height;
+        let clearance = px(CLEARANCE);
+        let left = area.left + clearance;
+        let right = area.right - clearance - width;
+        let top = area.top + clearance;
+        let bottom = area.bottom - clearance - height;
         if right < left || bottom < top {
             return None;
         }
@@ -184,10 +193,10 @@ impl Occupancy {
         let free = |x: i32, y: i32| {
             self.is_free(
                 PixelRect {
-                    left: x - CLEARANCE,
-                    top: y - CLEARANCE,
-                    right: x + width + CLEARANCE,
-                    bottom: y + height + CLEARANCE,
+                    left: x - clearance,
+                    top: y - clearance,
+                    right: x + width + clearance,
+                    bottom: y + height + clearance,
                 },
                 &table,
             )
@@ -320,11 +329,13 @@ pub(crate) struct Legend {
 }
 
 fn text_style() -> TextStyle<'static> {
-    (FONT_FAMILY, TEXT_SIZE).into_font().color(&BLACK)
+    (FONT_FAMILY, font_px(f64::from(TEXT_SIZE)))
+        .into_font()
+        .color(&BLACK)
 }
 
 fn note_style() -> TextStyle<'static> {
-    (FONT_FAMILY, TEXT_SIZE)
+    (FONT_FAMILY, font_px(f64::from(TEXT_SIZE)))
         .into_font()
         .style(FontStyle::Bold)
         .color(&BLACK)
@@ -348,11 +359,16 @@ impl Legend {
         }
     }
 
-    /// The notes wrapped at word boundaries into lines of at most [`NOTE_WIDTH`] px.
+    /// The notes wrapped at word boundaries into lines of at most [`NOTE_WIDTH`] (and
+    /// no wider than the figure leaves within the legend's box).
     fn note_lines<DB: DrawingBackend>(&self, area: &DrawingArea<DB, Shift>) -> Vec<String> {
+        let widest = figure_width().map_or(px(NOTE_WIDTH), |figure| {
+            px(NOTE_WIDTH).min(figure - px(2 * PADDING + 16))
+        });
+        let widest = u32::try_from(widest).unwrap_or(0);
         let fits = |text: &str| {
             area.estimate_text_size(text, &note_style())
-                .is_ok_and(|(w, _)| w <= NOTE_WIDTH)
+                .is_ok_and(|(w, _)| w <= widest)
         };
         let mut lines = Vec::new();
         for note in &self.notes {
@@ -419,10 +435,13 @@ impl Legend {
             width = width.max(width_of(note, &note_style())?);
         }
         for entry in &self.entries {
-            width = width.max(SAMPLE_WIDTH + 6 + width_of(&entry.label, &text_style())?);
+            width = width.max(px(SAMPLE_WIDTH + 6) + width_of(&entry.label, &text_style())?);
         }
         let lines = i32::try_from(notes.len() + self.entries.len()).unwrap_or(0);
-        Ok((width + 2 * PADDING, lines * LINE_HEIGHT + 2 * PADDING - 4))
+        Ok((
+            width + 2 * px(PADDING),
+            lines * px(LINE_HEIGHT) + 2 * px(PADDING) - px(4),
+        ))
     }
 
     /// Draws the legend with its top-left corner at `top_left` (backend pixels).
@@ -446,25 +465,27 @@ impl Legend {
         .map_err(error)?;
         area.draw(&Rectangle::new(
             [at(x0, y0), at(x0 + size.0, y0 + size.1)],
-            RGBColor(170, 170, 170).stroke_width(1),
+            RGBColor(170, 170, 170).stroke_width(pxu(1)),
         ))
         .map_err(error)?;
-        let mut y = y0 + PADDING;
+        let (padding, line_height) = (px(PADDING), px(LINE_HEIGHT));
+        let mut y = y0 + padding;
         for note in &self.note_lines(area) {
-            area.draw(&Text::new(note.clone(), at(x0 + PADDING, y), note_style()))
+            area.draw(&Text::new(note.clone(), at(x0 + padding, y), note_style()))
                 .map_err(error)?;
-            y += LINE_HEIGHT;
+            y += line_height;
         }
         for entry in &self.entries {
-            let left = x0 + PADDING;
-            draw_sample(area, entry.sample, at(left, y + LINE_HEIGHT / 2 - 2)).map_err(error)?;
+            let left = x0 + padding;
+            let middle = y + line_height / 2 - px(2);
+            draw_sample(area, entry.sample, at(left, middle)).map_err(error)?;
             area.draw(&Text::new(
                 entry.label.clone(),
-                at(left + SAMPLE_WIDTH + 6, y),
+                at(left + px(SAMPLE_WIDTH + 6), y),
                 text_style(),
             ))
             .map_err(error)?;
-            y += LINE_HEIGHT;
+            y += line_height;
         }
         Ok(())
     }
@@ -478,33 +499,39 @@ fn draw_sample<DB: DrawingBackend>(
     start: Pixel,
 ) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
     let (left, middle) = start;
-    let right = left + SAMPLE_WIDTH;
+    let right = left + px(SAMPLE_WIDTH);
     match sample {
         Sample::Line {
             colour,
             width,
             dash,
         } => {
-            let style = colour.stroke_width(width);
+            let style = colour.stroke_width(pxu(width));
             let ends = vec![(left, middle), (right, middle)];
             match dash {
-                Some((dash, gap)) => area.draw(&DashedPathElement::new(ends, dash, gap, style)),
+                Some((dash, gap)) => {
+                    area.draw(&DashedPathElement::new(ends, pxu(dash), pxu(gap), style))
+                }
                 None => area.draw(&PathElement::new(ends, style)),
             }
         }
         Sample::Marker(style) => draw_marker(area, ((left + right) / 2, middle), style),
         Sample::Patch { colour, opacity } => {
-            let corners = [(left + 3, middle - 6), (right - 3, middle + 6)];
+            let corners = [
+                (left + px(3), middle - px(6)),
+                (right - px(3), middle + px(6)),
+            ];
             area.draw(&Rectangle::new(corners, colour.mix(opacity).filled()))?;
-            area.draw(&Rectangle::new(corners, colour.stroke_width(1)))
+            area.draw(&Rectangle::new(corners, colour.stroke_width(pxu(1))))
         }
         Sample::Interval { colour } => {
             let x = (left + right) / 2;
-            let style = colour.stroke_width(2);
+            let style = colour.stroke_width(pxu(2));
+            let (half, cap) = (px(7), px(5));
             for path in [
-                vec![(x, middle - 7), (x, middle + 7)],
-                vec![(x - 5, middle - 7), (x + 5, middle - 7)],
-                vec![(x - 5, middle + 7), (x + 5, middle + 7)],
+                vec![(x, middle - half), (x, middle + half)],
+                vec![(x - cap, middle - half), (x + cap, middle - half)],
+                vec![(x - cap, middle + half), (x + cap, middle + half)],
             ] {
                 area.draw(&PathElement::new(path, style))?;
             }
@@ -539,24 +566,26 @@ fn marker_polygon(shape: MarkerShape, (x, y): Pixel, s: i32) -> Vec<Pixel> {
     }
 }
 
-/// Draws one marker centred on `centre` (area-relative pixels).
+/// Draws one marker centred on `centre` (area-relative pixels), its size in design
+/// pixels.
 pub(crate) fn draw_marker<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     centre: Pixel,
     style: MarkerStyle,
 ) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
     let colour = style.colour.mix(style.opacity);
-    let outline = colour.stroke_width(1);
-    let s = i32::try_from(style.size).unwrap_or(4);
+    let outline = colour.stroke_width(pxu(1));
+    let size = pxu(style.size);
+    let s = i32::try_from(size).unwrap_or(4);
     match style.shape {
         MarkerShape::Circle if style.filled => {
-            area.draw(&Circle::new(centre, style.size, colour.filled()))
+            area.draw(&Circle::new(centre, size, colour.filled()))
         }
-        MarkerShape::Circle => area.draw(&Circle::new(centre, style.size, outline)),
+        MarkerShape::Circle => area.draw(&Circle::new(centre, size, outline)),
         MarkerShape::Cross => {
             let (x, y) = centre;
             let d = (s * 4 / 5).max(1);
-            let width = if style.filled { 2 } else { 1 };
+            let width = pxu(if style.filled { 2 } else { 1 });
             for ends in [
                 [(x - d, y - d), (x + d, y + d)],
                 [(x - d, y + d), (x + d, y - d)],

@@ -3,6 +3,7 @@
 
 use std::ops::Range;
 
+use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::legend::{MarkerShape, MarkerStyle};
@@ -108,8 +109,19 @@ pub struct Panel {
     pub(super) y_downward: bool,
 }
 
-/// Where a panel's legend went: `Some(width)` when it needs the column beside the axes.
-pub(super) type OutsideLegend = Option<i32>;
+/// Where a panel's legend went: `Some((width, height))` (layout px, with the spacing it
+/// needs there) when it is drawn outside the axes or found no free place inside them.
+pub(super) type OutsideLegend = Option<(i32, i32)>;
+
+/// Where a panel's legend goes when it is not inside its axes.
+pub(super) enum Outside<'a, DB: DrawingBackend> {
+    /// Nowhere: it is drawn only where it finds a free place inside.
+    Nowhere,
+    /// Into a column beside the figure's axes, even when it would fit inside.
+    Column(&'a DrawingArea<DB, Shift>),
+    /// Under the axes when it finds no free place inside.
+    Below(&'a DrawingArea<DB, Shift>),
+}
 
 impl Panel {
     /// An empty panel with a title and axis labels (say the units: "time (s)").

@@ -1,6 +1,7 @@
 //! The figures' look: palette, reference-line styles, marker colours, the bundled font,
 //! and small helpers shared by the drawing code.
 
+use std::cell::Cell;
 use std::sync::OnceLock;
 
 use anyhow::{anyhow, Result};
@@ -54,6 +55,76 @@ pub(crate) const SHIP_COLOUR: RGBColor = RGBColor(150, 150, 150);
 /// Colour of vertical reference lines and their labels.
 pub(super) const VERTICAL_LINE_COLOUR: RGBColor = RGBColor(90, 90, 90);
 
+thread_local! {
+    /// Layout pixels per design pixel of the figure being drawn on this thread (see
+    /// [`px`]); 1 outside [`Figure`](super::Figure)'s drawing.
+    static SCALE: Cell<f64> = const { Cell::new(1.0) };
+    /// Width (layout px) of the figure being drawn on this thread; 0 outside its drawing.
+    static FIGURE_WIDTH: Cell<i32> = const { Cell::new(0) };
+}
+
+/// Every length of the drawing code (font sizes, margins, line widths, dash patterns,
+/// marker sizes, the legend's spacing) is written in *design pixels*: those of a figure
+/// whose small text (tick labels, legends) is 14 px. A figure is laid out at its output
+/// resolution, where that text is `--font-pt` at `--figure-dpi`: plotters places
+/// everything on whole pixels, and a figure laid out coarser than it is printed shows
+/// the steps. [`Figure`](super::Figure) sets the scale for the time it draws; this is
+/// `design` design pixels in layout pixels, rounded (at least 1 for a positive length).
+pub(super) fn px(design: i32) -> i32 {
+    let scaled = (f64::from(design) * scale()).round() as i32;
+    if design > 0 {
+        scaled.max(1)
+    } else {
+        scaled
+    }
+}
+
+/// [`px`] of an unsigned length (a line width, a marker's size).
+pub(super) fn pxu(design: u32) -> u32 {
+    u32::try_from(px(i32::try_from(design).unwrap_or(i32::MAX / 4))).unwrap_or(0)
+}
+
+/// A font size (plotters' size, 1.24 em) of `design` design pixels in layout pixels,
+/// not rounded: text takes any size.
+pub(super) fn font_px(design: f64) -> f64 {
+    design * scale()
+}
+
+/// The scale set for this thread's drawing.
+pub(super) fn scale() -> f64 {
+    SCALE.with(Cell::get)
+}
+
+/// The width (layout px) of the figure being drawn, `None` outside a figure's drawing.
+pub(super) fn figure_width() -> Option<i32> {
+    Some(FIGURE_WIDTH.with(Cell::get)).filter(|w| *w > 0)
+}
+
+/// Sets the scale and width of this thread's drawing until dropped, then restores the
+/// previous ones.
+pub(super) struct ScaleGuard {
+    previous: (f64, i32),
+}
+
+impl ScaleGuard {
+    /// Draws at `scale` layout pixels per design pixel, a figure `width` layout px wide,
+    /// until the guard is dropped.
+    pub(super) fn set(scale: f64, width: i32) -> Self {
+        let previous = (
+            SCALE.with(|cell| cell.replace(scale)),
+            FIGURE_WIDTH.with(|cell| cell.replace(width)),
+        );
+        Self { previous }
+    }
+}
+
+impl Drop for ScaleGuard {
+    fn drop(&mut self) {
+        SCALE.with(|cell| cell.set(self.previous.0));
+        FIGURE_WIDTH.with(|cell| cell.set(self.previous.1));
+    }
+}
+
 /// Registers the bundled font once per process.
 pub(super) fn register_bundled_font() -> Result<()> {
     static REGISTERED: OnceLock<bool> = OnceLock::new();
@@ -69,27 +140,6 @@ pub(super) fn register_bundled_font() -> Result<()> {
     }
 }
 
-/// Whether a line, in pixels, turns back on itself vertically at more than a tenth of its
-/// points: plotters polygonises lines wider than 1 px and such lines then break up, so
-/// they are drawn 1 px wide.
-pub(super) fn is_jagged(pixels: &[(i32, i32)]) -> bool {
-    let mut steps = pixels
-        .windows(2)
-        .map(|w| w[1].1 - w[0].1)
-        .filter(|dy| *dy != 0);
-    let Some(mut previous) = steps.next() else {
-        return false;
-    };
-    let mut reversals = 0;
-    for step in steps {
-        if step.signum() != previous.signum() {
-            reversals += 1;
-        }
-        previous = step;
-    }
-    reversals * 10 > pixels.len()
-}
-
 /// The finite points of `points`.
 pub(super) fn finite(points: &[(f64, f64)]) -> Vec<(f64, f64)> {
     points
@@ -99,18 +149,81 @@ pub(super) fn finite(points: &[(f64, f64)]) -> Vec<(f64, f64)> {
         .collect()
 }
 
-/// The largest font size from `preferred` down to 11 px at which `text` fits `width` px.
-pub(super) fn fitted_font_size<DB: DrawingBackend>(
+/// The size of the small text (tick labels, legends, line labels) in design pixels:
+/// `--font-pt` is its size.
+pub(super) const TEXT_SIZE: u32 = 14;
+
+/// `text` set to fit `width` (layout px): on one line at the largest size from
+/// `preferred` down to `smallest` (design px) at which it fits, else wrapped at word
+/// boundaries at `smallest`. Returns the lines and the size (layout px).
+pub(super) fn fitted_lines<DB: DrawingBackend>(
     area: &DrawingArea<DB, Shift>,
     text: &str,
-    preferred: u32,
+    (preferred, smallest): (u32, u32),
     width: u32,
-) -> u32 {
-    (11..=preferred)
+) -> (Vec<String>, f64) {
+    let fits = |text: &str, size: f64| {
+        area.estimate_text_size(text, &TextStyle::from((FONT_FAMILY, size).into_font()))
+            .is_ok_and(|(w, _)| w <= width)
+    };
+    let one_line = (smallest..=preferred.max(smallest))
         .rev()
-        .find(|&size| {
-            area.estimate_text_size(text, &TextStyle::from((FONT_FAMILY, size).into_font()))
-                .is_ok_and(|(w, _)| w <= width)
-        })
-        .unwrap_or(11)
+        .map(|size| font_px(f64::from(size)))
+        .find(|&size| fits(text, size));
+    match one_line {
+        Some(size) => (vec![text.to_owned()], size),
+        None => {
+            let size = font_px(f64::from(smallest));
+            (wrap(text, |line| fits(line, size)), size)
+        }
+    }
+}
+
+/// The distance (layout px) between the baselines of lines of text of plotters' `size`
+/// (1.24 em): 1.2 em.
+pub(super) fn line_height(size: f64) -> i32 {
+    (size / 1.24 * 1.2).round() as i32
+}
+
+/// The height (layout px) plotters gives a line of text in `style`.
+pub(super) fn text_height<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    style: &TextStyle,
+) -> i32 {
+    area.estimate_text_size("Hg", style)
+        .map_or(0, |(_, h)| i32::try_from(h).unwrap_or(0))
+}
+
+/// `text` wrapped at word boundaries into lines that `fits` (a word longer than a line
+/// stands alone); a last line of one word takes the word before it along when both fit.
+pub(super) fn wrap(text: &str, fits: impl Fn(&str) -> bool) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    let mut line = String::new();
+    for word in text.split_whitespace() {
+        let candidate = if line.is_empty() {
+            word.to_owned()
+        } else {
+            format!("{line} {word}")
+        };
+        if line.is_empty() || fits(&candidate) {
+            line = candidate;
+        } else {
+            lines.push(std::mem::replace(&mut line, word.to_owned()));
+        }
+    }
+    if !line.is_empty() || lines.is_empty() {
+        lines.push(line);
+    }
+    if let [.., previous, last] = &mut lines[..] {
+        if !last.contains(' ') {
+            if let Some((rest, word)) = previous.rsplit_once(' ') {
+                let joined = format!("{word} {last}");
+                if fits(&joined) {
+                    *last = joined;
+                    previous.truncate(rest.len());
+                }
+            }
+        }
+    }
+    lines
 }

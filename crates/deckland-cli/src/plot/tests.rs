@@ -16,14 +16,6 @@ fn bundled_font_registers() {
 }
 
 #[test]
-fn jagged_lines_are_recognised() {
-    let smooth: Vec<(i32, i32)> = (0..100).map(|i| (i, i / 3)).collect();
-    let jagged: Vec<(i32, i32)> = (0..100).map(|i| (i / 5, (i % 2) * 3)).collect();
-    assert!(!is_jagged(&smooth));
-    assert!(is_jagged(&jagged));
-}
-
-#[test]
 fn ranges_are_padded_and_never_empty() {
     let flat = Panel::new("t", "x", "y").series("a", vec![(0.0, 2.0), (1.0, 2.0)]);
     let (x, y) = flat.ranges();

@@ -68,6 +68,9 @@ pub struct CampaignArgs {
     /// on it.
     #[arg(long, value_parser = clap::value_parser!(u16).range(1..=MAX_THREADS), allow_negative_numbers = true)]
     pub threads: Option<u16>,
+    /// Figure size on paper, text size, PNG resolution and PDF.
+    #[command(flatten)]
+    pub figures: crate::plot::FigureArgs,
     /// Output folder, overwriting and JSON printing.
     #[command(flatten)]
     pub output: OutputArgs,

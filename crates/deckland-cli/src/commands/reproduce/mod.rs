@@ -38,6 +38,9 @@ use crate::plot::Figure;
 /// Options of `deckland reproduce`.
 #[derive(Debug, Clone, Args)]
 pub struct ReproduceArgs {
+    /// Figure size on paper, text size, PNG resolution and PDF.
+    #[command(flatten)]
+    pub figures: crate::plot::FigureArgs,
     /// Output folder (default: a new `runs/reproduce-<UTC time>`).
     #[arg(long)]
     pub out: Option<PathBuf>,
