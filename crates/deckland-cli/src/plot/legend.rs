@@ -400,20 +400,8 @@ impl Legend {
             if !line.is_empty() {
                 lines.push(line);
             }
-            // No lone word on a note's last line: take the previous line's last word
-            // down when both still fit ("… 0.3 m above the / deck" → "… 0.3 m above / the
-            // deck").
-            if let [.., previous, last] = &mut lines[note_start..] {
-                if !last.contains(' ') {
-                    if let Some((rest, word)) = previous.rsplit_once(' ') {
-                        let joined = format!("{word} {last}");
-                        if fits(&joined) {
-                            *last = joined;
-                            previous.truncate(rest.len());
-                        }
-                    }
-                }
-            }
+            // No lone word on a note's last line.
+            super::style::no_lone_last_word(&mut lines[note_start..], fits);
         }
         lines
     }

@@ -214,7 +214,14 @@ pub(super) fn wrap(text: &str, fits: impl Fn(&str) -> bool) -> Vec<String> {
     if !line.is_empty() || lines.is_empty() {
         lines.push(line);
     }
-    if let [.., previous, last] = &mut lines[..] {
+    no_lone_last_word(&mut lines, &fits);
+    lines
+}
+
+/// No lone word on the last of `lines`: takes the line before's last word down when the
+/// two still `fit` ("… 0.3 m above the / deck" → "… 0.3 m above / the deck").
+pub(super) fn no_lone_last_word(lines: &mut [String], fits: impl Fn(&str) -> bool) {
+    if let [.., previous, last] = lines {
         if !last.contains(' ') {
             if let Some((rest, word)) = previous.rsplit_once(' ') {
                 let joined = format!("{word} {last}");
@@ -225,5 +232,4 @@ pub(super) fn wrap(text: &str, fits: impl Fn(&str) -> bool) -> Vec<String> {
             }
         }
     }
-    lines
 }
