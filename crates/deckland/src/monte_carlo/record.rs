@@ -43,7 +43,7 @@ impl RunRecord {
 
     /// The lateral outcome, if the run is a 3-D approach that touched down.
     pub fn lateral_touchdown(&self) -> Option<LateralTouchdown> {
-        self.result.as_ref().ok()?.touchdown?.lateral
+        self.result.as_ref().ok()?.lateral_touchdown().copied()
     }
 
     /// Why the run did not trap, in words (`None` for a trap).

@@ -30,7 +30,7 @@ impl RunSummary {
 
     /// As [`RunSummary::graded_by_lso`], with other thresholds.
     pub fn graded_by_lso_with(&self, thresholds: &GradeThresholds) -> Option<LsoGrade> {
-        let lateral = self.touchdown.as_ref().and_then(|t| t.lateral.as_ref());
+        let lateral = self.lateral_touchdown();
         let end = match self.outcome {
             Outcome::Trap if lateral.is_some_and(|l| l.off_centre) => PassEnd::Dangerous,
             Outcome::Trap => PassEnd::Trap,

@@ -504,5 +504,13 @@ pub struct RunSummary {
     pub lso_grade: Option<LsoGrade>,
 }
 
+impl RunSummary {
+    /// The lateral outcome of the touchdown, if the run is a 3-D approach that touched
+    /// down.
+    pub fn lateral_touchdown(&self) -> Option<&super::lateral::LateralTouchdown> {
+        self.touchdown.as_ref().and_then(|t| t.lateral.as_ref())
+    }
+}
+
 #[cfg(test)]
 mod tests;
