@@ -169,7 +169,13 @@ def test_the_python_blocks_run(path, tmp_path, monkeypatch):
         run_blocks(path, namespace, tmp_path)
     finally:
         for cluster in clusters:  # the blocks leave them open, as a session would
-            cluster.close()
+            try:
+                cluster.close()
+            except TimeoutError:
+                # The stand-in's event-loop thread did not stop within distributed's 10 s
+                # (a loaded machine): housekeeping of the test's own stand-in, not a fault
+                # of the document; the daemon thread ends with the process.
+                pass
 
 
 def run_blocks(path: Path, namespace: dict, folder: Path) -> None:
