@@ -117,5 +117,36 @@ pub(super) fn png(tree: &usvg::Tree, zoom: f64, dpi: u32) -> Result<Vec<u8>> {
 pub(super) fn pdf(tree: &usvg::Tree, dpi: f64) -> Result<Vec<u8>> {
     let page = svg2pdf::PageOptions { dpi: dpi as f32 };
     svg2pdf::to_pdf(tree, svg2pdf::ConversionOptions::default(), page)
+        .map(in_resource_order)
         .map_err(|e| anyhow!("cannot convert the figure to PDF: {e}"))
+}
+
+/// `pdf` with the entries of each resources dictionary sorted, so that one figure gives
+/// one file, byte for byte. svg2pdf 0.13 names its resources in a fixed order but writes
+/// a dictionary's entries in the order of a `HashMap` (a random order, different in every
+/// map). The entries are lines `/xo3 14 0 R` between a line ending in `<<` and one that
+/// is `>>`; they are only reordered among themselves, so every byte offset of the file
+/// (its cross-reference table) stays right.
+fn in_resource_order(pdf: Vec<u8>) -> Vec<u8> {
+    let is_entry = |line: &[u8]| {
+        let words: Vec<&[u8]> = line.trim_ascii().split(|b| *b == b' ').collect();
+        matches!(words.as_slice(), [name, object, b"0", b"R"]
+            if name.len() > 1 && name[0] == b'/' && name[1..].iter().all(u8::is_ascii_alphanumeric)
+                && !object.is_empty() && object.iter().all(u8::is_ascii_digit))
+    };
+    let mut lines: Vec<&[u8]> = pdf.split_inclusive(|b| *b == b'\n').collect();
+    let mut start = 0;
+    while start < lines.len() {
+        let opens = lines[start].trim_ascii_end().ends_with(b"<<");
+        let mut end = start + 1;
+        while opens && end < lines.len() && is_entry(lines[end]) {
+            end += 1;
+        }
+        let closes = lines.get(end).is_some_and(|l| l.trim_ascii() == b">>");
+        if opens && closes && end > start + 2 {
+            lines[start + 1..end].sort_unstable();
+        }
+        start = end.max(start + 1);
+    }
+    lines.concat()
 }

@@ -297,6 +297,45 @@ fn the_pdf_is_vector_with_the_font_embedded() {
     assert!(shown, "no text operators in the PDF's content");
 }
 
+/// One figure gives one PDF, byte for byte: svg2pdf writes a resources dictionary in a
+/// `HashMap`'s order, random in every map, which the figure's writer puts in order (a
+/// figure with several resources of a kind came out differently from one conversion to
+/// the next before).
+#[test]
+fn the_pdf_of_a_figure_is_the_same_every_time() {
+    register();
+    let values: Vec<f64> = (0..300).map(|i| (f64::from(i) * 0.37).sin()).collect();
+    let figure = sample_figure().panel(
+        Panel::new("Touchdowns", "sink rate (m/s)", "runs")
+            .histogram("O-PD", values.clone(), 12)
+            .histogram("PID", values.iter().map(|v| v * 0.8).collect(), 12),
+    );
+    let render = || {
+        figure
+            .clone()
+            .render_files(&options(88.9, 8.0, 300))
+            .expect("renders")
+            .pdf
+            .expect("asked for")
+    };
+    let first = render();
+    let text = String::from_utf8_lossy(&first);
+    let entries = text
+        .lines()
+        .filter(|l| {
+            let l = l.trim_start();
+            (l.starts_with("/xo") || l.starts_with("/gs")) && l.ends_with(" 0 R")
+        })
+        .count();
+    assert!(
+        entries >= 3,
+        "the sample has {entries} resource entries: too few to test order"
+    );
+    for _ in 0..8 {
+        assert!(render() == first, "two conversions of one figure differ");
+    }
+}
+
 /// The inflated content of the PDF's Flate streams.
 fn streams(pdf: &[u8]) -> Vec<Vec<u8>> {
     let mut out = Vec::new();
