@@ -1,8 +1,13 @@
 //! The `deckland` command line: trim, linearise, simulate and plot carrier landings.
+//!
+//! The binary's whole work is [`main`]; the library exists so that another front end
+//! (the Python package) writes the same result folders, plots and reports through
+//! [`folders`].
 
 #[macro_use]
 mod output;
 mod commands;
+pub mod folders;
 mod html;
 mod interrupt;
 mod parquet;
@@ -97,7 +102,8 @@ fn run(cli: &Cli) -> Result<()> {
     }
 }
 
-fn main() -> ExitCode {
+/// The command line: parses the arguments, runs the command and reports its error.
+pub fn main() -> ExitCode {
     let cli = Cli::parse();
     interrupt::install();
     match run(&cli) {

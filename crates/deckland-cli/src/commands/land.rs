@@ -15,7 +15,7 @@ use crate::output::OutputDir;
 pub(crate) use crate::plot::land::figures;
 use anyhow::{Context, Result};
 use clap::Args;
-use deckland::experiments::{fly_approach, ApproachRow};
+use deckland::experiments::{fly_approach, ApproachRow, ApproachRun};
 use deckland::metrics::TrapSheetPosition;
 use deckland::recording::acmi::{write_acmi, AcmiReference};
 use deckland::scenario::Scenario;
@@ -88,13 +88,54 @@ pub fn fly_and_write(
     with_acmi: bool,
 ) -> Result<RunSummary> {
     let run = fly_approach(scenario).context("cannot set up the approach")?;
-    let summary = run.summary.clone();
-    let report = LandingReport {
+    let flown = Flown {
+        scenario,
         controller,
         conditions,
-        seed: scenario.seed,
-        summary: &summary,
     };
+    write_approach_folder(&run, &flown, output, with_plots, with_acmi)?;
+    let report = flown.report(&run.summary);
+    if json {
+        outln!("{}", serde_json::to_string_pretty(&report)?)?;
+    } else {
+        print_summary(&report, output)?;
+    }
+    Ok(run.summary)
+}
+
+/// What was flown: the scenario, the pitch controller's label and the conditions' name.
+pub struct Flown<'a> {
+    /// The scenario flown (its seed is the run's).
+    pub scenario: &'a Scenario,
+    /// Pitch controller label.
+    pub controller: &'a str,
+    /// `ideal`, `adverse`, or the scenario file's name.
+    pub conditions: &'a str,
+}
+
+impl Flown<'_> {
+    fn report<'a>(&'a self, summary: &'a RunSummary) -> LandingReport<'a> {
+        LandingReport {
+            controller: self.controller,
+            conditions: self.conditions,
+            seed: self.scenario.seed,
+            summary,
+        }
+    }
+}
+
+/// Writes a flown approach's files into `output`: `scenario.toml`, `approach.csv`,
+/// `trap_sheet.csv`, `summary.json`, with `with_plots` the plots, with `with_acmi`
+/// `approach.acmi`, and `report.html`.
+pub fn write_approach_folder(
+    run: &ApproachRun,
+    flown: &Flown,
+    output: &OutputDir,
+    with_plots: bool,
+    with_acmi: bool,
+) -> Result<()> {
+    let scenario = flown.scenario;
+    let report = flown.report(&run.summary);
     let scenario_toml = toml::to_string(scenario).context("cannot write the scenario as TOML")?;
     output.write_bytes("scenario.toml", scenario_toml.as_bytes())?;
     let mut csv = csv::Writer::from_writer(Vec::new());
@@ -103,14 +144,17 @@ pub fn fly_and_write(
     }
     let bytes = csv.into_inner().map_err(|e| anyhow::anyhow!("{e}"))?;
     output.write_bytes("approach.csv", &bytes)?;
-    let sheet = trap_sheet_csv(&run, scenario.environment.deck.ramp_aft_of_aim_point_m)?;
+    let sheet = trap_sheet_csv(run, scenario.environment.deck.ramp_aft_of_aim_point_m)?;
     output.write_bytes("trap_sheet.csv", &sheet)?;
     let summary_json = serde_json::to_string_pretty(&report)?;
     output.write_bytes("summary.json", summary_json.as_bytes())?;
-    let flown = format!("{controller}, {conditions}, seed {}", scenario.seed);
+    let title = format!(
+        "{}, {}, seed {}",
+        flown.controller, flown.conditions, scenario.seed
+    );
     let mut plots = Vec::new();
     if with_plots {
-        for (stem, figure) in figures(&run, scenario, &flown) {
+        for (stem, figure) in figures(run, scenario, &title) {
             plots.push((stem, figure.save_with_svg(output, stem)?.1));
         }
     }
@@ -119,17 +163,12 @@ pub fn fly_and_write(
             deck_angle_deg: scenario.environment.deck.deck_angle_deg,
             ..AcmiReference::default()
         };
-        let replay = write_acmi(&reference, &flown, &run.samples, &run.events, &summary);
+        let replay = write_acmi(&reference, &title, &run.samples, &run.events, &run.summary);
         output.write_bytes("approach.acmi", replay.as_bytes())?;
     }
-    let page = html_report(&report, &flown, &plots, &scenario_toml, &summary_json);
+    let page = html_report(&report, &title, &plots, &scenario_toml, &summary_json);
     output.write_bytes("report.html", page.as_bytes())?;
-    if json {
-        outln!("{}", serde_json::to_string_pretty(&report)?)?;
-    } else {
-        print_summary(&report, output)?;
-    }
-    Ok(summary)
+    Ok(())
 }
 
 /// The rows of the summary table: quantity, value, unit — the numbers of `summary.json`,
