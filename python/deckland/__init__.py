@@ -12,6 +12,9 @@ this package calls it directly, so every number is the CLI's, bit for bit.
   pandas is installed, else a dict of numpy arrays; the columns of ``approach.csv``).
 - :func:`campaign`: many approaches in parallel (Monte Carlo), the rows of ``runs.csv``;
   :func:`deckland.dask.campaign` flies its shards on a Dask cluster (``deckland[dask]``).
+- ``out=``: :func:`fly` and :func:`campaign` write the folder ``deckland run`` and
+  ``deckland campaign`` write, the plots and ``report.html`` included, by the same code;
+  :class:`Figures` sizes the figures.
 - :func:`lateral_step`: a bank or sideslip step of the 6-DOF aircraft with the roll and
   yaw laws (``deckland step --axis roll|yaw``), its metrics and time series.
 - :class:`Approach`: the stepping API, one control interval at a time, the built-in
@@ -53,6 +56,7 @@ __all__ = [
     "MAX_RUNS",
     "Approach",
     "Campaign",
+    "Figures",
     "Flight",
     "LateralStep",
     "LinearModel",
@@ -67,6 +71,26 @@ __all__ = [
     "trim",
     "trim_six_dof",
 ]
+
+
+PathLike = Union[str, "os.PathLike[str]"]
+
+
+@dataclass(frozen=True)
+class Figures:
+    """How the plots of a folder written with ``out=`` are sized, as the command line's
+    ``--figure-width-mm``, ``--font-pt``, ``--figure-dpi`` and ``--pdf``.
+
+    ``width_mm`` is the printed width (30 to 500 mm; default 88.9, IEEE's one column),
+    ``font_pt`` the small text's size at that width (4 to 36 pt; default 8), ``dpi`` the
+    PNG's pixels per inch (72 to 1200; default 300) and ``pdf`` also writes each figure as
+    a vector PDF. A value out of range, or of the wrong type, raises when the folder is
+    asked for, before anything is flown."""
+
+    width_mm: float = 88.9
+    font_pt: float = 8.0
+    dpi: int = 300
+    pdf: bool = False
 
 
 @dataclass
@@ -87,6 +111,8 @@ class Flight:
     events: List[Dict[str, Any]] = field(default_factory=list)
     #: The approach as a Tacview ACMI 2.2 text (``fly(..., acmi=True)``), else None.
     acmi: Optional[str] = None
+    #: The folder written by ``fly(..., out=...)``, else None.
+    folder: Optional[str] = None
 
     def write_acmi(self, path: Union[str, "os.PathLike[str]"]) -> None:
         """Writes :attr:`acmi` to ``path`` (``approach.acmi`` of ``deckland land --acmi``),
@@ -134,6 +160,8 @@ class Campaign:
 
     runs: Any
     summary: Dict[str, Any]
+    #: The folder written by ``campaign(..., out=...)``, else None.
+    folder: Optional[str] = None
 
     @property
     def statistics(self) -> List[Dict[str, Any]]:
@@ -160,6 +188,10 @@ def fly(
     pitch_law: Optional[Callable[[Dict[str, float]], float]] = None,
     control_interval_s: float = 0.02,
     acmi: bool = False,
+    out: Optional[PathLike] = None,
+    force: bool = False,
+    plots: bool = True,
+    figures: Optional[Figures] = None,
 ) -> Flight:
     """Flies one approach and returns its :class:`Flight`.
 
@@ -176,11 +208,50 @@ def fly(
     With ``acmi=True`` the flight also holds the approach as a Tacview ACMI 2.2 replay
     (:attr:`Flight.acmi`, :meth:`Flight.write_acmi`), the file ``deckland land --acmi``
     writes.
+
+    With ``out``, the flight's folder is written there as ``deckland run FILE --out
+    OUT`` writes it: ``scenario.toml``, ``approach.csv``, ``trap_sheet.csv``,
+    ``summary.json``, the plots (PNG and SVG, sized by ``figures``, a :class:`Figures`;
+    none with ``plots=False``), ``approach.acmi`` with ``acmi=True``, and
+    ``report.html``, by the command line's own code (:attr:`Flight.folder`). A folder that
+    holds files is refused unless ``force=True`` replaces an earlier deckland result in
+    it, as ``--force`` does; a folder that cannot be written raises ``OSError``.
     """
-    summary, columns, events, replay = _deckland.fly(
-        scenario, seed, disperse, pitch_law, control_interval_s, acmi
+    summary, columns, events, replay, folder = _deckland.fly(
+        scenario,
+        seed,
+        disperse,
+        pitch_law,
+        control_interval_s,
+        acmi,
+        _path(out),
+        _flag("force", force),
+        _flag("plots", plots),
+        figures,
     )
-    return Flight(summary=summary, time_series=table(columns), events=events, acmi=replay)
+    return Flight(
+        summary=summary, time_series=table(columns), events=events, acmi=replay, folder=folder
+    )
+
+
+def _path(out: Optional[PathLike]) -> Optional[str]:
+    """``out`` as a path string (``None`` stays ``None``); anything else raises
+    ``TypeError``."""
+    if out is None:
+        return None
+    if not isinstance(out, (str, os.PathLike)):
+        raise TypeError(f"`out` = {out!r}: expected a path (str or os.PathLike) or None")
+    path = os.fspath(out)
+    if not isinstance(path, str):
+        raise TypeError(f"`out` = {out!r}: expected a text path, not bytes")
+    return path
+
+
+def _flag(name: str, value: Any) -> bool:
+    """``value`` if it is a bool; anything else raises ``TypeError`` naming ``name``."""
+    if not isinstance(value, bool):
+        raise TypeError(f"`{name}` = {value!r}: expected True or False")
+    return value
 
 
 def progress_callback(
@@ -230,6 +301,10 @@ def campaign(
     threads: Optional[int] = None,
     compare: bool = False,
     progress: Union[bool, Callable[[int, int], Any], None] = None,
+    *,
+    out: Optional[PathLike] = None,
+    force: bool = False,
+    figures: Optional[Figures] = None,
 ) -> Campaign:
     """Flies ``runs`` approaches of ``scenario`` in parallel, as ``deckland campaign``.
 
@@ -255,11 +330,24 @@ def campaign(
     a callable is called as ``progress(done, total)`` with the runs flown (at most every
     0.25 s and at the end; an exception it raises stops the campaign); ``None`` (the
     default) or ``False``, nothing.
+
+    With ``out``, the campaign's folder is written there as ``deckland campaign FILE --out
+    OUT`` writes it: ``scenario.toml``, ``runs.csv``, ``runs.parquet``, ``summary.json``,
+    the plots (sized by ``figures``, a :class:`Figures`) and ``report.html``, by the
+    command line's own code (:attr:`Campaign.folder`); ``force`` as for :func:`fly`.
     """
-    columns, summary = _deckland.campaign(
-        scenario, runs, seed, threads, compare, progress_callback(progress, "campaign")
+    columns, summary, folder = _deckland.campaign(
+        scenario,
+        runs,
+        seed,
+        threads,
+        compare,
+        progress_callback(progress, "campaign"),
+        _path(out),
+        _flag("force", force),
+        figures,
     )
-    return Campaign(runs=table(columns), summary=summary)
+    return Campaign(runs=table(columns), summary=summary, folder=folder)
 
 
 def rare(

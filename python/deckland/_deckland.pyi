@@ -184,7 +184,12 @@ def fly(
     disperse: bool = False,
     pitch_law: Optional[PitchLaw] = None,
     control_interval_s: float = 0.02,
-) -> Tuple[Dict[str, Any], Dict[str, np.ndarray], List[Dict[str, Any]]]: ...
+    acmi: bool = False,
+    out: Optional[str] = None,
+    force: bool = False,
+    plots: bool = True,
+    figures: Optional[Any] = None,
+) -> Tuple[Dict[str, Any], Dict[str, np.ndarray], List[Dict[str, Any]], Optional[str], Optional[str]]: ...
 def lateral_step(
     axis: str = "roll",
     step_deg: float = 10.0,
@@ -201,7 +206,10 @@ def campaign(
     threads: Optional[int] = None,
     compare: bool = False,
     progress: Optional[Callable[[int, int], Any]] = None,
-) -> Tuple[Dict[str, np.ndarray], Dict[str, Any]]: ...
+    out: Optional[str] = None,
+    force: bool = False,
+    figures: Optional[Any] = None,
+) -> Tuple[Dict[str, np.ndarray], Dict[str, Any], Optional[str]]: ...
 def rare(
     scenario: Scenario,
     event: str,
@@ -241,7 +249,9 @@ def campaign_shard(
     threads: Optional[int] = None,
     compare: bool = False,
 ) -> str: ...
-def merge_shards_text(shards: List[str]) -> Tuple[Dict[str, np.ndarray], Dict[str, Any]]: ...
+def merge_shards_text(
+    shards: List[str], out: Optional[str] = None, force: bool = False, figures: Optional[Any] = None
+) -> Tuple[Dict[str, np.ndarray], Dict[str, Any], Optional[str]]: ...
 def _bench_stepping(
     scenario: Optional[Scenario] = None, seed: Optional[int] = None, control_interval_s: float = 0.02
 ) -> Tuple[int, float]: ...

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 from typing import Any, Callable, Dict, List, Optional, Union
 
-from . import Campaign, Scenario, _deckland, progress_callback
+from . import Campaign, Figures, PathLike, Scenario, _deckland, _flag, _path, progress_callback
 from ._tables import table
 
 __all__ = ["campaign", "rare"]
@@ -53,6 +53,9 @@ def campaign(
     compare: bool = False,
     threads_per_shard: int = 1,
     progress: Union[bool, Callable[[int, int], Any], None] = None,
+    out: Optional[PathLike] = None,
+    force: bool = False,
+    figures: Optional[Figures] = None,
 ) -> Campaign:
     """Flies ``runs`` approaches of ``scenario`` as shards on the cluster of ``client``.
 
@@ -70,7 +73,12 @@ def campaign(
     ``progress`` is :func:`deckland.campaign`'s, counted as the shards come back:
     ``True`` writes a line to stderr at each tenth of the runs, a callable is called as
     ``progress(done, total)`` with the runs of the shards finished so far.
+
+    With ``out``, the merged campaign's folder is written there (on the client's
+    machine), as ``deckland merge`` writes it: :func:`deckland.campaign`'s ``out``,
+    ``force`` and ``figures``.
     """
+    out, force = _path(out), _flag("force", force)
     if not isinstance(runs, int) or isinstance(runs, bool) or not 1 <= runs <= _deckland.MAX_RUNS:
         raise ValueError(f"`runs` = {runs!r} is not allowed: expected a whole number in [1, {_deckland.MAX_RUNS}]")
     if shards is None:
@@ -93,8 +101,8 @@ def campaign(
     if report is not None:
         _report_shards(futures, runs, shards, 2 if compare else 1, report)
     texts = client.gather(futures)
-    columns, summary = _deckland.merge_shards_text(list(texts))
-    return Campaign(runs=table(columns), summary=summary)
+    columns, summary, folder = _deckland.merge_shards_text(list(texts), out, force, figures)
+    return Campaign(runs=table(columns), summary=summary, folder=folder)
 
 
 def _report_shards(

@@ -12,6 +12,7 @@
 //! Dask cluster with them.
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::path::PathBuf;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::time::{Duration, Instant};
 
@@ -21,6 +22,8 @@ use deckland::monte_carlo::{
     LateralStatistics, RunRecord, RunRow, Shard, ShardIdentity, ShardRows, TrapSheetStatistics,
     DEFAULT_TARGET_RATE, LSO_RUN_COLUMNS, MAX_CAMPAIGN_SEED, MAX_THREADS, SHARD_SCHEME,
 };
+use deckland::scenario::load_scenario_in as load_scenario;
+use deckland_cli::folders::CampaignReport;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use serde::{Deserialize, Serialize};
@@ -28,28 +31,8 @@ use serde::{Deserialize, Serialize};
 use crate::columns::Columns;
 use crate::convert::to_python;
 use crate::errors::{argument_error, strict_integer, value_error};
+use crate::folders::Destination;
 use crate::scenario::Scenario;
-
-/// What the summary holds: the keys of the CLI's `summary.json` (the library's
-/// statistics between the scenario and how the campaign was flown).
-#[derive(Debug, Serialize)]
-struct CampaignReport<'a> {
-    scenario_file: &'a str,
-    #[serde(flatten)]
-    summary: &'a CampaignSummary,
-    threads: Option<usize>,
-    elapsed_s: f64,
-    runs_per_s: Option<f64>,
-    shard: String,
-    shard_scheme: &'static str,
-    merged_from: Vec<String>,
-    /// A 3-D approach campaign's lateral statistics, as in the CLI's `summary.json`.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    lateral: Option<LateralStatistics>,
-    /// A 3-D approach campaign's trap-sheet statistics, as in the CLI's `summary.json`.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    trap_sheet: Option<TrapSheetStatistics>,
-}
 
 /// The rows of `runs.csv` as columns: `rows`, then for a 3-D approach campaign each
 /// row's lateral and trap-sheet columns ([`LateralRow`]), as the CLI writes them; and the
@@ -119,12 +102,19 @@ pub(crate) fn whole(name: &str, value: i128, min: i128, max: u64) -> PyResult<u6
     }
 }
 
+/// What `campaign` and `merge_shards_text` return: the rows of `runs.csv` as a dict of
+/// numpy arrays, the summary as `summary.json`, and the folder written, if any.
+type Flown<'py> = (Bound<'py, PyDict>, Py<PyAny>, Option<String>);
+
 /// Flies `runs` approaches of `scenario` (with its dispersions) in parallel; returns
-/// `(runs, summary)`: the rows of `runs.csv` as a dict of numpy arrays, and the summary
-/// as `summary.json`. `progress`, a callable, is called as `progress(done, total)` with
-/// the runs flown at most every 0.25 s and at the end.
+/// `(runs, summary, folder)`: the rows of `runs.csv` as a dict of numpy arrays, the
+/// summary as `summary.json`, and with `out` the folder written there as `deckland
+/// campaign --out` writes it (`figures`: a `deckland.Figures`; `force`). `progress`, a
+/// callable, is called as `progress(done, total)` with the runs flown at most every
+/// 0.25 s and at the end.
 #[pyfunction]
-#[pyo3(signature = (scenario, runs, seed = None, threads = None, compare = false, progress = None))]
+#[pyo3(signature = (scenario, runs, seed = None, threads = None, compare = false, progress = None, out = None, force = false, figures = None))]
+#[allow(clippy::too_many_arguments)]
 pub fn campaign<'py>(
     py: Python<'py>,
     scenario: PyRef<'_, Scenario>,
@@ -133,7 +123,11 @@ pub fn campaign<'py>(
     threads: Option<&Bound<'_, PyAny>>,
     compare: bool,
     progress: Option<&Bound<'_, PyAny>>,
-) -> PyResult<(Bound<'py, PyDict>, Py<PyAny>)> {
+    out: Option<PathBuf>,
+    force: bool,
+    figures: Option<&Bound<'_, PyAny>>,
+) -> PyResult<Flown<'py>> {
+    let destination = Destination::of(out, force, figures)?;
     if let Some(progress) = progress.filter(|p| !p.is_callable()) {
         return Err(pyo3::exceptions::PyTypeError::new_err(format!(
             "`progress` = {progress}: expected a callable progress(done, total) or None"
@@ -169,7 +163,7 @@ pub fn campaign<'py>(
     let (table, lateral_table, lateral, trap_sheet) = table_of(&rows, lateral_rows.as_deref())?;
     let summary = CampaignSummary::of_result(&result, seed, DEFAULT_TARGET_RATE);
     let report = CampaignReport {
-        scenario_file: &scenario.name,
+        scenario_file: scenario.name.clone(),
         summary: &summary,
         threads: Some(threads),
         elapsed_s,
@@ -180,10 +174,42 @@ pub fn campaign<'py>(
         lateral,
         trap_sheet,
     };
+    let folder = match destination {
+        None => None,
+        Some(destination) => {
+            let scenario_toml = toml::to_string(&spec.scenario).map_err(value_error)?;
+            let contents = (&spec.scenario, scenario_toml.as_str());
+            write_folder(py, destination, contents, &report, &rows, lateral_rows)?
+        }
+    };
     Ok((
         into_dict(py, table, lateral_table)?,
         to_python(py, &report)?,
+        folder,
     ))
+}
+
+/// Writes the campaign's folder at `destination` (the command line's files) from the
+/// scenario and its TOML text; returns its path.
+fn write_folder(
+    py: Python<'_>,
+    destination: Destination,
+    (scenario, scenario_toml): (&deckland::scenario::Scenario, &str),
+    report: &CampaignReport,
+    rows: &[RunRow],
+    lateral_rows: Option<Vec<LateralRow>>,
+) -> PyResult<Option<String>> {
+    let written = destination.write(py, |request| {
+        deckland_cli::folders::write_campaign(
+            request,
+            scenario,
+            scenario_toml,
+            report,
+            rows,
+            lateral_rows,
+        )
+    })?;
+    Ok(Some(written))
 }
 
 /// A 3-D approach campaign's [`LateralRow`] of each record; `None` for a 3-DOF campaign.
@@ -337,14 +363,20 @@ pub fn campaign_shard(
 }
 
 /// Merges shards made by `campaign_shard` (every shard of one campaign, in any order)
-/// into the campaign flown whole; returns `(runs, summary)` as `campaign` does. A shard
+/// into the campaign flown whole; returns `(runs, summary, folder)` as `campaign` does,
+/// with `out` writing the folder `deckland merge` writes. A shard
 /// that is not one (its text, its run or shard count beyond the campaign's limits), of
 /// another campaign, a missing, repeated or partial shard raises `ValueError` naming it.
 #[pyfunction]
+#[pyo3(signature = (shards, out = None, force = false, figures = None))]
 pub fn merge_shards_text<'py>(
     py: Python<'py>,
     shards: Vec<String>,
-) -> PyResult<(Bound<'py, PyDict>, Py<PyAny>)> {
+    out: Option<PathBuf>,
+    force: bool,
+    figures: Option<&Bound<'_, PyAny>>,
+) -> PyResult<Flown<'py>> {
+    let destination = Destination::of(out, force, figures)?;
     let started = Instant::now();
     let mut parts = Vec::with_capacity(shards.len());
     let mut scenario_name = String::new();
@@ -405,7 +437,7 @@ pub fn merge_shards_text<'py>(
     let (table, lateral_table, lateral, trap_sheet) =
         table_of(&merged.rows, merged.lateral.as_deref())?;
     let report = CampaignReport {
-        scenario_file: &scenario_name,
+        scenario_file: scenario_name.clone(),
         summary: &summary,
         threads: None,
         elapsed_s: started.elapsed().as_secs_f64(),
@@ -416,8 +448,29 @@ pub fn merge_shards_text<'py>(
         lateral,
         trap_sheet,
     };
+    let folder = match destination {
+        None => None,
+        Some(destination) => {
+            let scenario = load_scenario(
+                &merged.scenario_toml,
+                "the shards' scenario.toml",
+                std::path::Path::new(""),
+            )
+            .map_err(|e| value_error(format!("cannot merge: {e}")))?;
+            let contents = (&scenario, merged.scenario_toml.as_str());
+            write_folder(
+                py,
+                destination,
+                contents,
+                &report,
+                &merged.rows,
+                merged.lateral.clone(),
+            )?
+        }
+    };
     Ok((
         into_dict(py, table, lateral_table)?,
         to_python(py, &report)?,
+        folder,
     ))
 }

@@ -1,30 +1,37 @@
 //! `deckland.fly`: one approach, recorded as `deckland land` and `deckland run` record it.
 
-use deckland::experiments::{fly_approach, APPROACH_RECORD_INTERVAL_S};
+use std::path::PathBuf;
+
+use deckland::experiments::{fly_approach, ApproachRun, APPROACH_RECORD_INTERVAL_S};
 use deckland::recording::acmi::{write_acmi, AcmiReference};
 use deckland::recording::TimeSeriesRecorder;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
 use crate::errors::value_error;
+use crate::folders::Destination;
 use crate::outputs::{events_list, summary_dict, time_series};
 use crate::scenario::{flown_scenario, scenario_or_default, Scenario};
 use crate::stepping::{python_law_label, Stepper};
 
-/// What `fly` returns to the Python package: the summary, the time series, the events
-/// and the ACMI replay if asked for.
+/// What `fly` returns to the Python package: the summary, the time series, the events,
+/// the ACMI replay if asked for and the folder written, if any.
 type Flown<'py> = (
     Py<PyAny>,
     Bound<'py, PyDict>,
     Bound<'py, PyList>,
     Option<String>,
+    Option<String>,
 );
 
-/// Flies one approach; returns `(summary, time_series, events, acmi)` with the time
-/// series as a dict of numpy arrays (the Python package makes the DataFrame) and, with
-/// `acmi`, the approach as a Tacview ACMI 2.2 text (`deckland land --acmi`'s file).
+/// Flies one approach; returns `(summary, time_series, events, acmi, folder)` with the
+/// time series as a dict of numpy arrays (the Python package makes the DataFrame), with
+/// `acmi` the approach as a Tacview ACMI 2.2 text (`deckland land --acmi`'s file), and
+/// with `out` the folder written there as `deckland run --out` writes it (`plots`,
+/// `figures`: a `deckland.Figures`, `force`).
 #[pyfunction]
-#[pyo3(signature = (scenario = None, seed = None, disperse = false, pitch_law = None, control_interval_s = 0.02, acmi = false))]
+#[pyo3(signature = (scenario = None, seed = None, disperse = false, pitch_law = None, control_interval_s = 0.02, acmi = false, out = None, force = false, plots = true, figures = None))]
+#[allow(clippy::too_many_arguments)]
 pub fn fly<'py>(
     py: Python<'py>,
     scenario: Option<PyRef<'_, Scenario>>,
@@ -33,7 +40,12 @@ pub fn fly<'py>(
     pitch_law: Option<Bound<'py, PyAny>>,
     control_interval_s: f64,
     acmi: bool,
+    out: Option<PathBuf>,
+    force: bool,
+    plots: bool,
+    figures: Option<Bound<'py, PyAny>>,
 ) -> PyResult<Flown<'py>> {
+    let destination = Destination::of(out, force, figures.as_ref())?;
     let base = scenario_or_default(scenario);
     let flown = flown_scenario(&base.scenario, seed, disperse)?;
     let (summary, samples, events, controller) = match pitch_law {
@@ -67,10 +79,28 @@ pub fn fly<'py>(
         let title = format!("{controller}, seed {}", flown.seed);
         write_acmi(&reference, &title, &samples, &events, &summary)
     });
-    Ok((
-        summary_dict(py, &summary, &controller, &base.name, flown.seed)?,
-        time_series(py, &samples)?,
-        events_list(py, &events)?,
-        replay,
-    ))
+    let summary_dict = summary_dict(py, &summary, &controller, &base.name, flown.seed)?;
+    let (time_series, events_list) = (time_series(py, &samples)?, events_list(py, &events)?);
+    let folder = match destination {
+        None => None,
+        Some(destination) => {
+            let run = ApproachRun {
+                samples,
+                events,
+                summary,
+            };
+            Some(destination.write(py, |request| {
+                deckland_cli::folders::write_approach(
+                    request,
+                    &run,
+                    &flown,
+                    &controller,
+                    &base.name,
+                    plots,
+                    acmi,
+                )
+            })?)
+        }
+    };
+    Ok((summary_dict, time_series, events_list, replay, folder))
 }

@@ -26,6 +26,7 @@ mod columns;
 mod convert;
 mod errors;
 mod flight;
+mod folders;
 mod gym;
 mod lateral_step;
 mod outputs;

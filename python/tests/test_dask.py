@@ -56,6 +56,21 @@ def test_a_three_d_campaign_merged_from_shards_keeps_its_lateral_columns(client)
         assert summary[key] == expected.summary[key], key
 
 
+def test_a_dask_campaign_writes_the_folder_of_the_campaign_flown_whole(client, tmp_path):
+    # The merged folder is the one `deckland.campaign(out=...)` writes, apart from how
+    # the campaign was flown (summary.json's and report.html's timing and shard names).
+    scenario = deckland.Scenario.from_file(SCENARIOS / "crosswind.toml")
+    whole = deckland.campaign(scenario, 4, seed=3, threads=2, out=tmp_path / "whole")
+    merged = deckland.dask.campaign(client, scenario, 4, seed=3, shards=2, out=tmp_path / "dask")
+    assert merged.folder == str(tmp_path / "dask")
+    names = sorted(p.name for p in (tmp_path / "whole").iterdir())
+    assert sorted(p.name for p in (tmp_path / "dask").iterdir()) == names
+    for name in names:
+        if name.endswith((".csv", ".parquet", ".toml", ".svg", ".png")):
+            assert (tmp_path / "dask" / name).read_bytes() == (tmp_path / "whole" / name).read_bytes(), name
+    assert whole.folder == str(tmp_path / "whole")
+
+
 def test_the_default_shards_are_the_workers_and_the_seed_the_scenarios(client):
     scenario = deckland.Scenario.from_file(SCENARIOS / "heavy-sea.toml")
     result = deckland.dask.campaign(client, scenario, 5)
