@@ -172,6 +172,17 @@ impl Section {
     }
 }
 
+/// The page's body text size (pt): the browser's default 16 px.
+const BODY_TEXT_PT: f64 = 12.0;
+
+/// How wide a figure is shown on the page (mm): its printed width scaled so that its
+/// small text (`--font-pt` when printed) is the page's body text — a one-column figure
+/// (88.9 mm, 8 pt) 133 mm wide, not stretched over the page with its text three times
+/// the body's (the page is at most 1100 px, and a figure never wider than it).
+fn figure_width_on_page_mm(options: crate::plot::options::FigureOptions) -> f64 {
+    options.width_mm * BODY_TEXT_PT / options.font_pt
+}
+
 /// A self-contained HTML report.
 #[derive(Debug, Clone)]
 pub struct Report {
@@ -191,7 +202,7 @@ th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: left;
 th { background: #f2f2f2; }
 td.number { text-align: right; font-variant-numeric: tabular-nums; }
 figure { margin: 1em 0; }
-figure svg { width: 100%; height: auto; border: 1px solid #eee; }
+figure svg { max-width: 100%; height: auto; border: 1px solid #eee; }
 figure svg text { font-family: deckland-sans, sans-serif; }
 figcaption { font-size: 0.92em; color: #444; }
 pre { background: #f7f7f7; border: 1px solid #ddd; padding: 0.6em; overflow-x: auto;
@@ -276,7 +287,9 @@ impl Report {
                     Block::Figure { svg, caption } => {
                         let _ = writeln!(
                             out,
-                            "<figure>\n{}\n<figcaption>{}</figcaption>\n</figure>",
+                            "<figure style=\"width: {:.1}mm; max-width: 100%\">\n{}\n\
+                             <figcaption>{}</figcaption>\n</figure>",
+                            figure_width_on_page_mm(crate::plot::options::current()),
                             svg_element(svg).trim_end(),
                             inline_markdown(caption)
                         );
@@ -335,6 +348,22 @@ mod tests {
         assert_eq!(signed_number(-1.25, 1), "-1.2");
     }
 
+    /// A figure is shown with its small text at the page's body size, 12 pt (16 px): a
+    /// one-column figure with 8 pt text 1.5 times its printed width, 88.9 × 1.5 =
+    /// 133.35 mm (504 px), not the page's 1100 px, where its text was 26 pt.
+    #[test]
+    fn a_figure_is_shown_with_its_text_at_the_body_size() {
+        use crate::plot::options::FigureOptions;
+        let one_column = FigureOptions::default();
+        assert!((figure_width_on_page_mm(one_column) - 133.35).abs() < 1e-9);
+        let two_columns_at_9pt = FigureOptions {
+            width_mm: 182.0,
+            font_pt: 9.0,
+            ..one_column
+        };
+        assert!((figure_width_on_page_mm(two_columns_at_9pt) - 242.666_666).abs() < 1e-3);
+    }
+
     #[test]
     fn a_report_is_one_page_without_external_resources() {
         let mut report = Report::new("Run <1>");
@@ -354,7 +383,7 @@ mod tests {
         assert!(html.starts_with("<!DOCTYPE html>"));
         assert!(html.contains("<h1>Run &lt;1&gt;</h1>"));
         assert!(html.contains("<td class=\"number\">3.92</td>"));
-        assert!(html.contains("<figure>\n<svg width=\"10\""));
+        assert!(html.contains("mm; max-width: 100%\">\n<svg width=\"10\""));
         assert!(!html.contains("<?xml"));
         assert!(html.contains("b = &quot;&lt;c&gt;&quot;"));
         assert!(html.contains("url(data:font/ttf;base64,"));
