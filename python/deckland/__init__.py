@@ -359,6 +359,11 @@ def rare(
     particles: Optional[int] = None,
     seed: Optional[int] = None,
     threads: Optional[int] = None,
+    *,
+    out: Optional[PathLike] = None,
+    force: bool = False,
+    save_flights: Optional[int] = None,
+    figures: Optional[Figures] = None,
 ) -> Dict[str, Any]:
     """The probability per approach of a catastrophe, by splitting, as ``deckland rare``.
 
@@ -372,9 +377,25 @@ def rare(
     ``relative_standard_error``, ``stop``), each repetition's ``levels``, the approaches
     spent and those a plain campaign would need. The result does not depend on
     ``threads``; a bad argument or a budget too small raises ``ValueError``.
+
+    With ``out``, the folder ``deckland rare --out`` writes is written there (the summary,
+    ``levels.csv``, the levels' plot, ``save_flights`` flights that reached the event
+    with their plots, default 3, at most 20, and ``report.html``), and the dict's
+    ``folder`` names it; ``force`` and ``figures`` as for :func:`fly`.
     """
     return _deckland.rare(
-        scenario, event, threshold, target_rel_error, max_runs, particles, seed, threads
+        scenario,
+        event,
+        threshold,
+        target_rel_error,
+        max_runs,
+        particles,
+        seed,
+        threads,
+        _path(out),
+        _flag("force", force),
+        save_flights,
+        figures,
     )
 
 

@@ -219,6 +219,10 @@ def rare(
     particles: Optional[int] = None,
     seed: Optional[int] = None,
     threads: Optional[int] = None,
+    out: Optional[str] = None,
+    force: bool = False,
+    save_flights: Optional[int] = None,
+    figures: Optional[Any] = None,
 ) -> Dict[str, Any]: ...
 def rare_repetition(
     scenario: Scenario,

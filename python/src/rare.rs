@@ -15,6 +15,7 @@ use pyo3::types::{PyBool, PyFloat, PyInt};
 use crate::campaign::whole;
 use crate::convert::to_python;
 use crate::errors::{strict_integer, value_error};
+use crate::folders::Destination;
 use crate::scenario::Scenario;
 
 /// A real number argument: a float or an int, not a bool or anything else (`TypeError`
@@ -77,9 +78,11 @@ fn request_of(
 }
 
 /// Estimates the probability per approach of `event` in `scenario` by adaptive
-/// multilevel splitting; returns the result as `deckland rare` writes `summary.json`.
+/// multilevel splitting; returns the result as `deckland rare` writes `summary.json`
+/// (with `out`, the folder `deckland rare --out` writes is written there, with
+/// `save_flights` flights that reached the event, and the dict's `folder` names it).
 #[pyfunction]
-#[pyo3(signature = (scenario, event, threshold = None, target_rel_error = None, max_runs = None, particles = None, seed = None, threads = None))]
+#[pyo3(signature = (scenario, event, threshold = None, target_rel_error = None, max_runs = None, particles = None, seed = None, threads = None, out = None, force = false, save_flights = None, figures = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn rare(
     py: Python<'_>,
@@ -91,7 +94,21 @@ pub fn rare(
     particles: Option<&Bound<'_, PyAny>>,
     seed: Option<&Bound<'_, PyAny>>,
     threads: Option<&Bound<'_, PyAny>>,
+    out: Option<std::path::PathBuf>,
+    force: bool,
+    save_flights: Option<&Bound<'_, PyAny>>,
+    figures: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Py<PyAny>> {
+    let destination = Destination::of(out, force, figures)?;
+    let save_flights = match save_flights {
+        Some(count) => whole(
+            "save_flights",
+            strict_integer("save_flights", count)?,
+            0,
+            MAX_SAVED_FLIGHTS,
+        )? as usize,
+        None => 3,
+    };
     let (request, threads) = request_of(
         &scenario,
         event,
@@ -103,6 +120,7 @@ pub fn rare(
         threads,
     )?;
     let flown = scenario.scenario;
+    let started = std::time::Instant::now();
     let result = py.detach(|| {
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
@@ -112,8 +130,24 @@ pub fn rare(
             .map_err(|e| e.to_string())
     });
     let result = result.map_err(|e| value_error(format!("cannot estimate the rate: {e}")))?;
-    to_python(py, &result)
+    let elapsed_s = started.elapsed().as_secs_f64();
+    let folder = destination
+        .map(|destination| {
+            destination.write(py, |request| {
+                deckland_cli::folders::write_rare(request, &flown, &result, save_flights, elapsed_s)
+            })
+        })
+        .transpose()?;
+    let dict = to_python(py, &result)?;
+    if let Some(folder) = folder {
+        dict.bind(py).set_item("folder", folder)?;
+    }
+    Ok(dict)
 }
+
+/// The most flights that reached the event a folder saves (`deckland rare
+/// --save-flights` keeps at most this many).
+const MAX_SAVED_FLIGHTS: u64 = 20;
 
 /// Repetition `repetition` of `deckland.rare(scenario, event, ...)` flown here on at most
 /// `share` steps and `threads` threads: a Dask task. Returns the run as plain Python

@@ -142,3 +142,39 @@ def test_a_folder_that_is_not_a_path_is_refused(out):
 def test_force_must_be_a_bool(tmp_path):
     with pytest.raises(TypeError, match="`force`"):
         deckland.campaign(deckland.Scenario.default(), 1, out=tmp_path / "c", force="yes")
+
+
+def test_rare_writes_the_folder_of_deckland_rare(cli, tmp_path):
+    # Apart from the wall time (summary.json's elapsed_s, shown in report.html) and the
+    # folder's own path, every file is the CLI's: the levels, their plot and the flights
+    # that reached the event, replayed with their plots.
+    shutil.copy(SCENARIOS / "paper-adverse.toml", tmp_path / "paper-adverse.toml")
+    args = ["--event", "ramp_strike", "--threshold", "1.0", "--particles", "8", "--max-runs", "150", "--seed", "4"]
+    cli.run(
+        ["rare", "paper-adverse.toml", *args, "--threads", "1", "--save-flights", "2", "--out", str(tmp_path / "cli")],
+        cwd=tmp_path,
+    )
+    scenario = deckland.Scenario.from_file(tmp_path / "paper-adverse.toml")
+    result = deckland.rare(
+        scenario, "ramp_strike", threshold=1.0, particles=8, max_runs=150, seed=4, threads=1,
+        out=tmp_path / "py", save_flights=2,
+    )
+    assert result["folder"] == str(tmp_path / "py")
+    flights = sorted(p.name for p in (tmp_path / "py" / "event_flights").iterdir())
+    assert flights == sorted(p.name for p in (tmp_path / "cli" / "event_flights").iterdir())
+    assert flights, "no flight reached the event: choose another seed"
+    for folder in [Path(), *(Path("event_flights") / f for f in flights)]:
+        want, got = _files(tmp_path / "cli" / folder), _files(tmp_path / "py" / folder)
+        assert sorted(got) == sorted(want), folder
+        for name, content in want.items():
+            if name in ("summary.json", "report.html") and folder == Path():
+                normalise = lambda text, root: re.sub(r'((?:"|&quot;)elapsed_s(?:"|&quot;): )[-+0-9.e]+', r"\1T", text).replace(str(root), "OUT")
+                assert normalise(got[name].decode(), tmp_path / "py") == normalise(content.decode(), tmp_path / "cli"), name
+            else:
+                assert got[name] == content, folder / name
+
+
+def test_rare_refuses_a_bad_number_of_flights_to_save(tmp_path):
+    for count, error in [(21, ValueError), (-1, ValueError), (2.0, TypeError), (True, TypeError)]:
+        with pytest.raises(error, match="save_flights"):
+            deckland.rare(deckland.Scenario.paper(), "ramp_strike", out=tmp_path / "r", save_flights=count)

@@ -13,6 +13,7 @@ use std::sync::Mutex;
 use anyhow::Result;
 use deckland::experiments::ApproachRun;
 use deckland::monte_carlo::{LateralRow, RunRow};
+use deckland::rare::RareResult;
 use deckland::scenario::Scenario;
 
 use crate::commands::campaign::folder::{self, CampaignFolder};
@@ -104,4 +105,20 @@ pub fn write_campaign(
         title: folder::title(Path::new(&report.scenario_file), report),
     };
     request.write("campaign", |output| write_folder(&contents, output))
+}
+
+/// Writes the folder `deckland rare` writes for an estimate: `scenario.toml`,
+/// `summary.json` (the result, `elapsed_s` and the folder), `levels.csv`, the levels'
+/// plot, up to `save_flights` flights that reached the event (replayed, each in
+/// `event_flights/NN` with its plots) and `report.html`. Returns the folder.
+pub fn write_rare(
+    request: &FolderRequest,
+    scenario: &Scenario,
+    result: &RareResult,
+    save_flights: usize,
+    elapsed_s: f64,
+) -> Result<PathBuf> {
+    request.write("rare", |output| {
+        crate::commands::rare::write_outputs(scenario, result, output, save_flights, elapsed_s)
+    })
 }

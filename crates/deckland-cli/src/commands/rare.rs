@@ -153,7 +153,7 @@ impl<'a> Summary<'a> {
     }
 }
 
-fn write_outputs(
+pub(crate) fn write_outputs(
     scenario: &Scenario,
     result: &RareResult,
     output: &OutputDir,
