@@ -23,7 +23,9 @@ use crate::output::OutputDir;
 use crate::plot::options;
 
 pub use crate::commands::campaign::folder::CampaignReport;
-pub use crate::plot::options::{FigureOptions, DPI_RANGE, FONT_PT_RANGE, WIDTH_MM_RANGE};
+pub use crate::plot::options::{
+    FigureOptions, DPI_RANGE, FONT_PT_RANGE, MIN_WIDTH_EMS, WIDTH_MM_RANGE,
+};
 
 /// Where a folder goes and how its figures are drawn.
 #[derive(Debug, Clone, Copy)]
