@@ -67,20 +67,11 @@ impl Destination {
     }
 }
 
-/// The error's chain on one line, the command line's options named as the Python
-/// arguments (`out=`, `force=True`).
+/// The error's chain on one line as the command line prints it, its options named as
+/// the Python arguments (`out=`, `force=True`).
 fn python_words(error: &anyhow::Error) -> String {
-    let mut line = String::new();
-    for cause in error.chain() {
-        let text = cause.to_string();
-        if !line.contains(&text) {
-            if !line.is_empty() {
-                line.push_str(": ");
-            }
-            line.push_str(&text);
-        }
-    }
-    line.replace("--out ", "out=")
+    deckland_cli::error_chain(error)
+        .replace("--out ", "out=")
         .replace("with --out", "with out=")
         .replace("--force", "force=True")
 }

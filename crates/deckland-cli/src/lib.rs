@@ -126,8 +126,8 @@ pub fn main() -> ExitCode {
 
 /// The error and its causes on one line, without a backtrace; a cause whose words the
 /// message before it already holds (a library error that shows its source) is left out,
-/// so nothing is printed twice.
-fn error_chain(error: &anyhow::Error) -> String {
+/// so nothing is printed twice (what the command line prints after `error: `).
+pub fn error_chain(error: &anyhow::Error) -> String {
     let mut line = String::new();
     for cause in error.chain() {
         let text = cause.to_string();
