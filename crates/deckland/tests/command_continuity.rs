@@ -102,7 +102,7 @@ fn with_the_risk_aware_clearance_the_command_has_no_step_either() {
 }
 
 /// The largest change of the late abort's share from one 1-ms step to the next, and its
-/// largest value, for the default scenario at `seed` with the late abort at a 2 % limit
+/// largest value, for the default scenario at `seed` with the late abort at a 0.5 % limit
 /// (engaging in about half the approaches) blended at `rate_per_s`.
 fn late_abort_share(seed: u64, rate_per_s: f64) -> (f64, f64) {
     use deckland::simulation::{OuterLoops, Stop};
@@ -111,7 +111,7 @@ fn late_abort_share(seed: u64, rate_per_s: f64) -> (f64, f64) {
         ..Scenario::papers_sea()
     };
     let wave_off = &mut scenario.control.wave_off;
-    wave_off.late_abort_ramp_strike_probability = 0.02;
+    wave_off.late_abort_ramp_strike_probability = 0.005;
     wave_off.late_abort_full_thrust = true;
     wave_off.late_abort_rate_per_s = rate_per_s;
     let mut simulation = Simulation::new(&scenario).unwrap();

@@ -5,8 +5,8 @@
 //!
 //! The ramp strike's and the hard landing's are checked against a recomputation, step by
 //! step, from the run's state (the hook where the guidance computer sees it, from the
-//! longitudinal state and the hook's geometry), the glide path and the deck forecast held
-//! over the step (`Simulation::next_step_inputs`, which changes nothing of the run), with
+//! longitudinal state and the hook's geometry), the glide path, its anchor and the deck
+//! forecast held over the step (`Simulation::next_step_inputs`, which changes nothing of the run), with
 //! Φ by quadrature: the recorded time series (`approach.csv`) alone cannot give them, since
 //! it holds neither the forecast ramp height, the ramp's and the landing point's predicted
 //! climb rates nor their σ, and its hook (the 6-DOF's, with its whole attitude) differs a
@@ -71,8 +71,28 @@ fn recomputed(scenario: &Scenario) -> (Option<(f64, f64)>, RunSummary) {
             let ramp_x_m = deck.mean_aim.x_m - system.deck().ramp_aft_of_aim_point_m;
             let path_at_ramp_m = path.height_m - (ramp_x_m - hook_x_m) * flight_path.tan_slope();
             let clearance_m = path_at_ramp_m - (path.height_m - hook_h_m) - forecast.ramp_height_m;
+            // The closed loop (docs/model.md §9): the anchor filter's free response over
+            // the time to the crossing, towards the anchor it is given now.
+            let closure_mps = hook_x_rate_mps - deck.mean_aim_velocity.x_mps;
+            let ramp_time_s =
+                (path.time_to_go_s - system.deck().ramp_aft_of_aim_point_m / closure_mps).max(0.0);
+            let target_m = deck.unfiltered_aim_h_m.unwrap();
+            let omega = parameters.anchor_filter_frequency_radps;
+            let e0 = deck.aim.h_m - target_m;
+            let moved_m = -e0
+                + (e0 + (deck.aim_velocity.h_mps + omega * e0) * ramp_time_s)
+                    * (-omega * ramp_time_s).exp();
+            let clearance_m = clearance_m + path.compensation_weight * moved_m;
+            // What the path follows of the ramp's forecast, on the ramp floor only.
+            let followed = forecast.ramp_height_followed_variance_m2;
+            assert!(followed >= 0.0 && followed <= forecast.ramp_height_sigma_m.powi(2));
+            let followed = if target_m > forecast.landing_point_height_m {
+                followed
+            } else {
+                0.0
+            };
             let timing = forecast.ramp_climb_rate_mps * parameters.ramp_crossing_time_sigma_s;
-            let sigma_c = (forecast.ramp_height_sigma_m.powi(2)
+            let sigma_c = (forecast.ramp_height_sigma_m.powi(2) - followed
                 + parameters.hook_height_sigma_m.powi(2)
                 + timing * timing)
                 .sqrt();

@@ -11,7 +11,8 @@ pub struct LateAbortInputs {
     pub time_to_go_s: f64,
     /// Whether the hook is still short of the ramp (its mean position).
     pub before_ramp: bool,
-    /// The predicted hook-to-ramp clearance, as the wave-off's first criterion (m).
+    /// The closed-loop predicted hook-to-ramp clearance, as the wave-off's first
+    /// criterion (m; `WaveOffInputs::closed_loop_ramp_clearance_m`).
     pub predicted_ramp_clearance_m: f64,
     /// σ_c of that clearance (m).
     pub ramp_clearance_sigma_m: f64,

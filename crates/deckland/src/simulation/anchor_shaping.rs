@@ -23,6 +23,10 @@ pub struct AnchorShaping {
     /// Whether the forecast carries its σ (the ramp's height, the deck's climb rate), for
     /// risk-aware guidance and the probabilistic wave-off.
     pub(crate) uncertainty: bool,
+    /// The time to go (s) from which the forecast also carries the ramp's variance the
+    /// path follows (for the wave-off's ramp-strike probability, docs/model.md §9);
+    /// `None`: never (no wave-off).
+    pub(crate) followed_within_s: Option<f64>,
 }
 
 /// The shaped anchor of one step.
@@ -45,6 +49,7 @@ impl AnchorShaping {
             frequency_radps,
             decay: (f64::NAN, f64::NAN),
             uncertainty: false,
+            followed_within_s: None,
         }
     }
 
@@ -52,6 +57,15 @@ impl AnchorShaping {
     pub fn with_uncertainty(self, uncertainty: bool) -> Self {
         Self {
             uncertainty,
+            ..self
+        }
+    }
+
+    /// The same, with the ramp's variance the path follows worked out (with the σ) from
+    /// the time to go `followed_within_s` (s) on; `None`: never.
+    pub fn with_followed_variance(self, followed_within_s: Option<f64>) -> Self {
+        Self {
+            followed_within_s,
             ..self
         }
     }

@@ -114,14 +114,14 @@ fn note_wave_off(outer: &mut OuterLoops, t: f64) {
     }
 }
 
-/// The late abort's inputs from the wave-off's: the same predicted clearance, its σ and
-/// the same predicted touchdown sink rate relative to the deck.
+/// The late abort's inputs from the wave-off's: the same closed-loop predicted clearance,
+/// its σ and the same predicted touchdown sink rate relative to the deck.
 fn late_abort_inputs(inputs: &WaveOffInputs, before_ramp: bool) -> LateAbortInputs {
     let forecast = &inputs.forecast;
     LateAbortInputs {
         time_to_go_s: inputs.time_to_go_s,
         before_ramp,
-        predicted_ramp_clearance_m: inputs.predicted_ramp_clearance_m(),
+        predicted_ramp_clearance_m: inputs.closed_loop_ramp_clearance_m(),
         ramp_clearance_sigma_m: inputs.ramp_clearance_sigma_m,
         predicted_touchdown_sink_rate_mps: -inputs.hook_climb_rate_mps
             + forecast.landing_point_climb_rate_mps,
@@ -155,6 +155,35 @@ fn wave_off_inputs(
     // The path is a straight line: at the ramp (mean position) it stands
     // (ramp x − hook x)·tan Γ below its height over the hook.
     let ramp_x_m = reference.mean_aim.x_m - deck.ramp_aft_of_aim_point_m;
+    // The path the guidance flies until the crossing (docs/model.md §9): its anchor
+    // filter goes on towards the anchor it is given now, and, while that anchor rides
+    // the forecast ramp, it follows the ramp's forecast as it firms up. Only the
+    // ramp-strike probability reads it, from the window's opening on.
+    let parameters = flight_path.parameters();
+    let closure_mps = hook.x_rate_mps - reference.mean_aim_velocity.x_mps;
+    let ramp_time_s = if closure_mps > 0.0 {
+        (path.time_to_go_s - deck.ramp_aft_of_aim_point_m / closure_mps).max(0.0)
+    } else {
+        path.time_to_go_s
+    };
+    let (gain_m, rides_ramp) = match reference.unfiltered_aim_h_m {
+        Some(target_m)
+            if parameters.ramp_aware && path.time_to_go_s <= wave_off.window_start_time_to_go_s =>
+        {
+            (
+                path.compensation_weight
+                    * super::deck_predictor::anchor_move_m(
+                        reference.aim.h_m,
+                        reference.aim_velocity.h_mps,
+                        target_m,
+                        parameters.anchor_filter_frequency_radps,
+                        ramp_time_s,
+                    ),
+                target_m > forecast.landing_point_height_m,
+            )
+        }
+        _ => (0.0, false),
+    };
     Some(WaveOffInputs {
         time_to_go_s: path.time_to_go_s,
         glide_path_error_m: path.height_m - hook.h_m,
@@ -162,10 +191,10 @@ fn wave_off_inputs(
         path_height_at_ramp_m: path.height_m - (ramp_x_m - hook.x_m) * flight_path.tan_slope(),
         hook_climb_rate_mps: hook.climb_rate_mps,
         mean_landing_point_height_m: reference.mean_aim.h_m,
-        ramp_clearance_sigma_m: super::deck_predictor::ramp_clearance_sigma_m(
-            flight_path.parameters(),
-            &forecast,
+        ramp_clearance_sigma_m: super::deck_predictor::closed_loop_ramp_clearance_sigma_m(
+            parameters, &forecast, rides_ramp,
         ),
+        ramp_clearance_gain_m: gain_m,
         forecast,
     })
 }

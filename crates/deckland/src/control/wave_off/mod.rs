@@ -458,8 +458,15 @@ pub struct WaveOffInputs {
     pub hook_climb_rate_mps: f64,
     /// Mean height of the landing point (m).
     pub mean_landing_point_height_m: f64,
-    /// σ_c of the predicted ramp clearance (m), for the ramp-strike probability.
+    /// σ_c of the closed-loop predicted ramp clearance (m), for the ramp-strike
+    /// probability: the forecast's σ of the ramp less what the path follows of it
+    /// before the crossing, with the hook's and the crossing time's (docs/model.md §9).
     pub ramp_clearance_sigma_m: f64,
+    /// How much the glide path at the ramp still rises before the hook crosses it (m):
+    /// its anchor filter's own response towards the anchor it is given now, over the
+    /// time to the crossing (docs/model.md §9); 0 without a ramp-aware anchor or before
+    /// the decision window opens (where nothing reads it).
+    pub ramp_clearance_gain_m: f64,
     /// The deck forecast.
     pub forecast: DeckForecast,
 }
@@ -470,6 +477,24 @@ impl WaveOffInputs {
     #[inline]
     pub fn predicted_ramp_clearance_m(&self) -> f64 {
         self.path_height_at_ramp_m - self.glide_path_error_m - self.forecast.ramp_height_m
+    }
+
+    /// The closed-loop predicted clearance (m), the ramp-strike probability's mean: the
+    /// predicted clearance plus the path's rise before the crossing
+    /// (`ramp_clearance_gain_m`).
+    #[inline]
+    pub fn closed_loop_ramp_clearance_m(&self) -> f64 {
+        self.predicted_ramp_clearance_m() + self.ramp_clearance_gain_m
+    }
+
+    /// The probability of a ramp strike under the forecast and the path the guidance
+    /// flies until the crossing: Φ(−c/σ_c) of the closed-loop clearance c and its σ_c.
+    #[inline]
+    pub fn ramp_strike_probability(&self) -> f64 {
+        ramp_strike_probability(
+            self.closed_loop_ramp_clearance_m(),
+            self.ramp_clearance_sigma_m,
+        )
     }
 }
 
@@ -574,7 +599,7 @@ impl WaveOffParameters {
             0.0
         };
         let ramp_strike = if self.max_ramp_strike_probability > 0.0 {
-            ramp_strike_probability(clearance, inputs.ramp_clearance_sigma_m)
+            inputs.ramp_strike_probability()
         } else {
             0.0
         };
@@ -612,18 +637,15 @@ impl WaveOffParameters {
     pub fn commit_forecast(&self, inputs: &WaveOffInputs) -> CommitForecast {
         let sink = -inputs.hook_climb_rate_mps + inputs.forecast.landing_point_climb_rate_mps;
         CommitForecast {
-            ramp_strike_probability: ramp_strike_probability(
-                inputs.predicted_ramp_clearance_m(),
-                inputs.ramp_clearance_sigma_m,
-            ),
+            ramp_strike_probability: inputs.ramp_strike_probability(),
             hard_landing_probability: self.hard_landing_probability(sink, &inputs.forecast),
             off_centre_probability: None,
         }
     }
 }
 
-/// The probability of a ramp strike under the forecast: Φ(−c/σ_c) for the predicted
-/// hook-to-ramp clearance `clearance_m` (m) and its σ `sigma_m` (m).
+/// The probability of a ramp strike under the forecast: Φ(−c/σ_c) for the closed-loop
+/// predicted hook-to-ramp clearance `clearance_m` (m) and its σ `sigma_m` (m).
 fn ramp_strike_probability(clearance_m: f64, sigma_m: f64) -> f64 {
     super::risk::normal_cdf(-clearance_m / sigma_m.max(1e-9))
 }
@@ -635,7 +657,7 @@ fn ramp_strike_probability(clearance_m: f64, sigma_m: f64) -> f64 {
 /// "Calibration at the commit point").
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct CommitForecast {
-    /// Probability of a ramp strike, Φ(−c/σ_c) (–).
+    /// Probability of a ramp strike, Φ(−c/σ_c) of the closed-loop clearance (–).
     pub ramp_strike_probability: f64,
     /// Probability of a hard landing, Φ((sink − limit)/σ) (–).
     pub hard_landing_probability: f64,

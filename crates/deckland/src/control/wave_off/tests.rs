@@ -12,6 +12,7 @@ fn calm() -> WaveOffInputs {
         hook_climb_rate_mps: -3.7,
         mean_landing_point_height_m: 20.0,
         ramp_clearance_sigma_m: 0.5,
+        ramp_clearance_gain_m: 0.0,
         forecast: DeckForecast {
             ramp_height_m: 20.0,
             landing_point_climb_rate_mps: 0.0,
@@ -20,6 +21,7 @@ fn calm() -> WaveOffInputs {
             ramp_climb_rate_mps: 0.0,
             ramp_height_sigma_m: 0.0,
             landing_point_climb_rate_sigma_mps: 0.0,
+            ramp_height_followed_variance_m2: 0.0,
             roll_rad: 0.0,
         },
     }

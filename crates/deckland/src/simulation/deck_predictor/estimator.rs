@@ -51,6 +51,13 @@ impl Estimator {
         self
     }
 
+    /// The same, with the ramp's variance the path follows worked out from the time to
+    /// go `followed_within_s` (s) on (`AnchorShaping::with_followed_variance`).
+    pub fn with_followed_variance(mut self, followed_within_s: Option<f64>) -> Self {
+        self.shaping = self.shaping.with_followed_variance(followed_within_s);
+        self
+    }
+
     /// The same, the forecast's σ worked out once per frame of a computer at `rate_hz`
     /// and held over it (`None`: at every step).
     pub fn with_uncertainty_frames(mut self, rate_hz: Option<f64>) -> Self {

@@ -29,7 +29,9 @@ mod raise;
 mod roll;
 mod uncertainty;
 
-pub(crate) use raise::{capped_raise_share, ramp_aware_anchor, ramp_clearance_sigma_m};
+pub(crate) use raise::{
+    anchor_move_m, capped_raise_share, closed_loop_ramp_clearance_sigma_m, ramp_aware_anchor,
+};
 pub use roll::SensedRoll;
 pub(crate) use uncertainty::UncertaintyHold;
 
@@ -184,6 +186,11 @@ impl BuiltDeckPredictor {
                     || wave_off.max_hard_landing_probability > 0.0));
         // The σ is worked out once per frame of the flight computer and held over it.
         let frames_hz = scenario.control.flight_computer_rate_hz;
+        // The ramp's variance the path follows only where the wave-off reads it: from
+        // its window's opening (a second early, so that the held value is fresh by then).
+        let followed_within_s = wave_off
+            .enabled
+            .then_some(wave_off.window_start_time_to_go_s + FOLLOWED_VARIANCE_LEAD_S);
         Ok(match flight_path.deck_motion_predictor {
             DeckPredictorKind::Oracle => Self::Oracle(
                 oracle::Oracle::new(
@@ -191,6 +198,7 @@ impl BuiltDeckPredictor {
                     (flight_path.ramp_aware || scenario.control.wave_off.enabled).then(|| {
                         AnchorShaping::new(flight_path.anchor_filter_frequency_radps)
                             .with_uncertainty(uncertainty)
+                            .with_followed_variance(followed_within_s)
                     }),
                 )
                 .with_uncertainty_frames(frames_hz),
@@ -213,6 +221,7 @@ impl BuiltDeckPredictor {
                         flight_path.anchor_filter_frequency_radps,
                     )
                     .with_uncertainty(uncertainty)
+                    .with_followed_variance(followed_within_s)
                     .with_uncertainty_frames(frames_hz),
                 ))
             }
@@ -364,9 +373,13 @@ impl DeckQuery<'_> {
             self.time_to_go_s,
             closure,
             deck,
-            shaping
-                .uncertainty
-                .then_some((parameters.ramp_sigma_min_horizon_s, hook.time_s, hold)),
+            shaping.uncertainty.then_some(Uncertainty {
+                min_horizon_s: parameters.ramp_sigma_min_horizon_s,
+                anchor_frequency_radps: parameters.anchor_filter_frequency_radps,
+                followed_within_s: shaping.followed_within_s,
+                now_s: hook.time_s,
+                hold,
+            }),
             self.view.roll.is_some(),
         );
         let forecast = match self.view.roll {
@@ -410,13 +423,29 @@ impl DeckQuery<'_> {
     }
 }
 
+/// What [`forecast_deck`] needs to work out the forecast's uncertainty.
+pub(crate) struct Uncertainty<'a> {
+    /// h_min, the shortest horizon of the ramp's σ (s).
+    pub min_horizon_s: f64,
+    /// ω of the glide path's anchor filter (rad/s), for the variance the path follows.
+    pub anchor_frequency_radps: f64,
+    /// The time to go (s) from which the variance the path follows is worked out;
+    /// `None`: never (0).
+    pub followed_within_s: Option<f64>,
+    /// The time of the step (s).
+    pub now_s: f64,
+    /// The σ held over the guidance frame.
+    pub hold: &'a mut UncertaintyHold,
+}
+
 /// The forecast of the deck for a hook `time_to_go_s` from touchdown closing at
 /// `closure_mps`, from `estimate` whose time lies `age_s` in the past: the landing point
 /// at touchdown, the ramp when the hook crosses it (`ramp_aft_of_aim_point_m` / closure
-/// earlier); with `uncertainty` = Some((h_min, now, hold)), also the σ of the ramp's
-/// height at the crossing (or h_min ahead, if the crossing is nearer) and of the landing
-/// point's climb rate at touchdown, worked out when the step from `now` (s) starts a new
-/// frame of `hold` and held otherwise (without, 0). With `series_trig` (the 3-D
+/// earlier); with `uncertainty`, also the σ of the ramp's height at the crossing (or
+/// h_min ahead, if the crossing is nearer), of the landing point's climb rate at
+/// touchdown and the ramp's variance the path follows ([`followed_ramp_variance_m2`]),
+/// worked out when the step from `now` (s) starts a new frame of `hold` and held
+/// otherwise (without, 0). With `series_trig` (the 3-D
 /// approach) the ship's predicted pitch has its sine and cosine by
 /// [`series_sin_cos`] (within an ulp of the library's, about a third of its cost);
 /// without, the library's.
@@ -429,7 +458,7 @@ pub(crate) fn forecast_deck(
     time_to_go_s: f64,
     closure_mps: f64,
     deck: &DeckGeometry,
-    uncertainty: Option<(f64, f64, &mut UncertaintyHold)>,
+    uncertainty: Option<Uncertainty<'_>>,
     series_trig: bool,
 ) -> DeckForecast {
     let landing_arm_m = deck.landing_point_aft_of_pitch_centre_m;
@@ -443,31 +472,18 @@ pub(crate) fn forecast_deck(
     let at_touchdown: ShipMotionForecast =
         predictor.forecast_mean(ship, estimate, touchdown_lead_s);
     let at_ramp = predictor.forecast_mean(ship, estimate, ramp_lead_s);
-    let (ramp_height_sigma_m, landing_point_climb_rate_sigma_mps) =
-        if let Some((min_horizon_s, now_s, hold)) = uncertainty {
-            if hold.due(now_s) {
-                hold.sigmas = (
-                    predictor.deck_point_sigma(
-                        ship,
-                        estimate,
-                        age_s + ramp_time_s.max(min_horizon_s),
-                        ramp_arm_m,
-                        at_ramp.pitch_rad,
-                        0,
-                    ),
-                    predictor.deck_point_sigma(
-                        ship,
-                        estimate,
-                        touchdown_lead_s,
-                        landing_arm_m,
-                        at_touchdown.pitch_rad,
-                        1,
-                    ),
-                );
-            }
-            hold.sigmas
-        } else {
-            (0.0, 0.0)
+    let (ramp_height_sigma_m, landing_point_climb_rate_sigma_mps, ramp_height_followed_variance_m2) =
+        match uncertainty {
+            Some(uncertainty) => forecast_uncertainty(
+                predictor,
+                ship,
+                estimate,
+                uncertainty,
+                (age_s, ramp_time_s, touchdown_lead_s),
+                (ramp_arm_m, at_ramp.pitch_rad),
+                (landing_arm_m, at_touchdown.pitch_rad),
+            ),
+            None => (0.0, 0.0, 0.0),
         };
     let trig = |pitch_rad: f64| {
         if series_trig {
@@ -489,8 +505,105 @@ pub(crate) fn forecast_deck(
         ramp_climb_rate_mps: at_ramp.deck_point_climb_rate_at_cosine_mps(ramp_arm_m, cos_ramp),
         ramp_height_sigma_m,
         landing_point_climb_rate_sigma_mps,
+        ramp_height_followed_variance_m2,
         roll_rad: 0.0,
     }
+}
+
+/// [`forecast_deck`]'s uncertainty, worked out when the step from `now` starts a new
+/// frame of the hold and held otherwise: the σ of the ramp's height at the crossing
+/// (`ramp_time_s` ahead, or h_min if nearer), of the landing point's climb rate at
+/// touchdown (`touchdown_lead_s`) and the ramp's variance the path follows
+/// ([`followed_ramp_variance_m2`]; from the time to go `followed_within_s` on, else 0),
+/// from `estimate` `age_s` old; the ramp and the landing
+/// point are (lever arm aft of the pitch centre (m), predicted pitch (rad)).
+#[inline]
+fn forecast_uncertainty(
+    predictor: &ShipMotionPropagator,
+    ship: &ShipMotion,
+    estimate: &ShipMotionEstimate,
+    uncertainty: Uncertainty<'_>,
+    (age_s, ramp_time_s, touchdown_lead_s): (f64, f64, f64),
+    (ramp_arm_m, ramp_pitch_rad): (f64, f64),
+    (landing_arm_m, touchdown_pitch_rad): (f64, f64),
+) -> (f64, f64, f64) {
+    let Uncertainty {
+        min_horizon_s,
+        anchor_frequency_radps,
+        followed_within_s,
+        now_s,
+        hold,
+    } = uncertainty;
+    if hold.due(now_s) {
+        // The time to go: the touchdown's lead less the estimate's age.
+        let followed =
+            followed_within_s.is_some_and(|within_s| touchdown_lead_s - age_s <= within_s);
+        let ramp_sigma = |lead_s: f64| {
+            predictor.deck_point_sigma(ship, estimate, lead_s, ramp_arm_m, ramp_pitch_rad, 0)
+        };
+        hold.sigmas = (
+            ramp_sigma(age_s + ramp_time_s.max(min_horizon_s)),
+            predictor.deck_point_sigma(
+                ship,
+                estimate,
+                touchdown_lead_s,
+                landing_arm_m,
+                touchdown_pitch_rad,
+                1,
+            ),
+            if followed {
+                followed_ramp_variance_m2(
+                    |tau_s| ramp_sigma(age_s + tau_s).powi(2),
+                    ramp_time_s,
+                    anchor_frequency_radps,
+                )
+            } else {
+                0.0
+            },
+        );
+    }
+    hold.sigmas
+}
+
+/// How long before the wave-off's window opens (s) the forecast starts to carry the
+/// ramp's variance the path follows.
+const FOLLOWED_VARIANCE_LEAD_S: f64 = 1.0;
+
+/// The number of intervals of [`followed_ramp_variance_m2`]'s quadrature.
+const FOLLOWED_VARIANCE_INTERVALS: u32 = 8;
+
+/// The part of the ramp height's forecast variance at a crossing `ramp_time_s` ahead that
+/// a glide path anchored on the forecast ramp takes out before the crossing (m²;
+/// docs/model.md §9), `variance(τ)` the forecast's variance of the ramp's height at the
+/// crossing when made τ before it (m²). The forecast's error is the sum of its updates
+/// still to come, independent (a minimum-variance forecast's innovations), the update
+/// made τ before the crossing of variance dσ²(τ); the anchor's critically damped filter
+/// at `anchor_frequency_radps` ω has moved the path by g(τ) = 1 − (1 + ωτ)·e^(−ωτ) of it
+/// by the crossing, so the hook's clearance keeps (1 − g)² of its variance:
+/// σ²(T) − ∫₀ᵀ (1 − g)² dσ² = ∫₀ᵀ (2g − g²) dσ². By the midpoint rule in g over
+/// [`FOLLOWED_VARIANCE_INTERVALS`] equal intervals of τ, σ² taken at their ends (exact for
+/// a g constant over each); 0 for a crossing now or past.
+pub(crate) fn followed_ramp_variance_m2(
+    variance: impl Fn(f64) -> f64,
+    ramp_time_s: f64,
+    anchor_frequency_radps: f64,
+) -> f64 {
+    if ramp_time_s <= 0.0 {
+        return 0.0;
+    }
+    let step_s = ramp_time_s / f64::from(FOLLOWED_VARIANCE_INTERVALS);
+    let mut before = variance(0.0);
+    (1..=FOLLOWED_VARIANCE_INTERVALS)
+        .map(|j| {
+            let tau_s = f64::from(j) * step_s;
+            let after = variance(tau_s);
+            let x = anchor_frequency_radps * (tau_s - 0.5 * step_s);
+            let g = 1.0 - (1.0 + x) * (-x).exp();
+            let followed = (2.0 * g - g * g) * (after - before).max(0.0);
+            before = after;
+            followed
+        })
+        .sum()
 }
 
 #[cfg(test)]

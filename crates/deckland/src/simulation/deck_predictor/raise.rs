@@ -84,6 +84,47 @@ pub(crate) fn ramp_clearance_sigma_m(
         .sqrt()
 }
 
+/// σ_c of the hook's clearance over the ramp under the path the guidance flies until the
+/// crossing (m; docs/model.md §9): [`ramp_clearance_sigma_m`] less, when the anchor rides
+/// the ramp (`rides_ramp`: the ramp-aware floor is above the forecast landing point, so
+/// the path moves with the forecast ramp), the ramp's variance the path follows before
+/// the crossing (`ramp_height_followed_variance_m2`):
+/// √(σ_r² − F + σ_h² + (ṙ·σ_t)²). Off the floor the path follows the landing point's
+/// forecast, not the ramp's, and nothing is taken out.
+pub(crate) fn closed_loop_ramp_clearance_sigma_m(
+    parameters: &FlightPathParameters,
+    forecast: &DeckForecast,
+    rides_ramp: bool,
+) -> f64 {
+    let followed = if rides_ramp {
+        forecast
+            .ramp_height_followed_variance_m2
+            .min(forecast.ramp_height_sigma_m.powi(2))
+    } else {
+        0.0
+    };
+    (ramp_clearance_sigma_m(parameters, forecast).powi(2) - followed).sqrt()
+}
+
+/// How far the anchor's critically damped filter ä = ω²(target − a) − 2ω·ȧ (ω =
+/// `frequency_radps`) moves it in `horizon_s` from `height_m` at `rate_mps` towards
+/// `target_m` held (m): its exact free response, a(T) − a(0) = −e₀ + (e₀ + (ȧ₀ + ω·e₀)·T)·e^(−ωT)
+/// with e₀ = a(0) − target; 0 for a horizon at or below 0.
+pub(crate) fn anchor_move_m(
+    height_m: f64,
+    rate_mps: f64,
+    target_m: f64,
+    frequency_radps: f64,
+    horizon_s: f64,
+) -> f64 {
+    if horizon_s <= 0.0 {
+        return 0.0;
+    }
+    let error = height_m - target_m;
+    let b = rate_mps + frequency_radps * error;
+    -error + (error + b * horizon_s) * (-frequency_radps * horizon_s).exp()
+}
+
 /// The anchor height: the forecast landing point, raised where the ramp-aware path needs
 /// it so that the path crosses the predicted ramp with the clearance m above it:
 /// m = min(max(`ramp_clearance_margin_m`, z·σ_c − r), `max_ramp_clearance_m`), z = Φ⁻¹(1 − p)

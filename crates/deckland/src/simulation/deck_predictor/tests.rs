@@ -1,6 +1,6 @@
 //! Tests of the deck predictors' shared geometry (`deck_predictor/mod.rs`).
 
-use super::raise::raise_share;
+use super::raise::{raise_share, ramp_clearance_sigma_m};
 use super::*;
 use crate::control::FlightPathParameters;
 
@@ -13,6 +13,7 @@ fn forecast(landing_point_height_m: f64, ramp_height_m: f64) -> DeckForecast {
         ramp_climb_rate_mps: 0.0,
         ramp_height_sigma_m: 0.0,
         landing_point_climb_rate_sigma_mps: 0.0,
+        ramp_height_followed_variance_m2: 0.0,
         roll_rad: 0.0,
     }
 }
@@ -269,4 +270,78 @@ fn the_series_forecast_is_the_librarys_within_rounding() {
     }
     // The draws reach pitch angles where the series' terms beyond x³ count.
     assert!(largest_pitch > 0.02, "{largest_pitch}");
+}
+
+/// The anchor filter's free response (`anchor_move_m`) is what its exact step
+/// (`AnchorShaping`'s critically damped filter, a target held) gives: 1 m below its
+/// target at rest, the anchor rises 1 − (1 + 1.5)·e^(−1.5) = 0.44217 m in 1.5 s at
+/// ω = 1 rad/s (by hand); the same from a 10-µs integration of ä = ω²(target − a) − 2ω·ȧ
+/// from a moving start; no move over no time.
+#[test]
+fn the_anchor_moves_by_its_filters_free_response() {
+    assert!((anchor_move_m(19.0, 0.0, 20.0, 1.0, 1.5) - 0.442_17).abs() < 1e-5);
+    let (omega, horizon_s) = (1.3_f64, 1.4_f64);
+    let (mut a, mut rate, target) = (21.0_f64, -0.7_f64, 20.2);
+    let dt = 1e-5_f64;
+    for _ in 0..(horizon_s / dt).round() as usize {
+        let acceleration = omega * omega * (target - a) - 2.0 * omega * rate;
+        a += rate * dt + 0.5 * acceleration * dt * dt;
+        rate += acceleration * dt;
+    }
+    let moved = anchor_move_m(21.0, -0.7, 20.2, omega, horizon_s);
+    assert!(
+        (moved - (a - 21.0)).abs() < 1e-4,
+        "{moved} against {}",
+        a - 21.0
+    );
+    assert_eq!(anchor_move_m(21.0, -0.7, 20.2, omega, 0.0), 0.0);
+}
+
+/// The variance the path follows (`followed_ramp_variance_m2`): ∫₀ᵀ (2g − g²) dσ² by
+/// hand for a variance growing linearly, σ²(τ) = τ, against a fine midpoint sum of the
+/// same integral (g = 1 − (1 + ωτ)·e^(−ωτ)): within 1 % at 8 intervals; none for a variance
+/// that does not grow, nor for a crossing now; never more than the whole variance.
+#[test]
+fn the_path_follows_the_ramps_later_updates_by_its_filters_step_response() {
+    let (omega, horizon_s) = (1.0, 1.5);
+    let g = |tau: f64| 1.0 - (1.0 + omega * tau) * (-omega * tau).exp();
+    let n = 100_000;
+    let fine: f64 = (0..n)
+        .map(|k| {
+            let tau = (f64::from(k) + 0.5) * horizon_s / f64::from(n);
+            (2.0 * g(tau) - g(tau).powi(2)) * horizon_s / f64::from(n)
+        })
+        .sum();
+    let followed = followed_ramp_variance_m2(|tau| tau, horizon_s, omega);
+    assert!(
+        (followed / fine - 1.0).abs() < 0.01,
+        "{followed} against {fine}"
+    );
+    assert!(followed < horizon_s);
+    assert_eq!(followed_ramp_variance_m2(|_| 2.0, horizon_s, omega), 0.0);
+    assert_eq!(followed_ramp_variance_m2(|tau| tau, 0.0, omega), 0.0);
+}
+
+/// σ_c of the closed loop: with the anchor on the ramp floor the followed variance comes
+/// off the ramp's, off the floor nothing does: σ_r = 1 m, 0.36 m² followed, σ_h = 0.3 m,
+/// the ramp still: √(1 − 0.36 + 0.09) = 0.8544 m on the floor, √1.09 off it.
+#[test]
+fn the_closed_loop_sigma_takes_out_what_the_path_follows_only_on_the_ramp_floor() {
+    let parameters = FlightPathParameters::default();
+    let f = DeckForecast {
+        ramp_height_sigma_m: 1.0,
+        ramp_height_followed_variance_m2: 0.36,
+        ..forecast(20.0, 20.0)
+    };
+    assert!(
+        (closed_loop_ramp_clearance_sigma_m(&parameters, &f, true) - 0.73_f64.sqrt()).abs() < 1e-12
+    );
+    assert!(
+        (closed_loop_ramp_clearance_sigma_m(&parameters, &f, false) - 1.09_f64.sqrt()).abs()
+            < 1e-12
+    );
+    assert_eq!(
+        closed_loop_ramp_clearance_sigma_m(&parameters, &f, false),
+        ramp_clearance_sigma_m(&parameters, &f)
+    );
 }
