@@ -6,11 +6,11 @@
 //! The ramp strike's and the hard landing's are checked against a recomputation, step by
 //! step, from the run's state (the hook where the guidance computer sees it, from the
 //! longitudinal state and the hook's geometry), the glide path, its anchor and the deck
-//! forecast held over the step (`Simulation::next_step_inputs`, which changes nothing of the run), with
-//! Φ by quadrature: the recorded time series (`approach.csv`) alone cannot give them, since
-//! it holds neither the forecast ramp height, the ramp's and the landing point's predicted
-//! climb rates nor their σ, and its hook (the 6-DOF's, with its whole attitude) differs a
-//! little from the one the guidance computer reads (2.5·10⁻⁴ of the probability in the
+//! forecast held over the step (`Simulation::next_step_inputs`, which changes nothing of
+//! the run), with Φ by quadrature: the recorded time series (`approach.csv`) alone cannot
+//! give them, since it holds neither the forecast ramp height, the ramp's and the landing
+//! point's predicted climb rates nor their σ, and its hook (the 6-DOF's, with its whole
+//! attitude) differs a little from the one the guidance computer reads (2.5·10⁻⁴ of the probability in the
 //! paper's sea). The off-centre probability is checked for presence and range only: the
 //! lineup prediction it rests on (the lineup loop's response, the ship's lateral
 //! measurement, the floor's σ) is internal to the lateral guidance and in no signal.
@@ -83,8 +83,11 @@ fn recomputed(scenario: &Scenario) -> (Option<(f64, f64)>, RunSummary) {
                 + (e0 + (deck.aim_velocity.h_mps + omega * e0) * ramp_time_s)
                     * (-omega * ramp_time_s).exp();
             let clearance_m = clearance_m + path.compensation_weight * moved_m;
-            // What the path follows of the ramp's forecast, on the ramp floor only.
-            let followed = forecast.ramp_height_followed_variance_m2;
+            // What the path follows of the ramp's later forecast updates, on the ramp
+            // floor only: 2w·∫g dσ² − w²·∫g² dσ².
+            let [first, second] = forecast.ramp_update_response_m2;
+            let w = path.compensation_weight;
+            let followed = 2.0 * w * first - w * w * second;
             assert!(followed >= 0.0 && followed <= forecast.ramp_height_sigma_m.powi(2));
             let followed = if target_m > forecast.landing_point_height_m {
                 followed

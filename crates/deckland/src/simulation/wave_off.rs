@@ -160,29 +160,26 @@ fn wave_off_inputs(
     // the forecast ramp, it follows the ramp's forecast as it firms up. Only the
     // ramp-strike probability reads it, from the window's opening on.
     let parameters = flight_path.parameters();
-    let closure_mps = hook.x_rate_mps - reference.mean_aim_velocity.x_mps;
-    let ramp_time_s = if closure_mps > 0.0 {
-        (path.time_to_go_s - deck.ramp_aft_of_aim_point_m / closure_mps).max(0.0)
-    } else {
-        path.time_to_go_s
-    };
-    let (gain_m, rides_ramp) = match reference.unfiltered_aim_h_m {
-        Some(target_m)
-            if parameters.ramp_aware && path.time_to_go_s <= wave_off.window_start_time_to_go_s =>
-        {
-            (
-                path.compensation_weight
-                    * super::deck_predictor::anchor_move_m(
-                        reference.aim.h_m,
-                        reference.aim_velocity.h_mps,
-                        target_m,
-                        parameters.anchor_filter_frequency_radps,
-                        ramp_time_s,
-                    ),
-                target_m > forecast.landing_point_height_m,
-            )
+    let (gain_m, ramp_following_weight) = match reference.unfiltered_aim_h_m {
+        Some(target_m) if path.time_to_go_s <= wave_off.window_start_time_to_go_s => {
+            let closure_mps = hook.x_rate_mps - reference.mean_aim_velocity.x_mps;
+            let ramp_time_s = if closure_mps > 0.0 {
+                (path.time_to_go_s - deck.ramp_aft_of_aim_point_m / closure_mps).max(0.0)
+            } else {
+                path.time_to_go_s
+            };
+            let moved_m = super::deck_predictor::anchor_move_m(
+                reference.aim.h_m,
+                reference.aim_velocity.h_mps,
+                target_m,
+                parameters.anchor_filter_frequency_radps,
+                ramp_time_s,
+            );
+            let rides_ramp = target_m > forecast.landing_point_height_m;
+            let weight = path.compensation_weight;
+            (weight * moved_m, if rides_ramp { weight } else { 0.0 })
         }
-        _ => (0.0, false),
+        _ => (0.0, 0.0),
     };
     Some(WaveOffInputs {
         time_to_go_s: path.time_to_go_s,
@@ -192,7 +189,9 @@ fn wave_off_inputs(
         hook_climb_rate_mps: hook.climb_rate_mps,
         mean_landing_point_height_m: reference.mean_aim.h_m,
         ramp_clearance_sigma_m: super::deck_predictor::closed_loop_ramp_clearance_sigma_m(
-            parameters, &forecast, rides_ramp,
+            parameters,
+            &forecast,
+            ramp_following_weight,
         ),
         ramp_clearance_gain_m: gain_m,
         forecast,

@@ -347,15 +347,15 @@ pub struct DeckForecast {
     pub ramp_height_sigma_m: f64,
     /// σ of the landing point's predicted climb rate at touchdown (m/s); 0 likewise.
     pub landing_point_climb_rate_sigma_mps: f64,
-    /// The part of the ramp height's forecast variance (m²) that the glide path takes
-    /// out before the crossing when its anchor rides the ramp (docs/model.md §9): the
-    /// forecast's updates still to come, each followed by the anchor filter for the time
-    /// left to the crossing, ∫₀ᵀ (2g(τ) − g(τ)²) dσ²(τ), σ²(τ) the ramp's forecast
-    /// variance τ before the crossing, T the time to it and g(τ) = 1 − (1 + ωτ)·e^(−ωτ)
-    /// the critically damped anchor filter's step response at
-    /// `anchor_filter_frequency_radps` ω; 0 when nothing asked for the σ, without a
-    /// wave-off, or more than a second before the wave-off's window opens.
-    pub ramp_height_followed_variance_m2: f64,
+    /// How the glide path's anchor, riding the ramp, follows the ramp height's forecast
+    /// updates still to come before the crossing (m²; docs/model.md §9):
+    /// [∫₀ᵀ g dσ², ∫₀ᵀ g² dσ²], σ²(τ) the ramp's forecast variance τ before the crossing,
+    /// T the time to it and g(τ) = 1 − (1 + ωτ)·e^(−ωτ) the critically damped anchor
+    /// filter's step response at `anchor_filter_frequency_radps` ω. A path that moves by
+    /// w of its anchor takes F = 2w·∫g dσ² − w²·∫g² dσ² out of the ramp's variance.
+    /// Zeros when nothing asked for the σ, without a wave-off, or more than a second
+    /// before the wave-off's window opens.
+    pub ramp_update_response_m2: [f64; 2],
     /// Predicted ship roll at touchdown (rad, starboard down); 0 without a roll forecast
     /// (the longitudinal approach).
     pub roll_rad: f64,

@@ -463,9 +463,10 @@ pub struct WaveOffInputs {
     /// before the crossing, with the hook's and the crossing time's (docs/model.md §9).
     pub ramp_clearance_sigma_m: f64,
     /// How much the glide path at the ramp still rises before the hook crosses it (m):
-    /// its anchor filter's own response towards the anchor it is given now, over the
-    /// time to the crossing (docs/model.md §9); 0 without a ramp-aware anchor or before
-    /// the decision window opens (where nothing reads it).
+    /// w times its anchor filter's own response towards the anchor it is given now, over
+    /// the time to the crossing (docs/model.md §9); 0 without a filtered anchor (the
+    /// `filter_lead` predictor) or before the decision window opens (where nothing reads
+    /// it).
     pub ramp_clearance_gain_m: f64,
     /// The deck forecast.
     pub forecast: DeckForecast,

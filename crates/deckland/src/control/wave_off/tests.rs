@@ -21,7 +21,7 @@ fn calm() -> WaveOffInputs {
             ramp_climb_rate_mps: 0.0,
             ramp_height_sigma_m: 0.0,
             landing_point_climb_rate_sigma_mps: 0.0,
-            ramp_height_followed_variance_m2: 0.0,
+            ramp_update_response_m2: [0.0; 2],
             roll_rad: 0.0,
         },
     }

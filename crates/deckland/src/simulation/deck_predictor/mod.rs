@@ -443,12 +443,11 @@ pub(crate) struct Uncertainty<'a> {
 /// at touchdown, the ramp when the hook crosses it (`ramp_aft_of_aim_point_m` / closure
 /// earlier); with `uncertainty`, also the σ of the ramp's height at the crossing (or
 /// h_min ahead, if the crossing is nearer), of the landing point's climb rate at
-/// touchdown and the ramp's variance the path follows ([`followed_ramp_variance_m2`]),
-/// worked out when the step from `now` (s) starts a new frame of `hold` and held
-/// otherwise (without, 0). With `series_trig` (the 3-D
-/// approach) the ship's predicted pitch has its sine and cosine by
-/// [`series_sin_cos`] (within an ulp of the library's, about a third of its cost);
-/// without, the library's.
+/// touchdown and the path's response to the ramp's later updates
+/// ([`ramp_update_response_m2`]), worked out when the step from `now` (s) starts a new
+/// frame of `hold` and held otherwise (without, 0). With `series_trig` (the 3-D approach)
+/// the ship's predicted pitch has its sine and cosine by [`series_sin_cos`] (within an
+/// ulp of the library's, about a third of its cost); without, the library's.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn forecast_deck(
     predictor: &ShipMotionPropagator,
@@ -472,7 +471,7 @@ pub(crate) fn forecast_deck(
     let at_touchdown: ShipMotionForecast =
         predictor.forecast_mean(ship, estimate, touchdown_lead_s);
     let at_ramp = predictor.forecast_mean(ship, estimate, ramp_lead_s);
-    let (ramp_height_sigma_m, landing_point_climb_rate_sigma_mps, ramp_height_followed_variance_m2) =
+    let (ramp_height_sigma_m, landing_point_climb_rate_sigma_mps, ramp_update_response_m2) =
         match uncertainty {
             Some(uncertainty) => forecast_uncertainty(
                 predictor,
@@ -483,7 +482,7 @@ pub(crate) fn forecast_deck(
                 (ramp_arm_m, at_ramp.pitch_rad),
                 (landing_arm_m, at_touchdown.pitch_rad),
             ),
-            None => (0.0, 0.0, 0.0),
+            None => (0.0, 0.0, [0.0; 2]),
         };
     let trig = |pitch_rad: f64| {
         if series_trig {
@@ -505,7 +504,7 @@ pub(crate) fn forecast_deck(
         ramp_climb_rate_mps: at_ramp.deck_point_climb_rate_at_cosine_mps(ramp_arm_m, cos_ramp),
         ramp_height_sigma_m,
         landing_point_climb_rate_sigma_mps,
-        ramp_height_followed_variance_m2,
+        ramp_update_response_m2,
         roll_rad: 0.0,
     }
 }
@@ -513,10 +512,10 @@ pub(crate) fn forecast_deck(
 /// [`forecast_deck`]'s uncertainty, worked out when the step from `now` starts a new
 /// frame of the hold and held otherwise: the σ of the ramp's height at the crossing
 /// (`ramp_time_s` ahead, or h_min if nearer), of the landing point's climb rate at
-/// touchdown (`touchdown_lead_s`) and the ramp's variance the path follows
-/// ([`followed_ramp_variance_m2`]; from the time to go `followed_within_s` on, else 0),
-/// from `estimate` `age_s` old; the ramp and the landing
-/// point are (lever arm aft of the pitch centre (m), predicted pitch (rad)).
+/// touchdown (`touchdown_lead_s`) and the path's response to the ramp's later updates
+/// ([`ramp_update_response_m2`]; from the time to go `followed_within_s` on, else 0),
+/// from `estimate` `age_s` old; the ramp and the landing point are (lever arm aft of the
+/// pitch centre (m), predicted pitch (rad)).
 #[inline]
 fn forecast_uncertainty(
     predictor: &ShipMotionPropagator,
@@ -526,7 +525,7 @@ fn forecast_uncertainty(
     (age_s, ramp_time_s, touchdown_lead_s): (f64, f64, f64),
     (ramp_arm_m, ramp_pitch_rad): (f64, f64),
     (landing_arm_m, touchdown_pitch_rad): (f64, f64),
-) -> (f64, f64, f64) {
+) -> (f64, f64, [f64; 2]) {
     let Uncertainty {
         min_horizon_s,
         anchor_frequency_radps,
@@ -552,13 +551,13 @@ fn forecast_uncertainty(
                 1,
             ),
             if followed {
-                followed_ramp_variance_m2(
+                ramp_update_response_m2(
                     |tau_s| ramp_sigma(age_s + tau_s).powi(2),
                     ramp_time_s,
                     anchor_frequency_radps,
                 )
             } else {
-                0.0
+                [0.0; 2]
             },
         );
     }
@@ -566,44 +565,48 @@ fn forecast_uncertainty(
 }
 
 /// How long before the wave-off's window opens (s) the forecast starts to carry the
-/// ramp's variance the path follows.
+/// path's response to the ramp's later updates: the held value is fresh when the window
+/// opens.
 const FOLLOWED_VARIANCE_LEAD_S: f64 = 1.0;
 
-/// The number of intervals of [`followed_ramp_variance_m2`]'s quadrature.
+/// The number of intervals of [`ramp_update_response_m2`]'s quadrature.
 const FOLLOWED_VARIANCE_INTERVALS: u32 = 8;
 
-/// The part of the ramp height's forecast variance at a crossing `ramp_time_s` ahead that
-/// a glide path anchored on the forecast ramp takes out before the crossing (m²;
-/// docs/model.md §9), `variance(τ)` the forecast's variance of the ramp's height at the
+/// How a glide path anchored on the forecast ramp follows the forecast's updates still to
+/// come before a crossing `ramp_time_s` ahead (m²; docs/model.md §9): [∫₀ᵀ g dσ²,
+/// ∫₀ᵀ g² dσ²], `variance(τ)` the forecast's variance of the ramp's height at the
 /// crossing when made τ before it (m²). The forecast's error is the sum of its updates
-/// still to come, independent (a minimum-variance forecast's innovations), the update
-/// made τ before the crossing of variance dσ²(τ); the anchor's critically damped filter
-/// at `anchor_frequency_radps` ω has moved the path by g(τ) = 1 − (1 + ωτ)·e^(−ωτ) of it
-/// by the crossing, so the hook's clearance keeps (1 − g)² of its variance:
-/// σ²(T) − ∫₀ᵀ (1 − g)² dσ² = ∫₀ᵀ (2g − g²) dσ². By the midpoint rule in g over
-/// [`FOLLOWED_VARIANCE_INTERVALS`] equal intervals of τ, σ² taken at their ends (exact for
-/// a g constant over each); 0 for a crossing now or past.
-pub(crate) fn followed_ramp_variance_m2(
+/// still to come, independent (a minimum-variance forecast's innovations), the one made
+/// τ before the crossing of variance dσ²(τ); the anchor's critically damped filter at
+/// `anchor_frequency_radps` ω has moved by g(τ) = 1 − (1 + ωτ)·e^(−ωτ) of it by the
+/// crossing, and a path moving by w of its anchor by w·g, so the hook's clearance keeps
+/// (1 − w·g)² of its variance: the path takes F = 2w·∫g dσ² − w²·∫g² dσ² out. By the
+/// midpoint rule in g over [`FOLLOWED_VARIANCE_INTERVALS`] equal intervals of τ, σ²
+/// taken at their ends (exact for a g constant over each); a variance that falls over an
+/// interval adds nothing (no update has negative variance); zeros for a crossing now or
+/// past.
+pub(crate) fn ramp_update_response_m2(
     variance: impl Fn(f64) -> f64,
     ramp_time_s: f64,
     anchor_frequency_radps: f64,
-) -> f64 {
+) -> [f64; 2] {
     if ramp_time_s <= 0.0 {
-        return 0.0;
+        return [0.0; 2];
     }
     let step_s = ramp_time_s / f64::from(FOLLOWED_VARIANCE_INTERVALS);
     let mut before = variance(0.0);
-    (1..=FOLLOWED_VARIANCE_INTERVALS)
-        .map(|j| {
-            let tau_s = f64::from(j) * step_s;
-            let after = variance(tau_s);
-            let x = anchor_frequency_radps * (tau_s - 0.5 * step_s);
-            let g = 1.0 - (1.0 + x) * (-x).exp();
-            let followed = (2.0 * g - g * g) * (after - before).max(0.0);
-            before = after;
-            followed
-        })
-        .sum()
+    let mut moments = [0.0; 2];
+    for j in 1..=FOLLOWED_VARIANCE_INTERVALS {
+        let tau_s = f64::from(j) * step_s;
+        let after = variance(tau_s);
+        let x = anchor_frequency_radps * (tau_s - 0.5 * step_s);
+        let g = 1.0 - (1.0 + x) * (-x).exp();
+        let update = (after - before).max(0.0);
+        moments[0] += g * update;
+        moments[1] += g * g * update;
+        before = after;
+    }
+    moments
 }
 
 #[cfg(test)]

@@ -85,24 +85,26 @@ pub(crate) fn ramp_clearance_sigma_m(
 }
 
 /// σ_c of the hook's clearance over the ramp under the path the guidance flies until the
-/// crossing (m; docs/model.md §9): [`ramp_clearance_sigma_m`] less, when the anchor rides
-/// the ramp (`rides_ramp`: the ramp-aware floor is above the forecast landing point, so
-/// the path moves with the forecast ramp), the ramp's variance the path follows before
-/// the crossing (`ramp_height_followed_variance_m2`):
-/// √(σ_r² − F + σ_h² + (ṙ·σ_t)²). Off the floor the path follows the landing point's
-/// forecast, not the ramp's, and nothing is taken out.
+/// crossing (m; docs/model.md §9): [`ramp_clearance_sigma_m`] less the ramp's variance
+/// the path follows before the crossing, F = 2w·∫g dσ² − w²·∫g² dσ²
+/// (`ramp_update_response_m2`), for a path that moves by `ramp_following_weight` w of
+/// the forecast ramp: √(σ_r² − F + σ_h² + (ṙ·σ_t)²). w is the compensation weight while
+/// the anchor rides the ramp (the ramp-aware floor above the forecast landing point) and
+/// 0 off it, where the path follows the landing point's forecast, not the ramp's. F lies
+/// in [0, σ_r²] for w in [0, 1] and a variance that grows with the horizon (each update's
+/// 2wg − w²g² lies in [0, 1], the updates add up to the variance's rise over the time to
+/// the crossing, and σ_r's horizon is at least that); it is clamped there all the same,
+/// so that σ_c² ≥ σ_h² + (ṙ·σ_t)² ≥ 0 whatever the rounding or the forecast's shape (a
+/// σ_c of 0, σ_h = 0 and the ramp still, gives Φ's limits: the probability's σ floor).
 pub(crate) fn closed_loop_ramp_clearance_sigma_m(
     parameters: &FlightPathParameters,
     forecast: &DeckForecast,
-    rides_ramp: bool,
+    ramp_following_weight: f64,
 ) -> f64 {
-    let followed = if rides_ramp {
-        forecast
-            .ramp_height_followed_variance_m2
-            .min(forecast.ramp_height_sigma_m.powi(2))
-    } else {
-        0.0
-    };
+    let w = ramp_following_weight;
+    let [first, second] = forecast.ramp_update_response_m2;
+    let followed =
+        (2.0 * w * first - w * w * second).clamp(0.0, forecast.ramp_height_sigma_m.powi(2));
     (ramp_clearance_sigma_m(parameters, forecast).powi(2) - followed).sqrt()
 }
 

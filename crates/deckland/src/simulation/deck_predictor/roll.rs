@@ -86,7 +86,7 @@ mod tests {
             ramp_climb_rate_mps: -0.1,
             ramp_height_sigma_m: 0.3,
             landing_point_climb_rate_sigma_mps: 0.4,
-            ramp_height_followed_variance_m2: 0.0,
+            ramp_update_response_m2: [0.0; 2],
             roll_rad: 0.0,
         };
         let roll = SensedRoll {

@@ -13,7 +13,7 @@ fn forecast(landing_point_height_m: f64, ramp_height_m: f64) -> DeckForecast {
         ramp_climb_rate_mps: 0.0,
         ramp_height_sigma_m: 0.0,
         landing_point_climb_rate_sigma_mps: 0.0,
-        ramp_height_followed_variance_m2: 0.0,
+        ramp_update_response_m2: [0.0; 2],
         roll_rad: 0.0,
     }
 }
@@ -297,51 +297,70 @@ fn the_anchor_moves_by_its_filters_free_response() {
     assert_eq!(anchor_move_m(21.0, -0.7, 20.2, omega, 0.0), 0.0);
 }
 
-/// The variance the path follows (`followed_ramp_variance_m2`): ∫₀ᵀ (2g − g²) dσ² by
-/// hand for a variance growing linearly, σ²(τ) = τ, against a fine midpoint sum of the
-/// same integral (g = 1 − (1 + ωτ)·e^(−ωτ)): within 1 % at 8 intervals; none for a variance
-/// that does not grow, nor for a crossing now; never more than the whole variance.
+/// The path's response to the ramp's later updates (`ramp_update_response_m2`):
+/// ∫₀ᵀ g dσ² and ∫₀ᵀ g² dσ² for a variance growing linearly, σ²(τ) = τ, against a fine
+/// midpoint sum of the same integrals (g = 1 − (1 + ωτ)·e^(−ωτ)): within 1 % at 8
+/// intervals; by hand, ∫₀ᵀ g dτ = T − 2/ω + (2/ω + T)·e^(−ωT) = 0.2810 at ω = 1, T = 1.5;
+/// the variance the path follows, 2w·∫g − w²·∫g², never more than the whole variance
+/// for w in [0, 1]; nothing for a variance that does not grow, nor for a crossing now.
 #[test]
 fn the_path_follows_the_ramps_later_updates_by_its_filters_step_response() {
     let (omega, horizon_s) = (1.0, 1.5);
     let g = |tau: f64| 1.0 - (1.0 + omega * tau) * (-omega * tau).exp();
     let n = 100_000;
-    let fine: f64 = (0..n)
-        .map(|k| {
-            let tau = (f64::from(k) + 0.5) * horizon_s / f64::from(n);
-            (2.0 * g(tau) - g(tau).powi(2)) * horizon_s / f64::from(n)
-        })
-        .sum();
-    let followed = followed_ramp_variance_m2(|tau| tau, horizon_s, omega);
+    let fine = |power: i32| -> f64 {
+        (0..n)
+            .map(|k| {
+                let tau = (f64::from(k) + 0.5) * horizon_s / f64::from(n);
+                g(tau).powi(power) * horizon_s / f64::from(n)
+            })
+            .sum()
+    };
+    let [first, second] = ramp_update_response_m2(|tau| tau, horizon_s, omega);
+    let by_hand = horizon_s - 2.0 + (2.0 + horizon_s) * (-horizon_s).exp();
+    let (fine_g, fine_g2) = (fine(1), fine(2));
     assert!(
-        (followed / fine - 1.0).abs() < 0.01,
-        "{followed} against {fine}"
+        (fine_g - by_hand).abs() < 1e-9,
+        "{fine_g} against {by_hand}"
     );
-    assert!(followed < horizon_s);
-    assert_eq!(followed_ramp_variance_m2(|_| 2.0, horizon_s, omega), 0.0);
-    assert_eq!(followed_ramp_variance_m2(|tau| tau, 0.0, omega), 0.0);
+    assert!(
+        (first / fine_g - 1.0).abs() < 0.01,
+        "{first} against {fine_g}"
+    );
+    assert!(
+        (second / fine_g2 - 1.0).abs() < 0.01,
+        "{second} against {fine_g2}"
+    );
+    for w in [0.0, 0.3, 1.0] {
+        let followed = 2.0 * w * first - w * w * second;
+        assert!((0.0..horizon_s).contains(&followed), "{w}: {followed}");
+    }
+    assert_eq!(ramp_update_response_m2(|_| 2.0, horizon_s, omega), [0.0; 2]);
+    assert_eq!(ramp_update_response_m2(|tau| tau, 0.0, omega), [0.0; 2]);
 }
 
-/// σ_c of the closed loop: with the anchor on the ramp floor the followed variance comes
-/// off the ramp's, off the floor nothing does: σ_r = 1 m, 0.36 m² followed, σ_h = 0.3 m,
-/// the ramp still: √(1 − 0.36 + 0.09) = 0.8544 m on the floor, √1.09 off it.
+/// σ_c of the closed loop: with the anchor on the ramp floor (the path's weight w on the
+/// ramp) the followed variance 2w·∫g − w²·∫g² comes off the ramp's, off the floor (w = 0)
+/// nothing does: σ_r = 1 m, ∫g dσ² = 0.2 m² and ∫g² dσ² = 0.04 m² (0.36 m² followed at
+/// w = 1, 0.19 m² at w = 0.5), σ_h = 0.3 m, the ramp still: √(1 − 0.36 + 0.09) = 0.8544 m
+/// at w = 1, √(1 − 0.19 + 0.09) at w = 0.5, √1.09 off it; a followed variance beyond the
+/// ramp's is held to it.
 #[test]
 fn the_closed_loop_sigma_takes_out_what_the_path_follows_only_on_the_ramp_floor() {
     let parameters = FlightPathParameters::default();
     let f = DeckForecast {
         ramp_height_sigma_m: 1.0,
-        ramp_height_followed_variance_m2: 0.36,
+        ramp_update_response_m2: [0.2, 0.04],
         ..forecast(20.0, 20.0)
     };
-    assert!(
-        (closed_loop_ramp_clearance_sigma_m(&parameters, &f, true) - 0.73_f64.sqrt()).abs() < 1e-12
-    );
-    assert!(
-        (closed_loop_ramp_clearance_sigma_m(&parameters, &f, false) - 1.09_f64.sqrt()).abs()
-            < 1e-12
-    );
-    assert_eq!(
-        closed_loop_ramp_clearance_sigma_m(&parameters, &f, false),
-        ramp_clearance_sigma_m(&parameters, &f)
-    );
+    let sigma = |f: &DeckForecast, w: f64| closed_loop_ramp_clearance_sigma_m(&parameters, f, w);
+    assert!((sigma(&f, 1.0) - 0.73_f64.sqrt()).abs() < 1e-12);
+    assert!((sigma(&f, 0.5) - 0.9_f64.sqrt()).abs() < 1e-12);
+    assert!((sigma(&f, 0.0) - 1.09_f64.sqrt()).abs() < 1e-12);
+    assert_eq!(sigma(&f, 0.0), ramp_clearance_sigma_m(&parameters, &f));
+    let too_much = DeckForecast {
+        ramp_update_response_m2: [3.0, 1.0],
+        ..f
+    };
+    assert!((sigma(&too_much, 1.0) - 0.09_f64.sqrt()).abs() < 1e-12);
 }

@@ -4,17 +4,17 @@
 //! implementation would; the mean forecast is still worked out every step.
 
 /// The σ of the ramp's height at the crossing (m) and of the landing point's climb rate
-/// at touchdown (m/s), and the part of the ramp's variance the path follows (m²), with the
-/// frame they were worked out in.
+/// at touchdown (m/s), and how the path follows the ramp's later forecast updates (m²),
+/// with the frame they were worked out in.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct UncertaintyHold {
     /// The frame period (s); `None` works them out at every step (no flight computer).
     period_s: Option<f64>,
     /// The frame the held values belong to; `None` before the first.
     frame: Option<i64>,
-    /// The held σ: ramp height (m), landing point climb rate (m/s); and the ramp height's
-    /// variance the path follows before the crossing (m²).
-    pub sigmas: (f64, f64, f64),
+    /// The held σ: ramp height (m), landing point climb rate (m/s); and the path's
+    /// response to the ramp height's later updates (m², `ramp_update_response_m2`).
+    pub sigmas: (f64, f64, [f64; 2]),
 }
 
 impl UncertaintyHold {
@@ -23,7 +23,7 @@ impl UncertaintyHold {
         Self {
             period_s: rate_hz.map(|rate| 1.0 / rate),
             frame: None,
-            sigmas: (0.0, 0.0, 0.0),
+            sigmas: (0.0, 0.0, [0.0; 2]),
         }
     }
 
