@@ -139,7 +139,9 @@ pub(crate) struct HookKinematics {
 
 /// What the wave-off decision looks at for a hook at `hook` on the path of
 /// `flight_path` over the deck `reference`; `None` without a wave-off or a forecast
-/// (predictors without one never wave off).
+/// (predictors without one never wave off). Inlined into the step, once a step, as it
+/// was before the closed loop's terms made it too large for the compiler's own choice.
+#[inline(always)]
 fn wave_off_inputs(
     wave_off: &WaveOffParameters,
     flight_path: &FlightPathGenerator,

@@ -353,8 +353,8 @@ pub struct DeckForecast {
     /// T the time to it and g(τ) = 1 − (1 + ωτ)·e^(−ωτ) the critically damped anchor
     /// filter's step response at `anchor_filter_frequency_radps` ω. A path that moves by
     /// w of its anchor takes F = 2w·∫g dσ² − w²·∫g² dσ² out of the ramp's variance.
-    /// Zeros when nothing asked for the σ, without a wave-off, or more than a second
-    /// before the wave-off's window opens.
+    /// Zeros when nothing asked for the σ, without a wave-off or a ramp-aware anchor, or
+    /// more than two guidance frames before the wave-off's window opens.
     pub ramp_update_response_m2: [f64; 2],
     /// Predicted ship roll at touchdown (rad, starboard down); 0 without a roll forecast
     /// (the longitudinal approach).

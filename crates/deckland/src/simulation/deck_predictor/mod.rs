@@ -186,11 +186,14 @@ impl BuiltDeckPredictor {
                     || wave_off.max_hard_landing_probability > 0.0));
         // The σ is worked out once per frame of the flight computer and held over it.
         let frames_hz = scenario.control.flight_computer_rate_hz;
-        // The ramp's variance the path follows only where the wave-off reads it: from
-        // its window's opening (a second early, so that the held value is fresh by then).
-        let followed_within_s = wave_off
-            .enabled
-            .then_some(wave_off.window_start_time_to_go_s + FOLLOWED_VARIANCE_LEAD_S);
+        // The path's response to the ramp's later updates only where the wave-off reads
+        // it (a ramp-aware anchor can ride the ramp): from its window's opening, two
+        // frames early so that the value held over the frame is fresh by then.
+        let followed_within_s =
+            (uncertainty && wave_off.enabled && flight_path.ramp_aware).then(|| {
+                let frame_s = frames_hz.map_or(0.0, |rate_hz| 1.0 / rate_hz);
+                wave_off.window_start_time_to_go_s + FOLLOWED_VARIANCE_LEAD_FRAMES * frame_s
+            });
         Ok(match flight_path.deck_motion_predictor {
             DeckPredictorKind::Oracle => Self::Oracle(
                 oracle::Oracle::new(
@@ -564,10 +567,11 @@ fn forecast_uncertainty(
     hold.sigmas
 }
 
-/// How long before the wave-off's window opens (s) the forecast starts to carry the
-/// path's response to the ramp's later updates: the held value is fresh when the window
-/// opens.
-const FOLLOWED_VARIANCE_LEAD_S: f64 = 1.0;
+/// How many guidance frames before the wave-off's window opens the forecast starts to
+/// carry the path's response to the ramp's later updates, so that the value held over
+/// the frame in which the window opens is that frame's (the time to go falls by about a
+/// frame per frame).
+const FOLLOWED_VARIANCE_LEAD_FRAMES: f64 = 2.0;
 
 /// The number of intervals of [`ramp_update_response_m2`]'s quadrature.
 const FOLLOWED_VARIANCE_INTERVALS: u32 = 8;

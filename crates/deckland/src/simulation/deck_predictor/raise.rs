@@ -77,11 +77,14 @@ pub(crate) fn ramp_clearance_sigma_m(
     parameters: &FlightPathParameters,
     forecast: &DeckForecast,
 ) -> f64 {
+    ramp_clearance_variance_m2(parameters, forecast).sqrt()
+}
+
+/// σ_c² of [`ramp_clearance_sigma_m`] (m²).
+#[inline]
+fn ramp_clearance_variance_m2(parameters: &FlightPathParameters, forecast: &DeckForecast) -> f64 {
     let timing = forecast.ramp_climb_rate_mps * parameters.ramp_crossing_time_sigma_s;
-    (forecast.ramp_height_sigma_m.powi(2)
-        + parameters.hook_height_sigma_m.powi(2)
-        + timing * timing)
-        .sqrt()
+    forecast.ramp_height_sigma_m.powi(2) + parameters.hook_height_sigma_m.powi(2) + timing * timing
 }
 
 /// σ_c of the hook's clearance over the ramp under the path the guidance flies until the
@@ -102,10 +105,14 @@ pub(crate) fn closed_loop_ramp_clearance_sigma_m(
     ramp_following_weight: f64,
 ) -> f64 {
     let w = ramp_following_weight;
+    if w <= 0.0 {
+        // Nothing followed (off the floor, or outside the window): σ_c itself.
+        return ramp_clearance_sigma_m(parameters, forecast);
+    }
     let [first, second] = forecast.ramp_update_response_m2;
     let followed =
         (2.0 * w * first - w * w * second).clamp(0.0, forecast.ramp_height_sigma_m.powi(2));
-    (ramp_clearance_sigma_m(parameters, forecast).powi(2) - followed).sqrt()
+    (ramp_clearance_variance_m2(parameters, forecast) - followed).sqrt()
 }
 
 /// How far the anchor's critically damped filter ä = ω²(target − a) − 2ω·ȧ (ω =
