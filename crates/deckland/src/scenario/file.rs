@@ -697,9 +697,10 @@ mod tests {
         let _ = std::fs::remove_dir_all(&folder);
     }
 
-    /// An empty file is the default scenario, but for what came with the seaway, which
-    /// a file must name (every file written before it flies as it did): the filter ship,
-    /// the early check off, no airspeed limit in the wave-off. Naming them gives the
+    /// An empty file is the default scenario, but for what came with the seaway and
+    /// after, which a file must name (every file written before it flies as it did): the
+    /// filter ship, the early check off, no airspeed limit in the wave-off, the
+    /// ramp-strike probability on the forecast's clearance. Naming them gives the
     /// default itself.
     #[test]
     fn an_empty_file_is_the_default_scenario_but_for_the_seaway_and_its_recovery_keys() {
@@ -708,9 +709,22 @@ mod tests {
         expected.control.wave_off.recovery.foul_deck_time_to_go_s = 0.0;
         expected.control.wave_off.recovery.foul_deck_model = crate::control::FoulDeckModel::Linear;
         expected.control.wave_off.climb_out_airspeed_margin_mps = 0.0;
+        expected.control.wave_off.ramp_strike_model = crate::control::RampStrikeModel::Forecast;
         assert_eq!(load_scenario("", "empty.toml"), Ok(expected));
+        // A [control.wave_off] section that names other keys but not the model: the
+        // probability as it first came.
+        let other = load_scenario(
+            "[control.wave_off]\nmax_ramp_strike_probability = 0.1\n",
+            "o.toml",
+        )
+        .expect("valid");
+        assert_eq!(
+            other.control.wave_off.ramp_strike_model,
+            crate::control::RampStrikeModel::Forecast
+        );
         let named = "[environment.ship]\nmodel = \"seaway\"\n\
                      [control.wave_off]\nclimb_out_airspeed_margin_mps = 10.0\n\
+                     ramp_strike_model = \"closed_loop\"\n\
                      [control.wave_off.recovery]\nfoul_deck_time_to_go_s = 10.0\n\
                      foul_deck_model = \"stationary\"\n";
         assert_eq!(load_scenario(named, "named.toml"), Ok(Scenario::default()));

@@ -10,8 +10,8 @@ use super::deck_predictor::{DeckView, HookTrack, SensedRoll};
 use super::outer_loops::OuterLoops;
 use crate::aircraft::AircraftState;
 use crate::control::{
-    DeckReference, FlightPathGenerator, LateAbortInputs, WaveOffDecision, WaveOffInputs,
-    WaveOffParameters,
+    DeckReference, FlightPathGenerator, LateAbortInputs, RampStrikeModel, WaveOffDecision,
+    WaveOffInputs, WaveOffParameters,
 };
 use crate::environment::{DeckGeometry, ShipMotionState, ShipPose, ShipPoseRate};
 
@@ -160,10 +160,14 @@ fn wave_off_inputs(
     // The path the guidance flies until the crossing (docs/model.md §9): its anchor
     // filter goes on towards the anchor it is given now, and, while that anchor rides
     // the forecast ramp, it follows the ramp's forecast as it firms up. Only the
-    // ramp-strike probability reads it, from the window's opening on.
+    // ramp-strike probability reads it, from the window's opening on, and only in the
+    // closed-loop model (`ramp_strike_model`; with `forecast`, c and σ_c as they are).
     let parameters = flight_path.parameters();
+    let closed_loop = wave_off.ramp_strike_model == RampStrikeModel::ClosedLoop;
     let (gain_m, ramp_following_weight) = match reference.unfiltered_aim_h_m {
-        Some(target_m) if path.time_to_go_s <= wave_off.window_start_time_to_go_s => {
+        Some(target_m)
+            if closed_loop && path.time_to_go_s <= wave_off.window_start_time_to_go_s =>
+        {
             let closure_mps = hook.x_rate_mps - reference.mean_aim_velocity.x_mps;
             let ramp_time_s = if closure_mps > 0.0 {
                 (path.time_to_go_s - deck.ramp_aft_of_aim_point_m / closure_mps).max(0.0)

@@ -57,6 +57,12 @@ pub struct WaveOffParameters {
     /// criterion; 0 turns it off; 0.2 (decided 1.5–2.5 s before the ramp, where the
     /// path still corrects, docs/no-oracle-results.md); [0, 1).
     pub max_ramp_strike_probability: f64,
+    /// Which clearance the ramp-strike probability is taken on: `closed_loop` (the
+    /// default: the path the guidance flies until the crossing, docs/model.md §9) or
+    /// `forecast` (the path held as it is now: the probability as it first came, and of
+    /// a file that names none); [`RampStrikeModel`].
+    #[serde(default = "RampStrikeModel::named_by_none")]
+    pub ramp_strike_model: RampStrikeModel,
     /// Largest probability of a hard landing under the forecast (–); 0 turns it off, the
     /// default: the deck makes hard landings after the decision point, where the
     /// forecast cannot see them, so a limit waves off many approaches for few hard
@@ -164,6 +170,7 @@ impl Default for WaveOffParameters {
             decision_time_to_go_s: 2.5,
             min_ramp_clearance_m: 0.0,
             max_ramp_strike_probability: 0.2,
+            ramp_strike_model: RampStrikeModel::ClosedLoop,
             max_hard_landing_probability: 0.0,
             hard_landing_sink_rate_mps: 7.6,
             touchdown_sink_rate_sigma_mps: 1.0,
@@ -204,6 +211,7 @@ impl WaveOffParameters {
             min_alpha_deg: 2.0,
             climb_out_airspeed_margin_mps: Self::no_airspeed_limit(),
             recovery: RecoveryLimits::named_by_none(),
+            ramp_strike_model: RampStrikeModel::named_by_none(),
             ..Self::default()
         }
     }
@@ -215,6 +223,7 @@ impl WaveOffParameters {
         Self {
             climb_out_airspeed_margin_mps: Self::no_airspeed_limit(),
             recovery: RecoveryLimits::named_by_none(),
+            ramp_strike_model: RampStrikeModel::named_by_none(),
             ..Self::default()
         }
     }
@@ -642,6 +651,28 @@ impl WaveOffParameters {
             hard_landing_probability: self.hard_landing_probability(sink, &inputs.forecast),
             off_centre_probability: None,
         }
+    }
+}
+
+/// Which clearance the ramp-strike probability is taken on (`ramp_strike_model`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RampStrikeModel {
+    /// The path held as it is now: c the predicted clearance, σ_c the forecast's σ of
+    /// the ramp at the crossing with the hook's and the crossing time's. The probability
+    /// as it first came, and of a file that names none; pessimistic by about 5× in the
+    /// paper's sea (docs/no-oracle-results.md).
+    Forecast,
+    /// The path the guidance flies until the crossing (docs/model.md §9): c′ adds the
+    /// anchor filter's rise before the crossing, σ_c′ takes out the forecast's later
+    /// updates that the path follows while its anchor rides the ramp. The default.
+    ClosedLoop,
+}
+
+impl RampStrikeModel {
+    /// The model of a file that names none: the probability as it first came.
+    pub fn named_by_none() -> Self {
+        Self::Forecast
     }
 }
 

@@ -41,6 +41,7 @@ use super::anchor_shaping::AnchorShaping;
 use crate::aircraft::six_dof::series_sin_cos;
 use crate::control::{
     DeckForecast, DeckMotionFilter, DeckPredictorKind, DeckReference, FlightPathGenerator,
+    RampStrikeModel,
 };
 use crate::environment::{
     DeckGeometry, EarthPoint, EarthVelocity, ShipMotion, ShipMotionEstimate, ShipMotionForecast,
@@ -187,10 +188,12 @@ impl BuiltDeckPredictor {
         // The σ is worked out once per frame of the flight computer and held over it.
         let frames_hz = scenario.control.flight_computer_rate_hz;
         // The path's response to the ramp's later updates only where the wave-off reads
-        // it (a ramp-aware anchor can ride the ramp): from its window's opening, two
-        // frames early so that the value held over the frame is fresh by then.
+        // it (its closed-loop ramp-strike model, with a ramp-aware anchor, which can ride
+        // the ramp): from its window's opening, two frames early so that the value held
+        // over the frame is fresh by then.
+        let closed_loop = wave_off.ramp_strike_model == RampStrikeModel::ClosedLoop;
         let followed_within_s =
-            (uncertainty && wave_off.enabled && flight_path.ramp_aware).then(|| {
+            (uncertainty && wave_off.enabled && closed_loop && flight_path.ramp_aware).then(|| {
                 let frame_s = frames_hz.map_or(0.0, |rate_hz| 1.0 / rate_hz);
                 wave_off.window_start_time_to_go_s + FOLLOWED_VARIANCE_LEAD_FRAMES * frame_s
             });
