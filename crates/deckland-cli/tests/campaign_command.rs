@@ -606,7 +606,7 @@ fn a_default_campaign_grades_every_pass_and_prints_the_greenie_board() {
     let report = std::fs::read_to_string(out.join("report.html")).unwrap();
     assert!(report.contains("hook over the ramp (m, the ramp-strike margin)"));
     let board_at = report.find("<table class=\"greenie\">").expect("the board");
-    let chart_at = report.find("<figure>").expect("the outcome chart");
+    let chart_at = report.find("<figure").expect("the outcome chart");
     assert!(board_at < chart_at, "the board is above the outcome chart");
     assert!(report.contains("background:#3c9a3c"), "OK in green");
     check_calibration(&header, &records, &summary["controllers"][0], &printed);
