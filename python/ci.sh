@@ -26,8 +26,11 @@ echo "== cargo clippy (python/) -- -D warnings"
 # PyO3's build script reads the interpreter of the virtual environment.
 cargo clippy --manifest-path python/Cargo.toml --all-targets -- -D warnings
 
-echo "== cargo test (python/)"
-cargo test --manifest-path python/Cargo.toml
+echo "== cargo test --release (python/)"
+# The release profile of the wheel pip has just built in python/target: the tests reuse
+# its compiled dependencies (the CLI's figure and Parquet crates among them) instead of
+# compiling them all again for a debug build.
+cargo test --release --manifest-path python/Cargo.toml
 
 echo "== the deckland CLI the tests compare with"
 cargo build -p deckland-cli

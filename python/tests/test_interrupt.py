@@ -8,8 +8,14 @@ import subprocess
 import sys
 import time
 
+# The child handles Ctrl-C as an interactive interpreter does. A process started with
+# SIGINT ignored keeps it ignored (Python installs its handler only over the default),
+# and an earlier test's Dask cluster can leave this pytest process ignoring SIGINT: the
+# child then never saw the signal, and the test hung (CI, three times).
 SCRIPT = """
+import signal
 import sys
+signal.signal(signal.SIGINT, signal.default_int_handler)
 import deckland
 print("started", flush=True)
 try:
