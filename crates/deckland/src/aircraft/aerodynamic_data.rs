@@ -66,23 +66,43 @@ impl Polynomial {
         &self.coefficients[..self.terms]
     }
 
+    /// How many terms were given (c0 … c_{n−1}).
+    pub const fn terms(&self) -> usize {
+        self.terms
+    }
+
     /// Σ c_k·α^k summed in ascending powers, with `powers` = [1, α, α², …] (the source's
     /// form of the longitudinal polynomials); zero for the empty polynomial. The unused
     /// high terms are zero and add exactly ±0, which leaves every partial sum as it was
-    /// (but for the sign of an exact zero), so every polynomial takes the same unrolled
-    /// path.
+    /// (but for the sign of an exact zero, and no partial sum of finite terms is −0), so
+    /// every polynomial takes the same unrolled path.
     #[inline(always)]
     pub fn in_ascending_powers(&self, powers: &[f64; MAX_POLYNOMIAL_TERMS]) -> f64 {
         let c = &self.coefficients;
         c[0] + c[1] * powers[1] + c[2] * powers[2] + c[3] * powers[3] + c[4] * powers[4]
     }
 
-    /// The value at `alpha` by Horner's rule (the lateral polynomials' form). The
-    /// unused high terms are zero, and Horner's rule over them leaves exactly +0 before
-    /// the first term given, so every polynomial takes the same unrolled path.
+    /// [`Self::in_ascending_powers`] over the first `N` terms only, `N` at least
+    /// [`Self::terms`]: the same value to the bit, without the zero terms' work. For data
+    /// known when compiled (the F/A-18's), where `N` can be their [`Self::terms`].
+    #[inline(always)]
+    pub fn in_first_terms<const N: usize>(&self, powers: &[f64; MAX_POLYNOMIAL_TERMS]) -> f64 {
+        let c = &self.coefficients;
+        let mut sum = c[0];
+        for (c, power) in c[1..N.max(1)].iter().zip(&powers[1..N.max(1)]) {
+            sum += c * power;
+        }
+        sum
+    }
+
+    /// The value at `alpha` by Horner's rule over the terms given (the lateral
+    /// polynomials' form), from 0: c_{n−1}, then ·α + c_k down to c0. Zero terms above the
+    /// given ones would leave the sum exactly +0, so a table padded with them (the 6-DOF
+    /// aircraft's) gives the same value to the bit. For data known when compiled (the
+    /// F/A-18's) the fold unrolls to exactly the terms given.
     #[inline(always)]
     pub fn horner(&self, alpha: f64) -> f64 {
-        self.coefficients
+        self.coefficients()
             .iter()
             .rev()
             .fold(0.0, |sum, c| sum * alpha + c)

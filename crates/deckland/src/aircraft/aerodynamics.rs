@@ -47,7 +47,8 @@ pub fn aerodynamic_coefficients(
 }
 
 /// The coefficients of the aircraft whose aerodynamic data are `data`, as
-/// [`aerodynamic_coefficients`], with sin α and cos α already computed.
+/// [`aerodynamic_coefficients`], with sin α and cos α already computed;
+/// [`fa18_coefficients_trig`] is the same for the F/A-18's data, cheaper.
 #[inline(always)]
 pub fn aerodynamic_coefficients_trig(
     data: &AerodynamicData,
@@ -59,19 +60,74 @@ pub fn aerodynamic_coefficients_trig(
     configuration: &AerodynamicConfiguration,
 ) -> AerodynamicCoefficients {
     let powers = powers_of(alpha);
-    let lift = data.lift.alpha.in_ascending_powers(&powers)
-        + data.lift.constant
-        + data.lift.elevator.in_ascending_powers(&powers) * elevator
-        + configuration.lift_coefficient_increment;
-    let drag = data.drag.alpha.in_ascending_powers(&powers)
-        + data.drag.constant
-        + data.drag.elevator.in_ascending_powers(&powers) * elevator
-        + configuration.drag_coefficient_increment;
     let m = &data.pitching_moment;
-    let moment_reference = m.alpha.in_ascending_powers(&powers)
-        + m.elevator.in_ascending_powers(&powers) * elevator
-        + m.pitch_rate.in_ascending_powers(&powers) * q_hat
-        + configuration.moment_coefficient_increment;
+    let polynomials = [
+        data.lift.alpha.in_ascending_powers(&powers),
+        data.lift.elevator.in_ascending_powers(&powers),
+        data.drag.alpha.in_ascending_powers(&powers),
+        data.drag.elevator.in_ascending_powers(&powers),
+        m.alpha.in_ascending_powers(&powers),
+        m.elevator.in_ascending_powers(&powers),
+        m.pitch_rate.in_ascending_powers(&powers),
+    ];
+    let inputs = (sin_a, cos_a, elevator, q_hat);
+    coefficients_of(data, polynomials, inputs, configuration)
+}
+
+/// [`aerodynamic_coefficients_trig`] for the F/A-18's data ([`AerodynamicData::FA18`]),
+/// the same to the bit: each polynomial is summed over its given terms only
+/// ([`Polynomial::in_first_terms`](super::Polynomial::in_first_terms)), with its
+/// coefficients as constants, about two thirds of the work.
+#[inline(always)]
+pub fn fa18_coefficients_trig(
+    alpha: f64,
+    sin_a: f64,
+    cos_a: f64,
+    elevator: f64,
+    q_hat: f64,
+    configuration: &AerodynamicConfiguration,
+) -> AerodynamicCoefficients {
+    const DATA: AerodynamicData = AerodynamicData::FA18;
+    // The F/A-18's polynomial `$p` at `$powers`, over its given terms.
+    let data: &'static AerodynamicData = &DATA;
+    macro_rules! given_terms {
+        ($($p:ident).+, $powers:expr) => {
+            data.$($p).+.in_first_terms::<{ DATA.$($p).+.terms() }>($powers)
+        };
+    }
+    let powers = powers_of(alpha);
+    let polynomials = [
+        given_terms!(lift.alpha, &powers),
+        given_terms!(lift.elevator, &powers),
+        given_terms!(drag.alpha, &powers),
+        given_terms!(drag.elevator, &powers),
+        given_terms!(pitching_moment.alpha, &powers),
+        given_terms!(pitching_moment.elevator, &powers),
+        given_terms!(pitching_moment.pitch_rate, &powers),
+    ];
+    let inputs = (sin_a, cos_a, elevator, q_hat);
+    coefficients_of(data, polynomials, inputs, configuration)
+}
+
+/// The coefficients of `data` from its seven polynomials' values at α, in the order
+/// L_α, L_δe, D_α, D_δe, M_α, M_δe, M_q, and (sin α, cos α, δe, q̂).
+#[inline(always)]
+fn coefficients_of(
+    data: &AerodynamicData,
+    [lift_alpha, lift_elevator, drag_alpha, drag_elevator, m_alpha, m_elevator, m_q]: [f64; 7],
+    (sin_a, cos_a, elevator, q_hat): (f64, f64, f64, f64),
+    configuration: &AerodynamicConfiguration,
+) -> AerodynamicCoefficients {
+    let lift = lift_alpha
+        + data.lift.constant
+        + lift_elevator * elevator
+        + configuration.lift_coefficient_increment;
+    let drag = drag_alpha
+        + data.drag.constant
+        + drag_elevator * elevator
+        + configuration.drag_coefficient_increment;
+    let moment_reference =
+        m_alpha + m_elevator * elevator + m_q * q_hat + configuration.moment_coefficient_increment;
     let normal = lift * cos_a + drag * sin_a;
     AerodynamicCoefficients {
         lift,
@@ -83,6 +139,50 @@ pub fn aerodynamic_coefficients_trig(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The F/A-18's path, which sums only the terms given, gives the data path's
+    /// coefficients (all five terms, the zero ones included) to the bit, over the whole
+    /// α range the data cover and beyond, with elevator and pitch rate both signs.
+    #[test]
+    fn the_fa18_path_is_the_data_path_to_the_bit() {
+        let data = &AerodynamicData::FA18;
+        for configuration in [
+            AerodynamicConfiguration::LANDING,
+            AerodynamicConfiguration::CLEAN,
+        ] {
+            for k in -400..=1400 {
+                let alpha = f64::from(k) * 1e-3 + 1.234_567e-7;
+                let (sin_a, cos_a) = alpha.sin_cos();
+                for (elevator, q_hat) in [(0.0, 0.0), (0.21, -0.013), (-0.35, 0.02)] {
+                    let inputs = (alpha, sin_a, cos_a, elevator, q_hat);
+                    let by_data = aerodynamic_coefficients_trig(
+                        data,
+                        inputs.0,
+                        inputs.1,
+                        inputs.2,
+                        inputs.3,
+                        inputs.4,
+                        &configuration,
+                    );
+                    let fa18 = fa18_coefficients_trig(
+                        inputs.0,
+                        inputs.1,
+                        inputs.2,
+                        inputs.3,
+                        inputs.4,
+                        &configuration,
+                    );
+                    for (a, b) in [
+                        (by_data.lift, fa18.lift),
+                        (by_data.drag, fa18.drag),
+                        (by_data.moment, fa18.moment),
+                    ] {
+                        assert_eq!(a.to_bits(), b.to_bits(), "α = {alpha}: {a} vs {b}");
+                    }
+                }
+            }
+        }
+    }
 
     /// Values read off the polynomials by hand at α = 10° = 0.174533 rad, δe = q̂ = 0,
     /// clean: C_L = −0.0204 + 5.677·0.174533 − 5.4246·0.030462 + 1.1645·0.005317.

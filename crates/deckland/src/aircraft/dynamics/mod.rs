@@ -18,7 +18,9 @@ use super::actuator::{ElevatorActuator, ElevatorActuatorParameters};
 use super::aerodynamic_data::AerodynamicData;
 #[cfg(test)]
 use super::aerodynamics::aerodynamic_coefficients;
-use super::aerodynamics::aerodynamic_coefficients_trig;
+use super::aerodynamics::{
+    aerodynamic_coefficients_trig, fa18_coefficients_trig, AerodynamicCoefficients,
+};
 use super::configuration::AerodynamicConfiguration;
 use super::engine::{EngineParameters, Engines};
 use super::parameters::AircraftParameters;
@@ -66,6 +68,9 @@ pub struct AirData {
 pub struct Aircraft {
     parameters: AircraftParameters,
     aerodynamics: AerodynamicData,
+    /// Whether `aerodynamics` are the F/A-18's, which are then evaluated as constants
+    /// ([`fa18_coefficients_trig`]).
+    aerodynamics_are_fa18: bool,
     configuration: AerodynamicConfiguration,
     engines: Engines,
     actuator: ElevatorActuator,
@@ -76,6 +81,7 @@ impl Default for Aircraft {
         Self {
             parameters: AircraftParameters::default(),
             aerodynamics: AerodynamicData::FA18,
+            aerodynamics_are_fa18: true,
             configuration: AerodynamicConfiguration::LANDING,
             engines: Engines::default(),
             actuator: ElevatorActuator::default(),
@@ -103,6 +109,7 @@ impl Aircraft {
         Ok(Self {
             parameters,
             aerodynamics: AerodynamicData::FA18,
+            aerodynamics_are_fa18: true,
             configuration,
             engines: Engines::new(engines)?,
             actuator: ElevatorActuator::new(actuator)?,
@@ -115,6 +122,7 @@ impl Aircraft {
         aerodynamics.validate()?;
         Ok(Self {
             aerodynamics,
+            aerodynamics_are_fa18: aerodynamics.is_fa18(),
             ..self
         })
     }
@@ -122,6 +130,27 @@ impl Aircraft {
     /// The aerodynamic data: the coefficient polynomials and the configurations.
     pub fn aerodynamics(&self) -> &AerodynamicData {
         &self.aerodynamics
+    }
+
+    /// The coefficients of this aircraft's data in `configuration`
+    /// ([`aerodynamic_coefficients_trig`]; the F/A-18's by [`fa18_coefficients_trig`], the
+    /// same to the bit and cheaper).
+    #[inline(always)]
+    pub fn coefficients_trig(
+        &self,
+        alpha: f64,
+        sin_a: f64,
+        cos_a: f64,
+        elevator: f64,
+        q_hat: f64,
+        configuration: &AerodynamicConfiguration,
+    ) -> AerodynamicCoefficients {
+        if self.aerodynamics_are_fa18 {
+            fa18_coefficients_trig(alpha, sin_a, cos_a, elevator, q_hat, configuration)
+        } else {
+            let data = &self.aerodynamics;
+            aerodynamic_coefficients_trig(data, alpha, sin_a, cos_a, elevator, q_hat, configuration)
+        }
     }
 
     /// The default aircraft in a given aerodynamic configuration.
@@ -224,8 +253,7 @@ impl Aircraft {
         let p = &self.parameters;
         let q_hat = q * p.mean_chord_m / (2.0 * air.airspeed_mps);
         let (sin_a, cos_a) = (air.sin_alpha, air.cos_alpha);
-        let c = aerodynamic_coefficients_trig(
-            &self.aerodynamics,
+        let c = self.coefficients_trig(
             air.alpha_rad,
             sin_a,
             cos_a,

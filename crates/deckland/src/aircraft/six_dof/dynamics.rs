@@ -4,10 +4,10 @@
 
 use super::air_data::{air_velocity_in_wind, SixDofAirData};
 use super::kinematics::EulerTrig;
-use super::lateral_aerodynamics::LateralTable;
+use super::lateral_aerodynamics::{LateralDerivatives, LateralTable};
 use super::parameters::{LateralParameters, SurfaceActuatorParameters};
 use super::state::SixDofState;
-use crate::aircraft::{aerodynamic_coefficients_trig, Aircraft, ElevatorActuator, Wind};
+use crate::aircraft::{Aircraft, ElevatorActuator, Wind};
 use crate::integration::OdeSystem;
 use crate::parameters::ParameterError;
 
@@ -63,6 +63,9 @@ pub struct SixDofAircraft {
     /// The lateral derivatives' polynomials by power, from the longitudinal plant's
     /// aerodynamic data: built once, evaluated at every derivative.
     lateral_table: LateralTable,
+    /// Whether the aerodynamic data are the F/A-18's, whose lateral derivatives are then
+    /// evaluated as constants ([`LateralDerivatives::fa18_at`]).
+    aerodynamics_are_fa18: bool,
 }
 
 impl Default for SixDofAircraft {
@@ -119,6 +122,7 @@ impl SixDofAircraft {
         lateral.validate()?;
         Ok(Self {
             lateral_table: LateralTable::of(longitudinal.aerodynamics()),
+            aerodynamics_are_fa18: longitudinal.aerodynamics().is_fa18(),
             longitudinal,
             lateral,
             aileron: aileron.build(Self::AILERON_SECTION)?,
@@ -218,8 +222,7 @@ impl SixDofAircraft {
         };
         let beta = data.beta_rad;
         let q_hat = q * p.mean_chord_m / (2.0 * airspeed);
-        let c = aerodynamic_coefficients_trig(
-            self.longitudinal.aerodynamics(),
+        let c = self.longitudinal.coefficients_trig(
             data.alpha_rad,
             sin_a,
             cos_a,
@@ -242,7 +245,12 @@ impl SixDofAircraft {
             c.lift * (lift_factor - 1.0) * cos_a + c.drag * (drag_factor - 1.0) * sin_a;
         let pitch_coefficient = c.moment - config.cg_ahead_of_reference_chords * normal_change;
         let half_span_over_speed = lat.span_m / (2.0 * airspeed);
-        let l = self.lateral_table.at(data.alpha_rad).coefficients(
+        let derivatives = if self.aerodynamics_are_fa18 {
+            LateralDerivatives::fa18_at(data.alpha_rad)
+        } else {
+            self.lateral_table.at(data.alpha_rad)
+        };
+        let l = derivatives.coefficients(
             beta,
             inputs.aileron_rad,
             inputs.rudder_rad,

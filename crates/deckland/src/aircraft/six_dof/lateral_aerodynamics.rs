@@ -58,6 +58,37 @@ impl LateralDerivatives {
         Self::of(&AerodynamicData::FA18, alpha)
     }
 
+    /// The F/A-18's derivatives at angle of attack `alpha` (rad), each polynomial by
+    /// Horner's rule over its given terms only
+    /// ([`Polynomial::horner`](crate::aircraft::Polynomial::horner)) with its coefficients
+    /// as constants: the same to the bit as the table of the F/A-18's data
+    /// that any other aircraft's are evaluated from, without its padding terms' work.
+    #[inline(always)]
+    pub fn fa18_at(alpha: f64) -> Self {
+        let data = &AerodynamicData::FA18;
+        // The F/A-18's polynomial `$p` at `alpha`, over its given terms.
+        macro_rules! given_terms {
+            ($($p:ident).+) => {
+                data.$($p).+.horner(alpha)
+            };
+        }
+        Self {
+            roll_beta: given_terms!(rolling_moment.beta),
+            roll_aileron: given_terms!(rolling_moment.aileron),
+            roll_rudder: given_terms!(rolling_moment.rudder),
+            roll_p: given_terms!(rolling_moment.roll_rate),
+            roll_r: given_terms!(rolling_moment.yaw_rate),
+            yaw_beta: given_terms!(yawing_moment.beta),
+            yaw_aileron: given_terms!(yawing_moment.aileron),
+            yaw_rudder: given_terms!(yawing_moment.rudder),
+            yaw_p: given_terms!(yawing_moment.roll_rate),
+            yaw_r: given_terms!(yawing_moment.yaw_rate),
+            side_beta: given_terms!(side_force.beta),
+            side_aileron: given_terms!(side_force.aileron),
+            side_rudder: given_terms!(side_force.rudder),
+        }
+    }
+
     /// The derivatives of the aircraft whose data are `data` at angle of attack `alpha`
     /// (rad), each polynomial by Horner's rule.
     #[inline]
@@ -206,6 +237,36 @@ mod tests {
         let by_hand =
             -0.0556 - 0.4153 * a - 0.3620 * a * a + 2.3843 * a * a * a - 1.6196 * a * a * a * a;
         assert!((LateralDerivatives::at(a).roll_beta - by_hand).abs() < 1e-15);
+    }
+
+    /// The F/A-18's derivatives by its given terms equal the padded table's, which sums
+    /// zero terms too, to the bit, from −25° to 80° of α.
+    #[test]
+    fn the_fa18_path_is_the_table_to_the_bit() {
+        let table = LateralTable::of(&AerodynamicData::FA18);
+        for k in -436..=1396 {
+            let alpha = f64::from(k) * 1e-3 - 3.21e-8;
+            let (fa18, by_table) = (LateralDerivatives::fa18_at(alpha), table.at(alpha));
+            let bits = |d: &LateralDerivatives| {
+                [
+                    d.roll_beta,
+                    d.roll_aileron,
+                    d.roll_rudder,
+                    d.roll_p,
+                    d.roll_r,
+                    d.yaw_beta,
+                    d.yaw_aileron,
+                    d.yaw_rudder,
+                    d.yaw_p,
+                    d.yaw_r,
+                    d.side_beta,
+                    d.side_aileron,
+                    d.side_rudder,
+                ]
+                .map(f64::to_bits)
+            };
+            assert_eq!(bits(&fa18), bits(&by_table), "α = {alpha}");
+        }
     }
 
     /// The signs of docs/six-dof.md: positive aileron rolls right wing down, positive
