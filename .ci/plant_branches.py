@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Lines of generic code that branch on the plant or on the 3-D approach (issue 41's
 structure target): a line outside test modules that both names the plant or the 3-D
-approach (`PlantModel`, `BuiltPlant`, `ThreeDof`, `SixDof`, `three_dimensional`,
+approach (`PlantModel`, `BuiltPlant`, `ThreeDof`, `SixDof` as words — not a type
+named after the 6-DOF model such as `SixDofTrimError` —, `three_dimensional`,
 `three_d`, `LATERAL`, `LateralLoop`, an `Option<…Lateral…>`, `Some(lateral…)`, a
 `.lateral` field, `lateral.is_some()`/`.as_ref()`/`.map()`/…) and branches (`if`, `match`,
 `=>`, `?`, `.then(`, `.map(`, `.and_then(`, `.filter(`, `while`). The setup code and the
@@ -23,7 +24,7 @@ SETUP = {
     "crates/deckland/src/scenario/aircraft.rs",
 }
 TOKEN = re.compile(
-    r"three_dimensional|\bthree_d\b|ThreeDof|SixDof|PlantModel|BuiltPlant|\bLATERAL\b|LateralLoop"
+    r"three_dimensional|\bthree_d\b|\bThreeDof\b|\bSixDof\b|PlantModel|BuiltPlant|\bLATERAL\b|LateralLoop"
     r"|flies_three_dimensional|Some\(\s*\w*lateral\w*|\w*lateral\w*\.(is_some|is_none|as_ref|as_mut|map|and_then|then)\b"
     r"|\.lateral\b|is_lateral|\bsix_dof\b|Option<\w*Lateral"
 )
