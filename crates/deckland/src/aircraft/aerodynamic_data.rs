@@ -66,11 +66,6 @@ impl Polynomial {
         &self.coefficients[..self.terms]
     }
 
-    /// How many terms were given (c0 … c_{n−1}).
-    pub const fn terms(&self) -> usize {
-        self.terms
-    }
-
     /// Σ c_k·α^k summed in ascending powers, with `powers` = [1, α, α², …] (the source's
     /// form of the longitudinal polynomials); zero for the empty polynomial. The unused
     /// high terms are zero and add exactly ±0, which leaves every partial sum as it was
@@ -82,14 +77,14 @@ impl Polynomial {
         c[0] + c[1] * powers[1] + c[2] * powers[2] + c[3] * powers[3] + c[4] * powers[4]
     }
 
-    /// [`Self::in_ascending_powers`] over the first `N` terms only, `N` at least
-    /// [`Self::terms`]: the same value to the bit, without the zero terms' work. For data
-    /// known when compiled (the F/A-18's), where `N` can be their [`Self::terms`].
+    /// [`Self::in_ascending_powers`] over the terms given only: the same value to the
+    /// bit, without the zero terms' work. For data known when compiled (the F/A-18's),
+    /// where the loop unrolls to exactly the terms given.
     #[inline(always)]
-    pub fn in_first_terms<const N: usize>(&self, powers: &[f64; MAX_POLYNOMIAL_TERMS]) -> f64 {
-        let c = &self.coefficients;
-        let mut sum = c[0];
-        for (c, power) in c[1..N.max(1)].iter().zip(&powers[1..N.max(1)]) {
+    pub fn in_given_terms(&self, powers: &[f64; MAX_POLYNOMIAL_TERMS]) -> f64 {
+        let given = &self.coefficients[..self.terms.max(1)];
+        let mut sum = given[0];
+        for (c, power) in given[1..].iter().zip(&powers[1..]) {
             sum += c * power;
         }
         sum
@@ -299,6 +294,43 @@ impl AerodynamicData {
             clean: AerodynamicConfiguration::CLEAN,
         },
     };
+
+    /// The longitudinal polynomials in the order L_α, L_δe, D_α, D_δe, M_α, M_δe, M_q.
+    #[inline(always)]
+    pub fn longitudinal_polynomials(&self) -> [&Polynomial; 7] {
+        let m = &self.pitching_moment;
+        [
+            &self.lift.alpha,
+            &self.lift.elevator,
+            &self.drag.alpha,
+            &self.drag.elevator,
+            &m.alpha,
+            &m.elevator,
+            &m.pitch_rate,
+        ]
+    }
+
+    /// The lateral derivatives' polynomials in the order C_lβ, C_lδa, C_lδr, C_lp, C_lr,
+    /// C_nβ, C_nδa, C_nδr, C_np, C_nr, C_Yβ, C_Yδa, C_Yδr (C_Y has no rate terms).
+    #[inline(always)]
+    pub fn lateral_polynomials(&self) -> [&Polynomial; 13] {
+        let (l, n, y) = (&self.rolling_moment, &self.yawing_moment, &self.side_force);
+        [
+            &l.beta,
+            &l.aileron,
+            &l.rudder,
+            &l.roll_rate,
+            &l.yaw_rate,
+            &n.beta,
+            &n.aileron,
+            &n.rudder,
+            &n.roll_rate,
+            &n.yaw_rate,
+            &y.beta,
+            &y.aileron,
+            &y.rudder,
+        ]
+    }
 
     /// Whether these are the F/A-18's data (a scenario file then need not carry them).
     pub fn is_fa18(&self) -> bool {

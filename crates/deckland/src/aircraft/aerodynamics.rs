@@ -47,8 +47,7 @@ pub fn aerodynamic_coefficients(
 }
 
 /// The coefficients of the aircraft whose aerodynamic data are `data`, as
-/// [`aerodynamic_coefficients`], with sin α and cos α already computed;
-/// [`fa18_coefficients_trig`] is the same for the F/A-18's data, cheaper.
+/// [`aerodynamic_coefficients`], with sin α and cos α already computed.
 #[inline(always)]
 pub fn aerodynamic_coefficients_trig(
     data: &AerodynamicData,
@@ -59,9 +58,23 @@ pub fn aerodynamic_coefficients_trig(
     q_hat: f64,
     configuration: &AerodynamicConfiguration,
 ) -> AerodynamicCoefficients {
+    let polynomials = polynomials_at(data, alpha);
+    coefficients_of(
+        data,
+        polynomials,
+        (sin_a, cos_a, elevator, q_hat),
+        configuration,
+    )
+}
+
+/// The longitudinal polynomials of `data` at `alpha` (rad)
+/// ([`AerodynamicData::longitudinal_polynomials`]), each over all five terms, the zero
+/// ones included, so that any aircraft's data take the same unrolled path.
+#[inline(always)]
+pub(crate) fn polynomials_at(data: &AerodynamicData, alpha: f64) -> [f64; 7] {
     let powers = powers_of(alpha);
     let m = &data.pitching_moment;
-    let polynomials = [
+    [
         data.lift.alpha.in_ascending_powers(&powers),
         data.lift.elevator.in_ascending_powers(&powers),
         data.drag.alpha.in_ascending_powers(&powers),
@@ -69,50 +82,33 @@ pub fn aerodynamic_coefficients_trig(
         m.alpha.in_ascending_powers(&powers),
         m.elevator.in_ascending_powers(&powers),
         m.pitch_rate.in_ascending_powers(&powers),
-    ];
-    let inputs = (sin_a, cos_a, elevator, q_hat);
-    coefficients_of(data, polynomials, inputs, configuration)
+    ]
 }
 
-/// [`aerodynamic_coefficients_trig`] for the F/A-18's data ([`AerodynamicData::FA18`]),
-/// the same to the bit: each polynomial is summed over its given terms only
-/// ([`Polynomial::in_first_terms`](super::Polynomial::in_first_terms)), with its
+/// [`polynomials_at`] for the F/A-18's data ([`AerodynamicData::FA18`]), the same to
+/// the bit: each polynomial is summed over its given terms only
+/// ([`Polynomial::in_given_terms`](super::Polynomial::in_given_terms)), with its
 /// coefficients as constants, about two thirds of the work.
 #[inline(always)]
-pub fn fa18_coefficients_trig(
-    alpha: f64,
-    sin_a: f64,
-    cos_a: f64,
-    elevator: f64,
-    q_hat: f64,
-    configuration: &AerodynamicConfiguration,
-) -> AerodynamicCoefficients {
-    const DATA: AerodynamicData = AerodynamicData::FA18;
-    // The F/A-18's polynomial `$p` at `$powers`, over its given terms.
-    let data: &'static AerodynamicData = &DATA;
-    macro_rules! given_terms {
-        ($($p:ident).+, $powers:expr) => {
-            data.$($p).+.in_first_terms::<{ DATA.$($p).+.terms() }>($powers)
-        };
-    }
+pub(crate) fn fa18_polynomials_at(alpha: f64) -> [f64; 7] {
+    const FA18: &AerodynamicData = &AerodynamicData::FA18;
     let powers = powers_of(alpha);
-    let polynomials = [
-        given_terms!(lift.alpha, &powers),
-        given_terms!(lift.elevator, &powers),
-        given_terms!(drag.alpha, &powers),
-        given_terms!(drag.elevator, &powers),
-        given_terms!(pitching_moment.alpha, &powers),
-        given_terms!(pitching_moment.elevator, &powers),
-        given_terms!(pitching_moment.pitch_rate, &powers),
-    ];
-    let inputs = (sin_a, cos_a, elevator, q_hat);
-    coefficients_of(data, polynomials, inputs, configuration)
+    let m = &FA18.pitching_moment;
+    [
+        FA18.lift.alpha.in_given_terms(&powers),
+        FA18.lift.elevator.in_given_terms(&powers),
+        FA18.drag.alpha.in_given_terms(&powers),
+        FA18.drag.elevator.in_given_terms(&powers),
+        m.alpha.in_given_terms(&powers),
+        m.elevator.in_given_terms(&powers),
+        m.pitch_rate.in_given_terms(&powers),
+    ]
 }
 
 /// The coefficients of `data` from its seven polynomials' values at α, in the order
 /// L_α, L_δe, D_α, D_δe, M_α, M_δe, M_q, and (sin α, cos α, δe, q̂).
 #[inline(always)]
-fn coefficients_of(
+pub(crate) fn coefficients_of(
     data: &AerodynamicData,
     [lift_alpha, lift_elevator, drag_alpha, drag_elevator, m_alpha, m_elevator, m_q]: [f64; 7],
     (sin_a, cos_a, elevator, q_hat): (f64, f64, f64, f64),
@@ -141,46 +137,15 @@ mod tests {
     use super::*;
 
     /// The F/A-18's path, which sums only the terms given, gives the data path's
-    /// coefficients (all five terms, the zero ones included) to the bit, over the whole
-    /// α range the data cover and beyond, with elevator and pitch rate both signs.
+    /// polynomial values (all five terms, the zero ones included) to the bit, over the
+    /// whole α range the data cover and beyond.
     #[test]
     fn the_fa18_path_is_the_data_path_to_the_bit() {
-        let data = &AerodynamicData::FA18;
-        for configuration in [
-            AerodynamicConfiguration::LANDING,
-            AerodynamicConfiguration::CLEAN,
-        ] {
-            for k in -400..=1400 {
-                let alpha = f64::from(k) * 1e-3 + 1.234_567e-7;
-                let (sin_a, cos_a) = alpha.sin_cos();
-                for (elevator, q_hat) in [(0.0, 0.0), (0.21, -0.013), (-0.35, 0.02)] {
-                    let inputs = (alpha, sin_a, cos_a, elevator, q_hat);
-                    let by_data = aerodynamic_coefficients_trig(
-                        data,
-                        inputs.0,
-                        inputs.1,
-                        inputs.2,
-                        inputs.3,
-                        inputs.4,
-                        &configuration,
-                    );
-                    let fa18 = fa18_coefficients_trig(
-                        inputs.0,
-                        inputs.1,
-                        inputs.2,
-                        inputs.3,
-                        inputs.4,
-                        &configuration,
-                    );
-                    for (a, b) in [
-                        (by_data.lift, fa18.lift),
-                        (by_data.drag, fa18.drag),
-                        (by_data.moment, fa18.moment),
-                    ] {
-                        assert_eq!(a.to_bits(), b.to_bits(), "α = {alpha}: {a} vs {b}");
-                    }
-                }
-            }
+        for k in -400..=1400 {
+            let alpha = f64::from(k) * 1e-3 + 1.234_567e-7;
+            let by_data = polynomials_at(&AerodynamicData::FA18, alpha).map(f64::to_bits);
+            let fa18 = fa18_polynomials_at(alpha).map(f64::to_bits);
+            assert_eq!(by_data, fa18, "α = {alpha}");
         }
     }
 

@@ -30,8 +30,8 @@ pub use aerodynamic_data::{
     PitchingMomentCoefficient, Polynomial, MAX_POLYNOMIAL_TERMS,
 };
 pub use aerodynamics::{
-    aerodynamic_coefficients, aerodynamic_coefficients_trig, fa18_coefficients_trig,
-    AerodynamicCoefficients, ALPHA_MAX_RAD, ALPHA_MIN_RAD,
+    aerodynamic_coefficients, aerodynamic_coefficients_trig, AerodynamicCoefficients,
+    ALPHA_MAX_RAD, ALPHA_MIN_RAD,
 };
 pub use built_plant::{BuiltPlant, WithPlant};
 pub use configuration::{AerodynamicConfiguration, ConfigurationName};

@@ -18,8 +18,10 @@ use super::actuator::{ElevatorActuator, ElevatorActuatorParameters};
 use super::aerodynamic_data::AerodynamicData;
 #[cfg(test)]
 use super::aerodynamics::aerodynamic_coefficients;
+#[cfg(doc)]
+use super::aerodynamics::aerodynamic_coefficients_trig;
 use super::aerodynamics::{
-    aerodynamic_coefficients_trig, fa18_coefficients_trig, AerodynamicCoefficients,
+    coefficients_of, fa18_polynomials_at, polynomials_at, AerodynamicCoefficients,
 };
 use super::configuration::AerodynamicConfiguration;
 use super::engine::{EngineParameters, Engines};
@@ -69,7 +71,7 @@ pub struct Aircraft {
     parameters: AircraftParameters,
     aerodynamics: AerodynamicData,
     /// Whether `aerodynamics` are the F/A-18's, which are then evaluated as constants
-    /// ([`fa18_coefficients_trig`]).
+    /// ([`Aircraft::coefficients_trig`]).
     aerodynamics_are_fa18: bool,
     configuration: AerodynamicConfiguration,
     engines: Engines,
@@ -132,25 +134,31 @@ impl Aircraft {
         &self.aerodynamics
     }
 
-    /// The coefficients of this aircraft's data in `configuration`
-    /// ([`aerodynamic_coefficients_trig`]; the F/A-18's by [`fa18_coefficients_trig`], the
-    /// same to the bit and cheaper).
+    /// The coefficients of this aircraft's data in `configuration` at the angle of
+    /// attack α (rad) with its sine and cosine, `(α, sin α, cos α)`, the elevator δe (rad)
+    /// and q̂ (–), as [`aerodynamic_coefficients_trig`]; the F/A-18's data are read as
+    /// constants and summed over their given terms only, the same to the bit and
+    /// cheaper.
     #[inline(always)]
     pub fn coefficients_trig(
         &self,
-        alpha: f64,
-        sin_a: f64,
-        cos_a: f64,
+        (alpha, sin_a, cos_a): (f64, f64, f64),
         elevator: f64,
         q_hat: f64,
         configuration: &AerodynamicConfiguration,
     ) -> AerodynamicCoefficients {
-        if self.aerodynamics_are_fa18 {
-            fa18_coefficients_trig(alpha, sin_a, cos_a, elevator, q_hat, configuration)
+        let data = &self.aerodynamics;
+        let polynomials = if self.aerodynamics_are_fa18 {
+            fa18_polynomials_at(alpha)
         } else {
-            let data = &self.aerodynamics;
-            aerodynamic_coefficients_trig(data, alpha, sin_a, cos_a, elevator, q_hat, configuration)
-        }
+            polynomials_at(data, alpha)
+        };
+        coefficients_of(
+            data,
+            polynomials,
+            (sin_a, cos_a, elevator, q_hat),
+            configuration,
+        )
     }
 
     /// The default aircraft in a given aerodynamic configuration.
@@ -254,9 +262,7 @@ impl Aircraft {
         let q_hat = q * p.mean_chord_m / (2.0 * air.airspeed_mps);
         let (sin_a, cos_a) = (air.sin_alpha, air.cos_alpha);
         let c = self.coefficients_trig(
-            air.alpha_rad,
-            sin_a,
-            cos_a,
+            (air.alpha_rad, sin_a, cos_a),
             inputs.elevator_rad,
             q_hat,
             &self.configuration,

@@ -223,9 +223,7 @@ impl SixDofAircraft {
         let beta = data.beta_rad;
         let q_hat = q * p.mean_chord_m / (2.0 * airspeed);
         let c = self.longitudinal.coefficients_trig(
-            data.alpha_rad,
-            sin_a,
-            cos_a,
+            (data.alpha_rad, sin_a, cos_a),
             inputs.elevator_rad,
             q_hat,
             config,

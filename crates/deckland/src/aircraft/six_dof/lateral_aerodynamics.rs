@@ -65,27 +65,45 @@ impl LateralDerivatives {
     /// that any other aircraft's are evaluated from, without its padding terms' work.
     #[inline(always)]
     pub fn fa18_at(alpha: f64) -> Self {
-        let data = &AerodynamicData::FA18;
-        // The F/A-18's polynomial `$p` at `alpha`, over its given terms.
-        macro_rules! given_terms {
-            ($($p:ident).+) => {
-                data.$($p).+.horner(alpha)
-            };
-        }
+        const FA18: &AerodynamicData = &AerodynamicData::FA18;
+        let (l, n, y) = (&FA18.rolling_moment, &FA18.yawing_moment, &FA18.side_force);
+        Self::from_values([
+            l.beta.horner(alpha),
+            l.aileron.horner(alpha),
+            l.rudder.horner(alpha),
+            l.roll_rate.horner(alpha),
+            l.yaw_rate.horner(alpha),
+            n.beta.horner(alpha),
+            n.aileron.horner(alpha),
+            n.rudder.horner(alpha),
+            n.roll_rate.horner(alpha),
+            n.yaw_rate.horner(alpha),
+            y.beta.horner(alpha),
+            y.aileron.horner(alpha),
+            y.rudder.horner(alpha),
+        ])
+    }
+
+    /// The derivatives from their values in the order of
+    /// [`AerodynamicData::lateral_polynomials`].
+    #[inline(always)]
+    fn from_values(values: [f64; DERIVATIVES]) -> Self {
+        let [roll_beta, roll_aileron, roll_rudder, roll_p, roll_r, yaw_beta, yaw_aileron, yaw_rudder, yaw_p, yaw_r, side_beta, side_aileron, side_rudder] =
+            values;
         Self {
-            roll_beta: given_terms!(rolling_moment.beta),
-            roll_aileron: given_terms!(rolling_moment.aileron),
-            roll_rudder: given_terms!(rolling_moment.rudder),
-            roll_p: given_terms!(rolling_moment.roll_rate),
-            roll_r: given_terms!(rolling_moment.yaw_rate),
-            yaw_beta: given_terms!(yawing_moment.beta),
-            yaw_aileron: given_terms!(yawing_moment.aileron),
-            yaw_rudder: given_terms!(yawing_moment.rudder),
-            yaw_p: given_terms!(yawing_moment.roll_rate),
-            yaw_r: given_terms!(yawing_moment.yaw_rate),
-            side_beta: given_terms!(side_force.beta),
-            side_aileron: given_terms!(side_force.aileron),
-            side_rudder: given_terms!(side_force.rudder),
+            roll_beta,
+            roll_aileron,
+            roll_rudder,
+            roll_p,
+            roll_r,
+            yaw_beta,
+            yaw_aileron,
+            yaw_rudder,
+            yaw_p,
+            yaw_r,
+            side_beta,
+            side_aileron,
+            side_rudder,
         }
     }
 
@@ -116,22 +134,7 @@ pub struct LateralTable {
 impl LateralTable {
     /// The table of the aircraft whose data are `data`.
     pub fn of(data: &AerodynamicData) -> Self {
-        let (l, n, y) = (&data.rolling_moment, &data.yawing_moment, &data.side_force);
-        let polynomials = [
-            &l.beta,
-            &l.aileron,
-            &l.rudder,
-            &l.roll_rate,
-            &l.yaw_rate,
-            &n.beta,
-            &n.aileron,
-            &n.rudder,
-            &n.roll_rate,
-            &n.yaw_rate,
-            &y.beta,
-            &y.aileron,
-            &y.rudder,
-        ];
+        let polynomials = data.lateral_polynomials();
         let mut by_power = [[0.0; LANES]; MAX_POLYNOMIAL_TERMS];
         for (i, polynomial) in polynomials.iter().enumerate() {
             for (k, c) in polynomial.coefficients().iter().enumerate() {
@@ -150,21 +153,7 @@ impl LateralTable {
                 *s = *s * alpha + c;
             }
         }
-        LateralDerivatives {
-            roll_beta: sum[0],
-            roll_aileron: sum[1],
-            roll_rudder: sum[2],
-            roll_p: sum[3],
-            roll_r: sum[4],
-            yaw_beta: sum[5],
-            yaw_aileron: sum[6],
-            yaw_rudder: sum[7],
-            yaw_p: sum[8],
-            yaw_r: sum[9],
-            side_beta: sum[10],
-            side_aileron: sum[11],
-            side_rudder: sum[12],
-        }
+        LateralDerivatives::from_values(std::array::from_fn(|i| sum[i]))
     }
 }
 
