@@ -85,17 +85,7 @@ impl AircraftState {
     /// The state from an integrator array (inverse of [`AircraftState::to_array`]).
     #[inline]
     pub fn from_array(x: &[f64; Self::DIMENSION]) -> Self {
-        Self {
-            u_mps: x[0],
-            w_mps: x[1],
-            q_radps: x[2],
-            theta_rad: x[3],
-            x_m: x[4],
-            h_m: x[5],
-            engine_thrust_n: [x[6], x[7]],
-            elevator_rad: x[8],
-            elevator_rate_radps: x[9],
-        }
+        Self::from_slice(x)
     }
 
     /// Total actual thrust of both engines (N).

@@ -28,11 +28,41 @@ pub struct HeldCommands {
     pub lateral: Option<(f64, f64)>,
 }
 
+/// The flight computer's frames: a frame starts at the first step at or after each
+/// multiple of the period (module docs).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct FrameClock {
+    /// The frame period (s).
+    period_s: f64,
+    /// The frame the last step was in; `None` before the first.
+    frame: Option<i64>,
+}
+
+impl FrameClock {
+    /// Frames at `rate_hz`.
+    pub fn at_rate(rate_hz: f64) -> Self {
+        Self {
+            period_s: 1.0 / rate_hz,
+            frame: None,
+        }
+    }
+
+    /// Whether a new frame starts at the step from `time_s` (s), and if so moves to it.
+    #[inline]
+    pub fn starts_frame(&mut self, time_s: f64) -> bool {
+        // A frame index a hair above an integer counts as that integer: t = k·T computed
+        // as a multiple of the step may round below it.
+        let index = (time_s / self.period_s + 1e-9).floor() as i64;
+        let new = self.frame != Some(index);
+        self.frame = Some(index);
+        new
+    }
+}
+
 /// The computer's frame clock and what it holds over a frame.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct FlightComputer {
-    period_s: f64,
-    frame: Option<i64>,
+    clock: FrameClock,
     /// Sum and number of the sensor's samples since the last frame started (rad), and
     /// the time of the first of them (s).
     sum_rad: f64,
@@ -52,8 +82,7 @@ impl FlightComputer {
     /// A computer running at `rate_hz` for a loop of `dimension` states.
     pub fn new(rate_hz: f64, dimension: usize) -> Self {
         Self {
-            period_s: 1.0 / rate_hz,
-            frame: None,
+            clock: FrameClock::at_rate(rate_hz),
             sum_rad: 0.0,
             samples: 0,
             window_start_s: 0.0,
@@ -81,13 +110,9 @@ impl FlightComputer {
     }
 
     /// Whether a new frame starts at the step from `time_s` (s), and if so moves to it.
+    #[inline]
     pub fn starts_frame(&mut self, time_s: f64) -> bool {
-        // A frame index a hair above an integer counts as that integer: t = k·T computed
-        // as a multiple of the step may round below it.
-        let index = (time_s / self.period_s + 1e-9).floor() as i64;
-        let new = self.frame != Some(index);
-        self.frame = Some(index);
-        new
+        self.clock.starts_frame(time_s)
     }
 }
 

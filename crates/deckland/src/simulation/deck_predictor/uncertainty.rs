@@ -3,15 +3,16 @@
 //! frame of the flight-control computer and holds them until the next, as a discrete
 //! implementation would; the mean forecast is still worked out every step.
 
+use crate::simulation::flight_computer::FrameClock;
+
 /// The σ of the ramp's height at the crossing (m) and of the landing point's climb rate
 /// at touchdown (m/s), and how the path follows the ramp's later forecast updates (m²),
 /// with the frame they were worked out in.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct UncertaintyHold {
-    /// The frame period (s); `None` works them out at every step (no flight computer).
-    period_s: Option<f64>,
-    /// The frame the held values belong to; `None` before the first.
-    frame: Option<i64>,
+    /// The flight computer's frames; `None` works them out at every step (no flight
+    /// computer).
+    clock: Option<FrameClock>,
     /// The held σ: ramp height (m), landing point climb rate (m/s); and the path's
     /// response to the ramp height's later updates (m², `ramp_update_response_m2`).
     pub sigmas: (f64, f64, [f64; 2]),
@@ -21,8 +22,7 @@ impl UncertaintyHold {
     /// A hold for frames at `rate_hz` (the flight computer's), or none (every step).
     pub fn new(rate_hz: Option<f64>) -> Self {
         Self {
-            period_s: rate_hz.map(|rate| 1.0 / rate),
-            frame: None,
+            clock: rate_hz.map(FrameClock::at_rate),
             sigmas: (0.0, 0.0, [0.0; 2]),
         }
     }
@@ -31,13 +31,9 @@ impl UncertaintyHold {
     /// worked out again; the frames are those of the flight computer (a frame index a
     /// hair above an integer counts as that integer).
     pub fn due(&mut self, time_s: f64) -> bool {
-        let Some(period_s) = self.period_s else {
-            return true;
-        };
-        let index = (time_s / period_s + 1e-9).floor() as i64;
-        let new = self.frame != Some(index);
-        self.frame = Some(index);
-        new
+        self.clock
+            .as_mut()
+            .is_none_or(|clock| clock.starts_frame(time_s))
     }
 }
 

@@ -11,16 +11,15 @@ use crate::aircraft::six_dof::SixDofState;
 use crate::control::{WaveOffDecision, WaveOffParameters};
 use crate::environment::{DeckGeometry, LateralShipMotionState, LateralShipNoise};
 use crate::simulation::commit::CommitPoint;
+use crate::simulation::flight_computer::FrameClock;
 
 /// The lateral guidance's frames: those of the flight computer
 /// ([`crate::simulation::flight_computer`]: a frame starts at the first step from each
 /// multiple of the period), and what the guidance computed at the last frame's start.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct GuidanceFrames {
-    /// The flight computer's frame period (s).
-    period_s: f64,
-    /// The index of the current frame.
-    frame: Option<i64>,
+    /// The flight computer's frames.
+    clock: FrameClock,
     /// The guidance's outputs held over the frame: the held step (its ship noise and
     /// view time replaced each step) and the fresh reading.
     held: Option<(HeldLateral, (f64, f64))>,
@@ -30,19 +29,15 @@ impl GuidanceFrames {
     /// The frames of a flight computer at `rate_hz` (Hz).
     pub fn new(rate_hz: f64) -> Self {
         Self {
-            period_s: 1.0 / rate_hz,
-            frame: None,
+            clock: FrameClock::at_rate(rate_hz),
             held: None,
         }
     }
 
     /// Whether a frame starts at the step from `time_s` (s), and if so moves to it: the
-    /// flight computer's rule, with the same arithmetic, so that the two agree.
+    /// flight computer's clock, so that the two agree.
     fn starts_frame(&mut self, time_s: f64) -> bool {
-        let index = (time_s / self.period_s + 1e-9).floor() as i64;
-        let new = self.frame != Some(index);
-        self.frame = Some(index);
-        new
+        self.clock.starts_frame(time_s)
     }
 }
 
