@@ -705,4 +705,4 @@ mod recovery;
 pub use recovery::{FoulDeckModel, RecoveryLimits};
 
 #[cfg(test)]
-mod tests;
+pub(in crate::control) mod tests;
