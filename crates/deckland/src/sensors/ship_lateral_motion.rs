@@ -14,6 +14,7 @@
 
 use std::collections::VecDeque;
 
+use super::ship_motion::take_arrived;
 use super::ShipMotionSensingParameters;
 use crate::environment::LateralShipMotionOutputs;
 use crate::parameters::ParameterError;
@@ -115,15 +116,12 @@ impl LateralShipMotionSensor {
 
     /// The oldest measurement that has arrived by `time_s`, if any; call until `None`.
     pub fn receive(&mut self, time_s: f64) -> Option<LateralShipMotionMeasurement> {
-        let arrived = self
-            .in_transit
-            .front()
-            .is_some_and(|m| m.time_s + self.parameters.latency_s <= time_s + 1e-9);
-        if arrived {
-            self.in_transit.pop_front()
-        } else {
-            None
-        }
+        take_arrived(
+            &mut self.in_transit,
+            |m| m.time_s,
+            self.parameters.latency_s,
+            time_s,
+        )
     }
 }
 

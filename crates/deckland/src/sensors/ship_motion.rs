@@ -234,15 +234,30 @@ impl ShipMotionSensor {
     /// The oldest measurement that has arrived by `time_s` (sent at or before
     /// `time_s` − latency), if any; call until `None` to take every arrival.
     pub fn receive(&mut self, time_s: f64) -> Option<ShipMotionMeasurement> {
-        let arrived = self
-            .in_transit
-            .front()
-            .is_some_and(|m| m.time_s + self.parameters.latency_s <= time_s + 1e-9);
-        if arrived {
-            self.in_transit.pop_front()
-        } else {
-            None
-        }
+        take_arrived(
+            &mut self.in_transit,
+            |m| m.time_s,
+            self.parameters.latency_s,
+            time_s,
+        )
+    }
+}
+
+/// Takes the oldest measurement of the data link `in_transit` (oldest first) if it has
+/// arrived by `time_s`: sent at `sent_s` of it, at or before `time_s` − `latency_s`.
+pub(super) fn take_arrived<M>(
+    in_transit: &mut VecDeque<M>,
+    sent_s: impl Fn(&M) -> f64,
+    latency_s: f64,
+    time_s: f64,
+) -> Option<M> {
+    let arrived = in_transit
+        .front()
+        .is_some_and(|m| sent_s(m) + latency_s <= time_s + 1e-9);
+    if arrived {
+        in_transit.pop_front()
+    } else {
+        None
     }
 }
 
