@@ -44,15 +44,8 @@ fn shard_rows(result: &CampaignResult, seed: u64, source: &str) -> ShardRows {
         rows: result
             .records
             .iter()
-            .map(|r| {
-                let row = RunRow::new(r, &result.controller_labels);
-                // As read back from a file: owning its text.
-                RunRow {
-                    controller: row.controller.into_owned().into(),
-                    outcome: row.outcome.into_owned().into(),
-                    ..row
-                }
-            })
+            // As read back from a file: owning its text.
+            .map(|r| RunRow::new(r, &result.controller_labels).into_owned())
             .collect(),
         lateral: None,
     }
