@@ -6,6 +6,10 @@ use std::ffi::OsStr;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+/// The 10° bank step the lateral step tests fly (`step --axis roll --step-deg 10`); a
+/// test appends its own arguments.
+pub const ROLL_STEP: [&str; 5] = ["step", "--axis", "roll", "--step-deg", "10"];
+
 /// Runs the `deckland` binary built for these tests with `args`.
 pub fn deckland<I, S>(args: I) -> Output
 where
