@@ -5,10 +5,11 @@
 
 mod common;
 
-use common::{assert_success, deckland, scratch, short_dispersed_scenario, signal_after};
+use common::{
+    assert_success, deckland, endless_campaign, scratch, short_dispersed_scenario, signal_after,
+};
 use serde_json::Value;
 use std::path::PathBuf;
-use std::process::Command;
 
 fn scenario(name: &str) -> String {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -314,18 +315,8 @@ fn a_bad_scenario_file_is_refused_with_file_line_and_field() {
 fn an_interrupted_campaign_keeps_a_consistent_partial_result() {
     let dir = scratch("campaign-interrupt");
     let out = dir.join("out");
-    let child = Command::new(env!("CARGO_BIN_EXE_deckland"))
-        .args([
-            "campaign",
-            &scenario("paper-adverse.toml"),
-            "--runs",
-            "100000",
-            "--threads",
-            "2",
-            "--out",
-            out.to_str().unwrap(),
-            "--json",
-        ])
+    let child = endless_campaign(&scenario("paper-adverse.toml"), &out)
+        .arg("--json")
         .stdout(std::process::Stdio::piped())
         .stderr(std::process::Stdio::piped())
         .spawn()

@@ -302,6 +302,23 @@ pub fn assert_success(output: &Output) {
     );
 }
 
+/// A campaign too long to finish (100 000 runs of `scenario` on two threads, into
+/// `out`), as a command to spawn and stop with a signal.
+pub fn endless_campaign(scenario: &str, out: &Path) -> Command {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_deckland"));
+    command.args([
+        "campaign",
+        scenario,
+        "--runs",
+        "100000",
+        "--threads",
+        "2",
+        "--out",
+        out.to_str().expect("a UTF-8 path"),
+    ]);
+    command
+}
+
 /// Sends `signal` (`"INT"`, `"TERM"`, …) to a running `child` after `after_ms`
 /// milliseconds, as a user or a scheduler would, and waits for it to end.
 pub fn signal_after(child: std::process::Child, signal: &str, after_ms: u64) -> Output {
