@@ -8,6 +8,7 @@ mod common;
 use common::{
     assert_success, deckland, endless_campaign, scratch, short_dispersed_scenario, signal_after,
 };
+use deckland::monte_carlo::{LSO_RUN_COLUMNS, RUN_COLUMNS};
 use serde_json::Value;
 use std::path::PathBuf;
 
@@ -89,21 +90,7 @@ fn one_and_two_threads_write_byte_identical_runs_csv() {
     assert_eq!(csv[0], csv[1], "runs.csv differs between 1 and 2 threads");
     let text = String::from_utf8(csv[0].clone()).unwrap();
     let header = text.lines().next().unwrap();
-    for column in [
-        "run_index",
-        "controller",
-        "seed",
-        "outcome",
-        "wire",
-        "touchdown_distance_m",
-        "touchdown_sink_rate_mps",
-        "touchdown_pitch_deg",
-        "touchdown_airspeed_mps",
-        "ramp_clearance_m",
-        "glide_path_error_rms_m",
-        "glide_path_error_max_m",
-        "reason",
-    ] {
+    for column in RUN_COLUMNS {
         assert!(header.split(',').any(|c| c == column), "column {column}");
     }
     assert_eq!(text.lines().count(), 21);
@@ -517,20 +504,7 @@ fn a_default_campaign_grades_every_pass_and_prints_the_greenie_board() {
     let mut reader = csv::Reader::from_reader(text.as_bytes());
     let header: Vec<String> = reader.headers().unwrap().iter().map(String::from).collect();
     let n = header.len();
-    assert_eq!(
-        header[n - 8..],
-        [
-            "lso_grade",
-            "lso_points",
-            "lso_comment",
-            "wave_off_criterion",
-            "deck_within_limits_pct",
-            "commit_ramp_strike_probability",
-            "commit_hard_landing_probability",
-            "commit_off_centre_probability"
-        ],
-        "{header:?}"
-    );
+    assert_eq!(header[n - 8..], LSO_RUN_COLUMNS, "{header:?}");
     let grades = ["ok", "fair", "bolter", "no_grade", "own_wave_off", "cut"];
     let mut rows = 0;
     let mut deck_shares = Vec::new();
