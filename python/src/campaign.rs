@@ -154,11 +154,7 @@ pub fn campaign<'py>(
     let result = fly(py, &spec, threads, progress)?;
     let elapsed_s = started.elapsed().as_secs_f64();
 
-    let rows: Vec<RunRow> = result
-        .records
-        .iter()
-        .map(|record| RunRow::new(record, &result.controller_labels))
-        .collect();
+    let rows = result.rows();
     let lateral_rows = lateral_rows(&spec, &result);
     let (table, lateral_table, lateral, trap_sheet) = table_of(&rows, lateral_rows.as_deref())?;
     let summary = CampaignSummary::of_result(&result, seed, DEFAULT_TARGET_RATE);
@@ -341,11 +337,7 @@ pub fn campaign_shard(
     let started = Instant::now();
     let result = fly(py, &spec, threads, None)?;
     let elapsed_s = started.elapsed().as_secs_f64();
-    let rows: Vec<RunRow> = result
-        .records
-        .iter()
-        .map(|record| RunRow::new(record, &result.controller_labels))
-        .collect();
+    let rows = result.rows();
     let runs_csv =
         runs_csv_text(&rows, lateral_rows(&spec, &result).as_deref()).map_err(value_error)?;
     let payload = ShardPayload {
@@ -436,18 +428,14 @@ pub fn merge_shards_text<'py>(
     .map_err(|e| value_error(format!("cannot merge: {e}")))?;
     let (table, lateral_table, lateral, trap_sheet) =
         table_of(&merged.rows, merged.lateral.as_deref())?;
-    let report = CampaignReport {
-        scenario_file: scenario_name.clone(),
-        summary: &summary,
-        threads: None,
-        elapsed_s: started.elapsed().as_secs_f64(),
-        runs_per_s: None,
-        shard: Shard::WHOLE.to_string(),
-        shard_scheme: SHARD_SCHEME,
-        merged_from: merged.sources.clone(),
+    let report = CampaignReport::merged(
+        scenario_name.clone(),
+        &summary,
+        started.elapsed().as_secs_f64(),
+        merged.sources.clone(),
         lateral,
         trap_sheet,
-    };
+    );
     let folder = match destination {
         None => None,
         Some(destination) => {

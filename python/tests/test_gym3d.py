@@ -163,8 +163,9 @@ def test_a_held_bank_command_turns_the_aircraft_off_the_centreline():
     assert final_cross_track_m(env, infos) > final_cross_track_m(env, flown) + 5.0
 
 
-def trajectory_of_a_new_env(mode, seed, actions):
-    env = CarrierLanding3DEnv(control=mode)
+def trajectory_of(env, seed, actions):
+    """The observations of `env` reset with `seed` and stepped with `actions` until the
+    episode ends."""
     observation, _ = env.reset(seed=seed)
     observations = [observation]
     for action in actions:
@@ -181,21 +182,10 @@ def test_the_same_seed_gives_the_same_trajectory(mode):
     env = CarrierLanding3DEnv(control=mode)
     actions = rng.uniform(-0.2, 0.2, size=(400, len(CONTROL_MODES_3D[mode]))).astype(np.float32)
     actions[:, -1] = -1.0
-
-    def trajectory(seed):
-        observation, _ = env.reset(seed=seed)
-        observations = [observation]
-        for action in actions:
-            observation, _, terminated, truncated, _ = env.step(action)
-            observations.append(observation)
-            if terminated or truncated:
-                break
-        return np.array(observations)
-
-    first = trajectory(11)
-    assert np.array_equal(first, trajectory(11))
-    assert np.array_equal(first, trajectory_of_a_new_env(mode, 11, actions))
-    assert not np.array_equal(first, trajectory(12))
+    first = trajectory_of(env, 11, actions)
+    assert np.array_equal(first, trajectory_of(env, 11, actions))
+    assert np.array_equal(first, trajectory_of(CarrierLanding3DEnv(control=mode), 11, actions))
+    assert not np.array_equal(first, trajectory_of(env, 12, actions))
 
 
 def test_the_vectorised_environment_is_the_single_one_bit_for_bit():

@@ -5,10 +5,12 @@
 
 mod common;
 
-use common::{assert_success, deckland, scratch, short_dispersed_scenario, signal_after};
+use common::{
+    assert_success, deckland, endless_campaign, scratch, short_dispersed_scenario, signal_after,
+};
+use deckland::monte_carlo::{LSO_RUN_COLUMNS, RUN_COLUMNS};
 use serde_json::Value;
 use std::path::PathBuf;
-use std::process::Command;
 
 fn scenario(name: &str) -> String {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -88,21 +90,7 @@ fn one_and_two_threads_write_byte_identical_runs_csv() {
     assert_eq!(csv[0], csv[1], "runs.csv differs between 1 and 2 threads");
     let text = String::from_utf8(csv[0].clone()).unwrap();
     let header = text.lines().next().unwrap();
-    for column in [
-        "run_index",
-        "controller",
-        "seed",
-        "outcome",
-        "wire",
-        "touchdown_distance_m",
-        "touchdown_sink_rate_mps",
-        "touchdown_pitch_deg",
-        "touchdown_airspeed_mps",
-        "ramp_clearance_m",
-        "glide_path_error_rms_m",
-        "glide_path_error_max_m",
-        "reason",
-    ] {
+    for column in RUN_COLUMNS {
         assert!(header.split(',').any(|c| c == column), "column {column}");
     }
     assert_eq!(text.lines().count(), 21);
@@ -314,18 +302,8 @@ fn a_bad_scenario_file_is_refused_with_file_line_and_field() {
 fn an_interrupted_campaign_keeps_a_consistent_partial_result() {
     let dir = scratch("campaign-interrupt");
     let out = dir.join("out");
-    let child = Command::new(env!("CARGO_BIN_EXE_deckland"))
-        .args([
-            "campaign",
-            &scenario("paper-adverse.toml"),
-            "--runs",
-            "100000",
-            "--threads",
-            "2",
-            "--out",
-            out.to_str().unwrap(),
-            "--json",
-        ])
+    let child = endless_campaign(&scenario("paper-adverse.toml"), &out)
+        .arg("--json")
         .stdout(std::process::Stdio::piped())
         .stderr(std::process::Stdio::piped())
         .spawn()
@@ -526,20 +504,7 @@ fn a_default_campaign_grades_every_pass_and_prints_the_greenie_board() {
     let mut reader = csv::Reader::from_reader(text.as_bytes());
     let header: Vec<String> = reader.headers().unwrap().iter().map(String::from).collect();
     let n = header.len();
-    assert_eq!(
-        header[n - 8..],
-        [
-            "lso_grade",
-            "lso_points",
-            "lso_comment",
-            "wave_off_criterion",
-            "deck_within_limits_pct",
-            "commit_ramp_strike_probability",
-            "commit_hard_landing_probability",
-            "commit_off_centre_probability"
-        ],
-        "{header:?}"
-    );
+    assert_eq!(header[n - 8..], LSO_RUN_COLUMNS, "{header:?}");
     let grades = ["ok", "fair", "bolter", "no_grade", "own_wave_off", "cut"];
     let mut rows = 0;
     let mut deck_shares = Vec::new();

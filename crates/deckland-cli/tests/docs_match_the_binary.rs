@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::{deckland, scratch};
+use common::{deckland, scratch, ROLL_STEP};
 use serde_json::Value;
 use std::collections::BTreeSet;
 use std::path::PathBuf;
@@ -86,6 +86,8 @@ fn every_json_document_is_documented_key_for_key() {
     let mut linearize = json_keys(&stdout_of(&["linearize", "--json"]));
     // `trim` holds the trim document, documented with `deckland trim`.
     linearize.retain(|k| !trim.contains(k) || k == "trim");
+    // The pitch step and the bank step, each two seconds long.
+    let short_step_json = ["--seconds", "2", "--json", "--out", out, "--force"];
     let six_dof_trim = json_keys(&stdout_of(&["trim", "--model", "6dof", "--json"]));
     let mut six_dof_linearize = json_keys(&stdout_of(&["linearize", "--model", "6dof", "--json"]));
     six_dof_linearize.retain(|k| !six_dof_trim.contains(k) || k == "trim");
@@ -110,31 +112,11 @@ fn every_json_document_is_documented_key_for_key() {
         ),
         (
             "`--json` prints one JSON document instead of the table:",
-            json_keys(&stdout_of(&[
-                "step",
-                "--seconds",
-                "2",
-                "--json",
-                "--out",
-                out,
-                "--force",
-            ])),
+            json_keys(&stdout_of(&[&["step"][..], &short_step_json].concat())),
         ),
         (
             "With `--axis roll` or `yaw`, `--json` prints",
-            json_keys(&stdout_of(&[
-                "step",
-                "--axis",
-                "roll",
-                "--step-deg",
-                "10",
-                "--seconds",
-                "2",
-                "--json",
-                "--out",
-                out,
-                "--force",
-            ])),
+            json_keys(&stdout_of(&[&ROLL_STEP[..], &short_step_json].concat())),
         ),
         (
             "`summary.json` (and `--json`)\nholds",

@@ -10,12 +10,12 @@ mod common;
 
 use common::{
     assert_finite_csv, assert_no_panic, assert_refused, assert_unique_keys, deckland, deckland_in,
-    scratch, signal_after, temporary_files,
+    endless_campaign, scratch, signal_after, temporary_files,
 };
 use serde_json::Value;
 use std::fs;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use std::process::{Command, Output, Stdio};
 
 /// The default scenario file with `key = …` lines replaced by `key = value`; a key
 /// written `[section]key` is the first `key` after the line `[section]`.
@@ -41,6 +41,18 @@ fn scenario_with(dir: &Path, name: &str, edits: &[(&str, &str)]) -> PathBuf {
     path
 }
 
+/// Runs `deckland run file --out dir/out`: the output folder and the command's output.
+fn run_into_out(dir: &Path, file: &Path) -> (PathBuf, Output) {
+    let out = dir.join("out");
+    let run = deckland([
+        "run",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    (out, run)
+}
+
 /// Regression (class 1): `compensation_window_s = 1e300` passed `scenario --check`, then
 /// `run` panicked (index out of bounds); 1e15 aborted on a 1.6 EB allocation, 1e7 grew
 /// to 6.4 GB. Both keys now have a physical upper bound, checked before anything flies.
@@ -53,13 +65,7 @@ fn regression_keys_without_an_upper_bound_are_refused_before_flying() {
             let field = format!("control.flight_path.{key}");
             let check = deckland(["scenario", "--check", file.to_str().unwrap()]);
             assert_refused(&check, 1, &[&field, "line ", "expected a value in"]);
-            let out = dir.join("out");
-            let run = deckland([
-                "run",
-                file.to_str().unwrap(),
-                "--out",
-                out.to_str().unwrap(),
-            ]);
+            let (out, run) = run_into_out(&dir, &file);
             assert_refused(&run, 1, &[&field]);
             assert!(!out.exists(), "no folder for a refused run");
         }
@@ -333,13 +339,7 @@ fn regression_check_means_flyable() {
     let stderr = String::from_utf8_lossy(&check.stderr);
     assert_eq!(stderr.lines().count(), 1, "{stderr}");
     assert_eq!(stderr.matches("did not converge").count(), 1, "{stderr}");
-    let out = dir.join("out");
-    let run = deckland([
-        "run",
-        file.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let (out, run) = run_into_out(&dir, &file);
     assert_refused(&run, 1, &["trim"]);
     assert_eq!(
         String::from_utf8_lossy(&run.stderr)
@@ -405,13 +405,7 @@ fn regression_the_recording_interval_is_in_seconds() {
         "fine.toml",
         &[("time_step_s", "0.0001"), ("start_range_m", "200.0")],
     );
-    let out = dir.join("out");
-    let run = deckland([
-        "run",
-        file.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let (out, run) = run_into_out(&dir, &file);
     assert!(run.status.success(), "{run:?}");
     let csv = fs::read_to_string(out.join("approach.csv")).unwrap();
     let times: Vec<f64> = csv
@@ -436,17 +430,7 @@ fn regression_kills_leave_no_temporary_files() {
     // SIGTERM stops a campaign like Ctrl-C: partial results, status 130, no temporaries.
     let file = scenario_with(&dir, "s.toml", &[]);
     let out = dir.join("campaign");
-    let child = Command::new(env!("CARGO_BIN_EXE_deckland"))
-        .args([
-            "campaign",
-            file.to_str().unwrap(),
-            "--runs",
-            "100000",
-            "--threads",
-            "2",
-            "--out",
-            out.to_str().unwrap(),
-        ])
+    let child = endless_campaign(file.to_str().unwrap(), &out)
         .stdout(Stdio::null())
         .stderr(Stdio::piped())
         .spawn()

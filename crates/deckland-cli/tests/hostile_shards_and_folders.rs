@@ -10,7 +10,7 @@
 mod common;
 
 use common::{
-    assert_no_panic, assert_refused, assert_success, deckland, scratch, short_dispersed_scenario,
+    assert_no_panic, assert_refused, assert_success, scratch, short_dispersed_scenario,
     temporary_files,
 };
 use std::fs;
@@ -43,7 +43,8 @@ fn deckland_within(args: &[&str], seconds: u64) -> Output {
     child.wait_with_output().unwrap()
 }
 
-/// The two shards of a 4-run campaign, flown once per test binary; each test copies them.
+/// The two shards of the 4-run [`short_campaign`], flown once per test binary; each test
+/// copies them.
 fn shards() -> &'static [PathBuf; 2] {
     static SHARDS: OnceLock<[PathBuf; 2]> = OnceLock::new();
     SHARDS.get_or_init(|| {
@@ -51,20 +52,7 @@ fn shards() -> &'static [PathBuf; 2] {
         let file = short_dispersed_scenario(&dir);
         [0, 1].map(|k| {
             let out = dir.join(format!("shard{k}"));
-            let output = deckland([
-                "campaign",
-                &file,
-                "--runs",
-                "4",
-                "--seed",
-                "3",
-                "--threads",
-                "1",
-                "--shard",
-                &format!("{k}/2"),
-                "--out",
-                out.to_str().unwrap(),
-            ]);
+            let output = short_campaign(&file, &out, &["--shard", &format!("{k}/2")]);
             assert_success(&output);
             out
         })

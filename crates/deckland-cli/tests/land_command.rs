@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{deckland, file_size, scratch};
+use common::{assert_success, deckland, file_size, scratch};
 use serde_json::Value;
 
 #[test]
@@ -12,11 +12,7 @@ fn land_writes_every_result_and_prints_the_json_summary() {
     let dir = scratch("land");
     let out = dir.to_str().unwrap();
     let output = deckland(["land", "--conditions", "ideal", "--out", out, "--json"]);
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    assert_success(&output);
     let v: Value = serde_json::from_slice(&output.stdout).unwrap();
     assert_eq!(v["outcome"], "trap");
     assert_eq!(v["wire"], 3);
@@ -108,11 +104,7 @@ fn a_six_dof_run_draws_the_plan_view_and_the_cross_track_plot() {
         "--out",
         dir.to_str().unwrap(),
     ]);
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    assert_success(&output);
     for (stem, text) in [
         ("plan_view", "landing centreline abeam the hook"),
         ("cross_track", "offset from the landing area"),
@@ -141,11 +133,7 @@ fn land_adverse_pid_runs_and_reports_an_outcome() {
         dir.to_str().unwrap(),
         "--json",
     ]);
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    assert_success(&output);
     let v: Value = serde_json::from_slice(&output.stdout).unwrap();
     assert_eq!(v["controller"], "PID");
     assert_eq!(v["seed"], 3);
@@ -167,11 +155,7 @@ fn sink_tracks_a_ramped_command_and_reports_the_paper_step_as_diverged() {
         out,
         "--json",
     ]);
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    assert_success(&output);
     let v: Value = serde_json::from_slice(&output.stdout).unwrap();
     assert_eq!(v["outcome"], "completed");
     assert_eq!(v["metrics"]["settled"], true);

@@ -4,25 +4,19 @@
 
 mod common;
 
-use common::{deckland, scratch};
+use common::{deckland, scratch, ROLL_STEP};
 
 #[test]
 fn a_roll_step_writes_json_csv_and_plots() {
     let out = scratch("lateral");
     let out_text = out.to_str().unwrap();
-    let result = deckland([
-        "step",
-        "--axis",
-        "roll",
-        "--step-deg",
-        "10",
-        "--seconds",
-        "5",
-        "--json",
-        "--out",
-        out_text,
-        "--force",
-    ]);
+    let result = deckland(
+        [
+            &ROLL_STEP[..],
+            &["--seconds", "5", "--json", "--out", out_text, "--force"],
+        ]
+        .concat(),
+    );
     assert!(
         result.status.success(),
         "stderr: {}",
@@ -83,15 +77,7 @@ fn a_lateral_step_out_of_range_is_refused_by_name() {
         stderr.contains("--step-deg") && stderr.contains("yaw") && stderr.contains("40"),
         "{stderr}"
     );
-    let result = deckland([
-        "step",
-        "--axis",
-        "roll",
-        "--step-deg",
-        "10",
-        "--epsilon",
-        "0.1",
-    ]);
+    let result = deckland([&ROLL_STEP[..], &["--epsilon", "0.1"]].concat());
     assert!(!result.status.success());
     assert!(String::from_utf8_lossy(&result.stderr).contains("--epsilon"));
 }
@@ -159,15 +145,7 @@ fn a_scenario_files_roll_law_and_actuators_fly_the_step() {
 
 #[test]
 fn a_lateral_step_refuses_the_paper_set_and_names_a_bad_lateral_key() {
-    let result = deckland([
-        "step",
-        "--axis",
-        "roll",
-        "--step-deg",
-        "10",
-        "--hardware",
-        "paper",
-    ]);
+    let result = deckland([&ROLL_STEP[..], &["--hardware", "paper"]].concat());
     assert!(!result.status.success());
     let stderr = String::from_utf8_lossy(&result.stderr);
     assert!(

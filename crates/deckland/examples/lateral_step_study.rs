@@ -21,6 +21,25 @@ fn fly(
     Ok(fly_lateral_step(setup, step, roll.as_ref(), yaw.as_ref())?.response)
 }
 
+/// The adverse 10° bank step of law `name` on seeds 1–[`SEEDS`], each step as `with`
+/// makes it.
+fn adverse_bank_steps(
+    setup: &LateralSetup,
+    name: &str,
+    with: impl Fn(LateralStep) -> LateralStep,
+) -> Result<Vec<LateralStepResponse>, Box<dyn std::error::Error>> {
+    (1..=SEEDS)
+        .map(|seed| {
+            let step = LateralStep {
+                adverse: true,
+                seed,
+                ..LateralStep::new(LateralAxis::Roll, 10.0, 8.0)
+            };
+            fly(setup, name, &with(step))
+        })
+        .collect()
+}
+
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let setup = LateralSetup::approach()?;
     for name in ["observer_pd", "pid"] {
@@ -39,15 +58,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             ideal.aileron_rate_rms_degps,
             100.0 * ideal.aileron_rate_limited_fraction
         );
-        let mut runs = Vec::new();
-        for seed in 1..=SEEDS {
-            let step = LateralStep {
-                adverse: true,
-                seed,
-                ..LateralStep::new(LateralAxis::Roll, 10.0, 8.0)
-            };
-            runs.push(fly(&setup, name, &step)?);
-        }
+        let runs = adverse_bank_steps(&setup, name, |step| step)?;
         let settled: Vec<f64> = runs
             .iter()
             .filter(|r| r.settled)
@@ -98,15 +109,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             sideslip_blend_crossover_radps: crossover,
             ..step
         };
-        let mut runs = Vec::new();
-        for seed in 1..=SEEDS {
-            let step = LateralStep {
-                adverse: true,
-                seed,
-                ..LateralStep::new(LateralAxis::Roll, 10.0, 8.0)
-            };
-            runs.push(fly(&setup, "observer_pd", &with(step))?);
-        }
+        let runs = adverse_bank_steps(&setup, "observer_pd", with)?;
         let settled: Vec<f64> = runs
             .iter()
             .filter(|r| r.settled)

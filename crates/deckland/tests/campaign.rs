@@ -3,9 +3,11 @@
 
 #![allow(clippy::unwrap_used)] // tests fail loudly by design
 
+mod common;
+
 use deckland::control::SinkRateControllerParameters;
 use deckland::monte_carlo::{run_campaign, run_seed, CampaignSpec, RunFailure, RunRecord};
-use deckland::scenario::{DispersionParameters, Scenario};
+use deckland::scenario::Scenario;
 use deckland::simulation::Outcome;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
@@ -13,12 +15,7 @@ use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 fn short_dispersed_scenario() -> Scenario {
     let mut scenario = Scenario::default();
     scenario.approach.start_range_m = 600.0;
-    scenario.dispersion = DispersionParameters {
-        start_height_offset_sd_m: 1.0,
-        airspeed_error_sd_mps: 1.0,
-        sea_state_log_sd: 0.2,
-        wind_over_deck_sd_mps: 2.0,
-    };
+    scenario.dispersion = common::every_dispersion();
     scenario
 }
 

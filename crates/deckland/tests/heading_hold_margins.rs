@@ -14,7 +14,7 @@ use deckland::aircraft::six_dof::linearize_six_dof;
 use deckland::control::design::loop_model::{log_grid, margins_of, Margins};
 use deckland::control::design::LinearActuator;
 use deckland::control::lateral::design::{
-    channel_hardware, full_lateral_margins, FLIGHT_COMPUTER_DELAY_S,
+    channel_hardware, cross_closed_loop_gains, full_lateral_margins, FLIGHT_COMPUTER_DELAY_S,
 };
 use deckland::control::lateral::LateralChannel;
 use deckland::control::LinearLaw;
@@ -129,16 +129,9 @@ impl Loop {
                 self.roll.measurement_response(s),
                 self.yaw.measurement_response(s),
             );
-            let mut h = [[Complex::from(0.0); 2]; 2];
-            for input in 0..2 {
-                for k in 0..3 {
-                    h[0][input] += ka[k] * g[(k, input)] * delay;
-                    h[1][input] += kr[k] * g[(3 + k, input)] * delay;
-                }
-            }
-            let one = Complex::from(1.0);
-            roll.push(-(h[0][0] + h[0][1] * h[1][0] / (one - h[1][1])));
-            yaw.push(-(h[1][1] + h[1][0] * h[0][1] / (one - h[0][0])));
+            let (roll_gain, yaw_gain) = cross_closed_loop_gains(&g, &ka, &kr, delay);
+            roll.push(roll_gain);
+            yaw.push(yaw_gain);
         }
         (margins_of(&omegas, &roll), margins_of(&omegas, &yaw))
     }

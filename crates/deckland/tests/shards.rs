@@ -3,12 +3,14 @@
 
 #![allow(clippy::unwrap_used)] // tests fail loudly by design
 
+mod common;
+
 use deckland::aircraft::PlantModel;
 use deckland::monte_carlo::{
     merge_shards, run_campaign, CampaignResult, CampaignSpec, CampaignStatistics, CampaignSummary,
     MergeError, RunRecord, RunRow, Shard, ShardIdentity, ShardRows, DEFAULT_TARGET_RATE,
 };
-use deckland::scenario::{DispersionParameters, Scenario};
+use deckland::scenario::Scenario;
 use std::sync::atomic::AtomicBool;
 
 /// The longitudinal aircraft (a 3-DOF campaign: no lateral columns), adverse
@@ -17,12 +19,7 @@ fn short_dispersed_scenario() -> Scenario {
     let mut scenario = Scenario::default();
     scenario.aircraft.model = PlantModel::ThreeDof;
     scenario.approach.start_range_m = 500.0;
-    scenario.dispersion = DispersionParameters {
-        start_height_offset_sd_m: 1.0,
-        airspeed_error_sd_mps: 1.0,
-        sea_state_log_sd: 0.2,
-        wind_over_deck_sd_mps: 2.0,
-    };
+    scenario.dispersion = common::every_dispersion();
     scenario
 }
 
@@ -44,15 +41,8 @@ fn shard_rows(result: &CampaignResult, seed: u64, source: &str) -> ShardRows {
         rows: result
             .records
             .iter()
-            .map(|r| {
-                let row = RunRow::new(r, &result.controller_labels);
-                // As read back from a file: owning its text.
-                RunRow {
-                    controller: row.controller.into_owned().into(),
-                    outcome: row.outcome.into_owned().into(),
-                    ..row
-                }
-            })
+            // As read back from a file: owning its text.
+            .map(|r| RunRow::new(r, &result.controller_labels).into_owned())
             .collect(),
         lateral: None,
     }

@@ -26,6 +26,21 @@ impl HardwareChoice {
     }
 }
 
+/// Prints the document `document` makes as pretty JSON when `json` is set, else what
+/// `table` prints: the two forms of a command's result on standard output.
+pub fn print_json_or<T: serde::Serialize>(
+    json: bool,
+    document: impl FnOnce() -> T,
+    table: impl FnOnce() -> anyhow::Result<()>,
+) -> anyhow::Result<()> {
+    if json {
+        outln!("{}", serde_json::to_string_pretty(&document())?)?;
+    } else {
+        table()?;
+    }
+    Ok(())
+}
+
 /// The one seed domain of every command: 0 to 2⁶³ − 1, what a scenario file can hold
 /// (TOML integers are signed 64-bit), checked by clap before anything is flown or
 /// written; `--seed 9223372036854775808` is refused naming the option.

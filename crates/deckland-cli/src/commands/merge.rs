@@ -28,7 +28,7 @@ use anyhow::{anyhow, bail, Context, Result};
 use clap::Args;
 use deckland::monte_carlo::{
     merge_shards, parse_runs_csv, CampaignSummary, Shard, ShardIdentity, ShardRows,
-    DEFAULT_TARGET_RATE, MAX_RUNS_CSV_BYTES, MAX_SUMMARY_JSON_BYTES, SHARD_SCHEME,
+    DEFAULT_TARGET_RATE, MAX_RUNS_CSV_BYTES, MAX_SUMMARY_JSON_BYTES,
 };
 use deckland::scenario::{read_text_file, MAX_SCENARIO_FILE_BYTES};
 use serde_json::Value;
@@ -171,18 +171,14 @@ pub fn run(args: &MergeArgs) -> Result<()> {
     let summary = CampaignSummary::of_merged(&merged, DEFAULT_TARGET_RATE);
     let output = OutputDir::prepare("merge", args.output.out.as_deref(), args.output.force)?;
     let (lateral, trap_sheet) = folder::lateral_statistics(merged.lateral.as_deref());
-    let report = CampaignReport {
+    let report = CampaignReport::merged(
+        scenario_file.clone(),
+        &summary,
+        started.elapsed().as_secs_f64(),
+        merged.sources.clone(),
         lateral,
         trap_sheet,
-        scenario_file: scenario_file.clone(),
-        summary: &summary,
-        threads: None,
-        elapsed_s: started.elapsed().as_secs_f64(),
-        runs_per_s: None,
-        shard: Shard::WHOLE.to_string(),
-        shard_scheme: SHARD_SCHEME,
-        merged_from: merged.sources.clone(),
-    };
+    );
     let folder = CampaignFolder {
         lateral_rows: merged.lateral.clone(),
         scenario: &scenario,

@@ -155,15 +155,11 @@ fn print_trim(args: &TrimArgs, point: &SixDofTrimPoint) -> Result<()> {
 pub fn run_trim(args: &TrimArgs) -> Result<()> {
     let aircraft = aircraft(args)?;
     let point = trim(args, &aircraft)?;
-    if args.json {
-        outln!(
-            "{}",
-            serde_json::to_string_pretty(&point.report(args.configuration))?
-        )?;
-    } else {
-        print_trim(args, &point)?;
-    }
-    Ok(())
+    super::common::print_json_or(
+        args.json,
+        || point.report(args.configuration),
+        || print_trim(args, &point),
+    )
 }
 
 fn print_matrix<const R: usize, const C: usize>(

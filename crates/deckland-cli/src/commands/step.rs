@@ -368,12 +368,11 @@ pub fn run(args: &StepArgs) -> Result<()> {
         controllers: runs.into_iter().map(|r| r.result).collect(),
         output_folder: output.path().display().to_string(),
     };
-    if args.output.json {
-        outln!("{}", serde_json::to_string_pretty(&report)?)?;
-    } else {
-        print_table(&report, &written)?;
-    }
-    Ok(())
+    crate::commands::common::print_json_or(
+        args.output.json,
+        || &report,
+        || print_table(&report, &written),
+    )
 }
 
 /// The printer of a row of [`controller_columns`]: the row's name, then a cell per

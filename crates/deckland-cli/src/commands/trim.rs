@@ -51,17 +51,15 @@ pub fn run(args: &TrimArgs) -> Result<()> {
     }
     let aircraft = args.aircraft();
     let point = args.trim(&aircraft)?;
-    if args.json {
-        outln!(
-            "{}",
-            serde_json::to_string_pretty(&point.report(args.configuration))?
-        )?;
-    } else {
-        print_trim_table(
-            args.configuration,
-            &point,
-            aircraft.engines().max_total_thrust_n(),
-        )?;
-    }
-    Ok(())
+    super::common::print_json_or(
+        args.json,
+        || point.report(args.configuration),
+        || {
+            print_trim_table(
+                args.configuration,
+                &point,
+                aircraft.engines().max_total_thrust_n(),
+            )
+        },
+    )
 }

@@ -210,6 +210,13 @@ impl Panel {
         self
     }
 
+    /// Adds the lower and upper stops of a surface at `min_deg` and `max_deg` as
+    /// reference lines named with their signed angles ("lower stop −25°").
+    pub fn surface_stops(self, min_deg: f64, max_deg: f64) -> Self {
+        self.reference_line(format!("lower stop {}°", super::signed(min_deg)), min_deg)
+            .reference_line(format!("upper stop {}°", super::signed(max_deg)), max_deg)
+    }
+
     /// Adds a limit: a reference line at `y` drawn when it lies within [`LIMIT_REACH`] of
     /// the data's span beyond the data, so that the axis spans the data; a limit farther
     /// away is named in a note instead ("… above the axis"). Say its value in `name`.

@@ -8,11 +8,15 @@ use deckland::simulation::Signals;
 
 use crate::commands::common::{Conditions, ControllerChoice};
 use crate::commands::step::flight::{ControllerResult, ControllerRun, StepFlight};
-use crate::plot::signed;
 use crate::plot::{Figure, Panel};
 
 fn series(samples: &[Signals], value: impl Fn(&Signals) -> f64) -> Vec<(f64, f64)> {
     samples.iter().map(|s| (s.time_s, value(s))).collect()
+}
+
+/// The labels of the controllers flown, in order, joined for a title: "O-PD and PID".
+fn joined_labels(choices: impl Iterator<Item = ControllerChoice>) -> String {
+    choices.map(|c| c.label()).collect::<Vec<_>>().join(" and ")
 }
 
 /// How a step response ended, in words: "settled in 1.150 s" or "not settled" (the
@@ -39,11 +43,7 @@ fn settling_text(result: &ControllerResult) -> String {
 /// settling written on the pitch panel.
 pub(crate) fn figures(runs: &[ControllerRun], flight: &StepFlight) -> Vec<(&'static str, Figure)> {
     let (conditions, seed, step_deg) = (flight.conditions, flight.seed, flight.step.step_deg);
-    let controllers = runs
-        .iter()
-        .map(|r| r.choice.label())
-        .collect::<Vec<_>>()
-        .join(" and ");
+    let controllers = joined_labels(runs.iter().map(|r| r.choice));
     let conditions_text = match conditions {
         Conditions::Ideal => "no noise or wind".to_string(),
         Conditions::Adverse => format!("noise and wind, seed {seed}"),
@@ -130,15 +130,7 @@ pub(crate) fn figures(runs: &[ControllerRun], flight: &StepFlight) -> Vec<(&'sta
             (index > 0).then_some((10, 6)),
         );
     }
-    elevator = elevator
-        .reference_line(
-            format!("lower stop {}°", signed(actuator.min_deflection_deg)),
-            actuator.min_deflection_deg,
-        )
-        .reference_line(
-            format!("upper stop {}°", signed(actuator.max_deflection_deg)),
-            actuator.max_deflection_deg,
-        );
+    elevator = elevator.surface_stops(actuator.min_deflection_deg, actuator.max_deflection_deg);
     vec![
         ("step_pitch", Figure::new().panel(pitch)),
         ("step_elevator", Figure::new().panel(elevator)),

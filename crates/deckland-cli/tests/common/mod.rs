@@ -6,6 +6,10 @@ use std::ffi::OsStr;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+/// The 10° bank step the lateral step tests fly (`step --axis roll --step-deg 10`); a
+/// test appends its own arguments.
+pub const ROLL_STEP: [&str; 5] = ["step", "--axis", "roll", "--step-deg", "10"];
+
 /// Runs the `deckland` binary built for these tests with `args`.
 pub fn deckland<I, S>(args: I) -> Output
 where
@@ -296,6 +300,23 @@ pub fn assert_success(output: &Output) {
         "{}",
         String::from_utf8_lossy(&output.stderr)
     );
+}
+
+/// A campaign too long to finish (100 000 runs of `scenario` on two threads, into
+/// `out`), as a command to spawn and stop with a signal.
+pub fn endless_campaign(scenario: &str, out: &Path) -> Command {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_deckland"));
+    command.args([
+        "campaign",
+        scenario,
+        "--runs",
+        "100000",
+        "--threads",
+        "2",
+        "--out",
+        out.to_str().expect("a UTF-8 path"),
+    ]);
+    command
 }
 
 /// Sends `signal` (`"INT"`, `"TERM"`, …) to a running `child` after `after_ms`

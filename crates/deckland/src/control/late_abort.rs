@@ -152,29 +152,14 @@ mod tests {
     /// probability as its wave-off (`wave_off/tests.rs`).
     #[test]
     fn a_heavy_sea_aborts_late_where_the_papers_sea_goes_on() {
-        use crate::environment::{DeckGeometry, ShipMotionParameters};
-        let p = WaveOffParameters {
-            heavy_sea_ramp_strike_probability: 0.05,
-            heavy_sea_late_abort_ramp_strike_probability: 0.05,
-            ..WaveOffParameters::default()
-        };
-        let deck = DeckGeometry::default();
-        let papers = ShipMotionParameters::default();
-        let heavy = ShipMotionParameters {
-            heave_rms_m: 3.0,
-            pitch_rms_deg: 2.5,
-            ..papers
-        };
+        let (papers, heavy) = crate::control::wave_off::tests::heavy_sea_limits_by_ship();
         let after_commit = LateAbortInputs {
             predicted_ramp_clearance_m: 1.67,
             ramp_clearance_sigma_m: 1.2,
             ..late()
         };
-        assert_eq!(p.for_ship(&papers, &deck).late_abort(&after_commit), None);
-        let late_abort = p
-            .for_ship(&heavy, &deck)
-            .late_abort(&after_commit)
-            .expect("late abort");
+        assert_eq!(papers.late_abort(&after_commit), None);
+        let late_abort = heavy.late_abort(&after_commit).expect("late abort");
         assert!((late_abort.value - 8.20).abs() < 0.01);
     }
 }

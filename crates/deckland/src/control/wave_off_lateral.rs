@@ -11,7 +11,7 @@
 //! P = Φ((ê − L)/σ) + Φ((−L − ê)/σ). The limits are assumptions, named here.
 
 use super::risk::normal_cdf;
-use super::wave_off::{WaveOffCriterion, WaveOffDecision, WaveOffParameters};
+use super::wave_off::{first_out_of_limits, WaveOffCriterion, WaveOffDecision, WaveOffParameters};
 
 /// The arresting gear's off-centre engagement limit (m): 6.1 m, 20 ft, an assumption
 /// (shared model §10.8).
@@ -93,15 +93,7 @@ impl LateralWaveOffLimits {
                 error_rate_mps.abs() > self.max_drift_rate_mps,
             ),
         ];
-        checks
-            .into_iter()
-            .find(|check| check.3)
-            .map(|(criterion, value, limit, _)| WaveOffDecision {
-                criterion,
-                value,
-                limit,
-                predicted_ramp_clearance_m,
-            })
+        first_out_of_limits(checks, predicted_ramp_clearance_m)
     }
 }
 

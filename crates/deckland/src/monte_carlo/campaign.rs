@@ -7,6 +7,7 @@ use std::sync::Arc;
 use rayon::prelude::*;
 
 use super::record::{RunFailure, RunRecord};
+use super::row::RunRow;
 use super::seeds::run_seed;
 use super::shard::Shard;
 use super::statistics::CampaignStatistics;
@@ -212,6 +213,15 @@ impl CampaignResult {
             .iter()
             .enumerate()
             .map(|(index, label)| CampaignStatistics::of(&self.records, index, label))
+            .collect()
+    }
+
+    /// The records as rows of `runs.csv`, in order, each controller named from
+    /// [`Self::controller_labels`].
+    pub fn rows(&self) -> Vec<RunRow<'_>> {
+        self.records
+            .iter()
+            .map(|r| RunRow::new(r, &self.controller_labels))
             .collect()
     }
 }

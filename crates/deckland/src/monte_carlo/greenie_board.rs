@@ -162,7 +162,6 @@ fn top_deviations(graded: &[&RunRow], share: impl Fn(u64) -> f64) -> Vec<Deviati
 #[cfg(test)]
 mod tests {
     use super::*;
-    use std::borrow::Cow;
 
     /// A row with `outcome`, `wire` and the grade `grade` (name, points) and `comment`.
     fn row(
@@ -172,37 +171,11 @@ mod tests {
         comment: Option<&str>,
     ) -> RunRow<'static> {
         RunRow {
-            run_index: 0,
-            controller: Cow::Borrowed("O-PD"),
-            seed: 0,
-            outcome: Cow::Borrowed(outcome),
             wire,
-            touchdown_distance_m: None,
-            touchdown_sink_rate_mps: None,
-            touchdown_pitch_deg: None,
-            touchdown_airspeed_mps: None,
-            ramp_clearance_m: None,
-            glide_path_error_rms_m: None,
-            glide_path_error_max_m: None,
-            end_time_s: None,
-            elevator_rate_rms_degps: None,
-            time_on_rate_limit_pct: None,
-            time_on_stops_pct: None,
-            elevator_travel_deg: None,
-            thrust_rate_rms_knps: None,
-            start_height_offset_dispersion_m: 0.0,
-            airspeed_dispersion_mps: 0.0,
-            sea_state_scale: 1.0,
-            wind_over_deck_dispersion_mps: 0.0,
-            reason: None,
             lso_grade: grade.map(|g| g.0.to_owned()),
             lso_points: grade.map(|g| g.1),
             lso_comment: comment.map(str::to_owned),
-            wave_off_criterion: None,
-            deck_within_limits_pct: None,
-            commit_ramp_strike_probability: None,
-            commit_hard_landing_probability: None,
-            commit_off_centre_probability: None,
+            ..RunRow::unmeasured(0, "O-PD", outcome)
         }
     }
 

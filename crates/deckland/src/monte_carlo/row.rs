@@ -300,6 +300,55 @@ impl<'a> RunRow<'a> {
         }
     }
 
+    /// A row of run `run_index` (its seed the same number) of `controller` with
+    /// `outcome` and nothing else: every optional column empty, no dispersion drawn
+    /// (sea-state factor 1).
+    pub fn unmeasured(run_index: u64, controller: &'a str, outcome: &'a str) -> Self {
+        Self {
+            run_index,
+            controller: Cow::Borrowed(controller),
+            seed: run_index,
+            outcome: Cow::Borrowed(outcome),
+            wire: None,
+            touchdown_distance_m: None,
+            touchdown_sink_rate_mps: None,
+            touchdown_pitch_deg: None,
+            touchdown_airspeed_mps: None,
+            ramp_clearance_m: None,
+            glide_path_error_rms_m: None,
+            glide_path_error_max_m: None,
+            end_time_s: None,
+            elevator_rate_rms_degps: None,
+            time_on_rate_limit_pct: None,
+            time_on_stops_pct: None,
+            elevator_travel_deg: None,
+            thrust_rate_rms_knps: None,
+            start_height_offset_dispersion_m: 0.0,
+            airspeed_dispersion_mps: 0.0,
+            sea_state_scale: 1.0,
+            wind_over_deck_dispersion_mps: 0.0,
+            reason: None,
+            lso_grade: None,
+            lso_points: None,
+            lso_comment: None,
+            wave_off_criterion: None,
+            deck_within_limits_pct: None,
+            commit_ramp_strike_probability: None,
+            commit_hard_landing_probability: None,
+            commit_off_centre_probability: None,
+        }
+    }
+
+    /// The same row owning its controller label and outcome name, as a row read back
+    /// from a file does.
+    pub fn into_owned(self) -> RunRow<'static> {
+        RunRow {
+            controller: Cow::Owned(self.controller.into_owned()),
+            outcome: Cow::Owned(self.outcome.into_owned()),
+            ..self
+        }
+    }
+
     /// Whether the run flew (its scenario could be set up): only a flown run has an end
     /// time.
     pub fn flown(&self) -> bool {

@@ -149,11 +149,7 @@ impl CampaignSummary {
     /// The summary of a campaign's (or shard's) result flown with campaign seed
     /// `campaign_seed`.
     pub fn of_result(result: &CampaignResult, campaign_seed: u64, target_rate: f64) -> Self {
-        let rows: Vec<RunRow> = result
-            .records
-            .iter()
-            .map(|r| RunRow::new(r, &result.controller_labels))
-            .collect();
+        let rows = result.rows();
         let expected = result
             .shard
             .runs_of(result.requested_runs)

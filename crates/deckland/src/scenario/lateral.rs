@@ -1,7 +1,7 @@
 //! The scenario's lateral laws (`[control.roll]`, `[control.yaw]`): what the 6-DOF
 //! aircraft's roll and yaw channels fly (docs/lateral-control.md), and their checks.
 
-use super::{HardwareSet, Scenario};
+use super::{check_observer_resolved, HardwareSet, Scenario};
 use crate::control::lateral::{LateralChannel, LateralLawParameters};
 use crate::parameters::ParameterError;
 
@@ -41,21 +41,11 @@ impl Scenario {
                 ));
             }
             if let LateralLawParameters::ObserverPd(opd) = law {
-                let observer = opd.observer;
-                let dt = self.time_step_s;
-                if observer.k3 / observer.epsilon * dt > 0.5 {
-                    return Err(ParameterError::new(
-                        &crate::parameters::join(section, "observer"),
-                        "epsilon",
-                        observer.epsilon,
-                        format_args!(
-                            "at least {:?} with k3 = {} and time_step_s = {dt}, so that the \
-                             observer (k3/ε rad/s) is resolved by the integration step",
-                            observer.k3 * dt / 0.5,
-                            observer.k3
-                        ),
-                    ));
-                }
+                check_observer_resolved(
+                    &opd.observer,
+                    &crate::parameters::join(section, "observer"),
+                    self.time_step_s,
+                )?;
             }
         }
         Ok(())

@@ -29,6 +29,29 @@ mod file;
 mod hardware;
 mod lateral;
 mod template;
+/// Refuses an O-PD's `observer` (its section `section`) that the integration step `dt`
+/// does not resolve: k3·dt/ε above 0.5, named on its `epsilon`.
+fn check_observer_resolved(
+    observer: &crate::estimation::ObserverParameters,
+    section: &str,
+    dt: f64,
+) -> Result<(), ParameterError> {
+    if observer.k3 / observer.epsilon * dt > 0.5 {
+        return Err(ParameterError::new(
+            section,
+            "epsilon",
+            observer.epsilon,
+            format_args!(
+                "at least {:?} with k3 = {} and time_step_s = {dt}, so that the \
+                 observer (k3/ε rad/s) is resolved by the integration step",
+                observer.k3 * dt / 0.5,
+                observer.k3
+            ),
+        ));
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests;
 
@@ -480,21 +503,11 @@ impl Scenario {
             ));
         }
         if let PitchControllerParameters::ObserverPd(opd) = &self.control.pitch {
-            let observer = &opd.observer;
-            let rate = observer.k3 / observer.epsilon;
-            if rate * dt > 0.5 {
-                return Err(ParameterError::new(
-                    crate::estimation::ObserverParameters::SECTION,
-                    "epsilon",
-                    observer.epsilon,
-                    format_args!(
-                        "at least {:?} with k3 = {} and time_step_s = {dt}, so that the \
-                         observer (k3/ε rad/s) is resolved by the integration step",
-                        observer.k3 * dt / 0.5,
-                        observer.k3
-                    ),
-                ));
-            }
+            check_observer_resolved(
+                &opd.observer,
+                crate::estimation::ObserverParameters::SECTION,
+                dt,
+            )?;
         }
         Ok(())
     }

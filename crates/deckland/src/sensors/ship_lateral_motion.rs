@@ -12,8 +12,7 @@
 //! first step at or after each multiple of the sample period and delivered at the first
 //! step at or after its time plus the latency.
 
-use std::collections::VecDeque;
-
+use super::data_link::{DataLink, Stamped};
 use super::ShipMotionSensingParameters;
 use crate::environment::LateralShipMotionOutputs;
 use crate::parameters::ParameterError;
@@ -75,11 +74,15 @@ pub fn lateral_ship_sensor_streams(streams: &RandomStreams) -> [NoiseStream; 6] 
 /// noise and latency.
 #[derive(Debug, Clone)]
 pub struct LateralShipMotionSensor {
-    parameters: ShipMotionSensingParameters,
     sigmas: [f64; 6],
     streams: [NoiseStream; 6],
-    last_sample: Option<i64>,
-    in_transit: VecDeque<LateralShipMotionMeasurement>,
+    link: DataLink<LateralShipMotionMeasurement>,
+}
+
+impl Stamped for LateralShipMotionMeasurement {
+    fn time_s(&self) -> f64 {
+        self.time_s
+    }
 }
 
 impl LateralShipMotionSensor {
@@ -89,13 +92,10 @@ impl LateralShipMotionSensor {
         parameters: ShipMotionSensingParameters,
         streams: &RandomStreams,
     ) -> Result<Self, ParameterError> {
-        parameters.validate()?;
         Ok(Self {
-            parameters,
             sigmas: parameters.lateral_sigmas_si(),
             streams: lateral_ship_sensor_streams(streams),
-            last_sample: None,
-            in_transit: VecDeque::with_capacity(16),
+            link: DataLink::new(parameters)?,
         })
     }
 
@@ -103,27 +103,15 @@ impl LateralShipMotionSensor {
     /// [`super::ShipMotionSensor::sample_due`]), drawing one number from each channel's
     /// stream, and puts it on the data link.
     pub fn sample(&mut self, time_s: f64, truth: &LateralShipMotionOutputs) {
-        let index = (time_s * self.parameters.sample_rate_hz + 1e-9).floor() as i64;
-        if self.last_sample == Some(index) {
-            return;
-        }
-        self.last_sample = Some(index);
-        let measurement =
-            measure_lateral_ship_motion(time_s, truth, &self.sigmas, &mut self.streams);
-        self.in_transit.push_back(measurement);
+        let (sigmas, streams) = (&self.sigmas, &mut self.streams);
+        self.link.sample(time_s, || {
+            measure_lateral_ship_motion(time_s, truth, sigmas, streams)
+        });
     }
 
     /// The oldest measurement that has arrived by `time_s`, if any; call until `None`.
     pub fn receive(&mut self, time_s: f64) -> Option<LateralShipMotionMeasurement> {
-        let arrived = self
-            .in_transit
-            .front()
-            .is_some_and(|m| m.time_s + self.parameters.latency_s <= time_s + 1e-9);
-        if arrived {
-            self.in_transit.pop_front()
-        } else {
-            None
-        }
+        self.link.receive(time_s)
     }
 }
 

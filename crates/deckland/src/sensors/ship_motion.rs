@@ -16,7 +16,7 @@
 //! at the first step at or after its time plus the latency. Each channel's noise comes
 //! from its own stream (`ship_sensor_heave`, …; docs/model.md §3.4).
 
-use std::collections::VecDeque;
+use super::data_link::{DataLink, Stamped};
 
 use serde::{Deserialize, Serialize};
 
@@ -167,11 +167,15 @@ pub struct ShipMotionMeasurement {
 /// The ship's inertial navigation and the data link: samples, noise and latency.
 #[derive(Debug, Clone)]
 pub struct ShipMotionSensor {
-    parameters: ShipMotionSensingParameters,
     sigmas: [f64; 4],
     streams: [NoiseStream; 4],
-    last_sample: Option<i64>,
-    in_transit: VecDeque<ShipMotionMeasurement>,
+    link: DataLink<ShipMotionMeasurement>,
+}
+
+impl Stamped for ShipMotionMeasurement {
+    fn time_s(&self) -> f64 {
+        self.time_s
+    }
 }
 
 impl ShipMotionSensor {
@@ -181,9 +185,7 @@ impl ShipMotionSensor {
         parameters: ShipMotionSensingParameters,
         streams: &RandomStreams,
     ) -> Result<Self, ParameterError> {
-        parameters.validate()?;
         Ok(Self {
-            parameters,
             sigmas: parameters.sigmas_si(),
             streams: [
                 stream_names::SHIP_SENSOR_HEAVE,
@@ -192,57 +194,44 @@ impl ShipMotionSensor {
                 stream_names::SHIP_SENSOR_PITCH_RATE,
             ]
             .map(|name| streams.stream(name)),
-            last_sample: None,
-            in_transit: VecDeque::with_capacity(16),
+            link: DataLink::new(parameters)?,
         })
     }
 
     /// The parameters.
     pub fn parameters(&self) -> &ShipMotionSensingParameters {
-        &self.parameters
+        self.link.parameters()
     }
 
     /// Whether a sample is due at the step from `time_s` (the first step at or after a
     /// multiple of the sample period).
     pub fn sample_due(&self, time_s: f64) -> bool {
-        // A hair above an integer counts as that integer: k·T computed as a multiple of
-        // the step may round below it.
-        let index = (time_s * self.parameters.sample_rate_hz + 1e-9).floor() as i64;
-        self.last_sample != Some(index)
+        self.link.sample_due(time_s)
     }
 
     /// Takes a sample of the true motion `truth` at `time_s` if one is due, drawing one
     /// number from each channel's stream, and puts it on the data link.
     pub fn sample(&mut self, time_s: f64, truth: &ShipMotionOutputs) {
-        if !self.sample_due(time_s) {
-            return;
-        }
-        self.last_sample = Some((time_s * self.parameters.sample_rate_hz + 1e-9).floor() as i64);
-        let mut noise = [0.0; 4];
-        for ((n, stream), sigma) in noise.iter_mut().zip(&mut self.streams).zip(self.sigmas) {
-            *n = sigma * stream.standard_normal();
-        }
-        self.in_transit.push_back(ShipMotionMeasurement {
-            time_s,
-            heave_m: truth.heave_m + noise[0],
-            heave_rate_mps: truth.heave_rate_mps + noise[1],
-            pitch_rad: truth.pitch_rad + noise[2],
-            pitch_rate_radps: truth.pitch_rate_radps + noise[3],
+        let (sigmas, streams) = (self.sigmas, &mut self.streams);
+        self.link.sample(time_s, || {
+            let mut noise = [0.0; 4];
+            for ((n, stream), sigma) in noise.iter_mut().zip(streams).zip(sigmas) {
+                *n = sigma * stream.standard_normal();
+            }
+            ShipMotionMeasurement {
+                time_s,
+                heave_m: truth.heave_m + noise[0],
+                heave_rate_mps: truth.heave_rate_mps + noise[1],
+                pitch_rad: truth.pitch_rad + noise[2],
+                pitch_rate_radps: truth.pitch_rate_radps + noise[3],
+            }
         });
     }
 
     /// The oldest measurement that has arrived by `time_s` (sent at or before
     /// `time_s` − latency), if any; call until `None` to take every arrival.
     pub fn receive(&mut self, time_s: f64) -> Option<ShipMotionMeasurement> {
-        let arrived = self
-            .in_transit
-            .front()
-            .is_some_and(|m| m.time_s + self.parameters.latency_s <= time_s + 1e-9);
-        if arrived {
-            self.in_transit.pop_front()
-        } else {
-            None
-        }
+        self.link.receive(time_s)
     }
 }
 

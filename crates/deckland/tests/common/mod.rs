@@ -6,7 +6,7 @@
 #![allow(dead_code)]
 
 use deckland::recording::SummaryRecorder;
-use deckland::scenario::Scenario;
+use deckland::scenario::{DispersionParameters, Scenario};
 use deckland::simulation::Simulation;
 
 /// The default (realistic) scenario with `seed` in the moderate sea of docs/model.md §3.6:
@@ -19,6 +19,18 @@ pub fn moderate_sea(seed: u64) -> Scenario {
     scenario.environment.ship.heave_rms_m = 1.0;
     scenario.environment.ship.pitch_rms_deg = 0.75;
     scenario
+}
+
+/// Every dispersion of a campaign on, as the campaign and shard tests disperse their
+/// short approach: start height and airspeed σ 1 m and 1 m/s, sea state log-σ 0.2, wind
+/// over deck σ 2 m/s.
+pub fn every_dispersion() -> DispersionParameters {
+    DispersionParameters {
+        start_height_offset_sd_m: 1.0,
+        airspeed_error_sd_mps: 1.0,
+        sea_state_log_sd: 0.2,
+        wind_over_deck_sd_mps: 2.0,
+    }
 }
 
 /// The sample standard deviation (m) of the touchdown distances of `scenario(seed)` for

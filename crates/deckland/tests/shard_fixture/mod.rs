@@ -50,14 +50,7 @@ pub fn flown_shards() -> Vec<ShardRows> {
                     let rows: Vec<RunRow<'static>> = result
                         .records
                         .iter()
-                        .map(|r| {
-                            let row = RunRow::new(r, &result.controller_labels);
-                            RunRow {
-                                controller: row.controller.into_owned().into(),
-                                outcome: row.outcome.into_owned().into(),
-                                ..row
-                            }
-                        })
+                        .map(|r| RunRow::new(r, &result.controller_labels).into_owned())
                         .collect();
                     // As a file carries them: through runs.csv text.
                     let rows = deckland::monte_carlo::parse_runs_csv("fixture", &rows_csv(&rows))

@@ -3,8 +3,8 @@
 //! report's writer (`report`) and the campaign's figures (`plot::campaign`) read it.
 
 use deckland::monte_carlo::{
-    CampaignStatistics, CampaignSummary, LateralRow, LateralStatistics, Proportion, RunRow,
-    TrapSheetStatistics,
+    CampaignStatistics, CampaignSummary, LateralRow, LateralStatistics, Proportion, RunRow, Shard,
+    TrapSheetStatistics, SHARD_SCHEME,
 };
 use deckland::scenario::Scenario;
 use serde::Serialize;
@@ -40,6 +40,34 @@ pub struct CampaignReport<'a> {
     /// §10.8), from the rows' trap-sheet columns; absent for a 3-DOF campaign.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub trap_sheet: Option<TrapSheetStatistics>,
+}
+
+impl<'a> CampaignReport<'a> {
+    /// The report of a campaign merged from the shard folders `merged_from` (by shard
+    /// index) in `elapsed_s`, with its statistics `summary` and, for a 3-D campaign, its
+    /// `lateral` and `trap_sheet` statistics: no threads and no rate (nothing was flown),
+    /// the whole campaign.
+    pub fn merged(
+        scenario_file: String,
+        summary: &'a CampaignSummary,
+        elapsed_s: f64,
+        merged_from: Vec<String>,
+        lateral: Option<LateralStatistics>,
+        trap_sheet: Option<TrapSheetStatistics>,
+    ) -> Self {
+        Self {
+            scenario_file,
+            summary,
+            threads: None,
+            elapsed_s,
+            runs_per_s: None,
+            shard: Shard::WHOLE.to_string(),
+            shard_scheme: SHARD_SCHEME,
+            merged_from,
+            lateral,
+            trap_sheet,
+        }
+    }
 }
 
 /// The statistics of a 3-D campaign's lateral columns (`None` for a 3-DOF campaign):

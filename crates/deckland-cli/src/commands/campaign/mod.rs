@@ -45,7 +45,7 @@ use anyhow::{bail, Context, Result};
 use clap::Args;
 use deckland::monte_carlo::{
     flies_three_dimensional_approach, run_campaign, CampaignSpec, CampaignSummary, LateralRow,
-    RunRecord, RunRow, Shard, DEFAULT_TARGET_RATE, SHARD_SCHEME,
+    RunRecord, Shard, DEFAULT_TARGET_RATE, SHARD_SCHEME,
 };
 use deckland::scenario::Mission;
 use folder::{CampaignFolder, CampaignReport};
@@ -159,11 +159,7 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
     };
     let scenario_toml =
         toml::to_string(&spec.scenario).context("cannot write the scenario as TOML")?;
-    let rows: Vec<RunRow> = result
-        .records
-        .iter()
-        .map(|r| RunRow::new(r, &result.controller_labels))
-        .collect();
+    let rows = result.rows();
     let folder = CampaignFolder {
         lateral_rows,
         scenario: &spec.scenario,

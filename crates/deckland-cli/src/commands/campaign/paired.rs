@@ -104,41 +104,13 @@ impl PairedComparison {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use std::borrow::Cow;
 
     fn row(run_index: u64, controller: &'static str, touchdown: f64, wire: u8) -> RunRow<'static> {
         RunRow {
-            run_index,
-            controller: Cow::Borrowed(controller),
-            seed: run_index,
-            outcome: Cow::Borrowed("trap"),
             wire: Some(wire),
             touchdown_distance_m: Some(touchdown),
             touchdown_sink_rate_mps: Some(3.0),
-            touchdown_pitch_deg: None,
-            touchdown_airspeed_mps: None,
-            ramp_clearance_m: None,
-            glide_path_error_rms_m: None,
-            glide_path_error_max_m: None,
-            end_time_s: None,
-            elevator_rate_rms_degps: None,
-            time_on_rate_limit_pct: None,
-            time_on_stops_pct: None,
-            elevator_travel_deg: None,
-            thrust_rate_rms_knps: None,
-            start_height_offset_dispersion_m: 0.0,
-            airspeed_dispersion_mps: 0.0,
-            sea_state_scale: 1.0,
-            wind_over_deck_dispersion_mps: 0.0,
-            reason: None,
-            lso_grade: None,
-            lso_points: None,
-            lso_comment: None,
-            wave_off_criterion: None,
-            deck_within_limits_pct: None,
-            commit_ramp_strike_probability: None,
-            commit_hard_landing_probability: None,
-            commit_off_centre_probability: None,
+            ..RunRow::unmeasured(run_index, controller, "trap")
         }
     }
 

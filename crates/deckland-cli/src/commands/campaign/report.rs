@@ -59,22 +59,16 @@ pub fn write_folder(folder: &CampaignFolder, output: &OutputDir) -> Result<()> {
     Ok(())
 }
 
+/// The columns of a distribution's statistics, in the order the tables' rows give them.
+const STATISTIC_COLUMNS: [&str; 8] = ["count", "mean", "sd", "min", "p5", "p50", "p95", "max"];
+
+/// A table's header: the columns `first`, the statistics' columns, then `last`.
+fn statistics_header<'a>(first: &[&'a str], last: &[&'a str]) -> Vec<&'a str> {
+    [first, &STATISTIC_COLUMNS[..], last].concat()
+}
+
 /// The outcomes after which the aircraft is intact, aboard or flying: a trap, a bolter or a
 /// wave-off (docs/model.md §9), as a proportion of the runs.
-/// The columns of a table of distributions, one row per quantity and controller.
-const DISTRIBUTION_HEADER: [&str; 10] = [
-    "quantity",
-    "controller",
-    "count",
-    "mean",
-    "sd",
-    "min",
-    "p5",
-    "p50",
-    "p95",
-    "max",
-];
-
 fn safe(s: &CampaignStatistics) -> Proportion {
     Proportion::new(s.boarding.count + s.bolter.count + s.wave_off.count, s.runs)
 }
@@ -278,6 +272,7 @@ fn html_report(
         header.push(format!("{}: 95 % interval", s.controller));
     }
     let header: Vec<&str> = header.iter().map(String::as_str).collect();
+    let distribution_header = statistics_header(&["quantity", "controller"], &[]);
     let outcomes = page.section("Outcomes");
     outcomes.paragraph(format!(
         "Intervals: the {}. The classes are exclusive and add up to the runs; the safe \
@@ -312,7 +307,7 @@ fn html_report(
             "Over the runs that touched the deck; percentiles by {}.",
             report.summary.percentiles
         ))
-        .table(&DISTRIBUTION_HEADER, distribution_rows(stats))
+        .table(&distribution_header, distribution_rows(stats))
         .table(
             &["controller", "wire 1", "wire 2", "wire 3", "wire 4"],
             wires,
@@ -329,7 +324,7 @@ fn html_report(
             "Over the runs flown, per run; percentiles by {}.",
             report.summary.percentiles
         ))
-        .table(&DISTRIBUTION_HEADER, actuator_rows(stats));
+        .table(&distribution_header, actuator_rows(stats));
     if let Some(paired) = paired {
         page.section("Paired differences")
             .paragraph(format!(
@@ -340,18 +335,7 @@ fn html_report(
                 paired.second, paired.first, paired.pairs, paired.different_outcomes
             ))
             .table(
-                &[
-                    "difference",
-                    "count",
-                    "mean",
-                    "sd",
-                    "min",
-                    "p5",
-                    "p50",
-                    "p95",
-                    "max",
-                    "largest |difference|",
-                ],
+                &statistics_header(&["difference"], &["largest |difference|"]),
                 paired_rows(paired),
             );
     }

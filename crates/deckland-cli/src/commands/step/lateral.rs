@@ -119,12 +119,11 @@ pub(crate) fn run(args: &StepArgs, axis: LateralAxis) -> Result<()> {
         report: LateralStepReport::new(&setup, &step, runs.into_iter().map(|r| r.result).collect()),
         output_folder: output.path().display().to_string(),
     };
-    if args.output.json {
-        outln!("{}", serde_json::to_string_pretty(&report)?)?;
-    } else {
-        print_table(&report, &written)?;
-    }
-    Ok(())
+    crate::commands::common::print_json_or(
+        args.output.json,
+        || &report,
+        || print_table(&report, &written),
+    )
 }
 
 /// `roll` or `yaw`.

@@ -2,7 +2,6 @@
 
 use deckland::scenario::Scenario;
 
-use crate::plot::signed;
 use deckland::simulation::{SignalId, Signals};
 
 use super::{series, Shown, TIME};
@@ -23,14 +22,7 @@ pub(super) fn figure(samples: &[Signals], scenario: &Scenario, title: &str) -> F
                 "elevator",
                 series(samples, SignalId::Elevator, Shown::Degrees),
             )
-            .reference_line(
-                format!("lower stop {}°", signed(actuator.min_deflection_deg)),
-                actuator.min_deflection_deg,
-            )
-            .reference_line(
-                format!("upper stop {}°", signed(actuator.max_deflection_deg)),
-                actuator.max_deflection_deg,
-            ),
+            .surface_stops(actuator.min_deflection_deg, actuator.max_deflection_deg),
         )
         .panel(
             Panel::new("Thrust, both engines", TIME, "thrust (kN)")

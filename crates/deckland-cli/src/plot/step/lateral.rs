@@ -4,6 +4,7 @@ use deckland::experiments::{
     LateralAxis, LateralSample, LateralStep, LATERAL_SETTLING_BAND_FRACTION,
 };
 
+use super::joined_labels;
 use crate::commands::common::Conditions;
 use crate::commands::step::flight::LateralRun;
 use crate::plot::{Figure, Panel};
@@ -18,11 +19,7 @@ pub(crate) fn lateral_figures(
     step: &LateralStep,
     conditions: Conditions,
 ) -> Vec<(&'static str, Figure)> {
-    let controllers = runs
-        .iter()
-        .map(|r| r.choice.label())
-        .collect::<Vec<_>>()
-        .join(" and ");
+    let controllers = joined_labels(runs.iter().map(|r| r.choice));
     let conditions_text = match conditions {
         Conditions::Ideal => "no noise or turbulence".to_string(),
         Conditions::Adverse => format!("lateral turbulence and sensor noise, seed {}", step.seed),

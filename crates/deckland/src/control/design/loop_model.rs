@@ -302,14 +302,7 @@ pub fn margins_of(omegas: &[f64], gains: &[Complex<f64>]) -> Margins {
 mod tests {
     use super::*;
 
-    const PLANT: AxisPlantDerivatives = AxisPlantDerivatives {
-        rate_damping_per_s: -0.1891,
-        control_power_per_s2: -1.9675,
-    };
-    const ACTUATOR: LinearActuator = LinearActuator {
-        natural_frequency_radps: 30.74,
-        damping_ratio: 0.509,
-    };
+    use crate::control::design::tests::{ACTUATOR, PLANT};
 
     /// A law without states, the ideal PD u = (K_P·(r − y) − K_D·q)/M_δ, gives
     /// L(s) = (K_P + K_D s)·A(s)/(s(s − M_q)), A the actuator. At ω = 10 rad/s with

@@ -4,6 +4,19 @@ use super::*;
 use crate::aircraft::ElevatorActuatorParameters;
 use crate::sensors::PitchNoiseParameters;
 
+/// The pitch plant at the approach trim of the landing configuration
+/// (`deckland linearize`).
+pub(crate) const PLANT: AxisPlantDerivatives = AxisPlantDerivatives {
+    rate_damping_per_s: -0.1891,
+    control_power_per_s2: -1.9675,
+};
+
+/// The default elevator actuator as a linear second-order lag.
+pub(crate) const ACTUATOR: LinearActuator = LinearActuator {
+    natural_frequency_radps: 30.74,
+    damping_ratio: 0.509,
+};
+
 /// The approach trim of the landing configuration (`deckland linearize`).
 pub(crate) fn hardware(rate_limit_degps: Option<f64>) -> AxisHardware {
     AxisHardware {
@@ -13,10 +26,7 @@ pub(crate) fn hardware(rate_limit_degps: Option<f64>) -> AxisHardware {
         },
         actuator_keys: ActuatorKeys::ELEVATOR,
         surface_trim_rad: (-8.17f64).to_radians(),
-        plant: AxisPlantDerivatives {
-            rate_damping_per_s: -0.1891,
-            control_power_per_s2: -1.9675,
-        },
+        plant: PLANT,
         coupling: Some(AngleOfAttackCoupling {
             dalphadot_dalpha_per_s: -0.526_839,
             dalphadot_delevator_per_s: -0.066_65,

@@ -205,22 +205,40 @@ pub fn full_lateral_margins(
             roll_law.measurement_response(s),
             yaw_law.measurement_response(s),
         );
-        let mut h = [[Complex::from(0.0); 2]; 2];
-        for input in 0..2 {
-            for k in 0..3 {
-                h[0][input] += ka[k] * g[(k, input)] * delay;
-                h[1][input] += kr[k] * g[(3 + k, input)] * delay;
-            }
-        }
-        let one = Complex::from(1.0);
-        roll.push(-(h[0][0] + h[0][1] * h[1][0] / (one - h[1][1])));
-        yaw.push(-(h[1][1] + h[1][0] * h[0][1] / (one - h[0][0])));
+        let (roll_gain, yaw_gain) = cross_closed_loop_gains(&g, &ka, &kr, delay);
+        roll.push(roll_gain);
+        yaw.push(yaw_gain);
     }
     LateralMargins {
         roll: margins_of(&omegas, &roll),
         yaw: margins_of(&omegas, &yaw),
         closed_loop_max_real_part: closed_loop_max_real_part(&a, &b, &m, roll_law, yaw_law),
     }
+}
+
+/// The loop gains at one frequency at the aileron and at the rudder command, each with
+/// the other channel closed (L_a and L_r of [`full_lateral_margins`]): from the plant's
+/// response `g` from the two surface commands to the laws' six measurements
+/// (φ, p, δa, β, −r, δr), the roll and yaw laws' responses `ka` and `kr` to their three
+/// measurements, and the command delay's factor `delay` (e^{−jωτ}).
+pub fn cross_closed_loop_gains(
+    g: &SMatrix<Complex<f64>, 6, 2>,
+    ka: &[Complex<f64>; 3],
+    kr: &[Complex<f64>; 3],
+    delay: Complex<f64>,
+) -> (Complex<f64>, Complex<f64>) {
+    let mut h = [[Complex::from(0.0); 2]; 2];
+    for input in 0..2 {
+        for k in 0..3 {
+            h[0][input] += ka[k] * g[(k, input)] * delay;
+            h[1][input] += kr[k] * g[(3 + k, input)] * delay;
+        }
+    }
+    let one = Complex::from(1.0);
+    (
+        -(h[0][0] + h[0][1] * h[1][0] / (one - h[1][1])),
+        -(h[1][1] + h[1][0] * h[0][1] / (one - h[0][0])),
+    )
 }
 
 /// The closed lateral loop without the delay, in state space (8 plant and actuator

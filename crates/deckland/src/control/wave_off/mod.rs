@@ -584,15 +584,7 @@ impl WaveOffParameters {
                 displacement.abs() > self.max_landing_point_displacement_m,
             ),
         ];
-        checks
-            .into_iter()
-            .find(|check| check.3)
-            .map(|(criterion, value, limit, _)| WaveOffDecision {
-                criterion,
-                value,
-                limit,
-                predicted_ramp_clearance_m: clearance,
-            })
+        first_out_of_limits(checks, clearance)
     }
 
     /// What the criteria of [`Self::decide`] compare with their limits, on `inputs`.
@@ -699,10 +691,28 @@ pub struct CommitForecast {
     pub off_centre_probability: Option<f64>,
 }
 
+/// The decision of the first of `checks` — each a criterion, its value, its limit and
+/// whether the value is out of the limit — that is out of its limit, carrying
+/// `predicted_ramp_clearance_m`; `None` if every check is within its limit.
+pub(in crate::control) fn first_out_of_limits<const N: usize>(
+    checks: [(WaveOffCriterion, f64, f64, bool); N],
+    predicted_ramp_clearance_m: f64,
+) -> Option<WaveOffDecision> {
+    checks
+        .into_iter()
+        .find(|check| check.3)
+        .map(|(criterion, value, limit, _)| WaveOffDecision {
+            criterion,
+            value,
+            limit,
+            predicted_ramp_clearance_m,
+        })
+}
+
 mod heavy_sea;
 mod recovery;
 
 pub use recovery::{FoulDeckModel, RecoveryLimits};
 
 #[cfg(test)]
-mod tests;
+pub(in crate::control) mod tests;

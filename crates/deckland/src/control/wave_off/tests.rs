@@ -282,13 +282,10 @@ fn the_heavy_sea_limits_move_in_linearly_with_the_sea_state() {
     assert_eq!(step.for_sea(5.0 + 1e-9).max_ramp_strike_probability, 0.1);
 }
 
-/// The effect: the hook 2.0 m low on a 0.5-m σ_c, a predicted clearance of 1.67 m (as
-/// in `the_probabilities_call_the_wave_off_with_their_value_in_percent`), Φ(−1.67/σ)
-/// with σ = 1.2 m: Φ(−1.392) = 8.20 % (normal table). Below the ordinary 20 %, the paper's
-/// sea goes on; with a heavy-sea limit of 5 % the heavy sea's ship (3.0 m, 2.5°) waves
-/// off on it (its late abort: `late_abort.rs`).
-#[test]
-fn a_heavy_sea_waves_off_where_the_papers_sea_goes_on() {
+/// Heavy-sea limits of 5 % for the wave-off and the late abort, as set for the paper's
+/// sea (2.0 m, 1.5°) and for the heavy sea's ship (3.0 m, 2.5°) on the default deck: the
+/// pair the heavy-sea tests here and in `late_abort.rs` compare.
+pub(in crate::control) fn heavy_sea_limits_by_ship() -> (WaveOffParameters, WaveOffParameters) {
     use crate::environment::{DeckGeometry, ShipMotionParameters};
     let p = WaveOffParameters {
         heavy_sea_ramp_strike_probability: 0.05,
@@ -302,13 +299,24 @@ fn a_heavy_sea_waves_off_where_the_papers_sea_goes_on() {
         pitch_rms_deg: 2.5,
         ..papers
     };
+    (p.for_ship(&papers, &deck), p.for_ship(&heavy, &deck))
+}
+
+/// The effect: the hook 2.0 m low on a 0.5-m σ_c, a predicted clearance of 1.67 m (as
+/// in `the_probabilities_call_the_wave_off_with_their_value_in_percent`), Φ(−1.67/σ)
+/// with σ = 1.2 m: Φ(−1.392) = 8.20 % (normal table). Below the ordinary 20 %, the paper's
+/// sea goes on; with a heavy-sea limit of 5 % the heavy sea's ship (3.0 m, 2.5°) waves
+/// off on it (its late abort: `late_abort.rs`).
+#[test]
+fn a_heavy_sea_waves_off_where_the_papers_sea_goes_on() {
+    let (papers, heavy) = heavy_sea_limits_by_ship();
     let inputs = WaveOffInputs {
         glide_path_error_m: 2.0,
         ramp_clearance_sigma_m: 1.2,
         ..calm()
     };
-    assert_eq!(p.for_ship(&papers, &deck).decide(&inputs), None);
-    let d = p.for_ship(&heavy, &deck).decide(&inputs).expect("wave-off");
+    assert_eq!(papers.decide(&inputs), None);
+    let d = heavy.decide(&inputs).expect("wave-off");
     assert_eq!(d.criterion, WaveOffCriterion::RampStrikeProbability);
     assert!((d.value - 8.20).abs() < 0.01, "{}", d.value);
     assert_eq!(d.limit, 5.0);

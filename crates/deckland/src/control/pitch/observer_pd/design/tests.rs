@@ -5,23 +5,11 @@ use nalgebra::Complex;
 
 use super::*;
 use crate::control::design::loop_model::{LoopInput, LoopOutput, AxisLoopModel};
-use crate::control::design::{
-    check_tuning, LinearActuator, AxisPlantDerivatives,
-    TuningProblem,
-};
+use crate::control::design::{check_tuning, TuningProblem};
 use crate::control::pitch::pid::{linear_pid, PidParameters};
 use crate::control::LinearLaw;
 
-const PLANT: AxisPlantDerivatives = AxisPlantDerivatives {
-    rate_damping_per_s: -0.1891,
-    control_power_per_s2: -1.9675,
-};
-const ACTUATOR: LinearActuator = LinearActuator {
-    natural_frequency_radps: 30.74,
-    damping_ratio: 0.509,
-};
-
-use crate::control::design::tests::{hardware, noise};
+use crate::control::design::tests::{hardware, noise, ACTUATOR, PLANT};
 
 /// With a very fast observer the O-PD tends to its ideal form: L(s) = (K_P + K_D s)·
 /// A(s)/(s(s − M_q)), A the actuator. At ω = 10 rad/s with K_P = 16, K_D = 7.81:
