@@ -230,21 +230,6 @@ impl Aircraft {
         self.air_data(state.u_mps, state.w_mps, state.theta_rad, wind)
     }
 
-    #[inline]
-    fn body_accelerations(
-        &self,
-        u: f64,
-        w: f64,
-        q: f64,
-        theta: f64,
-        inputs: &AirframeInputs,
-        wind: &Wind,
-    ) -> BodyAccelerations {
-        let (sin_t, cos_t) = theta.sin_cos();
-        let air = self.air_data_trig(u, w, sin_t, cos_t, wind);
-        self.body_accelerations_from(u, w, q, sin_t, cos_t, inputs, &air, 0.0)
-    }
-
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
     fn body_accelerations_from(
@@ -293,7 +278,9 @@ impl Aircraft {
         inputs: &AirframeInputs,
         wind: &Wind,
     ) -> (f64, f64, f64) {
-        let a = self.body_accelerations(u, w, q, theta, inputs, wind);
+        let (sin_t, cos_t) = theta.sin_cos();
+        let air = self.air_data_trig(u, w, sin_t, cos_t, wind);
+        let a = self.body_accelerations_from(u, w, q, sin_t, cos_t, inputs, &air, 0.0);
         (a.u_dot, a.w_dot, a.q_dot)
     }
 

@@ -17,7 +17,7 @@
 //! made by the equations of motion. The numbers are data ([`AerodynamicData`]).
 
 use crate::aircraft::aerodynamic_data::MAX_POLYNOMIAL_TERMS;
-use crate::aircraft::AerodynamicData;
+use crate::aircraft::{AerodynamicData, LateralCoefficient};
 
 /// The lateral stability and control derivatives at one angle of attack (per rad).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -66,21 +66,12 @@ impl LateralDerivatives {
     #[inline(always)]
     pub fn fa18_at(alpha: f64) -> Self {
         const FA18: &AerodynamicData = &AerodynamicData::FA18;
-        let (l, n, y) = (&FA18.rolling_moment, &FA18.yawing_moment, &FA18.side_force);
+        let [l_beta, l_aileron, l_rudder, l_p, l_r] = by_horner(&FA18.rolling_moment, alpha);
+        let [n_beta, n_aileron, n_rudder, n_p, n_r] = by_horner(&FA18.yawing_moment, alpha);
+        let [y_beta, y_aileron, y_rudder, ..] = by_horner(&FA18.side_force, alpha);
         Self::from_values([
-            l.beta.horner(alpha),
-            l.aileron.horner(alpha),
-            l.rudder.horner(alpha),
-            l.roll_rate.horner(alpha),
-            l.yaw_rate.horner(alpha),
-            n.beta.horner(alpha),
-            n.aileron.horner(alpha),
-            n.rudder.horner(alpha),
-            n.roll_rate.horner(alpha),
-            n.yaw_rate.horner(alpha),
-            y.beta.horner(alpha),
-            y.aileron.horner(alpha),
-            y.rudder.horner(alpha),
+            l_beta, l_aileron, l_rudder, l_p, l_r, n_beta, n_aileron, n_rudder, n_p, n_r, y_beta,
+            y_aileron, y_rudder,
         ])
     }
 
@@ -155,6 +146,20 @@ impl LateralTable {
         }
         LateralDerivatives::from_values(std::array::from_fn(|i| sum[i]))
     }
+}
+
+/// A lateral coefficient's five polynomials at `alpha` (rad) by Horner's rule over
+/// their given terms: β, δa, δr, p̂, r̂.
+#[inline(always)]
+fn by_horner(coefficient: &LateralCoefficient, alpha: f64) -> [f64; 5] {
+    let c = coefficient;
+    [
+        c.beta.horner(alpha),
+        c.aileron.horner(alpha),
+        c.rudder.horner(alpha),
+        c.roll_rate.horner(alpha),
+        c.yaw_rate.horner(alpha),
+    ]
 }
 
 /// Rolling-, yawing-moment and side-force coefficients (–), about the data's reference

@@ -361,6 +361,25 @@ pub struct DeckForecast {
     pub roll_rad: f64,
 }
 
+#[cfg(test)]
+impl DeckForecast {
+    /// A still deck's forecast: the landing point and the ramp at these heights (m),
+    /// nothing moving and nothing uncertain (the tests' fixture).
+    pub(crate) fn still(landing_point_height_m: f64, ramp_height_m: f64) -> Self {
+        Self {
+            ramp_height_m,
+            landing_point_climb_rate_mps: 0.0,
+            landing_point_height_m,
+            pitch_rad: 0.0,
+            ramp_climb_rate_mps: 0.0,
+            ramp_height_sigma_m: 0.0,
+            landing_point_climb_rate_sigma_mps: 0.0,
+            ramp_update_response_m2: [0.0; 2],
+            roll_rad: 0.0,
+        }
+    }
+}
+
 /// The generator's output for the hook.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PathReference {

@@ -13,17 +13,7 @@ fn calm() -> WaveOffInputs {
         mean_landing_point_height_m: 20.0,
         ramp_clearance_sigma_m: 0.5,
         ramp_clearance_gain_m: 0.0,
-        forecast: DeckForecast {
-            ramp_height_m: 20.0,
-            landing_point_climb_rate_mps: 0.0,
-            landing_point_height_m: 20.0,
-            pitch_rad: 0.0,
-            ramp_climb_rate_mps: 0.0,
-            ramp_height_sigma_m: 0.0,
-            landing_point_climb_rate_sigma_mps: 0.0,
-            ramp_update_response_m2: [0.0; 2],
-            roll_rad: 0.0,
-        },
+        forecast: DeckForecast::still(20.0, 20.0),
     }
 }
 

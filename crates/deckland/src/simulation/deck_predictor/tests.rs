@@ -5,17 +5,7 @@ use super::*;
 use crate::control::FlightPathParameters;
 
 fn forecast(landing_point_height_m: f64, ramp_height_m: f64) -> DeckForecast {
-    DeckForecast {
-        ramp_height_m,
-        landing_point_climb_rate_mps: 0.0,
-        landing_point_height_m,
-        pitch_rad: 0.0,
-        ramp_climb_rate_mps: 0.0,
-        ramp_height_sigma_m: 0.0,
-        landing_point_climb_rate_sigma_mps: 0.0,
-        ramp_update_response_m2: [0.0; 2],
-        roll_rad: 0.0,
-    }
+    DeckForecast::still(landing_point_height_m, ramp_height_m)
 }
 
 /// The default path with a fixed 2.5-m margin (no risk-aware clearance).
