@@ -3,8 +3,9 @@
 //! wind), shared by their 3-DOF and 6-DOF variants.
 
 use anyhow::{bail, Context, Result};
-use clap::{Args, ValueEnum};
-use deckland::aircraft::{AerodynamicConfiguration, Aircraft, ConfigurationName};
+use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
+use clap::Args;
+use deckland::aircraft::{AerodynamicConfiguration, Aircraft, ConfigurationName, PlantModel};
 use deckland::analysis::{trim, TrimError, TrimPoint, TrimRequest};
 
 /// Options shared by `trim` and `linearize`.
@@ -35,8 +36,8 @@ pub struct TrimArgs {
     pub configuration: ConfigurationName,
     /// Aircraft model: the paper's longitudinal 3-DOF model, or the 6-DOF model with
     /// the lateral-directional axes (docs/six-dof.md).
-    #[arg(long, value_enum, default_value = "3dof")]
-    pub model: AircraftModel,
+    #[arg(long, default_value = "3dof", value_parser = plant_model_parser())]
+    pub model: PlantModel,
     /// Sideslip β (deg), positive with the relative wind from the right; 6-DOF only.
     #[arg(
         long = "sideslip",
@@ -59,21 +60,19 @@ pub struct TrimArgs {
     pub json: bool,
 }
 
-/// The aircraft model `trim` and `linearize` work on.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum AircraftModel {
-    /// The longitudinal model of the paper (u, w, q, θ).
-    #[value(name = "3dof")]
-    ThreeDof,
-    /// The rigid-body 6-DOF model with the lateral-directional axes.
-    #[value(name = "6dof")]
-    SixDof,
+/// The `--model` names of the library's plant models ([`PlantModel::name`]), each with
+/// its one-line summary in the help.
+fn plant_model_parser() -> impl TypedValueParser<Value = PlantModel> {
+    let values =
+        PlantModel::ALL.map(|model| PossibleValue::new(model.name()).help(model.summary()));
+    PossibleValuesParser::new(values)
+        .try_map(|name| PlantModel::from_name(&name).ok_or("not a plant model"))
 }
 
 impl TrimArgs {
     /// Refuses the lateral options with the 3-DOF model, which has no lateral axes.
     pub fn check_model_options(&self) -> Result<()> {
-        if self.model == AircraftModel::ThreeDof {
+        if self.model == PlantModel::ThreeDof {
             if self.sideslip_deg != 0.0 {
                 bail!(
                     "--sideslip {:?} needs --model 6dof: the 3-DOF model has no sideslip",

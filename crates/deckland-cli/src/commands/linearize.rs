@@ -1,10 +1,11 @@
 //! `deckland linearize`: the paper's Eq. (14) linear model about a trim point, its
 //! eigenvalues and modes.
 
-use super::flight_condition::{AircraftModel, TrimArgs};
+use super::flight_condition::TrimArgs;
 use super::trim::print_trim_table;
 use crate::output::{fixed, rows};
 use anyhow::Result;
+use deckland::aircraft::PlantModel;
 use deckland::aircraft::TrimReport;
 use deckland::analysis::{
     identify_modes, linearize, LinearModel, Mode, INPUT_NAMES, INPUT_UNITS, STATE_NAMES,
@@ -117,7 +118,7 @@ fn print_table(
 /// Runs `deckland linearize`.
 pub fn run(args: &TrimArgs) -> Result<()> {
     args.check_model_options()?;
-    if args.model == AircraftModel::SixDof {
+    if args.model == PlantModel::SixDof {
         return super::six_dof::run_linearize(args);
     }
     let aircraft = args.aircraft();

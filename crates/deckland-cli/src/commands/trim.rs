@@ -4,7 +4,8 @@ use anyhow::Result;
 use deckland::aircraft::ConfigurationName;
 use deckland::analysis::TrimPoint;
 
-use super::flight_condition::{AircraftModel, TrimArgs};
+use super::flight_condition::TrimArgs;
+use deckland::aircraft::PlantModel;
 
 /// Prints a trim point as a readable table.
 pub fn print_trim_table(
@@ -46,7 +47,7 @@ pub fn print_trim_table(
 /// Runs `deckland trim`.
 pub fn run(args: &TrimArgs) -> Result<()> {
     args.check_model_options()?;
-    if args.model == AircraftModel::SixDof {
+    if args.model == PlantModel::SixDof {
         return super::six_dof::run_trim(args);
     }
     let aircraft = args.aircraft();

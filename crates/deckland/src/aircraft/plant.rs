@@ -33,11 +33,27 @@ pub enum PlantModel {
 }
 
 impl PlantModel {
-    /// The model's name in a scenario file.
+    /// Every model, in the order of their names.
+    pub const ALL: [Self; 2] = [Self::ThreeDof, Self::SixDof];
+
+    /// The model's name in a scenario file and on the command line.
     pub fn name(self) -> &'static str {
         match self {
             Self::ThreeDof => "3dof",
             Self::SixDof => "6dof",
+        }
+    }
+
+    /// The model called `name` ([`PlantModel::name`]), if any.
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|model| model.name() == name)
+    }
+
+    /// One line on what the model is (for a command's help).
+    pub fn summary(self) -> &'static str {
+        match self {
+            Self::ThreeDof => "The longitudinal model of the paper (u, w, q, θ)",
+            Self::SixDof => "The rigid-body 6-DOF model with the lateral-directional axes",
         }
     }
 }
@@ -357,5 +373,19 @@ mod tests {
             .expect("an unknown model is refused")
             .to_string();
         assert!(error.contains("4dof") && error.contains("6dof"), "{error}");
+    }
+
+    /// The command line's names are the scenario file's: each model's name reads back
+    /// as that model, with serde as with `from_name`, and no other name does.
+    #[test]
+    fn model_names_read_back() {
+        for model in PlantModel::ALL {
+            assert_eq!(PlantModel::from_name(model.name()), Some(model));
+            let quoted: PlantModel =
+                serde_json::from_str(&format!("\"{}\"", model.name())).expect("a model name");
+            assert_eq!(quoted, model);
+        }
+        assert_eq!(PlantModel::from_name("4dof"), None);
+        assert_eq!(PlantModel::from_name("6DOF"), None);
     }
 }
