@@ -14,8 +14,8 @@ use super::commit::CommitPoint;
 use super::deck_predictor::BuiltDeckPredictor;
 use super::flight_computer::FlightComputer;
 pub use super::held::{HeldInputs, StepStreams};
-use super::lateral::pose::DeckView3d;
 use super::lateral::LateralLoop;
+use super::lateral_part::{LateralHold, LateralPart, ShipParts};
 pub use super::layout::LoopLayout;
 use super::outer_loop_signals::{OuterLoopInputs, OuterLoopOutputs};
 use super::outer_loops::OuterLoops;
@@ -27,8 +27,7 @@ use crate::aircraft::{
 use crate::control::pitch::{AxisLaw, BuiltPitchLaw, ElevatorSaturation, PitchLawInputs};
 use crate::control::{DirectLiftParameters, SpeedController, WaveOffParameters};
 use crate::environment::{
-    DeckGeometry, EarthVelocity, LateralShipMotionState, ShipMotion, ShipMotionState, ShipPose,
-    ShipPoseRate, WindModel,
+    DeckGeometry, ShipMotion, ShipMotionState, ShipPose, ShipPoseRate, WindModel,
 };
 use crate::integration::VectorSystem;
 use crate::random::Reseed;
@@ -78,8 +77,9 @@ pub struct ClosedLoop {
     pub(crate) commit: CommitPoint,
 }
 
-/// One evaluation of the loop, as work with its plant ([`WithPlant`]): the blocks'
-/// instantiation for the plant, with or without users' blocks and the 3-D approach's.
+/// One evaluation of the loop, as work with its plant ([`WithPlant`]) and then with its
+/// lateral part ([`WithLateralPart`]): the blocks' instantiation for the plant and the
+/// lateral part, with or without users' blocks.
 struct Evaluation<'a, T> {
     system: &'a ClosedLoop,
     t: f64,
@@ -94,24 +94,44 @@ impl<T: Taps> WithPlant for Evaluation<'_, T> {
 
     #[inline(always)]
     fn with<P: Plant>(self, plant: &P) -> Signals {
-        let Self {
+        self.system
+            .with_lateral_part(EvaluationWith { work: self, plant })
+    }
+}
+
+/// An evaluation with its plant, as work with the loop's lateral part.
+struct EvaluationWith<'a, T, P> {
+    work: Evaluation<'a, T>,
+    plant: &'a P,
+}
+
+impl<T: Taps, P: Plant> WithLateralPart for EvaluationWith<'_, T, P> {
+    type Output = Signals;
+
+    #[inline(always)]
+    fn with<L: LateralPart>(self, lateral: &L) -> Signals {
+        let Evaluation {
             system,
             t,
             x,
             held,
             taps,
             rate,
-        } = self;
-        match (system.user_blocks.is_empty(), system.lateral.is_some()) {
-            (true, false) => {
-                system.evaluate_blocks::<T, P, false, false>(plant, t, x, held, taps, rate)
-            }
-            (true, true) => {
-                system.evaluate_blocks::<T, P, false, true>(plant, t, x, held, taps, rate)
-            }
-            (false, _) => system.evaluate_blocks::<T, P, true, true>(plant, t, x, held, taps, rate),
+        } = self.work;
+        let plant = self.plant;
+        if system.user_blocks.is_empty() {
+            system.evaluate_blocks::<T, P, L, false>(plant, lateral, t, x, held, taps, rate)
+        } else {
+            system.evaluate_blocks::<T, P, L, true>(plant, lateral, t, x, held, taps, rate)
         }
     }
+}
+
+/// Work done with the loop's lateral part, instantiated for each
+/// ([`ClosedLoop::with_lateral_part`]).
+pub(crate) trait WithLateralPart {
+    type Output;
+    fn with<L: LateralPart>(self, lateral: &L) -> Self::Output;
 }
 
 impl Reseed for ClosedLoop {
@@ -184,19 +204,45 @@ impl ClosedLoop {
         ShipMotionState::from_array(&self.layout.ship.array(x))
     }
 
-    /// The ship's pose and its rate at time `t` for the ship state in `x`.
+    /// The ship's pose and its rate at time `t` for the ship state in `x` (in the 3-D
+    /// approach, its equivalent longitudinal pose).
     #[inline]
     pub fn ship_pose(&self, x: &[f64], t: f64) -> (ShipPose, ShipPoseRate) {
-        let ship = self.ship_state(x);
-        if let Some(lateral) = &self.lateral {
-            let lateral_state =
-                LateralShipMotionState::from_array(&self.layout.ship_lateral.array(x));
-            return lateral.longitudinal_pose(&self.ship, &self.deck, &ship, &lateral_state, t);
+        struct Pose<'a> {
+            parts: ShipParts<'a>,
+            x: &'a [f64],
+            t: f64,
         }
-        (
-            self.ship.pose(&ship, self.ship_initial_x_m, t),
-            self.ship.pose_rate(&ship),
-        )
+        impl WithLateralPart for Pose<'_> {
+            type Output = (ShipPose, ShipPoseRate);
+            #[inline(always)]
+            fn with<L: LateralPart>(self, lateral: &L) -> Self::Output {
+                lateral.ship_pose(self.parts, self.x, self.t)
+            }
+        }
+        let parts = self.ship_parts();
+        self.with_lateral_part(Pose { parts, x, t })
+    }
+
+    /// `work` done with the loop's lateral part: the 3-D approach's, or the lateral hold
+    /// of a loop without it. The one place the loop chooses by it.
+    #[inline(always)]
+    fn with_lateral_part<W: WithLateralPart>(&self, work: W) -> W::Output {
+        match &self.lateral {
+            Some(lateral) => work.with(lateral),
+            None => work.with(&LateralHold),
+        }
+    }
+
+    /// What the lateral part reads of the loop ([`ShipParts`]).
+    #[inline(always)]
+    fn ship_parts(&self) -> ShipParts<'_> {
+        ShipParts {
+            ship: &self.ship,
+            deck: &self.deck,
+            layout: &self.layout,
+            initial_x_m: self.ship_initial_x_m,
+        }
     }
 
     /// Writes the derivative of the loop at (t, x) with the held inputs into `rate` and
@@ -250,14 +296,16 @@ impl ClosedLoop {
         }
     }
 
-    /// The evaluation for the plant `aircraft`, with (`USER_BLOCKS`) or without users'
-    /// blocks, with (`LATERAL`, if the loop has them) or without the 3-D approach's
-    /// lateral blocks. Each block's outputs come from a helper that is always inlined
-    /// here, so that the RK4 stages still drop what only the bus carries.
+    /// The evaluation for the plant `aircraft` and the `lateral` part, with
+    /// (`USER_BLOCKS`) or without users' blocks. Each block's outputs come from a helper
+    /// that is always inlined here, so that the RK4 stages still drop what only the bus
+    /// carries.
+    #[allow(clippy::too_many_arguments)]
     #[inline(always)]
-    fn evaluate_blocks<T: Taps, P: Plant, const USER_BLOCKS: bool, const LATERAL: bool>(
+    fn evaluate_blocks<T: Taps, P: Plant, L: LateralPart, const USER_BLOCKS: bool>(
         &self,
         aircraft: &P,
+        lateral: &L,
         t: f64,
         x: &[f64],
         held: &HeldInputs,
@@ -272,8 +320,8 @@ impl ClosedLoop {
         // ship: the deck's pose and rate, the moving landing point (in the 3-D approach,
         // its equivalent longitudinal pose).
         let ship_state = self.ship_state(x);
-        let lateral_loop = if LATERAL { self.lateral.as_ref() } else { None };
-        let view = self.ship_outputs(lateral_loop, &ship_state, t, x, held, &mut bus);
+        let parts = self.ship_parts();
+        let view = lateral.ship_outputs(parts, &ship_state, x, &held.lateral, &mut bus);
 
         // aircraft: position, attitude, the hook.
         let aircraft_state = P::state_at(x, self.layout.aircraft.offset);
@@ -312,8 +360,8 @@ impl ClosedLoop {
 
         // lineup and lateral_laws in the 3-D approach (docs/model.md §10.2); otherwise
         // lateral_hold: the aileron and rudder commands of a lateral plant at trim.
-        let lateral = (lateral_loop, &view, velocities);
-        self.lateral_outputs(aircraft, lateral, x, held, taps, &mut bus);
+        let view = (&view, velocities);
+        lateral.lateral_outputs(aircraft, parts, view, x, held, taps, &mut bus);
 
         // direct_lift: the hook's height error to the path → lift (docs/model.md §5.9).
         let dynamic_pressure = plant.dynamic_pressure_pa;
@@ -326,46 +374,12 @@ impl ClosedLoop {
         self.plant_rates(aircraft, &ship_state, &plant, held, &bus, rate);
         self.outer_loop_rates(&outer_inputs, &outer, held, rate);
         self.law_rates(x, &pitch_inputs, speed_error, &bus, rate);
-        self.deck_predictor_rate(view.is_some(), x, &bus, rate);
-        if let (Some(lateral), Some(lateral_held)) = (lateral_loop, &held.lateral) {
-            lateral.derivative(&self.layout, x, lateral_held, taps, &bus, rate);
-        }
+        self.deck_predictor_rate(lateral, x, &bus, rate);
+        lateral.rates(&self.layout, x, &held.lateral, taps, &bus, rate);
         if USER_BLOCKS {
             self.user_rates(t, x, &bus, rate);
         }
         bus
-    }
-
-    /// The ship block's outputs onto `bus` at `t` (s) for its state `ship_state`: the
-    /// deck's pose and rate and the landing point; in the 3-D approach (`lateral`), the
-    /// equivalent longitudinal pose of its view, which is returned.
-    #[inline(always)]
-    fn ship_outputs(
-        &self,
-        lateral: Option<&LateralLoop>,
-        ship_state: &ShipMotionState,
-        t: f64,
-        x: &[f64],
-        held: &HeldInputs,
-        bus: &mut Signals,
-    ) -> Option<DeckView3d> {
-        match lateral {
-            Some(lateral) => Some(lateral.ship_outputs(
-                &self.ship,
-                &self.deck,
-                ship_state,
-                &self.layout,
-                x,
-                held.lateral.as_ref(),
-                bus,
-            )),
-            None => {
-                bus.ship = self.ship.pose(ship_state, self.ship_initial_x_m, t);
-                bus.ship_rate = self.ship.pose_rate(ship_state);
-                bus.aim_point = self.deck.aim_point(&bus.ship);
-                None
-            }
-        }
     }
 
     /// What the outer loops read at `t` (s): the trim, the aircraft's and the hook's
@@ -469,39 +483,6 @@ impl ClosedLoop {
             self.thrust_command_n(aircraft, outer, held, speed_state, speed_error);
         bus.thrust_command_n = taps.tap(LoopBreak::ThrustCommand, thrust_command_n);
         speed_error
-    }
-
-    /// The lateral blocks' outputs onto `bus`: in the 3-D approach (its loop, its view
-    /// of the deck and the hook's and CG's velocities), the lineup and the lateral laws;
-    /// otherwise the lateral hold of a lateral plant at trim.
-    #[inline(always)]
-    fn lateral_outputs<P: Plant, T: Taps>(
-        &self,
-        aircraft: &P,
-        (lateral_loop, view, velocities): (
-            Option<&LateralLoop>,
-            &Option<DeckView3d>,
-            (EarthVelocity, EarthVelocity),
-        ),
-        x: &[f64],
-        held: &HeldInputs,
-        taps: &T,
-        bus: &mut Signals,
-    ) {
-        match (lateral_loop, view, &held.lateral) {
-            (Some(lateral), Some(view), Some(lateral_held)) => lateral.lineup_and_laws(
-                view,
-                &self.deck,
-                velocities,
-                &self.layout,
-                x,
-                lateral_held,
-                held.commands,
-                taps,
-                bus,
-            ),
-            _ => plant::lateral_hold(aircraft, bus),
-        }
     }
 
     /// The rates of the outer loops' sink-rate and guidance integrators into `rate`.
@@ -667,25 +648,17 @@ impl ClosedLoop {
         }
     }
 
-    /// The deck predictor's rate into `rate`. The landing point's height again, worked
-    /// out only for a predictor that reads it (a sine of the ship's pitch that the RK4
-    /// stages otherwise skip); in the 3-D approach (`three_dimensional`) it is the
-    /// view's, already on the bus.
+    /// The deck predictor's rate into `rate`. The landing point's height from the
+    /// `lateral` part, worked out only for a predictor that reads it.
     #[inline(always)]
-    fn deck_predictor_rate(
+    fn deck_predictor_rate<L: LateralPart>(
         &self,
-        three_dimensional: bool,
+        lateral: &L,
         x: &[f64],
         bus: &Signals,
         rate: &mut [f64],
     ) {
-        let aim_height_m = || {
-            if three_dimensional {
-                bus.aim_point.h_m
-            } else {
-                aim_point_height_m(&self.deck, bus.ship)
-            }
-        };
+        let aim_height_m = || lateral.aim_height_m(&self.deck, bus);
         self.deck_predictor.derivative(
             self.layout.deck_predictor.of(x),
             aim_height_m,
@@ -723,14 +696,6 @@ fn pitch_sensor_outputs(t: f64, held: &HeldInputs, bus: &mut Signals) -> f64 {
             0.0
         }
     }
-}
-
-/// The landing point's height (m) for `pose`, as on the bus. Out of line, so that the
-/// compiler does not reuse the bus's value for it: that value, dropped in the RK4 stages,
-/// then costs nothing there. The pose is a copy, so that the bus stays in registers.
-#[inline(never)]
-fn aim_point_height_m(deck: &DeckGeometry, pose: ShipPose) -> f64 {
-    deck.aim_point(&pose).h_m
 }
 
 /// The loop with its held inputs and taps fixed over a step: the system the RK4 stages

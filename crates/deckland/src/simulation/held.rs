@@ -37,8 +37,8 @@ pub struct HeldInputs {
     /// A wave-off decided by the supervisor at this step's start (its time (s) and
     /// why): an event for the run loop to report and to fly from now on.
     pub wave_off_decided: Option<(f64, WaveOffDecision)>,
-    /// The 3-D approach's held inputs; `None` outside it.
-    pub lateral: Option<HeldLateral>,
+    /// The 3-D approach's held inputs; outside it, zeros that nothing reads.
+    pub lateral: HeldLateral,
 }
 
 /// The random streams the loop draws from step by step.

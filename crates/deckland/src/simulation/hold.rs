@@ -5,7 +5,6 @@
 use super::blocks::arrival_timing::ArrivalTimingBlock;
 use super::closed_loop::{ClosedLoop, HeldInputs, StepStreams};
 use super::flight_computer::HeldCommands;
-use super::lateral::HeldLateral;
 use super::outer_loops::OuterLoops;
 use super::signals::Signals;
 use super::taps::Taps;
@@ -61,15 +60,17 @@ impl ClosedLoop {
         );
         self.arrival_timing_step(t, dt, &aircraft, deck.as_ref(), waving_off);
         held.deck = deck;
-        let lateral = self.hold_lateral(
-            t,
-            x,
-            streams,
-            dt,
-            waving_off || decision.is_some(),
-            &held.wind,
-        );
-        let decision = decision.or(lateral.as_ref().and_then(|step| step.decision));
+        // Whether a frame of the flight-control computer starts now (`None` without a
+        // computer): the frame's readings are taken at its start.
+        let frame_starts = self
+            .computer
+            .as_mut()
+            .map(|computer| computer.starts_frame(t));
+        let decided = waving_off || decision.is_some();
+        let (lateral, lateral_decision) =
+            self.hold_lateral(t, x, streams, (dt, frame_starts), decided, &held.wind);
+        held.lateral = lateral;
+        let decision = decision.or(lateral_decision);
         held.wave_off_decided = decision.map(|decision| (t, decision));
         held.wave_off = waving_off || held.wave_off_decided.is_some();
         held.ship_noise =
@@ -80,27 +81,14 @@ impl ClosedLoop {
             held.commands = None;
             held.theta_read = None;
             held.frame_starts = false;
-            held.lateral = lateral.map(|step| step.held);
             return;
         };
         // A frame of the flight-control computer: read the sensor (the mean of its samples
         // since the last frame); `compute_frame` computes the commands at its start, and
         // both are held until the next.
         let pitch_noise_rad = self.sensor.draw_white_noise() + self.sensor.sinusoid(t);
-        let frame_starts = computer.starts_frame(t);
+        let frame_starts = frame_starts.unwrap_or(false);
         computer.sample(t, aircraft.theta_rad + pitch_noise_rad, frame_starts);
-        held.lateral = match (lateral, &mut self.lateral) {
-            (Some(step), Some(lateral)) => {
-                if frame_starts {
-                    lateral.read = step.fresh_read;
-                }
-                Some(HeldLateral {
-                    read: Some(lateral.read),
-                    ..step.held
-                })
-            }
-            _ => None,
-        };
         held.pitch_noise_rad = pitch_noise_rad;
         held.commands = Some(computer.commands);
         held.theta_read = Some((computer.theta_read_rad, computer.theta_read_time_s));

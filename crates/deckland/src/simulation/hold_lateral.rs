@@ -8,14 +8,37 @@ use super::lateral::{HeldLateral, LateralStep, LineupAtFrame};
 use super::outer_loops::OuterLoops;
 use crate::aircraft::six_dof::SixDofAircraft;
 use crate::aircraft::Plant;
+use crate::control::WaveOffDecision;
 use crate::environment::{LateralShipMotionState, ShipMotionState, Wind};
 
 impl ClosedLoop {
-    /// The 3-D approach's part of [`ClosedLoop::hold`] at `t` (state `x`, the wind held
-    /// over the step `wind`); `None` outside it. `decided` says whether a wave-off is
-    /// flown or decided already (then no lateral decision is taken).
+    /// The 3-D approach's part of [`ClosedLoop::hold`] at `t` (state `x`, the step `dt`
+    /// (s), whether a flight computer's frame starts, `frame_starts`, `None` without a
+    /// computer; the wind held over the step `wind`): what the lateral loop holds over
+    /// the step and a wave-off it decides; outside the 3-D approach, zeros and none.
+    /// `decided` says whether a wave-off is flown or decided already (then no lateral
+    /// decision is taken).
     #[inline]
     pub(crate) fn hold_lateral(
+        &mut self,
+        t: f64,
+        x: &[f64],
+        streams: &mut StepStreams,
+        (dt, frame_starts): (f64, Option<bool>),
+        decided: bool,
+        wind: &Wind,
+    ) -> (HeldLateral, Option<WaveOffDecision>) {
+        let step = self.lateral_step(t, x, streams, dt, decided, wind);
+        let Some((lateral, step)) = self.lateral.as_mut().zip(step) else {
+            return (HeldLateral::default(), None);
+        };
+        (lateral.held_with_read(&step, frame_starts), step.decision)
+    }
+
+    /// The lateral loop's step at `t`: its sensing, noise and guidance frame
+    /// ([`ClosedLoop::hold_lateral`]); `None` outside the 3-D approach.
+    #[inline]
+    fn lateral_step(
         &mut self,
         t: f64,
         x: &[f64],

@@ -25,6 +25,7 @@ mod held;
 mod hold;
 mod hold_lateral;
 pub mod lateral;
+mod lateral_part;
 mod layout;
 mod lso;
 mod outcome;

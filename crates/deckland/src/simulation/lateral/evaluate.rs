@@ -27,14 +27,12 @@ impl LateralLoop {
         ship_state: &ShipMotionState,
         layout: &LoopLayout,
         x: &[f64],
-        held: Option<&HeldLateral>,
+        held: &HeldLateral,
         bus: &mut Signals,
     ) -> DeckView3d {
         let lateral_state = LateralShipMotionState::from_array(&layout.ship_lateral.array(x));
-        let view = match (held, &self.step_view) {
-            (Some(held), Some(view))
-                if view.time_s.to_bits() == held.deck_view_time_s.to_bits() =>
-            {
+        let view = match &self.step_view {
+            Some(view) if view.time_s.to_bits() == held.deck_view_time_s.to_bits() => {
                 view.at(bus.time_s)
             }
             _ => self.deck_view(ship, deck, ship_state, &lateral_state, bus.time_s),

@@ -53,6 +53,25 @@ pub(crate) struct LateralStep {
 }
 
 impl LateralLoop {
+    /// What the step holds: `step`'s held inputs with, for a flight computer
+    /// (`frame_starts` says whether its frame starts now; `None` without one), the bank
+    /// and the yaw law's angle read at the frame's start, taken from `step` when it
+    /// starts.
+    #[inline]
+    pub(crate) fn held_with_read(
+        &mut self,
+        step: &LateralStep,
+        frame_starts: Option<bool>,
+    ) -> HeldLateral {
+        if frame_starts == Some(true) {
+            self.read = step.fresh_read;
+        }
+        HeldLateral {
+            read: frame_starts.map(|_| self.read),
+            ..step.held
+        }
+    }
+
     /// Keeps what the guidance computed at a frame's start, `step`, for the rest of the
     /// frame (without frames, nothing).
     pub(crate) fn keep_for_frame(&mut self, step: &LateralStep) {

@@ -1,0 +1,231 @@
+//! The loop's lateral part (docs/model.md §10.1): in the 3-D approach, the ship's 3-D
+//! view, the lineup and the lateral laws ([`LateralLoop`]); in a loop without them, the
+//! ship's longitudinal pose and the lateral hold ([`LateralHold`]).
+//!
+//! The loop's evaluation is instantiated for each part (`ClosedLoop::evaluate`), chosen
+//! once per evaluation as the plant is: the blocks' code has no branch on whether the
+//! approach is 3-D.
+
+use super::blocks::plant;
+use super::held::HeldInputs;
+use super::lateral::pose::DeckView3d;
+use super::lateral::{HeldLateral, LateralLoop};
+use super::layout::LoopLayout;
+use super::signals::Signals;
+use super::taps::Taps;
+use crate::aircraft::Plant;
+use crate::environment::{
+    DeckGeometry, EarthVelocity, LateralShipMotionState, ShipMotion, ShipMotionState, ShipPose,
+    ShipPoseRate,
+};
+
+/// What the lateral part reads of the loop besides the state, the held inputs and the
+/// bus: the ship's model, the deck, the state's layout and the ship's start.
+#[derive(Clone, Copy)]
+pub(crate) struct ShipParts<'a> {
+    pub ship: &'a ShipMotion,
+    pub deck: &'a DeckGeometry,
+    pub layout: &'a LoopLayout,
+    /// The ship's pitch centre's earth x at t = 0 (m).
+    pub initial_x_m: f64,
+}
+
+/// The lateral part of the loop: what the ship block shows the other blocks, the lateral
+/// commands, and the lateral states' rates.
+pub(crate) trait LateralPart {
+    /// What the ship block's outputs leave for the lateral blocks: the deck's 3-D view,
+    /// or nothing.
+    type View;
+
+    /// The ship's pose and its rate at `t` (s) as the longitudinal blocks see it, for the
+    /// state `x`.
+    fn ship_pose(&self, parts: ShipParts<'_>, x: &[f64], t: f64) -> (ShipPose, ShipPoseRate);
+
+    /// `ship`: the deck's pose and rate and the landing point onto `bus`, for the ship's
+    /// longitudinal state `ship_state` (and the lateral one in `x`).
+    fn ship_outputs(
+        &self,
+        parts: ShipParts<'_>,
+        ship_state: &ShipMotionState,
+        x: &[f64],
+        held: &HeldLateral,
+        bus: &mut Signals,
+    ) -> Self::View;
+
+    /// The aileron and rudder commands onto `bus`: the lineup and the lateral laws on the
+    /// ship block's `view` and the hook's and the CG's velocities, or the `aircraft`'s
+    /// held commands.
+    #[allow(clippy::too_many_arguments)]
+    fn lateral_outputs<P: Plant, T: Taps>(
+        &self,
+        aircraft: &P,
+        parts: ShipParts<'_>,
+        view: (&Self::View, (EarthVelocity, EarthVelocity)),
+        x: &[f64],
+        held: &HeldInputs,
+        taps: &T,
+        bus: &mut Signals,
+    );
+
+    /// The rates of the lateral states (the ship's roll, yaw and sway filters and the
+    /// lateral laws) into `rate`.
+    fn rates<T: Taps>(
+        &self,
+        layout: &LoopLayout,
+        x: &[f64],
+        held: &HeldLateral,
+        taps: &T,
+        bus: &Signals,
+        rate: &mut [f64],
+    );
+
+    /// The landing point's height (m) the deck predictor reads, for the ship on `bus`.
+    fn aim_height_m(&self, deck: &DeckGeometry, bus: &Signals) -> f64;
+}
+
+/// The lateral part of a loop without the 3-D approach: the ship's longitudinal pose and
+/// the plant's lateral commands held at trim (`lateral_hold`).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct LateralHold;
+
+impl LateralPart for LateralHold {
+    type View = ();
+
+    #[inline(always)]
+    fn ship_pose(&self, parts: ShipParts<'_>, x: &[f64], t: f64) -> (ShipPose, ShipPoseRate) {
+        let ship_state = ShipMotionState::from_array(&parts.layout.ship.array(x));
+        (
+            parts.ship.pose(&ship_state, parts.initial_x_m, t),
+            parts.ship.pose_rate(&ship_state),
+        )
+    }
+
+    #[inline(always)]
+    fn ship_outputs(
+        &self,
+        parts: ShipParts<'_>,
+        ship_state: &ShipMotionState,
+        _x: &[f64],
+        _held: &HeldLateral,
+        bus: &mut Signals,
+    ) {
+        bus.ship = parts.ship.pose(ship_state, parts.initial_x_m, bus.time_s);
+        bus.ship_rate = parts.ship.pose_rate(ship_state);
+        bus.aim_point = parts.deck.aim_point(&bus.ship);
+    }
+
+    #[inline(always)]
+    fn lateral_outputs<P: Plant, T: Taps>(
+        &self,
+        aircraft: &P,
+        _parts: ShipParts<'_>,
+        _view: (&(), (EarthVelocity, EarthVelocity)),
+        _x: &[f64],
+        _held: &HeldInputs,
+        _taps: &T,
+        bus: &mut Signals,
+    ) {
+        plant::lateral_hold(aircraft, bus);
+    }
+
+    #[inline(always)]
+    fn rates<T: Taps>(
+        &self,
+        _layout: &LoopLayout,
+        _x: &[f64],
+        _held: &HeldLateral,
+        _taps: &T,
+        _bus: &Signals,
+        _rate: &mut [f64],
+    ) {
+    }
+
+    /// Worked out again rather than read from the bus, so that the RK4 stages, which
+    /// drop the bus, skip it where the predictor does not read it.
+    #[inline(always)]
+    fn aim_height_m(&self, deck: &DeckGeometry, bus: &Signals) -> f64 {
+        aim_point_height_m(deck, bus.ship)
+    }
+}
+
+impl LateralPart for LateralLoop {
+    type View = DeckView3d;
+
+    #[inline(always)]
+    fn ship_pose(&self, parts: ShipParts<'_>, x: &[f64], t: f64) -> (ShipPose, ShipPoseRate) {
+        let ship_state = ShipMotionState::from_array(&parts.layout.ship.array(x));
+        let lateral_state = LateralShipMotionState::from_array(&parts.layout.ship_lateral.array(x));
+        self.longitudinal_pose(parts.ship, parts.deck, &ship_state, &lateral_state, t)
+    }
+
+    #[inline(always)]
+    fn ship_outputs(
+        &self,
+        parts: ShipParts<'_>,
+        ship_state: &ShipMotionState,
+        x: &[f64],
+        held: &HeldLateral,
+        bus: &mut Signals,
+    ) -> DeckView3d {
+        self.ship_outputs(
+            parts.ship,
+            parts.deck,
+            ship_state,
+            parts.layout,
+            x,
+            held,
+            bus,
+        )
+    }
+
+    #[inline(always)]
+    fn lateral_outputs<P: Plant, T: Taps>(
+        &self,
+        _aircraft: &P,
+        parts: ShipParts<'_>,
+        (view, velocities): (&DeckView3d, (EarthVelocity, EarthVelocity)),
+        x: &[f64],
+        held: &HeldInputs,
+        taps: &T,
+        bus: &mut Signals,
+    ) {
+        self.lineup_and_laws(
+            view,
+            parts.deck,
+            velocities,
+            parts.layout,
+            x,
+            &held.lateral,
+            held.commands,
+            taps,
+            bus,
+        );
+    }
+
+    #[inline(always)]
+    fn rates<T: Taps>(
+        &self,
+        layout: &LoopLayout,
+        x: &[f64],
+        held: &HeldLateral,
+        taps: &T,
+        bus: &Signals,
+        rate: &mut [f64],
+    ) {
+        self.derivative(layout, x, held, taps, bus, rate);
+    }
+
+    /// The 3-D view's, already on the bus.
+    #[inline(always)]
+    fn aim_height_m(&self, _deck: &DeckGeometry, bus: &Signals) -> f64 {
+        bus.aim_point.h_m
+    }
+}
+
+/// The landing point's height (m) for `pose`, as on the bus. Out of line, so that the
+/// compiler does not reuse the bus's value for it: that value, dropped in the RK4 stages,
+/// then costs nothing there. The pose is a copy, so that the bus stays in registers.
+#[inline(never)]
+fn aim_point_height_m(deck: &DeckGeometry, pose: ShipPose) -> f64 {
+    deck.aim_point(&pose).h_m
+}
