@@ -1,12 +1,11 @@
 //! The agent's action: read, checked, turned into the taps, and the autopilot's.
 
-use deckland::simulation::Signals;
+use deckland::simulation::{LoopBreak, Signals};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyComplex};
 
 use super::config::EnvConfig;
-use super::control::LateralTaps;
 use super::control::{AgentTaps, Control};
 use super::lateral;
 use crate::errors::argument_error;
@@ -41,39 +40,37 @@ impl EnvConfig {
 
     /// The taps of `action` (checked: every entry in [−1, 1]).
     pub(super) fn taps(&self, action: &[f64], waved_off: bool) -> AgentTaps {
-        let lateral = self.lateral.map_or_else(LateralTaps::default, |l| {
-            l.taps(self.control, &action[self.lateral_entries()])
-        });
+        let mut taps = AgentTaps::default();
         let thrust =
             |a: f64| (self.thrust_trim_n + a * self.thrust_span_n).clamp(0.0, self.max_thrust_n);
         let (low, high) = self.elevator_range_rad;
         match self.control {
-            Control::Surfaces => AgentTaps {
-                control: self.control,
-                first: (self.elevator_trim_rad + action[0] * self.elevator_span_rad)
-                    .clamp(low, high),
-                thrust_n: thrust(action[1]),
-                direct_lift: action[2] * self.max_direct_lift,
-                full_thrust_n: None,
-                lateral,
-            },
-            Control::Attitude => AgentTaps {
-                control: self.control,
-                first: self.theta_trim_rad + action[0] * self.pitch_span_rad,
-                thrust_n: thrust(action[1]),
-                direct_lift: 0.0,
-                full_thrust_n: None,
-                lateral,
-            },
-            Control::Guidance => AgentTaps {
-                control: self.control,
-                first: self.climb_rate_trim_mps + action[0] * self.climb_rate_span_mps,
-                thrust_n: 0.0,
-                direct_lift: 0.0,
-                full_thrust_n: waved_off.then_some(self.max_thrust_n),
-                lateral,
-            },
+            Control::Surfaces => {
+                let elevator = self.elevator_trim_rad + action[0] * self.elevator_span_rad;
+                taps.set(LoopBreak::ElevatorCommand, elevator.clamp(low, high));
+                taps.set(LoopBreak::ThrustCommand, thrust(action[1]));
+                let direct_lift = action[2] * self.max_direct_lift;
+                taps.set(LoopBreak::DirectLiftCommand, direct_lift);
+            }
+            Control::Attitude => {
+                let pitch = self.theta_trim_rad + action[0] * self.pitch_span_rad;
+                taps.set(LoopBreak::PitchCommand, pitch);
+                taps.set(LoopBreak::ThrustCommand, thrust(action[1]));
+                taps.set(LoopBreak::DirectLiftCommand, 0.0);
+            }
+            Control::Guidance => {
+                let climb_rate = self.climb_rate_trim_mps + action[0] * self.climb_rate_span_mps;
+                taps.set(LoopBreak::ClimbRateCommand, climb_rate);
+                if waved_off {
+                    taps.set(LoopBreak::ThrustCommand, self.max_thrust_n);
+                }
+                taps.set(LoopBreak::DirectLiftCommand, 0.0);
+            }
         }
+        if let Some(l) = &self.lateral {
+            l.set_taps(self.control, &mut taps, &action[self.lateral_entries()]);
+        }
+        taps
     }
 
     /// The action that commands what the built-in loops compute now (the autopilot as a

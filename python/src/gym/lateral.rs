@@ -6,7 +6,7 @@ use deckland::scenario::Scenario as RustScenario;
 use deckland::simulation::{LoopBreak, LoopCut, Signals, Simulation};
 use pyo3::prelude::*;
 
-use super::control::{Control, LateralTaps};
+use super::control::{AgentTaps, Control};
 use super::spec::ObservationSpec;
 use crate::errors::{argument_error, value_error};
 
@@ -169,25 +169,23 @@ impl LateralConfig {
         raw.copy_from_slice(&values);
     }
 
-    /// The lateral taps of the lateral action entries `action` (checked, in [−1, 1]).
-    pub(crate) fn taps(&self, control: Control, action: &[f64]) -> LateralTaps {
+    /// Gives `taps` the commands of the lateral action entries `action` (checked, in
+    /// [−1, 1]).
+    pub(crate) fn set_taps(&self, control: Control, taps: &mut AgentTaps, action: &[f64]) {
+        let bank = self.trim_bank_rad + action[0] * self.bank_span_rad;
         match control {
-            Control::Surfaces => LateralTaps {
-                aileron_rad: Some(self.trim_aileron_rad + action[0] * self.aileron_span_rad),
-                rudder_rad: Some(self.trim_rudder_rad + action[1] * self.rudder_span_rad),
-                ..LateralTaps::default()
-            },
-            Control::Attitude => LateralTaps {
-                bank_command_rad: Some(self.trim_bank_rad + action[0] * self.bank_span_rad),
-                sideslip_command_rad: Some(
-                    self.trim_sideslip_rad + action[1] * self.sideslip_span_rad,
-                ),
-                ..LateralTaps::default()
-            },
-            Control::Guidance => LateralTaps {
-                bank_command_rad: Some(self.trim_bank_rad + action[0] * self.bank_span_rad),
-                ..LateralTaps::default()
-            },
+            Control::Surfaces => {
+                let aileron = self.trim_aileron_rad + action[0] * self.aileron_span_rad;
+                let rudder = self.trim_rudder_rad + action[1] * self.rudder_span_rad;
+                taps.set(LoopBreak::AileronCommand, aileron);
+                taps.set(LoopBreak::RudderCommand, rudder);
+            }
+            Control::Attitude => {
+                let sideslip = self.trim_sideslip_rad + action[1] * self.sideslip_span_rad;
+                taps.set(LoopBreak::BankCommand, bank);
+                taps.set(LoopBreak::SideslipCommand, sideslip);
+            }
+            Control::Guidance => taps.set(LoopBreak::BankCommand, bank),
         }
     }
 
