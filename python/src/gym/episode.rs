@@ -115,7 +115,7 @@ impl EnvCore {
                 .stepper
                 .simulation()
                 .summary()
-                .and_then(|s| s.touchdown.and_then(|t| t.lateral))
+                .and_then(|s| s.lateral_touchdown())
                 .map(|l| l.off_centre);
             if self.off_centre == Some(true) {
                 result.reward += config.rewards.off_centre;
