@@ -77,17 +77,7 @@ pub(super) fn config(
     lateral_spans: Option<(f64, f64, f64, f64)>,
 ) -> PyResult<EnvConfig> {
     let control = Control::parse(control)?;
-    let shaped = match reward {
-        "shaped" => true,
-        "sparse" => false,
-        other => {
-            return Err(argument_error(
-                "reward",
-                format_args!("{other:?}"),
-                "\"shaped\" or \"sparse\"",
-            ))
-        }
-    };
+    let shaped = is_shaped(reward)?;
     let base = scenario_or_default(scenario);
     let mut flown = flown_scenario(&base.scenario, None, false)?;
     // The wave-off is the agent's decision.
@@ -144,6 +134,20 @@ pub(super) fn config(
     };
     config.normalisation = config.normalisation_table();
     Ok(config)
+}
+
+/// Whether the reward `reward` is the shaped one (`"shaped"`) or the sparse one
+/// (`"sparse"`; anything else is refused).
+fn is_shaped(reward: &str) -> PyResult<bool> {
+    match reward {
+        "shaped" => Ok(true),
+        "sparse" => Ok(false),
+        other => Err(argument_error(
+            "reward",
+            format_args!("{other:?}"),
+            "\"shaped\" or \"sparse\"",
+        )),
+    }
 }
 
 /// The action spans (pitch command, thrust, elevator, climb rate) checked: positive, and
