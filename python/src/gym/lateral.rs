@@ -1,6 +1,8 @@
 //! The 3-D environment's lateral half (`deckland/CarrierLanding3D-v0`): the roll and yaw
 //! commands added to each control mode's action, the lateral observation entries, and
 //! the lateral taps. The longitudinal half is the 2-D environment's, unchanged.
+//! [`LateralHalf`] gathers what the half adds as lists, empty in the 2-D environment, so
+//! that the environment's code maps over them without asking which environment it is.
 
 use deckland::scenario::Scenario as RustScenario;
 use deckland::simulation::{LoopBreak, LoopCut, SignalId, Signals, Simulation};
