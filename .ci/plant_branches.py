@@ -17,6 +17,8 @@ SETUP = {
     "crates/deckland/src/simulation/pitch_setup.rs",
     "crates/deckland/src/simulation/lateral/build.rs",
     "crates/deckland/src/experiments/lateral_step/setup.rs",
+    # the Python environment's configuration
+    "python/src/gym/config.rs",
     # the plant registry: the models by name, and the built plant of each
     "crates/deckland/src/aircraft/plant.rs",
     "crates/deckland/src/aircraft/built_plant.rs",

@@ -1,85 +1,63 @@
 //! The agent's action: read, checked, turned into the taps, and the autopilot's.
 
-use deckland::simulation::Signals;
+use deckland::simulation::{LoopBreak, Signals};
 use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyComplex};
 
 use super::config::EnvConfig;
-use super::control::LateralTaps;
 use super::control::{AgentTaps, Control};
-use super::lateral;
 use crate::errors::argument_error;
 
 impl EnvConfig {
     pub(super) fn action_len(&self) -> usize {
-        self.action_names().len()
+        self.action_names.len()
     }
 
-    /// The action's entries, in order (the wave-off last).
-    pub(super) fn action_names(&self) -> &'static [&'static str] {
-        match self.lateral {
-            Some(_) => lateral::action_names(self.control),
-            None => self.control.action_names(),
-        }
-    }
-
-    /// The built-in loops whose commands reach the aircraft.
-    pub(super) fn built_in_loops(&self) -> Vec<&'static str> {
-        let mut loops = self.control.built_in_loops().to_vec();
-        if self.lateral.is_some() {
-            loops.extend_from_slice(lateral::built_in_loops(self.control));
-        }
-        loops
-    }
-
-    /// Where the lateral entries sit in the action: after the longitudinal ones.
-    fn lateral_entries(&self) -> std::ops::Range<usize> {
-        let first = self.control.action_names().len() - 1;
-        first..self.action_len() - 1
+    /// The number of the longitudinal entries of the action, first (the lateral commands
+    /// follow them, the wave-off last).
+    fn longitudinal_actions(&self) -> usize {
+        self.control.action_names().len() - 1
     }
 
     /// The taps of `action` (checked: every entry in [−1, 1]).
     pub(super) fn taps(&self, action: &[f64], waved_off: bool) -> AgentTaps {
-        let lateral = self.lateral.map_or_else(LateralTaps::default, |l| {
-            l.taps(self.control, &action[self.lateral_entries()])
-        });
+        let mut taps = AgentTaps::default();
         let thrust =
             |a: f64| (self.thrust_trim_n + a * self.thrust_span_n).clamp(0.0, self.max_thrust_n);
         let (low, high) = self.elevator_range_rad;
         match self.control {
-            Control::Surfaces => AgentTaps {
-                control: self.control,
-                first: (self.elevator_trim_rad + action[0] * self.elevator_span_rad)
-                    .clamp(low, high),
-                thrust_n: thrust(action[1]),
-                direct_lift: action[2] * self.max_direct_lift,
-                full_thrust_n: None,
-                lateral,
-            },
-            Control::Attitude => AgentTaps {
-                control: self.control,
-                first: self.theta_trim_rad + action[0] * self.pitch_span_rad,
-                thrust_n: thrust(action[1]),
-                direct_lift: 0.0,
-                full_thrust_n: None,
-                lateral,
-            },
-            Control::Guidance => AgentTaps {
-                control: self.control,
-                first: self.climb_rate_trim_mps + action[0] * self.climb_rate_span_mps,
-                thrust_n: 0.0,
-                direct_lift: 0.0,
-                full_thrust_n: waved_off.then_some(self.max_thrust_n),
-                lateral,
-            },
+            Control::Surfaces => {
+                let elevator = self.elevator_trim_rad + action[0] * self.elevator_span_rad;
+                taps.set(LoopBreak::ElevatorCommand, elevator.clamp(low, high));
+                taps.set(LoopBreak::ThrustCommand, thrust(action[1]));
+                let direct_lift = action[2] * self.max_direct_lift;
+                taps.set(LoopBreak::DirectLiftCommand, direct_lift);
+            }
+            Control::Attitude => {
+                let pitch = self.theta_trim_rad + action[0] * self.pitch_span_rad;
+                taps.set(LoopBreak::PitchCommand, pitch);
+                taps.set(LoopBreak::ThrustCommand, thrust(action[1]));
+                taps.set(LoopBreak::DirectLiftCommand, 0.0);
+            }
+            Control::Guidance => {
+                let climb_rate = self.climb_rate_trim_mps + action[0] * self.climb_rate_span_mps;
+                taps.set(LoopBreak::ClimbRateCommand, climb_rate);
+                if waved_off {
+                    taps.set(LoopBreak::ThrustCommand, self.max_thrust_n);
+                }
+                taps.set(LoopBreak::DirectLiftCommand, 0.0);
+            }
         }
+        let lateral_actions = &action[self.longitudinal_actions()..];
+        self.lateral.set_taps(&mut taps, lateral_actions);
+        taps
     }
 
     /// The action that commands what the built-in loops compute now (the autopilot as a
     /// policy; it never waves off), clipped to the action space.
     pub(super) fn autopilot_action(&self, s: &Signals, action: &mut [f32]) {
-        let values: [f64; 4] = match self.control {
+        let values: [f64; 3] = match self.control {
             Control::Surfaces => [
                 (s.elevator_command_rad - self.elevator_trim_rad) / self.elevator_span_rad,
                 (s.thrust_command_n - self.thrust_trim_n) / self.thrust_span_n,
@@ -88,19 +66,16 @@ impl EnvConfig {
                 } else {
                     0.0
                 },
-                -1.0,
             ],
             Control::Attitude => [
                 (s.theta_ref_rad - self.theta_trim_rad) / self.pitch_span_rad,
                 (s.thrust_command_n - self.thrust_trim_n) / self.thrust_span_n,
-                -1.0,
                 0.0,
             ],
             Control::Guidance => [
                 (s.climb_rate_command_mps.unwrap_or(self.climb_rate_trim_mps)
                     - self.climb_rate_trim_mps)
                     / self.climb_rate_span_mps,
-                -1.0,
                 0.0,
                 0.0,
             ],
@@ -109,17 +84,13 @@ impl EnvConfig {
             let value = if value.is_nan() { 0.0 } else { value };
             value.clamp(-1.0, 1.0) as f32
         };
-        for (out, value) in action.iter_mut().zip(values) {
+        let (commands, wave_off) = action.split_at_mut(action.len() - 1);
+        let (longitudinal, lateral) = commands.split_at_mut(self.longitudinal_actions());
+        for (out, value) in longitudinal.iter_mut().zip(values) {
             *out = clipped(value);
         }
-        if let Some(l) = &self.lateral {
-            let entries = self.lateral_entries();
-            let wave_off = entries.end;
-            for (out, value) in action[entries].iter_mut().zip(l.autopilot(self.control, s)) {
-                *out = clipped(value);
-            }
-            action[wave_off] = -1.0;
-        }
+        self.lateral.autopilot(s, lateral, clipped);
+        wave_off[0] = -1.0;
     }
 
     /// Whether `action` is `len` finite numbers in [−1, 1].
@@ -138,7 +109,7 @@ impl EnvConfig {
             format_args!("{action:?}"),
             format_args!(
                 "{len} numbers in [-1, 1] (the action space: {})",
-                self.action_names().join(", ")
+                self.action_names.join(", ")
             ),
         ))
     }

@@ -1,12 +1,13 @@
 //! What every environment of one configuration shares, built from the Python arguments.
 
 use deckland::scenario::Scenario as RustScenario;
+use deckland::simulation::SignalId;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use super::control::Control;
-use super::lateral::LateralConfig;
-use super::reward::Rewards;
+use super::lateral::{LateralConfig, LateralHalf};
+use super::reward::{EndInfo, Rewards, END_INFO};
 use crate::errors::argument_error;
 use crate::scenario::{flown_scenario, scenario_or_default, Scenario};
 use crate::stepping::Stepper;
@@ -45,8 +46,18 @@ pub(crate) struct EnvConfig {
     pub(super) rewards: Rewards,
     pub(super) forecast: bool,
     pub(super) max_episode_steps: Option<u64>,
-    /// The 3-D environment's lateral half (`None`: the 2-D environment).
-    pub(super) lateral: Option<LateralConfig>,
+    /// The action's entries, in order: the control mode's longitudinal ones, the
+    /// lateral commands, the wave-off last.
+    pub(super) action_names: Vec<&'static str>,
+    /// The built-in loops whose commands reach the aircraft.
+    pub(super) built_in_loops: Vec<&'static str>,
+    /// The 3-D environment's lateral half (its lists empty in the 2-D environment).
+    pub(super) lateral: LateralHalf,
+    /// The signals whose squares add up to the tracking error: the glide path error and,
+    /// in the 3-D environment, the cross-track error.
+    pub(super) tracking: Vec<SignalId>,
+    /// What a step's `info` tells at an episode's end, in order.
+    pub(super) end_info: Vec<EndInfo>,
     /// Each observation entry's normalisation (from the fields above, computed once:
     /// `normalisation_table` in the observation's module).
     pub(super) normalisation: Vec<Normalisation>,
@@ -66,17 +77,7 @@ pub(super) fn config(
     lateral_spans: Option<(f64, f64, f64, f64)>,
 ) -> PyResult<EnvConfig> {
     let control = Control::parse(control)?;
-    let shaped = match reward {
-        "shaped" => true,
-        "sparse" => false,
-        other => {
-            return Err(argument_error(
-                "reward",
-                format_args!("{other:?}"),
-                "\"shaped\" or \"sparse\"",
-            ))
-        }
-    };
+    let shaped = is_shaped(reward)?;
     let base = scenario_or_default(scenario);
     let mut flown = flown_scenario(&base.scenario, None, false)?;
     // The wave-off is the agent's decision.
@@ -88,35 +89,16 @@ pub(super) fn config(
     let actuator = system.aircraft().actuator();
     let (pitch_span_rad, thrust_span_n, elevator_span_rad, climb_rate_span_mps) = spans;
     let thrust_span_n = thrust_span_n.unwrap_or(0.25 * max_thrust_n);
-    for (name, value) in [
-        ("pitch_command_span_rad", pitch_span_rad),
-        ("thrust_span_n", thrust_span_n),
-        ("elevator_span_rad", elevator_span_rad),
-        ("climb_rate_span_mps", climb_rate_span_mps),
-    ] {
-        if !(value.is_finite() && value > 0.0) {
-            return Err(argument_error(
-                name,
-                format_args!("{value:?}"),
-                "a positive number",
-            ));
-        }
-    }
-    let reach = (trim.theta_rad + std::f64::consts::FRAC_PI_2)
-        .min(std::f64::consts::FRAC_PI_2 - trim.theta_rad);
-    if pitch_span_rad > reach {
-        return Err(argument_error(
-            "pitch_command_span_rad",
-            format_args!("{pitch_span_rad:?}"),
-            format_args!(
-                "at most {reach:?} rad, so that the trim pitch ± the span stays within ±π/2"
-            ),
-        ));
-    }
-    let lateral = match lateral_spans {
-        Some(spans) => Some(LateralConfig::new(&flown, spans)?),
-        None => None,
-    };
+    check_spans(
+        (
+            pitch_span_rad,
+            thrust_span_n,
+            elevator_span_rad,
+            climb_rate_span_mps,
+        ),
+        trim.theta_rad,
+    )?;
+    let lateral = lateral_half(&flown, control, lateral_spans)?;
     let slope_rad = flown.control.flight_path.glide_slope_deg.to_radians();
     let direct_lift = flown.control.direct_lift;
     let mut config = EnvConfig {
@@ -143,9 +125,90 @@ pub(super) fn config(
         rewards: Rewards::from_dict(rewards, shaped)?,
         forecast,
         max_episode_steps,
+        action_names: action_names(control, &lateral),
+        built_in_loops: [control.built_in_loops(), lateral.loops].concat(),
+        tracking: [&[SignalId::GlidePathError][..], lateral.tracking].concat(),
+        end_info: [&END_INFO[..], lateral.end_info].concat(),
         lateral,
         normalisation: Vec::new(),
     };
     config.normalisation = config.normalisation_table();
     Ok(config)
+}
+
+/// Whether the reward `reward` is the shaped one (`"shaped"`) or the sparse one
+/// (`"sparse"`; anything else is refused).
+fn is_shaped(reward: &str) -> PyResult<bool> {
+    match reward {
+        "shaped" => Ok(true),
+        "sparse" => Ok(false),
+        other => Err(argument_error(
+            "reward",
+            format_args!("{other:?}"),
+            "\"shaped\" or \"sparse\"",
+        )),
+    }
+}
+
+/// The action spans (pitch command, thrust, elevator, climb rate) checked: positive, and
+/// the trim pitch `theta_trim_rad` ± the pitch command's within ±π/2.
+fn check_spans(spans: (f64, f64, f64, f64), theta_trim_rad: f64) -> PyResult<()> {
+    let (pitch_span_rad, thrust_span_n, elevator_span_rad, climb_rate_span_mps) = spans;
+    for (name, value) in [
+        ("pitch_command_span_rad", pitch_span_rad),
+        ("thrust_span_n", thrust_span_n),
+        ("elevator_span_rad", elevator_span_rad),
+        ("climb_rate_span_mps", climb_rate_span_mps),
+    ] {
+        if !(value.is_finite() && value > 0.0) {
+            return Err(argument_error(
+                name,
+                format_args!("{value:?}"),
+                "a positive number",
+            ));
+        }
+    }
+    let reach = (theta_trim_rad + std::f64::consts::FRAC_PI_2)
+        .min(std::f64::consts::FRAC_PI_2 - theta_trim_rad);
+    if pitch_span_rad > reach {
+        return Err(argument_error(
+            "pitch_command_span_rad",
+            format_args!("{pitch_span_rad:?}"),
+            format_args!(
+                "at most {reach:?} rad, so that the trim pitch ± the span stays within ±π/2"
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// The environment's lateral half: the 3-D environment's with `lateral_spans` (checked,
+/// and `flown` checked to be a 3-D approach), else the 2-D environment's, empty. The
+/// one place that chooses between the two; the rest maps over the half's lists.
+fn lateral_half(
+    flown: &RustScenario,
+    control: Control,
+    lateral_spans: Option<(f64, f64, f64, f64)>,
+) -> PyResult<LateralHalf> {
+    match lateral_spans {
+        Some(spans) => Ok(LateralHalf::new(
+            &LateralConfig::new(flown, spans)?,
+            control,
+        )),
+        None => Ok(LateralHalf::default()),
+    }
+}
+
+/// The action's entries: the longitudinal ones of `control`, the lateral commands, the
+/// wave-off last.
+fn action_names(control: Control, lateral: &LateralHalf) -> Vec<&'static str> {
+    let names = control.action_names();
+    let (longitudinal, wave_off) = names.split_at(names.len() - 1);
+    let commands = lateral.commands.iter().map(|c| c.name);
+    longitudinal
+        .iter()
+        .copied()
+        .chain(commands)
+        .chain(wave_off.iter().copied())
+        .collect()
 }

@@ -65,73 +65,33 @@ impl Control {
     }
 }
 
-/// The agent's commands for one interval, replacing the loops' at their taps.
-#[derive(Debug, Clone, Copy)]
+/// The agent's commands for one interval, replacing the loops' at their taps: one per
+/// loop break, indexed by it (`None`: the built-in loop's command stays).
+#[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct AgentTaps {
-    pub(super) control: Control,
-    /// Surfaces: elevator (rad); attitude: pitch command (rad); guidance: climb-rate
-    /// command (m/s).
-    pub(super) first: f64,
-    /// Surfaces and attitude: total thrust command (N).
-    pub(super) thrust_n: f64,
-    /// Surfaces: direct lift's lift-coefficient command (–).
-    pub(super) direct_lift: f64,
-    /// Guidance: the agent has waved off (full thrust).
-    pub(super) full_thrust_n: Option<f64>,
-    /// The 3-D environment's lateral commands (none in the 2-D environment).
-    pub(super) lateral: LateralTaps,
+    commands: [Option<f64>; LoopBreak::ALL.len()],
+}
+
+// Every loop break indexes the commands.
+const _: () = assert!(LoopBreak::RudderCommand as usize + 1 == LoopBreak::ALL.len());
+
+impl AgentTaps {
+    /// Gives the agent's command `value` at `at` for the interval.
+    #[inline]
+    pub(crate) fn set(&mut self, at: LoopBreak, value: f64) {
+        self.commands[at as usize] = Some(value);
+    }
 }
 
 impl Taps for AgentTaps {
     #[inline]
     fn tap(&self, at: LoopBreak, computed: f64) -> f64 {
-        use Control::{Attitude, Guidance, Surfaces};
-        match (self.control, at) {
-            (Surfaces, LoopBreak::ElevatorCommand) | (Attitude, LoopBreak::PitchCommand) => {
-                self.first
-            }
-            (Guidance, LoopBreak::ClimbRateCommand) => self.first,
-            (Surfaces | Attitude, LoopBreak::ThrustCommand) => self.thrust_n,
-            (Guidance, LoopBreak::ThrustCommand) => self.full_thrust_n.unwrap_or(computed),
-            (Surfaces, LoopBreak::DirectLiftCommand) => self.direct_lift,
-            (Attitude | Guidance, LoopBreak::DirectLiftCommand) => 0.0,
-            (
-                _,
-                LoopBreak::BankCommand
-                | LoopBreak::SideslipCommand
-                | LoopBreak::AileronCommand
-                | LoopBreak::RudderCommand,
-            ) => self.lateral.at(at).unwrap_or(computed),
-            _ => computed,
-        }
+        self.commands[at as usize].unwrap_or(computed)
     }
 
     /// Every point is kept or replaced by a value fixed over the interval.
     #[inline(always)]
     fn idempotent(&self) -> bool {
         true
-    }
-}
-
-/// The agent's lateral commands for one interval (`None`: the built-in loop's).
-#[derive(Debug, Clone, Copy, Default)]
-pub(crate) struct LateralTaps {
-    pub bank_command_rad: Option<f64>,
-    pub sideslip_command_rad: Option<f64>,
-    pub aileron_rad: Option<f64>,
-    pub rudder_rad: Option<f64>,
-}
-
-impl LateralTaps {
-    /// The agent's command at `at`, if it gives one there.
-    #[inline]
-    pub(crate) fn at(&self, at: LoopBreak) -> Option<f64> {
-        match at {
-            LoopBreak::BankCommand => self.bank_command_rad,
-            LoopBreak::SideslipCommand => self.sideslip_command_rad,
-            LoopBreak::AileronCommand => self.aileron_rad,
-            LoopBreak::RudderCommand => self.rudder_rad,
-            _ => None,
-        }
     }
 }

@@ -26,8 +26,8 @@ pub(super) fn describe<'py>(py: Python<'py>, config: &EnvConfig) -> PyResult<Bou
         table.append(row)?;
     }
     dict.set_item("observations", table)?;
-    dict.set_item("actions", config.action_names().to_vec())?;
-    dict.set_item("built_in_loops", config.built_in_loops())?;
+    dict.set_item("actions", config.action_names.clone())?;
+    dict.set_item("built_in_loops", config.built_in_loops.clone())?;
     dict.set_item("outcomes", OUTCOMES.to_vec())?;
     // The LSO's grades by code (the vector environment's grade codes) and their points.
     dict.set_item("lso_grades", Grade::ALL.map(Grade::name).to_vec())?;
@@ -47,15 +47,11 @@ pub(super) fn describe<'py>(py: Python<'py>, config: &EnvConfig) -> PyResult<Bou
     spans.set_item("thrust_span_n", config.thrust_span_n)?;
     spans.set_item("elevator_span_rad", config.elevator_span_rad)?;
     spans.set_item("climb_rate_span_mps", config.climb_rate_span_mps)?;
-    if let Some(lateral) = &config.lateral {
-        spans.set_item("bank_command_span_rad", lateral.bank_span_rad)?;
-        spans.set_item("sideslip_command_span_rad", lateral.sideslip_span_rad)?;
-        spans.set_item("aileron_span_rad", lateral.aileron_span_rad)?;
-        spans.set_item("rudder_span_rad", lateral.rudder_span_rad)?;
-        trim.set_item("bank_rad", lateral.trim_bank_rad)?;
-        trim.set_item("sideslip_rad", lateral.trim_sideslip_rad)?;
-        trim.set_item("aileron_rad", lateral.trim_aileron_rad)?;
-        trim.set_item("rudder_rad", lateral.trim_rudder_rad)?;
+    for (key, value) in &config.lateral.spans {
+        spans.set_item(key, value)?;
+    }
+    for (key, value) in &config.lateral.trim {
+        trim.set_item(key, value)?;
     }
     dict.set_item("trim", trim)?;
     dict.set_item("spans", spans)?;

@@ -81,17 +81,13 @@ impl EnvCore {
         let taps = config.taps(action, self.waved_off);
         self.stepper.advance(&mut Quiet, &taps);
         self.steps += 1;
+        // The squared distance of the hook to the glide path (in 3-D, to its line).
         let squared_error = {
             let look = self.stepper.look();
-            let error = look.signals.glide_path_error_m;
-            match config.lateral {
-                // The 3-D environment: the hook's distance to the glide path's line.
-                Some(_) => {
-                    let cross = look.signals.lateral.cross_track_m.unwrap_or(f64::NAN);
-                    error * error + cross * cross
-                }
-                None => error * error,
-            }
+            config.tracking.iter().fold(0.0, |sum, &id| {
+                let error = look.signals.get(id).unwrap_or(f64::NAN);
+                sum + error * error
+            })
         };
         let mut result = StepResult {
             reward: -config.rewards.error_weight
@@ -119,7 +115,7 @@ impl EnvCore {
                 .stepper
                 .simulation()
                 .summary()
-                .and_then(|s| s.touchdown.and_then(|t| t.lateral))
+                .and_then(|s| s.lateral_touchdown())
                 .map(|l| l.off_centre);
             if self.off_centre == Some(true) {
                 result.reward += config.rewards.off_centre;

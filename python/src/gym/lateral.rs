@@ -1,12 +1,15 @@
 //! The 3-D environment's lateral half (`deckland/CarrierLanding3D-v0`): the roll and yaw
 //! commands added to each control mode's action, the lateral observation entries, and
 //! the lateral taps. The longitudinal half is the 2-D environment's, unchanged.
+//! [`LateralHalf`] gathers what the half adds as lists, empty in the 2-D environment, so
+//! that the environment's code maps over them without asking which environment it is.
 
 use deckland::scenario::Scenario as RustScenario;
-use deckland::simulation::{LoopBreak, LoopCut, Signals, Simulation};
+use deckland::simulation::{LoopBreak, LoopCut, SignalId, Signals, Simulation};
 use pyo3::prelude::*;
 
-use super::control::{Control, LateralTaps};
+use super::control::{AgentTaps, Control};
+use super::reward::EndInfo;
 use super::spec::ObservationSpec;
 use crate::errors::{argument_error, value_error};
 
@@ -44,31 +47,128 @@ pub(crate) struct LateralConfig {
     pub trim_rudder_rad: f64,
 }
 
-/// The action's entries of the 3-D environment, in order (the 2-D mode's longitudinal
-/// entries, the lateral ones, the wave-off last).
-pub(crate) fn action_names(control: Control) -> &'static [&'static str] {
-    match control {
-        Control::Surfaces => &[
-            "elevator",
-            "thrust",
-            "direct_lift",
-            "aileron",
-            "rudder",
-            "wave_off",
-        ],
-        Control::Attitude => &[
-            "pitch_command",
-            "thrust",
-            "bank_command",
-            "sideslip_command",
-            "wave_off",
-        ],
-        Control::Guidance => &["climb_rate_command", "bank_command", "wave_off"],
+/// One lateral command of the 3-D environment's action: the loop break where it replaces
+/// the built-in loop's, the signal of that loop's command (the autopilot's action; `None`:
+/// the trim, the action 0), its trim and its span (rad).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct LateralCommand {
+    pub name: &'static str,
+    pub at: LoopBreak,
+    pub built_in: Option<SignalId>,
+    pub trim_rad: f64,
+    pub span_rad: f64,
+}
+
+impl LateralCommand {
+    /// The command of the action entry `action` (in [−1, 1]).
+    #[inline]
+    fn command(&self, action: f64) -> f64 {
+        self.trim_rad + action * self.span_rad
+    }
+
+    /// The action entry that commands what the built-in loop computes now (unclipped).
+    #[inline]
+    fn autopilot(&self, s: &Signals) -> f64 {
+        let built_in = self.built_in.and_then(|id| s.get(id));
+        (built_in.unwrap_or(self.trim_rad) - self.trim_rad) / self.span_rad
+    }
+}
+
+/// What the 3-D environment adds to the 2-D one, each part a list of entries: all empty
+/// in the 2-D environment (the `Default`), so that the code stepping either maps over
+/// them alike.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct LateralHalf {
+    /// The lateral commands of the action, after the longitudinal entries (the wave-off
+    /// last).
+    pub commands: Vec<LateralCommand>,
+    /// The lateral observation entries, after the longitudinal ones, and their offsets.
+    pub observations: &'static [ObservationSpec],
+    pub offsets: Vec<f64>,
+    /// The built-in lateral loops whose commands reach the aircraft.
+    pub loops: &'static [&'static str],
+    /// The signals whose squares the tracking error adds to the glide path error's.
+    pub tracking: &'static [SignalId],
+    /// What a step's `info` adds at an episode's end.
+    pub end_info: &'static [EndInfo],
+    /// The lateral spans and trim, by their keys in the description.
+    pub spans: Vec<(&'static str, f64)>,
+    pub trim: Vec<(&'static str, f64)>,
+}
+
+impl LateralHalf {
+    /// The 3-D environment's lateral half in `control` mode, of `lateral`.
+    pub(crate) fn new(lateral: &LateralConfig, control: Control) -> Self {
+        Self {
+            commands: lateral.commands(control),
+            observations: &LATERAL_OBSERVATIONS,
+            offsets: lateral.offsets().to_vec(),
+            loops: built_in_loops(control),
+            tracking: &[SignalId::CrossTrack],
+            end_info: &[EndInfo::OffCentre],
+            spans: vec![
+                ("bank_command_span_rad", lateral.bank_span_rad),
+                ("sideslip_command_span_rad", lateral.sideslip_span_rad),
+                ("aileron_span_rad", lateral.aileron_span_rad),
+                ("rudder_span_rad", lateral.rudder_span_rad),
+            ],
+            trim: vec![
+                ("bank_rad", lateral.trim_bank_rad),
+                ("sideslip_rad", lateral.trim_sideslip_rad),
+                ("aileron_rad", lateral.trim_aileron_rad),
+                ("rudder_rad", lateral.trim_rudder_rad),
+            ],
+        }
+    }
+
+    /// Each lateral observation entry's (offset, scale, raw range), in order.
+    pub(crate) fn scaling(&self) -> impl Iterator<Item = (f64, f64, (f64, f64))> + '_ {
+        let entries = self.observations.iter().zip(&self.offsets);
+        entries.map(|(o, &offset)| (offset, o.scale, (o.low, o.high)))
+    }
+
+    /// Gives `taps` the commands of the lateral action entries `action` (checked, in
+    /// [−1, 1]; the entries after the commands' are ignored).
+    #[inline]
+    pub(crate) fn set_taps(&self, taps: &mut AgentTaps, action: &[f64]) {
+        for (command, &a) in self.commands.iter().zip(action) {
+            taps.set(command.at, command.command(a));
+        }
+    }
+
+    /// The lateral entries of the autopilot's action, written to `action` through
+    /// `clipped` (the entries after the commands' are left).
+    #[inline]
+    pub(crate) fn autopilot(&self, s: &Signals, action: &mut [f32], clipped: impl Fn(f64) -> f32) {
+        for (out, command) in action.iter_mut().zip(&self.commands) {
+            *out = clipped(command.autopilot(s));
+        }
+    }
+
+    /// The raw lateral entries of `s` (NaN where a signal is missing) written to `raw`
+    /// (as many as it holds: none in the 2-D environment).
+    #[inline]
+    pub(crate) fn raw(s: &Signals, raw: &mut [f64]) {
+        let value = |v: Option<f64>| v.unwrap_or(f64::NAN);
+        let values = [
+            value(s.lateral.cross_track_m),
+            value(s.lateral.cross_track_rate_mps),
+            value(s.phi_rad),
+            value(s.psi_rad) - value(s.lateral.centreline_heading_rad),
+            value(s.beta_rad),
+            value(s.p_radps),
+            value(s.r_radps),
+            value(s.aileron_rad),
+            value(s.rudder_rad),
+        ];
+        for (out, value) in raw.iter_mut().zip(values) {
+            *out = value;
+        }
     }
 }
 
 /// The built-in lateral loops whose commands reach the aircraft in each mode.
-pub(crate) fn built_in_loops(control: Control) -> &'static [&'static str] {
+fn built_in_loops(control: Control) -> &'static [&'static str] {
     match control {
         Control::Surfaces => &[],
         Control::Attitude => &[
@@ -148,63 +248,42 @@ impl LateralConfig {
         offsets
     }
 
-    /// The raw lateral entries of `s` (NaN where a signal is missing).
-    pub(crate) fn raw(s: &Signals, raw: &mut [f64]) {
-        let value = |v: Option<f64>| v.unwrap_or(f64::NAN);
-        let heading = match (s.psi_rad, s.lateral.centreline_heading_rad) {
-            (Some(psi), Some(centreline)) => psi - centreline,
-            _ => f64::NAN,
+    /// The lateral commands of `control`'s action, in order: the surfaces' aileron and
+    /// rudder, the attitude's bank and sideslip commands, the guidance's bank command.
+    fn commands(&self, control: Control) -> Vec<LateralCommand> {
+        let bank = LateralCommand {
+            name: "bank_command",
+            at: LoopBreak::BankCommand,
+            built_in: Some(SignalId::BankCommand),
+            trim_rad: self.trim_bank_rad,
+            span_rad: self.bank_span_rad,
         };
-        let values = [
-            value(s.lateral.cross_track_m),
-            value(s.lateral.cross_track_rate_mps),
-            value(s.phi_rad),
-            heading,
-            value(s.beta_rad),
-            value(s.p_radps),
-            value(s.r_radps),
-            value(s.aileron_rad),
-            value(s.rudder_rad),
-        ];
-        raw.copy_from_slice(&values);
-    }
-
-    /// The lateral taps of the lateral action entries `action` (checked, in [−1, 1]).
-    pub(crate) fn taps(&self, control: Control, action: &[f64]) -> LateralTaps {
+        let sideslip = LateralCommand {
+            name: "sideslip_command",
+            at: LoopBreak::SideslipCommand,
+            // The yaw law's reference is the trim's: the autopilot's action is 0.
+            built_in: None,
+            trim_rad: self.trim_sideslip_rad,
+            span_rad: self.sideslip_span_rad,
+        };
+        let aileron = LateralCommand {
+            name: "aileron",
+            at: LoopBreak::AileronCommand,
+            built_in: Some(SignalId::AileronCommand),
+            trim_rad: self.trim_aileron_rad,
+            span_rad: self.aileron_span_rad,
+        };
+        let rudder = LateralCommand {
+            name: "rudder",
+            at: LoopBreak::RudderCommand,
+            built_in: Some(SignalId::RudderCommand),
+            trim_rad: self.trim_rudder_rad,
+            span_rad: self.rudder_span_rad,
+        };
         match control {
-            Control::Surfaces => LateralTaps {
-                aileron_rad: Some(self.trim_aileron_rad + action[0] * self.aileron_span_rad),
-                rudder_rad: Some(self.trim_rudder_rad + action[1] * self.rudder_span_rad),
-                ..LateralTaps::default()
-            },
-            Control::Attitude => LateralTaps {
-                bank_command_rad: Some(self.trim_bank_rad + action[0] * self.bank_span_rad),
-                sideslip_command_rad: Some(
-                    self.trim_sideslip_rad + action[1] * self.sideslip_span_rad,
-                ),
-                ..LateralTaps::default()
-            },
-            Control::Guidance => LateralTaps {
-                bank_command_rad: Some(self.trim_bank_rad + action[0] * self.bank_span_rad),
-                ..LateralTaps::default()
-            },
-        }
-    }
-
-    /// The lateral entries of the autopilot's action: what the built-in lineup guidance
-    /// and laws command now (unclipped).
-    pub(crate) fn autopilot(&self, control: Control, s: &Signals) -> [f64; 2] {
-        let bank = (s.lateral.bank_command_rad.unwrap_or(self.trim_bank_rad) - self.trim_bank_rad)
-            / self.bank_span_rad;
-        match control {
-            Control::Surfaces => [
-                (s.aileron_command_rad.unwrap_or(self.trim_aileron_rad) - self.trim_aileron_rad)
-                    / self.aileron_span_rad,
-                (s.rudder_command_rad.unwrap_or(self.trim_rudder_rad) - self.trim_rudder_rad)
-                    / self.rudder_span_rad,
-            ],
-            Control::Attitude => [bank, 0.0],
-            Control::Guidance => [bank, 0.0],
+            Control::Surfaces => vec![aileron, rudder],
+            Control::Attitude => vec![bank, sideslip],
+            Control::Guidance => vec![bank],
         }
     }
 }

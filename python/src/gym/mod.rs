@@ -10,12 +10,16 @@
 //! the outcome is the physics' (ramp crossing, touchdown, the wires).
 //!
 //! The modules, each using only those above it:
-//! - [`control`]: the control modes and the agent's taps;
-//! - [`reward`]: the outcomes and the rewards;
+//! - [`control`]: the control modes and the agent's taps (its command at each loop
+//!   break);
+//! - [`reward`]: the outcomes, the rewards and the info's entries at an episode's end;
+//! - [`lateral`]: the 3-D environment's lateral half: its commands, observation entries,
+//!   spans and trim, each a list (all empty in the 2-D environment);
 //! - [`config`]: what every environment of one configuration shares, built from the
-//!   Python arguments;
+//!   Python arguments: the one place that chooses the 2-D or the 3-D lateral half, and
+//!   the lists of the action, the observation and the info made from it, which the
+//!   modules below map over;
 //! - [`observation`]: the observation's entries and their normalisation;
-//! - [`lateral`]: the 3-D environment's lateral commands, observation entries and taps;
 //! - [`action`]: the action read, checked and turned into taps, and the autopilot's;
 //! - [`episode`]: one environment's episode, stepped;
 //! - [`describe`]: the description of a configuration;

@@ -4,7 +4,7 @@ use deckland::control::DeckReference;
 use deckland::simulation::Signals;
 
 use super::config::{EnvConfig, Normalisation};
-use super::lateral::{LateralConfig, LATERAL_ENTRIES, LATERAL_OBSERVATIONS};
+use super::lateral::LateralHalf;
 pub(crate) use super::spec::ObservationSpec;
 use crate::stepping::Look;
 
@@ -46,7 +46,7 @@ const NO_TIME_TO_GO_S: f64 = 120.0;
 impl EnvConfig {
     /// The number of observation entries.
     pub(super) fn observation_len(&self) -> usize {
-        self.longitudinal_len() + self.lateral.map_or(0, |_| LATERAL_ENTRIES)
+        self.longitudinal_len() + self.lateral.observations.len()
     }
 
     /// The number of the 2-D environment's entries (the lateral ones follow them).
@@ -60,13 +60,9 @@ impl EnvConfig {
 
     /// Each entry's specification, in order.
     pub(super) fn observation_specs(&self) -> impl Iterator<Item = &'static ObservationSpec> {
-        let lateral: &'static [ObservationSpec] = match self.lateral {
-            Some(_) => &LATERAL_OBSERVATIONS,
-            None => &[],
-        };
         OBSERVATIONS[..self.longitudinal_len()]
             .iter()
-            .chain(lateral)
+            .chain(self.lateral.observations)
     }
 
     /// Each entry's (offset, scale, raw range), in order.
@@ -77,15 +73,7 @@ impl EnvConfig {
         let mut entries: Vec<_> = (0..self.longitudinal_len())
             .map(|i| (offsets[i], scales[i], ranges[i]))
             .collect();
-        if let Some(lateral) = &self.lateral {
-            let offsets = lateral.offsets();
-            entries.extend(
-                LATERAL_OBSERVATIONS
-                    .iter()
-                    .zip(offsets)
-                    .map(|(o, offset)| (offset, o.scale, (o.low, o.high))),
-            );
-        }
+        entries.extend(self.lateral.scaling());
         entries
     }
 
@@ -156,10 +144,7 @@ impl EnvConfig {
             };
             raw[BASE_OBSERVATIONS..ENTRIES].copy_from_slice(&extra);
         }
-        if self.lateral.is_some() {
-            let first = self.longitudinal_len();
-            LateralConfig::raw(s, &mut raw[first..first + LATERAL_ENTRIES]);
-        }
+        LateralHalf::raw(s, &mut raw[self.longitudinal_len()..]);
     }
 
     /// Each entry's offset, scale and normalised range (low, high), computed once for

@@ -16,6 +16,29 @@ pub(crate) const OUTCOMES: [&str; 7] = [
     "timeout",
 ];
 
+/// An entry of a step's `info` at an episode's end (besides the LSO's grade).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum EndInfo {
+    /// `outcome`: the outcome's name.
+    Outcome,
+    /// `wire`: the wire caught, if any.
+    Wire,
+    /// `reason`: why the episode ended.
+    Reason,
+    /// `time_s`: the simulated time.
+    TimeS,
+    /// `off_centre`: whether the 3-D approach's touchdown was off the centreline.
+    OffCentre,
+}
+
+/// The entries of the 2-D environment's `info` at an episode's end.
+pub(crate) const END_INFO: [EndInfo; 4] = [
+    EndInfo::Outcome,
+    EndInfo::Wire,
+    EndInfo::Reason,
+    EndInfo::TimeS,
+];
+
 /// The rewards (see the module's doc in `deckland/env.py`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Rewards {

@@ -7,8 +7,8 @@ use pyo3::types::PyDict;
 
 use super::action::action_values;
 use super::config::config;
-use super::episode::seed_value;
-use super::reward::OUTCOMES;
+use super::episode::{seed_value, EnvCore};
+use super::reward::{EndInfo, OUTCOMES};
 use super::vector::Lanes;
 use crate::scenario::Scenario;
 
@@ -125,12 +125,8 @@ impl Env {
         )?;
         if let Some(core) = self.lanes.core(0) {
             if let Some((code, wire)) = core.outcome {
-                info.set_item("outcome", OUTCOMES[code])?;
-                info.set_item("wire", wire)?;
-                info.set_item("reason", core.reason.clone())?;
-                info.set_item("time_s", core.stepper.simulation().time_s())?;
-                if self.lanes.config.lateral.is_some() {
-                    info.set_item("off_centre", core.off_centre)?;
+                for entry in &self.lanes.config.end_info {
+                    end_info(&info, *entry, core, code, wire)?;
                 }
                 if let Some((grade, comment)) = &core.lso {
                     info.set_item("lso_grade", grade.name())?;
@@ -174,5 +170,23 @@ impl Env {
         self.lanes
             .core(0)
             .map_or(0.0, |c| c.stepper.simulation().time_s())
+    }
+}
+
+/// Sets `entry` of the `info` of a step that ended `core`'s episode with the outcome
+/// `code` and `wire`.
+fn end_info(
+    info: &Bound<'_, PyDict>,
+    entry: EndInfo,
+    core: &EnvCore,
+    code: usize,
+    wire: Option<u8>,
+) -> PyResult<()> {
+    match entry {
+        EndInfo::Outcome => info.set_item("outcome", OUTCOMES[code]),
+        EndInfo::Wire => info.set_item("wire", wire),
+        EndInfo::Reason => info.set_item("reason", core.reason.clone()),
+        EndInfo::TimeS => info.set_item("time_s", core.stepper.simulation().time_s()),
+        EndInfo::OffCentre => info.set_item("off_centre", core.off_centre),
     }
 }
