@@ -1,6 +1,7 @@
 //! The loop's lateral part (docs/model.md §10.1): in the 3-D approach, the ship's 3-D
-//! view, the lineup and the lateral laws ([`LateralLoop`]); in a loop without them, the
-//! ship's longitudinal pose and the lateral hold ([`LateralHold`]).
+//! view, the lineup and the lateral laws (`LateralLoop`, `lateral/evaluate.rs`); in a
+//! loop without them, the ship's longitudinal pose and the lateral hold
+//! ([`LateralHold`]).
 //!
 //! The loop's evaluation is instantiated for each part (`ClosedLoop::evaluate`), chosen
 //! once per evaluation as the plant is: the blocks' code has no branch on whether the
@@ -8,15 +9,13 @@
 
 use super::blocks::plant;
 use super::held::HeldInputs;
-use super::lateral::pose::DeckView3d;
-use super::lateral::{HeldLateral, LateralLoop};
+use super::lateral::HeldLateral;
 use super::layout::LoopLayout;
 use super::signals::Signals;
 use super::taps::Taps;
 use crate::aircraft::Plant;
 use crate::environment::{
-    DeckGeometry, EarthVelocity, LateralShipMotionState, ShipMotion, ShipMotionState, ShipPose,
-    ShipPoseRate,
+    DeckGeometry, EarthVelocity, ShipMotion, ShipMotionState, ShipPose, ShipPoseRate,
 };
 
 /// What the lateral part reads of the loop besides the state, the held inputs and the
@@ -145,80 +144,6 @@ impl LateralPart for LateralHold {
     #[inline(always)]
     fn aim_height_m(&self, deck: &DeckGeometry, bus: &Signals) -> f64 {
         aim_point_height_m(deck, bus.ship)
-    }
-}
-
-impl LateralPart for LateralLoop {
-    type View = DeckView3d;
-
-    #[inline(always)]
-    fn ship_pose(&self, parts: ShipParts<'_>, x: &[f64], t: f64) -> (ShipPose, ShipPoseRate) {
-        let ship_state = ShipMotionState::from_array(&parts.layout.ship.array(x));
-        let lateral_state = LateralShipMotionState::from_array(&parts.layout.ship_lateral.array(x));
-        self.longitudinal_pose(parts.ship, parts.deck, &ship_state, &lateral_state, t)
-    }
-
-    #[inline(always)]
-    fn ship_outputs(
-        &self,
-        parts: ShipParts<'_>,
-        ship_state: &ShipMotionState,
-        x: &[f64],
-        held: &HeldLateral,
-        bus: &mut Signals,
-    ) -> DeckView3d {
-        self.ship_outputs(
-            parts.ship,
-            parts.deck,
-            ship_state,
-            parts.layout,
-            x,
-            held,
-            bus,
-        )
-    }
-
-    #[inline(always)]
-    fn lateral_outputs<P: Plant, T: Taps>(
-        &self,
-        _aircraft: &P,
-        parts: ShipParts<'_>,
-        (view, velocities): (&DeckView3d, (EarthVelocity, EarthVelocity)),
-        x: &[f64],
-        held: &HeldInputs,
-        taps: &T,
-        bus: &mut Signals,
-    ) {
-        self.lineup_and_laws(
-            view,
-            parts.deck,
-            velocities,
-            parts.layout,
-            x,
-            &held.lateral,
-            held.commands,
-            taps,
-            bus,
-        );
-    }
-
-    #[inline(always)]
-    fn rates<T: Taps>(
-        &self,
-        layout: &LoopLayout,
-        x: &[f64],
-        held: &HeldLateral,
-        taps: &T,
-        bus: &Signals,
-        rate: &mut [f64],
-    ) {
-        self.derivative(layout, x, held, taps, bus, rate);
-    }
-
-    /// The 3-D view's, already on the bus.
-    #[inline(always)]
-    fn aim_height_m(&self, _deck: &DeckGeometry, bus: &Signals) -> f64 {
-        bus.aim_point.h_m
     }
 }
 

@@ -1,35 +1,48 @@
-//! The 3-D approach's blocks in an evaluation of the loop: `ship` (the 3-D pose),
-//! `wind` (its y component onto the bus), `lineup` and `lateral_laws`, and their state
-//! rates (docs/model.md §10.1–10.3).
+//! The 3-D approach's blocks in an evaluation of the loop, as the loop's lateral part
+//! ([`LateralPart`]): `ship` (the 3-D pose), `wind` (its y component onto the bus),
+//! `lineup` and `lateral_laws`, and their state rates (docs/model.md §10.1–10.3).
 
 use super::pose::DeckView3d;
 use super::{HeldLateral, LateralLoop, LateralMeasurements};
+use crate::aircraft::Plant;
 use crate::environment::{
-    DeckGeometry, EarthPoint, EarthVelocity, LateralShipMotionState, ShipMotion, ShipMotionState,
+    DeckGeometry, EarthPoint, EarthVelocity, LateralShipMotionState, ShipMotionState, ShipPose,
+    ShipPoseRate,
 };
-use crate::simulation::flight_computer::HeldCommands;
+use crate::simulation::held::HeldInputs;
+use crate::simulation::lateral_part::{LateralPart, ShipParts};
 use crate::simulation::layout::LoopLayout;
 use crate::simulation::signals::Signals;
 use crate::simulation::taps::{LoopBreak, Taps};
 
-impl LateralLoop {
+impl LateralPart for LateralLoop {
+    type View = DeckView3d;
+
+    /// The equivalent longitudinal pose of the ship's 3-D view.
+    #[inline(always)]
+    fn ship_pose(&self, parts: ShipParts<'_>, x: &[f64], t: f64) -> (ShipPose, ShipPoseRate) {
+        let ship_state = ShipMotionState::from_array(&parts.layout.ship.array(x));
+        let lateral_state = LateralShipMotionState::from_array(&parts.layout.ship_lateral.array(x));
+        self.longitudinal_pose(parts.ship, parts.deck, &ship_state, &lateral_state, t)
+    }
+
     /// `ship`: the 3-D pose onto the bus (the longitudinal blocks see its equivalent
     /// longitudinal pose), with the ship's roll, yaw and sway. The pose is the step's
     /// view ([`LateralLoop::step_view`], the one `held` was drawn with) carried to the
     /// time at its rates ([`DeckView3d::at`]), exact at the step's start; without it,
     /// it is computed.
-    #[allow(clippy::too_many_arguments)]
     #[inline(always)]
-    pub(crate) fn ship_outputs(
+    fn ship_outputs(
         &self,
-        ship: &ShipMotion,
-        deck: &DeckGeometry,
+        parts: ShipParts<'_>,
         ship_state: &ShipMotionState,
-        layout: &LoopLayout,
         x: &[f64],
         held: &HeldLateral,
         bus: &mut Signals,
     ) -> DeckView3d {
+        let ShipParts {
+            ship, deck, layout, ..
+        } = parts;
         let lateral_state = LateralShipMotionState::from_array(&layout.ship_lateral.array(x));
         let view = match &self.step_view {
             Some(view) if view.time_s.to_bits() == held.deck_view_time_s.to_bits() => {
@@ -53,20 +66,19 @@ impl LateralLoop {
     /// `lineup` and `lateral_laws`: the cross-track, the lineup guidance's bank command,
     /// and the roll and yaw laws' surface commands (the frame's, with a flight computer),
     /// each through its tap.
-    #[allow(clippy::too_many_arguments)]
     #[inline(always)]
-    pub(crate) fn lineup_and_laws<T: Taps>(
+    fn lateral_outputs<P: Plant, T: Taps>(
         &self,
-        view: &DeckView3d,
-        deck: &DeckGeometry,
-        (hook_velocity, velocity): (EarthVelocity, EarthVelocity),
-        layout: &LoopLayout,
+        _aircraft: &P,
+        parts: ShipParts<'_>,
+        (view, (hook_velocity, velocity)): (&DeckView3d, (EarthVelocity, EarthVelocity)),
         x: &[f64],
-        held: &HeldLateral,
-        commands: Option<HeldCommands>,
+        held_inputs: &HeldInputs,
         taps: &T,
         bus: &mut Signals,
     ) {
+        let (deck, layout) = (parts.deck, parts.layout);
+        let (held, commands) = (&held_inputs.lateral, held_inputs.commands);
         let t = bus.time_s;
         bus.lateral.wind_y_mps = Some(bus.wind.y_mps);
         let hook = EarthPoint {
@@ -111,7 +123,7 @@ impl LateralLoop {
 
     /// The state rates of the roll, yaw and sway filters and of the two laws.
     #[inline(always)]
-    pub(crate) fn derivative<T: Taps>(
+    fn rates<T: Taps>(
         &self,
         layout: &LoopLayout,
         x: &[f64],
@@ -131,6 +143,12 @@ impl LateralLoop {
             .derivative(layout.roll_law.of(x), &roll, layout.roll_law.of_mut(rate));
         self.yaw
             .derivative(layout.yaw_law.of(x), &yaw, layout.yaw_law.of_mut(rate));
+    }
+
+    /// The 3-D view's, already on the bus.
+    #[inline(always)]
+    fn aim_height_m(&self, _deck: &DeckGeometry, bus: &Signals) -> f64 {
+        bus.aim_point.h_m
     }
 }
 
