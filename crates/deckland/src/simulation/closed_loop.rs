@@ -14,8 +14,8 @@ use super::commit::CommitPoint;
 use super::deck_predictor::BuiltDeckPredictor;
 use super::flight_computer::FlightComputer;
 pub use super::held::{HeldInputs, StepStreams};
+use super::lateral::part::{LateralHold, LateralPart, ShipParts};
 use super::lateral::LateralLoop;
-use super::lateral_part::{LateralHold, LateralPart, ShipParts};
 pub use super::layout::LoopLayout;
 use super::outer_loop_signals::{OuterLoopInputs, OuterLoopOutputs};
 use super::outer_loops::OuterLoops;
@@ -361,7 +361,8 @@ impl ClosedLoop {
         // lineup and lateral_laws in the 3-D approach (docs/model.md §10.2); otherwise
         // lateral_hold: the aileron and rudder commands of a lateral plant at trim.
         let view = (&view, velocities);
-        lateral.lateral_outputs(aircraft, parts, view, x, held, taps, &mut bus);
+        let lateral_held = (&held.lateral, held.commands);
+        lateral.lateral_outputs(aircraft, parts, view, x, lateral_held, taps, &mut bus);
 
         // direct_lift: the hook's height error to the path → lift (docs/model.md §5.9).
         let dynamic_pressure = plant.dynamic_pressure_pa;

@@ -25,7 +25,6 @@ mod held;
 mod hold;
 mod hold_lateral;
 pub mod lateral;
-mod lateral_part;
 mod layout;
 mod lso;
 mod outcome;

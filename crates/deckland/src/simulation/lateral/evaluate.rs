@@ -2,6 +2,7 @@
 //! ([`LateralPart`]): `ship` (the 3-D pose), `wind` (its y component onto the bus),
 //! `lineup` and `lateral_laws`, and their state rates (docs/model.md §10.1–10.3).
 
+use super::part::{LateralPart, ShipParts};
 use super::pose::DeckView3d;
 use super::{HeldLateral, LateralLoop, LateralMeasurements};
 use crate::aircraft::Plant;
@@ -9,8 +10,7 @@ use crate::environment::{
     DeckGeometry, EarthPoint, EarthVelocity, LateralShipMotionState, ShipMotionState, ShipPose,
     ShipPoseRate,
 };
-use crate::simulation::held::HeldInputs;
-use crate::simulation::lateral_part::{LateralPart, ShipParts};
+use crate::simulation::flight_computer::HeldCommands;
 use crate::simulation::layout::LoopLayout;
 use crate::simulation::signals::Signals;
 use crate::simulation::taps::{LoopBreak, Taps};
@@ -73,12 +73,11 @@ impl LateralPart for LateralLoop {
         parts: ShipParts<'_>,
         (view, (hook_velocity, velocity)): (&DeckView3d, (EarthVelocity, EarthVelocity)),
         x: &[f64],
-        held_inputs: &HeldInputs,
+        (held, commands): (&HeldLateral, Option<HeldCommands>),
         taps: &T,
         bus: &mut Signals,
     ) {
         let (deck, layout) = (parts.deck, parts.layout);
-        let (held, commands) = (&held_inputs.lateral, held_inputs.commands);
         let t = bus.time_s;
         bus.lateral.wind_y_mps = Some(bus.wind.y_mps);
         let hook = EarthPoint {

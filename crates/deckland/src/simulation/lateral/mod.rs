@@ -29,6 +29,7 @@ pub mod floor;
 pub mod forecast;
 mod free_response;
 mod hold;
+pub(crate) mod part;
 pub(crate) mod pose;
 pub mod touchdown;
 

@@ -1,5 +1,5 @@
 //! The loop's lateral part (docs/model.md §10.1): in the 3-D approach, the ship's 3-D
-//! view, the lineup and the lateral laws (`LateralLoop`, `lateral/evaluate.rs`); in a
+//! view, the lineup and the lateral laws (`LateralLoop`, `evaluate.rs`); in a
 //! loop without them, the ship's longitudinal pose and the lateral hold
 //! ([`LateralHold`]).
 //!
@@ -7,16 +7,16 @@
 //! once per evaluation as the plant is: the blocks' code has no branch on whether the
 //! approach is 3-D.
 
-use super::blocks::plant;
-use super::held::HeldInputs;
-use super::lateral::HeldLateral;
-use super::layout::LoopLayout;
-use super::signals::Signals;
-use super::taps::Taps;
+use super::HeldLateral;
 use crate::aircraft::Plant;
 use crate::environment::{
     DeckGeometry, EarthVelocity, ShipMotion, ShipMotionState, ShipPose, ShipPoseRate,
 };
+use crate::simulation::blocks::plant;
+use crate::simulation::flight_computer::HeldCommands;
+use crate::simulation::layout::LoopLayout;
+use crate::simulation::signals::Signals;
+use crate::simulation::taps::Taps;
 
 /// What the lateral part reads of the loop besides the state, the held inputs and the
 /// bus: the ship's model, the deck, the state's layout and the ship's start.
@@ -52,8 +52,8 @@ pub(crate) trait LateralPart {
     ) -> Self::View;
 
     /// The aileron and rudder commands onto `bus`: the lineup and the lateral laws on the
-    /// ship block's `view` and the hook's and the CG's velocities, or the `aircraft`'s
-    /// held commands.
+    /// ship block's `view` and the hook's and the CG's velocities, with what the step
+    /// holds and the flight computer's frame commands, or the `aircraft`'s held commands.
     #[allow(clippy::too_many_arguments)]
     fn lateral_outputs<P: Plant, T: Taps>(
         &self,
@@ -61,7 +61,7 @@ pub(crate) trait LateralPart {
         parts: ShipParts<'_>,
         view: (&Self::View, (EarthVelocity, EarthVelocity)),
         x: &[f64],
-        held: &HeldInputs,
+        held: (&HeldLateral, Option<HeldCommands>),
         taps: &T,
         bus: &mut Signals,
     );
@@ -120,7 +120,7 @@ impl LateralPart for LateralHold {
         _parts: ShipParts<'_>,
         _view: (&(), (EarthVelocity, EarthVelocity)),
         _x: &[f64],
-        _held: &HeldInputs,
+        _held: (&HeldLateral, Option<HeldCommands>),
         _taps: &T,
         bus: &mut Signals,
     ) {
