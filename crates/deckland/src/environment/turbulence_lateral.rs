@@ -42,6 +42,18 @@ impl LateralTurbulence {
         turbulence
     }
 
+    /// No lateral turbulence (the longitudinal approach's): v1 = 0, nothing drawn from
+    /// the `turbulence_v` stream.
+    pub fn off(parameters: &WindParameters, streams: &RandomStreams) -> Self {
+        Self::new(
+            &WindParameters {
+                turbulence: false,
+                ..*parameters
+            },
+            streams,
+        )
+    }
+
     /// σ_v (m/s).
     pub fn sigma_mps(&self) -> f64 {
         self.sigma_mps

@@ -22,8 +22,9 @@ pub struct WindModel {
     /// model is set up for (0 for the 3-DOF approach, where it is −(V_wd − V_ship) bit
     /// for bit), zero when the mean wind is off.
     mean: Wind,
-    /// Lateral turbulence v1, in the three-dimensional model only.
-    lateral_turbulence: Option<LateralTurbulence>,
+    /// Lateral turbulence v1: on in the three-dimensional model (with turbulence on),
+    /// off (zero, nothing drawn) in the longitudinal one.
+    lateral_turbulence: LateralTurbulence,
 }
 
 impl WindModel {
@@ -45,7 +46,7 @@ impl WindModel {
             ship_forward_speed_mps,
             turbulence: Turbulence::new(&parameters, streams),
             mean: Self::mean_wind(&parameters, ship_forward_speed_mps, 0.0),
-            lateral_turbulence: None,
+            lateral_turbulence: LateralTurbulence::off(&parameters, streams),
         })
     }
 
@@ -70,14 +71,14 @@ impl WindModel {
     /// deck angled `deck_angle_rad` (rad) to the final bearing
     /// ([`super::mean_wind_over_angled_deck`]) and lateral turbulence v1 from the
     /// `turbulence_v` stream; every other component and stream as before. Without this
-    /// call (the 3-DOF approach) the deck angle is 0 and there is no v1.
+    /// call (the 3-DOF approach) the deck angle is 0 and v1 is off (zero, nothing drawn).
     pub fn three_dimensional(mut self, deck_angle_rad: f64, streams: &RandomStreams) -> Self {
         self.mean = Self::mean_wind(
             &self.parameters,
             self.ship_forward_speed_mps,
             deck_angle_rad,
         );
-        self.lateral_turbulence = Some(LateralTurbulence::new(&self.parameters, streams));
+        self.lateral_turbulence = LateralTurbulence::new(&self.parameters, streams);
         self
     }
 
@@ -90,9 +91,7 @@ impl WindModel {
     /// its time constant is τ = L/V. Call once per step, outside the RK4 stages.
     pub fn advance(&mut self, dt: f64, airspeed_mps: f64) {
         self.turbulence.advance(dt, airspeed_mps);
-        if let Some(lateral) = &mut self.lateral_turbulence {
-            lateral.advance(dt, airspeed_mps);
-        }
+        self.lateral_turbulence.advance(dt, airspeed_mps);
     }
 
     /// Every component at time `time_s` (s) and X = `distance_aft_m` (m, positive aft).
@@ -107,10 +106,9 @@ impl WindModel {
         };
         WindComponents {
             mean: self.mean,
-            turbulence: match &self.lateral_turbulence {
-                None => self.turbulence.wind(),
-                Some(lateral) => self.turbulence.wind() + lateral.wind(),
-            },
+            // Off, v1 is +0 and adds +0 to components that are never −0 (zero when
+            // turbulence is off, a continuous random value when on): the same wind.
+            turbulence: self.turbulence.wind() + self.lateral_turbulence.wind(),
             steady_wake: if p.steady_wake && wake > 0.0 {
                 scaled(steady_wake(distance_aft_m))
             } else {
