@@ -1,9 +1,9 @@
 //! `deckland.campaign`: N approaches in parallel, as `deckland campaign` flies them.
 //!
 //! The same [`CampaignSpec`] and [`run_campaign`] as the CLI, so the runs (their seeds,
-//! dispersions and results) and the rows of `runs.csv` ([`RunRow`]) are the CLI's, bit
-//! for bit, for any number of threads. Ctrl-C stops the workers before their next run
-//! and raises `KeyboardInterrupt`.
+//! dispersions and results) and the runs table of `runs.csv` ([`RunsTable`]) are the
+//! CLI's, bit for bit, for any number of threads. Ctrl-C stops the workers before their
+//! next run and raises `KeyboardInterrupt`.
 //!
 //! `campaign_shard` flies one shard K/M (the runs i with i mod M = K) and returns it as
 //! text that any process can carry (JSON, its rows as `runs.csv`, whose numbers read
@@ -17,10 +17,10 @@ use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::time::{Duration, Instant};
 
 use deckland::monte_carlo::{
-    flies_three_dimensional_approach, lateral_statistics, merge_shards, parse_runs_csv,
-    run_campaign, runs_csv_text, CampaignResult, CampaignSpec, CampaignSummary, LateralRow,
-    LateralStatistics, RunRecord, RunRow, Shard, ShardIdentity, ShardRows, TrapSheetStatistics,
-    DEFAULT_TARGET_RATE, LSO_RUN_COLUMNS, MAX_CAMPAIGN_SEED, MAX_THREADS, SHARD_SCHEME,
+    merge_shards, parse_runs_csv, run_campaign, runs_csv_text, CampaignResult, CampaignSpec,
+    CampaignSummary, LateralStatistics, RunRecord, RunsSchema, RunsTable, Shard, ShardIdentity,
+    ShardRows, TrapSheetStatistics, DEFAULT_TARGET_RATE, MAX_CAMPAIGN_SEED, MAX_THREADS,
+    SHARD_SCHEME,
 };
 use deckland::scenario::load_scenario_in as load_scenario;
 use deckland_cli::folders::CampaignReport;
@@ -34,55 +34,20 @@ use crate::errors::{argument_error, strict_integer, value_error};
 use crate::folders::Destination;
 use crate::scenario::Scenario;
 
-/// The rows of `runs.csv` as columns: `rows`, then for a 3-D approach campaign each
-/// row's lateral and trap-sheet columns ([`LateralRow`]), as the CLI writes them; and the
-/// statistics of those 3-D columns for the summary.
+/// The runs table as columns, in its schema's order (the columns of `runs.csv`, as the
+/// CLI writes them), and the statistics of its lateral group's columns for the summary
+/// (`None` when its schema has none).
 #[allow(clippy::type_complexity)]
 fn table_of(
-    rows: &[RunRow<'_>],
-    lateral: Option<&[LateralRow]>,
+    table: &RunsTable<'_>,
 ) -> PyResult<(
     Columns,
-    Option<Columns>,
     Option<LateralStatistics>,
     Option<TrapSheetStatistics>,
 )> {
-    let mut table = Columns::with_capacity(rows.len());
-    for row in rows {
-        table.push(row).map_err(value_error)?;
-    }
-    let Some(lateral) = lateral else {
-        return Ok((table, None, None, None));
-    };
-    let mut columns = Columns::with_capacity(lateral.len());
-    for row in lateral {
-        columns.push(row).map_err(value_error)?;
-    }
-    let (statistics, trap_sheet) = lateral_statistics(lateral);
-    Ok((table, Some(columns), statistics, Some(trap_sheet)))
-}
-
-/// `table` and the 3-D columns after it as one dict of numpy arrays, in `runs.csv`'s
-/// column order.
-fn into_dict<'py>(
-    py: Python<'py>,
-    table: Columns,
-    lateral: Option<Columns>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let dict = crate::columns::into_dict(table, py)?;
-    if let Some(lateral) = lateral {
-        for (name, column) in crate::columns::into_dict(lateral, py)?.iter() {
-            dict.set_item(name, column)?;
-        }
-        // The LSO's columns last, after the lateral ones, as in `runs.csv`.
-        for name in LSO_RUN_COLUMNS {
-            if let Some(column) = dict.get_item(name)? {
-                dict.del_item(name)?;
-                dict.set_item(name, column)?;
-            }
-        }
-    }
-    Ok(dict)
+    let columns = table.columns().map_err(value_error)?;
+    let (statistics, trap_sheet) = table.lateral_statistics();
+    Ok((columns, statistics, trap_sheet))
 }
 
 /// The most approaches of one campaign (per controller), and so the most shards: the
@@ -154,9 +119,8 @@ pub fn campaign<'py>(
     let result = fly(py, &spec, threads, progress)?;
     let elapsed_s = started.elapsed().as_secs_f64();
 
-    let rows = result.rows();
-    let lateral_rows = lateral_rows(&spec, &result);
-    let (table, lateral_table, lateral, trap_sheet) = table_of(&rows, lateral_rows.as_deref())?;
+    let table = RunsTable::of_result(RunsSchema::of(&spec.scenario), &result);
+    let (columns, lateral, trap_sheet) = table_of(&table)?;
     let summary = CampaignSummary::of_result(&result, seed, DEFAULT_TARGET_RATE);
     let report = CampaignReport {
         scenario_file: scenario.name.clone(),
@@ -175,11 +139,11 @@ pub fn campaign<'py>(
         Some(destination) => {
             let scenario_toml = toml::to_string(&spec.scenario).map_err(value_error)?;
             let contents = (&spec.scenario, scenario_toml.as_str());
-            write_folder(py, destination, contents, &report, &rows, lateral_rows)?
+            write_folder(py, destination, contents, &report, &table)?
         }
     };
     Ok((
-        into_dict(py, table, lateral_table)?,
+        crate::columns::into_dict(columns, py)?,
         to_python(py, &report)?,
         folder,
     ))
@@ -192,26 +156,12 @@ fn write_folder(
     destination: Destination,
     (scenario, scenario_toml): (&deckland::scenario::Scenario, &str),
     report: &CampaignReport,
-    rows: &[RunRow],
-    lateral_rows: Option<Vec<LateralRow>>,
+    table: &RunsTable,
 ) -> PyResult<Option<String>> {
     let written = destination.write(py, |request| {
-        deckland_cli::folders::write_campaign(
-            request,
-            scenario,
-            scenario_toml,
-            report,
-            rows,
-            lateral_rows,
-        )
+        deckland_cli::folders::write_campaign(request, scenario, scenario_toml, report, table)
     })?;
     Ok(Some(written))
-}
-
-/// A 3-D approach campaign's [`LateralRow`] of each record; `None` for a 3-DOF campaign.
-fn lateral_rows(spec: &CampaignSpec, result: &CampaignResult) -> Option<Vec<LateralRow>> {
-    flies_three_dimensional_approach(&spec.scenario)
-        .then(|| result.records.iter().map(LateralRow::of).collect())
 }
 
 /// How often a campaign calls its `progress` callback at most.
@@ -337,9 +287,8 @@ pub fn campaign_shard(
     let started = Instant::now();
     let result = fly(py, &spec, threads, None)?;
     let elapsed_s = started.elapsed().as_secs_f64();
-    let rows = result.rows();
-    let runs_csv =
-        runs_csv_text(&rows, lateral_rows(&spec, &result).as_deref()).map_err(value_error)?;
+    let table = RunsTable::of_result(RunsSchema::of(&spec.scenario), &result);
+    let runs_csv = runs_csv_text(&table).map_err(value_error)?;
     let payload = ShardPayload {
         scenario_name: scenario.name.clone(),
         scenario_toml: toml::to_string(&spec.scenario).map_err(value_error)?,
@@ -391,7 +340,7 @@ pub fn merge_shards_text<'py>(
             scenario_name = payload.scenario_name.clone();
         }
         // The library's row schema: the columns, each field's type and range.
-        let parsed = parse_runs_csv(&format!("shard {shard}"), &payload.runs_csv)
+        let table = parse_runs_csv(&format!("shard {shard}"), &payload.runs_csv)
             .map_err(|e| value_error(e.to_string()))?;
         parts.push(ShardRows {
             identity: ShardIdentity {
@@ -403,8 +352,7 @@ pub fn merge_shards_text<'py>(
                 shard,
                 partial: payload.partial,
             },
-            rows: parsed.rows,
-            lateral: parsed.lateral,
+            table,
         });
     }
     // Whatever a tampered shard does inside the library, it is a ValueError here, never
@@ -426,8 +374,7 @@ pub fn merge_shards_text<'py>(
         ))
     })?
     .map_err(|e| value_error(format!("cannot merge: {e}")))?;
-    let (table, lateral_table, lateral, trap_sheet) =
-        table_of(&merged.rows, merged.lateral.as_deref())?;
+    let (columns, lateral, trap_sheet) = table_of(&merged.table)?;
     let report = CampaignReport::merged(
         scenario_name.clone(),
         &summary,
@@ -446,18 +393,11 @@ pub fn merge_shards_text<'py>(
             )
             .map_err(|e| value_error(format!("cannot merge: {e}")))?;
             let contents = (&scenario, merged.scenario_toml.as_str());
-            write_folder(
-                py,
-                destination,
-                contents,
-                &report,
-                &merged.rows,
-                merged.lateral.clone(),
-            )?
+            write_folder(py, destination, contents, &report, &merged.table)?
         }
     };
     Ok((
-        into_dict(py, table, lateral_table)?,
+        crate::columns::into_dict(columns, py)?,
         to_python(py, &report)?,
         folder,
     ))

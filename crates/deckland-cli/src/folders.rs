@@ -12,7 +12,7 @@ use std::sync::Mutex;
 
 use anyhow::Result;
 use deckland::experiments::ApproachRun;
-use deckland::monte_carlo::{LateralRow, RunRow};
+use deckland::monte_carlo::RunsTable;
 use deckland::rare::RareResult;
 use deckland::scenario::Scenario;
 
@@ -87,22 +87,19 @@ pub fn write_approach(
 
 /// Writes the folder `deckland campaign` (or `merge`) writes: `scenario.toml`, `runs.csv`,
 /// `runs.parquet`, `summary.json` (`report`), the plots and `report.html`. `scenario_toml`
-/// is the scenario's text as the campaign wrote it (a merge's, its shards'), `rows` the
-/// rows of `runs.csv` sorted by run and controller, `lateral_rows` a 3-D campaign's
-/// lateral columns (one per row). Returns the folder.
+/// is the scenario's text as the campaign wrote it (a merge's, its shards'), `table` the
+/// runs table of `runs.csv`, its rows sorted by run and controller. Returns the folder.
 pub fn write_campaign(
     request: &FolderRequest,
     scenario: &Scenario,
     scenario_toml: &str,
     report: &CampaignReport,
-    rows: &[RunRow],
-    lateral_rows: Option<Vec<LateralRow>>,
+    table: &RunsTable,
 ) -> Result<PathBuf> {
     let contents = CampaignFolder {
-        lateral_rows,
         scenario,
         scenario_toml,
-        rows,
+        table,
         report,
         title: folder::title(Path::new(&report.scenario_file), report),
     };

@@ -1,7 +1,8 @@
 //! `runs.parquet`: the rows of `runs.csv` as an Apache Parquet file, for large campaigns
 //! read by pandas, polars or pyarrow without parsing text.
 //!
-//! The columns are those of [`RunRow`] (taken apart by the library's
+//! The columns are those of the runs table's schema ([`RunsTable::columns`]: the fields
+//! of [`RunRow`] and of the schema's other groups taken apart by the library's
 //! [`Columns`], so the file has exactly the CSV's columns, in its order), with one type
 //! each whatever the values of a campaign, so the files of several campaigns concatenate:
 //!
@@ -9,25 +10,30 @@
 //! - `controller`, `outcome`, `reason`, `lso_grade`, `lso_comment`,
 //!   `wave_off_criterion`: UTF-8 text (`reason` missing for a trap, the LSO's columns for
 //!   a run that never flew, the criterion for a run that did not wave off);
+//! - `off_centre`: an optional boolean;
 //! - every other column: an optional double (missing where the CSV field is empty; `wire`
 //!   too, as pandas reads it from the CSV).
 //!
-//! A 3-D campaign adds the lateral columns of its `runs.csv` after these
-//! ([`LATERAL_RUN_COLUMNS`], then the trap sheet's [`TRAP_SHEET_RUN_COLUMNS`]): optional
-//! doubles, and `off_centre` an optional boolean. The columns appended last
-//! ([`LSO_RUN_COLUMNS`]: `lso_grade`, `lso_points`, `lso_comment`, `wave_off_criterion`,
+//! A 3-D campaign's schema has the lateral columns of its `runs.csv` after those of
+//! every campaign ([`LATERAL_RUN_COLUMNS`], then the trap sheet's
+//! [`TRAP_SHEET_RUN_COLUMNS`]). The columns appended last ([`LSO_RUN_COLUMNS`]:
+//! `lso_grade`, `lso_points`, `lso_comment`, `wave_off_criterion`,
 //! `deck_within_limits_pct` and the commit point's `commit_ramp_strike_probability`,
 //! `commit_hard_landing_probability`, `commit_off_centre_probability`, optional doubles)
 //! come last, after the lateral ones, as in `runs.csv`.
 //!
 //! One row group, Snappy compression (pandas' default). A value that is not finite is
 //! refused, naming its run and column: nothing non-finite reaches a file.
+//!
+//! [`RunRow`]: deckland::monte_carlo::RunRow
+//! [`Columns`]: deckland::recording::Columns
+//! [`LATERAL_RUN_COLUMNS`]: deckland::monte_carlo::LATERAL_RUN_COLUMNS
+//! [`TRAP_SHEET_RUN_COLUMNS`]: deckland::monte_carlo::TRAP_SHEET_RUN_COLUMNS
+//! [`LSO_RUN_COLUMNS`]: deckland::monte_carlo::LSO_RUN_COLUMNS
 
 use anyhow::{bail, Context, Result};
-use deckland::monte_carlo::{
-    LateralRow, RunRow, LATERAL_RUN_COLUMNS, LSO_RUN_COLUMNS, TRAP_SHEET_RUN_COLUMNS,
-};
-use deckland::recording::{Cell, Columns};
+use deckland::monte_carlo::RunsTable;
+use deckland::recording::Cell;
 use parquet::basic::Compression;
 use parquet::data_type::{BoolType, ByteArray, ByteArrayType, DoubleType, Int64Type};
 use parquet::file::properties::WriterProperties;
@@ -84,100 +90,28 @@ fn schema(names: &[&str]) -> String {
     message
 }
 
-/// Writes `rows` to a Parquet file at `path` (the caller makes it atomic), with a 3-D
-/// campaign's `lateral` values of each row after its columns.
-pub fn write_runs(path: &Path, rows: &[RunRow], lateral: Option<&[LateralRow]>) -> Result<()> {
-    let mut table = Columns::with_capacity(rows.len());
-    for row in rows {
-        table.push(row).map_err(|e| anyhow::anyhow!("{e}"))?;
-    }
-    if table.rows() == 0 {
+/// Writes the runs `table` to a Parquet file at `path` (the caller makes it atomic): its
+/// columns in its schema's order, as in `runs.csv`.
+pub fn write_runs(path: &Path, table: &RunsTable) -> Result<()> {
+    let columns = table.columns().map_err(|e| anyhow::anyhow!("{e}"))?;
+    if columns.rows() == 0 {
         // No row names the columns (a campaign stopped before its first run finished).
         bail!("no finished run to write to runs.parquet");
     }
-    // The LSO's columns last, after a 3-D campaign's lateral ones, as in `runs.csv`.
-    let mut names: Vec<&str> = table
-        .names()
-        .iter()
-        .copied()
-        .filter(|n| !LSO_RUN_COLUMNS.contains(n))
-        .collect();
-    if lateral.is_some() {
-        names.extend(LATERAL_RUN_COLUMNS);
-        names.extend(TRAP_SHEET_RUN_COLUMNS);
-    }
-    names.extend(LSO_RUN_COLUMNS);
-    let schema =
-        Arc::new(parse_message_type(&schema(&names)).context("cannot make the Parquet schema")?);
+    let schema = Arc::new(
+        parse_message_type(&schema(columns.names())).context("cannot make the Parquet schema")?,
+    );
     let properties = Arc::new(
         WriterProperties::builder()
             .set_compression(Compression::SNAPPY)
             .set_created_by(format!("deckland {}", env!("CARGO_PKG_VERSION")))
             .build(),
     );
-    let run_indices: Vec<String> = rows.iter().map(|r| r.run_index.to_string()).collect();
+    let run_indices: Vec<String> = table.rows.iter().map(|r| r.run_index.to_string()).collect();
     let file = std::fs::File::create(path)?;
     let mut writer = SerializedFileWriter::new(file, schema, properties)?;
     let mut group = writer.next_row_group()?;
-    let (lso, base): (Vec<_>, Vec<_>) = table
-        .into_columns()
-        .into_iter()
-        .partition(|(name, _)| LSO_RUN_COLUMNS.contains(name));
-    for (name, cells) in &base {
-        write_cells(&mut group, name, cells, &run_indices)?;
-    }
-    if let Some(lateral) = lateral {
-        let write_reals = |group: &mut SerializedRowGroupWriter<'_, std::fs::File>,
-                           name: &str,
-                           cells: Vec<Option<f64>>|
-         -> Result<()> {
-            let Some(mut column) = group.next_column()? else {
-                bail!("the Parquet schema has no column {name}");
-            };
-            if let Some(row) = cells.iter().position(|c| c.is_some_and(|v| !v.is_finite())) {
-                bail!("run {}: `{name}` is not a finite number", run_indices[row]);
-            }
-            let present: Vec<i16> = cells.iter().map(|c| i16::from(c.is_some())).collect();
-            let values: Vec<f64> = cells.into_iter().flatten().collect();
-            column
-                .typed::<DoubleType>()
-                .write_batch(&values, Some(&present), None)?;
-            column.close()?;
-            Ok(())
-        };
-        let reals: [fn(&LateralRow) -> Option<f64>; 5] = [
-            |v| v.touchdown.0,
-            |v| v.touchdown.1,
-            |v| v.touchdown.2,
-            |v| v.touchdown.3,
-            |v| v.touchdown.4,
-        ];
-        for (name, value) in LATERAL_RUN_COLUMNS.iter().zip(reals) {
-            write_reals(&mut group, name, lateral.iter().map(value).collect())?;
-        }
-        {
-            let Some(mut column) = group.next_column()? else {
-                bail!("the Parquet schema has no column off_centre");
-            };
-            let present: Vec<i16> = lateral
-                .iter()
-                .map(|v| i16::from(v.touchdown.5.is_some()))
-                .collect();
-            let values: Vec<bool> = lateral.iter().filter_map(|v| v.touchdown.5).collect();
-            column
-                .typed::<BoolType>()
-                .write_batch(&values, Some(&present), None)?;
-            column.close()?;
-        }
-        for (k, name) in TRAP_SHEET_RUN_COLUMNS.iter().enumerate() {
-            write_reals(
-                &mut group,
-                name,
-                lateral.iter().map(|v| v.trap_sheet[k]).collect(),
-            )?;
-        }
-    }
-    for (name, cells) in &lso {
+    for (name, cells) in &columns.into_columns() {
         write_cells(&mut group, name, cells, &run_indices)?;
     }
     group.close()?;
@@ -234,7 +168,24 @@ fn write_cells(
                 .typed::<DoubleType>()
                 .write_batch(&values, Some(&present), None)?;
         }
-        Kind::Boolean => bail!("`{name}` is not a boolean column of runs.csv"),
+        Kind::Boolean => {
+            let mut values = Vec::with_capacity(cells.len());
+            for (row, cell) in cells.iter().enumerate() {
+                match cell {
+                    Cell::Missing => {}
+                    // A boolean is taken apart as 0 or 1 (an optional one as a real).
+                    Cell::Integer(v @ (0 | 1)) => values.push(*v == 1),
+                    Cell::Float(v) if *v == 0.0 || *v == 1.0 => values.push(*v == 1.0),
+                    other => bail!(
+                        "run {}: `{name}` is {other:?}, not true or false",
+                        run_indices[row]
+                    ),
+                }
+            }
+            column
+                .typed::<BoolType>()
+                .write_batch(&values, Some(&present), None)?;
+        }
         Kind::Text => {
             let mut values = Vec::with_capacity(cells.len());
             for (row, cell) in cells.iter().enumerate() {

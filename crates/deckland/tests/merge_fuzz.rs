@@ -23,7 +23,8 @@
 mod shard_fixture;
 
 use deckland::monte_carlo::{
-    merge_shards, parse_runs_csv, run_seed, LateralRow, MergeError, Shard, ShardIdentity, ShardRows,
+    merge_shards, parse_runs_csv, run_seed, LateralRow, MergeError, RunsSchema, Shard,
+    ShardIdentity, ShardRows,
 };
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
@@ -169,12 +170,10 @@ fn tamper(shards: &mut Vec<Carried>, &(kind, a, b, c): &Tampering) {
 fn merge(shards: &[Carried]) -> Result<deckland::monte_carlo::MergedCampaign, MergeError> {
     let mut parts = Vec::new();
     for shard in shards {
-        let rows =
-            parse_runs_csv(&format!("{}/runs.csv", shard.identity.source), &shard.text)?.rows;
+        let table = parse_runs_csv(&format!("{}/runs.csv", shard.identity.source), &shard.text)?;
         parts.push(ShardRows {
             identity: shard.identity.clone(),
-            rows,
-            lateral: None,
+            table,
         });
     }
     merge_shards(parts)
@@ -189,7 +188,7 @@ fn tampered_and_mismatched_shards_are_refused_or_merge_into_a_campaign() {
     let original: Vec<Carried> = flown_shards()
         .into_iter()
         .map(|s| Carried {
-            text: rows_csv(&s.rows),
+            text: rows_csv(&s.table.rows),
             identity: s.identity,
         })
         .collect();
@@ -222,8 +221,11 @@ fn tampered_and_mismatched_shards_are_refused_or_merge_into_a_campaign() {
             }
             Ok(merged) => {
                 let variants = merged.controllers.len() as u64;
-                prop_assert_eq!(merged.rows.len() as u64, merged.requested_runs * variants);
-                for (position, row) in merged.rows.iter().enumerate() {
+                prop_assert_eq!(
+                    merged.table.rows.len() as u64,
+                    merged.requested_runs * variants
+                );
+                for (position, row) in merged.table.rows.iter().enumerate() {
                     prop_assert!(row.check().is_ok(), "{row:?}");
                     prop_assert_eq!(row.run_index, position as u64 / variants);
                     prop_assert_eq!(
@@ -285,7 +287,8 @@ fn r3_merge_checks_lateral_columns_against_the_scenario_and_each_row() {
     // Lateral columns appended under a scenario that says 3dof.
     let mut appended = original.clone();
     for shard in &mut appended {
-        shard.lateral = Some(vec![blank; shard.rows.len()]);
+        shard.table.schema = RunsSchema::WITH_LATERAL;
+        shard.table.lateral_rows = vec![blank; shard.table.rows.len()];
     }
     refused(
         appended,
@@ -294,11 +297,12 @@ fn r3_merge_checks_lateral_columns_against_the_scenario_and_each_row() {
     // Touched-down rows of a 3-D shard with blank lateral values.
     let mut blanks = stripped;
     for shard in &mut blanks {
-        shard.lateral = Some(vec![blank; shard.rows.len()]);
+        shard.table.schema = RunsSchema::WITH_LATERAL;
+        shard.table.lateral_rows = vec![blank; shard.table.rows.len()];
     }
     assert!(original
         .iter()
-        .flat_map(|s| &s.rows)
+        .flat_map(|s| &s.table.rows)
         .any(|r| r.touchdown_distance_m.is_some()));
     refused(blanks, &["touchdown_lateral_offset_m", "touched down"]);
     // An empty (or blank) scenario.toml, and one that is not a scenario.

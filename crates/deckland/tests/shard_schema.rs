@@ -24,16 +24,19 @@ fn every_row_a_campaign_writes_passes_the_schema_and_reads_back() {
     let shards = flown_shards();
     let outcomes: std::collections::BTreeSet<String> = shards
         .iter()
-        .flat_map(|s| s.rows.iter().map(|r| r.outcome.to_string()))
+        .flat_map(|s| s.table.rows.iter().map(|r| r.outcome.to_string()))
         .collect();
     // The fixture reaches several outcome classes, so the schema is tried on each.
     assert!(outcomes.len() >= 2, "{outcomes:?}");
     for shard in &shards {
-        for row in &shard.rows {
+        for row in &shard.table.rows {
             row.check().unwrap_or_else(|e| panic!("{row:?}: {e}"));
         }
-        let text = rows_csv(&shard.rows);
-        assert_eq!(parse_runs_csv("runs.csv", &text).unwrap().rows, shard.rows);
+        let text = rows_csv(&shard.table.rows);
+        assert_eq!(
+            parse_runs_csv("runs.csv", &text).unwrap().rows,
+            shard.table.rows
+        );
     }
     assert!(merge_shards(shards).is_ok());
 }
@@ -42,20 +45,23 @@ fn every_row_a_campaign_writes_passes_the_schema_and_reads_back() {
 #[test]
 fn regression_rows_no_campaign_writes_are_refused_by_row_and_column() {
     let shards = flown_shards();
-    let text = rows_csv(&shards[0].rows);
+    let text = rows_csv(&shards[0].table.rows);
     let trap = shards[0]
+        .table
         .rows
         .iter()
         .position(|r| r.outcome == "trap")
         .expect("a trap in the fixture")
         + 1;
     let not_trap = shards[0]
+        .table
         .rows
         .iter()
         .position(|r| r.outcome != "trap")
         .expect("another outcome in the fixture")
         + 1;
     let committed = shards[0]
+        .table
         .rows
         .iter()
         .position(|r| r.commit_ramp_strike_probability.is_some())
@@ -177,7 +183,7 @@ fn regression_rows_no_campaign_writes_are_refused_by_row_and_column() {
         .unwrap_err()
         .to_string();
     assert!(error.contains("`commit_off_centre_probability`"), "{error}");
-    if let Some(never) = shards[0].rows.iter().position(|r| !r.flown()) {
+    if let Some(never) = shards[0].table.rows.iter().position(|r| !r.flown()) {
         let error = parse_runs_csv("s0/runs.csv", &set_both(never + 1, "0.1")).unwrap_err();
         let error = error.to_string();
         assert!(
@@ -201,7 +207,7 @@ fn regression_rows_no_campaign_writes_are_refused_by_row_and_column() {
 #[test]
 fn regression_runs_csv_text_must_be_a_whole_campaign_table() {
     let shards = flown_shards();
-    let text = rows_csv(&shards[0].rows);
+    let text = rows_csv(&shards[0].table.rows);
     // A column removed (from the header and every row): the last, the off-centre
     // probability at the commit point (since issue 45, item 1).
     let without_off_centre: String = text
@@ -251,7 +257,7 @@ fn regression_shard_identities_beyond_the_limits_are_refused() {
     let error = merge_after(&shards, |s| {
         for shard in s.iter_mut() {
             shard.identity.controllers.clear();
-            shard.rows.clear();
+            shard.table.rows.clear();
         }
     });
     assert!(error.to_string().contains("`controllers` is []"), "{error}");

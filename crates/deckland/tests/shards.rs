@@ -8,7 +8,8 @@ mod common;
 use deckland::aircraft::PlantModel;
 use deckland::monte_carlo::{
     merge_shards, run_campaign, CampaignResult, CampaignSpec, CampaignStatistics, CampaignSummary,
-    MergeError, RunRecord, RunRow, Shard, ShardIdentity, ShardRows, DEFAULT_TARGET_RATE,
+    MergeError, RunRecord, RunRow, RunsSchema, RunsTable, Shard, ShardIdentity, ShardRows,
+    DEFAULT_TARGET_RATE,
 };
 use deckland::scenario::Scenario;
 use std::sync::atomic::AtomicBool;
@@ -38,13 +39,15 @@ fn shard_rows(result: &CampaignResult, seed: u64, source: &str) -> ShardRows {
             shard: result.shard,
             partial: result.partial,
         },
-        rows: result
-            .records
-            .iter()
-            // As read back from a file: owning its text.
-            .map(|r| RunRow::new(r, &result.controller_labels).into_owned())
-            .collect(),
-        lateral: None,
+        table: RunsTable {
+            rows: result
+                .records
+                .iter()
+                // As read back from a file: owning its text.
+                .map(|r| RunRow::new(r, &result.controller_labels).into_owned())
+                .collect(),
+            ..RunsTable::empty(RunsSchema::LONGITUDINAL)
+        },
     }
 }
 
@@ -68,11 +71,11 @@ fn three_shards_merged_are_the_campaign_flown_whole() {
         .iter()
         .map(|r| RunRow::new(r, &whole.controller_labels))
         .collect();
-    assert_eq!(merged.rows, expected);
+    assert_eq!(merged.table.rows, expected);
     assert_eq!(merged.sources, ["shard-0", "shard-1", "shard-2"]);
     // The statistics from the rows are those from the records.
     let summary = CampaignSummary::of_rows(
-        &merged.rows,
+        &merged.table.rows,
         &merged.controllers,
         seed,
         runs,
@@ -115,7 +118,8 @@ fn a_merge_refuses_shards_that_do_not_belong_together() {
         touchdown: (None, None, None, None, None, None),
         trap_sheet: [None; 24],
     };
-    lateral[1].lateral = Some(vec![blank; lateral[1].rows.len()]);
+    lateral[1].table.schema = RunsSchema::WITH_LATERAL;
+    lateral[1].table.lateral_rows = vec![blank; lateral[1].table.rows.len()];
     let error = merge_shards(lateral.clone()).unwrap_err().to_string();
     assert!(error.contains("runs.csv columns"), "{error}");
     assert!(error.contains("`aircraft.model` = \"3dof\""), "{error}");
@@ -123,10 +127,11 @@ fn a_merge_refuses_shards_that_do_not_belong_together() {
     let mut three_d = short_dispersed_scenario();
     three_d.aircraft.model = PlantModel::SixDof;
     for shard in &mut lateral {
-        shard.lateral = Some(vec![blank; shard.rows.len()]);
+        shard.table.schema = RunsSchema::WITH_LATERAL;
+        shard.table.lateral_rows = vec![blank; shard.table.rows.len()];
         shard.identity.scenario_toml = toml::to_string(&three_d).unwrap();
     }
-    lateral[2].lateral.as_mut().unwrap().pop();
+    lateral[2].table.lateral_rows.pop();
     let error = merge_shards(lateral).unwrap_err().to_string();
     assert!(error.contains("one per row"), "{error}");
 
@@ -151,7 +156,7 @@ fn a_merge_refuses_shards_that_do_not_belong_together() {
 
     let mut partial = all();
     partial[1].identity.partial = true;
-    partial[1].rows.pop();
+    partial[1].table.rows.pop();
     let error = merge_shards(partial).unwrap_err();
     assert!(
         error.to_string().contains("s1 is shard 1/3 stopped"),
@@ -196,7 +201,7 @@ fn a_merge_refuses_shards_that_do_not_belong_together() {
 
     // A truncated shard: its last row lost.
     let mut truncated = all();
-    truncated[2].rows.pop();
+    truncated[2].table.rows.pop();
     let error = merge_shards(truncated).unwrap_err();
     assert!(
         error
@@ -207,21 +212,21 @@ fn a_merge_refuses_shards_that_do_not_belong_together() {
 
     // A row of another shard, a row twice, a row with another campaign's seed.
     let mut foreign = all();
-    let stray = foreign[0].rows[0].clone();
-    foreign[1].rows.push(stray);
+    let stray = foreign[0].table.rows[0].clone();
+    foreign[1].table.rows.push(stray);
     assert!(merge_shards(foreign)
         .unwrap_err()
         .to_string()
         .contains("run 0 (O-PD) belongs to shard 0/3"));
     let mut twice = all();
-    let copy = twice[0].rows[0].clone();
-    twice[0].rows.push(copy);
+    let copy = twice[0].table.rows[0].clone();
+    twice[0].table.rows.push(copy);
     assert!(merge_shards(twice)
         .unwrap_err()
         .to_string()
         .contains("appears twice"));
     let mut reseeded = all();
-    reseeded[0].rows[1].seed += 1;
+    reseeded[0].table.rows[1].seed += 1;
     assert!(merge_shards(reseeded)
         .unwrap_err()
         .to_string()

@@ -127,7 +127,7 @@ fn read_shard(folder: &Path) -> Result<ShardFolder> {
     let scenario_toml = read_text_file(&scenario_path, MAX_SCENARIO_FILE_BYTES, "scenario file")?;
     let runs_path = folder.join("runs.csv");
     let runs_text = read_text_file(&runs_path, MAX_RUNS_CSV_BYTES, "shard's runs.csv")?;
-    let parsed = parse_runs_csv(&runs_path.display().to_string(), &runs_text)?;
+    let table = parse_runs_csv(&runs_path.display().to_string(), &runs_text)?;
     Ok(ShardFolder {
         rows: ShardRows {
             identity: ShardIdentity {
@@ -139,8 +139,7 @@ fn read_shard(folder: &Path) -> Result<ShardFolder> {
                 shard,
                 partial,
             },
-            rows: parsed.rows,
-            lateral: parsed.lateral,
+            table,
         },
         scenario_file,
     })
@@ -170,7 +169,7 @@ pub fn run(args: &MergeArgs) -> Result<()> {
     let scenario = load_scenario_file(&first_folder.join("scenario.toml"))?;
     let summary = CampaignSummary::of_merged(&merged, DEFAULT_TARGET_RATE);
     let output = OutputDir::prepare("merge", args.output.out.as_deref(), args.output.force)?;
-    let (lateral, trap_sheet) = folder::lateral_statistics(merged.lateral.as_deref());
+    let (lateral, trap_sheet) = merged.table.lateral_statistics();
     let report = CampaignReport::merged(
         scenario_file.clone(),
         &summary,
@@ -180,10 +179,9 @@ pub fn run(args: &MergeArgs) -> Result<()> {
         trap_sheet,
     );
     let folder = CampaignFolder {
-        lateral_rows: merged.lateral.clone(),
         scenario: &scenario,
         scenario_toml: &merged.scenario_toml,
-        rows: &merged.rows,
+        table: &merged.table,
         report: &report,
         title: folder::title(Path::new(&scenario_file), &report),
     };

@@ -41,8 +41,8 @@ pub use hook::HookGeometry;
 pub use linearize::{linearize, LinearModel, INPUT_NAMES, INPUT_UNITS, STATE_NAMES, STATE_UNITS};
 pub use parameters::AircraftParameters;
 pub use plant::{
-    LateralKinematics, LongitudinalKinematic, Plant, PlantAirData, PlantCommands, PlantKinematics,
-    PlantModel,
+    ApproachOutcome, LateralKinematics, LongitudinalKinematic, Plant, PlantAirData, PlantCommands,
+    PlantKinematics, PlantModel,
 };
 pub use state::AircraftState;
 pub use trim::{trim, TrimError, TrimPoint, TrimReport, TrimRequest, TrimResiduals};

@@ -49,6 +49,19 @@ impl PlantModel {
         Self::ALL.into_iter().find(|model| model.name() == name)
     }
 
+    /// What an approach flown with the model reports, on an approach that is
+    /// `three_dimensional_approach` or not: the lateral touchdown and the trap sheet too
+    /// for the 6-DOF aircraft on the 3-D approach, the longitudinal outcome alone
+    /// otherwise (the 3-DOF model has no lateral motion; the 6-DOF one on a longitudinal
+    /// approach keeps the wings level). A campaign's runs table has the columns of what
+    /// its approaches report (`monte_carlo::RunsSchema::of`).
+    pub fn approach_outcome(self, three_dimensional_approach: bool) -> ApproachOutcome {
+        match (self, three_dimensional_approach) {
+            (Self::SixDof, true) => ApproachOutcome::WithLateral,
+            (Self::SixDof, false) | (Self::ThreeDof, _) => ApproachOutcome::Longitudinal,
+        }
+    }
+
     /// One line on what the model is (for a command's help).
     pub fn summary(self) -> &'static str {
         match self {
@@ -56,6 +69,16 @@ impl PlantModel {
             Self::SixDof => "The rigid-body 6-DOF model with the lateral-directional axes",
         }
     }
+}
+
+/// What an approach flown with a plant reports ([`PlantModel::approach_outcome`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ApproachOutcome {
+    /// The longitudinal outcome alone: the touchdown along the deck, the sink rate, the
+    /// ramp clearance, the glide-path error, …
+    Longitudinal,
+    /// The longitudinal outcome with the lateral touchdown and the trap sheet.
+    WithLateral,
 }
 
 /// The lateral part of a plant's kinematic outputs (a plant without lateral motion has

@@ -15,8 +15,7 @@ use super::statistics::{Distribution, Proportion};
 use super::trap_sheet::{
     trap_sheet_run_values, TrapSheetRunValues, TrapSheetStatistics, TRAP_SHEET_RUN_COLUMNS,
 };
-use crate::aircraft::PlantModel;
-use crate::scenario::{Mission, Scenario};
+use crate::scenario::Scenario;
 use crate::simulation::lateral::touchdown::{
     MAX_OFF_CENTRE_M, MAX_TOUCHDOWN_BANK_DEG, MAX_TOUCHDOWN_DRIFT_MPS,
 };
@@ -47,12 +46,12 @@ pub type LateralRunValues = (
 );
 
 /// Whether a campaign of `scenario` flies the 3-D approach (the 6-DOF aircraft on an
-/// approach with `approach.three_dimensional`): its `runs.csv` then has the columns of
-/// [`LateralRow`] after those of every campaign.
+/// approach with `approach.three_dimensional`): its runs table's schema
+/// ([`super::RunsSchema::of`]) then has the columns of [`LateralRow`] after those of
+/// every campaign. The plant registry decides it
+/// ([`crate::aircraft::PlantModel::approach_outcome`]).
 pub fn flies_three_dimensional_approach(scenario: &Scenario) -> bool {
-    scenario.aircraft.model == PlantModel::SixDof
-        && scenario.mission == Mission::Approach
-        && scenario.approach.three_dimensional
+    super::RunsSchema::of(scenario).has(super::ColumnGroup::Lateral)
 }
 
 /// What a 3-D approach adds to a run's row: the lateral touchdown

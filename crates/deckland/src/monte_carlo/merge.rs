@@ -14,12 +14,12 @@
 //! row), naming the line and the column at fault, so that every front end (the CLI's
 //! `merge`, Python, Dask) refuses the same inputs with the same words.
 
-use super::lateral::{flies_three_dimensional_approach, LateralRow};
 use super::limits::{
     check_runs, MAX_CONTROLLERS, MAX_CONTROLLER_LABEL_BYTES, MAX_RUNS, MAX_SHARDS,
 };
 use super::merge_error::MergeError;
 use super::row::RunRow;
+use super::runs_table::{RunsSchema, RunsTable};
 use super::seeds::run_seed;
 use super::shard::Shard;
 use crate::scenario::load_scenario;
@@ -46,16 +46,13 @@ pub struct ShardIdentity {
     pub partial: bool,
 }
 
-/// One shard: what it is and its rows.
+/// One shard: what it is and its runs table.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ShardRows {
     /// What the shard is part of.
     pub identity: ShardIdentity,
-    /// Its rows (`runs.csv`), in any order.
-    pub rows: Vec<RunRow<'static>>,
-    /// A 3-D approach campaign's lateral columns, one per row in the same order; `None`
-    /// for a 3-DOF campaign.
-    pub lateral: Option<Vec<LateralRow>>,
+    /// Its runs table (`runs.csv`), the rows in any order.
+    pub table: RunsTable<'static>,
 }
 
 /// The campaign put together from its shards.
@@ -69,11 +66,9 @@ pub struct MergedCampaign {
     pub requested_runs: u64,
     /// The controllers' labels, in order.
     pub controllers: Vec<String>,
-    /// Every run's rows, sorted by run index and controller.
-    pub rows: Vec<RunRow<'static>>,
-    /// A 3-D approach campaign's lateral columns, one per row in the same order; `None`
-    /// for a 3-DOF campaign.
-    pub lateral: Option<Vec<LateralRow>>,
+    /// Every run's rows, sorted by run index and controller, in the schema of the
+    /// scenario flown.
+    pub table: RunsTable<'static>,
     /// The shards' sources, by shard index (the first is shard 0).
     pub sources: Vec<String>,
 }
@@ -202,26 +197,25 @@ pub fn merge_shards(mut shards: Vec<ShardRows>) -> Result<MergedCampaign, MergeE
         .flatten()
         .map(|&p| shards[p].identity.source.clone())
         .collect();
-    let three_dimensional = shards[0].lateral.is_some();
-    let mut pairs: Vec<(RunRow<'static>, Option<LateralRow>)> =
-        shards.into_iter().flat_map(paired).collect();
-    pairs.sort_by_key(|(r, _)| (r.run_index, position_of(&r.controller)));
-    let (rows, lateral): (Vec<_>, Vec<_>) = pairs.into_iter().unzip();
+    let mut table = RunsTable::empty(shards[0].table.schema);
+    for shard in shards {
+        table.append(shard.table);
+    }
+    table.sort_by_key(|r| (r.run_index, position_of(&r.controller)));
     Ok(MergedCampaign {
         scenario_toml: first.scenario_toml,
         campaign_seed: first.campaign_seed,
         requested_runs: first.requested_runs,
         controllers: first.controllers,
-        rows,
-        lateral: three_dimensional.then(|| lateral.into_iter().flatten().collect()),
+        table,
         sources,
     })
 }
 
-/// Checks that `shard`'s lateral columns are what its own `scenario.toml` flies: the
-/// 3-D approach's columns exactly when the scenario flies the 3-D approach
-/// ([`flies_three_dimensional_approach`]: `[aircraft] model = "6dof"` with
-/// `approach.three_dimensional`), one set per row. The header of `runs.csv` alone
+/// Checks that `shard`'s column schema is the one its own `scenario.toml` flies
+/// ([`RunsSchema::of`]: the lateral columns exactly when it flies the 3-D approach,
+/// `[aircraft] model = "6dof"` with `approach.three_dimensional`), with each group's
+/// values one per row ([`RunsTable::check_shape`]). The header of `runs.csv` alone
 /// decides nothing: columns stripped from a 3-D shard, or appended to a 3-DOF one, are
 /// refused, as is a `scenario.toml` that is empty or not a scenario.
 fn check_columns_against_scenario(shard: &ShardRows) -> Result<(), MergeError> {
@@ -246,38 +240,24 @@ fn check_columns_against_scenario(shard: &ShardRows) -> Result<(), MergeError> {
             error.to_string(),
         )
     })?;
-    let three_dimensional = flies_three_dimensional_approach(&scenario);
-    if shard.lateral.is_some() != three_dimensional {
-        let (has, flies) = if three_dimensional {
-            (
-                "no lateral columns",
-                "the 3-D approach, whose runs.csv has them",
-            )
-        } else {
-            (
-                "the 3-D approach's lateral columns",
-                "no 3-D approach, whose runs.csv has none",
-            )
-        };
+    let schema = RunsSchema::of(&scenario);
+    if shard.table.schema != schema {
         return Err(bad(
             "runs.csv columns",
-            has.to_owned(),
+            shard.table.schema.holds().to_owned(),
             format!(
                 "its scenario.toml (`aircraft.model` = \"{}\", \
-                 `approach.three_dimensional` = {}) flies {flies}",
+                 `approach.three_dimensional` = {}) flies {}",
                 scenario.aircraft.model.name(),
-                scenario.approach.three_dimensional
+                scenario.approach.three_dimensional,
+                schema.flown_by()
             ),
         ));
     }
-    match &shard.lateral {
-        Some(lateral) if lateral.len() != shard.rows.len() => Err(bad(
-            "lateral",
-            format!("{} rows of lateral columns", lateral.len()),
-            format!("one per row: {} rows", shard.rows.len()),
-        )),
-        _ => Ok(()),
-    }
+    shard
+        .table
+        .check_shape()
+        .map_err(|error| bad(error.field, error.value, error.problem))
 }
 
 /// Checks that `shard` says it is part of the campaign of `first`: the same scenario,
@@ -367,18 +347,6 @@ fn index_shards(shards: &[ShardRows], count: u64) -> Result<Vec<Option<usize>>, 
     Ok(by_index)
 }
 
-/// A shard's rows, each with its lateral columns (`None` for a 3-DOF campaign).
-fn paired(shard: ShardRows) -> Vec<(RunRow<'static>, Option<LateralRow>)> {
-    match shard.lateral {
-        Some(lateral) => shard
-            .rows
-            .into_iter()
-            .zip(lateral.into_iter().map(Some))
-            .collect(),
-        None => shard.rows.into_iter().map(|r| (r, None)).collect(),
-    }
-}
-
 /// Checks that `shard` holds exactly its runs under every controller, each with its
 /// run's seed; sorts its rows by run index and controller.
 fn check_rows(
@@ -387,12 +355,13 @@ fn check_rows(
     runs: u64,
     position_of: &dyn Fn(&str) -> Option<usize>,
 ) -> Result<(), MergeError> {
-    for (position, row) in shard.rows.iter().enumerate() {
-        let lateral = shard.lateral.as_ref().and_then(|l| l.get(position));
-        check_row(&shard.identity, position, row, lateral)?;
+    for (position, row) in shard.table.rows.iter().enumerate() {
+        check_row(&shard.identity, position, &shard.table)?;
         check_row_belongs(&shard.identity, row, campaign_seed, runs, position_of)?;
     }
-    sort_rows(shard, position_of);
+    shard
+        .table
+        .sort_by_key(|r| (r.run_index, position_of(&r.controller)));
     check_every_run_once(shard, runs, position_of)
 }
 
@@ -407,19 +376,16 @@ fn foreign(identity: &ShardIdentity, row: &RunRow, problem: String) -> MergeErro
     }
 }
 
-/// Checks the values of the `position`-th row (from 0) against the row schema, and
-/// its lateral columns in a 3-D campaign.
+/// Checks the values of the `position`-th row (from 0) of `table` against the row
+/// schema, and those of its schema's other groups ([`RunsTable::check_row`]).
 fn check_row(
     identity: &ShardIdentity,
     position: usize,
-    row: &RunRow,
-    lateral: Option<&LateralRow>,
+    table: &RunsTable,
 ) -> Result<(), MergeError> {
-    let lateral_check = lateral.map_or(Ok(()), |values| {
-        values.check(row.touchdown_distance_m.is_some(), row.flown())
-    });
-    row.check()
-        .and(lateral_check)
+    let row = &table.rows[position];
+    table
+        .check_row(position)
         .map_err(|error| MergeError::BadRow {
             location: identity.source.clone(),
             row: position as u64 + 1,
@@ -477,20 +443,6 @@ fn check_row_belongs(
     Ok(())
 }
 
-/// Sorts `shard`'s rows (with their lateral columns) by run index and controller.
-fn sort_rows(shard: &mut ShardRows, position_of: &dyn Fn(&str) -> Option<usize>) {
-    let three_dimensional = shard.lateral.is_some();
-    let mut pairs = paired(ShardRows {
-        identity: shard.identity.clone(),
-        rows: std::mem::take(&mut shard.rows),
-        lateral: shard.lateral.take(),
-    });
-    pairs.sort_by_key(|(r, _)| (r.run_index, position_of(&r.controller)));
-    let (rows, lateral): (Vec<_>, Vec<_>) = pairs.into_iter().unzip();
-    shard.rows = rows;
-    shard.lateral = three_dimensional.then(|| lateral.into_iter().flatten().collect());
-}
-
 /// Checks that the sorted rows of `shard` are each of its runs under each controller,
 /// once: none twice, none missing.
 fn check_every_run_once(
@@ -507,7 +459,7 @@ fn check_every_run_once(
         location: identity.source.clone(),
         shard: identity.shard,
         expected,
-        found: shard.rows.len() as u64,
+        found: shard.table.rows.len() as u64,
         first_missing: run_index,
         controller: identity
             .controllers
@@ -516,7 +468,7 @@ fn check_every_run_once(
             .unwrap_or_default(),
     };
     let mut previous: Option<(u64, Option<usize>)> = None;
-    for row in &shard.rows {
+    for row in &shard.table.rows {
         let key = (row.run_index, position_of(&row.controller));
         if previous == Some(key) {
             return Err(foreign(identity, row, "appears twice".to_owned()));

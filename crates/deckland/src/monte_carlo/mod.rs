@@ -24,11 +24,16 @@
 //! - Statistics: rates with 95 % Wilson score intervals and exact one-sided upper bounds
 //!   for rare events ([`upper_bound`], [`runs_to_show_below`]), computed from the rows, so
 //!   a merged campaign's statistics are those of the whole campaign.
-//! - 3-D approach campaigns ([`flies_three_dimensional_approach`]): each row carries a
-//!   [`LateralRow`] (the lateral touchdown and the trap sheet,
-//!   [`TRAP_SHEET_RUN_COLUMNS`]) after the columns of every campaign; their statistics
-//!   ([`LateralStatistics`], [`TrapSheetStatistics`]) are computed from those columns, so
-//!   merged shards have them too.
+//! - The runs table ([`RunsTable`]): its column schema ([`RunsSchema`], the groups of
+//!   columns a campaign writes, [`ColumnGroup`]) is decided once from the scenario by the
+//!   plant registry (what its approaches report,
+//!   [`crate::aircraft::PlantModel::approach_outcome`]); `runs.csv` is read,
+//!   written and merged over the schema, a shard's schema compared with its scenario's.
+//! - 3-D approach campaigns ([`flies_three_dimensional_approach`]): their schema has the
+//!   [`ColumnGroup::Lateral`] group, each row a [`LateralRow`] (the lateral touchdown and
+//!   the trap sheet, [`TRAP_SHEET_RUN_COLUMNS`]) after the columns of every campaign;
+//!   their statistics ([`LateralStatistics`], [`TrapSheetStatistics`]) are computed from
+//!   those columns, so merged shards have them too.
 //! - Calibration ([`Calibration`]): the probabilities the forecast gave at each run's
 //!   commit point (the `commit_*_probability` columns) against what the runs did, per
 //!   criterion and controller, with the count's Poisson-binomial interval and reliability
@@ -49,6 +54,7 @@ mod record;
 mod row;
 mod run_scenario;
 mod runs_csv;
+mod runs_table;
 mod seeds;
 mod shard;
 mod statistics;
@@ -85,7 +91,8 @@ pub use row::{
     wave_off_criterion, RowError, RunRow, CAMPAIGN_OUTCOMES, LSO_RUN_COLUMNS, RANGES, RUN_COLUMNS,
 };
 pub use run_scenario::dispersed_run_scenario;
-pub use runs_csv::{parse_runs_csv, runs_csv_text, ParsedRuns};
+pub use runs_csv::{parse_runs_csv, runs_csv_text};
+pub use runs_table::{ColumnGroup, RunsSchema, RunsTable, ShapeError};
 pub use seeds::{run_seed, splitmix64_mix, SPLITMIX64_GAMMA};
 pub use shard::{Shard, ShardError, SHARD_SCHEME};
 pub use statistics::{

@@ -1,110 +1,47 @@
 //! A shard's `runs.csv` text read back into checked rows: the same columns, the same
 //! checks and the same words for every front end (the CLI's `merge`, Python, Dask).
 
-use super::lateral::{lateral_row_columns, LateralRow, LATERAL_RUN_COLUMNS};
+use super::lateral::{LateralRow, LATERAL_RUN_COLUMNS};
 use super::limits::{MAX_CONTROLLERS, MAX_RUNS};
 use super::merge_error::MergeError;
 use super::row::{RowError, RunRow, LSO_RUN_COLUMNS, RUN_COLUMNS};
+use super::runs_table::{text_of, ColumnGroup, RunsSchema, RunsTable};
 use super::trap_sheet::TRAP_SHEET_RUN_COLUMNS;
 
-/// A shard's `runs.csv` read back: its rows, and a 3-D campaign's [`LateralRow`] of
-/// each (in the same order).
-#[derive(Debug, Clone, PartialEq)]
-pub struct ParsedRuns {
-    /// The rows, in the file's order.
-    pub rows: Vec<RunRow<'static>>,
-    /// A 3-D campaign's lateral columns, one per row; `None` for a 3-DOF campaign.
-    pub lateral: Option<Vec<LateralRow>>,
-}
-
-/// The text of a campaign's `runs.csv`: the header and one line per row (`rows`, and for
-/// a 3-D approach campaign each row's [`LateralRow`] after it, in the same order), what
-/// the CLI writes and a shard carries; [`parse_runs_csv`] reads it back exactly.
-pub fn runs_csv_text(
-    rows: &[RunRow<'_>],
-    lateral: Option<&[LateralRow]>,
-) -> Result<String, csv::Error> {
-    let Some(lateral) = lateral else {
-        let mut writer = csv::Writer::from_writer(Vec::new());
-        for row in rows {
-            writer.serialize(row)?;
-        }
-        return text_of(writer);
-    };
+/// The text of a campaign's `runs.csv`: the header of the table's schema and one line per
+/// row, its fields those of the schema's groups in order; what the CLI writes and a
+/// shard carries. [`parse_runs_csv`] reads it back exactly.
+pub fn runs_csv_text(table: &RunsTable<'_>) -> Result<String, csv::Error> {
     let mut writer = csv::Writer::from_writer(Vec::new());
-    writer.write_record(three_dimensional_columns())?;
-    let base = RUN_COLUMNS.len();
-    for (row, values) in rows.iter().zip(lateral) {
-        let row = record_of(row)?;
-        let values = record_of(values)?;
-        let fields = row
-            .iter()
-            .take(base)
-            .chain(values.iter())
-            .chain(row.iter().skip(base));
-        writer.write_record(fields)?;
+    writer.write_record(table.schema.columns())?;
+    for index in 0..table.rows.len() {
+        writer.write_record(&table.record(index)?)?;
     }
     text_of(writer)
 }
 
-/// The columns of a 3-D campaign's `runs.csv`: those of every campaign, the lateral and
-/// trap-sheet ones, then the LSO's grade.
-fn three_dimensional_columns() -> impl Iterator<Item = &'static str> {
-    RUN_COLUMNS
-        .into_iter()
-        .chain(lateral_row_columns())
-        .chain(LSO_RUN_COLUMNS)
-}
-
-/// The fields `value` serialises to, as one CSV record.
-fn record_of(value: &impl serde::Serialize) -> Result<csv::StringRecord, csv::Error> {
-    let mut line = csv::WriterBuilder::new()
-        .has_headers(false)
-        .from_writer(Vec::new());
-    line.serialize(value)?;
-    let text = text_of(line)?;
-    let mut reader = csv::ReaderBuilder::new()
-        .has_headers(false)
-        .from_reader(text.as_bytes());
-    reader
-        .records()
-        .next()
-        .unwrap_or_else(|| Ok(csv::StringRecord::new()))
-}
-
-/// What a CSV writer into memory wrote, as text (the fields are numbers and UTF-8 text).
-fn text_of(writer: csv::Writer<Vec<u8>>) -> Result<String, csv::Error> {
-    let bytes = writer
-        .into_inner()
-        .map_err(|e| csv::Error::from(std::io::Error::other(e.to_string())))?;
-    String::from_utf8(bytes).map_err(|e| csv::Error::from(std::io::Error::other(e.to_string())))
-}
-
-/// Reads the rows of a shard's `runs.csv` text (`location` names it in messages):
-/// exactly the columns of [`RUN_COLUMNS`] in order — for a 3-D approach campaign followed
-/// by those of [`LateralRow`] ([`lateral_row_columns`]) — then [`LSO_RUN_COLUMNS`] (a
-/// shard written before the last of them came is refused, naming the columns it lacks)
-/// — a last line that ends (a file cut short is refused, even inside a row's text), and
+/// Reads the rows of a shard's `runs.csv` text (`location` names it in messages) into a
+/// table: exactly the columns of one of the schemas a campaign writes
+/// ([`RunsSchema::ALL`], the one the header agrees with longest: [`RUN_COLUMNS`], for a
+/// 3-D approach campaign those of [`LateralRow`], then [`LSO_RUN_COLUMNS`]; a shard
+/// written before the last of them came is refused, naming the columns it lacks) — a
+/// last line that ends (a file cut short is refused, even inside a row's text), and
 /// every row one a campaign can write ([`RunRow::check`], [`LateralRow::check`]). Every
-/// error names the line and the column at fault.
-pub fn parse_runs_csv(location: &str, text: &str) -> Result<ParsedRuns, MergeError> {
+/// error names the line and the column at fault. Whether the schema is the one the
+/// shard's scenario flies is for the merge to check.
+pub fn parse_runs_csv(location: &str, text: &str) -> Result<RunsTable<'static>, MergeError> {
     let header = text
         .lines()
         .next()
         .unwrap_or_default()
         .trim_end_matches('\r');
     let columns: Vec<&str> = header.split(',').collect();
-    let three_dimensional = columns.get(RUN_COLUMNS.len()) == Some(&LATERAL_RUN_COLUMNS[0]);
-    let expected: Vec<&str> = if three_dimensional {
-        three_dimensional_columns().collect()
-    } else {
-        RUN_COLUMNS.into_iter().chain(LSO_RUN_COLUMNS).collect()
-    };
+    let schema = RunsSchema::of_header(&columns);
     let errors = CsvErrors {
         location,
-        width: expected.len(),
+        width: schema.width(),
     };
-    check_header(&errors, &columns, &expected)?;
+    check_header(&errors, &columns, &schema.columns())?;
     if !text.ends_with('\n') {
         let lines = text.lines().count() as u64;
         return Err(errors.at(
@@ -115,11 +52,7 @@ pub fn parse_runs_csv(location: &str, text: &str) -> Result<ParsedRuns, MergeErr
     let reader = csv::ReaderBuilder::new()
         .has_headers(true)
         .from_reader(text.as_bytes());
-    if three_dimensional {
-        parse_three_dimensional_rows(&errors, reader)
-    } else {
-        parse_rows(&errors, reader)
-    }
+    parse_rows(&errors, schema, reader)
 }
 
 /// Most rows a `runs.csv` can hold: every run under every controller.
@@ -235,69 +168,51 @@ fn check_header(errors: &CsvErrors, columns: &[&str], expected: &[&str]) -> Resu
     ))
 }
 
-/// The rows of a 3-DOF campaign's `runs.csv`, each checked.
+/// The rows of a `runs.csv` of `schema`, each checked.
 fn parse_rows(
     errors: &CsvErrors,
+    schema: RunsSchema,
     mut reader: csv::Reader<&[u8]>,
-) -> Result<ParsedRuns, MergeError> {
-    let mut rows = Vec::new();
-    for (position, row) in reader.deserialize::<RunRow<'static>>().enumerate() {
-        let number = position as u64 + 1;
-        errors.check_count(number)?;
-        let row = row.map_err(|error| errors.csv(error, number))?;
-        if let Err(error) = row.check() {
-            return Err(errors.bad_row(number, &row, error));
-        }
-        rows.push(row);
-    }
-    Ok(ParsedRuns {
-        rows,
-        lateral: None,
-    })
-}
-
-/// The rows of a 3-D campaign's `runs.csv` with their lateral columns, each checked.
-fn parse_three_dimensional_rows(
-    errors: &CsvErrors,
-    mut reader: csv::Reader<&[u8]>,
-) -> Result<ParsedRuns, MergeError> {
+) -> Result<RunsTable<'static>, MergeError> {
     let headers: csv::StringRecord = RUN_COLUMNS.into_iter().chain(LSO_RUN_COLUMNS).collect();
-    let width = three_dimensional_columns().count();
-    let mut rows = Vec::new();
-    let mut lateral = Vec::new();
+    let mut table = RunsTable::empty(schema);
     for (position, record) in reader.records().enumerate() {
         let number = position as u64 + 1;
         errors.check_count(number)?;
         let record = record.map_err(|error| errors.csv(error, number))?;
         let line = record.position().map_or(number + 1, |p| p.line());
-        let base: csv::StringRecord = record
-            .iter()
-            .take(RUN_COLUMNS.len())
-            .chain(record.iter().skip(width - LSO_RUN_COLUMNS.len()))
-            .collect();
-        let row: RunRow<'static> = base
+        // Each group's fields: a row's own ([`RunRow`]) and the others'.
+        let mut run = csv::StringRecord::new();
+        let mut lateral = None;
+        let mut fields = record.iter();
+        for &group in schema.groups() {
+            let group_fields: Vec<&str> = fields.by_ref().take(group.width()).collect();
+            match group {
+                ColumnGroup::Longitudinal | ColumnGroup::Lso => run.extend(group_fields),
+                ColumnGroup::Lateral => lateral = Some(group_fields),
+            }
+        }
+        let row: RunRow<'static> = run
             .deserialize(Some(&headers))
             .map_err(|error| errors.csv(error, line - 1))?;
-        let values = lateral_values(&record).map_err(|problem| errors.at(line, problem))?;
-        if let Err(error) = row.check() {
-            return Err(errors.bad_row(number, &row, error));
+        if let Some(group_fields) = lateral {
+            let values =
+                lateral_values(&group_fields).map_err(|problem| errors.at(line, problem))?;
+            table.lateral_rows.push(values);
         }
-        if let Err(error) = values.check(row.touchdown_distance_m.is_some(), row.flown()) {
-            return Err(errors.bad_row(number, &row, error));
+        table.rows.push(row);
+        let index = table.rows.len() - 1;
+        if let Err(error) = table.check_row(index) {
+            return Err(errors.bad_row(number, &table.rows[index], error));
         }
-        rows.push(row);
-        lateral.push(values);
     }
-    Ok(ParsedRuns {
-        rows,
-        lateral: Some(lateral),
-    })
+    Ok(table)
 }
 
-/// The [`LateralRow`] of a 3-D row's fields (after those of [`RUN_COLUMNS`]): numbers or
-/// empty, `off_centre` `true`, `false` or empty; the error names the column.
-fn lateral_values(record: &csv::StringRecord) -> Result<LateralRow, String> {
-    let field = |k: usize| record.get(RUN_COLUMNS.len() + k).unwrap_or_default();
+/// The [`LateralRow`] of the fields of a row's [`ColumnGroup::Lateral`] group: numbers
+/// or empty, `off_centre` `true`, `false` or empty; the error names the column.
+fn lateral_values(fields: &[&str]) -> Result<LateralRow, String> {
+    let field = |k: usize| fields.get(k).copied().unwrap_or_default();
     let number = |k: usize, column: &str| -> Result<Option<f64>, String> {
         let text = field(k);
         if text.is_empty() {
@@ -334,16 +249,14 @@ fn lateral_values(record: &csv::StringRecord) -> Result<LateralRow, String> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::lateral::lateral_row_columns;
     use super::*;
 
     #[test]
     fn a_three_d_header_needs_every_lateral_and_trap_sheet_column() {
-        let full = format!(
-            "{}\n",
-            three_dimensional_columns().collect::<Vec<_>>().join(",")
-        );
+        let full = format!("{}\n", RunsSchema::WITH_LATERAL.columns().join(","));
         let parsed = parse_runs_csv("s1/runs.csv", &full).expect("a 3-D header");
-        assert_eq!(parsed.lateral, Some(Vec::new()));
+        assert_eq!(parsed, RunsTable::empty(RunsSchema::WITH_LATERAL));
         // One lateral column too few: the first one missing is named.
         let cut = format!("{},{}\n", RUN_COLUMNS.join(","), LATERAL_RUN_COLUMNS[0]);
         let error = parse_runs_csv("s1/runs.csv", &cut).unwrap_err().to_string();

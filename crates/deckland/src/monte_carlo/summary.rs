@@ -64,12 +64,9 @@ impl CampaignSummary {
         let expected_rows = merged
             .requested_runs
             .saturating_mul(merged.controllers.len() as u64);
-        let off_centre: Option<Vec<Option<bool>>> = merged
-            .lateral
-            .as_ref()
-            .map(|lateral| lateral.iter().map(|row| row.touchdown.5).collect());
+        let off_centre = merged.table.off_centre();
         Self::of_rows_observed(
-            &merged.rows,
+            &merged.table.rows,
             off_centre.as_deref(),
             &merged.controllers,
             merged.campaign_seed,

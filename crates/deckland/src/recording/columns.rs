@@ -100,6 +100,19 @@ impl Columns {
     }
 }
 
+/// A table of named columns of cells, in the order given (all of one length: the rows).
+impl FromIterator<(&'static str, Vec<Cell>)> for Columns {
+    fn from_iter<I: IntoIterator<Item = (&'static str, Vec<Cell>)>>(columns: I) -> Self {
+        let (names, cells): (Vec<_>, Vec<_>) = columns.into_iter().unzip();
+        Self {
+            rows: cells.first().map_or(0, Vec::len),
+            names,
+            cells,
+            hint: 0,
+        }
+    }
+}
+
 /// Serialises one row struct into the table.
 struct RowSerializer<'a> {
     table: &'a mut Columns,

@@ -53,9 +53,8 @@ pub fn flown_shards() -> Vec<ShardRows> {
                         .map(|r| RunRow::new(r, &result.controller_labels).into_owned())
                         .collect();
                     // As a file carries them: through runs.csv text.
-                    let rows = deckland::monte_carlo::parse_runs_csv("fixture", &rows_csv(&rows))
-                        .unwrap()
-                        .rows;
+                    let table =
+                        deckland::monte_carlo::parse_runs_csv("fixture", &rows_csv(&rows)).unwrap();
                     ShardRows {
                         identity: ShardIdentity {
                             source: format!("s{index}"),
@@ -66,8 +65,7 @@ pub fn flown_shards() -> Vec<ShardRows> {
                             shard,
                             partial: result.partial,
                         },
-                        rows,
-                        lateral: None,
+                        table,
                     }
                 })
                 .collect()

@@ -3,7 +3,7 @@
 //! report's writer (`report`) and the campaign's figures (`plot::campaign`) read it.
 
 use deckland::monte_carlo::{
-    CampaignStatistics, CampaignSummary, LateralRow, LateralStatistics, Proportion, RunRow, Shard,
+    CampaignStatistics, CampaignSummary, LateralStatistics, Proportion, RunsTable, Shard,
     TrapSheetStatistics, SHARD_SCHEME,
 };
 use deckland::scenario::Scenario;
@@ -70,32 +70,18 @@ impl<'a> CampaignReport<'a> {
     }
 }
 
-/// The statistics of a 3-D campaign's lateral columns (`None` for a 3-DOF campaign):
-/// the lateral touchdowns' (when a run touched down) and the trap sheets'.
-pub fn lateral_statistics(
-    lateral_rows: Option<&[LateralRow]>,
-) -> (Option<LateralStatistics>, Option<TrapSheetStatistics>) {
-    lateral_rows.map_or((None, None), |rows| {
-        let (lateral, trap_sheet) = deckland::monte_carlo::lateral_statistics(rows);
-        (lateral, Some(trap_sheet))
-    })
-}
-
 /// A campaign folder's content before it is written.
 pub struct CampaignFolder<'a> {
     /// The scenario flown.
     pub scenario: &'a Scenario,
     /// Its TOML text, written as `scenario.toml`.
     pub scenario_toml: &'a str,
-    /// The rows of `runs.csv`, sorted by run index and controller.
-    pub rows: &'a [RunRow<'a>],
+    /// The runs table (`runs.csv`), its rows sorted by run index and controller.
+    pub table: &'a RunsTable<'a>,
     /// The report (`summary.json`).
     pub report: &'a CampaignReport<'a>,
     /// The title of the plots and the page.
     pub title: String,
-    /// A 3-D approach campaign's lateral columns of `runs.csv`, one per row; `None` for
-    /// a 3-DOF campaign, whose `runs.csv` has none.
-    pub lateral_rows: Option<Vec<LateralRow>>,
 }
 
 /// The title of a campaign's plots and page: scenario file name, seed, runs, shard.

@@ -16,9 +16,10 @@
 //! - plots: `touchdown_dispersion` (touchdown point along the deck against sink rate,
 //!   with the wires and the ramp), `touchdown_histograms`, `outcomes`.
 //!
-//! A 3-D approach campaign (`monte_carlo::flies_three_dimensional_approach`) adds each
-//! run's lateral touchdown and trap sheet (`monte_carlo::LateralRow`) to `runs.csv` and
-//! `runs.parquet`, their statistics (`lateral`, `trap_sheet`) to `summary.json`, the
+//! The runs table's column schema (`monte_carlo::RunsSchema`) is decided once from the
+//! scenario. A 3-D approach campaign's has the lateral group: each run's lateral
+//! touchdown and trap sheet (`monte_carlo::LateralRow`) in `runs.csv` and
+//! `runs.parquet`, and their statistics (`lateral`, `trap_sheet`) in `summary.json`, the
 //! terminal and `report.html`, and the `touchdown_plan` plot.
 //!
 //! `--shard K/M` flies only the runs i with i mod M = K (round robin: every shard is a
@@ -44,8 +45,8 @@ use crate::output::OutputDir;
 use anyhow::{bail, Context, Result};
 use clap::Args;
 use deckland::monte_carlo::{
-    flies_three_dimensional_approach, run_campaign, CampaignSpec, CampaignSummary, LateralRow,
-    RunRecord, Shard, DEFAULT_TARGET_RATE, SHARD_SCHEME,
+    run_campaign, CampaignSpec, CampaignSummary, RunRecord, RunsSchema, RunsTable, Shard,
+    DEFAULT_TARGET_RATE, SHARD_SCHEME,
 };
 use deckland::scenario::Mission;
 use folder::{CampaignFolder, CampaignReport};
@@ -142,9 +143,8 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
 
     let summary = CampaignSummary::of_result(&result, seed, DEFAULT_TARGET_RATE);
     let finished_runs = result.records.len() as u64;
-    let lateral_rows: Option<Vec<LateralRow>> = flies_three_dimensional_approach(&spec.scenario)
-        .then(|| result.records.iter().map(LateralRow::of).collect());
-    let (lateral, trap_sheet) = folder::lateral_statistics(lateral_rows.as_deref());
+    let table = RunsTable::of_result(RunsSchema::of(&spec.scenario), &result);
+    let (lateral, trap_sheet) = table.lateral_statistics();
     let report = CampaignReport {
         lateral,
         trap_sheet,
@@ -159,12 +159,10 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
     };
     let scenario_toml =
         toml::to_string(&spec.scenario).context("cannot write the scenario as TOML")?;
-    let rows = result.rows();
     let folder = CampaignFolder {
-        lateral_rows,
         scenario: &spec.scenario,
         scenario_toml: &scenario_toml,
-        rows: &rows,
+        table: &table,
         report: &report,
         title: folder::title(&args.scenario, &report),
     };
@@ -178,7 +176,7 @@ pub fn run(args: &CampaignArgs) -> Result<()> {
             .iter()
             .map(|s| s.controller.as_str())
             .collect();
-        if let Some(paired) = paired::PairedComparison::of(&rows, &controllers) {
+        if let Some(paired) = paired::PairedComparison::of(&table.rows, &controllers) {
             report::print_paired(&paired)?;
         }
         outln!("  results in {}", output.path().display())?;

@@ -23,13 +23,13 @@ const RARE_COUNT: u64 = 3;
 pub fn write_folder(folder: &CampaignFolder, output: &OutputDir) -> Result<()> {
     output.write_bytes("scenario.toml", folder.scenario_toml.as_bytes())?;
     output.write_with("runs.csv", |path| {
-        let text = runs_csv_text(folder.rows, folder.lateral_rows.as_deref())?;
+        let text = runs_csv_text(folder.table)?;
         std::fs::write(path, text)?;
         Ok(())
     })?;
-    if !folder.rows.is_empty() {
+    if !folder.table.rows.is_empty() {
         output.write_with("runs.parquet", |path| {
-            crate::parquet::write_runs(path, folder.rows, folder.lateral_rows.as_deref())
+            crate::parquet::write_runs(path, folder.table)
         })?;
     }
     output.write_bytes(
@@ -47,7 +47,7 @@ pub fn write_folder(folder: &CampaignFolder, output: &OutputDir) -> Result<()> {
         .iter()
         .map(|s| s.controller.as_str())
         .collect();
-    let paired = PairedComparison::of(folder.rows, &controllers);
+    let paired = PairedComparison::of(&folder.table.rows, &controllers);
     let page = html_report(
         folder.report,
         paired.as_ref(),

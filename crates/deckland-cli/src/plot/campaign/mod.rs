@@ -31,6 +31,7 @@ pub(crate) fn figures(folder: &CampaignFolder) -> Vec<(&'static str, Figure)> {
     let statistics = &folder.report.summary.controllers;
     let labels: Vec<&str> = statistics.iter().map(|s| s.controller.as_str()).collect();
     let runs: Vec<Touchdown> = folder
+        .table
         .rows
         .iter()
         .map(|r| Touchdown {
@@ -181,7 +182,7 @@ pub(crate) fn outcomes(groups: Vec<BarGroup>) -> Panel {
 /// data), the offset to the right drawn down the page as seen from above
 /// (`Panel::y_downward`); `None` for a 3-DOF campaign.
 fn touchdown_plan(folder: &CampaignFolder, labels: &[&str]) -> Option<Figure> {
-    let lateral = folder.lateral_rows.as_ref()?;
+    let lateral = folder.table.lateral_rows()?;
     let statistics = folder.report.lateral.as_ref()?;
     let deck = &folder.scenario.environment.deck;
     let limit_m = statistics.max_off_centre_m;
@@ -192,6 +193,7 @@ fn touchdown_plan(folder: &CampaignFolder, labels: &[&str]) -> Option<Figure> {
     )
     .y_downward();
     let runs: Vec<Touchdown> = folder
+        .table
         .rows
         .iter()
         .zip(lateral)
