@@ -46,7 +46,14 @@ for top in args or ["crates/deckland/src", "crates/deckland-cli/src", "python/sr
             if not f.endswith(".rs") or path in SETUP or f == "tests.rs" or f.endswith("_tests.rs"):
                 continue
             lines = open(path, encoding="utf-8").read().split("\n")
-            cut = next((k for k, l in enumerate(lines) if re.match(r"\s*#\[cfg\(test\)\]", l)), len(lines))
+            # the inline test module at the end of a file: `#[cfg(test)]` then `mod NAME {`
+            # (a `#[cfg(test)]` on any other item, or on `mod tests;`, cuts nothing)
+            cut = next(
+                (k for k, l in enumerate(lines)
+                 if re.match(r"\s*#\[cfg\(test\)\]", l)
+                 and k + 1 < len(lines) and re.match(r"\s*(pub(\(\w+\))?\s+)?mod\s+\w+\s*\{", lines[k + 1])),
+                len(lines),
+            )
             for k, line in enumerate(lines[:cut]):
                 code = line.split("//")[0]
                 if TOKEN.search(code) and BRANCH.search(code):
