@@ -5,10 +5,10 @@
 //! schema's, a shard's schema is compared with its scenario's, and each row's fields are
 //! its groups' in the schema's order.
 
-use super::lateral::{lateral_row_columns, LateralRow, LateralStatistics};
+use super::lateral::{lateral_row_columns, LateralRow, LateralStatistics, LATERAL_RUN_COLUMNS};
 use super::record::RunRecord;
 use super::row::{RowError, RunRow, LSO_RUN_COLUMNS, RUN_COLUMNS};
-use super::trap_sheet::TrapSheetStatistics;
+use super::trap_sheet::{TrapSheetStatistics, TRAP_SHEET_RUN_COLUMNS};
 use super::CampaignResult;
 use crate::aircraft::ApproachOutcome;
 use crate::recording::{ColumnError, Columns};
@@ -38,9 +38,13 @@ impl ColumnGroup {
         }
     }
 
-    /// How many columns the group has.
+    /// How many columns the group has (without listing them: it is asked per row).
     pub fn width(self) -> usize {
-        self.columns().len()
+        match self {
+            Self::Longitudinal => RUN_COLUMNS.len(),
+            Self::Lateral => LATERAL_RUN_COLUMNS.len() + TRAP_SHEET_RUN_COLUMNS.len(),
+            Self::Lso => LSO_RUN_COLUMNS.len(),
+        }
     }
 }
 
@@ -369,6 +373,17 @@ mod tests {
     use super::super::runs_csv::parse_runs_csv;
     use super::super::shard::Shard;
     use super::*;
+
+    #[test]
+    fn each_group_is_as_wide_as_its_list_of_columns() {
+        for group in [
+            ColumnGroup::Longitudinal,
+            ColumnGroup::Lateral,
+            ColumnGroup::Lso,
+        ] {
+            assert_eq!(group.width(), group.columns().len(), "{group:?}");
+        }
+    }
     use crate::aircraft::PlantModel;
 
     #[test]
