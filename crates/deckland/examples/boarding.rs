@@ -10,6 +10,8 @@ use deckland::experiments::fly_seeds;
 use deckland::scenario::Scenario;
 use deckland::simulation::{Outcome, SetupError};
 
+mod support;
+
 fn mean_and_sd(values: &[f64]) -> (f64, f64) {
     let n = values.len() as f64;
     let mean = values.iter().sum::<f64>() / n;
@@ -18,11 +20,7 @@ fn mean_and_sd(values: &[f64]) -> (f64, f64) {
 }
 
 fn main() -> Result<(), SetupError> {
-    let count: u64 = std::env::args()
-        .nth(1)
-        .and_then(|a| a.parse().ok())
-        .unwrap_or(50);
-    let seeds: Vec<u64> = (1..=count).collect();
+    let seeds = support::seeds_from_args();
     println!("| pitch control | deck compensation | boarded (trap) | bolter | ramp strike | hard landing | diverged | touchdown from aim (m), mean ± sd | touchdown sink rate (m/s), mean ± sd |");
     println!("|---|---|---|---|---|---|---|---|---|");
     for (name, pitch) in [

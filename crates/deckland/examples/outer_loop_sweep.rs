@@ -9,6 +9,8 @@ use deckland::recording::SummaryRecorder;
 use deckland::scenario::Scenario;
 use deckland::simulation::{Outcome, RunSummary, SetupError, Simulation};
 
+mod support;
+
 fn row(label: &str, results: &[RunSummary]) {
     let count = |o: Outcome| results.iter().filter(|r| r.outcome == o).count();
     let distances: Vec<f64> = results
@@ -31,11 +33,8 @@ fn row(label: &str, results: &[RunSummary]) {
 }
 
 fn main() -> Result<(), SetupError> {
-    let count: u64 = std::env::args()
-        .nth(1)
-        .and_then(|a| a.parse().ok())
-        .unwrap_or(50);
-    let seeds: Vec<u64> = (1..=count).collect();
+    let seeds = support::seeds_from_args();
+    let count = seeds.len();
     println!("| configuration (adverse, O-PD, seeds 1–{count}) | trap | bolter | ramp strike | hard | diverged | wave-off | touchdown from aim (m) |");
     println!("|---|---|---|---|---|---|---|---|");
     for predictor in [

@@ -13,6 +13,7 @@ use clap::ValueEnum;
 use deckland::control::pitch::PitchControllerParameters;
 use deckland::experiments::{PitchStep, PITCH_STEP_TIME_S as STEP_TIME_S, SETTLING_BAND_FRACTION};
 use deckland::scenario::Mission;
+use deckland::simulation::Signals;
 use serde::Serialize;
 
 use super::common::{
@@ -189,33 +190,51 @@ fn csv_bytes(runs: &[ControllerRun]) -> Result<Vec<u8>> {
         }
     }
     writer.write_record(&header)?;
-    // Every run ends at the same time unless one diverged: rows run to the longest, with
-    // empty fields for a run that ended earlier.
-    let rows = runs.iter().map(|r| r.samples.len()).max().unwrap_or(0);
-    let longest = runs.iter().find(|r| r.samples.len() == rows);
+    let samples: Vec<&[Signals]> = runs.iter().map(|r| r.samples.as_slice()).collect();
+    write_sample_rows(
+        &mut writer,
+        &samples,
+        |s| s.time_s,
+        6,
+        |s, record| {
+            record.push(s.theta_rad.to_degrees().to_string());
+            record.push(s.theta_ref_rad.to_degrees().to_string());
+            record.push(s.theta_measured_rad.to_degrees().to_string());
+            record.push(s.elevator_rad.to_degrees().to_string());
+            record.push(s.elevator_command_rad.to_degrees().to_string());
+            record.push(
+                s.disturbance_estimate_radps2
+                    .map_or(String::new(), |d| d.to_string()),
+            );
+        },
+    )?;
+    writer.into_inner().map_err(|e| anyhow!("{e}"))
+}
+
+/// Writes the rows of a CSV of `runs`' samples side by side. Every run ends at the same
+/// time unless one diverged: the rows run to the longest, each its time, then each run's
+/// `width` cells from `cells`, empty for a run that ended earlier.
+pub(super) fn write_sample_rows<S>(
+    writer: &mut csv::Writer<Vec<u8>>,
+    runs: &[&[S]],
+    time_s: impl Fn(&S) -> f64,
+    width: usize,
+    cells: impl Fn(&S, &mut Vec<String>),
+) -> Result<()> {
+    let rows = runs.iter().map(|r| r.len()).max().unwrap_or(0);
+    let longest = runs.iter().find(|r| r.len() == rows);
     for index in 0..rows {
-        let mut record = Vec::with_capacity(header.len());
-        let time_s = longest.map_or(f64::NAN, |r| r.samples[index].time_s);
-        record.push(time_s.to_string());
+        let mut record = Vec::with_capacity(1 + width * runs.len());
+        record.push(longest.map_or(f64::NAN, |r| time_s(&r[index])).to_string());
         for run in runs {
-            match run.samples.get(index) {
-                Some(s) => {
-                    record.push(s.theta_rad.to_degrees().to_string());
-                    record.push(s.theta_ref_rad.to_degrees().to_string());
-                    record.push(s.theta_measured_rad.to_degrees().to_string());
-                    record.push(s.elevator_rad.to_degrees().to_string());
-                    record.push(s.elevator_command_rad.to_degrees().to_string());
-                    record.push(
-                        s.disturbance_estimate_radps2
-                            .map_or(String::new(), |d| d.to_string()),
-                    );
-                }
-                None => record.extend(std::iter::repeat_n(String::new(), 6)),
+            match run.get(index) {
+                Some(s) => cells(s, &mut record),
+                None => record.extend(std::iter::repeat_n(String::new(), width)),
             }
         }
         writer.write_record(&record)?;
     }
-    writer.into_inner().map_err(|e| anyhow!("{e}"))
+    Ok(())
 }
 
 /// Column prefix of a controller: `opd` or `pid`.
@@ -237,6 +256,15 @@ fn signed_fixed(value: f64, digits: usize) -> String {
 
 fn format_option(value: Option<f64>, digits: usize, unit: &str) -> String {
     value.map_or_else(|| "—".to_string(), |v| format!("{v:.digits$} {unit}"))
+}
+
+/// A settling time's cell: the time in s with 3 decimals, or "not settled".
+fn settling_cell(settled: bool, settling_time_s: Option<f64>) -> String {
+    if settled {
+        format_option(settling_time_s, 3, "s")
+    } else {
+        "not settled".to_string()
+    }
 }
 
 fn print_table(report: &StepReport, written: &[PathBuf]) -> Result<()> {
@@ -265,11 +293,7 @@ fn print_table(report: &StepReport, written: &[PathBuf]) -> Result<()> {
     }
     let row = controller_columns(&report.controllers, |c| &c.controller, 26, 18)?;
     row("settling time (±2 %)", &|c| {
-        if c.settled {
-            format_option(c.settling_time_s, 3, "s")
-        } else {
-            "not settled".to_string()
-        }
+        settling_cell(c.settled, c.settling_time_s)
     })?;
     if reference_s > 0.0 {
         row(

@@ -265,49 +265,38 @@ impl ShipMotionPropagator {
     }
 
     /// The prediction `lead_s` seconds after the time of `estimate`, with its error
-    /// variances (module docs); zero when the ship motion of `ship` is disabled.
+    /// variances (module docs); zero when the ship motion of `ship` is disabled. The
+    /// values and rates are [`ShipMotionPropagator::forecast_mean`]'s.
     pub fn forecast(
         &self,
         ship: &ShipMotion,
         estimate: &ShipMotionEstimate,
         lead_s: f64,
     ) -> ShipMotionForecast {
+        let mean = self.forecast_mean(ship, estimate, lead_s);
         if !ship.parameters().enabled {
-            return ShipMotionForecast::default();
+            return mean;
         }
         let grid = self.grid(lead_s);
-        let dot = |r: &[f64; 4], z: &[f64; 4]| (0..4).map(|j| r[j] * z[j]).sum::<f64>();
-        // Each motion's output and rate rows of e^{AT}, its value, rate and error variance.
-        let motion = |table: &FilterTable, z: &[f64; 4], covariance, intensity: f64| {
+        // Each motion's error variance, from the output row of e^{AT}.
+        let variance = |table: &FilterTable, covariance, intensity: f64| {
             let k = table.filter.output_state;
-            let (row, rate_row) = (table.row(grid, k), table.row(grid, k + 1));
-            let gain = table.filter.gain;
-            (
-                gain * dot(&row, z),
-                gain * dot(&rate_row, z),
-                gain.powi(2)
-                    * (quadratic_form(&row, covariance) + intensity * table.unpredictable(&row, k)),
-            )
+            let row = table.row(grid, k);
+            table.filter.gain.powi(2)
+                * (quadratic_form(&row, covariance) + intensity * table.unpredictable(&row, k))
         };
-        let (heave_m, heave_rate_mps, heave_variance_m2) = motion(
-            &self.heave,
-            &estimate.mean.heave_filter,
-            &estimate.heave_covariance,
-            ship.heave_noise_intensity(),
-        );
-        let (pitch_rad, pitch_rate_radps, pitch_variance_rad2) = motion(
-            &self.pitch,
-            &estimate.mean.pitch_filter,
-            &estimate.pitch_covariance,
-            ship.pitch_noise_intensity(),
-        );
         ShipMotionForecast {
-            heave_m,
-            heave_rate_mps,
-            pitch_rad,
-            pitch_rate_radps,
-            heave_variance_m2,
-            pitch_variance_rad2,
+            heave_variance_m2: variance(
+                &self.heave,
+                &estimate.heave_covariance,
+                ship.heave_noise_intensity(),
+            ),
+            pitch_variance_rad2: variance(
+                &self.pitch,
+                &estimate.pitch_covariance,
+                ship.pitch_noise_intensity(),
+            ),
+            ..mean
         }
     }
 }

@@ -223,6 +223,18 @@ impl<'a> Serializer for RowSerializer<'a> {
     }
 }
 
+/// Serialiser methods whose value converts losslessly into an integer cell (`bool` as 0
+/// or 1).
+macro_rules! integer_cells {
+    ($($method:ident($ty:ty);)*) => {
+        $(
+            fn $method(self, v: $ty) -> Result<Cell, ColumnError> {
+                Ok(Cell::Integer(v.into()))
+            }
+        )*
+    };
+}
+
 /// Serialises one field's value into a cell.
 struct CellSerializer;
 
@@ -237,29 +249,15 @@ impl Serializer for CellSerializer {
     type SerializeStruct = Impossible<Cell, ColumnError>;
     type SerializeStructVariant = Impossible<Cell, ColumnError>;
 
-    fn serialize_bool(self, v: bool) -> Result<Cell, ColumnError> {
-        Ok(Cell::Integer(i64::from(v)))
-    }
-    fn serialize_i8(self, v: i8) -> Result<Cell, ColumnError> {
-        Ok(Cell::Integer(v.into()))
-    }
-    fn serialize_i16(self, v: i16) -> Result<Cell, ColumnError> {
-        Ok(Cell::Integer(v.into()))
-    }
-    fn serialize_i32(self, v: i32) -> Result<Cell, ColumnError> {
-        Ok(Cell::Integer(v.into()))
-    }
-    fn serialize_i64(self, v: i64) -> Result<Cell, ColumnError> {
-        Ok(Cell::Integer(v))
-    }
-    fn serialize_u8(self, v: u8) -> Result<Cell, ColumnError> {
-        Ok(Cell::Integer(v.into()))
-    }
-    fn serialize_u16(self, v: u16) -> Result<Cell, ColumnError> {
-        Ok(Cell::Integer(v.into()))
-    }
-    fn serialize_u32(self, v: u32) -> Result<Cell, ColumnError> {
-        Ok(Cell::Integer(v.into()))
+    integer_cells! {
+        serialize_bool(bool);
+        serialize_i8(i8);
+        serialize_i16(i16);
+        serialize_i32(i32);
+        serialize_i64(i64);
+        serialize_u8(u8);
+        serialize_u16(u16);
+        serialize_u32(u32);
     }
     fn serialize_u64(self, v: u64) -> Result<Cell, ColumnError> {
         // Seeds and counts stay below 2⁶³ (a scenario's seeds are TOML integers).

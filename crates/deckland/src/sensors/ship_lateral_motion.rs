@@ -23,18 +23,9 @@ use crate::random::{stream_names, NoiseStream, RandomStreams, Reseed};
 pub struct LateralShipMotionMeasurement {
     /// The time the sample was taken (s).
     pub time_s: f64,
-    /// Roll (rad, starboard side down).
-    pub roll_rad: f64,
-    /// Roll rate (rad/s).
-    pub roll_rate_radps: f64,
-    /// Yaw from the mean heading (rad, bow to starboard).
-    pub yaw_rad: f64,
-    /// Yaw rate (rad/s).
-    pub yaw_rate_radps: f64,
-    /// Sway (m, to starboard).
-    pub sway_m: f64,
-    /// Sway rate (m/s).
-    pub sway_rate_mps: f64,
+    /// The roll, yaw and sway measured, with their rates (noisy, as measured; the units
+    /// and signs of the truth's).
+    pub motion: LateralShipMotionOutputs,
 }
 
 /// The measurement of `truth` at `time_s` with one noise sample of σ `sigmas` (SI, in
@@ -48,12 +39,14 @@ pub fn measure_lateral_ship_motion(
     let noise: [f64; 6] = std::array::from_fn(|i| sigmas[i] * streams[i].standard_normal());
     LateralShipMotionMeasurement {
         time_s,
-        roll_rad: truth.roll_rad + noise[0],
-        roll_rate_radps: truth.roll_rate_radps + noise[1],
-        yaw_rad: truth.yaw_rad + noise[2],
-        yaw_rate_radps: truth.yaw_rate_radps + noise[3],
-        sway_m: truth.sway_m + noise[4],
-        sway_rate_mps: truth.sway_rate_mps + noise[5],
+        motion: LateralShipMotionOutputs {
+            roll_rad: truth.roll_rad + noise[0],
+            roll_rate_radps: truth.roll_rate_radps + noise[1],
+            yaw_rad: truth.yaw_rad + noise[2],
+            yaw_rate_radps: truth.yaw_rate_radps + noise[3],
+            sway_m: truth.sway_m + noise[4],
+            sway_rate_mps: truth.sway_rate_mps + noise[5],
+        },
     }
 }
 
@@ -148,12 +141,12 @@ mod tests {
             while let Some(m) = sensor.receive(t) {
                 first_arrival.get_or_insert(t);
                 let errors = [
-                    m.roll_rad,
-                    m.roll_rate_radps,
-                    m.yaw_rad,
-                    m.yaw_rate_radps,
-                    m.sway_m - 1.0,
-                    m.sway_rate_mps,
+                    m.motion.roll_rad,
+                    m.motion.roll_rate_radps,
+                    m.motion.yaw_rad,
+                    m.motion.yaw_rate_radps,
+                    m.motion.sway_m - 1.0,
+                    m.motion.sway_rate_mps,
                 ];
                 for (sum, e) in sums.iter_mut().zip(errors) {
                     *sum += e * e;

@@ -20,7 +20,9 @@ use deckland::scenario::HardwareSet;
 use serde::Serialize;
 
 use super::flight::LateralRun;
-use super::{format_option, prefix, StepArgs, MAX_SECONDS, MIN_SECONDS};
+use super::{
+    format_option, prefix, settling_cell, write_sample_rows, StepArgs, MAX_SECONDS, MIN_SECONDS,
+};
 use crate::commands::common::{Conditions, ControllerChoice};
 use crate::output::OutputDir;
 use crate::plot::step::lateral::lateral_figures;
@@ -143,26 +145,15 @@ fn csv_bytes(runs: &[LateralRun]) -> Result<Vec<u8>> {
         }
     }
     writer.write_record(&header)?;
-    let rows = runs.iter().map(|r| r.samples.len()).max().unwrap_or(0);
-    let longest = runs.iter().find(|r| r.samples.len() == rows);
-    for index in 0..rows {
-        let mut record = Vec::with_capacity(header.len());
-        record.push(
-            longest
-                .map_or(f64::NAN, |r| r.samples[index].time_s)
-                .to_string(),
-        );
-        for run in runs {
-            match run.samples.get(index) {
-                Some(s) => record.extend(s.values().iter().map(f64::to_string)),
-                None => record.extend(std::iter::repeat_n(
-                    String::new(),
-                    LateralSample::COLUMNS.len(),
-                )),
-            }
-        }
-        writer.write_record(&record)?;
-    }
+    let samples: Vec<&[LateralSample]> = runs.iter().map(|r| r.samples.as_slice()).collect();
+    let width = LateralSample::COLUMNS.len();
+    write_sample_rows(
+        &mut writer,
+        &samples,
+        |s| s.time_s,
+        width,
+        |s, record| record.extend(s.values().iter().map(f64::to_string)),
+    )?;
     writer.into_inner().map_err(|e| anyhow!("{e}"))
 }
 
@@ -191,11 +182,7 @@ fn print_table(document: &LateralReport, written: &[PathBuf]) -> Result<()> {
     }
     let row = super::controller_columns(&report.controllers, |c| &c.controller, 30, 16)?;
     row("settling time (±5 %)", &|c| {
-        if c.settled {
-            format_option(c.settling_time_s, 3, "s")
-        } else {
-            "not settled".to_string()
-        }
+        settling_cell(c.settled, c.settling_time_s)
     })?;
     row("overshoot", &|c| format!("{:.1} %", c.overshoot_pct))?;
     row("rise time 10–90 %", &|c| {

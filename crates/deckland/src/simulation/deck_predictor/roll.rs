@@ -73,6 +73,7 @@ impl SensedRoll {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::environment::LateralShipMotionOutputs;
     use crate::sensors::LateralShipMotionMeasurement;
     use crate::simulation::lateral::forecast::roll_forecast;
 
@@ -92,12 +93,14 @@ mod tests {
         let roll = SensedRoll {
             measurement: LateralShipMotionMeasurement {
                 time_s: 10.0,
-                roll_rad: 0.02,
-                roll_rate_radps: 0.005,
-                yaw_rad: 0.0,
-                yaw_rate_radps: 0.0,
-                sway_m: 0.0,
-                sway_rate_mps: 0.0,
+                motion: LateralShipMotionOutputs {
+                    roll_rad: 0.02,
+                    roll_rate_radps: 0.005,
+                    yaw_rad: 0.0,
+                    yaw_rate_radps: 0.0,
+                    sway_m: 0.0,
+                    sway_rate_mps: 0.0,
+                },
             },
             landing_point_rise_m: 10.0,
             ramp_rise_m: 0.6,
@@ -133,8 +136,11 @@ mod tests {
         // A level ship at rest moves nothing.
         let level = SensedRoll {
             measurement: LateralShipMotionMeasurement {
-                roll_rad: 0.0,
-                roll_rate_radps: 0.0,
+                motion: LateralShipMotionOutputs {
+                    roll_rad: 0.0,
+                    roll_rate_radps: 0.0,
+                    ..roll.measurement.motion
+                },
                 ..roll.measurement
             },
             ..roll

@@ -52,7 +52,10 @@ pub fn roll_forecast(measurement: &LateralShipMotionMeasurement, tau: f64) -> (f
         ROLL_FILTER_NATURAL_FREQUENCY_RADPS,
         ROLL_FILTER_DAMPING_RATIO,
     );
-    let (x0, rate0) = (measurement.roll_rad, measurement.roll_rate_radps);
+    let (x0, rate0) = (
+        measurement.motion.roll_rad,
+        measurement.motion.roll_rate_radps,
+    );
     let response = FreeResponse::new(omega, zeta, tau);
     (response.value(x0, rate0), response.rate(x0, rate0))
 }
@@ -151,14 +154,20 @@ impl CentrelineForecaster {
             ROLL_FILTER_DAMPING_RATIO,
             tau,
         )
-        .value(measurement.roll_rad, measurement.roll_rate_radps);
+        .value(
+            measurement.motion.roll_rad,
+            measurement.motion.roll_rate_radps,
+        );
         let dominant = FreeResponse::new(
             DOMINANT_MODE_FREQUENCY_RADPS,
             DOMINANT_MODE_DAMPING_RATIO,
             tau,
         );
-        let yaw = dominant.value(measurement.yaw_rad, measurement.yaw_rate_radps);
-        let sway = dominant.value(measurement.sway_m, measurement.sway_rate_mps);
+        let yaw = dominant.value(
+            measurement.motion.yaw_rad,
+            measurement.motion.yaw_rate_radps,
+        );
+        let sway = dominant.value(measurement.motion.sway_m, measurement.motion.sway_rate_mps);
         let (sin, cos) = self.heading_sin_cos;
         let moved = ShipPose {
             pitch_centre_x_m: -sway * sin,
@@ -223,6 +232,7 @@ pub fn centreline_displacement_m(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::environment::LateralShipMotionOutputs;
 
     #[test]
     fn the_oscillator_forecast_solves_its_equation() {
@@ -248,12 +258,14 @@ mod tests {
         let deck = DeckGeometry::default();
         let measurement = LateralShipMotionMeasurement {
             time_s: 10.0,
-            roll_rad: 0.012,
-            roll_rate_radps: -0.003,
-            yaw_rad: -0.004,
-            yaw_rate_radps: 0.0015,
-            sway_m: 0.35,
-            sway_rate_mps: -0.12,
+            motion: LateralShipMotionOutputs {
+                roll_rad: 0.012,
+                roll_rate_radps: -0.003,
+                yaw_rad: -0.004,
+                yaw_rate_radps: 0.0015,
+                sway_m: 0.35,
+                sway_rate_mps: -0.12,
+            },
         };
         let mut forecaster = CentrelineForecaster::new(&deck);
         for (k, aft) in [60.0, 60.0, 42.5, 0.0, 60.0, 60.0, 13.0]
@@ -266,13 +278,23 @@ mod tests {
             let expected = centreline_displacement_m(
                 &deck,
                 channel(
-                    measurement.roll_rad,
-                    measurement.roll_rate_radps,
+                    measurement.motion.roll_rad,
+                    measurement.motion.roll_rate_radps,
                     ROLL_FILTER_NATURAL_FREQUENCY_RADPS,
                     ROLL_FILTER_DAMPING_RATIO,
                 ),
-                channel(measurement.yaw_rad, measurement.yaw_rate_radps, 0.4, 0.1),
-                channel(measurement.sway_m, measurement.sway_rate_mps, 0.4, 0.1),
+                channel(
+                    measurement.motion.yaw_rad,
+                    measurement.motion.yaw_rate_radps,
+                    0.4,
+                    0.1,
+                ),
+                channel(
+                    measurement.motion.sway_m,
+                    measurement.motion.sway_rate_mps,
+                    0.4,
+                    0.1,
+                ),
                 aft,
             );
             let forecast = forecaster.forecast_m(&deck, &measurement, t, horizon, aft);
@@ -364,12 +386,14 @@ mod tests {
         let deck = DeckGeometry::default();
         let moving = LateralShipMotionMeasurement {
             time_s: 10.0,
-            roll_rad: 0.01,
-            roll_rate_radps: -0.002,
-            yaw_rad: -0.003,
-            yaw_rate_radps: 0.001,
-            sway_m: 0.3,
-            sway_rate_mps: -0.1,
+            motion: LateralShipMotionOutputs {
+                roll_rad: 0.01,
+                roll_rate_radps: -0.002,
+                yaw_rad: -0.003,
+                yaw_rate_radps: 0.001,
+                sway_m: 0.3,
+                sway_rate_mps: -0.1,
+            },
         };
         let at = |range_m: f64| {
             let (horizon, aft) = compensation_station(range_m, 60.0, 60.0);
