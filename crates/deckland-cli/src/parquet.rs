@@ -152,51 +152,40 @@ fn write_cells(
                 .write_batch(&values, None, None)?;
         }
         Kind::Real => {
-            let mut values = Vec::with_capacity(cells.len());
-            for (row, cell) in cells.iter().enumerate() {
-                match cell {
-                    Cell::Missing => {}
-                    Cell::Float(v) if v.is_finite() => values.push(*v),
-                    Cell::Integer(v) => values.push(*v as f64),
-                    other => bail!(
-                        "run {}: `{name}` is {other:?}, not a finite number",
-                        run_indices[row]
-                    ),
-                }
-            }
+            let values =
+                present_values(
+                    name,
+                    cells,
+                    run_indices,
+                    "a finite number",
+                    |cell| match cell {
+                        Cell::Float(v) if v.is_finite() => Some(*v),
+                        Cell::Integer(v) => Some(*v as f64),
+                        _ => None,
+                    },
+                )?;
             column
                 .typed::<DoubleType>()
                 .write_batch(&values, Some(&present), None)?;
         }
         Kind::Boolean => {
-            let mut values = Vec::with_capacity(cells.len());
-            for (row, cell) in cells.iter().enumerate() {
+            let values = present_values(name, cells, run_indices, "true or false", |cell| {
+                // A boolean is taken apart as 0 or 1 (an optional one as a real).
                 match cell {
-                    Cell::Missing => {}
-                    // A boolean is taken apart as 0 or 1 (an optional one as a real).
-                    Cell::Integer(v @ (0 | 1)) => values.push(*v == 1),
-                    Cell::Float(v) if *v == 0.0 || *v == 1.0 => values.push(*v == 1.0),
-                    other => bail!(
-                        "run {}: `{name}` is {other:?}, not true or false",
-                        run_indices[row]
-                    ),
+                    Cell::Integer(v @ (0 | 1)) => Some(*v == 1),
+                    Cell::Float(v) if *v == 0.0 || *v == 1.0 => Some(*v == 1.0),
+                    _ => None,
                 }
-            }
+            })?;
             column
                 .typed::<BoolType>()
                 .write_batch(&values, Some(&present), None)?;
         }
         Kind::Text => {
-            let mut values = Vec::with_capacity(cells.len());
-            for (row, cell) in cells.iter().enumerate() {
-                match cell {
-                    Cell::Missing => {}
-                    Cell::Text(text) => values.push(ByteArray::from(text.as_str())),
-                    other => {
-                        bail!("run {}: `{name}` is {other:?}, not text", run_indices[row])
-                    }
-                }
-            }
+            let values = present_values(name, cells, run_indices, "text", |cell| match cell {
+                Cell::Text(text) => Some(ByteArray::from(text.as_str())),
+                _ => None,
+            })?;
             column
                 .typed::<ByteArrayType>()
                 .write_batch(&values, Some(&present), None)?;
@@ -206,9 +195,49 @@ fn write_cells(
     Ok(())
 }
 
+/// The values of column `name`'s present `cells`, each taken by `value`; a cell it
+/// refuses is an error naming the run (`run_indices`) and what the cell is `not`.
+fn present_values<T>(
+    name: &str,
+    cells: &[Cell],
+    run_indices: &[String],
+    not: &str,
+    value: impl Fn(&Cell) -> Option<T>,
+) -> Result<Vec<T>> {
+    let mut values = Vec::with_capacity(cells.len());
+    for (row, cell) in cells.iter().enumerate() {
+        if matches!(cell, Cell::Missing) {
+            continue;
+        }
+        match value(cell) {
+            Some(v) => values.push(v),
+            None => bail!("run {}: `{name}` is {cell:?}, not {not}", run_indices[row]),
+        }
+    }
+    Ok(values)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn present_cells_are_taken_and_a_refused_one_names_its_run() {
+        let runs = ["7".to_string(), "8".to_string(), "9".to_string()];
+        let real = |cell: &Cell| match cell {
+            Cell::Float(v) if v.is_finite() => Some(*v),
+            Cell::Integer(v) => Some(*v as f64),
+            _ => None,
+        };
+        let cells = [Cell::Float(1.5), Cell::Missing, Cell::Integer(2)];
+        let values = present_values("wire", &cells, &runs, "a finite number", real).unwrap();
+        assert_eq!(values, [1.5, 2.0]);
+        let cells = [Cell::Missing, Cell::Float(f64::NAN), Cell::Float(1.0)];
+        let error = present_values("wire", &cells, &runs, "a finite number", real)
+            .unwrap_err()
+            .to_string();
+        assert_eq!(error, "run 8: `wire` is Float(NaN), not a finite number");
+    }
 
     #[test]
     fn the_schema_gives_each_column_its_kind() {
