@@ -22,6 +22,8 @@ SETUP = {
     # the plant registry: the models by name, and the built plant of each
     "crates/deckland/src/aircraft/plant.rs",
     "crates/deckland/src/aircraft/built_plant.rs",
+    # the front end's registry: each model's `--model` value and trim/linearize commands
+    "crates/deckland-cli/src/commands/models.rs",
     # reading scenario files
     "crates/deckland/src/scenario/aircraft.rs",
 }

@@ -3,7 +3,6 @@
 //! wind), shared by their 3-DOF and 6-DOF variants.
 
 use anyhow::{bail, Context, Result};
-use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
 use clap::Args;
 use deckland::aircraft::{AerodynamicConfiguration, Aircraft, ConfigurationName, PlantModel};
 use deckland::analysis::{trim, TrimError, TrimPoint, TrimRequest};
@@ -36,7 +35,7 @@ pub struct TrimArgs {
     pub configuration: ConfigurationName,
     /// Aircraft model: the paper's longitudinal 3-DOF model, or the 6-DOF model with
     /// the lateral-directional axes (docs/six-dof.md).
-    #[arg(long, default_value = "3dof", value_parser = plant_model_parser())]
+    #[arg(long, default_value = "3dof", value_parser = super::models::plant_model_parser())]
     pub model: PlantModel,
     /// Sideslip β (deg), positive with the relative wind from the right; 6-DOF only.
     #[arg(
@@ -60,31 +59,21 @@ pub struct TrimArgs {
     pub json: bool,
 }
 
-/// The `--model` names of the library's plant models ([`PlantModel::name`]), each with
-/// its one-line summary in the help.
-fn plant_model_parser() -> impl TypedValueParser<Value = PlantModel> {
-    let values =
-        PlantModel::ALL.map(|model| PossibleValue::new(model.name()).help(model.summary()));
-    PossibleValuesParser::new(values)
-        .try_map(|name| PlantModel::from_name(&name).ok_or("not a plant model"))
-}
-
 impl TrimArgs {
-    /// Refuses the lateral options with the 3-DOF model, which has no lateral axes.
-    pub fn check_model_options(&self) -> Result<()> {
-        if self.model == PlantModel::ThreeDof {
-            if self.sideslip_deg != 0.0 {
-                bail!(
-                    "--sideslip {:?} needs --model 6dof: the 3-DOF model has no sideslip",
-                    self.sideslip_deg
-                );
-            }
-            if self.crosswind_mps != 0.0 {
-                bail!(
-                    "--crosswind {:?} needs --model 6dof: the 3-DOF model has no lateral wind",
-                    self.crosswind_mps
-                );
-            }
+    /// Refuses the lateral options, which the 3-DOF model (it has no lateral axes) cannot
+    /// take.
+    pub fn refuse_lateral_options(&self) -> Result<()> {
+        if self.sideslip_deg != 0.0 {
+            bail!(
+                "--sideslip {:?} needs --model 6dof: the 3-DOF model has no sideslip",
+                self.sideslip_deg
+            );
+        }
+        if self.crosswind_mps != 0.0 {
+            bail!(
+                "--crosswind {:?} needs --model 6dof: the 3-DOF model has no lateral wind",
+                self.crosswind_mps
+            );
         }
         Ok(())
     }

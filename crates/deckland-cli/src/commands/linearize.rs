@@ -5,7 +5,6 @@ use super::flight_condition::TrimArgs;
 use super::trim::print_trim_table;
 use crate::output::{fixed, rows};
 use anyhow::Result;
-use deckland::aircraft::PlantModel;
 use deckland::aircraft::TrimReport;
 use deckland::analysis::{
     identify_modes, linearize, LinearModel, Mode, INPUT_NAMES, INPUT_UNITS, STATE_NAMES,
@@ -115,12 +114,14 @@ fn print_table(
     Ok(())
 }
 
-/// Runs `deckland linearize`.
+/// Runs `deckland linearize` with the model's command ([`super::models::commands`]).
 pub fn run(args: &TrimArgs) -> Result<()> {
-    args.check_model_options()?;
-    if args.model == PlantModel::SixDof {
-        return super::six_dof::run_linearize(args);
-    }
+    (super::models::commands(args.model).linearize)(args)
+}
+
+/// `deckland linearize --model 3dof`.
+pub fn run_three_dof(args: &TrimArgs) -> Result<()> {
+    args.refuse_lateral_options()?;
     let aircraft = args.aircraft();
     let point = args.trim(&aircraft)?;
     let model = linearize(&aircraft, &point);

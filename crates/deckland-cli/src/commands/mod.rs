@@ -8,6 +8,7 @@ pub mod flight_condition;
 pub mod land;
 pub mod linearize;
 pub mod merge;
+pub mod models;
 pub mod outcome;
 pub mod rare;
 pub mod reproduce;

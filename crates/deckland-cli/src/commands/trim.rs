@@ -5,7 +5,6 @@ use deckland::aircraft::ConfigurationName;
 use deckland::analysis::TrimPoint;
 
 use super::flight_condition::TrimArgs;
-use deckland::aircraft::PlantModel;
 
 /// Prints a trim point as a readable table.
 pub fn print_trim_table(
@@ -44,12 +43,14 @@ pub fn print_trim_table(
     Ok(())
 }
 
-/// Runs `deckland trim`.
+/// Runs `deckland trim` with the model's command ([`super::models::commands`]).
 pub fn run(args: &TrimArgs) -> Result<()> {
-    args.check_model_options()?;
-    if args.model == PlantModel::SixDof {
-        return super::six_dof::run_trim(args);
-    }
+    (super::models::commands(args.model).trim)(args)
+}
+
+/// `deckland trim --model 3dof`.
+pub fn run_three_dof(args: &TrimArgs) -> Result<()> {
+    args.refuse_lateral_options()?;
     let aircraft = args.aircraft();
     let point = args.trim(&aircraft)?;
     super::common::print_json_or(

@@ -10,7 +10,6 @@
 use std::path::PathBuf;
 
 use anyhow::{anyhow, bail, Context, Result};
-use deckland::aircraft::PlantModel;
 use deckland::experiments::{
     fly_lateral_step, LateralAxis, LateralSample, LateralSetup, LateralStep, LateralStepReport,
     LATERAL_STEP_TIME_S, MAX_LATERAL_STEP_DEG, MIN_LATERAL_STEP_DEG,
@@ -80,14 +79,6 @@ pub(crate) fn run(args: &StepArgs, axis: LateralAxis) -> Result<()> {
             } else {
                 "--hardware paper"
             },
-            axis_name(axis)
-        );
-    }
-    if scenario.aircraft.model == PlantModel::ThreeDof {
-        bail!(
-            "the scenario file sets `aircraft.model` = \"3dof\", the longitudinal aircraft, \
-             which has no {} axis; write `model = \"6dof\"` (or leave the key out) to fly \
-             the lateral step",
             axis_name(axis)
         );
     }

@@ -4,7 +4,7 @@ use super::spec::LateralStepError;
 use crate::aircraft::six_dof::{
     linearize_six_dof, trim_six_dof, SixDofAircraft, SixDofTrimPoint, SixDofTrimRequest,
 };
-use crate::aircraft::TrimRequest;
+use crate::aircraft::{PlantModel, TrimRequest};
 use crate::control::lateral::design::{channel_hardware, channel_plants};
 use crate::control::lateral::{
     LateralChannel, LateralDesignContext, LateralLawParameters, RollLaw, YawLaw,
@@ -35,14 +35,22 @@ impl LateralSetup {
 
     /// The 6-DOF aircraft of `scenario` (its `[aircraft]` section: mass, configuration,
     /// engines, span and inertias, and the aileron and rudder actuators of its hardware
-    /// set), trimmed level at its approach airspeed (`approach.airspeed_mps`), whatever
-    /// its `aircraft.model` (a lateral step always flies the 6-DOF model). The paper's set
-    /// has no lateral axes and is refused.
+    /// set), trimmed level at its approach airspeed (`approach.airspeed_mps`). The paper's
+    /// set and a scenario whose `aircraft.model` is the 3-DOF aircraft have no lateral axes
+    /// and are refused.
     pub fn from_scenario(scenario: &Scenario) -> Result<Self, LateralStepError> {
         if scenario.hardware == HardwareSet::Paper {
             return Err(LateralStepError::Setup(
                 "`hardware` = \"paper\" has no lateral axes: the paper's set flies the 3-DOF \
                  model; a roll or yaw step flies the realistic set or a scenario file on it"
+                    .to_owned(),
+            ));
+        }
+        if scenario.aircraft.model == PlantModel::ThreeDof {
+            return Err(LateralStepError::Setup(
+                "the scenario file sets `aircraft.model` = \"3dof\", the longitudinal aircraft, \
+                 which has no roll or yaw axis; write `model = \"6dof\"` (or leave the key out) \
+                 to fly a lateral step"
                     .to_owned(),
             ));
         }
