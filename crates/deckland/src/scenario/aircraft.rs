@@ -1,5 +1,6 @@
 //! The aircraft section of a scenario: the model flown and its parameters.
 
+use super::hardware::HardwareSet;
 use crate::aircraft::six_dof::{LateralParameters, SixDofAircraft, SurfaceActuatorParameters};
 use crate::aircraft::{
     AerodynamicConfiguration, AerodynamicData, Aircraft, AircraftParameters, ConfigurationName,
@@ -83,8 +84,23 @@ impl AircraftSection {
         )
     }
 
+    /// Checks every part of the aircraft, and that `hardware` flies its model (the paper's
+    /// set flies the 3-DOF model only).
+    pub fn validate(&self, hardware: HardwareSet) -> Result<(), ParameterError> {
+        self.validate_parts()?;
+        if hardware == HardwareSet::Paper && self.model != PlantModel::ThreeDof {
+            return Err(ParameterError::new(
+                "aircraft",
+                "model",
+                self.model.name(),
+                "\"3dof\" with `hardware = \"paper\"` (the paper's set flies the 3-DOF model)",
+            ));
+        }
+        Ok(())
+    }
+
     /// Checks every part of the aircraft.
-    pub fn validate(&self) -> Result<(), ParameterError> {
+    fn validate_parts(&self) -> Result<(), ParameterError> {
         self.parameters.validate()?;
         self.engines.validate()?;
         self.elevator_actuator.validate()?;
@@ -95,6 +111,18 @@ impl AircraftSection {
         self.rudder_actuator
             .validate(SixDofAircraft::RUDDER_SECTION)?;
         self.aerodynamics.validate()
+    }
+
+    /// The natural frequency (rad/s) of the fastest surface actuator the model flies: the
+    /// elevator's, and for the 6-DOF model the aileron's and the rudder's too.
+    pub fn fastest_actuator_rad_s(&self) -> f64 {
+        let elevator = self.elevator_actuator.natural_frequency_rad_s;
+        match self.model {
+            PlantModel::ThreeDof => elevator,
+            PlantModel::SixDof => elevator
+                .max(self.aileron_actuator.natural_frequency_rad_s)
+                .max(self.rudder_actuator.natural_frequency_rad_s),
+        }
     }
 }
 
@@ -168,6 +196,6 @@ impl AircraftDefinition {
     pub fn validate(&self) -> Result<(), ParameterError> {
         let mut section = AircraftSection::default();
         self.apply_to(&mut section);
-        section.validate()
+        section.validate_parts()
     }
 }

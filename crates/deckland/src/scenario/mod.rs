@@ -7,7 +7,6 @@
 //! [`load_scenario`] reads a scenario file and reports a bad one by file, line and field;
 //! [`DEFAULT_SCENARIO_TOML`] is the commented default file.
 
-use crate::aircraft::PlantModel;
 use crate::control::lateral::{LateralChannel, LateralLawParameters};
 use crate::control::pitch::PitchControllerParameters;
 use crate::control::{
@@ -462,15 +461,7 @@ impl Scenario {
         Bounds::closed(1e-5, 0.01).check("", "time_step_s", self.time_step_s)?;
         Bounds::closed(1.0, 3600.0).check("", "max_time_s", self.max_time_s)?;
         self.mission.validate()?;
-        self.aircraft.validate()?;
-        if self.hardware == HardwareSet::Paper && self.aircraft.model != PlantModel::ThreeDof {
-            return Err(ParameterError::new(
-                "aircraft",
-                "model",
-                self.aircraft.model.name(),
-                "\"3dof\" with `hardware = \"paper\"` (the paper's set flies the 3-DOF model)",
-            ));
-        }
+        self.aircraft.validate(self.hardware)?;
         self.environment.validate()?;
         self.control.validate()?;
         self.approach.validate()?;
@@ -483,13 +474,7 @@ impl Scenario {
     /// ω·dt ≤ 0.5 for the actuator and k3·dt/ε ≤ 0.5 for the observer.
     fn check_time_step_resolves_the_dynamics(&self) -> Result<(), ParameterError> {
         let dt = self.time_step_s;
-        let aircraft = &self.aircraft;
-        let mut omega = aircraft.elevator_actuator.natural_frequency_rad_s;
-        if aircraft.model == PlantModel::SixDof {
-            omega = omega
-                .max(aircraft.aileron_actuator.natural_frequency_rad_s)
-                .max(aircraft.rudder_actuator.natural_frequency_rad_s);
-        }
+        let omega = self.aircraft.fastest_actuator_rad_s();
         if omega * dt > 0.5 {
             return Err(ParameterError::new(
                 "",
