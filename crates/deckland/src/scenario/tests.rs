@@ -2,6 +2,7 @@
 //! independence of the environment's random streams.
 
 use super::*;
+use crate::aircraft::PlantModel;
 use crate::environment::{ShipMotionSimulator, WindModel};
 use crate::random::RandomStreams;
 use crate::sensors::PitchSensor;
