@@ -121,12 +121,14 @@ pub fn run(args: &RareArgs) -> Result<()> {
 }
 
 fn show(bar: &Progress, repetition: u64, run: &Run) {
+    // A repetition stopped by its share of the budget has no estimate: say so, with why.
+    let estimate = run
+        .estimate
+        .map_or_else(|| run.outcome.to_string(), |p| format!("estimate {p:.3e}"));
     bar.message(format!(
-        "splitting repetition {} done: {} levels, estimate {}",
+        "splitting repetition {}: {} levels, {estimate}",
         repetition + 1,
         run.levels.len(),
-        run.estimate
-            .map_or_else(|| "—".to_owned(), |p| format!("{p:.3e}")),
     ));
 }
 
