@@ -5,7 +5,8 @@ approach (`PlantModel`, `BuiltPlant`, `ThreeDof`, `SixDof` as words — not a ty
 named after the 6-DOF model such as `SixDofTrimError` —, `three_dimensional`,
 `three_d`, `LATERAL`, `LateralLoop`, an `Option<…Lateral…>`, `Some(lateral…)`, a
 `.lateral` field, `lateral.is_some()`/`.as_ref()`/`.map()`/…) and branches (`if`, `match`,
-`=>`, `?`, `.then(`, `.map(`, `.and_then(`, `.filter(`, `while`). The setup code and the
+`=>`, `?`, `else` (a `let … else` too), `.then(`, `.map(`, `.map_or(`, `.and_then(`,
+`.filter(`, `.zip(`, `.is_some_and(`, `while`). The setup code and the
 registries, where choosing the parts is the job, are left out (SETUP below). Prints the
 count per file and a last line `lines N files M`; with `--max N` exits 1 when there are
 more than N. usage: plant_branches.py [--max N] DIR..."""
@@ -32,7 +33,10 @@ TOKEN = re.compile(
     r"|flies_three_dimensional|Some\(\s*\w*lateral\w*|\w*lateral\w*\.(is_some|is_none|as_ref|as_mut|map|and_then|then)\b"
     r"|\.lateral\b|is_lateral|\bsix_dof\b|Option<\w*Lateral"
 )
-BRANCH = re.compile(r"\bif\b|\bmatch\b|=>|\.then\(|\.then_some\(|\bwhile\b|\.map\(|\.and_then\(|\.filter\(|\?")
+BRANCH = re.compile(
+    r"\bif\b|\bmatch\b|=>|\.then\(|\.then_some\(|\bwhile\b|\.map\(|\.and_then\(|\.filter\(|\?"
+    r"|\belse\b|\.map_or(_else)?\(|\.zip\(|\.is_some_and\(|\.is_none_or\("
+)
 
 args = sys.argv[1:]
 limit = None
