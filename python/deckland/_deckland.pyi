@@ -103,7 +103,7 @@ class Approach:
     @property
     def action_ranges(self) -> Dict[str, Tuple[float, float]]: ...
 
-class _Env:
+class _EnvConfig:
     def __init__(
         self,
         scenario: Optional[Scenario],
@@ -116,8 +116,12 @@ class _Env:
         rewards: Dict[str, Any],
         reward: str,
         forecast: bool,
+        max_episode_steps: Optional[int] = None,
         lateral_spans: Optional[Tuple[float, float, float, float]] = None,
     ) -> None: ...
+
+class _Env:
+    def __init__(self, config: _EnvConfig) -> None: ...
     def describe(self) -> Dict[str, Any]: ...
     def reset(self, seed: int) -> Tuple[np.ndarray, np.ndarray, np.ndarray]: ...
     def step(self, action: Any) -> Tuple[np.ndarray, float, bool, bool, Dict[str, Any]]: ...
@@ -129,22 +133,7 @@ class _Env:
     def time_s(self) -> float: ...
 
 class _VecEnv:
-    def __init__(
-        self,
-        num_envs: int,
-        scenario: Optional[Scenario],
-        control: str,
-        control_interval_s: float,
-        pitch_command_span_rad: float,
-        thrust_span_n: Optional[float],
-        elevator_span_rad: float,
-        climb_rate_span_mps: float,
-        rewards: Dict[str, Any],
-        reward: str,
-        forecast: bool,
-        max_episode_steps: Optional[int],
-        lateral_spans: Optional[Tuple[float, float, float, float]] = None,
-    ) -> None: ...
+    def __init__(self, num_envs: int, config: _EnvConfig) -> None: ...
     def describe(self) -> Dict[str, Any]: ...
     def reset(self, seeds: List[int]) -> Tuple[np.ndarray, np.ndarray, np.ndarray]: ...
     def step(
