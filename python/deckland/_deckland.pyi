@@ -1,7 +1,7 @@
 """Type stubs of the compiled core (python/src/); the documented API is `deckland`."""
 
 from os import PathLike
-from typing import Any, Callable, Dict, List, Optional, Tuple, Union
+from typing import Any, Callable, Dict, List, Optional, Protocol, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -153,20 +153,19 @@ class _VecEnv:
 
 def trim(speed_mps: float = 69.1, gamma_deg: float = 0.0, configuration: str = "landing") -> Trim: ...
 def linearize(speed_mps: float = 69.1, gamma_deg: float = 0.0, configuration: str = "landing") -> LinearModel: ...
-def trim_six_dof(
-    speed_mps: float = 69.1,
-    gamma_deg: float = 0.0,
-    sideslip_deg: float = 0.0,
-    crosswind_mps: float = 0.0,
-    configuration: str = "landing",
-) -> Dict[str, Any]: ...
-def linearize_six_dof(
-    speed_mps: float = 69.1,
-    gamma_deg: float = 0.0,
-    sideslip_deg: float = 0.0,
-    crosswind_mps: float = 0.0,
-    configuration: str = "landing",
-) -> Dict[str, Any]: ...
+class _SixDofFlightCondition(Protocol):
+    """`trim_six_dof` and `linearize_six_dof`: the same flight condition, a dict back."""
+    def __call__(
+        self,
+        speed_mps: float = 69.1,
+        gamma_deg: float = 0.0,
+        sideslip_deg: float = 0.0,
+        crosswind_mps: float = 0.0,
+        configuration: str = "landing",
+    ) -> Dict[str, Any]: ...
+
+trim_six_dof: _SixDofFlightCondition
+linearize_six_dof: _SixDofFlightCondition
 def fly(
     scenario: Optional[Scenario] = None,
     seed: Optional[int] = None,
