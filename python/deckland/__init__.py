@@ -29,11 +29,12 @@ Units are SI and angles radians, except where a name says ``_deg``.
 
 from __future__ import annotations
 
+import functools
 import os
 import sys
 import time
 from dataclasses import dataclass, field
-from typing import Any, Callable, Dict, Iterator, List, Optional, Union
+from typing import Any, Callable, Dict, Iterator, List, Optional, TypeVar, Union, cast
 
 from . import _deckland
 from ._deckland import (
@@ -350,53 +351,23 @@ def campaign(
     return Campaign(runs=table(columns), summary=summary, folder=folder)
 
 
-def rare(
-    scenario: Scenario,
-    event: str,
-    threshold: Optional[float] = None,
-    target_rel_error: Optional[float] = None,
-    max_runs: Optional[int] = None,
-    particles: Optional[int] = None,
-    seed: Optional[int] = None,
-    threads: Optional[int] = None,
-    *,
-    out: Optional[PathLike] = None,
-    force: bool = False,
-    save_flights: Optional[int] = None,
-    figures: Optional[Figures] = None,
-) -> Dict[str, Any]:
-    """The probability per approach of a catastrophe, by splitting, as ``deckland rare``.
+_F = TypeVar("_F", bound=Callable[..., Any])
 
-    ``event`` is ``"ramp_strike"``, ``"hard_landing"``, ``"off_centre"`` (3-D approach),
-    ``"divergence"`` or ``"lost"`` (any of them); ``threshold`` moves it (a ramp clearance
-    below it in m, a touchdown sink rate or offset above it). Splitting stops at
-    ``target_rel_error`` (default 0.1, checked from 32 repetitions on) or once
-    ``max_runs`` approaches' worth is spent (default 100 000). Returns the dict that
-    ``deckland rare`` writes as ``summary.json`` (without the folder and the time): the
-    estimate under ``estimate`` (``probability``, ``interval``,
-    ``relative_standard_error``, ``stop``), each repetition's ``levels``, the approaches
-    spent and those a plain campaign would need. The result does not depend on
-    ``threads``; a bad argument or a budget too small raises ``ValueError``.
 
-    With ``out``, the folder ``deckland rare --out`` writes is written there (the summary,
-    ``levels.csv``, the levels' plot, ``save_flights`` flights that reached the event
-    with their plots, default 3, at most 20, and ``report.html``), and the dict's
-    ``folder`` names it; ``force`` and ``figures`` as for :func:`fly`.
-    """
-    return _deckland.rare(
-        scenario,
-        event,
-        threshold,
-        target_rel_error,
-        max_runs,
-        particles,
-        seed,
-        threads,
-        _path(out),
-        _flag("force", force),
-        save_flights,
-        figures,
-    )
+def _folder_checked(function: _F) -> _F:
+    """``function`` of the compiled core with its ``out`` and ``force`` checked as
+    :func:`fly`'s and :func:`campaign`'s are (:func:`_path`, :func:`_flag`)."""
+
+    @functools.wraps(function)
+    def checked(*args: Any, out: Optional[PathLike] = None, force: bool = False, **kwargs: Any) -> Any:
+        return function(*args, out=_path(out), force=_flag("force", force), **kwargs)
+
+    return cast(_F, checked)
+
+
+#: The probability per approach of a catastrophe, by splitting, as ``deckland rare``: the
+#: compiled core's ``rare`` (documented there), its folder's arguments checked.
+rare = _folder_checked(_deckland.rare)
 
 
 def _register_gymnasium() -> None:

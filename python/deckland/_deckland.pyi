@@ -1,7 +1,7 @@
 """Type stubs of the compiled core (python/src/); the documented API is `deckland`."""
 
 from os import PathLike
-from typing import Any, Callable, Dict, List, Optional, Tuple, Union
+from typing import Any, Callable, Dict, List, Optional, Protocol, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -103,7 +103,7 @@ class Approach:
     @property
     def action_ranges(self) -> Dict[str, Tuple[float, float]]: ...
 
-class _Env:
+class _EnvConfig:
     def __init__(
         self,
         scenario: Optional[Scenario],
@@ -116,8 +116,12 @@ class _Env:
         rewards: Dict[str, Any],
         reward: str,
         forecast: bool,
+        max_episode_steps: Optional[int] = None,
         lateral_spans: Optional[Tuple[float, float, float, float]] = None,
     ) -> None: ...
+
+class _Env:
+    def __init__(self, config: _EnvConfig) -> None: ...
     def describe(self) -> Dict[str, Any]: ...
     def reset(self, seed: int) -> Tuple[np.ndarray, np.ndarray, np.ndarray]: ...
     def step(self, action: Any) -> Tuple[np.ndarray, float, bool, bool, Dict[str, Any]]: ...
@@ -129,22 +133,7 @@ class _Env:
     def time_s(self) -> float: ...
 
 class _VecEnv:
-    def __init__(
-        self,
-        num_envs: int,
-        scenario: Optional[Scenario],
-        control: str,
-        control_interval_s: float,
-        pitch_command_span_rad: float,
-        thrust_span_n: Optional[float],
-        elevator_span_rad: float,
-        climb_rate_span_mps: float,
-        rewards: Dict[str, Any],
-        reward: str,
-        forecast: bool,
-        max_episode_steps: Optional[int],
-        lateral_spans: Optional[Tuple[float, float, float, float]] = None,
-    ) -> None: ...
+    def __init__(self, num_envs: int, config: _EnvConfig) -> None: ...
     def describe(self) -> Dict[str, Any]: ...
     def reset(self, seeds: List[int]) -> Tuple[np.ndarray, np.ndarray, np.ndarray]: ...
     def step(
@@ -164,20 +153,19 @@ class _VecEnv:
 
 def trim(speed_mps: float = 69.1, gamma_deg: float = 0.0, configuration: str = "landing") -> Trim: ...
 def linearize(speed_mps: float = 69.1, gamma_deg: float = 0.0, configuration: str = "landing") -> LinearModel: ...
-def trim_six_dof(
-    speed_mps: float = 69.1,
-    gamma_deg: float = 0.0,
-    sideslip_deg: float = 0.0,
-    crosswind_mps: float = 0.0,
-    configuration: str = "landing",
-) -> Dict[str, Any]: ...
-def linearize_six_dof(
-    speed_mps: float = 69.1,
-    gamma_deg: float = 0.0,
-    sideslip_deg: float = 0.0,
-    crosswind_mps: float = 0.0,
-    configuration: str = "landing",
-) -> Dict[str, Any]: ...
+class _SixDofFlightCondition(Protocol):
+    """`trim_six_dof` and `linearize_six_dof`: the same flight condition, a dict back."""
+    def __call__(
+        self,
+        speed_mps: float = 69.1,
+        gamma_deg: float = 0.0,
+        sideslip_deg: float = 0.0,
+        crosswind_mps: float = 0.0,
+        configuration: str = "landing",
+    ) -> Dict[str, Any]: ...
+
+trim_six_dof: _SixDofFlightCondition
+linearize_six_dof: _SixDofFlightCondition
 def fly(
     scenario: Optional[Scenario] = None,
     seed: Optional[int] = None,
@@ -219,7 +207,8 @@ def rare(
     particles: Optional[int] = None,
     seed: Optional[int] = None,
     threads: Optional[int] = None,
-    out: Optional[str] = None,
+    *,
+    out: Optional[Union[str, PathLike[str]]] = None,
     force: bool = False,
     save_flights: Optional[int] = None,
     figures: Optional[Any] = None,

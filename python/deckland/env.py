@@ -52,7 +52,7 @@ from gymnasium import spaces
 from gymnasium.vector import AutoresetMode, VectorEnv
 from gymnasium.vector.utils import batch_space
 
-from ._deckland import MAX_SEED, Scenario, _Env, _VecEnv
+from ._deckland import MAX_SEED, Scenario, _Env, _EnvConfig, _VecEnv
 
 ENV_ID = "deckland/CarrierLanding-v1"
 ENV_ID_3D = "deckland/CarrierLanding3D-v0"
@@ -212,7 +212,8 @@ def _is_three_dimensional(env: Any, three_dimensional: Optional[bool]) -> bool:
 
 
 def _core_options(three_dimensional: bool, options: Dict[str, Any]) -> Dict[str, Any]:
-    """The keyword arguments of the Rust core (``_Env``, ``_VecEnv``) from the options of
+    """The keyword arguments of the Rust core's configuration (``_EnvConfig``, which
+    ``_Env`` and ``_VecEnv`` take) from the options of
     :class:`CarrierLandingEnv` (by name), checked: a wrong type, an unknown reward and a
     lateral span given to the 2-D environment are refused by name."""
     known = REWARDS_3D if three_dimensional else REWARDS
@@ -338,7 +339,7 @@ class CarrierLandingEnv(gymnasium.Env):
         self.three_dimensional = _is_three_dimensional(self, three_dimensional)
         self.control = control
         self.render_mode = render_mode
-        self._core = _Env(**_core_options(self.three_dimensional, self._kwargs))
+        self._core = _Env(_EnvConfig(**_core_options(self.three_dimensional, self._kwargs)))
         self.action_space, self.observation_space = _read_description(self)
         self._episode_seed: Optional[int] = None
 
@@ -469,11 +470,11 @@ class CarrierLandingVecEnv(VectorEnv):
         self.three_dimensional = _is_three_dimensional(self, three_dimensional)
         self.control = control
         self.render_mode = render_mode
-        self._core = _VecEnv(
-            num_envs=self.num_envs,
+        config = _EnvConfig(
             max_episode_steps=None if max_episode_steps is None else int(max_episode_steps),
             **_core_options(self.three_dimensional, options),
         )
+        self._core = _VecEnv(self.num_envs, config)
         self.single_action_space, self.single_observation_space = _read_description(self)
         self.outcomes = tuple(self.description["outcomes"])
         self.action_space = batch_space(self.single_action_space, self.num_envs)

@@ -50,7 +50,7 @@ mod _deckland {
     #[pymodule_export]
     use super::flight::fly;
     #[pymodule_export]
-    use super::gym::{Env, VecEnv};
+    use super::gym::{Config, Env, VecEnv};
     #[pymodule_export]
     use super::lateral_step::lateral_step;
     #[pymodule_export]

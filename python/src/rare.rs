@@ -77,12 +77,25 @@ fn request_of(
     Ok((request, threads))
 }
 
-/// Estimates the probability per approach of `event` in `scenario` by adaptive
-/// multilevel splitting; returns the result as `deckland rare` writes `summary.json`
-/// (with `out`, the folder `deckland rare --out` writes is written there, with
-/// `save_flights` flights that reached the event, and the dict's `folder` names it).
+/// The probability per approach of a catastrophe, by splitting, as ``deckland rare``.
+///
+/// ``event`` is ``"ramp_strike"``, ``"hard_landing"``, ``"off_centre"`` (3-D approach),
+/// ``"divergence"`` or ``"lost"`` (any of them); ``threshold`` moves it (a ramp clearance
+/// below it in m, a touchdown sink rate or offset above it). Splitting stops at
+/// ``target_rel_error`` (default 0.1, checked from 32 repetitions on) or once
+/// ``max_runs`` approaches' worth is spent (default 100 000). Returns the dict that
+/// ``deckland rare`` writes as ``summary.json`` (without the folder and the time): the
+/// estimate under ``estimate`` (``probability``, ``interval``,
+/// ``relative_standard_error``, ``stop``), each repetition's ``levels``, the approaches
+/// spent and those a plain campaign would need. The result does not depend on
+/// ``threads``; a bad argument or a budget too small raises ``ValueError``.
+///
+/// With ``out``, the folder ``deckland rare --out`` writes is written there (the summary,
+/// ``levels.csv``, the levels' plot, ``save_flights`` flights that reached the event
+/// with their plots, default 3, at most 20, and ``report.html``), and the dict's
+/// ``folder`` names it; ``force`` and ``figures`` as for :func:`fly`.
 #[pyfunction]
-#[pyo3(signature = (scenario, event, threshold = None, target_rel_error = None, max_runs = None, particles = None, seed = None, threads = None, out = None, force = false, save_flights = None, figures = None))]
+#[pyo3(signature = (scenario, event, threshold = None, target_rel_error = None, max_runs = None, particles = None, seed = None, threads = None, *, out = None, force = false, save_flights = None, figures = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn rare(
     py: Python<'_>,

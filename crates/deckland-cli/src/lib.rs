@@ -64,12 +64,12 @@ enum Command {
 /// The figure options of a command that writes figures.
 fn figure_args(command: &Command) -> Option<&plot::FigureArgs> {
     match command {
-        Command::Land(args) => Some(&args.figures),
-        Command::Sink(args) => Some(&args.figures),
+        Command::Land(args) => Some(&args.written.folder.figures),
+        Command::Sink(args) => Some(&args.folder.figures),
         Command::Environment(args) => Some(&args.figures),
-        Command::Step(args) => Some(&args.figures),
+        Command::Step(args) => Some(&args.folder.figures),
         Command::Reproduce(args) => Some(&args.figures),
-        Command::Run(args) => Some(&args.figures),
+        Command::Run(args) => Some(&args.written.folder.figures),
         Command::Campaign(args) => Some(&args.figures),
         Command::Merge(args) => Some(&args.figures),
         Command::Rare(args) => Some(&args.figures),

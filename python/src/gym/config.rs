@@ -1,5 +1,7 @@
 //! What every environment of one configuration shares, built from the Python arguments.
 
+use std::sync::Arc;
+
 use deckland::scenario::Scenario as RustScenario;
 use deckland::simulation::SignalId;
 use pyo3::prelude::*;
@@ -63,77 +65,89 @@ pub(crate) struct EnvConfig {
     pub(super) normalisation: Vec<Normalisation>,
 }
 
-/// Builds the configuration from the Python arguments.
-#[allow(clippy::too_many_arguments)]
-pub(super) fn config(
-    scenario: Option<PyRef<'_, Scenario>>,
-    control: &str,
-    control_interval_s: f64,
-    spans: (f64, Option<f64>, f64, f64),
-    rewards: &Bound<'_, PyDict>,
-    reward: &str,
-    forecast: bool,
-    max_episode_steps: Option<u64>,
-    lateral_spans: Option<(f64, f64, f64, f64)>,
-) -> PyResult<EnvConfig> {
-    let control = Control::parse(control)?;
-    let shaped = is_shaped(reward)?;
-    let base = scenario_or_default(scenario);
-    let mut flown = flown_scenario(&base.scenario, None, false)?;
-    // The wave-off is the agent's decision.
-    flown.control.wave_off.enabled = false;
-    let probe = Stepper::new(&flown, control_interval_s)?;
-    let system = probe.simulation().system();
-    let trim = *system.trim();
-    let max_thrust_n = system.aircraft().engines().max_total_thrust_n();
-    let actuator = system.aircraft().actuator();
-    let (pitch_span_rad, thrust_span_n, elevator_span_rad, climb_rate_span_mps) = spans;
-    let thrust_span_n = thrust_span_n.unwrap_or(0.25 * max_thrust_n);
-    check_spans(
-        (
-            pitch_span_rad,
-            thrust_span_n,
+/// The configuration as the Python class `_EnvConfig`: built once from the arguments of
+/// the environments (`deckland.env`), then handed to `_Env` or `_VecEnv`.
+#[pyclass(name = "_EnvConfig", module = "deckland._deckland", frozen)]
+pub struct Config(pub(super) Arc<EnvConfig>);
+
+#[pymethods]
+impl Config {
+    /// Builds the configuration from the Python arguments.
+    #[new]
+    #[pyo3(signature = (scenario, control, control_interval_s, pitch_command_span_rad, thrust_span_n, elevator_span_rad, climb_rate_span_mps, rewards, reward, forecast, max_episode_steps=None, lateral_spans=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        scenario: Option<PyRef<'_, Scenario>>,
+        control: &str,
+        control_interval_s: f64,
+        pitch_command_span_rad: f64,
+        thrust_span_n: Option<f64>,
+        elevator_span_rad: f64,
+        climb_rate_span_mps: f64,
+        rewards: &Bound<'_, PyDict>,
+        reward: &str,
+        forecast: bool,
+        max_episode_steps: Option<u64>,
+        lateral_spans: Option<(f64, f64, f64, f64)>,
+    ) -> PyResult<Self> {
+        let control = Control::parse(control)?;
+        let shaped = is_shaped(reward)?;
+        let base = scenario_or_default(scenario);
+        let mut flown = flown_scenario(&base.scenario, None, false)?;
+        // The wave-off is the agent's decision.
+        flown.control.wave_off.enabled = false;
+        let probe = Stepper::new(&flown, control_interval_s)?;
+        let system = probe.simulation().system();
+        let trim = *system.trim();
+        let max_thrust_n = system.aircraft().engines().max_total_thrust_n();
+        let actuator = system.aircraft().actuator();
+        let thrust_span_n = thrust_span_n.unwrap_or(0.25 * max_thrust_n);
+        check_spans(
+            (
+                pitch_command_span_rad,
+                thrust_span_n,
+                elevator_span_rad,
+                climb_rate_span_mps,
+            ),
+            trim.theta_rad,
+        )?;
+        let lateral = lateral_half(&flown, control, lateral_spans)?;
+        let slope_rad = flown.control.flight_path.glide_slope_deg.to_radians();
+        let direct_lift = flown.control.direct_lift;
+        let mut config = EnvConfig {
+            scenario: flown,
+            name: base.name,
+            control,
+            interval_s: probe.interval_s(),
             elevator_span_rad,
+            thrust_span_n,
+            pitch_span_rad: pitch_command_span_rad,
             climb_rate_span_mps,
-        ),
-        trim.theta_rad,
-    )?;
-    let lateral = lateral_half(&flown, control, lateral_spans)?;
-    let slope_rad = flown.control.flight_path.glide_slope_deg.to_radians();
-    let direct_lift = flown.control.direct_lift;
-    let mut config = EnvConfig {
-        scenario: flown,
-        name: base.name,
-        control,
-        interval_s: probe.interval_s(),
-        elevator_span_rad,
-        thrust_span_n,
-        pitch_span_rad,
-        climb_rate_span_mps,
-        theta_trim_rad: trim.theta_rad,
-        elevator_trim_rad: trim.elevator_rad,
-        thrust_trim_n: trim.thrust_n,
-        alpha_trim_rad: trim.alpha_rad,
-        climb_rate_trim_mps: -flown.approach.airspeed_mps * slope_rad.sin(),
-        max_thrust_n,
-        elevator_range_rad: (actuator.min_rad(), actuator.max_rad()),
-        max_direct_lift: if direct_lift.enabled {
-            direct_lift.max_lift_coefficient_increment
-        } else {
-            0.0
-        },
-        rewards: Rewards::from_dict(rewards, shaped)?,
-        forecast,
-        max_episode_steps,
-        action_names: action_names(control, &lateral),
-        built_in_loops: [control.built_in_loops(), lateral.loops].concat(),
-        tracking: [&[SignalId::GlidePathError][..], lateral.tracking].concat(),
-        end_info: [&END_INFO[..], lateral.end_info].concat(),
-        lateral,
-        normalisation: Vec::new(),
-    };
-    config.normalisation = config.normalisation_table();
-    Ok(config)
+            theta_trim_rad: trim.theta_rad,
+            elevator_trim_rad: trim.elevator_rad,
+            thrust_trim_n: trim.thrust_n,
+            alpha_trim_rad: trim.alpha_rad,
+            climb_rate_trim_mps: -flown.approach.airspeed_mps * slope_rad.sin(),
+            max_thrust_n,
+            elevator_range_rad: (actuator.min_rad(), actuator.max_rad()),
+            max_direct_lift: if direct_lift.enabled {
+                direct_lift.max_lift_coefficient_increment
+            } else {
+                0.0
+            },
+            rewards: Rewards::from_dict(rewards, shaped)?,
+            forecast,
+            max_episode_steps,
+            action_names: action_names(control, &lateral),
+            built_in_loops: [control.built_in_loops(), lateral.loops].concat(),
+            tracking: [&[SignalId::GlidePathError][..], lateral.tracking].concat(),
+            end_info: [&END_INFO[..], lateral.end_info].concat(),
+            lateral,
+            normalisation: Vec::new(),
+        };
+        config.normalisation = config.normalisation_table();
+        Ok(Self(Arc::new(config)))
+    }
 }
 
 /// Whether the reward `reward` is the shaped one (`"shaped"`) or the sparse one

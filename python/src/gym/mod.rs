@@ -16,9 +16,9 @@
 //! - [`lateral`]: the 3-D environment's lateral half: its commands, observation entries,
 //!   spans and trim, each a list (all empty in the 2-D environment);
 //! - [`config`]: what every environment of one configuration shares, built from the
-//!   Python arguments: the one place that chooses the 2-D or the 3-D lateral half, and
-//!   the lists of the action, the observation and the info made from it, which the
-//!   modules below map over;
+//!   Python arguments (`_EnvConfig`, which `_Env` and `_VecEnv` take): the one place
+//!   that chooses the 2-D or the 3-D lateral half, and the lists of the action, the
+//!   observation and the info made from it, which the modules below map over;
 //! - [`observation`]: the observation's entries and their normalisation;
 //! - [`action`]: the action read, checked and turned into taps, and the autopilot's;
 //! - [`episode`]: one environment's episode, stepped;
@@ -44,5 +44,6 @@ mod single;
 mod spec;
 mod vector;
 
+pub use config::Config;
 pub use single::Env;
 pub use vector::VecEnv;

@@ -1,16 +1,17 @@
 //! One environment: the Python class `_Env`, one lane of [`Lanes`] stepped on the
 //! calling thread.
 
+use std::sync::Arc;
+
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArray3, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use super::action::action_values;
-use super::config::config;
+use super::config::Config;
 use super::episode::{seed_value, EnvCore};
 use super::reward::{EndInfo, OUTCOMES};
 use super::vector::Lanes;
-use crate::scenario::Scenario;
 
 /// One environment (the Python class `deckland.env.CarrierLandingEnv` wraps it).
 #[pyclass(name = "_Env", module = "deckland._deckland")]
@@ -23,40 +24,11 @@ pub struct Env {
 
 #[pymethods]
 impl Env {
+    /// The environment of `config`.
     #[new]
-    #[pyo3(signature = (scenario, control, control_interval_s, pitch_command_span_rad, thrust_span_n, elevator_span_rad, climb_rate_span_mps, rewards, reward, forecast, lateral_spans=None))]
-    #[allow(clippy::too_many_arguments)]
-    fn new(
-        scenario: Option<PyRef<'_, Scenario>>,
-        control: &str,
-        control_interval_s: f64,
-        pitch_command_span_rad: f64,
-        thrust_span_n: Option<f64>,
-        elevator_span_rad: f64,
-        climb_rate_span_mps: f64,
-        rewards: &Bound<'_, PyDict>,
-        reward: &str,
-        forecast: bool,
-        lateral_spans: Option<(f64, f64, f64, f64)>,
-    ) -> PyResult<Self> {
-        let config = config(
-            scenario,
-            control,
-            control_interval_s,
-            (
-                pitch_command_span_rad,
-                thrust_span_n,
-                elevator_span_rad,
-                climb_rate_span_mps,
-            ),
-            rewards,
-            reward,
-            forecast,
-            None,
-            lateral_spans,
-        )?;
+    fn new(config: &Config) -> PyResult<Self> {
         Ok(Self {
-            lanes: Lanes::new(1, config, false)?,
+            lanes: Lanes::new(1, Arc::clone(&config.0), false)?,
             actions: Vec::new(),
         })
     }

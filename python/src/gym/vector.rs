@@ -11,13 +11,12 @@ use pyo3::exceptions::PyMemoryError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-use super::config::{config, EnvConfig};
+use super::config::{Config, EnvConfig};
 use super::describe::describe;
 use super::episode::{frame_array, seed_value, EnvCore};
 use super::parallel::{for_each_item, helpers};
 use crate::errors::{argument_error, strict_integer, value_error};
 use crate::render::{draw_side_view, FRAME_HEIGHT, FRAME_WIDTH};
-use crate::scenario::Scenario;
 
 /// Many environments of one configuration, stepped in one call over threads.
 #[pyclass(name = "_VecEnv", module = "deckland._deckland")]
@@ -76,42 +75,11 @@ struct Slot<'a> {
 
 #[pymethods]
 impl VecEnv {
+    /// `num_envs` environments of `config`.
     #[new]
-    #[pyo3(signature = (num_envs, scenario, control, control_interval_s, pitch_command_span_rad, thrust_span_n, elevator_span_rad, climb_rate_span_mps, rewards, reward, forecast, max_episode_steps, lateral_spans=None))]
-    #[allow(clippy::too_many_arguments)]
-    fn new(
-        num_envs: &Bound<'_, PyAny>,
-        scenario: Option<PyRef<'_, Scenario>>,
-        control: &str,
-        control_interval_s: f64,
-        pitch_command_span_rad: f64,
-        thrust_span_n: Option<f64>,
-        elevator_span_rad: f64,
-        climb_rate_span_mps: f64,
-        rewards: &Bound<'_, PyDict>,
-        reward: &str,
-        forecast: bool,
-        max_episode_steps: Option<u64>,
-        lateral_spans: Option<(f64, f64, f64, f64)>,
-    ) -> PyResult<Self> {
+    fn new(num_envs: &Bound<'_, PyAny>, config: &Config) -> PyResult<Self> {
         let num_envs = environment_count(strict_integer("num_envs", num_envs)?)?;
-        let config = config(
-            scenario,
-            control,
-            control_interval_s,
-            (
-                pitch_command_span_rad,
-                thrust_span_n,
-                elevator_span_rad,
-                climb_rate_span_mps,
-            ),
-            rewards,
-            reward,
-            forecast,
-            max_episode_steps,
-            lateral_spans,
-        )?;
-        let lanes = Lanes::new(num_envs, config, true)?;
+        let lanes = Lanes::new(num_envs, Arc::clone(&config.0), true)?;
         let mut restart = Vec::new();
         restart
             .try_reserve_exact(num_envs)
@@ -261,7 +229,7 @@ pub(super) struct Lanes {
 
 impl Lanes {
     /// `count` lanes of `config`, none started (a `MemoryError` if they do not fit).
-    pub(super) fn new(count: usize, config: EnvConfig, threads: bool) -> PyResult<Self> {
+    pub(super) fn new(count: usize, config: Arc<EnvConfig>, threads: bool) -> PyResult<Self> {
         let refused = |_| environments_do_not_fit(count, None);
         let mut cores = Vec::new();
         cores.try_reserve_exact(count).map_err(refused)?;
@@ -270,7 +238,7 @@ impl Lanes {
         outcomes.try_reserve_exact(count).map_err(refused)?;
         outcomes.resize(count, (-1, -1, -1, -1));
         Ok(Self {
-            config: Arc::new(config),
+            config,
             cores,
             outcomes,
             threads,

@@ -1,6 +1,7 @@
 //! Options shared by the simulation commands (`step`, `land`, `sink`) and the loading of
 //! scenario files (`run`, `campaign`).
 
+use crate::output::OutputDir;
 use anyhow::{bail, Context};
 use clap::ValueEnum;
 use deckland::control::pitch::{ObserverPdParameters, PidParameters, PitchControllerParameters};
@@ -218,6 +219,25 @@ pub struct OutputArgs {
     /// Print the result as one JSON document instead of text.
     #[arg(long)]
     pub json: bool,
+}
+
+/// What a command that writes a folder with plots takes: the figures' size and the
+/// output folder's options.
+#[derive(Debug, Clone, clap::Args)]
+pub struct FolderArgs {
+    /// Figure size on paper, text size, PNG resolution and PDF.
+    #[command(flatten)]
+    pub figures: crate::plot::FigureArgs,
+    /// Output folder, overwriting and JSON printing.
+    #[command(flatten)]
+    pub output: OutputArgs,
+}
+
+impl FolderArgs {
+    /// The output folder of `command`, made ready ([`OutputDir::prepare`]).
+    pub fn prepare(&self, command: &str) -> anyhow::Result<OutputDir> {
+        OutputDir::prepare(command, self.output.out.as_deref(), self.output.force)
+    }
 }
 
 #[cfg(test)]

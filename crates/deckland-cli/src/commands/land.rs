@@ -6,7 +6,7 @@
 //! pitch and pitch command (Fig. 15), elevator and thrust, airspeed, and the wind seen.
 
 use super::common::{
-    check_set_up, seed_parser, Conditions, ControllerChoice, HardwareChoice, OutputArgs,
+    check_set_up, seed_parser, Conditions, ControllerChoice, FolderArgs, HardwareChoice,
 };
 use super::outcome::outcome_text;
 use super::trap_sheet_file::trap_sheet_csv;
@@ -44,6 +44,14 @@ pub struct LandArgs {
     /// Fly without deck-motion compensation (track the mean deck to the end).
     #[arg(long)]
     pub no_deck_compensation: bool,
+    /// The plots, the replay and the output folder.
+    #[command(flatten)]
+    pub written: ApproachFolderArgs,
+}
+
+/// What `land` and `run` write of the approach they fly, and where.
+#[derive(Debug, Clone, Args)]
+pub struct ApproachFolderArgs {
     /// Write no plots (the CSV, the summary and the scenario only).
     #[arg(long)]
     pub no_plots: bool,
@@ -52,12 +60,9 @@ pub struct LandArgs {
     /// the outcome as events.
     #[arg(long)]
     pub acmi: bool,
-    /// Figure size on paper, text size, PNG resolution and PDF.
+    /// Figure size, output folder, overwriting and JSON printing.
     #[command(flatten)]
-    pub figures: crate::plot::FigureArgs,
-    /// Output folder, overwriting and JSON printing.
-    #[command(flatten)]
-    pub output: OutputArgs,
+    pub folder: FolderArgs,
 }
 
 /// What `summary.json` and `--json` hold: the run's summary with what was flown.
@@ -83,9 +88,7 @@ pub fn fly_and_write(
     output: &OutputDir,
     controller: &str,
     conditions: &str,
-    json: bool,
-    with_plots: bool,
-    with_acmi: bool,
+    written: &ApproachFolderArgs,
 ) -> Result<RunSummary> {
     let run = fly_approach(scenario).context("cannot set up the approach")?;
     let flown = Flown {
@@ -93,9 +96,9 @@ pub fn fly_and_write(
         controller,
         conditions,
     };
-    write_approach_folder(&run, &flown, output, with_plots, with_acmi)?;
+    write_approach_folder(&run, &flown, output, !written.no_plots, written.acmi)?;
     let report = flown.report(&run.summary);
-    if json {
+    if written.folder.output.json {
         outln!("{}", serde_json::to_string_pretty(&report)?)?;
     } else {
         print_summary(&report, output)?;
@@ -502,15 +505,13 @@ pub fn run(args: &LandArgs) -> Result<()> {
         scenario.control.flight_path.deck_motion_compensation = false;
     }
     check_set_up(&scenario)?;
-    let output = OutputDir::prepare("land", args.output.out.as_deref(), args.output.force)?;
+    let output = args.written.folder.prepare("land")?;
     fly_and_write(
         &scenario,
         &output,
         args.controller.label(),
         args.conditions.name(),
-        args.output.json,
-        !args.no_plots,
-        args.acmi,
+        &args.written,
     )?;
     Ok(())
 }

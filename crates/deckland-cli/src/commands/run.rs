@@ -7,9 +7,8 @@
 //! approach is refused, not silently flown as one. With a campaign
 //! row's seed, `--seed S --disperse` flies exactly that campaign run, with its time series.
 
-use super::common::{check_set_up, load_scenario_file, seed_parser, OutputArgs};
-use super::land::fly_and_write;
-use crate::output::OutputDir;
+use super::common::{check_set_up, load_scenario_file, seed_parser};
+use super::land::{fly_and_write, ApproachFolderArgs};
 use anyhow::{bail, Result};
 use clap::Args;
 use deckland::monte_carlo::controller_label;
@@ -29,19 +28,9 @@ pub struct RunArgs {
     /// draws it: `--seed` with a `runs.csv` row's seed re-flies that run.
     #[arg(long)]
     pub disperse: bool,
-    /// Write no plots (the CSV, the summary and the scenario only).
-    #[arg(long)]
-    pub no_plots: bool,
-    /// Also write the approach as a Tacview replay, `approach.acmi` (ACMI 2.2 text), as
-    /// `land` does.
-    #[arg(long)]
-    pub acmi: bool,
-    /// Figure size on paper, text size, PNG resolution and PDF.
+    /// The plots, the replay and the output folder, as `land`'s.
     #[command(flatten)]
-    pub figures: crate::plot::FigureArgs,
-    /// Output folder, overwriting and JSON printing.
-    #[command(flatten)]
-    pub output: OutputArgs,
+    pub written: ApproachFolderArgs,
 }
 
 /// Runs `deckland run`.
@@ -65,7 +54,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
         scenario = draw.apply(&scenario);
     }
     check_set_up(&scenario)?;
-    let output = OutputDir::prepare("run", args.output.out.as_deref(), args.output.force)?;
+    let output = args.written.folder.prepare("run")?;
     let name = args.scenario.file_name().map_or_else(
         || args.scenario.display().to_string(),
         |n| n.to_string_lossy().into_owned(),
@@ -75,9 +64,7 @@ pub fn run(args: &RunArgs) -> Result<()> {
         &output,
         controller_label(&scenario.control.pitch),
         &name,
-        args.output.json,
-        !args.no_plots,
-        args.acmi,
+        &args.written,
     )?;
     Ok(())
 }

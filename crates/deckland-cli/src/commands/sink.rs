@@ -8,9 +8,8 @@
 pub(crate) mod report;
 
 use super::common::{
-    seed_parser, validate_options, BaseScenarioArgs, Conditions, ControllerChoice, OutputArgs,
+    seed_parser, validate_options, BaseScenarioArgs, Conditions, ControllerChoice, FolderArgs,
 };
-use crate::output::OutputDir;
 pub(crate) use crate::plot::sink::figure;
 use anyhow::{bail, Context, Result};
 use clap::Args;
@@ -59,12 +58,9 @@ pub struct SinkArgs {
     /// The hardware set, or a scenario file, to fly the command with.
     #[command(flatten)]
     pub base: BaseScenarioArgs,
-    /// Figure size on paper, text size, PNG resolution and PDF.
+    /// Figure size, output folder, overwriting and JSON printing.
     #[command(flatten)]
-    pub figures: crate::plot::FigureArgs,
-    /// Output folder, overwriting and JSON printing.
-    #[command(flatten)]
-    pub output: OutputArgs,
+    pub folder: FolderArgs,
 }
 
 /// Checks `args`, flies the sink-rate command and measures its convergence.
@@ -148,7 +144,7 @@ pub(crate) fn sink_run(
 /// Runs `deckland sink`.
 pub fn run(args: &SinkArgs) -> Result<()> {
     let flown = fly(args)?;
-    let output = OutputDir::prepare("sink", args.output.out.as_deref(), args.output.force)?;
+    let output = args.folder.prepare("sink")?;
     let report = &flown.report;
     let mut csv = csv::Writer::from_writer(Vec::new());
     for row in &flown.rows {
@@ -164,7 +160,7 @@ pub fn run(args: &SinkArgs) -> Result<()> {
     )?;
     figure(&flown).save(&output, "sink_rate")?;
 
-    if args.output.json {
+    if args.folder.output.json {
         outln!("{}", serde_json::to_string_pretty(&report)?)?;
         return Ok(());
     }

@@ -17,9 +17,8 @@ use deckland::simulation::Signals;
 use serde::Serialize;
 
 use super::common::{
-    seed_parser, validate_options, BaseScenarioArgs, Conditions, ControllerChoice, OutputArgs,
+    seed_parser, validate_options, BaseScenarioArgs, Conditions, ControllerChoice, FolderArgs,
 };
-use crate::output::OutputDir;
 pub(crate) use crate::plot::step::figures;
 use flight::{controller_parameters, ControllerResult, ControllerRun, StepFlight};
 
@@ -102,12 +101,9 @@ pub struct StepArgs {
     /// The hardware set, or a scenario file, to fly the step with.
     #[command(flatten)]
     pub base: BaseScenarioArgs,
-    /// Figure size on paper, text size, PNG resolution and PDF.
+    /// Figure size, output folder, overwriting and JSON printing.
     #[command(flatten)]
-    pub figures: crate::plot::FigureArgs,
-    /// Output folder, overwriting and JSON printing.
-    #[command(flatten)]
-    pub output: OutputArgs,
+    pub folder: FolderArgs,
 }
 
 /// The JSON document of `deckland step --json`.
@@ -373,7 +369,7 @@ pub fn run(args: &StepArgs) -> Result<()> {
         _ => f64::NAN,
     };
     let runs = flight.fly(&args.controller.choices())?;
-    let output = OutputDir::prepare("step", args.output.out.as_deref(), args.output.force)?;
+    let output = args.folder.prepare("step")?;
 
     let mut written = vec![output.write_bytes("step.csv", &csv_bytes(&runs)?)?];
     for (stem, figure) in figures(&runs, &flight) {
@@ -393,7 +389,7 @@ pub fn run(args: &StepArgs) -> Result<()> {
         output_folder: output.path().display().to_string(),
     };
     crate::commands::common::print_json_or(
-        args.output.json,
+        args.folder.output.json,
         || &report,
         || print_table(&report, &written),
     )

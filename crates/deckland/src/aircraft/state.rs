@@ -116,11 +116,6 @@ impl AircraftState {
         let (x_dot, h_dot) = self.earth_velocity_mps();
         h_dot.atan2(x_dot)
     }
-
-    /// True when every component is finite.
-    pub fn is_finite(&self) -> bool {
-        self.to_array().iter().all(|v| v.is_finite())
-    }
 }
 
 #[cfg(test)]

@@ -302,9 +302,9 @@ impl ShipMotionPropagator {
 }
 
 impl ShipMotionPropagator {
-    /// The standard deviations of the predicted height and climb rate of a deck point
-    /// `lever_arm_m` aft of the pitch centre, `lead_s` after the time of `estimate`, with
-    /// the ship pitched `pitch_rad` (the module docs' error variance for the rows of
+    /// The standard deviations of the predicted height and climb rate of the deck point
+    /// `point` = (its lever arm aft of the pitch centre (m), the ship's pitch (rad)),
+    /// `lead_s` after the time of `estimate` (the module docs' error variance for the rows of
     /// heave, heave rate, pitch and pitch rate; heave and pitch independent, linearised
     /// in the pitch error as [`ShipMotionForecast::deck_point_height_sigma_m`]); zero when
     /// the ship motion is disabled.
@@ -313,26 +313,12 @@ impl ShipMotionPropagator {
         ship: &ShipMotion,
         estimate: &ShipMotionEstimate,
         lead_s: f64,
-        lever_arm_m: f64,
-        pitch_rad: f64,
+        point: (f64, f64),
     ) -> DeckPointUncertainty {
+        let sigma = |derivative| self.deck_point_sigma(ship, estimate, lead_s, point, derivative);
         DeckPointUncertainty {
-            height_sigma_m: self.deck_point_sigma(
-                ship,
-                estimate,
-                lead_s,
-                lever_arm_m,
-                pitch_rad,
-                0,
-            ),
-            climb_rate_sigma_mps: self.deck_point_sigma(
-                ship,
-                estimate,
-                lead_s,
-                lever_arm_m,
-                pitch_rad,
-                1,
-            ),
+            height_sigma_m: sigma(0),
+            climb_rate_sigma_mps: sigma(1),
         }
     }
 
@@ -344,8 +330,7 @@ impl ShipMotionPropagator {
         ship: &ShipMotion,
         estimate: &ShipMotionEstimate,
         lead_s: f64,
-        lever_arm_m: f64,
-        pitch_rad: f64,
+        (lever_arm_m, pitch_rad): (f64, f64),
         derivative: usize,
     ) -> f64 {
         if !ship.parameters().enabled {
@@ -487,19 +472,19 @@ mod tests {
         for horizon in [0.0, 0.5, 2.0, 5.0] {
             let forecast = predictor.forecast(&ship, &estimate, horizon);
             let uncertainty =
-                predictor.deck_point_uncertainty(&ship, &estimate, horizon, 81.0, 0.0);
+                predictor.deck_point_uncertainty(&ship, &estimate, horizon, (81.0, 0.0));
             let expected = forecast.deck_point_height_sigma_m(81.0);
             assert!(
                 (uncertainty.height_sigma_m - expected).abs() < 1e-12,
                 "{horizon}"
             );
         }
-        let now = predictor.deck_point_uncertainty(&ship, &estimate, 0.0, 81.0, 0.0);
+        let now = predictor.deck_point_uncertainty(&ship, &estimate, 0.0, (81.0, 0.0));
         assert!(now.climb_rate_sigma_mps < 1e-9, "{now:?}");
         let stationary = unit_intensity_state_covariance();
         let sigma = |horizon| {
             predictor
-                .deck_point_uncertainty(&ship, &estimate, horizon, 81.0, 0.0)
+                .deck_point_uncertainty(&ship, &estimate, horizon, (81.0, 0.0))
                 .climb_rate_sigma_mps
         };
         assert!(sigma(0.5) > 0.0 && sigma(0.5) < sigma(2.0) && sigma(2.0) < sigma(10.0));

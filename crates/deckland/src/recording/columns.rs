@@ -155,6 +155,32 @@ macro_rules! refuse {
     };
 }
 
+/// The serialiser methods of the compound values, which neither a row's fields nor a
+/// cell can be: sequences, tuples, maps, and enum variants with data
+/// (`$newtype_variant` the message of a newtype variant's).
+macro_rules! refuse_compounds {
+    ($what:literal, $ok:ty, $newtype_variant:literal) => {
+        refuse! { $what;
+            serialize_seq(Option<usize>) -> Self::SerializeSeq;
+            serialize_tuple(usize) -> Self::SerializeTuple;
+            serialize_tuple_struct(&'static str, usize) -> Self::SerializeTupleStruct;
+            serialize_tuple_variant(&'static str, u32, &'static str, usize) -> Self::SerializeTupleVariant;
+            serialize_map(Option<usize>) -> Self::SerializeMap;
+            serialize_struct_variant(&'static str, u32, &'static str, usize) -> Self::SerializeStructVariant;
+        }
+
+        fn serialize_newtype_variant<T: ?Sized + Serialize>(
+            self,
+            _: &'static str,
+            _: u32,
+            _: &'static str,
+            _: &T,
+        ) -> Result<$ok, ColumnError> {
+            Err(ColumnError($newtype_variant.to_owned()))
+        }
+    };
+}
+
 impl<'a> Serializer for RowSerializer<'a> {
     type Ok = ();
     type Error = ColumnError;
@@ -192,13 +218,8 @@ impl<'a> Serializer for RowSerializer<'a> {
         serialize_unit() -> ();
         serialize_unit_struct(&'static str) -> ();
         serialize_unit_variant(&'static str, u32, &'static str) -> ();
-        serialize_seq(Option<usize>) -> Self::SerializeSeq;
-        serialize_tuple(usize) -> Self::SerializeTuple;
-        serialize_tuple_struct(&'static str, usize) -> Self::SerializeTupleStruct;
-        serialize_tuple_variant(&'static str, u32, &'static str, usize) -> Self::SerializeTupleVariant;
-        serialize_map(Option<usize>) -> Self::SerializeMap;
-        serialize_struct_variant(&'static str, u32, &'static str, usize) -> Self::SerializeStructVariant;
     }
+    refuse_compounds!("a row", (), "an enum cannot be a row");
 
     fn serialize_some<T: ?Sized + Serialize>(self, _: &T) -> Result<(), ColumnError> {
         Err(ColumnError("an option cannot be a row".to_owned()))
@@ -210,16 +231,6 @@ impl<'a> Serializer for RowSerializer<'a> {
         _: &T,
     ) -> Result<(), ColumnError> {
         Err(ColumnError("a newtype cannot be a row".to_owned()))
-    }
-
-    fn serialize_newtype_variant<T: ?Sized + Serialize>(
-        self,
-        _: &'static str,
-        _: u32,
-        _: &'static str,
-        _: &T,
-    ) -> Result<(), ColumnError> {
-        Err(ColumnError("an enum cannot be a row".to_owned()))
     }
 }
 
@@ -310,24 +321,9 @@ impl Serializer for CellSerializer {
     refuse! { "a cell";
         serialize_bytes(&[u8]) -> Cell;
         serialize_unit_struct(&'static str) -> Cell;
-        serialize_seq(Option<usize>) -> Self::SerializeSeq;
-        serialize_tuple(usize) -> Self::SerializeTuple;
-        serialize_tuple_struct(&'static str, usize) -> Self::SerializeTupleStruct;
-        serialize_tuple_variant(&'static str, u32, &'static str, usize) -> Self::SerializeTupleVariant;
-        serialize_map(Option<usize>) -> Self::SerializeMap;
         serialize_struct(&'static str, usize) -> Self::SerializeStruct;
-        serialize_struct_variant(&'static str, u32, &'static str, usize) -> Self::SerializeStructVariant;
     }
-
-    fn serialize_newtype_variant<T: ?Sized + Serialize>(
-        self,
-        _: &'static str,
-        _: u32,
-        _: &'static str,
-        _: &T,
-    ) -> Result<Cell, ColumnError> {
-        Err(ColumnError("an enum with data cannot be a cell".to_owned()))
-    }
+    refuse_compounds!("a cell", Cell, "an enum with data cannot be a cell");
 }
 
 #[cfg(test)]

@@ -110,19 +110,11 @@ impl<T: Taps, P: Plant> WithLateralPart for EvaluationWith<'_, T, P> {
 
     #[inline(always)]
     fn with<L: LateralPart>(self, lateral: &L) -> Signals {
-        let Evaluation {
-            system,
-            t,
-            x,
-            held,
-            taps,
-            rate,
-        } = self.work;
-        let plant = self.plant;
+        let (system, plant) = (self.work.system, self.plant);
         if system.user_blocks.is_empty() {
-            system.evaluate_blocks::<T, P, L, false>(plant, lateral, t, x, held, taps, rate)
+            system.evaluate_blocks::<T, P, L, false>(plant, lateral, self.work)
         } else {
-            system.evaluate_blocks::<T, P, L, true>(plant, lateral, t, x, held, taps, rate)
+            system.evaluate_blocks::<T, P, L, true>(plant, lateral, self.work)
         }
     }
 }
@@ -296,21 +288,23 @@ impl ClosedLoop {
         }
     }
 
-    /// The evaluation for the plant `aircraft` and the `lateral` part, with
-    /// (`USER_BLOCKS`) or without users' blocks. Each block's outputs come from a helper
-    /// that is always inlined here, so that the RK4 stages still drop what only the bus
-    /// carries.
-    #[allow(clippy::too_many_arguments)]
+    /// The evaluation (of this loop) for the plant `aircraft` and the `lateral`
+    /// part, with (`USER_BLOCKS`) or without users' blocks. Each block's outputs come
+    /// from a helper that is always inlined here, so that the RK4 stages still drop what
+    /// only the bus carries.
     #[inline(always)]
     fn evaluate_blocks<T: Taps, P: Plant, L: LateralPart, const USER_BLOCKS: bool>(
         &self,
         aircraft: &P,
         lateral: &L,
-        t: f64,
-        x: &[f64],
-        held: &HeldInputs,
-        taps: &T,
-        rate: &mut [f64],
+        Evaluation {
+            t,
+            x,
+            held,
+            taps,
+            rate,
+            ..
+        }: Evaluation<'_, T>,
     ) -> Signals {
         let mut bus = Signals {
             time_s: t,

@@ -4,6 +4,7 @@
 
 use super::blocks::plant::BuiltPlant;
 use super::closed_loop::{ClosedLoop, StepStreams};
+use super::lateral::pose::ShipStatesAt;
 use super::lateral::{HeldLateral, LateralStep, LineupAtFrame};
 use super::outer_loops::OuterLoops;
 use crate::aircraft::six_dof::SixDofAircraft;
@@ -54,13 +55,8 @@ impl ClosedLoop {
         };
         let ship_state = LateralShipMotionState::from_array(&self.layout.ship_lateral.array(x));
         let longitudinal_ship_state = ShipMotionState::from_array(&self.layout.ship.array(x));
-        let deck_view = lateral.deck_view(
-            &self.ship,
-            &self.deck,
-            &longitudinal_ship_state,
-            &ship_state,
-            t,
-        );
+        let at = ShipStatesAt::new(&longitudinal_ship_state, &ship_state, t);
+        let deck_view = lateral.deck_view(&self.ship, &self.deck, at);
         lateral.step_view = Some(deck_view);
         lateral.sense_ship(t, &ship_state);
         let ship_noise = lateral.ship.draw_noise(&mut lateral_streams.ship, dt);

@@ -23,7 +23,6 @@ use super::{
     format_option, prefix, settling_cell, write_sample_rows, StepArgs, MAX_SECONDS, MIN_SECONDS,
 };
 use crate::commands::common::{Conditions, ControllerChoice};
-use crate::output::OutputDir;
 use crate::plot::step::lateral::lateral_figures;
 
 /// The JSON document of `deckland step --axis roll|yaw --json`: the library's report and
@@ -103,7 +102,7 @@ pub(crate) fn run(args: &StepArgs, axis: LateralAxis) -> Result<()> {
             })
         })
         .collect::<Result<Vec<_>>>()?;
-    let output = OutputDir::prepare("step", args.output.out.as_deref(), args.output.force)?;
+    let output = args.folder.prepare("step")?;
     let mut written = vec![output.write_bytes("step.csv", &csv_bytes(&runs)?)?];
     for (stem, figure) in lateral_figures(&runs, &step, args.conditions) {
         written.extend(figure.save(&output, stem)?);
@@ -113,7 +112,7 @@ pub(crate) fn run(args: &StepArgs, axis: LateralAxis) -> Result<()> {
         output_folder: output.path().display().to_string(),
     };
     crate::commands::common::print_json_or(
-        args.output.json,
+        args.folder.output.json,
         || &report,
         || print_table(&report, &written),
     )

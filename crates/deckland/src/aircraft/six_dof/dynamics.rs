@@ -4,7 +4,7 @@
 
 use super::air_data::{air_velocity_in_wind, SixDofAirData};
 use super::kinematics::EulerTrig;
-use super::lateral_aerodynamics::{LateralDerivatives, LateralTable};
+use super::lateral_aerodynamics::{LateralDerivatives, LateralMotion, LateralTable};
 use super::parameters::{LateralParameters, SurfaceActuatorParameters};
 use super::state::SixDofState;
 use crate::aircraft::{Aircraft, ElevatorActuator, Wind};
@@ -248,13 +248,13 @@ impl SixDofAircraft {
         } else {
             self.lateral_table.at(data.alpha_rad)
         };
-        let l = derivatives.coefficients(
+        let l = derivatives.coefficients(LateralMotion {
             beta,
-            inputs.aileron_rad,
-            inputs.rudder_rad,
-            roll_rate * half_span_over_speed,
-            r * half_span_over_speed,
-        );
+            aileron: inputs.aileron_rad,
+            rudder: inputs.rudder_rad,
+            p_hat: roll_rate * half_span_over_speed,
+            r_hat: r * half_span_over_speed,
+        });
         let qs = data.dynamic_pressure_pa * p.wing_area_m2;
         let lift = qs * lift_coefficient;
         let drag = qs * drag_coefficient;
@@ -425,7 +425,7 @@ impl OdeSystem<{ SixDofState::DIMENSION }> for OpenLoopSixDof {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::aircraft::six_dof::lateral_coefficients;
+    use crate::aircraft::six_dof::{lateral_coefficients, LateralMotion};
     use nalgebra::{Matrix3, Vector3};
 
     /// The rate equations against Euler's equations in matrix form, J ω̇ = M − ω × Jω
@@ -460,11 +460,13 @@ mod tests {
         let c = lateral_coefficients(
             &crate::aircraft::AerodynamicData::FA18,
             alpha,
-            0.0,
-            0.05,
-            -0.07,
-            omega.x * k,
-            omega.z * k,
+            LateralMotion {
+                beta: 0.0,
+                aileron: 0.05,
+                rudder: -0.07,
+                p_hat: omega.x * k,
+                r_hat: omega.z * k,
+            },
         );
         let m = crate::aircraft::aerodynamic_coefficients(
             alpha,

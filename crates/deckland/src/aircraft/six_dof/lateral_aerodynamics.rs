@@ -174,34 +174,43 @@ pub struct LateralCoefficients {
     pub side: f64,
 }
 
-/// The coefficients of the aircraft whose data are `data` at α, β, aileron δa, rudder
-/// δr (rad) and normalised rates p̂, r̂ (–).
+/// What the lateral coefficients depend on besides α: the sideslip β, aileron δa and
+/// rudder δr (rad) and the normalised rates p̂, r̂ (–).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct LateralMotion {
+    /// Sideslip β (rad).
+    pub beta: f64,
+    /// Aileron δa (rad).
+    pub aileron: f64,
+    /// Rudder δr (rad).
+    pub rudder: f64,
+    /// Normalised roll rate p̂ = p·b/(2V) (–).
+    pub p_hat: f64,
+    /// Normalised yaw rate r̂ = r·b/(2V) (–).
+    pub r_hat: f64,
+}
+
+/// The coefficients of the aircraft whose data are `data` at α (rad) and `motion`.
 #[inline]
 pub fn lateral_coefficients(
     data: &AerodynamicData,
     alpha: f64,
-    beta: f64,
-    aileron: f64,
-    rudder: f64,
-    p_hat: f64,
-    r_hat: f64,
+    motion: LateralMotion,
 ) -> LateralCoefficients {
-    LateralTable::of(data)
-        .at(alpha)
-        .coefficients(beta, aileron, rudder, p_hat, r_hat)
+    LateralTable::of(data).at(alpha).coefficients(motion)
 }
 
 impl LateralDerivatives {
-    /// The coefficients at β, aileron δa, rudder δr (rad) and normalised rates p̂, r̂ (–).
+    /// The coefficients at `motion`.
     #[inline(always)]
-    pub fn coefficients(
-        &self,
-        beta: f64,
-        aileron: f64,
-        rudder: f64,
-        p_hat: f64,
-        r_hat: f64,
-    ) -> LateralCoefficients {
+    pub fn coefficients(&self, motion: LateralMotion) -> LateralCoefficients {
+        let LateralMotion {
+            beta,
+            aileron,
+            rudder,
+            p_hat,
+            r_hat,
+        } = motion;
         let d = self;
         LateralCoefficients {
             roll: d.roll_beta * beta
@@ -268,13 +277,23 @@ mod tests {
     #[test]
     fn control_signs_follow_the_conventions() {
         let alpha = 7.1_f64.to_radians();
-        let aileron = lateral_coefficients(&AerodynamicData::FA18, alpha, 0.0, 0.1, 0.0, 0.0, 0.0);
+        let at = |motion| lateral_coefficients(&AerodynamicData::FA18, alpha, motion);
+        let aileron = at(LateralMotion {
+            aileron: 0.1,
+            ..LateralMotion::default()
+        });
         assert!(aileron.roll > 0.0);
-        let rudder = lateral_coefficients(&AerodynamicData::FA18, alpha, 0.0, 0.0, 0.1, 0.0, 0.0);
+        let rudder = at(LateralMotion {
+            rudder: 0.1,
+            ..LateralMotion::default()
+        });
         assert!(rudder.yaw < 0.0 && rudder.side > 0.0);
         // Sideslip from the right: the nose turns into it (C_nβ > 0), the right wing
         // rises (C_lβ < 0), the side force pushes left (C_Yβ < 0).
-        let sideslip = lateral_coefficients(&AerodynamicData::FA18, alpha, 0.1, 0.0, 0.0, 0.0, 0.0);
+        let sideslip = at(LateralMotion {
+            beta: 0.1,
+            ..LateralMotion::default()
+        });
         assert!(sideslip.yaw > 0.0 && sideslip.roll < 0.0 && sideslip.side < 0.0);
     }
 }

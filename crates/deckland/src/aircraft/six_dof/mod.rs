@@ -83,7 +83,9 @@ pub use dynamics::{BodyRates, OpenLoopSixDof, SixDofAircraft, SixDofCommands, Si
 pub use kinematics::{
     body_to_earth, earth_to_body, euler_rates, series_sin_cos, EulerTrig, SERIES_LIMIT_RAD,
 };
-pub use lateral_aerodynamics::{lateral_coefficients, LateralCoefficients, LateralDerivatives};
+pub use lateral_aerodynamics::{
+    lateral_coefficients, LateralCoefficients, LateralDerivatives, LateralMotion,
+};
 pub use linearize::{
     linearize_six_dof, DutchRoll, LateralModes, RealMode, SixDofLinearModel, LATERAL_INPUT_NAMES,
     LATERAL_INPUT_UNITS, LATERAL_STATE_NAMES, LATERAL_STATE_UNITS,

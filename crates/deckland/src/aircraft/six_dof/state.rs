@@ -166,11 +166,6 @@ impl SixDofState {
             elevator_rate_radps: self.elevator_rate_radps,
         }
     }
-
-    /// True when every component is finite.
-    pub fn is_finite(&self) -> bool {
-        self.to_array().iter().all(|v| v.is_finite())
-    }
 }
 
 #[cfg(test)]

@@ -46,8 +46,7 @@ pub fn deck_point_floor(ship: &ShipMotion, lever_arm_m: f64, horizon_s: f64) -> 
         ship,
         &ShipMotionEstimate::default(),
         horizon_s,
-        lever_arm_m,
-        0.0,
+        (lever_arm_m, 0.0),
     );
     DeckPointFloor {
         horizon_s,

@@ -522,42 +522,34 @@ impl WaveOffParameters {
         if !self.in_window(inputs.time_to_go_s) {
             return None;
         }
-        let WaveOffMeasures {
-            clearance,
-            sink,
-            pitch_deg,
-            displacement,
-            drift,
-            ramp_strike,
-            hard_landing,
-        } = self.measures(inputs);
+        let m = self.measures(inputs);
         let percent = |x: f64| 100.0 * x;
         let checks = [
             (
                 WaveOffCriterion::RampStrikeProbability,
-                percent(ramp_strike),
+                percent(m.ramp_strike),
                 percent(self.max_ramp_strike_probability),
                 self.max_ramp_strike_probability > 0.0
-                    && ramp_strike > self.max_ramp_strike_probability,
+                    && m.ramp_strike > self.max_ramp_strike_probability,
             ),
             (
                 WaveOffCriterion::HardLandingProbability,
-                percent(hard_landing),
+                percent(m.hard_landing),
                 percent(self.max_hard_landing_probability),
                 self.max_hard_landing_probability > 0.0
-                    && hard_landing > self.max_hard_landing_probability,
+                    && m.hard_landing > self.max_hard_landing_probability,
             ),
             (
                 WaveOffCriterion::RampClearance,
-                clearance,
+                m.clearance,
                 self.min_ramp_clearance_m,
-                clearance < self.min_ramp_clearance_m,
+                m.clearance < self.min_ramp_clearance_m,
             ),
             (
                 WaveOffCriterion::TouchdownSinkRate,
-                sink,
+                m.sink,
                 self.max_touchdown_sink_rate_mps,
-                sink > self.max_touchdown_sink_rate_mps,
+                m.sink > self.max_touchdown_sink_rate_mps,
             ),
             (
                 WaveOffCriterion::GlidePathError,
@@ -567,24 +559,24 @@ impl WaveOffParameters {
             ),
             (
                 WaveOffCriterion::GlidePathErrorRate,
-                drift,
+                m.drift,
                 self.max_glide_path_error_rate_mps,
-                drift > self.max_glide_path_error_rate_mps,
+                m.drift > self.max_glide_path_error_rate_mps,
             ),
             (
                 WaveOffCriterion::DeckPitch,
-                pitch_deg,
+                m.pitch_deg,
                 self.max_deck_pitch_deg,
-                pitch_deg.abs() > self.max_deck_pitch_deg,
+                m.pitch_deg.abs() > self.max_deck_pitch_deg,
             ),
             (
                 WaveOffCriterion::LandingPointDisplacement,
-                displacement,
+                m.displacement,
                 self.max_landing_point_displacement_m,
-                displacement.abs() > self.max_landing_point_displacement_m,
+                m.displacement.abs() > self.max_landing_point_displacement_m,
             ),
         ];
-        first_out_of_limits(checks, clearance)
+        first_out_of_limits(checks, m.clearance)
     }
 
     /// What the criteria of [`Self::decide`] compare with their limits, on `inputs`.

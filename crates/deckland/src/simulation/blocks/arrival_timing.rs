@@ -59,8 +59,8 @@ impl ArrivalTimingBlock {
             let lead_s = age_s + (time_to_go_s + shift_s).max(0.0);
             let forecast = propagator.forecast_mean(ship, estimate, lead_s);
             let mean = forecast.deck_point_climb_rate_mps(arm_m);
-            let sigma =
-                propagator.deck_point_sigma(ship, estimate, lead_s, arm_m, forecast.pitch_rad, 1);
+            let point = (arm_m, forecast.pitch_rad);
+            let sigma = propagator.deck_point_sigma(ship, estimate, lead_s, point, 1);
             mean * mean + sigma * sigma
         };
         let change_mps = self.timing.step(inputs, score);

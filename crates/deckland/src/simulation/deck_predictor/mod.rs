@@ -529,8 +529,8 @@ fn forecast_uncertainty(
     estimate: &ShipMotionEstimate,
     uncertainty: Uncertainty<'_>,
     (age_s, ramp_time_s, touchdown_lead_s): (f64, f64, f64),
-    (ramp_arm_m, ramp_pitch_rad): (f64, f64),
-    (landing_arm_m, touchdown_pitch_rad): (f64, f64),
+    ramp: (f64, f64),
+    landing_point: (f64, f64),
 ) -> (f64, f64, [f64; 2]) {
     let Uncertainty {
         min_horizon_s,
@@ -543,19 +543,10 @@ fn forecast_uncertainty(
         // The time to go: the touchdown's lead less the estimate's age.
         let followed =
             followed_within_s.is_some_and(|within_s| touchdown_lead_s - age_s <= within_s);
-        let ramp_sigma = |lead_s: f64| {
-            predictor.deck_point_sigma(ship, estimate, lead_s, ramp_arm_m, ramp_pitch_rad, 0)
-        };
+        let ramp_sigma = |lead_s: f64| predictor.deck_point_sigma(ship, estimate, lead_s, ramp, 0);
         hold.sigmas = (
             ramp_sigma(age_s + ramp_time_s.max(min_horizon_s)),
-            predictor.deck_point_sigma(
-                ship,
-                estimate,
-                touchdown_lead_s,
-                landing_arm_m,
-                touchdown_pitch_rad,
-                1,
-            ),
+            predictor.deck_point_sigma(ship, estimate, touchdown_lead_s, landing_point, 1),
             if followed {
                 ramp_update_response_m2(
                     |tau_s| ramp_sigma(age_s + tau_s).powi(2),

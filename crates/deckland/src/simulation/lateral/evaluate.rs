@@ -3,7 +3,7 @@
 //! `lineup` and `lateral_laws`, and their state rates (docs/model.md §10.1–10.3).
 
 use super::part::{LateralPart, ShipParts};
-use super::pose::DeckView3d;
+use super::pose::{DeckView3d, ShipStatesAt};
 use super::{HeldLateral, LateralLoop, LateralMeasurements};
 use crate::aircraft::Plant;
 use crate::environment::{
@@ -23,7 +23,8 @@ impl LateralPart for LateralLoop {
     fn ship_pose(&self, parts: ShipParts<'_>, x: &[f64], t: f64) -> (ShipPose, ShipPoseRate) {
         let ship_state = ShipMotionState::from_array(&parts.layout.ship.array(x));
         let lateral_state = LateralShipMotionState::from_array(&parts.layout.ship_lateral.array(x));
-        self.longitudinal_pose(parts.ship, parts.deck, &ship_state, &lateral_state, t)
+        let at = ShipStatesAt::new(&ship_state, &lateral_state, t);
+        self.longitudinal_pose(parts.ship, parts.deck, at)
     }
 
     /// `ship`: the 3-D pose onto the bus (the longitudinal blocks see its equivalent
@@ -48,7 +49,11 @@ impl LateralPart for LateralLoop {
             Some(view) if view.time_s.to_bits() == held.deck_view_time_s.to_bits() => {
                 view.at(bus.time_s)
             }
-            _ => self.deck_view(ship, deck, ship_state, &lateral_state, bus.time_s),
+            _ => self.deck_view(
+                ship,
+                deck,
+                ShipStatesAt::new(ship_state, &lateral_state, bus.time_s),
+            ),
         };
         bus.ship = view.longitudinal;
         bus.ship_rate = view.longitudinal_rate;

@@ -87,7 +87,7 @@ pub fn lateral_landing_point_forecast_m(
     time_s: f64,
     time_to_go_s: f64,
 ) -> f64 {
-    lateral_centreline_forecast_m(deck, measurement, time_s, time_to_go_s, 0.0)
+    CentrelineForecaster::new(deck).forecast_m(deck, measurement, time_s, time_to_go_s, 0.0)
 }
 
 /// Where the lineup compensation looks for a hook `range_m` before the mean aim point
@@ -100,21 +100,8 @@ pub fn compensation_station(range_m: f64, closure_mps: f64, station_aft_m: f64) 
     (horizon_s, range_m.clamp(0.0, station_aft_m))
 }
 
-/// The forecast displacement across the bearing (m, right) of the landing centreline's
-/// point `aft_m` aft of the aim point, at `time_s` + `horizon_s`, from `measurement`:
-/// each channel's free response over the horizon plus the measurement's age, placed by
-/// the deck geometry (module docs). `aft_m` = 0 is the aim point.
-pub fn lateral_centreline_forecast_m(
-    deck: &DeckGeometry,
-    measurement: &LateralShipMotionMeasurement,
-    time_s: f64,
-    horizon_s: f64,
-    aft_m: f64,
-) -> f64 {
-    CentrelineForecaster::new(deck).forecast_m(deck, measurement, time_s, horizon_s, aft_m)
-}
-
-/// [`lateral_centreline_forecast_m`] for one deck, step after step, with what does not
+/// The forecast of points of the landing centreline ([`CentrelineForecaster::forecast_m`])
+/// for one deck, step after step, with what does not
 /// change evaluated once: the ship's mean heading's sine and cosine (which are also the
 /// deck angle's), the free response of yaw and sway (one mode, one horizon) once for
 /// both, and the mean centreline's point at the last station asked for (the station
@@ -139,7 +126,11 @@ impl CentrelineForecaster {
         }
     }
 
-    /// [`lateral_centreline_forecast_m`] on `deck` (the deck this was built for).
+    /// The forecast displacement across the bearing (m, right) of the landing
+    /// centreline's point `aft_m` aft of the aim point, at `time_s` + `horizon_s`, from
+    /// `measurement`: each channel's free response over the horizon plus the
+    /// measurement's age, placed by the deck geometry (module docs). `aft_m` = 0 is the
+    /// aim point. `deck` is the deck this was built for.
     pub fn forecast_m(
         &mut self,
         deck: &DeckGeometry,
@@ -342,9 +333,10 @@ mod tests {
             time_s: 3.0,
             ..LateralShipMotionMeasurement::default()
         };
+        let mut forecaster = CentrelineForecaster::new(&deck);
         for horizon in [0.0, 0.5, 4.0, 12.0] {
             for aft in [0.0, 30.0, 60.0, 150.0] {
-                let forecast = lateral_centreline_forecast_m(&deck, &still, 3.1, horizon, aft);
+                let forecast = forecaster.forecast_m(&deck, &still, 3.1, horizon, aft);
                 assert!(forecast.abs() < 1e-12, "{horizon} s, {aft} m: {forecast}");
             }
         }
@@ -397,7 +389,7 @@ mod tests {
         };
         let at = |range_m: f64| {
             let (horizon, aft) = compensation_station(range_m, 60.0, 60.0);
-            lateral_centreline_forecast_m(&deck, &moving, 10.05, horizon, aft)
+            CentrelineForecaster::new(&deck).forecast_m(&deck, &moving, 10.05, horizon, aft)
         };
         let step = (at(60.0 + 1e-6) - at(60.0 - 1e-6)).abs();
         assert!(step < 1e-6, "{step}");

@@ -63,28 +63,49 @@ enum MemoKey {
     Frame(i64),
 }
 
+/// The ship's heave-and-pitch and lateral states at a time: what its 3-D view is a
+/// function of.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct ShipStatesAt<'a> {
+    pub heave_pitch: &'a ShipMotionState,
+    pub lateral: &'a LateralShipMotionState,
+    pub time_s: f64,
+}
+
+impl<'a> ShipStatesAt<'a> {
+    /// The states `heave_pitch` and `lateral` at `time_s`.
+    #[inline(always)]
+    pub(crate) fn new(
+        heave_pitch: &'a ShipMotionState,
+        lateral: &'a LateralShipMotionState,
+        time_s: f64,
+    ) -> Self {
+        Self {
+            heave_pitch,
+            lateral,
+            time_s,
+        }
+    }
+
+    /// The bits of the time and of the states.
+    fn key(&self) -> ViewKey {
+        let ship = self.heave_pitch.to_array();
+        let lateral = self.lateral.to_array();
+        std::array::from_fn(|i| match i {
+            0..8 => ship[i].to_bits(),
+            8..18 => lateral[i - 8].to_bits(),
+            _ => self.time_s.to_bits(),
+        })
+    }
+}
+
 /// The bits of the time and of the ship's heave-and-pitch and lateral states.
 type ViewKey = [u64; 19];
 
-fn view_key(
-    ship_state: &ShipMotionState,
-    lateral_state: &LateralShipMotionState,
-    time_s: f64,
-) -> ViewKey {
-    let ship = ship_state.to_array();
-    let lateral = lateral_state.to_array();
-    std::array::from_fn(|i| match i {
-        0..8 => ship[i].to_bits(),
-        8..18 => lateral[i - 8].to_bits(),
-        _ => time_s.to_bits(),
-    })
-}
-
 impl LateralLoop {
-    /// The ship's 3-D view at `time_s` for the heave-and-pitch state `ship_state` and the
-    /// lateral filters' state `lateral_state`. With a flight computer
+    /// The ship's 3-D view for its states `at` their time. With a flight computer
     /// ([`LateralLoop::view_frame_period_s`]), the view computed at the start of the
-    /// computer's frame is carried to `time_s` at its rates ([`DeckView3d::at`]), as
+    /// computer's frame is carried to the time at its rates ([`DeckView3d::at`]), as
     /// within a step (docs/model.md §10.1): over a frame of 12.5 ms the carried aim point
     /// is within ½·a·τ² ≈ 3·10⁻⁵ m of the view of the states (a deck acceleration of
     /// 0.4 m/s²).
@@ -92,11 +113,9 @@ impl LateralLoop {
         &self,
         ship: &ShipMotion,
         deck: &DeckGeometry,
-        ship_state: &ShipMotionState,
-        lateral_state: &LateralShipMotionState,
-        time_s: f64,
+        at: ShipStatesAt<'_>,
     ) -> DeckView3d {
-        self.read_deck_view(ship, deck, ship_state, lateral_state, time_s, |view| *view)
+        self.read_deck_view(ship, deck, at, |view| *view)
     }
 
     /// The equivalent longitudinal pose and its rate of [`LateralLoop::deck_view`] (what
@@ -105,11 +124,9 @@ impl LateralLoop {
         &self,
         ship: &ShipMotion,
         deck: &DeckGeometry,
-        ship_state: &ShipMotionState,
-        lateral_state: &LateralShipMotionState,
-        time_s: f64,
+        at: ShipStatesAt<'_>,
     ) -> (ShipPose, ShipPoseRate) {
-        self.read_deck_view(ship, deck, ship_state, lateral_state, time_s, |view| {
+        self.read_deck_view(ship, deck, at, |view| {
             (view.longitudinal, view.longitudinal_rate)
         })
     }
@@ -121,17 +138,16 @@ impl LateralLoop {
         &self,
         ship: &ShipMotion,
         deck: &DeckGeometry,
-        ship_state: &ShipMotionState,
-        lateral_state: &LateralShipMotionState,
-        time_s: f64,
+        at: ShipStatesAt<'_>,
         read: impl FnOnce(&DeckView3d) -> R,
     ) -> R {
+        let time_s = at.time_s;
         let key = match self.view_frame_period_s {
             Some(period_s) => MemoKey::Frame((time_s / period_s + 1e-9).floor() as i64),
-            None => MemoKey::State(view_key(ship_state, lateral_state, time_s)),
+            None => MemoKey::State(at.key()),
         };
         let Ok(mut last) = self.view_memo.last.try_lock() else {
-            return read(&self.compute_deck_view(ship, deck, ship_state, lateral_state, time_s));
+            return read(&self.compute_deck_view(ship, deck, at));
         };
         match &mut *last {
             Some((last_key, view)) if *last_key == key && time_s >= view.time_s => {
@@ -142,31 +158,23 @@ impl LateralLoop {
                 }
             }
             slot => {
-                let (_, view) = slot.insert((
-                    key,
-                    self.compute_deck_view(ship, deck, ship_state, lateral_state, time_s),
-                ));
+                let (_, view) = slot.insert((key, self.compute_deck_view(ship, deck, at)));
                 read(view)
             }
         }
     }
 
-    /// The ship's pose and its rate at `time_s`: [`DeckGeometry::steaming_pose`]
+    /// The ship's pose and its rate for its states `at` their time: [`DeckGeometry::steaming_pose`]
     /// completed by [`crate::environment::LateralShipMotion::complete_pose`] (and their
     /// rates), with the same operations, the mean heading's sine and cosine taken from
     /// [`LateralLoop::mean_heading_sin_cos`] instead of evaluated four times.
-    fn pose_and_rate(
-        &self,
-        ship: &ShipMotion,
-        ship_state: &ShipMotionState,
-        lateral_state: &LateralShipMotionState,
-        time_s: f64,
-    ) -> (ShipPose, ShipPoseRate) {
+    fn pose_and_rate(&self, ship: &ShipMotion, at: ShipStatesAt<'_>) -> (ShipPose, ShipPoseRate) {
         let (sin, cos) = self.mean_heading_sin_cos;
         let speed = ship.parameters().forward_speed_mps;
         let (x0, y0) = self.initial_pitch_centre_m;
-        let outputs = ship.outputs(ship_state);
-        let lateral = self.ship.outputs(lateral_state);
+        let time_s = at.time_s;
+        let outputs = ship.outputs(at.heave_pitch);
+        let lateral = self.ship.outputs(at.lateral);
         let pose = ShipPose {
             pitch_centre_x_m: (x0 + speed * cos * time_s) - lateral.sway_m * sin,
             pitch_centre_y_m: (y0 + speed * sin * time_s) + lateral.sway_m * cos,
@@ -193,11 +201,9 @@ impl LateralLoop {
         &self,
         ship: &ShipMotion,
         deck: &DeckGeometry,
-        ship_state: &ShipMotionState,
-        lateral_state: &LateralShipMotionState,
-        time_s: f64,
+        at: ShipStatesAt<'_>,
     ) -> DeckView3d {
-        let (pose, rate) = self.pose_and_rate(ship, ship_state, lateral_state, time_s);
+        let (pose, rate) = self.pose_and_rate(ship, at);
         let angles = deck.attitude_sin_cos(&pose);
         let attitude = DeckGeometry::ship_attitude_of(&angles, &rate, self.mean_heading_sin_cos);
         let line = deck.landing_centreline_at(&attitude, &pose);
@@ -206,7 +212,7 @@ impl LateralLoop {
         let (flat_aim, flat_velocity) = deck.aim_point_along_deck_of(&pose, &rate, angles[1]);
         let centreline_heading_rad = line.direction.y.atan2(line.direction.x);
         DeckView3d {
-            time_s,
+            time_s: at.time_s,
             pose,
             rate,
             attitude,
@@ -328,7 +334,11 @@ mod tests {
     fn the_held_view_carried_over_a_step_is_the_view_to_second_order() {
         let (deck, ship, lateral, ship_state, lateral_state) = steaming();
         let t = 10.0;
-        let view = lateral.deck_view(&ship, &deck, &ship_state, &lateral_state, t);
+        let view = lateral.deck_view(
+            &ship,
+            &deck,
+            ShipStatesAt::new(&ship_state, &lateral_state, t),
+        );
         // At its own time the held view is the view, to the bit.
         assert_eq!(view.at(t), view);
         // A millisecond later, against the view of the states moved along their
@@ -351,7 +361,11 @@ mod tests {
                 .try_into()
                 .expect("10 states"),
         );
-        let exact = lateral.deck_view(&ship, &deck, &ship_later, &lateral_later, t + tau);
+        let exact = lateral.deck_view(
+            &ship,
+            &deck,
+            ShipStatesAt::new(&ship_later, &lateral_later, t + tau),
+        );
         let held = view.at(t + tau);
         let close = |a: f64, b: f64, tolerance: f64| {
             assert!((a - b).abs() < tolerance, "{a} vs {b}");
@@ -393,34 +407,42 @@ mod tests {
         ]);
         // Frame 800 starts at 10 s: its view is the states' view then.
         let t0 = 10.0;
-        let view = framed.deck_view(&ship, &deck, &start, &lateral_start, t0);
+        let view = framed.deck_view(&ship, &deck, ShipStatesAt::new(&start, &lateral_start, t0));
         assert_eq!(
             view,
-            exact.deck_view(&ship, &deck, &start, &lateral_start, t0)
+            exact.deck_view(&ship, &deck, ShipStatesAt::new(&start, &lateral_start, t0))
         );
         // Within the frame, whatever the states, the frame's view carried at its rates.
         for t in [10.001, 10.006, 10.0124] {
             assert_eq!(
-                framed.deck_view(&ship, &deck, &later, &lateral_later, t),
+                framed.deck_view(&ship, &deck, ShipStatesAt::new(&later, &lateral_later, t)),
                 view.at(t)
             );
             assert_eq!(
-                framed.longitudinal_pose(&ship, &deck, &later, &lateral_later, t),
+                framed.longitudinal_pose(
+                    &ship,
+                    &deck,
+                    ShipStatesAt::new(&later, &lateral_later, t)
+                ),
                 (view.at(t).longitudinal, view.at(t).longitudinal_rate)
             );
         }
         // The next frame's start: the view of the states then.
         let t1 = 10.0125;
         assert_eq!(
-            framed.deck_view(&ship, &deck, &later, &lateral_later, t1),
-            exact.deck_view(&ship, &deck, &later, &lateral_later, t1)
+            framed.deck_view(&ship, &deck, ShipStatesAt::new(&later, &lateral_later, t1)),
+            exact.deck_view(&ship, &deck, ShipStatesAt::new(&later, &lateral_later, t1))
         );
     }
 
     #[test]
     fn the_equivalent_longitudinal_pose_puts_the_aim_point_where_the_3d_geometry_does() {
         let (deck, ship, lateral, ship_state, lateral_state) = steaming();
-        let view = lateral.deck_view(&ship, &deck, &ship_state, &lateral_state, 10.0);
+        let view = lateral.deck_view(
+            &ship,
+            &deck,
+            ShipStatesAt::new(&ship_state, &lateral_state, 10.0),
+        );
         // The pose with the cached mean heading is the composition of the environment's
         // steaming pose and lateral completion, to the bit.
         let heading = deck.ship_mean_heading_rad();
@@ -445,15 +467,22 @@ mod tests {
             view.aim_velocity,
             deck.velocity_on_landing_centreline(&composed, &composed_rate, 0.0)
         );
-        let longitudinal =
-            lateral.longitudinal_pose(&ship, &deck, &ship_state, &lateral_state, 10.0);
+        let longitudinal = lateral.longitudinal_pose(
+            &ship,
+            &deck,
+            ShipStatesAt::new(&ship_state, &lateral_state, 10.0),
+        );
         assert_eq!(longitudinal, (view.longitudinal, view.longitudinal_rate));
         let flat = deck.aim_point(&view.longitudinal);
         assert!((flat.x_m - view.aim.x_m).abs() < 1e-9);
         assert!((flat.h_m - view.aim.h_m).abs() < 1e-9);
         // The mean aim point starts at the origin and drifts right at V·sin δ.
         let still = LateralShipMotionState::default();
-        let mean = lateral.deck_view(&ship, &deck, &ShipMotionState::default(), &still, 10.0);
+        let mean = lateral.deck_view(
+            &ship,
+            &deck,
+            ShipStatesAt::new(&ShipMotionState::default(), &still, 10.0),
+        );
         let drift = 7.7 * 9.0_f64.to_radians().sin() * 10.0;
         assert!((mean.aim.y_m - drift).abs() < 1e-9, "{}", mean.aim.y_m);
         assert!(mean.centreline_heading_rad.abs() < 1e-12);
