@@ -86,8 +86,9 @@ fn run(cli: &Cli) -> Result<()> {
         plot::options::set(figures.options()?);
     }
     match &cli.command {
-        Command::Trim(args) => commands::trim::run(args),
-        Command::Linearize(args) => commands::linearize::run(args),
+        // The model's own command, from the CLI's registry of the models.
+        Command::Trim(args) => (commands::models::commands(args.model).trim)(args),
+        Command::Linearize(args) => (commands::models::commands(args.model).linearize)(args),
         Command::Environment(args) => commands::environment::run(args),
         Command::Land(args) => commands::land::run(args),
         Command::Sink(args) => commands::sink::run(args),

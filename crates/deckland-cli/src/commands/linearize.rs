@@ -114,11 +114,6 @@ fn print_table(
     Ok(())
 }
 
-/// Runs `deckland linearize` with the model's command ([`super::models::commands`]).
-pub fn run(args: &TrimArgs) -> Result<()> {
-    (super::models::commands(args.model).linearize)(args)
-}
-
 /// `deckland linearize --model 3dof`.
 pub fn run_three_dof(args: &TrimArgs) -> Result<()> {
     args.refuse_lateral_options()?;

@@ -1,9 +1,8 @@
-//! The front end's registry of the library's plant models ([`PlantModel`]): each model's
-//! `--model` value and the `trim` and `linearize` commands that fly it. The commands
-//! choose by the model here and nowhere else.
+//! The front end's registry of the library's plant models ([`PlantModel`]): the `trim`
+//! and `linearize` commands that fly each. The commands choose by the model here and
+//! nowhere else (`lib.rs` dispatches through it).
 
 use anyhow::Result;
-use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
 use deckland::aircraft::PlantModel;
 
 use super::flight_condition::TrimArgs;
@@ -28,13 +27,4 @@ pub fn commands(model: PlantModel) -> ModelCommands {
             linearize: super::six_dof::run_linearize,
         },
     }
-}
-
-/// The `--model` names of the library's plant models ([`PlantModel::name`]), each with
-/// its one-line summary in the help.
-pub fn plant_model_parser() -> impl TypedValueParser<Value = PlantModel> {
-    let values =
-        PlantModel::ALL.map(|model| PossibleValue::new(model.name()).help(model.summary()));
-    PossibleValuesParser::new(values)
-        .try_map(|name| PlantModel::from_name(&name).ok_or("not a plant model"))
 }

@@ -43,11 +43,6 @@ pub fn print_trim_table(
     Ok(())
 }
 
-/// Runs `deckland trim` with the model's command ([`super::models::commands`]).
-pub fn run(args: &TrimArgs) -> Result<()> {
-    (super::models::commands(args.model).trim)(args)
-}
-
 /// `deckland trim --model 3dof`.
 pub fn run_three_dof(args: &TrimArgs) -> Result<()> {
     args.refuse_lateral_options()?;
