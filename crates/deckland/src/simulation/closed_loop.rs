@@ -11,7 +11,7 @@ use super::blocks::arrival_timing::ArrivalTimingBlock;
 use super::blocks::plant::{BuiltPlant, PlantOutputs};
 use super::blocks::{direct_lift, plant, wake_feedforward, BlockPosition, PlacedBlock};
 use super::commit::CommitPoint;
-use super::deck_predictor::BuiltDeckPredictor;
+use super::deck_predictor::{BuiltDeckPredictor, SensedRoll};
 use super::flight_computer::FlightComputer;
 pub use super::held::{HeldInputs, StepStreams};
 use super::lateral::part::{LateralHold, LateralPart, ShipParts};
@@ -31,7 +31,7 @@ use crate::environment::{
 };
 use crate::integration::VectorSystem;
 use crate::random::Reseed;
-use crate::sensors::PitchSensor;
+use crate::sensors::{LateralShipMotionMeasurement, PitchSensor};
 
 /// The longest state whose dropped rate [`ClosedLoop::signals_at`] writes on the stack.
 const RATE_ON_STACK: usize = 64;
@@ -214,6 +214,22 @@ impl ClosedLoop {
         }
         let parts = self.ship_parts();
         self.with_lateral_part(Pose { parts, x, t })
+    }
+
+    /// The ship's roll as the lateral part last sensed it, for the deck predictor: the
+    /// 3-D approach's latest measurement with its roll rise; none without it.
+    #[inline]
+    pub(crate) fn sensed_roll(&self) -> Option<SensedRoll> {
+        struct Roll;
+        impl WithLateralPart for Roll {
+            type Output = (Option<LateralShipMotionMeasurement>, (f64, f64));
+            #[inline(always)]
+            fn with<L: LateralPart>(self, lateral: &L) -> Self::Output {
+                lateral.sensed_roll()
+            }
+        }
+        let (measurement, rise_m) = self.with_lateral_part(Roll);
+        SensedRoll::latest(measurement, rise_m)
     }
 
     /// `work` done with the loop's lateral part: the 3-D approach's, or the lateral hold

@@ -6,7 +6,7 @@
 //! loops fly the wave-off.
 
 use super::closed_loop::ClosedLoop;
-use super::deck_predictor::{DeckView, HookTrack, SensedRoll};
+use super::deck_predictor::{DeckView, HookTrack};
 use super::outer_loops::OuterLoops;
 use crate::aircraft::AircraftState;
 use crate::control::{
@@ -37,9 +37,7 @@ impl ClosedLoop {
             deck: &self.deck,
             pose,
             rate,
-            roll: self.lateral.as_ref().and_then(|lateral| {
-                SensedRoll::latest(lateral.last_measurement, lateral.roll_rise_m)
-            }),
+            roll: self.sensed_roll(),
         };
         self.deck_predictor.observe(t, &view);
         let OuterLoops::Approach { flight_path, .. } = &self.outer else {

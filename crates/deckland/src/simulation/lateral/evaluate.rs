@@ -10,6 +10,7 @@ use crate::environment::{
     DeckGeometry, EarthPoint, EarthVelocity, LateralShipMotionState, ShipMotionState, ShipPose,
     ShipPoseRate,
 };
+use crate::sensors::LateralShipMotionMeasurement;
 use crate::simulation::flight_computer::HeldCommands;
 use crate::simulation::layout::LoopLayout;
 use crate::simulation::signals::Signals;
@@ -153,6 +154,11 @@ impl LateralPart for LateralLoop {
     #[inline(always)]
     fn aim_height_m(&self, _deck: &DeckGeometry, bus: &Signals) -> f64 {
         bus.aim_point.h_m
+    }
+
+    #[inline(always)]
+    fn sensed_roll(&self) -> (Option<LateralShipMotionMeasurement>, (f64, f64)) {
+        (self.last_measurement, self.roll_rise_m)
     }
 }
 

@@ -12,6 +12,7 @@ use crate::aircraft::Plant;
 use crate::environment::{
     DeckGeometry, EarthVelocity, ShipMotion, ShipMotionState, ShipPose, ShipPoseRate,
 };
+use crate::sensors::LateralShipMotionMeasurement;
 use crate::simulation::blocks::plant;
 use crate::simulation::flight_computer::HeldCommands;
 use crate::simulation::layout::LoopLayout;
@@ -80,6 +81,11 @@ pub(crate) trait LateralPart {
 
     /// The landing point's height (m) the deck predictor reads, for the ship on `bus`.
     fn aim_height_m(&self, deck: &DeckGeometry, bus: &Signals) -> f64;
+
+    /// The ship's roll as the part last sensed it (none where it senses no roll), with
+    /// the landing point's and the ramp's rise per unit sin φ_s (m): what the deck
+    /// predictor's `SensedRoll` is made of.
+    fn sensed_roll(&self) -> (Option<LateralShipMotionMeasurement>, (f64, f64));
 }
 
 /// The lateral part of a loop without the 3-D approach: the ship's longitudinal pose and
@@ -144,6 +150,11 @@ impl LateralPart for LateralHold {
     #[inline(always)]
     fn aim_height_m(&self, deck: &DeckGeometry, bus: &Signals) -> f64 {
         aim_point_height_m(deck, bus.ship)
+    }
+
+    #[inline(always)]
+    fn sensed_roll(&self) -> (Option<LateralShipMotionMeasurement>, (f64, f64)) {
+        (None, (0.0, 0.0))
     }
 }
 
