@@ -70,9 +70,18 @@ pub fn plant_model_parser() -> impl TypedValueParser<Value = PlantModel> {
 }
 
 impl TrimArgs {
-    /// Refuses the lateral options, which the 3-DOF model (it has no lateral axes) cannot
-    /// take.
-    pub fn refuse_lateral_options(&self) -> Result<()> {
+    /// The 3-DOF aircraft in the requested configuration, trimmed as requested; the
+    /// lateral options, which the 3-DOF model (it has no lateral axes) cannot take, are
+    /// refused.
+    pub fn three_dof_trim(&self) -> Result<(Aircraft, TrimPoint)> {
+        self.refuse_lateral_options()?;
+        let aircraft = self.aircraft();
+        let point = self.trim(&aircraft)?;
+        Ok((aircraft, point))
+    }
+
+    /// Refuses the lateral options.
+    fn refuse_lateral_options(&self) -> Result<()> {
         if self.sideslip_deg != 0.0 {
             bail!(
                 "--sideslip {:?} needs --model 6dof: the 3-DOF model has no sideslip",

@@ -116,9 +116,7 @@ fn print_table(
 
 /// `deckland linearize --model 3dof`.
 pub fn run_three_dof(args: &TrimArgs) -> Result<()> {
-    args.refuse_lateral_options()?;
-    let aircraft = args.aircraft();
-    let point = args.trim(&aircraft)?;
+    let (aircraft, point) = args.three_dof_trim()?;
     let model = linearize(&aircraft, &point);
     let eigenvalues = model.eigenvalues();
     let modes = identify_modes(&eigenvalues);

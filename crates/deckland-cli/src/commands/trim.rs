@@ -45,9 +45,7 @@ pub fn print_trim_table(
 
 /// `deckland trim --model 3dof`.
 pub fn run_three_dof(args: &TrimArgs) -> Result<()> {
-    args.refuse_lateral_options()?;
-    let aircraft = args.aircraft();
-    let point = args.trim(&aircraft)?;
+    let (aircraft, point) = args.three_dof_trim()?;
     super::common::print_json_or(
         args.json,
         || point.report(args.configuration),
