@@ -45,6 +45,6 @@ pub use loop_controller::{LoopController, LoopGains};
 pub use sink_rate::SinkRateControllerParameters;
 pub use speed::{SpeedController, SpeedControllerParameters};
 pub use wave_off::{
-    CommitForecast, FoulDeckModel, RampStrikeModel, RecoveryLimits, WaveOffCriterion,
-    WaveOffDecision, WaveOffInputs, WaveOffParameters,
+    CommitForecast, FoulDeckModel, HardLandingModel, RampStrikeModel, RecoveryLimits,
+    WaveOffCriterion, WaveOffDecision, WaveOffInputs, WaveOffParameters,
 };

@@ -710,6 +710,8 @@ mod tests {
         expected.control.wave_off.recovery.foul_deck_model = crate::control::FoulDeckModel::Linear;
         expected.control.wave_off.climb_out_airspeed_margin_mps = 0.0;
         expected.control.wave_off.ramp_strike_model = crate::control::RampStrikeModel::Forecast;
+        expected.control.wave_off.hard_landing_model = crate::control::HardLandingModel::Forecast;
+        expected.control.wave_off.touchdown_sink_rate_sigma_mps = 1.0;
         assert_eq!(load_scenario("", "empty.toml"), Ok(expected));
         // A [control.wave_off] section that names other keys but not the model: the
         // probability as it first came.
@@ -725,6 +727,8 @@ mod tests {
         let named = "[environment.ship]\nmodel = \"seaway\"\n\
                      [control.wave_off]\nclimb_out_airspeed_margin_mps = 10.0\n\
                      ramp_strike_model = \"closed_loop\"\n\
+                     hard_landing_model = \"closed_loop\"\n\
+                     touchdown_sink_rate_sigma_mps = 0.6\n\
                      [control.wave_off.recovery]\nfoul_deck_time_to_go_s = 10.0\n\
                      foul_deck_model = \"stationary\"\n";
         assert_eq!(load_scenario(named, "named.toml"), Ok(Scenario::default()));

@@ -10,8 +10,8 @@ use super::deck_predictor::{DeckView, HookTrack};
 use super::outer_loops::OuterLoops;
 use crate::aircraft::AircraftState;
 use crate::control::{
-    DeckReference, FlightPathGenerator, LateAbortInputs, RampStrikeModel, WaveOffDecision,
-    WaveOffInputs, WaveOffParameters,
+    DeckReference, FlightPathGenerator, HardLandingModel, LateAbortInputs, RampStrikeModel,
+    WaveOffDecision, WaveOffInputs, WaveOffParameters,
 };
 use crate::environment::{DeckGeometry, ShipMotionState, ShipPose, ShipPoseRate};
 
@@ -185,6 +185,14 @@ fn wave_off_inputs(
         }
         _ => (0.0, 0.0),
     };
+    let in_window = path.time_to_go_s <= wave_off.window_start_time_to_go_s;
+    let closed_loop_hook_sink_rate_mps =
+        match (wave_off.hard_landing_model, reference.unfiltered_aim_h_m) {
+            (HardLandingModel::ClosedLoop, Some(target_m)) if in_window => {
+                closed_loop_hook_sink_rate_mps(flight_path, reference, hook, &path, target_m)
+            }
+            _ => 0.0,
+        };
     Some(WaveOffInputs {
         time_to_go_s: path.time_to_go_s,
         glide_path_error_m: path.height_m - hook.h_m,
@@ -198,6 +206,31 @@ fn wave_off_inputs(
             ramp_following_weight,
         ),
         ramp_clearance_gain_m: gain_m,
+        closed_loop_hook_sink_rate_mps,
         forecast,
     })
+}
+
+/// The hook's sink rate at touchdown as the guidance flies it (m/s, down;
+/// docs/model.md §9): the path descends at the closure times tan Γ and moves with
+/// w of its anchor, whose critically damped filter goes on towards the anchor it is
+/// given now (`target_m`); at touchdown, `path.time_to_go_s` ahead, the hook sinks at
+/// closure·tan Γ − w·ȧ(T).
+#[inline(always)]
+fn closed_loop_hook_sink_rate_mps(
+    flight_path: &FlightPathGenerator,
+    reference: &DeckReference,
+    hook: &HookKinematics,
+    path: &crate::control::PathReference,
+    target_m: f64,
+) -> f64 {
+    let closure_mps = hook.x_rate_mps - reference.mean_aim_velocity.x_mps;
+    let anchor_rate_mps = super::deck_predictor::anchor_rate_mps(
+        reference.aim.h_m,
+        reference.aim_velocity.h_mps,
+        target_m,
+        flight_path.parameters().anchor_filter_frequency_radps,
+        path.time_to_go_s,
+    );
+    closure_mps * flight_path.tan_slope() - path.compensation_weight * anchor_rate_mps
 }

@@ -71,11 +71,18 @@ pub struct WaveOffParameters {
     /// The touchdown sink rate relative to the deck that the hard-landing probability
     /// counts as hard (m/s); 7.6 m/s, the outcome's limit (docs/model.md §7); (0, 20].
     pub hard_landing_sink_rate_mps: f64,
-    /// σ_sink, the scatter of the hook's own sink rate between the decision and
-    /// touchdown (m/s), for the hard-landing probability; an assumption, 1.0 m/s, below
-    /// the touchdown sink rate's whole scatter, of which the deck's motion is a part
-    /// (docs/no-oracle-results.md); [0, 5].
+    /// σ_sink, the scatter of the hook's own sink rate at touchdown about the one the
+    /// hard-landing probability predicts (m/s); 0.6 m/s, measured about the closed-loop
+    /// sink in the paper's sea (docs/no-oracle-results.md); 1.0 m/s, the assumption it
+    /// replaced, in a file that names none; [0, 5].
+    #[serde(default = "WaveOffParameters::touchdown_sink_rate_sigma_named_by_none")]
     pub touchdown_sink_rate_sigma_mps: f64,
+    /// Which touchdown sink rate the hard-landing probability is taken on: `closed_loop`
+    /// (the default: the hook's sink as the guidance flies it to touchdown,
+    /// docs/model.md §9) or `forecast` (the hook's sink now: the probability as it first
+    /// came, and of a file that names none); [`HardLandingModel`].
+    #[serde(default = "HardLandingModel::named_by_none")]
+    pub hard_landing_model: HardLandingModel,
     /// Largest predicted touchdown sink rate relative to the deck (m/s); 7.0 m/s, below
     /// the 7.6-m/s hard-landing limit (docs/model.md §7).
     pub max_touchdown_sink_rate_mps: f64,
@@ -173,7 +180,8 @@ impl Default for WaveOffParameters {
             ramp_strike_model: RampStrikeModel::ClosedLoop,
             max_hard_landing_probability: 0.0,
             hard_landing_sink_rate_mps: 7.6,
-            touchdown_sink_rate_sigma_mps: 1.0,
+            touchdown_sink_rate_sigma_mps: 0.6,
+            hard_landing_model: HardLandingModel::ClosedLoop,
             max_touchdown_sink_rate_mps: 7.0,
             max_glide_path_error_m: 3.0,
             max_glide_path_error_rate_mps: 4.0,
@@ -212,6 +220,8 @@ impl WaveOffParameters {
             climb_out_airspeed_margin_mps: Self::no_airspeed_limit(),
             recovery: RecoveryLimits::named_by_none(),
             ramp_strike_model: RampStrikeModel::named_by_none(),
+            hard_landing_model: HardLandingModel::named_by_none(),
+            touchdown_sink_rate_sigma_mps: Self::touchdown_sink_rate_sigma_named_by_none(),
             ..Self::default()
         }
     }
@@ -224,8 +234,16 @@ impl WaveOffParameters {
             climb_out_airspeed_margin_mps: Self::no_airspeed_limit(),
             recovery: RecoveryLimits::named_by_none(),
             ramp_strike_model: RampStrikeModel::named_by_none(),
+            hard_landing_model: HardLandingModel::named_by_none(),
+            touchdown_sink_rate_sigma_mps: Self::touchdown_sink_rate_sigma_named_by_none(),
             ..Self::default()
         }
+    }
+
+    /// σ_sink of a file that names none (m/s): the assumption the hard-landing
+    /// probability first came with.
+    pub fn touchdown_sink_rate_sigma_named_by_none() -> f64 {
+        1.0
     }
 
     /// No airspeed limit in the wave-off (full thrust throughout).
@@ -477,6 +495,11 @@ pub struct WaveOffInputs {
     /// `filter_lead` predictor) or before the decision window opens (where nothing reads
     /// it).
     pub ramp_clearance_gain_m: f64,
+    /// The hook's sink rate at touchdown as the guidance flies it (m/s, down): the
+    /// path's descent at the closure, less the rate its anchor filter is left with at
+    /// touchdown (docs/model.md §9); 0 where nothing reads it (the `forecast`
+    /// hard-landing model, or before the decision window opens).
+    pub closed_loop_hook_sink_rate_mps: f64,
     /// The deck forecast.
     pub forecast: DeckForecast,
 }
@@ -598,7 +621,7 @@ impl WaveOffParameters {
             0.0
         };
         let hard_landing = if self.max_hard_landing_probability > 0.0 {
-            self.hard_landing_probability(sink, forecast)
+            self.hard_landing_probability(self.hard_landing_sink_rate_mps_of(inputs), forecast)
         } else {
             0.0
         };
@@ -624,12 +647,24 @@ impl WaveOffParameters {
         super::risk::normal_cdf((sink - self.hard_landing_sink_rate_mps) / sigma.max(1e-9))
     }
 
+    /// The predicted touchdown sink rate relative to the deck (m/s) that the
+    /// hard-landing probability is taken on (`hard_landing_model`): the hook's sink now,
+    /// or as the guidance flies it to touchdown, less the landing point's forecast climb
+    /// rate at touchdown.
+    fn hard_landing_sink_rate_mps_of(&self, inputs: &WaveOffInputs) -> f64 {
+        let hook_sink_mps = match self.hard_landing_model {
+            HardLandingModel::Forecast => -inputs.hook_climb_rate_mps,
+            HardLandingModel::ClosedLoop => inputs.closed_loop_hook_sink_rate_mps,
+        };
+        hook_sink_mps + inputs.forecast.landing_point_climb_rate_mps
+    }
+
     /// The probabilities the forecast gives on `inputs` for the wave-off's probabilistic
     /// criteria, with the criteria's formulas whether they are on or off: what the
     /// approach is committed on at the commit point ([`CommitForecast`]; the off-centre
     /// probability of a 3-D approach is the lateral criterion's, added by the caller).
     pub fn commit_forecast(&self, inputs: &WaveOffInputs) -> CommitForecast {
-        let sink = -inputs.hook_climb_rate_mps + inputs.forecast.landing_point_climb_rate_mps;
+        let sink = self.hard_landing_sink_rate_mps_of(inputs);
         CommitForecast {
             ramp_strike_probability: inputs.ramp_strike_probability(),
             hard_landing_probability: self.hard_landing_probability(sink, &inputs.forecast),
@@ -654,6 +689,28 @@ pub enum RampStrikeModel {
 }
 
 impl RampStrikeModel {
+    /// The model of a file that names none: the probability as it first came.
+    pub fn named_by_none() -> Self {
+        Self::Forecast
+    }
+}
+
+/// Which touchdown sink rate the hard-landing probability is taken on
+/// (`hard_landing_model`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum HardLandingModel {
+    /// The hook's sink rate now, held to touchdown: the probability as it first came,
+    /// and of a file that names none; pessimistic by about 2.7× in the paper's sea
+    /// (docs/no-oracle-results.md).
+    Forecast,
+    /// The hook's sink rate at touchdown as the guidance flies it (docs/model.md §9):
+    /// the path's descent at the closure, less the rate its anchor filter is left with
+    /// at touchdown. The default.
+    ClosedLoop,
+}
+
+impl HardLandingModel {
     /// The model of a file that names none: the probability as it first came.
     pub fn named_by_none() -> Self {
         Self::Forecast

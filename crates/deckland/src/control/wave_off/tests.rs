@@ -13,6 +13,8 @@ fn calm() -> WaveOffInputs {
         mean_landing_point_height_m: 20.0,
         ramp_clearance_sigma_m: 0.5,
         ramp_clearance_gain_m: 0.0,
+        // The closed loop keeps the hook's sink of 3.7 m/s to touchdown.
+        closed_loop_hook_sink_rate_mps: 3.7,
         forecast: DeckForecast::still(20.0, 20.0),
     }
 }
@@ -88,6 +90,7 @@ fn the_probabilities_call_the_wave_off_with_their_value_in_percent() {
     let p = WaveOffParameters {
         max_ramp_strike_probability: 0.005,
         max_hard_landing_probability: 0.1,
+        touchdown_sink_rate_sigma_mps: 1.0,
         ..WaveOffParameters::default()
     };
     let low = WaveOffInputs {
@@ -110,6 +113,36 @@ fn the_probabilities_call_the_wave_off_with_their_value_in_percent() {
     assert_eq!(d.criterion, WaveOffCriterion::HardLandingProbability);
     assert!((d.value - 21.19).abs() < 0.01, "{}", d.value);
     assert_eq!(WaveOffParameters::default().decide(&rising), None);
+}
+
+/// The hard-landing probability on each model's sink, by hand: the hook sinking at
+/// 3.7 m/s now and, as the guidance flies it, at 5.6 m/s at touchdown, into a deck
+/// rising at 1.0 m/s (known: σ_ḣL = 0) with σ_sink = 1 m/s. `forecast`: 4.7 m/s,
+/// Φ(−2.9) = 0.001866; `closed_loop`: 6.6 m/s, Φ(−1.0) = 0.158655 (normal table).
+#[test]
+fn the_hard_landing_probability_is_taken_on_its_models_sink() {
+    let mut inputs = calm();
+    inputs.closed_loop_hook_sink_rate_mps = 5.6;
+    inputs.forecast.landing_point_climb_rate_mps = 1.0;
+    let p = |hard_landing_model| {
+        WaveOffParameters {
+            hard_landing_model,
+            touchdown_sink_rate_sigma_mps: 1.0,
+            ..WaveOffParameters::default()
+        }
+        .commit_forecast(&inputs)
+        .hard_landing_probability
+    };
+    assert!((p(HardLandingModel::Forecast) - 0.001866).abs() < 1e-6);
+    assert!((p(HardLandingModel::ClosedLoop) - 0.158655).abs() < 1e-6);
+    // A file that names neither key keeps the probability as it first came.
+    let none = WaveOffParameters::named_by_none();
+    assert_eq!(none.hard_landing_model, HardLandingModel::Forecast);
+    assert_eq!(none.touchdown_sink_rate_sigma_mps, 1.0);
+    assert_eq!(
+        WaveOffParameters::paper().hard_landing_model,
+        HardLandingModel::Forecast
+    );
 }
 
 #[test]

@@ -134,6 +134,24 @@ pub(crate) fn anchor_move_m(
     -error + (error + b * horizon_s) * (-frequency_radps * horizon_s).exp()
 }
 
+/// The rate (m/s) of the anchor's critically damped filter of [`anchor_move_m`] after
+/// `horizon_s` of its free response from `height_m` at `rate_mps` towards `target_m`
+/// held: ȧ(T) = (ȧ₀ − ω·(ȧ₀ + ω·e₀)·T)·e^(−ωT), e₀ = a(0) − target; `rate_mps` for a
+/// horizon at or below 0.
+pub(crate) fn anchor_rate_mps(
+    height_m: f64,
+    rate_mps: f64,
+    target_m: f64,
+    frequency_radps: f64,
+    horizon_s: f64,
+) -> f64 {
+    if horizon_s <= 0.0 {
+        return rate_mps;
+    }
+    let b = rate_mps + frequency_radps * (height_m - target_m);
+    (rate_mps - frequency_radps * b * horizon_s) * (-frequency_radps * horizon_s).exp()
+}
+
 /// The anchor height: the forecast landing point, raised where the ramp-aware path needs
 /// it so that the path crosses the predicted ramp with the clearance m above it:
 /// m = min(max(`ramp_clearance_margin_m`, z·σ_c − r), `max_ramp_clearance_m`), z = Φ⁻¹(1 − p)

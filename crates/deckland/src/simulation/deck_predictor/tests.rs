@@ -287,6 +287,29 @@ fn the_anchor_moves_by_its_filters_free_response() {
     assert_eq!(anchor_move_m(21.0, -0.7, 20.2, omega, 0.0), 0.0);
 }
 
+/// The anchor filter's rate after its free response (`anchor_rate_mps`, the closed-loop
+/// hard-landing sink) is what a 10-µs integration of ä = ω²(target − a) − 2ω·ȧ gives from
+/// a moving start; 1 m below its target at rest, ȧ(T) = ω²·T·e^(−ωT) = 0.33470 m/s after
+/// 1.5 s at ω = 1 rad/s (by hand); the rate now over no time.
+#[test]
+fn the_anchors_rate_is_its_filters_free_response() {
+    assert!((anchor_rate_mps(19.0, 0.0, 20.0, 1.0, 1.5) - 0.334_695).abs() < 1e-6);
+    let (omega, horizon_s) = (1.3_f64, 1.4_f64);
+    let (mut a, mut rate, target) = (21.0_f64, -0.7_f64, 20.2);
+    let dt = 1e-5_f64;
+    for _ in 0..(horizon_s / dt).round() as usize {
+        let acceleration = omega * omega * (target - a) - 2.0 * omega * rate;
+        a += rate * dt + 0.5 * acceleration * dt * dt;
+        rate += acceleration * dt;
+    }
+    let closed_form = anchor_rate_mps(21.0, -0.7, 20.2, omega, horizon_s);
+    assert!(
+        (closed_form - rate).abs() < 1e-4,
+        "{closed_form} against {rate}"
+    );
+    assert_eq!(anchor_rate_mps(21.0, -0.7, 20.2, omega, 0.0), -0.7);
+}
+
 /// The path's response to the ramp's later updates (`ramp_update_response_m2`):
 /// ∫₀ᵀ g dσ² and ∫₀ᵀ g² dσ² for a variance growing linearly, σ²(τ) = τ, against a fine
 /// midpoint sum of the same integrals (g = 1 − (1 + ωτ)·e^(−ωτ)): within 1 % at 8
