@@ -13,7 +13,7 @@
 use super::dynamics::{AirData, Aircraft, AircraftCommands};
 use super::hook::HookGeometry;
 use super::state::AircraftState;
-use super::ElevatorActuator;
+use super::{AircraftParameters, ElevatorActuator, Engines};
 use crate::environment::{EarthPoint, EarthVelocity, Wind};
 use serde::{Deserialize, Serialize};
 
@@ -182,8 +182,12 @@ pub trait Plant: Clone + std::fmt::Debug + Send + Sync + 'static {
     fn from_longitudinal(state: &AircraftState) -> Self::State;
     /// The longitudinal part of a state (u, w, q, θ, x, h, engines, elevator).
     fn longitudinal_state(state: &Self::State) -> AircraftState;
-    /// The longitudinal model whose aerodynamics, engines and stabilator the plant uses.
-    fn longitudinal(&self) -> &Aircraft;
+    /// The airframe's mass, geometry and the air it flies in.
+    fn parameters(&self) -> &AircraftParameters;
+    /// Its engines.
+    fn engines(&self) -> &Engines;
+    /// Its stabilator's actuator (surface 0 of [`Plant::SURFACES`]).
+    fn stabilator(&self) -> &ElevatorActuator;
     /// The actuator of surface `index` of [`Plant::SURFACES`].
     fn surface_actuator(&self, index: usize) -> Option<&ElevatorActuator>;
     /// The commands the plant's lateral surfaces are held at while no lateral law flies
@@ -255,8 +259,18 @@ impl Plant for Aircraft {
     }
 
     #[inline(always)]
-    fn longitudinal(&self) -> &Aircraft {
-        self
+    fn parameters(&self) -> &AircraftParameters {
+        Aircraft::parameters(self)
+    }
+
+    #[inline(always)]
+    fn engines(&self) -> &Engines {
+        Aircraft::engines(self)
+    }
+
+    #[inline(always)]
+    fn stabilator(&self) -> &ElevatorActuator {
+        self.actuator()
     }
 
     fn surface_actuator(&self, index: usize) -> Option<&ElevatorActuator> {

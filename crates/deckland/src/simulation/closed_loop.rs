@@ -459,7 +459,7 @@ impl ClosedLoop {
         taps: &T,
         bus: &mut Signals,
     ) -> PitchLawInputs {
-        let actuator = aircraft.longitudinal().actuator();
+        let actuator = aircraft.stabilator();
         let pitch_inputs = self.pitch_law_inputs(outer, measurement_age_s, actuator, bus);
         let pitch_state = self.layout.pitch_law.of(x);
         bus.elevator_command_rad = taps.tap(
@@ -574,7 +574,7 @@ impl ClosedLoop {
         match held.commands {
             Some(commands) => commands.thrust_n,
             None if held.wave_off => {
-                let engines = aircraft.longitudinal().engines();
+                let engines = aircraft.engines();
                 self.speed.climb_out_thrust_n(
                     speed_error,
                     self.wave_off.climb_out_airspeed_margin_mps,
@@ -584,7 +584,7 @@ impl ClosedLoop {
             }
             None if outer.late_abort_thrust_share > 0.0 => {
                 let law = self.speed.thrust_command_n(speed_error, speed_state[0]);
-                let full = aircraft.longitudinal().engines().max_total_thrust_n();
+                let full = aircraft.engines().max_total_thrust_n();
                 law + outer.late_abort_thrust_share * (full - law)
             }
             None => self.speed.thrust_command_n(speed_error, speed_state[0]),
@@ -620,7 +620,7 @@ impl ClosedLoop {
                     held.deck,
                     held.wave_off,
                     dynamic_pressure_pa,
-                    aircraft.longitudinal().parameters(),
+                    aircraft.parameters(),
                     bus,
                 ),
             },

@@ -14,7 +14,7 @@ use super::state::SixDofState;
 use crate::aircraft::plant::{
     LateralKinematics, Plant, PlantAirData, PlantCommands, PlantKinematics, PlantModel,
 };
-use crate::aircraft::{Aircraft, AircraftState, ElevatorActuator, HookGeometry};
+use crate::aircraft::{AircraftParameters, AircraftState, ElevatorActuator, Engines, HookGeometry};
 use crate::environment::{EarthPoint, EarthVelocity, Wind};
 
 /// The 6-DOF plant's kinematics beside its outputs.
@@ -83,8 +83,18 @@ impl Plant for SixDofAircraft {
     }
 
     #[inline(always)]
-    fn longitudinal(&self) -> &Aircraft {
-        SixDofAircraft::longitudinal(self)
+    fn parameters(&self) -> &AircraftParameters {
+        self.longitudinal().parameters()
+    }
+
+    #[inline(always)]
+    fn engines(&self) -> &Engines {
+        self.longitudinal().engines()
+    }
+
+    #[inline(always)]
+    fn stabilator(&self) -> &ElevatorActuator {
+        self.longitudinal().actuator()
     }
 
     fn surface_actuator(&self, index: usize) -> Option<&ElevatorActuator> {
