@@ -172,7 +172,7 @@ fn wave_off_inputs(
             } else {
                 path.time_to_go_s
             };
-            let moved_m = super::deck_predictor::anchor_move_m(
+            let (moved_m, _) = super::deck_predictor::anchor_free_response(
                 reference.aim.h_m,
                 reference.aim_velocity.h_mps,
                 target_m,
@@ -225,7 +225,7 @@ fn closed_loop_hook_sink_rate_mps(
     target_m: f64,
 ) -> f64 {
     let closure_mps = hook.x_rate_mps - reference.mean_aim_velocity.x_mps;
-    let anchor_rate_mps = super::deck_predictor::anchor_rate_mps(
+    let (_, anchor_rate_mps) = super::deck_predictor::anchor_free_response(
         reference.aim.h_m,
         reference.aim_velocity.h_mps,
         target_m,

@@ -30,8 +30,7 @@ mod roll;
 mod uncertainty;
 
 pub(crate) use raise::{
-    anchor_move_m, anchor_rate_mps, capped_raise_share, closed_loop_ramp_clearance_sigma_m,
-    ramp_aware_anchor,
+    anchor_free_response, capped_raise_share, closed_loop_ramp_clearance_sigma_m, ramp_aware_anchor,
 };
 pub use roll::SensedRoll;
 pub(crate) use uncertainty::UncertaintyHold;

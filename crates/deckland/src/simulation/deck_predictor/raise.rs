@@ -115,41 +115,29 @@ pub(crate) fn closed_loop_ramp_clearance_sigma_m(
     (ramp_clearance_variance_m2(parameters, forecast) - followed).sqrt()
 }
 
-/// How far the anchor's critically damped filter ä = ω²(target − a) − 2ω·ȧ (ω =
-/// `frequency_radps`) moves it in `horizon_s` from `height_m` at `rate_mps` towards
-/// `target_m` held (m): its exact free response, a(T) − a(0) = −e₀ + (e₀ + (ȧ₀ + ω·e₀)·T)·e^(−ωT)
-/// with e₀ = a(0) − target; 0 for a horizon at or below 0.
-pub(crate) fn anchor_move_m(
+/// The free response of the anchor's critically damped filter ä = ω²(target − a) − 2ω·ȧ
+/// (ω = `frequency_radps`) over `horizon_s` from `height_m` at `rate_mps` towards
+/// `target_m` held, exactly: how far it moves the anchor (m),
+/// a(T) − a(0) = −e₀ + (e₀ + (ȧ₀ + ω·e₀)·T)·e^(−ωT), and its rate then (m/s),
+/// ȧ(T) = (ȧ₀ − ω·(ȧ₀ + ω·e₀)·T)·e^(−ωT), with e₀ = a(0) − target; no move and the
+/// rate now for a horizon at or below 0.
+pub(crate) fn anchor_free_response(
     height_m: f64,
     rate_mps: f64,
     target_m: f64,
     frequency_radps: f64,
     horizon_s: f64,
-) -> f64 {
+) -> (f64, f64) {
     if horizon_s <= 0.0 {
-        return 0.0;
+        return (0.0, rate_mps);
     }
     let error = height_m - target_m;
     let b = rate_mps + frequency_radps * error;
-    -error + (error + b * horizon_s) * (-frequency_radps * horizon_s).exp()
-}
-
-/// The rate (m/s) of the anchor's critically damped filter of [`anchor_move_m`] after
-/// `horizon_s` of its free response from `height_m` at `rate_mps` towards `target_m`
-/// held: ȧ(T) = (ȧ₀ − ω·(ȧ₀ + ω·e₀)·T)·e^(−ωT), e₀ = a(0) − target; `rate_mps` for a
-/// horizon at or below 0.
-pub(crate) fn anchor_rate_mps(
-    height_m: f64,
-    rate_mps: f64,
-    target_m: f64,
-    frequency_radps: f64,
-    horizon_s: f64,
-) -> f64 {
-    if horizon_s <= 0.0 {
-        return rate_mps;
-    }
-    let b = rate_mps + frequency_radps * (height_m - target_m);
-    (rate_mps - frequency_radps * b * horizon_s) * (-frequency_radps * horizon_s).exp()
+    let decay = (-frequency_radps * horizon_s).exp();
+    (
+        -error + (error + b * horizon_s) * decay,
+        (rate_mps - frequency_radps * b * horizon_s) * decay,
+    )
 }
 
 /// The anchor height: the forecast landing point, raised where the ramp-aware path needs

@@ -262,52 +262,36 @@ fn the_series_forecast_is_the_librarys_within_rounding() {
     assert!(largest_pitch > 0.02, "{largest_pitch}");
 }
 
-/// The anchor filter's free response (`anchor_move_m`) is what its exact step
-/// (`AnchorShaping`'s critically damped filter, a target held) gives: 1 m below its
-/// target at rest, the anchor rises 1 − (1 + 1.5)·e^(−1.5) = 0.44217 m in 1.5 s at
-/// ω = 1 rad/s (by hand); the same from a 10-µs integration of ä = ω²(target − a) − 2ω·ȧ
-/// from a moving start; no move over no time.
+/// The anchor filter's free response (`anchor_free_response`: the move, and the rate the
+/// closed-loop hard-landing sink reads) is what its exact step (`AnchorShaping`'s
+/// critically damped filter, a target held) gives: 1 m below its target at rest, the
+/// anchor rises 1 − (1 + 1.5)·e^(−1.5) = 0.44217 m in 1.5 s at ω = 1 rad/s and moves at
+/// ω²·T·e^(−ωT) = 0.33470 m/s then (by hand); the same from a 10-µs integration of
+/// ä = ω²(target − a) − 2ω·ȧ from a moving start; no move and the rate now over no time.
 #[test]
 fn the_anchor_moves_by_its_filters_free_response() {
-    assert!((anchor_move_m(19.0, 0.0, 20.0, 1.0, 1.5) - 0.442_17).abs() < 1e-5);
+    let (moved, rate) = anchor_free_response(19.0, 0.0, 20.0, 1.0, 1.5);
+    assert!((moved - 0.442_17).abs() < 1e-5, "{moved}");
+    assert!((rate - 0.334_695).abs() < 1e-6, "{rate}");
     let (omega, horizon_s) = (1.3_f64, 1.4_f64);
-    let (mut a, mut rate, target) = (21.0_f64, -0.7_f64, 20.2);
+    let (mut a, mut a_rate, target) = (21.0_f64, -0.7_f64, 20.2);
     let dt = 1e-5_f64;
     for _ in 0..(horizon_s / dt).round() as usize {
-        let acceleration = omega * omega * (target - a) - 2.0 * omega * rate;
-        a += rate * dt + 0.5 * acceleration * dt * dt;
-        rate += acceleration * dt;
+        let acceleration = omega * omega * (target - a) - 2.0 * omega * a_rate;
+        a += a_rate * dt + 0.5 * acceleration * dt * dt;
+        a_rate += acceleration * dt;
     }
-    let moved = anchor_move_m(21.0, -0.7, 20.2, omega, horizon_s);
+    let (moved, rate) = anchor_free_response(21.0, -0.7, 20.2, omega, horizon_s);
     assert!(
         (moved - (a - 21.0)).abs() < 1e-4,
         "{moved} against {}",
         a - 21.0
     );
-    assert_eq!(anchor_move_m(21.0, -0.7, 20.2, omega, 0.0), 0.0);
-}
-
-/// The anchor filter's rate after its free response (`anchor_rate_mps`, the closed-loop
-/// hard-landing sink) is what a 10-µs integration of ä = ω²(target − a) − 2ω·ȧ gives from
-/// a moving start; 1 m below its target at rest, ȧ(T) = ω²·T·e^(−ωT) = 0.33470 m/s after
-/// 1.5 s at ω = 1 rad/s (by hand); the rate now over no time.
-#[test]
-fn the_anchors_rate_is_its_filters_free_response() {
-    assert!((anchor_rate_mps(19.0, 0.0, 20.0, 1.0, 1.5) - 0.334_695).abs() < 1e-6);
-    let (omega, horizon_s) = (1.3_f64, 1.4_f64);
-    let (mut a, mut rate, target) = (21.0_f64, -0.7_f64, 20.2);
-    let dt = 1e-5_f64;
-    for _ in 0..(horizon_s / dt).round() as usize {
-        let acceleration = omega * omega * (target - a) - 2.0 * omega * rate;
-        a += rate * dt + 0.5 * acceleration * dt * dt;
-        rate += acceleration * dt;
-    }
-    let closed_form = anchor_rate_mps(21.0, -0.7, 20.2, omega, horizon_s);
-    assert!(
-        (closed_form - rate).abs() < 1e-4,
-        "{closed_form} against {rate}"
+    assert!((rate - a_rate).abs() < 1e-4, "{rate} against {a_rate}");
+    assert_eq!(
+        anchor_free_response(21.0, -0.7, 20.2, omega, 0.0),
+        (0.0, -0.7)
     );
-    assert_eq!(anchor_rate_mps(21.0, -0.7, 20.2, omega, 0.0), -0.7);
 }
 
 /// The path's response to the ramp's later updates (`ramp_update_response_m2`):
