@@ -217,12 +217,8 @@ impl WaveOffParameters {
             heavy_sea_late_abort_ramp_strike_probability: 0.0,
             alpha_lead_s: 0.0,
             min_alpha_deg: 2.0,
-            climb_out_airspeed_margin_mps: Self::no_airspeed_limit(),
-            recovery: RecoveryLimits::named_by_none(),
-            ramp_strike_model: RampStrikeModel::named_by_none(),
-            hard_landing_model: HardLandingModel::named_by_none(),
-            touchdown_sink_rate_sigma_mps: Self::touchdown_sink_rate_sigma_named_by_none(),
-            ..Self::default()
+            // No airspeed limit, no early check, the probabilities as they first came.
+            ..Self::named_by_none()
         }
     }
 
@@ -303,56 +299,24 @@ impl WaveOffParameters {
     /// Checks the limits of the decision's criteria: clearance, the probabilities, the
     /// sink rates, the glide-path error and its rate, deck pitch and displacement.
     fn validate_criteria(&self, section: &str, probability: Bounds) -> Result<(), ParameterError> {
-        Bounds::closed(0.0, 20.0).check(
-            section,
-            "min_ramp_clearance_m",
-            self.min_ramp_clearance_m,
-        )?;
-        probability.check(
-            section,
-            "max_ramp_strike_probability",
-            self.max_ramp_strike_probability,
-        )?;
-        probability.check(
-            section,
-            "max_hard_landing_probability",
-            self.max_hard_landing_probability,
-        )?;
-        Bounds::positive_up_to(20.0).check(
-            section,
-            "hard_landing_sink_rate_mps",
-            self.hard_landing_sink_rate_mps,
-        )?;
-        Bounds::closed(0.0, 5.0).check(
-            section,
-            "touchdown_sink_rate_sigma_mps",
-            self.touchdown_sink_rate_sigma_mps,
-        )?;
-        Bounds::positive_up_to(20.0).check(
-            section,
-            "max_touchdown_sink_rate_mps",
-            self.max_touchdown_sink_rate_mps,
-        )?;
-        Bounds::positive_up_to(50.0).check(
-            section,
-            "max_glide_path_error_m",
-            self.max_glide_path_error_m,
-        )?;
-        Bounds::positive_up_to(50.0).check(
-            section,
-            "max_glide_path_error_rate_mps",
-            self.max_glide_path_error_rate_mps,
-        )?;
-        Bounds::positive_up_to(30.0).check(
-            section,
-            "max_deck_pitch_deg",
-            self.max_deck_pitch_deg,
-        )?;
-        Bounds::positive_up_to(50.0).check(
-            section,
-            "max_landing_point_displacement_m",
-            self.max_landing_point_displacement_m,
-        )
+        let (up_to_20, up_to_50) = (Bounds::positive_up_to(20.0), Bounds::positive_up_to(50.0));
+        // One limit a line, as a table.
+        #[rustfmt::skip]
+        let limits = [
+            (Bounds::closed(0.0, 20.0), "min_ramp_clearance_m", self.min_ramp_clearance_m),
+            (probability, "max_ramp_strike_probability", self.max_ramp_strike_probability),
+            (probability, "max_hard_landing_probability", self.max_hard_landing_probability),
+            (up_to_20, "hard_landing_sink_rate_mps", self.hard_landing_sink_rate_mps),
+            (Bounds::closed(0.0, 5.0), "touchdown_sink_rate_sigma_mps", self.touchdown_sink_rate_sigma_mps),
+            (up_to_20, "max_touchdown_sink_rate_mps", self.max_touchdown_sink_rate_mps),
+            (up_to_50, "max_glide_path_error_m", self.max_glide_path_error_m),
+            (up_to_50, "max_glide_path_error_rate_mps", self.max_glide_path_error_rate_mps),
+            (Bounds::positive_up_to(30.0), "max_deck_pitch_deg", self.max_deck_pitch_deg),
+            (up_to_50, "max_landing_point_displacement_m", self.max_landing_point_displacement_m),
+        ];
+        limits
+            .into_iter()
+            .try_for_each(|(bounds, key, value)| bounds.check(section, key, value))
     }
 }
 
@@ -547,57 +511,23 @@ impl WaveOffParameters {
         }
         let m = self.measures(inputs);
         let percent = |x: f64| 100.0 * x;
+        use WaveOffCriterion::*;
+        let (ramp, hard) = (
+            self.max_ramp_strike_probability,
+            self.max_hard_landing_probability,
+        );
+        let (error, pitch, moved) = (inputs.glide_path_error_m, m.pitch_deg, m.displacement);
+        // One criterion a line, as a table: its value, its limit, whether it is out.
+        #[rustfmt::skip]
         let checks = [
-            (
-                WaveOffCriterion::RampStrikeProbability,
-                percent(m.ramp_strike),
-                percent(self.max_ramp_strike_probability),
-                self.max_ramp_strike_probability > 0.0
-                    && m.ramp_strike > self.max_ramp_strike_probability,
-            ),
-            (
-                WaveOffCriterion::HardLandingProbability,
-                percent(m.hard_landing),
-                percent(self.max_hard_landing_probability),
-                self.max_hard_landing_probability > 0.0
-                    && m.hard_landing > self.max_hard_landing_probability,
-            ),
-            (
-                WaveOffCriterion::RampClearance,
-                m.clearance,
-                self.min_ramp_clearance_m,
-                m.clearance < self.min_ramp_clearance_m,
-            ),
-            (
-                WaveOffCriterion::TouchdownSinkRate,
-                m.sink,
-                self.max_touchdown_sink_rate_mps,
-                m.sink > self.max_touchdown_sink_rate_mps,
-            ),
-            (
-                WaveOffCriterion::GlidePathError,
-                inputs.glide_path_error_m,
-                self.max_glide_path_error_m,
-                inputs.glide_path_error_m.abs() > self.max_glide_path_error_m,
-            ),
-            (
-                WaveOffCriterion::GlidePathErrorRate,
-                m.drift,
-                self.max_glide_path_error_rate_mps,
-                m.drift > self.max_glide_path_error_rate_mps,
-            ),
-            (
-                WaveOffCriterion::DeckPitch,
-                m.pitch_deg,
-                self.max_deck_pitch_deg,
-                m.pitch_deg.abs() > self.max_deck_pitch_deg,
-            ),
-            (
-                WaveOffCriterion::LandingPointDisplacement,
-                m.displacement,
-                self.max_landing_point_displacement_m,
-                m.displacement.abs() > self.max_landing_point_displacement_m,
-            ),
+            (RampStrikeProbability, percent(m.ramp_strike), percent(ramp), ramp > 0.0 && m.ramp_strike > ramp),
+            (HardLandingProbability, percent(m.hard_landing), percent(hard), hard > 0.0 && m.hard_landing > hard),
+            (RampClearance, m.clearance, self.min_ramp_clearance_m, m.clearance < self.min_ramp_clearance_m),
+            (TouchdownSinkRate, m.sink, self.max_touchdown_sink_rate_mps, m.sink > self.max_touchdown_sink_rate_mps),
+            (GlidePathError, error, self.max_glide_path_error_m, error.abs() > self.max_glide_path_error_m),
+            (GlidePathErrorRate, m.drift, self.max_glide_path_error_rate_mps, m.drift > self.max_glide_path_error_rate_mps),
+            (DeckPitch, pitch, self.max_deck_pitch_deg, pitch.abs() > self.max_deck_pitch_deg),
+            (LandingPointDisplacement, moved, self.max_landing_point_displacement_m, moved.abs() > self.max_landing_point_displacement_m),
         ];
         first_out_of_limits(checks, m.clearance)
     }
