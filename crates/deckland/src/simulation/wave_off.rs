@@ -161,11 +161,11 @@ fn wave_off_inputs(
     // ramp-strike probability reads it, from the window's opening on, and only in the
     // closed-loop model (`ramp_strike_model`; with `forecast`, c and σ_c as they are).
     let parameters = flight_path.parameters();
+    // From the window's opening on (and past the commit point, where it is recorded).
+    let in_window = path.time_to_go_s <= wave_off.window_start_time_to_go_s;
     let closed_loop = wave_off.ramp_strike_model == RampStrikeModel::ClosedLoop;
     let (gain_m, ramp_following_weight) = match reference.unfiltered_aim_h_m {
-        Some(target_m)
-            if closed_loop && path.time_to_go_s <= wave_off.window_start_time_to_go_s =>
-        {
+        Some(target_m) if closed_loop && in_window => {
             let closure_mps = hook.x_rate_mps - reference.mean_aim_velocity.x_mps;
             let ramp_time_s = if closure_mps > 0.0 {
                 (path.time_to_go_s - deck.ramp_aft_of_aim_point_m / closure_mps).max(0.0)
@@ -185,7 +185,6 @@ fn wave_off_inputs(
         }
         _ => (0.0, 0.0),
     };
-    let in_window = path.time_to_go_s <= wave_off.window_start_time_to_go_s;
     let closed_loop_hook_sink_rate_mps =
         match (wave_off.hard_landing_model, reference.unfiltered_aim_h_m) {
             (HardLandingModel::ClosedLoop, Some(target_m)) if in_window => {
