@@ -128,7 +128,8 @@ pub struct FlightPathParameters {
     /// σ_t = `ramp_crossing_time_sigma_s`, so that under the Gaussian forecast the hook
     /// passes below the ramp with probability at most p; never less than
     /// `ramp_clearance_margin_m`. 0 turns it off (the fixed margin alone, the paper's
-    /// set); 0.02 (2 %, tuned on 400 approaches of the paper's sea,
+    /// set); 10⁻⁴ (the clearance z·σ_c less `ramp_recovery_m`, capped at
+    /// `max_ramp_clearance_m`, which binds in the paper's sea; docs/model.md §5.7,
     /// docs/no-oracle-results.md); [0, 0.5).
     pub ramp_strike_probability_limit: f64,
     /// The most clearance over the predicted ramp the risk-aware clearance may ask for
