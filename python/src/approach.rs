@@ -4,7 +4,7 @@
 
 use std::time::Instant;
 
-use deckland::experiments::{LATERAL_APPROACH_COLUMNS, OBSERVATION_COLUMNS};
+use deckland::experiments::OBSERVATION_COLUMNS;
 use deckland::scenario::Scenario as RustScenario;
 use deckland::simulation::{Overrides, RunSummary};
 use pyo3::intern;
@@ -115,11 +115,10 @@ impl Approach {
         for column in &OBSERVATION_COLUMNS {
             obs.set_item(PyString::intern(py, column.name), column.value(s))?;
         }
-        // A 3-D approach's lineup, lateral states and surfaces (as `approach.csv`'s).
-        if s.lateral.cross_track_m.is_some() {
-            for column in &LATERAL_APPROACH_COLUMNS {
-                obs.set_item(PyString::intern(py, column.name), column.value(s))?;
-            }
+        // The loop's parts' columns after them (as `approach.csv`'s): a 3-D approach's
+        // lineup, lateral states and surfaces.
+        for column in self.stepper.simulation().lateral_columns() {
+            obs.set_item(PyString::intern(py, column.name), column.value(s))?;
         }
         let summary = self.stepper.simulation().summary();
         obs.set_item(intern!(py, "done"), self.stepper.ended())?;

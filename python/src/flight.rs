@@ -48,18 +48,18 @@ pub fn fly<'py>(
     let destination = Destination::of(out, force, figures.as_ref())?;
     let base = scenario_or_default(scenario);
     let flown = flown_scenario(&base.scenario, seed, disperse)?;
-    let (summary, samples, events, controller) = match pitch_law {
+    let (run, controller) = match pitch_law {
         None => {
             let run = py
                 .detach(|| fly_approach(&flown))
                 .map_err(|error| value_error(format!("cannot set up the approach: {error}")))?;
-            let label = flown.control.pitch.label().to_owned();
-            (run.summary, run.samples, run.events, label)
+            (run, flown.control.pitch.label().to_owned())
         }
         Some(law) => {
             let label = python_law_label(&law)?;
             let mut stepper = Stepper::new(&flown, control_interval_s)?;
             let mut recorder = TimeSeriesRecorder::every(APPROACH_RECORD_INTERVAL_S);
+            let lateral_columns = stepper.simulation().lateral_columns();
             while !stepper.ended() {
                 let overrides = stepper.law_overrides(&law, None)?;
                 stepper.advance(&mut recorder, &overrides);
@@ -68,7 +68,13 @@ pub fn fly<'py>(
                 .summary
                 .take()
                 .ok_or_else(|| value_error("the approach ended without a summary"))?;
-            (summary, recorder.samples, recorder.events, label)
+            let run = ApproachRun {
+                samples: recorder.samples,
+                events: recorder.events,
+                summary,
+                lateral_columns,
+            };
+            (run, label)
         }
     };
     let replay = acmi.then(|| {
@@ -77,30 +83,23 @@ pub fn fly<'py>(
             ..AcmiReference::default()
         };
         let title = format!("{controller}, seed {}", flown.seed);
-        write_acmi(&reference, &title, &samples, &events, &summary)
+        write_acmi(&reference, &title, &run.samples, &run.events, &run.summary)
     });
-    let summary_dict = summary_dict(py, &summary, &controller, &base.name, flown.seed)?;
-    let (time_series, events_list) = (time_series(py, &samples)?, events_list(py, &events)?);
+    let summary_dict = summary_dict(py, &run.summary, &controller, &base.name, flown.seed)?;
+    let (time_series, events_list) = (time_series(py, &run)?, events_list(py, &run.events)?);
     let folder = match destination {
         None => None,
-        Some(destination) => {
-            let run = ApproachRun {
-                samples,
-                events,
-                summary,
-            };
-            Some(destination.write(py, |request| {
-                deckland_cli::folders::write_approach(
-                    request,
-                    &run,
-                    &flown,
-                    &controller,
-                    &base.name,
-                    plots,
-                    acmi,
-                )
-            })?)
-        }
+        Some(destination) => Some(destination.write(py, |request| {
+            deckland_cli::folders::write_approach(
+                request,
+                &run,
+                &flown,
+                &controller,
+                &base.name,
+                plots,
+                acmi,
+            )
+        })?),
     };
     Ok((summary_dict, time_series, events_list, replay, folder))
 }

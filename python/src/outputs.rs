@@ -1,8 +1,8 @@
 //! What a flown approach gives back, as Python objects: its summary (`summary.json`),
 //! its time series (the columns of `approach.csv`) and its events.
 
-use deckland::experiments::ApproachRow;
-use deckland::simulation::{Event, RunSummary, Signals};
+use deckland::experiments::ApproachRun;
+use deckland::simulation::{Event, RunSummary};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use serde::Serialize;
@@ -48,16 +48,11 @@ pub(crate) fn summary_dict(
     )
 }
 
-/// The recorded signals as the columns of `approach.csv`.
-pub(crate) fn time_series<'py>(
-    py: Python<'py>,
-    samples: &[Signals],
-) -> PyResult<Bound<'py, PyDict>> {
-    let mut table = Columns::with_capacity(samples.len());
-    for sample in samples {
-        table
-            .push(&ApproachRow::from(sample))
-            .map_err(value_error)?;
+/// The recorded signals of `run` as the columns of `approach.csv`.
+pub(crate) fn time_series<'py>(py: Python<'py>, run: &ApproachRun) -> PyResult<Bound<'py, PyDict>> {
+    let mut table = Columns::with_capacity(run.samples.len());
+    for row in run.rows() {
+        table.push(&row).map_err(value_error)?;
     }
     crate::columns::into_dict(table, py)
 }

@@ -15,7 +15,7 @@ use crate::output::OutputDir;
 pub(crate) use crate::plot::land::figures;
 use anyhow::{Context, Result};
 use clap::Args;
-use deckland::experiments::{fly_approach, ApproachRow, ApproachRun};
+use deckland::experiments::{fly_approach, ApproachRun};
 use deckland::metrics::TrapSheetPosition;
 use deckland::recording::acmi::{write_acmi, AcmiReference};
 use deckland::scenario::Scenario;
@@ -142,8 +142,8 @@ pub fn write_approach_folder(
     let scenario_toml = toml::to_string(scenario).context("cannot write the scenario as TOML")?;
     output.write_bytes("scenario.toml", scenario_toml.as_bytes())?;
     let mut csv = csv::Writer::from_writer(Vec::new());
-    for sample in &run.samples {
-        csv.serialize(ApproachRow::from(sample))?;
+    for row in run.rows() {
+        csv.serialize(row)?;
     }
     let bytes = csv.into_inner().map_err(|e| anyhow::anyhow!("{e}"))?;
     output.write_bytes("approach.csv", &bytes)?;

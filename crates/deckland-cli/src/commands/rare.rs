@@ -16,7 +16,6 @@ use crate::plot::{Figure, Panel};
 use crate::progress::Progress;
 use anyhow::{bail, Context, Result};
 use clap::Args;
-use deckland::experiments::ApproachRow;
 use deckland::rare::{
     estimate_rate, replay_event_flight, RareEvent, RareRequest, RareResult, Run, Stop,
 };
@@ -225,8 +224,8 @@ fn save_event_flights(
         let name = format!("event_flights/{:02}", names.len() + 1);
         let folder = OutputDir::prepare("rare", Some(&output.path().join(&name)), true)?;
         let mut csv = csv::Writer::from_writer(Vec::new());
-        for sample in &run.samples {
-            csv.serialize(ApproachRow::from(sample))?;
+        for row in run.rows() {
+            csv.serialize(row)?;
         }
         let bytes = csv.into_inner().map_err(|e| anyhow::anyhow!("{e}"))?;
         folder.write_bytes("approach.csv", &bytes)?;

@@ -5,6 +5,7 @@ use serde::ser::{Serialize, SerializeStruct, Serializer};
 use super::ExperimentError;
 use crate::recording::TimeSeriesRecorder;
 use crate::scenario::{Mission, Scenario};
+pub use crate::simulation::lateral::LATERAL_APPROACH_COLUMNS;
 use crate::simulation::{
     Event, PitchLawFactory, RecordedColumn, RunSummary, SignalId, Signals, Simulation,
 };
@@ -22,6 +23,18 @@ pub struct ApproachRun {
     pub events: Vec<Event>,
     /// How it ended and what it measured.
     pub summary: RunSummary,
+    /// The columns its loop's parts record after [`APPROACH_COLUMNS`]
+    /// ([`Simulation::lateral_columns`]).
+    pub lateral_columns: &'static [RecordedColumn],
+}
+
+impl ApproachRun {
+    /// Its recorded instants as the rows of `approach.csv`.
+    pub fn rows(&self) -> impl Iterator<Item = ApproachRow> + '_ {
+        self.samples
+            .iter()
+            .map(|sample| ApproachRow::new(sample, self.lateral_columns))
+    }
 }
 
 /// Flies `scenario` as an approach (whatever its mission says) and records it.
@@ -48,11 +61,13 @@ fn approach_of(scenario: &Scenario) -> Scenario {
 
 fn record(simulation: Simulation) -> Result<ApproachRun, ExperimentError> {
     let mut recorder = TimeSeriesRecorder::every(APPROACH_RECORD_INTERVAL_S);
+    let lateral_columns = simulation.lateral_columns();
     let summary = simulation.run(&mut recorder);
     Ok(ApproachRun {
         samples: recorder.samples,
         events: recorder.events,
         summary,
+        lateral_columns,
     })
 }
 
@@ -115,71 +130,47 @@ pub const OBSERVATION_COLUMNS: [RecordedColumn; 23] = [
     RecordedColumn::si("wind_z_mps", SignalId::WindZ),
 ];
 
-/// The columns a 3-D approach adds to [`APPROACH_COLUMNS`] (docs/model.md §10.1): the
-/// lineup, the moving centreline, the lateral states and surfaces, the ship's roll, yaw
-/// and sway and the lateral wind. A 3-DOF approach has none of them.
-pub const LATERAL_APPROACH_COLUMNS: [RecordedColumn; 18] = [
-    RecordedColumn::si("y_m", SignalId::Y),
-    RecordedColumn::si("hook_y_m", SignalId::HookY),
-    RecordedColumn::si("cross_track_m", SignalId::CrossTrack),
-    RecordedColumn::si("cross_track_rate_mps", SignalId::CrossTrackRate),
-    RecordedColumn::si("lineup_error_m", SignalId::LineupError),
-    RecordedColumn::si("lateral_forecast_m", SignalId::LateralForecast),
-    RecordedColumn::si("centreline_y_m", SignalId::AimY),
-    RecordedColumn::degrees("centreline_heading_deg", SignalId::CentrelineHeading),
-    RecordedColumn::degrees("bank_command_deg", SignalId::BankCommand),
-    RecordedColumn::degrees("bank_deg", SignalId::Bank),
-    RecordedColumn::degrees("heading_deg", SignalId::Heading),
-    RecordedColumn::degrees("sideslip_deg", SignalId::Sideslip),
-    RecordedColumn::degrees("aileron_deg", SignalId::Aileron),
-    RecordedColumn::degrees("rudder_deg", SignalId::Rudder),
-    RecordedColumn::degrees("ship_roll_deg", SignalId::ShipRoll),
-    RecordedColumn::degrees("ship_yaw_deg", SignalId::ShipYaw),
-    RecordedColumn::si("ship_sway_m", SignalId::ShipSway),
-    RecordedColumn::si("wind_y_mps", SignalId::WindY),
-];
-
-/// One recorded instant of an approach as a flat row of [`APPROACH_COLUMNS`], and of
-/// [`LATERAL_APPROACH_COLUMNS`] in a 3-D approach: it serialises as a struct with those
-/// fields (an empty CSV field where a signal does not apply).
+/// One recorded instant of an approach as a flat row of [`APPROACH_COLUMNS`] and of the
+/// columns its loop's parts record after them (the 3-D approach's
+/// [`LATERAL_APPROACH_COLUMNS`], or none): it serialises as a struct with those fields
+/// (an empty CSV field where a signal does not apply).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ApproachRow {
     values: [Option<f64>; APPROACH_COLUMNS.len()],
-    lateral: Option<[Option<f64>; LATERAL_APPROACH_COLUMNS.len()]>,
+    parts: [Option<f64>; LATERAL_APPROACH_COLUMNS.len()],
+    part_columns: &'static [RecordedColumn],
 }
 
 impl ApproachRow {
-    /// The row's value of each column, in order.
+    /// The row of `s` with the parts' columns `part_columns` after [`APPROACH_COLUMNS`]
+    /// ([`ApproachRun::lateral_columns`]; at most as many as
+    /// [`LATERAL_APPROACH_COLUMNS`], the longest a part records).
+    pub fn new(s: &Signals, part_columns: &'static [RecordedColumn]) -> Self {
+        debug_assert!(part_columns.len() <= LATERAL_APPROACH_COLUMNS.len());
+        let mut parts = [None; LATERAL_APPROACH_COLUMNS.len()];
+        for (value, column) in parts.iter_mut().zip(part_columns) {
+            *value = column.value(s);
+        }
+        Self {
+            values: APPROACH_COLUMNS.map(|column| column.value(s)),
+            parts,
+            part_columns,
+        }
+    }
+
+    /// The row's value of each of [`APPROACH_COLUMNS`], in order.
     pub fn values(&self) -> &[Option<f64>] {
         &self.values
     }
 }
 
-impl From<&Signals> for ApproachRow {
-    fn from(s: &Signals) -> Self {
-        Self {
-            values: APPROACH_COLUMNS.map(|column| column.value(s)),
-            lateral: s
-                .lateral
-                .cross_track_m
-                .map(|_| LATERAL_APPROACH_COLUMNS.map(|column| column.value(s))),
-        }
-    }
-}
-
 impl Serialize for ApproachRow {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        let lateral = self.lateral.map_or(0, |values| values.len());
-        let mut row =
-            serializer.serialize_struct("ApproachRow", APPROACH_COLUMNS.len() + lateral)?;
+        let fields = APPROACH_COLUMNS.len() + self.part_columns.len();
+        let mut row = serializer.serialize_struct("ApproachRow", fields)?;
         // `Some(v)` serialises as `v` does (CSV, the columnar front ends' cells).
-        for (column, value) in APPROACH_COLUMNS.iter().zip(self.values) {
-            row.serialize_field(column.name, &value)?;
-        }
-        for (column, value) in LATERAL_APPROACH_COLUMNS
-            .iter()
-            .zip(self.lateral.iter().flatten())
-        {
+        let columns = APPROACH_COLUMNS.iter().chain(self.part_columns);
+        for (column, value) in columns.zip(self.values.iter().chain(&self.parts)) {
             row.serialize_field(column.name, value)?;
         }
         row.end()

@@ -84,6 +84,7 @@ impl ApproachFlight {
         }
         let every =
             ((APPROACH_RECORD_INTERVAL_S / self.simulation.time_step_s()).round() as usize).max(1);
+        let lateral_columns = self.simulation.lateral_columns();
         let summary = self.simulation.run(&mut recorder);
         let last = recorder.samples.len().saturating_sub(1);
         let samples = recorder
@@ -97,6 +98,7 @@ impl ApproachFlight {
             samples,
             events: recorder.events,
             summary,
+            lateral_columns,
         })
     }
 

@@ -19,7 +19,7 @@ use super::lateral::LateralLoop;
 pub use super::layout::LoopLayout;
 use super::outer_loop_signals::{OuterLoopInputs, OuterLoopOutputs};
 use super::outer_loops::OuterLoops;
-use super::signals::Signals;
+use super::signals::{RecordedColumn, Signals};
 use super::taps::{LoopBreak, NoTaps, Taps};
 use crate::aircraft::{
     Aircraft, AircraftState, ElevatorActuator, HookGeometry, Plant, TrimPoint, WithPlant,
@@ -230,6 +230,19 @@ impl ClosedLoop {
         }
         let (measurement, rise_m) = self.with_lateral_part(Roll);
         SensedRoll::latest(measurement, rise_m)
+    }
+
+    /// The columns the loop's lateral part records after the approach's own: the 3-D
+    /// approach's lateral ones, or none.
+    pub(crate) fn recorded_lateral_columns(&self) -> &'static [RecordedColumn] {
+        struct Columns;
+        impl WithLateralPart for Columns {
+            type Output = &'static [RecordedColumn];
+            fn with<L: LateralPart>(self, lateral: &L) -> Self::Output {
+                lateral.recorded_columns()
+            }
+        }
+        self.with_lateral_part(Columns)
     }
 
     /// `work` done with the loop's lateral part: the 3-D approach's, or the lateral hold

@@ -19,7 +19,7 @@ use super::events::EventDetector;
 use super::outcome::{Divergence, EndReason, Event, LandingRules, RunSummary};
 use super::recorder::{GlidePathStatistics, Recorder};
 use super::setup::{build, SetupError, UserParts};
-use super::signals::Signals;
+use super::signals::{RecordedColumn, Signals};
 use super::taps::{NoTaps, Taps};
 use crate::aircraft::{ALPHA_MAX_RAD, ALPHA_MIN_RAD};
 use crate::control::WaveOffDecision;
@@ -221,6 +221,13 @@ impl Simulation {
     /// The integration step (s).
     pub fn time_step_s(&self) -> f64 {
         self.dt
+    }
+
+    /// The columns that the loop's parts record after the approach's own
+    /// (`experiments::APPROACH_COLUMNS`): the 3-D approach's lateral ones
+    /// (`experiments::LATERAL_APPROACH_COLUMNS`), or none; chosen when the loop is built.
+    pub fn lateral_columns(&self) -> &'static [RecordedColumn] {
+        self.system.recorded_lateral_columns()
     }
 
     /// The signals at the current time and state, with the inputs held now: those of

@@ -13,11 +13,15 @@ use crate::environment::{
 use crate::sensors::LateralShipMotionMeasurement;
 use crate::simulation::flight_computer::HeldCommands;
 use crate::simulation::layout::LoopLayout;
-use crate::simulation::signals::Signals;
+use crate::simulation::signals::{RecordedColumn, Signals};
 use crate::simulation::taps::{LoopBreak, Taps};
 
 impl LateralPart for LateralLoop {
     type View = DeckView3d;
+
+    fn recorded_columns(&self) -> &'static [RecordedColumn] {
+        &super::LATERAL_APPROACH_COLUMNS
+    }
 
     /// The equivalent longitudinal pose of the ship's 3-D view.
     #[inline(always)]

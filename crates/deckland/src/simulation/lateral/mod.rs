@@ -49,6 +49,32 @@ use crate::control::wave_off_lateral::LateralWaveOffLimits;
 use crate::environment::{LateralShipMotion, LateralShipNoise, LateralShipStreams};
 use crate::random::{NoiseStream, Reseed};
 use crate::sensors::{LateralShipMotionMeasurement, LateralShipMotionSensor, PitchNoiseParameters};
+use crate::simulation::signals::{RecordedColumn, SignalId};
+
+/// The columns the 3-D approach's lateral part records after the approach's own
+/// (`experiments::APPROACH_COLUMNS`; docs/model.md §10.1): the lineup, the moving
+/// centreline, the lateral states and surfaces, the ship's roll, yaw and sway and the
+/// lateral wind. A loop without it records none (the lateral part's `recorded_columns`).
+pub const LATERAL_APPROACH_COLUMNS: [RecordedColumn; 18] = [
+    RecordedColumn::si("y_m", SignalId::Y),
+    RecordedColumn::si("hook_y_m", SignalId::HookY),
+    RecordedColumn::si("cross_track_m", SignalId::CrossTrack),
+    RecordedColumn::si("cross_track_rate_mps", SignalId::CrossTrackRate),
+    RecordedColumn::si("lineup_error_m", SignalId::LineupError),
+    RecordedColumn::si("lateral_forecast_m", SignalId::LateralForecast),
+    RecordedColumn::si("centreline_y_m", SignalId::AimY),
+    RecordedColumn::degrees("centreline_heading_deg", SignalId::CentrelineHeading),
+    RecordedColumn::degrees("bank_command_deg", SignalId::BankCommand),
+    RecordedColumn::degrees("bank_deg", SignalId::Bank),
+    RecordedColumn::degrees("heading_deg", SignalId::Heading),
+    RecordedColumn::degrees("sideslip_deg", SignalId::Sideslip),
+    RecordedColumn::degrees("aileron_deg", SignalId::Aileron),
+    RecordedColumn::degrees("rudder_deg", SignalId::Rudder),
+    RecordedColumn::degrees("ship_roll_deg", SignalId::ShipRoll),
+    RecordedColumn::degrees("ship_yaw_deg", SignalId::ShipYaw),
+    RecordedColumn::si("ship_sway_m", SignalId::ShipSway),
+    RecordedColumn::si("wind_y_mps", SignalId::WindY),
+];
 
 /// Sideslip measurement noise σ of the air data (rad): 0.2° (shared model §10.7, an
 /// assumption).

@@ -16,7 +16,7 @@ use crate::sensors::LateralShipMotionMeasurement;
 use crate::simulation::blocks::plant;
 use crate::simulation::flight_computer::HeldCommands;
 use crate::simulation::layout::LoopLayout;
-use crate::simulation::signals::Signals;
+use crate::simulation::signals::{RecordedColumn, Signals};
 use crate::simulation::taps::Taps;
 
 /// What the lateral part reads of the loop besides the state, the held inputs and the
@@ -36,6 +36,11 @@ pub(crate) trait LateralPart {
     /// What the ship block's outputs leave for the lateral blocks: the deck's 3-D view,
     /// or nothing.
     type View;
+
+    /// The columns this part records after the approach's own (`approach.csv`, the
+    /// Python observation): [`super::LATERAL_APPROACH_COLUMNS`] in the 3-D approach,
+    /// none in a loop without it.
+    fn recorded_columns(&self) -> &'static [RecordedColumn];
 
     /// The ship's pose and its rate at `t` (s) as the longitudinal blocks see it, for the
     /// state `x`.
@@ -95,6 +100,10 @@ pub(crate) struct LateralHold;
 
 impl LateralPart for LateralHold {
     type View = ();
+
+    fn recorded_columns(&self) -> &'static [RecordedColumn] {
+        &[]
+    }
 
     #[inline(always)]
     fn ship_pose(&self, parts: ShipParts<'_>, x: &[f64], t: f64) -> (ShipPose, ShipPoseRate) {
