@@ -319,11 +319,15 @@ def campaign(
     summary's ``lateral`` and ``trap_sheet``. The column ``deck_within_limits_pct``
     is the share of each run's time (%) with the true deck within every recovery limit
     (lens pitch and roll, total motion, motion in 4 s; NaN for a run that never flew),
-    summarised per controller as ``deck_within_limits_pct``. The last three,
+    summarised per controller as ``deck_within_limits_pct``. Then
     ``commit_ramp_strike_probability``, ``commit_hard_landing_probability`` and
-    ``commit_off_centre_probability``, are the probabilities the forecast gave at the
+    ``commit_off_centre_probability`` are the probabilities the forecast gave at the
     commit point (NaN for a run that never reached it, the off-centre one for a 3-DOF
-    approach too), held against the outcomes per controller as ``calibration``.
+    approach too), held against the outcomes per controller as ``calibration``; the last
+    two, ``commit_ramp_clearance_m`` and ``commit_ramp_clearance_sigma_m``, the
+    hook-to-ramp clearance c the ramp strike's is taken on and its σ_c, whose
+    standardised error (``ramp_clearance_m`` − c)/σ_c the calibration summarises as
+    ``ramp_clearance_error``.
     ``runs`` is 1 to :data:`MAX_RUNS` (100 000,
     as ``deckland campaign --runs``); beyond, ``ValueError``.
     ``progress`` reports how far the campaign got: ``True`` writes a line to stderr at

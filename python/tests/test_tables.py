@@ -36,7 +36,7 @@ def test_campaign_columns_have_the_types_of_their_values():
     assert reasons.dtype == object or np.all(np.isnan(reasons))
     # The share of each run's time with the deck within the recovery limits: a number in
     # [0, 100] for every flown run, and its mean and least in the summary.
-    assert list(runs)[-4] == "deck_within_limits_pct"
+    assert list(runs)[-6] == "deck_within_limits_pct"
     deck = runs["deck_within_limits_pct"]
     flown = deck[~np.isnan(deck)]
     assert deck.dtype == np.float64 and len(flown) >= 1
@@ -45,12 +45,12 @@ def test_campaign_columns_have_the_types_of_their_values():
     assert shares["count"] == len(flown)
     assert abs(shares["mean"] - float(np.mean(flown))) < 1e-9
     assert shares["min"] == float(np.min(flown))
-    # The probabilities the forecast gave at the commit point: the last three columns, in
-    # [0, 1] (NaN for a run that never reached it), summed and counted per criterion in
-    # the summary's calibration.
+    # The probabilities the forecast gave at the commit point: three columns before the
+    # last two, in [0, 1] (NaN for a run that never reached it), summed and counted per
+    # criterion in the summary's calibration.
     names = ["commit_ramp_strike_probability", "commit_hard_landing_probability",
              "commit_off_centre_probability"]
-    assert list(runs)[-3:] == names
+    assert list(runs)[-5:-2] == names
     calibration = result.statistics[0]["calibration"]
     ramp = runs["commit_ramp_strike_probability"]
     reached = ramp[~np.isnan(ramp)]
@@ -66,3 +66,20 @@ def test_campaign_columns_have_the_types_of_their_values():
             assert abs(criterion["expected_events"] - float(np.sum(p))) < 1e-12
             observed = sum(1 for o, r in zip(runs["outcome"], ramp) if o == outcome and r == r)
             assert criterion["observed_events"] == observed
+    # Last, the clearance the ramp strike's probability is taken on and its σ, there
+    # exactly where the probability is; the summary's standardised error of the clearance
+    # flown against them, recomputed here with numpy.
+    assert list(runs)[-2:] == ["commit_ramp_clearance_m", "commit_ramp_clearance_sigma_m"]
+    c, sigma = runs["commit_ramp_clearance_m"], runs["commit_ramp_clearance_sigma_m"]
+    assert np.array_equal(np.isnan(c), np.isnan(ramp))
+    assert np.array_equal(np.isnan(sigma), np.isnan(ramp))
+    flown = runs["ramp_clearance_m"]
+    both = ~np.isnan(c) & ~np.isnan(flown) & (np.nan_to_num(sigma) > 0.0)
+    z = (flown[both] - c[both]) / sigma[both]
+    error = calibration["ramp_clearance_error"]
+    if len(z) >= 2:
+        assert error["runs"] == len(z)
+        assert abs(error["mean"] - float(np.mean(z))) < 1e-9
+        assert abs(error["sd"] - float(np.std(z, ddof=1))) < 1e-9
+    else:
+        assert error is None

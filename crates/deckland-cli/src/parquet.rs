@@ -19,7 +19,8 @@
 //! [`TRAP_SHEET_RUN_COLUMNS`]). The columns appended last ([`LSO_RUN_COLUMNS`]:
 //! `lso_grade`, `lso_points`, `lso_comment`, `wave_off_criterion`,
 //! `deck_within_limits_pct` and the commit point's `commit_ramp_strike_probability`,
-//! `commit_hard_landing_probability`, `commit_off_centre_probability`, optional doubles)
+//! `commit_hard_landing_probability`, `commit_off_centre_probability`,
+//! `commit_ramp_clearance_m`, `commit_ramp_clearance_sigma_m`, optional doubles)
 //! come last, after the lateral ones, as in `runs.csv`.
 //!
 //! One row group, Snappy compression (pandas' default). A value that is not finite is

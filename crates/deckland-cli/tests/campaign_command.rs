@@ -53,7 +53,7 @@ fn one_and_two_threads_write_byte_identical_runs_csv() {
         assert!(text.lines().next().unwrap().ends_with(
             ",reason,lso_grade,lso_points,lso_comment,wave_off_criterion,deck_within_limits_pct,\
              commit_ramp_strike_probability,commit_hard_landing_probability,\
-             commit_off_centre_probability"
+             commit_off_centre_probability,commit_ramp_clearance_m,commit_ramp_clearance_sigma_m"
         ));
         assert!(summary.get("trap_sheet").is_none() && summary.get("lateral").is_none());
         let opd = &summary["controllers"][0];
@@ -504,22 +504,33 @@ fn a_default_campaign_grades_every_pass_and_prints_the_greenie_board() {
     let mut reader = csv::Reader::from_reader(text.as_bytes());
     let header: Vec<String> = reader.headers().unwrap().iter().map(String::from).collect();
     let n = header.len();
-    assert_eq!(header[n - 8..], LSO_RUN_COLUMNS, "{header:?}");
+    assert_eq!(
+        header[n - LSO_RUN_COLUMNS.len()..],
+        LSO_RUN_COLUMNS,
+        "{header:?}"
+    );
     let grades = ["ok", "fair", "bolter", "no_grade", "own_wave_off", "cut"];
+    let column = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let (grade, points, share, criterion) = (
+        column("lso_grade"),
+        column("lso_points"),
+        column("deck_within_limits_pct"),
+        column("wave_off_criterion"),
+    );
     let mut rows = 0;
     let mut deck_shares = Vec::new();
     let mut records = Vec::new();
     for record in reader.records() {
         let record = record.unwrap();
         rows += 1;
-        assert!(grades.contains(&&record[n - 8]), "{record:?}");
-        let points: f64 = record[n - 7].parse().unwrap();
+        assert!(grades.contains(&&record[grade]), "{record:?}");
+        let points: f64 = record[points].parse().unwrap();
         assert!((0.0..=4.0).contains(&points), "{record:?}");
-        let share: f64 = record[n - 4].parse().unwrap();
+        let share: f64 = record[share].parse().unwrap();
         assert!((0.0..=100.0).contains(&share), "{record:?}");
         deck_shares.push(share);
         // The wave-off's criterion: the name the reason gives, else empty.
-        let criterion = &record[n - 5];
+        let criterion = &record[criterion];
         let reason = &record[header.iter().position(|h| h == "reason").unwrap()];
         assert_eq!(
             criterion.is_empty(),
@@ -595,12 +606,25 @@ fn check_calibration(
 ) {
     let column = |name: &str| header.iter().position(|h| h == name).unwrap();
     let (outcome, off_centre) = (column("outcome"), column("off_centre"));
-    let n = header.len();
+    let first = column("commit_ramp_strike_probability");
     let mut sums = [0.0; 3];
     let mut events = [0_u64; 3];
     let mut reached = 0;
+    let mut z = Vec::new();
     for record in records {
-        let p: Vec<Option<f64>> = (n - 3..n).map(|i| record[i].parse().ok()).collect();
+        let p: Vec<Option<f64>> = (first..first + 3).map(|i| record[i].parse().ok()).collect();
+        // The clearance the ramp strike's is taken on, its σ and the clearance flown.
+        let [c, sigma, flown]: [Option<f64>; 3] = [
+            "commit_ramp_clearance_m",
+            "commit_ramp_clearance_sigma_m",
+            "ramp_clearance_m",
+        ]
+        .map(|name| record[column(name)].parse().ok());
+        assert_eq!(c.is_some(), p[0].is_some(), "{record:?}");
+        assert_eq!(sigma.is_some(), p[0].is_some(), "{record:?}");
+        if let (Some(c), Some(sigma), Some(flown)) = (c, sigma, flown) {
+            z.push((flown - c) / sigma);
+        }
         let reached_it = p[0].is_some();
         assert!(p.iter().all(|q| q.is_some() == reached_it), "{record:?}");
         if !reached_it {
@@ -669,5 +693,20 @@ fn check_calibration(
             criterion["observed_events"]
         );
         assert!(printed.contains(&line), "no `{line}` in:\n{printed}");
+    }
+    // The clearance's standardised error, from the rows (CSV's shortest round-trip
+    // numbers), and its line on the terminal.
+    let error = &calibration["ramp_clearance_error"];
+    if z.len() >= 2 {
+        let mean = z.iter().sum::<f64>() / z.len() as f64;
+        assert_eq!(error["runs"], z.len(), "{error}");
+        assert!(
+            (error["mean"].as_f64().unwrap() - mean).abs() < 1e-9,
+            "{error}"
+        );
+        let line = format!("z = (flown − c)/σ_c over {} runs: mean {mean:+.2}", z.len());
+        assert!(printed.contains(&line), "no `{line}` in:\n{printed}");
+    } else {
+        assert!(error.is_null(), "{error}");
     }
 }

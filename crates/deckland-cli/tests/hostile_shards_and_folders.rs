@@ -244,12 +244,12 @@ fn regression_d8_rows_no_campaign_writes_are_refused_by_file_row_and_column() {
                     .collect();
                 fs::write(&path, text).unwrap();
             },
-            // The last column, the off-centre probability at the commit point since
+            // The last column, the σ of the clearance at the commit point since
             // issue 45 (item 1): a shard of the deckland before it.
             &[
                 "runs.csv",
                 "line 1",
-                "`commit_off_centre_probability` is missing",
+                "`commit_ramp_clearance_sigma_m` is missing",
                 "fly it again with this version",
             ],
         ),

@@ -433,7 +433,8 @@ fn runs_parquet_holds_the_rows_of_runs_csv() {
         header.ends_with(
             ",trap_ar_lineup_peak_deg,lso_grade,lso_points,lso_comment,wave_off_criterion,\
              deck_within_limits_pct,commit_ramp_strike_probability,\
-             commit_hard_landing_probability,commit_off_centre_probability"
+             commit_hard_landing_probability,commit_off_centre_probability,\
+             commit_ramp_clearance_m,commit_ramp_clearance_sigma_m"
         ),
         "{header}"
     );

@@ -46,9 +46,10 @@ fn normal_cdf(x: f64) -> f64 {
 /// longitudinal state) is at or below the decision point's, before any wave-off: the
 /// predicted clearance from the path's height at the mean ramp, the hook's error to it
 /// and the forecast ramp, its σ from the forecast's and the flight path's σ; the
-/// predicted sink rate relative to the deck. Also the summary of the run, flown step by
-/// step to the end.
-fn recomputed(scenario: &Scenario) -> (Option<(f64, f64)>, RunSummary) {
+/// predicted sink rate relative to the deck; then the clearance and its σ. Also the
+/// summary of the run, flown step by step to the end.
+#[allow(clippy::type_complexity)]
+fn recomputed(scenario: &Scenario) -> (Option<(f64, f64, f64, f64)>, RunSummary) {
     let mut simulation = Simulation::new(scenario).unwrap();
     let wave_off = scenario.control.wave_off;
     let mut found = None;
@@ -111,6 +112,8 @@ fn recomputed(scenario: &Scenario) -> (Option<(f64, f64)>, RunSummary) {
             found = Some((
                 normal_cdf(-clearance_m / sigma_c),
                 normal_cdf((sink - wave_off.hard_landing_sink_rate_mps) / sigma_sink),
+                clearance_m,
+                sigma_c,
             ));
         }
         if matches!(simulation.step(&mut Nothing), Stop::Ended(_)) {
@@ -157,12 +160,14 @@ fn in_the_papers_sea_the_commit_forecast_is_the_recomputed_one() {
         );
         match (summary.commit_forecast, recomputed) {
             (None, None) => {}
-            (Some(forecast), Some((ramp, hard))) => {
+            (Some(forecast), Some((ramp, hard, clearance_m, sigma_m))) => {
                 reached += 1;
                 let CommitForecast {
                     ramp_strike_probability,
                     hard_landing_probability,
                     off_centre_probability,
+                    ramp_clearance_m,
+                    ramp_clearance_sigma_m,
                 } = forecast;
                 let off_centre = off_centre_probability.expect("a 3-D approach's");
                 for p in [
@@ -174,6 +179,8 @@ fn in_the_papers_sea_the_commit_forecast_is_the_recomputed_one() {
                 }
                 assert_close(&format!("seed {seed} ramp"), ramp_strike_probability, ramp);
                 assert_close(&format!("seed {seed} hard"), hard_landing_probability, hard);
+                assert_close(&format!("seed {seed} c"), ramp_clearance_m, clearance_m);
+                assert_close(&format!("seed {seed} σ_c"), ramp_clearance_sigma_m, sigma_m);
             }
             other => panic!("seed {seed}: recorded and recomputed disagree: {other:?}"),
         }

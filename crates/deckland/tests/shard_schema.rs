@@ -149,6 +149,26 @@ fn regression_rows_no_campaign_writes_are_refused_by_row_and_column() {
             "inf",
             "commit_off_centre_probability",
         ),
+        // The clearance the ramp strike's probability is taken on and its σ: finite,
+        // the σ not negative, both with the probabilities.
+        (
+            committed,
+            "commit_ramp_clearance_m",
+            "NaN",
+            "commit_ramp_clearance_m",
+        ),
+        (
+            committed,
+            "commit_ramp_clearance_sigma_m",
+            "-0.1",
+            "commit_ramp_clearance_sigma_m",
+        ),
+        (
+            committed,
+            "commit_ramp_clearance_sigma_m",
+            "",
+            "commit_ramp_clearance_sigma_m",
+        ),
         (trap, "sea_state_scale", "0", "sea_state_scale"),
         (trap, "reason", "edited", "reason"),
         (not_trap, "reason", "", "reason"),
@@ -208,17 +228,17 @@ fn regression_rows_no_campaign_writes_are_refused_by_row_and_column() {
 fn regression_runs_csv_text_must_be_a_whole_campaign_table() {
     let shards = flown_shards();
     let text = rows_csv(&shards[0].table.rows);
-    // A column removed (from the header and every row): the last, the off-centre
-    // probability at the commit point (since issue 45, item 1).
-    let without_off_centre: String = text
+    // A column removed (from the header and every row): the last, the σ of the
+    // clearance at the commit point (since issue 45, item 1).
+    let without_last: String = text
         .lines()
         .map(|line| line.rsplit_once(',').unwrap().0.to_owned() + "\n")
         .collect();
-    let error = parse_runs_csv("r", &without_off_centre).unwrap_err();
+    let error = parse_runs_csv("r", &without_last).unwrap_err();
     assert!(
         error
             .to_string()
-            .contains("`commit_off_centre_probability` is missing"),
+            .contains("`commit_ramp_clearance_sigma_m` is missing"),
         "{error}"
     );
     let error = parse_runs_csv("r", &text.replacen("wire,", "wires,", 1)).unwrap_err();

@@ -20,6 +20,12 @@
 //!   runs, mean predicted probability, observed events and the exact two-sided 95 %
 //!   (Clopper–Pearson) interval of the observed rate: a calibrated forecast has each
 //!   bin's mean probability within its interval.
+//! - **The ramp clearance's standardised error** ([`ClearanceError`]): the ramp-strike
+//!   probability is Φ(−c/σ_c) of a predicted clearance c with σ_c, so for every run
+//!   that crossed the ramp z = (clearance flown − c)/σ_c is normal (0, 1) where it is
+//!   calibrated. Its mean and SD test the model on every run, where the strikes alone
+//!   are too few to (an SD below 1: the predicted tail is too heavy, the probability
+//!   pessimistic).
 
 use serde::Serialize;
 
@@ -307,6 +313,73 @@ pub struct Calibration {
     pub hard_landing: Option<CriterionCalibration>,
     /// The off-centre touchdown's probability against the `off_centre` column.
     pub off_centre: Option<CriterionCalibration>,
+    /// The ramp clearance's standardised error over the runs that reached the commit
+    /// point and crossed the ramp (`None` with fewer than two).
+    pub ramp_clearance_error: Option<ClearanceError>,
+}
+
+/// The standardised error z = (flown − c)/σ_c of the hook-to-ramp clearance that the
+/// ramp-strike probability is taken on (module docs): its mean and SD over the runs,
+/// each with a 95 % interval — the mean's x̄ ± 1.96·s/√n, the SD's s·exp(∓1.96/√(2(n −
+/// 1))) (the normal approximation of ln s, good from some tens of runs).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ClearanceError {
+    /// Runs with a clearance predicted at the commit point and one flown at the ramp.
+    pub runs: u64,
+    /// The mean of z (0 where calibrated; above 0, the hook crosses higher than c).
+    pub mean: f64,
+    /// The lower end of its 95 % interval.
+    pub mean_ci95_low: f64,
+    /// Its upper end.
+    pub mean_ci95_high: f64,
+    /// The SD of z (1 where calibrated; below 1, σ_c too wide).
+    pub sd: f64,
+    /// The lower end of its 95 % interval.
+    pub sd_ci95_low: f64,
+    /// Its upper end.
+    pub sd_ci95_high: f64,
+    /// Whether the mean's interval holds 0 and the SD's 1.
+    pub calibrated: bool,
+}
+
+impl ClearanceError {
+    /// The statistics of the standardised errors `z`; `None` with fewer than two.
+    pub fn of(z: &[f64]) -> Option<Self> {
+        if z.len() < 2 {
+            return None;
+        }
+        let n = z.len() as f64;
+        let mean = z.iter().sum::<f64>() / n;
+        let sd = (z.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0)).sqrt();
+        let half = CONFIDENCE_Z_95 * sd / n.sqrt();
+        let spread = (CONFIDENCE_Z_95 / (2.0 * (n - 1.0)).sqrt()).exp();
+        let (mean_ci95_low, mean_ci95_high) = (mean - half, mean + half);
+        let (sd_ci95_low, sd_ci95_high) = (sd / spread, sd * spread);
+        Some(Self {
+            runs: z.len() as u64,
+            mean,
+            mean_ci95_low,
+            mean_ci95_high,
+            sd,
+            sd_ci95_low,
+            sd_ci95_high,
+            calibrated: (mean_ci95_low..=mean_ci95_high).contains(&0.0)
+                && (sd_ci95_low..=sd_ci95_high).contains(&1.0),
+        })
+    }
+
+    /// The standardised error of each row that has a clearance and its σ (above 0) at
+    /// the commit point and a clearance flown at the ramp.
+    pub fn of_rows(rows: &[RunRow]) -> Option<Self> {
+        let z: Vec<f64> = rows
+            .iter()
+            .filter_map(|r| {
+                let sigma_m = r.commit_ramp_clearance_sigma_m.filter(|s| *s > 0.0)?;
+                Some((r.ramp_clearance_m? - r.commit_ramp_clearance_m?) / sigma_m)
+            })
+            .collect();
+        Self::of(&z)
+    }
 }
 
 impl Calibration {
@@ -342,6 +415,7 @@ impl Calibration {
             ramp_strike: CriterionCalibration::of(&ramp),
             hard_landing: CriterionCalibration::of(&hard),
             off_centre: off_centre.and_then(|pairs| CriterionCalibration::of(&pairs)),
+            ramp_clearance_error: ClearanceError::of_rows(rows),
         }
     }
 
@@ -526,5 +600,71 @@ mod tests {
         );
         assert!(!calibration.calibrated);
         assert!((calibration.observed_to_expected.unwrap() - 100.0).abs() < 1e-9);
+    }
+
+    /// Four errors worked by hand: z = −1, 0, 1, 2 have mean ½ and SD √(5/3) =
+    /// 1.290994; the mean's interval ½ ± 1.959964·1.290994/2 = [−0.765151, 1.765151]
+    /// holds 0, the SD's, 1.290994·e^(∓1.959964/√6) = [0.579993, 2.873598], holds 1.
+    #[test]
+    fn the_clearance_error_of_four_runs_is_the_hand_worked_one() {
+        let e = ClearanceError::of(&[-1.0, 0.0, 1.0, 2.0]).unwrap();
+        let close = |a: f64, b: f64| (a - b).abs() < 1e-6;
+        assert_eq!(e.runs, 4);
+        assert!(close(e.mean, 0.5) && close(e.sd, 1.290_994), "{e:?}");
+        assert!(close(e.mean_ci95_low, -0.765_151) && close(e.mean_ci95_high, 1.765_151));
+        assert!(close(e.sd_ci95_low, 0.579_993) && close(e.sd_ci95_high, 2.873_598));
+        assert!(e.calibrated);
+        assert!(ClearanceError::of(&[0.3]).is_none());
+    }
+
+    /// 2000 errors at the normal's quantiles Φ⁻¹((k − ½)/2000) are calibrated; the same
+    /// with the moderate sea's measured shape (mean +0.18, SD 0.83: the hook crosses
+    /// higher and nearer its prediction than σ_c says) are not, and neither is a
+    /// forecast too sure (SD 1.2).
+    #[test]
+    fn normal_errors_are_calibrated_and_a_narrower_or_wider_spread_is_not() {
+        let n = 2000;
+        let z: Vec<f64> = (1..=n)
+            .map(|k| {
+                let p = (f64::from(k) - 0.5) / f64::from(n);
+                -crate::control::risk::normal_upper_quantile(p)
+            })
+            .collect();
+        let calibrated = ClearanceError::of(&z).unwrap();
+        assert!(calibrated.mean.abs() < 1e-9 && (calibrated.sd - 1.0).abs() < 2e-3);
+        assert!(calibrated.calibrated, "{calibrated:?}");
+        let moderate: Vec<f64> = z.iter().map(|x| 0.18 + 0.83 * x).collect();
+        let narrow = ClearanceError::of(&moderate).unwrap();
+        assert!(
+            !narrow.calibrated && narrow.sd_ci95_high < 1.0,
+            "{narrow:?}"
+        );
+        let wide: Vec<f64> = z.iter().map(|x| 1.2 * x).collect();
+        let wide = ClearanceError::of(&wide).unwrap();
+        assert!(!wide.calibrated && wide.sd_ci95_low > 1.0, "{wide:?}");
+    }
+
+    /// The rows' errors: a run with a clearance predicted and flown counts, one that
+    /// never crossed the ramp, one with no commit point and one with σ_c = 0 do not.
+    #[test]
+    fn only_runs_with_a_prediction_and_a_crossing_have_a_clearance_error() {
+        let row = |predicted: Option<(f64, f64)>, flown: Option<f64>| RunRow {
+            commit_ramp_clearance_m: predicted.map(|p| p.0),
+            commit_ramp_clearance_sigma_m: predicted.map(|p| p.1),
+            ramp_clearance_m: flown,
+            ..RunRow::unmeasured(1, "O-PD", "trap")
+        };
+        let rows = [
+            row(Some((3.0, 1.0)), Some(2.0)),
+            row(Some((3.0, 0.5)), Some(4.0)),
+            row(Some((3.0, 1.0)), None),
+            row(None, Some(2.0)),
+            row(Some((3.0, 0.0)), Some(2.0)),
+        ];
+        let e = ClearanceError::of_rows(&rows).unwrap();
+        // z = −1 and +2.
+        assert_eq!(e.runs, 2);
+        assert!((e.mean - 0.5).abs() < 1e-12);
+        assert!((e.sd - 4.5_f64.sqrt()).abs() < 1e-12);
     }
 }

@@ -63,8 +63,8 @@ mod trap_sheet;
 
 pub use calibration::{
     clopper_pearson_interval, count_interval, poisson_binomial, reliability_bins, Calibration,
-    CountInterval, CriterionCalibration, IntervalMethod, ReliabilityBin, CALIBRATION_BIN_EDGES,
-    CALIBRATION_METHOD, EXACT_COUNT_LIMIT, NORMAL_VARIANCE,
+    ClearanceError, CountInterval, CriterionCalibration, IntervalMethod, ReliabilityBin,
+    CALIBRATION_BIN_EDGES, CALIBRATION_METHOD, EXACT_COUNT_LIMIT, NORMAL_VARIANCE,
 };
 pub use campaign::{
     controller_label, run_campaign, CampaignError, CampaignResult, CampaignSpec, ControllerVariant,

@@ -63,8 +63,9 @@ pub const RUN_COLUMNS: [&str; 23] = [
 /// criterion ([`WaveOffCriterion::name`]) is empty unless the aircraft waved off; the
 /// deck's share is empty for a run that never flew; the probabilities the forecast gave
 /// at the commit point ([`crate::control::CommitForecast`]) are empty for a run that never
-/// reached it, the off-centre one also for a longitudinal (3-DOF) approach.
-pub const LSO_RUN_COLUMNS: [&str; 8] = [
+/// reached it, the off-centre one also for a longitudinal (3-DOF) approach, and so are the
+/// predicted hook-to-ramp clearance and its σ that the ramp strike's is taken on.
+pub const LSO_RUN_COLUMNS: [&str; 10] = [
     "lso_grade",
     "lso_points",
     "lso_comment",
@@ -73,6 +74,8 @@ pub const LSO_RUN_COLUMNS: [&str; 8] = [
     "commit_ramp_strike_probability",
     "commit_hard_landing_probability",
     "commit_off_centre_probability",
+    "commit_ramp_clearance_m",
+    "commit_ramp_clearance_sigma_m",
 ];
 
 /// The criterion a run's reason names for its wave-off ("… wave-off at t = 23.10 s on
@@ -116,7 +119,7 @@ const DISPERSION_SIGMAS: f64 = 50.0;
 /// The physical range of every number of a row: (column, lowest, highest), inclusive.
 /// The dispersions' ranges are `DISPERSION_SIGMAS` (50) times the largest standard deviations a
 /// scenario allows (start height 20 m, airspeed and wind 10 m/s, log sea state 1).
-pub const RANGES: [(&str, f64, f64); 21] = [
+pub const RANGES: [(&str, f64, f64); 23] = [
     ("touchdown_distance_m", -LENGTH_LIMIT_M, LENGTH_LIMIT_M),
     ("touchdown_sink_rate_mps", -SPEED_LIMIT_MPS, SPEED_LIMIT_MPS),
     ("touchdown_pitch_deg", -180.0, 180.0),
@@ -155,6 +158,8 @@ pub const RANGES: [(&str, f64, f64); 21] = [
     ("commit_ramp_strike_probability", 0.0, 1.0),
     ("commit_hard_landing_probability", 0.0, 1.0),
     ("commit_off_centre_probability", 0.0, 1.0),
+    ("commit_ramp_clearance_m", -LENGTH_LIMIT_M, LENGTH_LIMIT_M),
+    ("commit_ramp_clearance_sigma_m", 0.0, LENGTH_LIMIT_M),
 ];
 
 /// Why a row is not one a campaign can write: the column and its value.
@@ -243,6 +248,13 @@ pub struct RunRow<'a> {
     /// The probability of an off-centre touchdown the forecast gave there (3-D
     /// approach); `None` likewise and for a longitudinal approach.
     pub commit_off_centre_probability: Option<f64>,
+    /// c, the predicted hook-to-ramp clearance the ramp-strike probability was taken on
+    /// there (m; `CommitForecast::ramp_clearance_m`); `None` for a run that never reached
+    /// it. With the clearance flown, (`ramp_clearance_m` − c)/σ_c is the forecast's
+    /// standardised error, normal (0, 1) where the probability is calibrated.
+    pub commit_ramp_clearance_m: Option<f64>,
+    /// σ_c, its σ there (m); `None` likewise.
+    pub commit_ramp_clearance_sigma_m: Option<f64>,
 }
 
 impl<'a> RunRow<'a> {
@@ -297,6 +309,8 @@ impl<'a> RunRow<'a> {
             commit_ramp_strike_probability: commit.map(|c| c.ramp_strike_probability),
             commit_hard_landing_probability: commit.map(|c| c.hard_landing_probability),
             commit_off_centre_probability: commit.and_then(|c| c.off_centre_probability),
+            commit_ramp_clearance_m: commit.map(|c| c.ramp_clearance_m),
+            commit_ramp_clearance_sigma_m: commit.map(|c| c.ramp_clearance_sigma_m),
         }
     }
 
@@ -336,6 +350,8 @@ impl<'a> RunRow<'a> {
             commit_ramp_strike_probability: None,
             commit_hard_landing_probability: None,
             commit_off_centre_probability: None,
+            commit_ramp_clearance_m: None,
+            commit_ramp_clearance_sigma_m: None,
         }
     }
 
@@ -356,7 +372,7 @@ impl<'a> RunRow<'a> {
     }
 
     /// The row's numbers by column, in [`RANGES`] order (`None`: empty).
-    fn numbers(&self) -> [Option<f64>; 21] {
+    fn numbers(&self) -> [Option<f64>; 23] {
         [
             self.touchdown_distance_m,
             self.touchdown_sink_rate_mps,
@@ -379,6 +395,8 @@ impl<'a> RunRow<'a> {
             self.commit_ramp_strike_probability,
             self.commit_hard_landing_probability,
             self.commit_off_centre_probability,
+            self.commit_ramp_clearance_m,
+            self.commit_ramp_clearance_sigma_m,
         ]
     }
 
@@ -397,7 +415,8 @@ impl<'a> RunRow<'a> {
     }
 
     /// The commit point's probabilities: the ramp strike's and the hard landing's both
-    /// or neither, the off-centre one only with them, none for a run that never flew.
+    /// or neither, the off-centre one only with them, the clearance and its σ with
+    /// them, none for a run that never flew.
     fn check_commit_columns(&self) -> Result<(), RowError> {
         let ramp = self.commit_ramp_strike_probability;
         let hard = self.commit_hard_landing_probability;
@@ -416,6 +435,21 @@ impl<'a> RunRow<'a> {
                 "commit_off_centre_probability",
                 shown(off_centre),
                 "only a run that reached the commit point has it",
+            ));
+        }
+        let clearance = [
+            ("commit_ramp_clearance_m", self.commit_ramp_clearance_m),
+            (
+                "commit_ramp_clearance_sigma_m",
+                self.commit_ramp_clearance_sigma_m,
+            ),
+        ];
+        if let Some((column, value)) = clearance.into_iter().find(|c| c.1.is_some() != reached) {
+            return Err(row_error(
+                column,
+                shown(value),
+                "a run that reached the commit point has the clearance the ramp strike's \
+                 probability was taken on and its σ, one that did not neither",
             ));
         }
         if reached && !self.flown() {

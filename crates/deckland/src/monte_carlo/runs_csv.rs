@@ -286,8 +286,8 @@ mod tests {
             error.contains(
                 "`lso_grade`, `lso_points`, `lso_comment`, `wave_off_criterion`, \
                  `deck_within_limits_pct`, `commit_ramp_strike_probability`, \
-                 `commit_hard_landing_probability`, `commit_off_centre_probability` are \
-                 missing"
+                 `commit_hard_landing_probability`, `commit_off_centre_probability`, \
+                 `commit_ramp_clearance_m`, `commit_ramp_clearance_sigma_m` are missing"
             ),
             "{error}"
         );
@@ -331,8 +331,25 @@ mod tests {
             assert!(
                 error.contains(
                     "the columns `commit_ramp_strike_probability`, \
-                     `commit_hard_landing_probability`, `commit_off_centre_probability` are \
-                     missing"
+                     `commit_hard_landing_probability`, `commit_off_centre_probability`, \
+                     `commit_ramp_clearance_m`, `commit_ramp_clearance_sigma_m` are missing"
+                ) && error.contains("fly it again with this version"),
+                "{error}"
+            );
+        }
+    }
+
+    /// Issue 45, item 1: a shard of the deckland before the commit point's clearance and
+    /// its σ (the off-centre probability its last column, 3-DOF or 3-D) is refused,
+    /// naming the two columns.
+    #[test]
+    fn a_shard_without_the_commit_clearance_columns_is_refused_by_name() {
+        for old in headers_of_a_deckland_ending_with(&LSO_RUN_COLUMNS[..8]) {
+            let error = parse_runs_csv("s1/runs.csv", &old).unwrap_err().to_string();
+            assert!(
+                error.contains(
+                    "the columns `commit_ramp_clearance_m`, `commit_ramp_clearance_sigma_m` \
+                     are missing"
                 ) && error.contains("fly it again with this version"),
                 "{error}"
             );

@@ -66,6 +66,8 @@ mod tests {
             ramp_strike_probability: 0.01,
             hard_landing_probability: 1e-5,
             off_centre_probability: None,
+            ramp_clearance_m: 3.1,
+            ramp_clearance_sigma_m: 1.3,
         };
         commit.record(forecast, true);
         assert!(commit.reached() && commit.lateral_pending());

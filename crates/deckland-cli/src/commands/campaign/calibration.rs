@@ -8,7 +8,9 @@
 
 use crate::html;
 use anyhow::Result;
-use deckland::monte_carlo::{CampaignStatistics, CriterionCalibration, ReliabilityBin};
+use deckland::monte_carlo::{
+    CampaignStatistics, ClearanceError, CriterionCalibration, ReliabilityBin,
+};
 
 /// The criteria of a controller's calibration that have runs, with their names.
 fn criteria(s: &CampaignStatistics) -> Vec<(&'static str, &CriterionCalibration)> {
@@ -76,6 +78,28 @@ pub fn criterion_line(name: &str, c: &CriterionCalibration) -> String {
     )
 }
 
+/// "ramp clearance flown against predicted, z = (flown − c)/σ_c over 2000 runs: mean
+/// +0.18 (95 %: +0.14 to +0.22), SD 0.83 (0.81–0.86): σ_c too wide, the ramp-strike
+/// probability pessimistic".
+pub fn clearance_line(e: &ClearanceError) -> String {
+    let verdict = if e.calibrated {
+        "calibrated"
+    } else if e.sd_ci95_high < 1.0 {
+        "σ_c too wide, the ramp-strike probability pessimistic"
+    } else if e.sd_ci95_low > 1.0 {
+        "σ_c too narrow, the ramp-strike probability optimistic"
+    } else if e.mean_ci95_low > 0.0 {
+        "the hook crosses higher than predicted, the ramp-strike probability pessimistic"
+    } else {
+        "the hook crosses lower than predicted, the ramp-strike probability optimistic"
+    };
+    format!(
+        "ramp clearance flown against predicted, z = (flown − c)/σ_c over {} runs: mean {:+.2} \
+         (95 %: {:+.2} to {:+.2}), SD {:.2} ({:.2}–{:.2}): {verdict}",
+        e.runs, e.mean, e.mean_ci95_low, e.mean_ci95_high, e.sd, e.sd_ci95_low, e.sd_ci95_high
+    )
+}
+
 /// "p in [1e-4, 1e-3): 1234 runs, mean p 3.1e-4, observed 2 (rate 1.6e-3, 95 %:
 /// 2.0e-4–5.8e-3)", for a bin with runs.
 fn bin_line(bin: &ReliabilityBin) -> Option<String> {
@@ -116,6 +140,9 @@ pub fn lines(stats: &[CampaignStatistics]) -> Vec<String> {
                     .filter_map(bin_line)
                     .map(|l| format!("    {l}")),
             );
+        }
+        if let Some(error) = &c.ramp_clearance_error {
+            lines.push(format!("  {}", clearance_line(error)));
         }
     }
     lines
@@ -200,4 +227,9 @@ pub fn html_section(section: &mut html::Section, stats: &[CampaignStatistics]) {
             ],
             bins,
         );
+    for s in stats {
+        if let Some(error) = &s.calibration.ramp_clearance_error {
+            section.paragraph(format!("{}: {}.", s.controller, clearance_line(error)));
+        }
+    }
 }

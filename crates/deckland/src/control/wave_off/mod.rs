@@ -599,6 +599,8 @@ impl WaveOffParameters {
             ramp_strike_probability: inputs.ramp_strike_probability(),
             hard_landing_probability: self.hard_landing_probability(sink, &inputs.forecast),
             off_centre_probability: None,
+            ramp_clearance_m: inputs.closed_loop_ramp_clearance_m(),
+            ramp_clearance_sigma_m: inputs.ramp_clearance_sigma_m,
         }
     }
 }
@@ -668,6 +670,12 @@ pub struct CommitForecast {
     /// (`control::wave_off_lateral`), at the lateral guidance's first frame from the
     /// commit point (–); `None` for a longitudinal approach.
     pub off_centre_probability: Option<f64>,
+    /// c, the predicted hook-to-ramp clearance the ramp-strike probability is taken on
+    /// (m): the closed-loop one, or the one of the path held with `ramp_strike_model =
+    /// "forecast"` ([`WaveOffInputs::closed_loop_ramp_clearance_m`]).
+    pub ramp_clearance_m: f64,
+    /// σ_c, its σ (m) ([`WaveOffInputs::ramp_clearance_sigma_m`]).
+    pub ramp_clearance_sigma_m: f64,
 }
 
 /// The decision of the first of `checks` — each a criterion, its value, its limit and
