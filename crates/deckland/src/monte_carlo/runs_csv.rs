@@ -307,52 +307,35 @@ mod tests {
     }
 
     /// A shard of the deckland before the deck's share within the recovery limits (its
-    /// four LSO and wave-off columns last, 3-DOF or 3-D) is refused, naming the column
-    /// (and those that came after it).
+    /// four LSO and wave-off columns last), before the commit point's forecast (issue 45,
+    /// item 1: the deck's share last) or before its clearance (the off-centre probability
+    /// last), 3-DOF or 3-D, is refused on its header, naming the columns it lacks.
     #[test]
-    fn a_shard_without_the_deck_within_limits_column_is_refused_by_name() {
-        for old in headers_of_a_deckland_ending_with(&LSO_RUN_COLUMNS[..4]) {
-            let error = parse_runs_csv("s1/runs.csv", &old).unwrap_err().to_string();
-            assert!(
-                error.contains("line 1")
-                    && error.contains("the columns `deck_within_limits_pct`, `commit_")
-                    && error.contains("fly it again with this version"),
-                "{error}"
-            );
-        }
-    }
-
-    /// Issue 45, item 1: a shard of the deckland before the commit point's forecast (the
-    /// deck's share its last column, 3-DOF or 3-D) is refused, naming the three columns.
-    #[test]
-    fn a_shard_without_the_commit_forecast_columns_is_refused_by_name() {
-        for old in headers_of_a_deckland_ending_with(&LSO_RUN_COLUMNS[..5]) {
-            let error = parse_runs_csv("s1/runs.csv", &old).unwrap_err().to_string();
-            assert!(
-                error.contains(
-                    "the columns `commit_ramp_strike_probability`, \
-                     `commit_hard_landing_probability`, `commit_off_centre_probability`, \
-                     `commit_ramp_clearance_m`, `commit_ramp_clearance_sigma_m` are missing"
-                ) && error.contains("fly it again with this version"),
-                "{error}"
-            );
-        }
-    }
-
-    /// Issue 45, item 1: a shard of the deckland before the commit point's clearance and
-    /// its σ (the off-centre probability its last column, 3-DOF or 3-D) is refused,
-    /// naming the two columns.
-    #[test]
-    fn a_shard_without_the_commit_clearance_columns_is_refused_by_name() {
-        for old in headers_of_a_deckland_ending_with(&LSO_RUN_COLUMNS[..8]) {
-            let error = parse_runs_csv("s1/runs.csv", &old).unwrap_err().to_string();
-            assert!(
-                error.contains(
-                    "the columns `commit_ramp_clearance_m`, `commit_ramp_clearance_sigma_m` \
-                     are missing"
-                ) && error.contains("fly it again with this version"),
-                "{error}"
-            );
+    fn a_shard_without_the_columns_that_came_later_is_refused_by_name() {
+        let cases = [
+            (4, "the columns `deck_within_limits_pct`, `commit_"),
+            (
+                5,
+                "the columns `commit_ramp_strike_probability`, \
+                 `commit_hard_landing_probability`, `commit_off_centre_probability`, \
+                 `commit_ramp_clearance_m`, `commit_ramp_clearance_sigma_m` are missing",
+            ),
+            (
+                8,
+                "the columns `commit_ramp_clearance_m`, `commit_ramp_clearance_sigma_m` are \
+                 missing",
+            ),
+        ];
+        for (kept, missing) in cases {
+            for old in headers_of_a_deckland_ending_with(&LSO_RUN_COLUMNS[..kept]) {
+                let error = parse_runs_csv("s1/runs.csv", &old).unwrap_err().to_string();
+                assert!(
+                    error.contains("line 1")
+                        && error.contains(missing)
+                        && error.contains("fly it again with this version"),
+                    "{error}"
+                );
+            }
         }
     }
 }
