@@ -6,15 +6,19 @@
 
 use deckland::rare::score::{EventScore, EventThresholds, RareEvent};
 use deckland::scenario::Scenario;
-use deckland::simulation::{Outcome, RunSummary, Simulation};
+use deckland::simulation::{Event, Outcome, Recorder, RunSummary, Signals, Simulation};
 
 /// Flies `scenario` with the score of `event`, returning the running maximum of the score
 /// and the run's summary.
 fn fly(scenario: &Scenario, event: RareEvent, thresholds: EventThresholds) -> (f64, RunSummary) {
     let mut simulation = Simulation::new(scenario).expect("valid");
-    let mut score = EventScore::new(event, thresholds, scenario, *simulation.system().deck());
+    let mut score = EventScore::new(event, thresholds, scenario, &simulation);
     let mut maximum = f64::NEG_INFINITY;
-    while simulation.advance(&mut score).is_none() {
+    loop {
+        score.observe(&simulation);
+        if simulation.advance(&mut score).is_some() {
+            break;
+        }
         maximum = maximum.max(score.score());
     }
     maximum = maximum.max(score.score());
@@ -106,4 +110,113 @@ fn event_names_round_trip_and_an_unknown_one_is_named() {
         error.contains("`crash`") && error.contains("ramp_strike"),
         "{error}"
     );
+}
+
+/// (time, ĉ, σ) at every step before the ramp crossing (s, m, m), and the crossing's
+/// time and clearance (s, m).
+type RampForecasts = (Vec<(f64, f64, f64)>, Option<(f64, f64)>);
+
+/// Two scores of one flight, and the ramp crossing.
+struct Pair {
+    one: EventScore,
+    two: EventScore,
+    /// The crossing's time and clearance (s, m).
+    crossing: Option<(f64, f64)>,
+}
+
+impl Recorder for Pair {
+    fn sample_interval_s(&self) -> Option<f64> {
+        Some(0.0)
+    }
+    fn sample(&mut self, signals: &Signals) {
+        self.one.sample(signals);
+        self.two.sample(signals);
+    }
+    fn event(&mut self, event: &Event) {
+        if let Event::RampCrossing {
+            time_s,
+            clearance_m,
+        } = event
+        {
+            self.crossing = Some((*time_s, *clearance_m));
+        }
+        self.one.event(event);
+        self.two.event(event);
+    }
+    fn finish(&mut self, summary: &RunSummary) {
+        self.one.finish(summary);
+        self.two.finish(summary);
+    }
+}
+
+/// The ramp score's forecast of the clearance ĉ and its spread σ, read back from two
+/// scores of the same flight whose thresholds differ by 40 m: far below the event each
+/// score is x = (c − ĉ)/σ (g is the identity there), so σ = 40 m/(x₁ − x₂) and
+/// ĉ = c₁ − x₁σ. Returns (time, ĉ, σ) at every step before the crossing, and the
+/// crossing's time and the clearance flown, if the hook crossed the ramp.
+fn ramp_forecasts(scenario: &Scenario) -> RampForecasts {
+    let (c1, c2) = (-60.0, -100.0);
+    let simulation = Simulation::new(scenario).expect("valid");
+    let score = |c| {
+        let thresholds = EventThresholds::of(scenario).with(RareEvent::RampStrike, c);
+        EventScore::new(RareEvent::RampStrike, thresholds, scenario, &simulation)
+    };
+    let mut pair = Pair {
+        one: score(c1),
+        two: score(c2),
+        crossing: None,
+    };
+    let mut simulation = simulation;
+    let mut forecasts = Vec::new();
+    loop {
+        pair.one.observe(&simulation);
+        pair.two.observe(&simulation);
+        let time_s = simulation.time_s();
+        let ended = simulation.advance(&mut pair).is_some();
+        if ended || pair.crossing.is_some() {
+            break;
+        }
+        let (x1, x2) = (pair.one.score(), pair.two.score());
+        let sigma_m = (c1 - c2) / (x1 - x2);
+        forecasts.push((time_s, c1 - x1 * sigma_m, sigma_m));
+    }
+    (forecasts, pair.crossing)
+}
+
+/// The ramp score is a forecast of the clearance in units of how far it may miss, so
+/// that splitting can rank flights by it (docs/rare-events.md): over 100 approaches in
+/// the paper's adverse conditions, the clearance flown, against the forecast made 0.5,
+/// 2 and 5 s before the crossing, misses by z = (flown − ĉ)/σ with a mean within 0.6 of
+/// 0 and an SD within 0.75–1.35 (3000 approaches measured 0.47 and 1.1 at 0.5–1 s ahead,
+/// the worst). A forecast that missed by twice its spread, as one carrying the ramp at
+/// its present rate does, fails. The reference is the crossing the flight reports, a
+/// separate path from the score.
+#[test]
+fn the_ramp_forecast_misses_by_about_its_own_spread() {
+    let base = Scenario::paper();
+    let flights: Vec<_> = (0..100)
+        .map(|seed| ramp_forecasts(&Scenario { seed, ..base }))
+        .collect();
+    for ahead_s in [0.5, 2.0, 5.0] {
+        let z: Vec<f64> = flights
+            .iter()
+            .filter_map(|(forecasts, crossing)| {
+                let (crossing_s, clearance_m) = (*crossing)?;
+                let &(_, forecast, sigma) = forecasts
+                    .iter()
+                    .rev()
+                    .find(|(t, _, _)| crossing_s - t >= ahead_s)?;
+                Some((clearance_m - forecast) / sigma)
+            })
+            .collect();
+        let n = z.len() as f64;
+        let mean = z.iter().sum::<f64>() / n;
+        let sd = (z.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0)).sqrt();
+        assert!(n >= 90.0, "{n} flights crossed the ramp");
+        eprintln!("{ahead_s} s ahead: z mean {mean:.3}, SD {sd:.3} over {n} flights");
+        assert!(
+            mean.abs() < 0.6 && (0.75..1.35).contains(&sd),
+            "{ahead_s} s ahead: z mean {mean:.3}, SD {sd:.3} over {n} flights"
+        );
+    }
 }

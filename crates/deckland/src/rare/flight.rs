@@ -55,7 +55,7 @@ impl ApproachFlight {
         if event == RareEvent::OffCentre && simulation.signals().lateral.cross_track_m.is_none() {
             return Err(FlightError::NeedsThreeDimensions);
         }
-        let score = EventScore::new(event, thresholds, &scenario, *simulation.system().deck());
+        let score = EventScore::new(event, thresholds, &scenario, &simulation);
         Ok(Self {
             scenario,
             event,
@@ -136,7 +136,7 @@ impl ApproachFlight {
             self.event,
             self.thresholds,
             &self.scenario,
-            *self.simulation.system().deck(),
+            &self.simulation,
         );
     }
 }
@@ -149,6 +149,7 @@ impl Trajectory for ApproachFlight {
                 ended: true,
             };
         }
+        self.score.observe(&self.simulation);
         match &mut self.recording {
             Some(recording) => self
                 .simulation

@@ -14,17 +14,32 @@
 //! | `divergence` | the run ends diverged | 0 (the event), else never |
 //!
 //! At its moment the score is m/σ₀; before, it is a forecast of the margin over how far
-//! a forecast τ seconds ahead may miss, m̂/σ(τ) with σ(τ) = σ₀ + σ_∞·(1 − e^(−τ/T)),
-//! passed through g(x) = x up to −1 and −1/(2 + x) above, which stays below 0: no
-//! forecast can reach the event, only the flight itself. A decided margin below 0 scores
-//! g(m/σ₀) too, so a forecast converging on it meets it without a jump. The forecasts:
-//! - `ramp_strike`: the glide path's height at the ramp less the glide-path error now,
-//!   weighted by e^(−τ/4 s) (τ the time to reach the ramp), less the ramp's height then:
-//!   its height in a calm sea plus its displacement now, carried ahead at its rate for
-//!   at most 2 s, weighted by e^(−τ/2 s);
-//! - `hard_landing`: the aim point's sink rate now, weighted the same, less the hook's
-//!   climb rate, τ the time the hook takes to come down to the aim point's height;
-//! - `off_centre`: the hook's cross-track from the centreline now, τ as for the sink rate;
+//! a forecast τ seconds ahead may miss, m̂/σ(τ), passed through g(x) = x up to −1 and
+//! −1/(2 + x) above, which stays below 0: no forecast can reach the event, only the
+//! flight itself. A decided margin below 0 scores g(m/σ₀) too, so a forecast converging
+//! on it meets it without a jump.
+//!
+//! Splitting branches a flight where its score first passed a level, so the score must
+//! be a forecast that new noise moves as much up as down (a martingale), not one that
+//! carries noise which later reverts: its running maximum would then mark the noise's
+//! peaks, and the levels would creep. The deck's motion is therefore forecast from the
+//! ship's true filter state ([`EventScore::observe`]; the score only ranks flights, it
+//! may know what no sensor does), with that forecast's own error σ_d(τ)
+//! (`environment::ShipMotionPropagator`), and the aircraft from its smooth states (the
+//! hook's height and climb rate), not from the glide path and its error, which carry the
+//! deck compensation's step-to-step noise. The forecasts:
+//! - `ramp_strike`: the hook's height at the ramp, e^(−τ/1 s) of its height now carried
+//!   at its climb rate (for at most 1 s) and the rest the glide path's height over the
+//!   ramp above the aim point's forecast height; less the ramp's forecast height; σ² =
+//!   σ₀² + min(σ_d, half the ramp's RMS height)² + (0.8 m·(1 − e^(−τ/1 s)))²; τ the time
+//!   to reach the ramp;
+//! - `hard_landing`: the aim point's forecast climb rate less the hook's, e^(−τ/0.3 s) of
+//!   its climb rate now and the rest the glide slope's descent at the closing speed plus
+//!   half the deck's forecast rate (the deck compensation follows about half of it);
+//!   σ² = σ₀² + 1.25·σ_d²; τ the time the hook takes to come down to the aim point's
+//!   height;
+//! - `off_centre`: the hook's cross-track from the centreline now, over σ₀ + 1 m·(1 −
+//!   e^(−τ/3 s)), τ as for the sink rate;
 //! - `divergence`: the largest of |α − α_mid|/half the α range and V_min/V, less 1,
 //!   times 10.
 //!
@@ -32,9 +47,11 @@
 
 use crate::aircraft::{ALPHA_MAX_RAD, ALPHA_MIN_RAD};
 use crate::control::wave_off_lateral::MAX_OFF_CENTRE_M;
-use crate::environment::{DeckGeometry, ShipPose};
+use crate::environment::{
+    DeckGeometry, ShipMotion, ShipMotionEstimate, ShipMotionPropagator, ShipMotionState, ShipPose,
+};
 use crate::scenario::Scenario;
-use crate::simulation::{Event, Outcome, Recorder, RunSummary, Signals};
+use crate::simulation::{Event, Outcome, Recorder, RunSummary, Signals, Simulation};
 use serde::Serialize;
 
 /// A catastrophic event whose probability `deckland rare` estimates.
@@ -188,6 +205,12 @@ pub struct EventScore {
     event: RareEvent,
     thresholds: EventThresholds,
     deck: DeckGeometry,
+    ship: ShipForecast,
+    /// The glide path's height over the ramp above the aim point (m):
+    /// ramp distance × tan(glide slope).
+    path_over_ramp_m: f64,
+    /// tan of the glide slope.
+    glide_slope_tan: f64,
     min_airspeed_mps: f64,
     ramp: Part,
     hard: Part,
@@ -197,18 +220,28 @@ pub struct EventScore {
 }
 
 impl EventScore {
-    /// The score of `event` with these thresholds, for a flight of `scenario` over
-    /// `deck`.
+    /// The score of `event` with these thresholds, for `simulation`, a flight of
+    /// `scenario` (its deck and its ship). [`EventScore::observe`] before every step.
     pub fn new(
         event: RareEvent,
         thresholds: EventThresholds,
         scenario: &Scenario,
-        deck: DeckGeometry,
+        simulation: &Simulation,
     ) -> Self {
+        let deck = *simulation.system().deck();
+        let glide_slope_tan = scenario
+            .control
+            .flight_path
+            .glide_slope_deg
+            .to_radians()
+            .tan();
         Self {
             event,
             thresholds,
             deck,
+            ship: ShipForecast::new(simulation.system().ship.clone(), &deck),
+            path_over_ramp_m: deck.ramp_aft_of_aim_point_m * glide_slope_tan,
+            glide_slope_tan,
             min_airspeed_mps: scenario.outcome.min_airspeed_mps,
             ramp: Part::OPEN,
             hard: Part::OPEN,
@@ -216,6 +249,13 @@ impl EventScore {
             divergence: Part::OPEN,
             ended: false,
         }
+    }
+
+    /// Takes the ship's state (its shaping filters') now, which the next step's forecast
+    /// of the ramp starts from: call it before every step (the score is a function of the
+    /// flight's state, which the loop's signals alone do not carry).
+    pub fn observe(&mut self, simulation: &Simulation) {
+        self.ship.state = simulation.system().ship_state(simulation.state());
     }
 
     /// The score now: 0 or more once the event has happened.
@@ -248,49 +288,19 @@ impl EventScore {
 
     /// The forecasts of every part at one step.
     fn forecast(&mut self, s: &Signals) {
-        let deck = &self.deck;
         let closing_mps = (s.hook_x_rate_mps - s.ship_rate.pitch_centre_x_rate_mps).max(1.0);
-        let ramp = deck.ramp(&s.ship);
-        let to_ramp_s = ((ramp.x_m - s.hook_x_m) / closing_mps).max(0.0);
-
-        // The ramp's height and rate now carry over a few seconds; farther ahead, the
-        // ramp is at its height in a calm sea (its motion's mean).
-        let calm = ShipPose {
-            heave_m: 0.0,
-            pitch_rad: 0.0,
-            roll_rad: 0.0,
-            ..s.ship
-        };
-        let ramp_rate =
-            deck.velocity_along_deck(&s.ship, &s.ship_rate, -deck.ramp_aft_of_aim_point_m);
-        let ramp_calm_m = deck.ramp(&calm).h_m;
-        let carried = (-to_ramp_s / DECK_MEMORY_S).exp();
-        let ramp_then_m = ramp_calm_m
-            + carried * (ramp.h_m - ramp_calm_m + ramp_rate.h_mps * to_ramp_s.min(DECK_MEMORY_S));
-        // The hook at the ramp: on the glide path there (a straight line down to its
-        // anchor), off it by the error now, which the guidance takes out over a few
-        // seconds.
-        let anchor_m = s.path_anchor_height_m.unwrap_or(s.aim_point.h_m);
-        let path_m = s.path_height_m.unwrap_or(s.hook_h_m);
-        let ramp_share = (deck.ramp_aft_of_aim_point_m
-            / s.range_to_go_m.max(deck.ramp_aft_of_aim_point_m))
-        .clamp(0.0, 1.0);
-        let path_at_ramp_m = anchor_m + (path_m - anchor_m) * ramp_share;
-        let error_kept = (-to_ramp_s / PATH_ERROR_MEMORY_S).exp();
-        let clearance_m = path_at_ramp_m - s.glide_path_error_m * error_kept - ramp_then_m;
-        let aim_rate = deck.velocity_along_deck(&s.ship, &s.ship_rate, 0.0);
+        let t = self.thresholds;
+        let (clearance_m, ramp_spread_m) = self.ramp_clearance(s, closing_mps);
+        self.ramp
+            .forecast((t.ramp_clearance_m - clearance_m) / ramp_spread_m);
         // The time until the hook comes down to the aim point's height at its sink rate
         // relative to it now (0.5 m/s at least): 0 at touchdown.
+        let aim_rate = self.deck.velocity_along_deck(&s.ship, &s.ship_rate, 0.0);
         let above_aim_m = (s.hook_h_m - s.aim_point.h_m).max(0.0);
         let to_touchdown_s = above_aim_m / (aim_rate.h_mps - s.hook_climb_rate_mps).max(0.5);
-        let sink_rate_mps =
-            (-to_touchdown_s / DECK_MEMORY_S).exp() * aim_rate.h_mps - s.hook_climb_rate_mps;
-        let t = &self.thresholds;
-        self.ramp
-            .forecast((t.ramp_clearance_m - clearance_m) / RAMP_SPREAD.at(to_ramp_s));
-        self.hard.forecast(
-            (sink_rate_mps - t.hard_landing_sink_rate_mps) / SINK_SPREAD.at(to_touchdown_s),
-        );
+        let (sink_rate_mps, sink_spread_mps) = self.sink_rate(s, closing_mps, to_touchdown_s);
+        self.hard
+            .forecast((sink_rate_mps - t.hard_landing_sink_rate_mps) / sink_spread_mps);
         // The longitudinal approach is flown on the centreline: its cross-track is 0.
         let cross_track_m = s.lateral.cross_track_m.unwrap_or(0.0);
         self.off_centre
@@ -301,14 +311,151 @@ impl EventScore {
             .max(self.min_airspeed_mps / s.airspeed_mps.max(1e-9));
         self.divergence.forecast(10.0 * (used - 1.0));
     }
+
+    /// The hook's clearance over the ramp when it gets there, forecast now, and how far
+    /// that forecast may miss (m).
+    fn ramp_clearance(&self, s: &Signals, closing_mps: f64) -> (f64, f64) {
+        let to_ramp_s = ((self.deck.ramp(&s.ship).x_m - s.hook_x_m) / closing_mps).max(0.0);
+        // The ramp's and the aim point's heights then: the ship's own forecast.
+        let deck_then = self.ship.deck_then(&self.deck, &s.ship, to_ramp_s);
+        // The hook then: close in, where it is now carried at its climb rate (for at most
+        // a second); farther out, the glide path's height over the ramp above where the
+        // aim point will be, which the guidance will have brought the hook to (the path's
+        // height and error themselves carry the deck compensation's step-to-step noise,
+        // which a splitting score must not: its running maximum would branch on noise).
+        let near = (-to_ramp_s / HOOK_MEMORY_S).exp();
+        let hook_near_m = s.hook_h_m + s.hook_climb_rate_mps * to_ramp_s.min(HOOK_MEMORY_S);
+        let hook_far_m = deck_then.aim_m + self.path_over_ramp_m;
+        let hook_then_m = near * hook_near_m + (1.0 - near) * hook_far_m;
+        let hook_sigma_m = HOOK_SPREAD_FAR_M * (1.0 - near);
+        let spread_m =
+            (RAMP_SPREAD_NOW_M.powi(2) + deck_then.ramp_sigma_m.powi(2) + hook_sigma_m.powi(2))
+                .sqrt();
+        (hook_then_m - deck_then.ramp_m, spread_m)
+    }
+
+    /// The sink rate relative to the deck at touchdown, `to_touchdown_s` ahead, forecast
+    /// now, and how far that forecast may miss (m/s): the aim point's climb rate then (the
+    /// ship's forecast) less the hook's; the hook's, close in, its climb rate now, and
+    /// farther out the glide slope's descent at the closing speed plus the share of the
+    /// deck's rate that the deck-motion compensation follows.
+    fn sink_rate(&self, s: &Signals, closing_mps: f64, to_touchdown_s: f64) -> (f64, f64) {
+        let (deck_rate_mps, deck_rate_sigma_mps) = self.ship.aim_rate_then(&s.ship, to_touchdown_s);
+        let near = (-to_touchdown_s / CLIMB_MEMORY_S).exp();
+        let descent_mps = closing_mps * self.glide_slope_tan;
+        let climb_then_mps = near * s.hook_climb_rate_mps
+            + (1.0 - near) * (DECK_RATE_FOLLOWED * deck_rate_mps - descent_mps);
+        let spread_mps = (SINK_SPREAD_NOW_MPS.powi(2)
+            + (1.0 + DECK_RATE_FOLLOWED.powi(2)) * deck_rate_sigma_mps.powi(2))
+        .sqrt();
+        (deck_rate_mps - climb_then_mps, spread_mps)
+    }
 }
 
-/// How long a glide-path error now persists (s): the guidance takes it out.
-const PATH_ERROR_MEMORY_S: f64 = 4.0;
+/// How long the hook's height and climb rate now say where it crosses the ramp (s):
+/// their weight in a forecast τ ahead is e^(−τ/1 s), the path's the rest.
+const HOOK_MEMORY_S: f64 = 1.0;
 
-/// How long the deck's motion now says something of its motion ahead (s): its weight in
-/// a forecast τ ahead is e^(−τ/2 s), and its rate is carried at most this long.
-const DECK_MEMORY_S: f64 = 2.0;
+/// How far the hook's own forecast may miss, far out (m): added in quadrature, times
+/// 1 − e^(−τ/1 s).
+const HOOK_SPREAD_FAR_M: f64 = 0.8;
+
+/// The deck ahead as the ship's own shaping filters forecast it from their true state
+/// (the score may know what no sensor does: it only ranks flights).
+#[derive(Debug, Clone)]
+struct ShipForecast {
+    motion: ShipMotion,
+    propagator: ShipMotionPropagator,
+    /// The filters' state at the step being scored ([`EventScore::observe`]).
+    state: ShipMotionState,
+    /// The ramp's lever arm aft of the pitch centre (m).
+    ramp_lever_m: f64,
+    /// The aim point's lever arm aft of the pitch centre (m).
+    aim_lever_m: f64,
+    /// The most the forecast's spread counts (m): half the ramp's stationary RMS height.
+    /// Farther ahead than a few seconds the glide path follows the deck's slow motion, so
+    /// the clearance misses by less than the ramp's height does (in the paper's sea
+    /// 1.7–2.2 m at 4–15 s ahead against a cap of 2.1 m; docs/rare-events.md).
+    sigma_cap_m: f64,
+}
+
+/// The longest horizon of the ramp's forecast (s); farther is forecast as this far.
+const SHIP_HORIZON_S: f64 = 30.0;
+
+impl ShipForecast {
+    fn new(motion: ShipMotion, deck: &DeckGeometry) -> Self {
+        let ramp_lever_m = deck.landing_point_aft_of_pitch_centre_m + deck.ramp_aft_of_aim_point_m;
+        Self {
+            propagator: ShipMotionPropagator::new(&motion, SHIP_HORIZON_S),
+            sigma_cap_m: 0.5 * motion.parameters().deck_point_height_rms_m(ramp_lever_m),
+            motion,
+            state: ShipMotionState::default(),
+            ramp_lever_m,
+            aim_lever_m: deck.landing_point_aft_of_pitch_centre_m,
+        }
+    }
+
+    /// The true state as an estimate without error.
+    fn estimate(&self) -> ShipMotionEstimate {
+        ShipMotionEstimate {
+            mean: self.state,
+            ..ShipMotionEstimate::default()
+        }
+    }
+
+    /// The ramp's and the aim point's expected heights `ahead_s` from now, and the σ of
+    /// the ramp's forecast error, capped; `pose` the ship's pose now.
+    fn deck_then(&self, deck: &DeckGeometry, pose: &ShipPose, ahead_s: f64) -> DeckThen {
+        let estimate = self.estimate();
+        let forecast = self
+            .propagator
+            .forecast_mean(&self.motion, &estimate, ahead_s);
+        let then = ShipPose {
+            heave_m: forecast.heave_m,
+            pitch_rad: forecast.pitch_rad,
+            ..*pose
+        };
+        let sigma_m = self.propagator.deck_point_sigma(
+            &self.motion,
+            &estimate,
+            ahead_s,
+            (self.ramp_lever_m, pose.pitch_rad),
+            0,
+        );
+        DeckThen {
+            ramp_m: deck.ramp(&then).h_m,
+            aim_m: deck.aim_point(&then).h_m,
+            ramp_sigma_m: sigma_m.min(self.sigma_cap_m),
+        }
+    }
+
+    /// The aim point's expected climb rate `ahead_s` from now and the σ of its forecast
+    /// error (m/s); `pose` the ship's pose now.
+    fn aim_rate_then(&self, pose: &ShipPose, ahead_s: f64) -> (f64, f64) {
+        let estimate = self.estimate();
+        let forecast = self
+            .propagator
+            .forecast_mean(&self.motion, &estimate, ahead_s);
+        let sigma_mps = self.propagator.deck_point_sigma(
+            &self.motion,
+            &estimate,
+            ahead_s,
+            (self.aim_lever_m, pose.pitch_rad),
+            1,
+        );
+        (
+            forecast.deck_point_climb_rate_mps(self.aim_lever_m),
+            sigma_mps,
+        )
+    }
+}
+
+/// The deck ahead as [`ShipForecast::deck_then`] forecasts it (m).
+struct DeckThen {
+    ramp_m: f64,
+    aim_m: f64,
+    ramp_sigma_m: f64,
+}
 
 /// How far a forecast `τ` seconds ahead may miss, σ(τ) = σ₀ + σ_∞·(1 − e^(−τ/T)): the
 /// scores divide a forecast margin by it, so that the forecast margin is in spreads, an
@@ -331,19 +478,23 @@ impl Spread {
     }
 }
 
-/// The ramp clearance's spread (m).
-const RAMP_SPREAD: Spread = Spread {
-    now: 0.2,
-    far: 1.5,
-    time_s: 2.0,
-};
+/// The ramp clearance's spread σ₀ at the crossing (m); ahead, σ₀ and the ramp
+/// forecast's own spread in quadrature ([`ShipForecast`]).
+const RAMP_SPREAD_NOW_M: f64 = 0.2;
 
-/// The touchdown sink rate's spread (m/s).
-const SINK_SPREAD: Spread = Spread {
-    now: 0.2,
-    far: 1.0,
-    time_s: 2.0,
-};
+/// The touchdown sink rate's spread σ₀ at touchdown (m/s); ahead, σ₀ and the deck
+/// rate forecast's spread σ_d in quadrature, σ_d counted √(1 + c²) times (c =
+/// [`DECK_RATE_FOLLOWED`]): the residuals of 2000 approaches in the paper's sea and 800
+/// in sea state 6 (docs/rare-events.md).
+const SINK_SPREAD_NOW_MPS: f64 = 0.2;
+
+/// How long the hook's climb rate now says what it is at touchdown (s): its weight in a
+/// forecast τ ahead is e^(−τ/0.3 s).
+const CLIMB_MEMORY_S: f64 = 0.3;
+
+/// The share c of the deck's climb rate that the aircraft follows farther out than
+/// [`CLIMB_MEMORY_S`] (the deck-motion compensation).
+const DECK_RATE_FOLLOWED: f64 = 0.5;
 
 /// The touchdown offset's spread (m).
 const OFFSET_SPREAD: Spread = Spread {
@@ -357,6 +508,7 @@ impl Recorder for EventScore {
         Some(0.0)
     }
 
+    /// The forecasts from the step's signals and the ship's state observed before it.
     fn sample(&mut self, signals: &Signals) {
         if signals.first_out_of_range().is_none() {
             self.forecast(signals);
@@ -367,12 +519,12 @@ impl Recorder for EventScore {
         match event {
             Event::RampCrossing { clearance_m, .. } => self
                 .ramp
-                .decide((self.thresholds.ramp_clearance_m - clearance_m) / RAMP_SPREAD.now),
+                .decide((self.thresholds.ramp_clearance_m - clearance_m) / RAMP_SPREAD_NOW_M),
             Event::Touchdown(touchdown) => {
                 self.ramp.decide(f64::NEG_INFINITY);
                 self.hard.decide(
                     (touchdown.sink_rate_mps - self.thresholds.hard_landing_sink_rate_mps)
-                        / SINK_SPREAD.now,
+                        / SINK_SPREAD_NOW_MPS,
                 );
                 let offset_m = touchdown.lateral.map_or(0.0, |lateral| lateral.offset_m);
                 self.off_centre
