@@ -353,6 +353,63 @@ impl ShipMotionPropagator {
             + arm * arm * pitch * variance(&self.pitch, &estimate.pitch_covariance, qp);
         value.max(0.0).sqrt()
     }
+
+    /// The covariance of the errors of two deck points' predicted heights (m²): `a` and
+    /// `b` each (lead after the time of `estimate` (s), (lever arm aft of the pitch
+    /// centre (m), the ship's pitch (rad))), linearised in the pitch error as
+    /// [`ShipMotionPropagator::deck_point_sigma`]; zero when the ship motion is disabled.
+    /// For one filter's output row c and leads s ≤ t the errors' covariance is
+    /// c e^{As} P e^{Aᵀt} cᵀ + q·c (P∞ − e^{As} P∞ e^{Aᵀs}) e^{Aᵀ(t−s)} cᵀ: the estimate's
+    /// error carried to both leads, and the noise to come before the nearer lead, which
+    /// the farther one carries on through e^{A(t−s)} (the module docs' identity for the
+    /// integral). With a = b it is that point's σ².
+    pub fn deck_points_height_covariance(
+        &self,
+        ship: &ShipMotion,
+        estimate: &ShipMotionEstimate,
+        a: (f64, (f64, f64)),
+        b: (f64, (f64, f64)),
+    ) -> f64 {
+        if !ship.parameters().enabled {
+            return 0.0;
+        }
+        let ((near_s, near), (far_s, far)) = if a.0 <= b.0 { (a, b) } else { (b, a) };
+        let grids = (
+            self.grid(near_s),
+            self.grid(far_s),
+            self.grid(far_s - near_s),
+        );
+        let covariance = |table: &FilterTable, p: &Matrix4Array, intensity: f64| {
+            let k = table.filter.output_state;
+            let (row_near, row_far, row_gap) = (
+                table.row(grids.0, k),
+                table.row(grids.1, k),
+                table.row(grids.2, k),
+            );
+            let form = |m: &Matrix4Array| bilinear_form(&row_near, m, &row_far);
+            let carried: f64 = (0..4).map(|j| table.stationary[k][j] * row_gap[j]).sum();
+            table.filter.gain.powi(2) * (form(p) + intensity * (carried - form(&table.stationary)))
+        };
+        let arms = near.0 * near.1.cos() * far.0 * far.1.cos();
+        covariance(
+            &self.heave,
+            &estimate.heave_covariance,
+            ship.heave_noise_intensity(),
+        ) + arms
+            * covariance(
+                &self.pitch,
+                &estimate.pitch_covariance,
+                ship.pitch_noise_intensity(),
+            )
+    }
+}
+
+/// r·P·sᵀ for rows r, s and a matrix P.
+#[inline]
+fn bilinear_form(r: &[f64; 4], p: &Matrix4Array, s: &[f64; 4]) -> f64 {
+    (0..4)
+        .map(|i| r[i] * (0..4).map(|j| p[i][j] * s[j]).sum::<f64>())
+        .sum()
 }
 
 #[cfg(test)]
@@ -498,5 +555,78 @@ mod tests {
             "{} against {expected}",
             sigma(10.0)
         );
+    }
+
+    /// The covariance of two deck points' errors against a separate computation: the
+    /// estimate's error carried by nalgebra's matrix exponential (not the tables), and the
+    /// noise term as the integral q·∫₀ˢ [e^{A(s−u)}B]_k [e^{A(t−u)}B]_k du by Simpson's
+    /// rule on 400 intervals (not the P∞ identity). Also: at one point and lead it is
+    /// that point's σ², and it is symmetric in its two points.
+    #[test]
+    fn the_deck_points_covariance_matches_a_direct_integral() {
+        let ship = ShipMotion::new(ShipMotionParameters::default()).unwrap();
+        let predictor = ShipMotionPropagator::new(&ship, 12.0);
+        let p0: Matrix4Array = std::array::from_fn(|i| {
+            std::array::from_fn(|j| if i == j { 0.02 * (i + 1) as f64 } else { 0.003 })
+        });
+        let estimate = ShipMotionEstimate {
+            heave_covariance: p0,
+            pitch_covariance: p0,
+            ..ShipMotionEstimate::default()
+        };
+        let direct = |filter: &ShapingFilter, q: f64, s: f64, t: f64| {
+            let a = filter.companion();
+            let k = filter.output_state;
+            let p = Matrix4::from_fn(|i, j| p0[i][j]);
+            let carried = (a * s).exp() * p * (a * t).exp().transpose();
+            let response = |lag: f64| (a * lag).exp()[(k, 3)];
+            let n = 400;
+            let h = s / n as f64;
+            let noise: f64 = (0..=n)
+                .map(|i| {
+                    let u = i as f64 * h;
+                    let weight = if i == 0 || i == n {
+                        1.0
+                    } else if i % 2 == 1 {
+                        4.0
+                    } else {
+                        2.0
+                    };
+                    weight * response(s - u) * response(t - u)
+                })
+                .sum::<f64>()
+                * h
+                / 3.0;
+            filter.gain.powi(2) * (carried[(k, k)] + q * noise)
+        };
+        let (ramp, landing): ((f64, f64), (f64, f64)) = ((141.0, 0.02), (81.0, -0.01));
+        for (s, t) in [(0.4, 0.4), (1.0, 2.0), (2.5, 3.3), (5.0, 5.9)] {
+            let heave = direct(ship.heave_filter(), ship.heave_noise_intensity(), s, t);
+            let pitch = direct(ship.pitch_filter(), ship.pitch_noise_intensity(), s, t);
+            let expected = heave + ramp.0 * ramp.1.cos() * landing.0 * landing.1.cos() * pitch;
+            let covariance =
+                predictor.deck_points_height_covariance(&ship, &estimate, (s, ramp), (t, landing));
+            // The tables interpolate e^{AT} linearly on a 0.02-s grid.
+            assert!(
+                (covariance - expected).abs() < 1e-3 * expected.abs() + 1e-6,
+                "({s}, {t}): {covariance} against {expected}"
+            );
+            let swapped =
+                predictor.deck_points_height_covariance(&ship, &estimate, (t, landing), (s, ramp));
+            assert_eq!(covariance, swapped);
+        }
+        for lead in [0.3, 1.7, 4.0] {
+            let variance = predictor.deck_points_height_covariance(
+                &ship,
+                &estimate,
+                (lead, ramp),
+                (lead, ramp),
+            );
+            let sigma = predictor.deck_point_sigma(&ship, &estimate, lead, ramp, 0);
+            assert!(
+                (variance - sigma * sigma).abs() < 1e-12 * variance,
+                "{lead}"
+            );
+        }
     }
 }
