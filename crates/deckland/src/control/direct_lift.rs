@@ -280,6 +280,73 @@ impl DirectLiftParameters {
     }
 }
 
+/// The hook's height error under direct lift alone, as a ramp-strike probability reads it
+/// (docs/model.md §9, `ramp_strike_model = "closed_loop_lift"`): the lift increment
+/// K_h·e + K_ḣ·ė accelerates the hook by a = q̄S/m per unit of C_L, so the error obeys
+/// ë + a·K_ḣ·ė + a·K_h·e = 0, a second-order loop of natural frequency ω = √(a·K_h) and
+/// damping ratio ζ = a·K_ḣ/(2ω). K_h includes the close-in gain in full (the loop flies
+/// with it from 2 s to go, over the last second before the ramp); left out are the
+/// surfaces' 0.1-s lag, their rate limit and authority, and the cascade's own pull on
+/// the filtered path.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LiftLoop {
+    /// ω (rad/s).
+    pub natural_frequency_radps: f64,
+    /// ζ (–).
+    pub damping_ratio: f64,
+}
+
+/// |ζ − 1| below which the loop is taken as critically damped (the double root).
+const CRITICAL_DAMPING_TOLERANCE: f64 = 1e-6;
+
+impl DirectLiftParameters {
+    /// The law's loop for an aircraft whose lift coefficient accelerates it by
+    /// `lift_per_coefficient_mps2` (q̄S/m, m/s² per unit); `None` without a height gain.
+    pub fn lift_loop(&self, lift_per_coefficient_mps2: f64) -> Option<LiftLoop> {
+        let gain = self.height_gain_per_m + self.close_in_height_gain_per_m;
+        let omega = (lift_per_coefficient_mps2 * gain).sqrt();
+        (omega > 0.0 && omega.is_finite()).then(|| LiftLoop {
+            natural_frequency_radps: omega,
+            damping_ratio: lift_per_coefficient_mps2 * self.height_rate_gain_s_per_m
+                / (2.0 * omega),
+        })
+    }
+}
+
+impl LiftLoop {
+    /// The error `t` (s) on from `error` (m) at `rate` (m/s), exactly: the free response
+    /// of ë + 2ζω·ė + ω²·e = 0, under-, critically or over-damped; the error itself for a
+    /// `t` at or below 0.
+    pub fn free_response(&self, error: f64, rate: f64, t: f64) -> f64 {
+        if t <= 0.0 {
+            return error;
+        }
+        let (omega, zeta) = (self.natural_frequency_radps, self.damping_ratio);
+        let sigma = zeta * omega;
+        let decay = (-sigma * t).exp();
+        if (zeta - 1.0).abs() < CRITICAL_DAMPING_TOLERANCE {
+            decay * (error + (rate + sigma * error) * t)
+        } else if zeta < 1.0 {
+            let omega_d = omega * (1.0 - zeta * zeta).sqrt();
+            decay
+                * (error * (omega_d * t).cos()
+                    + (rate + sigma * error) / omega_d * (omega_d * t).sin())
+        } else {
+            let spread = omega * (zeta * zeta - 1.0).sqrt();
+            let (slow, fast) = (-sigma + spread, -sigma - spread);
+            let a = (rate - fast * error) / (slow - fast);
+            a * (slow * t).exp() + (error - a) * (fast * t).exp()
+        }
+    }
+
+    /// The share of a step in the path the hook has followed `t` (s) after it:
+    /// 1 − e(t) from e = 1 at rest.
+    #[inline]
+    pub fn step_share(&self, t: f64) -> f64 {
+        1.0 - self.free_response(1.0, 0.0, t)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -464,5 +531,48 @@ mod tests {
             .expect_err("NaN is refused")
             .to_string()
             .contains("time_constant_s"));
+    }
+
+    /// The loop's free response against a separate RK4 integration of
+    /// ë + 2ζω·ė + ω²·e = 0 (1-ms steps) for an under-, a critically and an over-damped
+    /// loop; and the default law's loop for the F/A-18 at 69.1 m/s (q̄S/m = 7.87 m/s²):
+    /// ω = √(7.87·0.35) = 1.66 rad/s, ζ = 7.87·0.3/(2·1.66) = 0.711.
+    #[test]
+    fn the_lift_loops_free_response_is_its_equations() {
+        for zeta in [0.7, 1.0, 1.4] {
+            let lift = LiftLoop {
+                natural_frequency_radps: 1.6,
+                damping_ratio: zeta,
+            };
+            let (omega, mut e, mut v, dt) = (1.6, 0.4, -0.3, 1e-3);
+            let f = |e: f64, v: f64| (v, -2.0 * zeta * omega * v - omega * omega * e);
+            for k in 1..=2000 {
+                let (k1e, k1v) = f(e, v);
+                let (k2e, k2v) = f(e + 0.5 * dt * k1e, v + 0.5 * dt * k1v);
+                let (k3e, k3v) = f(e + 0.5 * dt * k2e, v + 0.5 * dt * k2v);
+                let (k4e, k4v) = f(e + dt * k3e, v + dt * k3v);
+                e += dt / 6.0 * (k1e + 2.0 * k2e + 2.0 * k3e + k4e);
+                v += dt / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+                if k % 500 == 0 {
+                    let t = f64::from(k) * dt;
+                    let got = lift.free_response(0.4, -0.3, t);
+                    assert!((got - e).abs() < 1e-9, "ζ {zeta}, t {t}: {got} against {e}");
+                }
+            }
+        }
+        let lift = DirectLiftParameters::default()
+            .lift_loop(0.5 * 1.33 * 69.1 * 69.1 * 37.16 / 15000.0)
+            .expect("a height gain");
+        assert!(
+            (lift.natural_frequency_radps - 1.66).abs() < 0.005,
+            "{lift:?}"
+        );
+        assert!((lift.damping_ratio - 0.711).abs() < 0.002, "{lift:?}");
+        let none = DirectLiftParameters {
+            height_gain_per_m: 0.0,
+            close_in_height_gain_per_m: 0.0,
+            ..DirectLiftParameters::default()
+        };
+        assert_eq!(none.lift_loop(7.87), None);
     }
 }

@@ -33,7 +33,7 @@ pub use arrival_timing::{
 };
 pub use command_ramp::{smooth_step, CommandRamp};
 pub use deck_motion_filter::DeckMotionFilter;
-pub use direct_lift::DirectLiftParameters;
+pub use direct_lift::{DirectLiftParameters, LiftLoop};
 pub use flight_path::{
     CompensationBlend, DeckForecast, DeckPredictorKind, DeckReference, FlightPathGenerator,
     FlightPathParameters, PathReference,
