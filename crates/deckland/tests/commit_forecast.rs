@@ -83,11 +83,29 @@ fn recomputed(scenario: &Scenario) -> (Option<(f64, f64, f64, f64)>, RunSummary)
             let moved_m = -e0
                 + (e0 + (deck.aim_velocity.h_mps + omega * e0) * ramp_time_s)
                     * (-omega * ramp_time_s).exp();
-            let closed_loop = wave_off.ramp_strike_model == RampStrikeModel::ClosedLoop;
-            let clearance_m = if closed_loop {
-                clearance_m + path.compensation_weight * moved_m
-            } else {
-                clearance_m
+            let closed_loop = wave_off.ramp_strike_model.is_closed_loop();
+            // With direct lift (`closed_loop_lift`): the hook flies to the path on the
+            // unfiltered anchor, leaving its loop's free response at the crossing.
+            let sea_sigma_m = scenario
+                .environment
+                .resolved_ship()
+                .unwrap()
+                .deck_point_height_rms_m(system.deck().landing_point_aft_of_pitch_centre_m);
+            let aircraft = &scenario.aircraft.parameters;
+            let q_pa = 0.5 * aircraft.air_density_kg_m3 * scenario.approach.airspeed_mps.powi(2);
+            let lift = (scenario.control.direct_lift)
+                .for_sea(sea_sigma_m)
+                .lift_loop(q_pa * aircraft.wing_area_m2 / aircraft.mass_kg)
+                .unwrap();
+            let clearance_m = match wave_off.ramp_strike_model {
+                RampStrikeModel::ClosedLoopLift => {
+                    let w = path.compensation_weight;
+                    let error_m = path.height_m - hook_h_m + w * (target_m - deck.aim.h_m);
+                    let rate_mps = path.climb_rate_mps - hook_climb_rate_mps;
+                    clearance_m + error_m - lift.free_response(error_m, rate_mps, ramp_time_s)
+                }
+                _ if closed_loop => clearance_m + path.compensation_weight * moved_m,
+                _ => clearance_m,
             };
             // What the path follows of the ramp's later forecast updates, on the ramp
             // floor only: 2w·∫g dσ² − w²·∫g² dσ².
@@ -95,8 +113,14 @@ fn recomputed(scenario: &Scenario) -> (Option<(f64, f64, f64, f64)>, RunSummary)
             let w = path.compensation_weight;
             let followed = 2.0 * w * first - w * w * second;
             assert!(followed >= 0.0 && followed <= forecast.ramp_height_sigma_m.powi(2));
+            // Off the floor, the anchor model's: what the path follows of the landing
+            // point's updates, 2w·∫g dC − w²·∫g² dσ_L², at most σ_r².
+            let [cross, landing] = forecast.landing_point_update_response_m2;
+            let anchor = wave_off.ramp_strike_model.follows_landing_point();
             let followed = if closed_loop && target_m > forecast.landing_point_height_m {
                 followed
+            } else if anchor {
+                (2.0 * w * cross - w * w * landing).min(forecast.ramp_height_sigma_m.powi(2))
             } else {
                 0.0
             };
@@ -143,7 +167,12 @@ fn in_unit_interval(p: f64) -> bool {
 #[test]
 fn in_the_papers_sea_the_commit_forecast_is_the_recomputed_one() {
     let mut reached = 0;
-    let models = [RampStrikeModel::ClosedLoop, RampStrikeModel::Forecast];
+    let models = [
+        RampStrikeModel::ClosedLoopLift,
+        RampStrikeModel::ClosedLoopAnchor,
+        RampStrikeModel::ClosedLoop,
+        RampStrikeModel::Forecast,
+    ];
     for (seed, model) in (1..=5).flat_map(|seed| models.map(|model| (seed, model))) {
         let mut scenario = Scenario {
             seed,

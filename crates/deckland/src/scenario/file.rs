@@ -726,7 +726,7 @@ mod tests {
         );
         let named = "[environment.ship]\nmodel = \"seaway\"\n\
                      [control.wave_off]\nclimb_out_airspeed_margin_mps = 10.0\n\
-                     ramp_strike_model = \"closed_loop\"\n\
+                     ramp_strike_model = \"closed_loop_lift\"\n\
                      hard_landing_model = \"closed_loop\"\n\
                      touchdown_sink_rate_sigma_mps = 0.6\n\
                      [control.wave_off.recovery]\nfoul_deck_time_to_go_s = 10.0\n\

@@ -27,6 +27,12 @@ pub struct AnchorShaping {
     /// path follows (for the wave-off's ramp-strike probability, docs/model.md §9);
     /// `None`: never (no wave-off).
     pub(crate) followed_within_s: Option<f64>,
+    /// Whether that includes the landing point's updates, which a path off the ramp's
+    /// floor follows (`ramp_strike_model = "closed_loop_anchor"`).
+    pub(crate) follows_landing_point: bool,
+    /// The direct-lift loop that follows them, instead of the anchor filter
+    /// (`ramp_strike_model = "closed_loop_lift"`); `None`: the filter.
+    pub(crate) lift: Option<crate::control::LiftLoop>,
 }
 
 /// The shaped anchor of one step.
@@ -50,6 +56,8 @@ impl AnchorShaping {
             decay: (f64::NAN, f64::NAN),
             uncertainty: false,
             followed_within_s: None,
+            follows_landing_point: false,
+            lift: None,
         }
     }
 
@@ -62,10 +70,18 @@ impl AnchorShaping {
     }
 
     /// The same, with the ramp's variance the path follows worked out (with the σ) from
-    /// the time to go `followed_within_s` (s) on; `None`: never.
-    pub fn with_followed_variance(self, followed_within_s: Option<f64>) -> Self {
+    /// the time to go `followed_within_s` (s) on, and the landing point's too when
+    /// `follows_landing_point`; `None`: never.
+    pub fn with_followed_variance(
+        self,
+        followed_within_s: Option<f64>,
+        follows_landing_point: bool,
+        lift: Option<crate::control::LiftLoop>,
+    ) -> Self {
         Self {
             followed_within_s,
+            follows_landing_point,
+            lift,
             ..self
         }
     }

@@ -67,6 +67,9 @@ pub struct ClosedLoop {
     pub(crate) wake_feedforward_lead_s: Option<f64>,
     /// Direct lift control, in an approach that flies it (docs/model.md §5.9).
     pub(crate) direct_lift: Option<DirectLiftParameters>,
+    /// The direct-lift loop the ramp-strike probability flies the hook with
+    /// (`ramp_strike_model = "closed_loop_lift"`); `None` otherwise.
+    pub(crate) ramp_strike_lift: Option<crate::control::LiftLoop>,
     /// Users' blocks, each at its position in the list.
     pub(crate) user_blocks: Vec<PlacedBlock>,
     /// The 3-D approach's parts (docs/model.md §10.1); `None` outside it.

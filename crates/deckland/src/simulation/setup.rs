@@ -462,6 +462,7 @@ fn start(
         layout: blocks.layout,
         plant: blocks.plant,
         hook: scenario.aircraft.hook,
+        ramp_strike_lift: super::deck_predictor::lift_loop(scenario, environment.ship.parameters()),
         ship: environment.ship,
         deck: env.deck,
         ship_initial_x_m: env.deck.landing_point_aft_of_pitch_centre_m,

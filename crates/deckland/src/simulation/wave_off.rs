@@ -10,8 +10,8 @@ use super::deck_predictor::{DeckView, HookTrack};
 use super::outer_loops::OuterLoops;
 use crate::aircraft::AircraftState;
 use crate::control::{
-    DeckReference, FlightPathGenerator, HardLandingModel, LateAbortInputs, RampStrikeModel,
-    WaveOffDecision, WaveOffInputs, WaveOffParameters,
+    DeckForecast, DeckReference, FlightPathGenerator, HardLandingModel, LateAbortInputs, LiftLoop,
+    PathReference, WaveOffDecision, WaveOffInputs, WaveOffParameters,
 };
 use crate::environment::{DeckGeometry, ShipMotionState, ShipPose, ShipPoseRate};
 
@@ -72,7 +72,8 @@ impl ClosedLoop {
         };
         // The ramp-strike limits of this sea (the ordinary ones but in a heavy sea).
         let wave_off = &self.wave_off_in_sea;
-        let inputs = wave_off_inputs(wave_off, &flight_path, &self.deck, &reference, &hook);
+        let supervisor = (wave_off, self.ramp_strike_lift);
+        let inputs = wave_off_inputs(supervisor, &flight_path, &self.deck, &reference, &hook);
         let decision = inputs.and_then(|inputs| {
             wave_off
                 .decide_foul_deck(&inputs)
@@ -141,7 +142,7 @@ pub(crate) struct HookKinematics {
 /// was before the closed loop's terms made it too large for the compiler's own choice.
 #[inline(always)]
 fn wave_off_inputs(
-    wave_off: &WaveOffParameters,
+    (wave_off, lift): (&WaveOffParameters, Option<LiftLoop>),
     flight_path: &FlightPathGenerator,
     deck: &DeckGeometry,
     reference: &DeckReference,
@@ -155,36 +156,16 @@ fn wave_off_inputs(
     // The path is a straight line: at the ramp (mean position) it stands
     // (ramp x − hook x)·tan Γ below its height over the hook.
     let ramp_x_m = reference.mean_aim.x_m - deck.ramp_aft_of_aim_point_m;
-    // The path the guidance flies until the crossing (docs/model.md §9): its anchor
-    // filter goes on towards the anchor it is given now, and, while that anchor rides
-    // the forecast ramp, it follows the ramp's forecast as it firms up. Only the
-    // ramp-strike probability reads it, from the window's opening on, and only in the
-    // closed-loop model (`ramp_strike_model`; with `forecast`, c and σ_c as they are).
-    let parameters = flight_path.parameters();
     // From the window's opening on (and past the commit point, where it is recorded).
     let in_window = path.time_to_go_s <= wave_off.window_start_time_to_go_s;
-    let closed_loop = wave_off.ramp_strike_model == RampStrikeModel::ClosedLoop;
-    let (gain_m, ramp_following_weight) = match reference.unfiltered_aim_h_m {
-        Some(target_m) if closed_loop && in_window => {
-            let closure_mps = hook.x_rate_mps - reference.mean_aim_velocity.x_mps;
-            let ramp_time_s = if closure_mps > 0.0 {
-                (path.time_to_go_s - deck.ramp_aft_of_aim_point_m / closure_mps).max(0.0)
-            } else {
-                path.time_to_go_s
-            };
-            let (moved_m, _) = super::deck_predictor::anchor_free_response(
-                reference.aim.h_m,
-                reference.aim_velocity.h_mps,
-                target_m,
-                parameters.anchor_filter_frequency_radps,
-                ramp_time_s,
-            );
-            let rides_ramp = target_m > forecast.landing_point_height_m;
-            let weight = path.compensation_weight;
-            (weight * moved_m, if rides_ramp { weight } else { 0.0 })
-        }
-        _ => (0.0, 0.0),
-    };
+    let (gain_m, ramp_clearance_sigma_m) = closed_loop_ramp_terms(
+        (wave_off, lift),
+        flight_path,
+        deck,
+        reference,
+        hook,
+        (&path, &forecast, in_window),
+    );
     let closed_loop_hook_sink_rate_mps =
         match (wave_off.hard_landing_model, reference.unfiltered_aim_h_m) {
             (HardLandingModel::ClosedLoop, Some(target_m)) if in_window => {
@@ -199,15 +180,80 @@ fn wave_off_inputs(
         path_height_at_ramp_m: path.height_m - (ramp_x_m - hook.x_m) * flight_path.tan_slope(),
         hook_climb_rate_mps: hook.climb_rate_mps,
         mean_landing_point_height_m: reference.mean_aim.h_m,
-        ramp_clearance_sigma_m: super::deck_predictor::closed_loop_ramp_clearance_sigma_m(
-            parameters,
-            &forecast,
-            ramp_following_weight,
-        ),
+        ramp_clearance_sigma_m,
         ramp_clearance_gain_m: gain_m,
         closed_loop_hook_sink_rate_mps,
         forecast,
     })
+}
+
+/// The closed-loop ramp-strike probability's terms (docs/model.md §9): how much the
+/// clearance gains before the crossing over the path held (m) and σ_c′ (m). The path the
+/// guidance flies until the crossing: its anchor filter goes on towards the anchor it is
+/// given now, and, while that anchor rides the forecast ramp, it follows the ramp's
+/// forecast as it firms up; off the ramp's floor, in the anchor models, the landing
+/// point's. With `lift` (`closed_loop_lift`) the hook flies to the path on the unfiltered
+/// anchor by direct lift, which leaves the error its loop's free response gives at the
+/// crossing, and follows the updates by that loop's step response (the forecast's
+/// moments carry it). Only the ramp-strike probability reads them, from the window's
+/// opening on (`in_window`), and only in the closed-loop models (`ramp_strike_model`;
+/// with `forecast`, c and σ_c as they are).
+#[inline(always)]
+fn closed_loop_ramp_terms(
+    (wave_off, lift): (&WaveOffParameters, Option<LiftLoop>),
+    flight_path: &FlightPathGenerator,
+    deck: &DeckGeometry,
+    reference: &DeckReference,
+    hook: &HookKinematics,
+    (path, forecast, in_window): (&PathReference, &DeckForecast, bool),
+) -> (f64, f64) {
+    let parameters = flight_path.parameters();
+    let closed_loop = wave_off.ramp_strike_model.is_closed_loop();
+    let base_sigma = |weight| {
+        super::deck_predictor::closed_loop_ramp_clearance_sigma_m(parameters, forecast, weight)
+    };
+    let Some(target_m) = reference
+        .unfiltered_aim_h_m
+        .filter(|_| closed_loop && in_window)
+    else {
+        return (0.0, base_sigma(0.0));
+    };
+    let closure_mps = hook.x_rate_mps - reference.mean_aim_velocity.x_mps;
+    let ramp_time_s = if closure_mps > 0.0 {
+        (path.time_to_go_s - deck.ramp_aft_of_aim_point_m / closure_mps).max(0.0)
+    } else {
+        path.time_to_go_s
+    };
+    let weight = path.compensation_weight;
+    let gain_m = match lift {
+        Some(lift) => {
+            // The hook's error to the path on the unfiltered anchor, and its rate.
+            let error_m = path.height_m - hook.h_m + weight * (target_m - reference.aim.h_m);
+            let rate_mps = path.climb_rate_mps - hook.climb_rate_mps;
+            let left_m = lift.free_response(error_m, rate_mps, ramp_time_s);
+            error_m - left_m
+        }
+        None => {
+            let (moved_m, _) = super::deck_predictor::anchor_free_response(
+                reference.aim.h_m,
+                reference.aim_velocity.h_mps,
+                target_m,
+                parameters.anchor_filter_frequency_radps,
+                ramp_time_s,
+            );
+            weight * moved_m
+        }
+    };
+    let sigma_m = if target_m > forecast.landing_point_height_m {
+        base_sigma(weight)
+    } else if wave_off.ramp_strike_model.follows_landing_point() {
+        super::deck_predictor::landing_point_following_ramp_clearance_sigma_m(
+            parameters, forecast, weight,
+        )
+    } else {
+        base_sigma(0.0)
+    };
+    (gain_m, sigma_m)
 }
 
 /// The hook's sink rate at touchdown as the guidance flies it (m/s, down;

@@ -357,6 +357,15 @@ pub struct DeckForecast {
     /// Zeros when nothing asked for the σ, without a wave-off or a ramp-aware anchor, or
     /// more than two guidance frames before the wave-off's window opens.
     pub ramp_update_response_m2: [f64; 2],
+    /// How the glide path's anchor, off the ramp's floor (the forecast landing point),
+    /// follows the landing point's forecast updates still to come before the crossing, as
+    /// they bear on the ramp's (m²; docs/model.md §9): [∫₀ᵀ g dC, ∫₀ᵀ g² dσ_L²], C(τ) the
+    /// covariance of the ramp's height at the crossing and the landing point's at
+    /// touchdown forecast τ before the crossing, σ_L² the landing point's variance. A path
+    /// that moves by w of its anchor takes F = 2w·∫g dC − w²·∫g² dσ_L² out of the ramp's
+    /// variance. Zeros unless `ramp_strike_model = "closed_loop_anchor"`, and as
+    /// `ramp_update_response_m2` otherwise.
+    pub landing_point_update_response_m2: [f64; 2],
     /// Predicted ship roll at touchdown (rad, starboard down); 0 without a roll forecast
     /// (the longitudinal approach).
     pub roll_rad: f64,
@@ -376,6 +385,7 @@ impl DeckForecast {
             ramp_height_sigma_m: 0.0,
             landing_point_climb_rate_sigma_mps: 0.0,
             ramp_update_response_m2: [0.0; 2],
+            landing_point_update_response_m2: [0.0; 2],
             roll_rad: 0.0,
         }
     }

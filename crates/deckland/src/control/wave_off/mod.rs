@@ -177,7 +177,7 @@ impl Default for WaveOffParameters {
             decision_time_to_go_s: 2.5,
             min_ramp_clearance_m: 0.0,
             max_ramp_strike_probability: 0.2,
-            ramp_strike_model: RampStrikeModel::ClosedLoop,
+            ramp_strike_model: RampStrikeModel::ClosedLoopLift,
             max_hard_landing_probability: 0.0,
             hard_landing_sink_rate_mps: 7.6,
             touchdown_sink_rate_sigma_mps: 0.6,
@@ -616,11 +616,38 @@ pub enum RampStrikeModel {
     Forecast,
     /// The path the guidance flies until the crossing (docs/model.md §9): c′ adds the
     /// anchor filter's rise before the crossing, σ_c′ takes out the forecast's later
-    /// updates that the path follows while its anchor rides the ramp. The default.
+    /// updates that the path follows while its anchor rides the ramp. The default of
+    /// the files written before `closed_loop_anchor`.
     ClosedLoop,
+    /// As `closed_loop`, and off the ramp's floor, where the anchor is the forecast
+    /// landing point, σ_c′ also takes out what the path follows of the landing point's
+    /// later updates as they bear on the ramp's (their covariance), and adds what it
+    /// follows of them that does not (docs/model.md §9).
+    ClosedLoopAnchor,
+    /// As `closed_loop_anchor`, with the hook flown by direct lift (docs/model.md §9):
+    /// c′ is the path on the unfiltered anchor less the hook's error to it as the
+    /// direct-lift loop leaves it at the crossing, and the later updates are followed
+    /// by that loop's step response, not the anchor filter's. Without direct lift, as
+    /// `closed_loop_anchor`. The default.
+    ClosedLoopLift,
 }
 
 impl RampStrikeModel {
+    /// Whether the probability is taken on the path the guidance flies (`closed_loop`,
+    /// `closed_loop_anchor`).
+    pub fn is_closed_loop(self) -> bool {
+        matches!(
+            self,
+            Self::ClosedLoop | Self::ClosedLoopAnchor | Self::ClosedLoopLift
+        )
+    }
+
+    /// Whether off the ramp's floor the path's following of the landing point is
+    /// credited (`closed_loop_anchor`, `closed_loop_lift`).
+    pub fn follows_landing_point(self) -> bool {
+        matches!(self, Self::ClosedLoopAnchor | Self::ClosedLoopLift)
+    }
+
     /// The model of a file that names none: the probability as it first came.
     pub fn named_by_none() -> Self {
         Self::Forecast

@@ -53,8 +53,15 @@ impl Estimator {
 
     /// The same, with the ramp's variance the path follows worked out from the time to
     /// go `followed_within_s` (s) on (`AnchorShaping::with_followed_variance`).
-    pub fn with_followed_variance(mut self, followed_within_s: Option<f64>) -> Self {
-        self.shaping = self.shaping.with_followed_variance(followed_within_s);
+    pub fn with_followed_variance(
+        mut self,
+        followed_within_s: Option<f64>,
+        follows_landing_point: bool,
+        lift: Option<crate::control::LiftLoop>,
+    ) -> Self {
+        self.shaping =
+            self.shaping
+                .with_followed_variance(followed_within_s, follows_landing_point, lift);
         self
     }
 

@@ -30,7 +30,8 @@ mod roll;
 mod uncertainty;
 
 pub(crate) use raise::{
-    anchor_free_response, capped_raise_share, closed_loop_ramp_clearance_sigma_m, ramp_aware_anchor,
+    anchor_free_response, capped_raise_share, closed_loop_ramp_clearance_sigma_m,
+    landing_point_following_ramp_clearance_sigma_m, ramp_aware_anchor,
 };
 pub use roll::SensedRoll;
 pub(crate) use uncertainty::UncertaintyHold;
@@ -41,16 +42,16 @@ use super::anchor_shaping::AnchorShaping;
 use crate::aircraft::six_dof::series_sin_cos;
 use crate::control::{
     DeckForecast, DeckMotionFilter, DeckPredictorKind, DeckReference, FlightPathGenerator,
-    RampStrikeModel,
+    LiftLoop, RampStrikeModel,
 };
 use crate::environment::{
     DeckGeometry, EarthPoint, EarthVelocity, ShipMotion, ShipMotionEstimate, ShipMotionForecast,
-    ShipMotionPropagator, ShipMotionState, ShipPose, ShipPoseRate,
+    ShipMotionParameters, ShipMotionPropagator, ShipMotionState, ShipPose, ShipPoseRate,
 };
 use crate::estimation::DeckMotionEstimator;
 use crate::parameters::ParameterError;
 use crate::random::{stream_names, RandomStreams};
-use crate::scenario::Scenario;
+use crate::scenario::{Mission, Scenario};
 use crate::sensors::{EstimatorStart, ShipMotionSensor};
 
 /// The ship's motion at one instant, as a predictor reads it.
@@ -191,7 +192,10 @@ impl BuiltDeckPredictor {
         // it (its closed-loop ramp-strike model, with a ramp-aware anchor, which can ride
         // the ramp): from its window's opening, two frames early so that the value held
         // over the frame is fresh by then.
-        let closed_loop = wave_off.ramp_strike_model == RampStrikeModel::ClosedLoop;
+        // The anchor model also carries the landing point's updates (off the floor).
+        let closed_loop = wave_off.ramp_strike_model.is_closed_loop();
+        let follows_landing_point = wave_off.ramp_strike_model.follows_landing_point();
+        let lift = lift_loop(scenario, ship.parameters());
         let followed_within_s =
             (uncertainty && wave_off.enabled && closed_loop && flight_path.ramp_aware).then(|| {
                 let frame_s = frames_hz.map_or(0.0, |rate_hz| 1.0 / rate_hz);
@@ -204,7 +208,7 @@ impl BuiltDeckPredictor {
                     (flight_path.ramp_aware || scenario.control.wave_off.enabled).then(|| {
                         AnchorShaping::new(flight_path.anchor_filter_frequency_radps)
                             .with_uncertainty(uncertainty)
-                            .with_followed_variance(followed_within_s)
+                            .with_followed_variance(followed_within_s, follows_landing_point, lift)
                     }),
                 )
                 .with_uncertainty_frames(frames_hz),
@@ -227,7 +231,7 @@ impl BuiltDeckPredictor {
                         flight_path.anchor_filter_frequency_radps,
                     )
                     .with_uncertainty(uncertainty)
-                    .with_followed_variance(followed_within_s)
+                    .with_followed_variance(followed_within_s, follows_landing_point, lift)
                     .with_uncertainty_frames(frames_hz),
                 ))
             }
@@ -383,6 +387,8 @@ impl DeckQuery<'_> {
                 min_horizon_s: parameters.ramp_sigma_min_horizon_s,
                 anchor_frequency_radps: parameters.anchor_filter_frequency_radps,
                 followed_within_s: shaping.followed_within_s,
+                follows_landing_point: shaping.follows_landing_point,
+                lift: shaping.lift,
                 now_s: hook.time_s,
                 hold,
             }),
@@ -438,6 +444,12 @@ pub(crate) struct Uncertainty<'a> {
     /// The time to go (s) from which the variance the path follows is worked out;
     /// `None`: never (0).
     pub followed_within_s: Option<f64>,
+    /// Whether that includes the landing point's part, for a path off the ramp's floor
+    /// (`ramp_strike_model = "closed_loop_anchor"`).
+    pub follows_landing_point: bool,
+    /// The direct-lift loop the hook follows the updates with, instead of the anchor
+    /// filter (`ramp_strike_model = "closed_loop_lift"`).
+    pub lift: Option<LiftLoop>,
     /// The time of the step (s).
     pub now_s: f64,
     /// The σ held over the guidance frame.
@@ -477,19 +489,23 @@ pub(crate) fn forecast_deck(
     let at_touchdown: ShipMotionForecast =
         predictor.forecast_mean(ship, estimate, touchdown_lead_s);
     let at_ramp = predictor.forecast_mean(ship, estimate, ramp_lead_s);
-    let (ramp_height_sigma_m, landing_point_climb_rate_sigma_mps, ramp_update_response_m2) =
-        match uncertainty {
-            Some(uncertainty) => forecast_uncertainty(
-                predictor,
-                ship,
-                estimate,
-                uncertainty,
-                (age_s, ramp_time_s, touchdown_lead_s),
-                (ramp_arm_m, at_ramp.pitch_rad),
-                (landing_arm_m, at_touchdown.pitch_rad),
-            ),
-            None => (0.0, 0.0, [0.0; 2]),
-        };
+    let (
+        ramp_height_sigma_m,
+        landing_point_climb_rate_sigma_mps,
+        ramp_update_response_m2,
+        landing_point_update_response_m2,
+    ) = match uncertainty {
+        Some(uncertainty) => forecast_uncertainty(
+            predictor,
+            ship,
+            estimate,
+            uncertainty,
+            (age_s, ramp_time_s, touchdown_lead_s),
+            (ramp_arm_m, at_ramp.pitch_rad),
+            (landing_arm_m, at_touchdown.pitch_rad),
+        ),
+        None => (0.0, 0.0, [0.0; 2], [0.0; 2]),
+    };
     let trig = |pitch_rad: f64| {
         if series_trig {
             series_sin_cos(pitch_rad)
@@ -511,6 +527,7 @@ pub(crate) fn forecast_deck(
         ramp_height_sigma_m,
         landing_point_climb_rate_sigma_mps,
         ramp_update_response_m2,
+        landing_point_update_response_m2,
         roll_rad: 0.0,
     }
 }
@@ -531,11 +548,13 @@ fn forecast_uncertainty(
     (age_s, ramp_time_s, touchdown_lead_s): (f64, f64, f64),
     ramp: (f64, f64),
     landing_point: (f64, f64),
-) -> (f64, f64, [f64; 2]) {
+) -> (f64, f64, [f64; 2], [f64; 2]) {
     let Uncertainty {
         min_horizon_s,
         anchor_frequency_radps,
         followed_within_s,
+        follows_landing_point,
+        lift,
         now_s,
         hold,
     } = uncertainty;
@@ -551,7 +570,37 @@ fn forecast_uncertainty(
                 ramp_update_response_m2(
                     |tau_s| ramp_sigma(age_s + tau_s).powi(2),
                     ramp_time_s,
-                    anchor_frequency_radps,
+                    following_share(anchor_frequency_radps, lift),
+                )
+            } else {
+                [0.0; 2]
+            },
+            if followed && follows_landing_point {
+                // Forecast τ before the crossing, the touchdown is that much further off.
+                let touchdown_after_s = touchdown_lead_s - age_s - ramp_time_s;
+                landing_point_update_response_m2(
+                    |tau_s| {
+                        let (ramp_lead_s, landing_lead_s) =
+                            (age_s + tau_s, age_s + tau_s + touchdown_after_s);
+                        let landing_sigma = predictor.deck_point_sigma(
+                            ship,
+                            estimate,
+                            landing_lead_s,
+                            landing_point,
+                            0,
+                        );
+                        [
+                            predictor.deck_points_height_covariance(
+                                ship,
+                                estimate,
+                                (ramp_lead_s, ramp),
+                                (landing_lead_s, landing_point),
+                            ),
+                            landing_sigma * landing_sigma,
+                        ]
+                    },
+                    ramp_time_s,
+                    following_share(anchor_frequency_radps, lift),
                 )
             } else {
                 [0.0; 2]
@@ -559,6 +608,28 @@ fn forecast_uncertainty(
         );
     }
     hold.sigmas
+}
+
+/// The direct-lift loop the ramp-strike probability follows the hook with
+/// (`ramp_strike_model = "closed_loop_lift"` in an approach flown with direct lift): the
+/// law's, its close-in gain scheduled on the sea as the loop flies it, for the lift a
+/// unit of C_L gives at the approach speed, q̄S/m with q̄ = ½ρV² (m/s²), in the sea of
+/// `ship`; `None` otherwise.
+pub(crate) fn lift_loop(scenario: &Scenario, ship: &ShipMotionParameters) -> Option<LiftLoop> {
+    let law = &scenario.control.direct_lift;
+    let lift_model = scenario.control.wave_off.ramp_strike_model == RampStrikeModel::ClosedLoopLift;
+    if !lift_model || scenario.mission != Mission::Approach || !law.enabled {
+        return None;
+    }
+    let landing_arm_m = scenario
+        .environment
+        .deck
+        .landing_point_aft_of_pitch_centre_m;
+    let aircraft = &scenario.aircraft.parameters;
+    let dynamic_pressure_pa =
+        0.5 * aircraft.air_density_kg_m3 * scenario.approach.airspeed_mps.powi(2);
+    law.for_sea(ship.deck_point_height_rms_m(landing_arm_m))
+        .lift_loop(dynamic_pressure_pa * aircraft.wing_area_m2 / aircraft.mass_kg)
 }
 
 /// How many guidance frames before the wave-off's window opens the forecast starts to
@@ -586,22 +657,86 @@ const FOLLOWED_VARIANCE_INTERVALS: u32 = 8;
 pub(crate) fn ramp_update_response_m2(
     variance: impl Fn(f64) -> f64,
     ramp_time_s: f64,
-    anchor_frequency_radps: f64,
+    share: impl Fn(f64) -> f64,
+) -> [f64; 2] {
+    update_response(
+        |tau_s| {
+            let v = variance(tau_s);
+            [v, v]
+        },
+        ramp_time_s,
+        share,
+        true,
+    )
+}
+
+/// g(τ) = 1 − (1 + ωτ)·e^(−ωτ), the share of a step in its target that the anchor's
+/// critically damped filter at `frequency_radps` ω has followed τ after it.
+#[inline]
+pub(crate) fn anchor_filter_share(frequency_radps: f64) -> impl Fn(f64) -> f64 {
+    move |tau_s| {
+        let x = frequency_radps * tau_s;
+        1.0 - (1.0 + x) * (-x).exp()
+    }
+}
+
+/// The share g(τ) of a step in its anchor that the hook has followed τ after it: the
+/// anchor filter's (at `anchor_frequency_radps`), or with `lift` the direct-lift loop's,
+/// which flies the unfiltered anchor (`ramp_strike_model = "closed_loop_lift"`).
+#[inline]
+fn following_share(anchor_frequency_radps: f64, lift: Option<LiftLoop>) -> impl Fn(f64) -> f64 {
+    let filter = anchor_filter_share(anchor_frequency_radps);
+    move |tau_s| match lift {
+        Some(lift) => lift.step_share(tau_s),
+        None => filter(tau_s),
+    }
+}
+
+/// How a glide path anchored on the forecast landing point (off the ramp's floor) follows
+/// the forecast's updates still to come before a crossing `ramp_time_s` ahead (m²;
+/// docs/model.md §9): [∫₀ᵀ g dC, ∫₀ᵀ g² dσ_L²], C(τ) the covariance of the ramp's height
+/// at the crossing and the landing point's at touchdown when both are forecast τ before
+/// the crossing, σ_L²(τ) the landing point's variance then, g as in
+/// [`ramp_update_response_m2`]. An update moves the path by w·g of the landing point's
+/// part, so the clearance's variance changes by −(2w·g·dC − w²g²·dσ_L²): a path that
+/// moves by w of its anchor takes F = 2w·∫g dC − w²·∫g² dσ_L² out of the ramp's variance,
+/// which is negative (variance added) when the two are little correlated. The same
+/// quadrature; a covariance may fall over an interval, a variance adds nothing there.
+pub(crate) fn landing_point_update_response_m2(
+    covariance_and_variance: impl Fn(f64) -> [f64; 2],
+    ramp_time_s: f64,
+    share: impl Fn(f64) -> f64,
+) -> [f64; 2] {
+    update_response(covariance_and_variance, ramp_time_s, share, false)
+}
+
+/// The quadrature of [`ramp_update_response_m2`]: [Σ g·Δa, Σ g²·Δb] over the intervals,
+/// (a, b) = `values(τ)`, Δb at least 0, and Δa too when `a_is_variance`.
+#[inline]
+fn update_response(
+    values: impl Fn(f64) -> [f64; 2],
+    ramp_time_s: f64,
+    share: impl Fn(f64) -> f64,
+    a_is_variance: bool,
 ) -> [f64; 2] {
     if ramp_time_s <= 0.0 {
         return [0.0; 2];
     }
     let step_s = ramp_time_s / f64::from(FOLLOWED_VARIANCE_INTERVALS);
-    let mut before = variance(0.0);
+    let mut before = values(0.0);
     let mut moments = [0.0; 2];
     for j in 1..=FOLLOWED_VARIANCE_INTERVALS {
         let tau_s = f64::from(j) * step_s;
-        let after = variance(tau_s);
-        let x = anchor_frequency_radps * (tau_s - 0.5 * step_s);
-        let g = 1.0 - (1.0 + x) * (-x).exp();
-        let update = (after - before).max(0.0);
-        moments[0] += g * update;
-        moments[1] += g * g * update;
+        let after = values(tau_s);
+        let g = share(tau_s - 0.5 * step_s);
+        let second = (after[1] - before[1]).max(0.0);
+        let first = if a_is_variance {
+            (after[0] - before[0]).max(0.0)
+        } else {
+            after[0] - before[0]
+        };
+        moments[0] += g * first;
+        moments[1] += g * g * second;
         before = after;
     }
     moments

@@ -115,6 +115,25 @@ pub(crate) fn closed_loop_ramp_clearance_sigma_m(
     (ramp_clearance_variance_m2(parameters, forecast) - followed).sqrt()
 }
 
+/// σ_c of the hook's clearance over the ramp under a path off the ramp's floor, anchored
+/// on the forecast landing point, which it follows until the crossing (m; docs/model.md
+/// §9, `ramp_strike_model = "closed_loop_anchor"`): [`ramp_clearance_sigma_m`] less
+/// F = 2w·∫g dC − w²·∫g² dσ_L² (`landing_point_update_response_m2`) for a path that moves
+/// by `weight` w of its anchor: √(σ_r² − F + σ_h² + (ṙ·σ_t)²). F is at most σ_r² (the
+/// variance of the ramp's updates less the landing point's part cannot fall below 0);
+/// it is negative, and σ_c grows, where the landing point's updates correlate little
+/// with the ramp's.
+pub(crate) fn landing_point_following_ramp_clearance_sigma_m(
+    parameters: &FlightPathParameters,
+    forecast: &DeckForecast,
+    weight: f64,
+) -> f64 {
+    let w = weight;
+    let [cross, landing] = forecast.landing_point_update_response_m2;
+    let followed = (2.0 * w * cross - w * w * landing).min(forecast.ramp_height_sigma_m.powi(2));
+    (ramp_clearance_variance_m2(parameters, forecast) - followed).sqrt()
+}
+
 /// The free response of the anchor's critically damped filter ä = ω²(target − a) − 2ω·ȧ
 /// (ω = `frequency_radps`) over `horizon_s` from `height_m` at `rate_mps` towards
 /// `target_m` held, exactly: how far it moves the anchor (m),

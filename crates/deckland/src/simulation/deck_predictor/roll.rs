@@ -88,6 +88,7 @@ mod tests {
             ramp_height_sigma_m: 0.3,
             landing_point_climb_rate_sigma_mps: 0.4,
             ramp_update_response_m2: [0.0; 2],
+            landing_point_update_response_m2: [0.0; 2],
             roll_rad: 0.0,
         };
         let roll = SensedRoll {

@@ -313,7 +313,7 @@ fn the_path_follows_the_ramps_later_updates_by_its_filters_step_response() {
             })
             .sum()
     };
-    let [first, second] = ramp_update_response_m2(|tau| tau, horizon_s, omega);
+    let [first, second] = ramp_update_response_m2(|tau| tau, horizon_s, anchor_filter_share(omega));
     let by_hand = horizon_s - 2.0 + (2.0 + horizon_s) * (-horizon_s).exp();
     let (fine_g, fine_g2) = (fine(1), fine(2));
     assert!(
@@ -332,8 +332,14 @@ fn the_path_follows_the_ramps_later_updates_by_its_filters_step_response() {
         let followed = 2.0 * w * first - w * w * second;
         assert!((0.0..horizon_s).contains(&followed), "{w}: {followed}");
     }
-    assert_eq!(ramp_update_response_m2(|_| 2.0, horizon_s, omega), [0.0; 2]);
-    assert_eq!(ramp_update_response_m2(|tau| tau, 0.0, omega), [0.0; 2]);
+    assert_eq!(
+        ramp_update_response_m2(|_| 2.0, horizon_s, anchor_filter_share(omega)),
+        [0.0; 2]
+    );
+    assert_eq!(
+        ramp_update_response_m2(|tau| tau, 0.0, anchor_filter_share(omega)),
+        [0.0; 2]
+    );
 }
 
 /// σ_c of the closed loop: with the anchor on the ramp floor (the path's weight w on the
@@ -357,6 +363,60 @@ fn the_closed_loop_sigma_takes_out_what_the_path_follows_only_on_the_ramp_floor(
     assert_eq!(sigma(&f, 0.0), ramp_clearance_sigma_m(&parameters, &f));
     let too_much = DeckForecast {
         ramp_update_response_m2: [3.0, 1.0],
+        ..f
+    };
+    assert!((sigma(&too_much, 1.0) - 0.09_f64.sqrt()).abs() < 1e-12);
+}
+
+/// The path's response to the landing point's later updates
+/// (`landing_point_update_response_m2`): for a covariance C(τ) = ρ·τ and a landing
+/// point's variance σ_L²(τ) = τ (both growing linearly) it is [ρ·∫₀ᵀ g dτ, ∫₀ᵀ g² dτ],
+/// the ramp's moments scaled, by hand ρ·0.2810 at ω = 1, T = 1.5 (as above); a covariance
+/// that falls counts (negative), a variance that falls does not.
+#[test]
+fn the_path_follows_the_landing_points_updates_by_their_covariance_with_the_ramps() {
+    let (omega, horizon_s, rho) = (1.0, 1.5, 0.6);
+    let ramp = ramp_update_response_m2(|tau| tau, horizon_s, anchor_filter_share(omega));
+    let [cross, landing] = landing_point_update_response_m2(
+        |tau| [rho * tau, tau],
+        horizon_s,
+        anchor_filter_share(omega),
+    );
+    assert!((cross - rho * ramp[0]).abs() < 1e-15, "{cross}");
+    assert_eq!(landing, ramp[1]);
+    let by_hand = horizon_s - 2.0 + (2.0 + horizon_s) * (-horizon_s).exp();
+    assert!((cross / (rho * by_hand) - 1.0).abs() < 0.01, "{cross}");
+    let [falling, none] =
+        landing_point_update_response_m2(|tau| [-tau, -tau], horizon_s, anchor_filter_share(omega));
+    assert!((falling + ramp[0]).abs() < 1e-15, "{falling}");
+    assert_eq!(none, 0.0);
+}
+
+/// σ_c off the ramp floor under the anchor model: σ_r = 1 m, ∫g dC = 0.15 m²,
+/// ∫g² dσ_L² = 0.05 m², σ_h = 0.3 m, the ramp still: at w = 1 the path takes
+/// 2·0.15 − 0.05 = 0.25 m² out, √(1 − 0.25 + 0.09) = 0.9165 m; at w = 0 nothing, σ_c
+/// itself; a landing point uncorrelated with the ramp (∫g dC = 0) adds its 0.05 m²,
+/// √1.14; a followed variance beyond the ramp's is held to it, √0.09.
+#[test]
+fn off_the_floor_the_anchor_model_takes_out_what_the_landing_point_shares_with_the_ramp() {
+    let parameters = FlightPathParameters::default();
+    let f = DeckForecast {
+        ramp_height_sigma_m: 1.0,
+        landing_point_update_response_m2: [0.15, 0.05],
+        ..forecast(20.0, 20.0)
+    };
+    let sigma = |f: &DeckForecast, w: f64| {
+        landing_point_following_ramp_clearance_sigma_m(&parameters, f, w)
+    };
+    assert!((sigma(&f, 1.0) - 0.84_f64.sqrt()).abs() < 1e-12);
+    assert_eq!(sigma(&f, 0.0), ramp_clearance_sigma_m(&parameters, &f));
+    let uncorrelated = DeckForecast {
+        landing_point_update_response_m2: [0.0, 0.05],
+        ..f
+    };
+    assert!((sigma(&uncorrelated, 1.0) - 1.14_f64.sqrt()).abs() < 1e-12);
+    let too_much = DeckForecast {
+        landing_point_update_response_m2: [3.0, 1.0],
         ..f
     };
     assert!((sigma(&too_much, 1.0) - 0.09_f64.sqrt()).abs() < 1e-12);

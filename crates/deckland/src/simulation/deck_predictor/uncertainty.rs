@@ -14,8 +14,9 @@ pub(crate) struct UncertaintyHold {
     /// computer).
     clock: Option<FrameClock>,
     /// The held σ: ramp height (m), landing point climb rate (m/s); and the path's
-    /// response to the ramp height's later updates (m², `ramp_update_response_m2`).
-    pub sigmas: (f64, f64, [f64; 2]),
+    /// response to the ramp height's later updates (m², `ramp_update_response_m2`) and
+    /// to the landing point's (m², `landing_point_update_response_m2`).
+    pub sigmas: (f64, f64, [f64; 2], [f64; 2]),
 }
 
 impl UncertaintyHold {
@@ -23,7 +24,7 @@ impl UncertaintyHold {
     pub fn new(rate_hz: Option<f64>) -> Self {
         Self {
             clock: rate_hz.map(FrameClock::at_rate),
-            sigmas: (0.0, 0.0, [0.0; 2]),
+            sigmas: (0.0, 0.0, [0.0; 2], [0.0; 2]),
         }
     }
 
