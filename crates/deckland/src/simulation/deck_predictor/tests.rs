@@ -347,25 +347,43 @@ fn the_path_follows_the_ramps_later_updates_by_its_filters_step_response() {
 /// nothing does: σ_r = 1 m, ∫g dσ² = 0.2 m² and ∫g² dσ² = 0.04 m² (0.36 m² followed at
 /// w = 1, 0.19 m² at w = 0.5), σ_h = 0.3 m, the ramp still: √(1 − 0.36 + 0.09) = 0.8544 m
 /// at w = 1, √(1 − 0.19 + 0.09) at w = 0.5, √1.09 off it; a followed variance beyond the
-/// ramp's is held to it.
+/// ramp's is held to it. Off the floor under the anchor models, with ∫g dC = 0.15 m² and
+/// ∫g² dσ_L² = 0.05 m², the path takes 2·0.15 − 0.05 = 0.25 m² out at w = 1,
+/// √(1 − 0.25 + 0.09); nothing at w = 0; a landing point uncorrelated with the ramp
+/// (∫g dC = 0) adds its 0.05 m², √1.14; beyond the ramp's variance, held to it, √0.09.
 #[test]
-fn the_closed_loop_sigma_takes_out_what_the_path_follows_only_on_the_ramp_floor() {
+fn the_closed_loop_sigma_takes_out_what_the_path_follows_of_its_anchor() {
     let parameters = FlightPathParameters::default();
     let f = DeckForecast {
         ramp_height_sigma_m: 1.0,
         ramp_update_response_m2: [0.2, 0.04],
+        landing_point_update_response_m2: [0.15, 0.05],
         ..forecast(20.0, 20.0)
     };
-    let sigma = |f: &DeckForecast, w: f64| closed_loop_ramp_clearance_sigma_m(&parameters, f, w);
-    assert!((sigma(&f, 1.0) - 0.73_f64.sqrt()).abs() < 1e-12);
-    assert!((sigma(&f, 0.5) - 0.9_f64.sqrt()).abs() < 1e-12);
-    assert!((sigma(&f, 0.0) - 1.09_f64.sqrt()).abs() < 1e-12);
-    assert_eq!(sigma(&f, 0.0), ramp_clearance_sigma_m(&parameters, &f));
-    let too_much = DeckForecast {
-        ramp_update_response_m2: [3.0, 1.0],
+    let on = |f: &DeckForecast, w: f64| closed_loop_ramp_clearance_sigma_m(&parameters, f, w);
+    let off = |f: &DeckForecast, w: f64| {
+        landing_point_following_ramp_clearance_sigma_m(&parameters, f, w)
+    };
+    let with = |ramp: [f64; 2], landing: [f64; 2]| DeckForecast {
+        ramp_update_response_m2: ramp,
+        landing_point_update_response_m2: landing,
         ..f
     };
-    assert!((sigma(&too_much, 1.0) - 0.09_f64.sqrt()).abs() < 1e-12);
+    // (σ_c, the σ_c² worked out above)
+    let cases = [
+        (on(&f, 1.0), 0.73_f64),
+        (on(&f, 0.5), 0.9),
+        (on(&f, 0.0), 1.09),
+        (on(&with([3.0, 1.0], [0.15, 0.05]), 1.0), 0.09),
+        (off(&f, 1.0), 0.84),
+        (off(&with([0.2, 0.04], [0.0, 0.05]), 1.0), 1.14),
+        (off(&with([0.2, 0.04], [3.0, 1.0]), 1.0), 0.09),
+    ];
+    for (got, want) in cases {
+        assert!((got - want.sqrt()).abs() < 1e-12, "{got} against √{want}");
+    }
+    assert_eq!(on(&f, 0.0), ramp_clearance_sigma_m(&parameters, &f));
+    assert_eq!(off(&f, 0.0), ramp_clearance_sigma_m(&parameters, &f));
 }
 
 /// The path's response to the landing point's later updates
@@ -390,34 +408,4 @@ fn the_path_follows_the_landing_points_updates_by_their_covariance_with_the_ramp
         landing_point_update_response_m2(|tau| [-tau, -tau], horizon_s, anchor_filter_share(omega));
     assert!((falling + ramp[0]).abs() < 1e-15, "{falling}");
     assert_eq!(none, 0.0);
-}
-
-/// σ_c off the ramp floor under the anchor model: σ_r = 1 m, ∫g dC = 0.15 m²,
-/// ∫g² dσ_L² = 0.05 m², σ_h = 0.3 m, the ramp still: at w = 1 the path takes
-/// 2·0.15 − 0.05 = 0.25 m² out, √(1 − 0.25 + 0.09) = 0.9165 m; at w = 0 nothing, σ_c
-/// itself; a landing point uncorrelated with the ramp (∫g dC = 0) adds its 0.05 m²,
-/// √1.14; a followed variance beyond the ramp's is held to it, √0.09.
-#[test]
-fn off_the_floor_the_anchor_model_takes_out_what_the_landing_point_shares_with_the_ramp() {
-    let parameters = FlightPathParameters::default();
-    let f = DeckForecast {
-        ramp_height_sigma_m: 1.0,
-        landing_point_update_response_m2: [0.15, 0.05],
-        ..forecast(20.0, 20.0)
-    };
-    let sigma = |f: &DeckForecast, w: f64| {
-        landing_point_following_ramp_clearance_sigma_m(&parameters, f, w)
-    };
-    assert!((sigma(&f, 1.0) - 0.84_f64.sqrt()).abs() < 1e-12);
-    assert_eq!(sigma(&f, 0.0), ramp_clearance_sigma_m(&parameters, &f));
-    let uncorrelated = DeckForecast {
-        landing_point_update_response_m2: [0.0, 0.05],
-        ..f
-    };
-    assert!((sigma(&uncorrelated, 1.0) - 1.14_f64.sqrt()).abs() < 1e-12);
-    let too_much = DeckForecast {
-        landing_point_update_response_m2: [3.0, 1.0],
-        ..f
-    };
-    assert!((sigma(&too_much, 1.0) - 0.09_f64.sqrt()).abs() < 1e-12);
 }
