@@ -3,7 +3,6 @@
 //! wind), shared by their 3-DOF and 6-DOF variants.
 
 use anyhow::{bail, Context, Result};
-use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
 use clap::Args;
 use deckland::aircraft::{AerodynamicConfiguration, Aircraft, ConfigurationName, PlantModel};
 use deckland::analysis::{trim, TrimError, TrimPoint, TrimRequest};
@@ -36,7 +35,7 @@ pub struct TrimArgs {
     pub configuration: ConfigurationName,
     /// Aircraft model: the paper's longitudinal 3-DOF model, or the 6-DOF model with
     /// the lateral-directional axes (docs/six-dof.md).
-    #[arg(long, default_value = "3dof", value_parser = plant_model_parser())]
+    #[arg(long, default_value = "3dof", value_parser = super::models::plant_model_parser())]
     pub model: PlantModel,
     /// Sideslip β (deg), positive with the relative wind from the right; 6-DOF only.
     #[arg(
@@ -58,15 +57,6 @@ pub struct TrimArgs {
     /// Print one JSON document on stdout instead of a table.
     #[arg(long)]
     pub json: bool,
-}
-
-/// The `--model` names of the library's plant models ([`PlantModel::name`]), each with
-/// its one-line summary in the help.
-pub fn plant_model_parser() -> impl TypedValueParser<Value = PlantModel> {
-    let values =
-        PlantModel::ALL.map(|model| PossibleValue::new(model.name()).help(model.summary()));
-    PossibleValuesParser::new(values)
-        .try_map(|name| PlantModel::from_name(&name).ok_or("not a plant model"))
 }
 
 impl TrimArgs {

@@ -3,7 +3,7 @@
 use super::common::{check_set_up, load_scenario_file};
 use anyhow::{bail, Context, Result};
 use clap::Args;
-use deckland::aircraft::{trim, PlantModel, TrimError, TrimRequest};
+use deckland::aircraft::{trim, TrimError, TrimRequest};
 use deckland::scenario::Scenario;
 use deckland::scenario::{Mission, DEFAULT_SCENARIO_TOML};
 use deckland::simulation::{SetupError, Simulation};
@@ -49,7 +49,7 @@ pub fn run(args: &ScenarioArgs) -> Result<()> {
             Mission::Approach => {
                 approach = format!(
                     "an approach, {}, for `deckland run` and `deckland campaign`",
-                    approach_kind(&scenario)
+                    super::models::approach_in_words(&scenario)
                 );
                 approach.as_str()
             }
@@ -68,25 +68,6 @@ pub fn run(args: &ScenarioArgs) -> Result<()> {
         out!("{DEFAULT_SCENARIO_TOML}")?;
     }
     Ok(())
-}
-
-/// Which approach `scenario` flies, in words: the 3-D carrier approach (the realistic
-/// default) or the longitudinal one, with the model and the ship's speed.
-fn approach_kind(scenario: &Scenario) -> String {
-    let model = scenario.aircraft.model;
-    let speed = scenario.environment.ship.forward_speed_mps;
-    if model == PlantModel::SixDof && scenario.approach.three_dimensional {
-        format!(
-            "the 3-D carrier approach (model {}, deck angle {}°, ship at {speed} m/s)",
-            model.name(),
-            scenario.environment.deck.deck_angle_deg
-        )
-    } else {
-        format!(
-            "the longitudinal approach (model {}, ship at {speed} m/s)",
-            model.name()
-        )
-    }
 }
 
 /// Why the approach airspeed of `scenario` cannot be trimmed, as precisely as `deckland
