@@ -5,7 +5,7 @@ use std::sync::Arc;
 
 use super::score::{EventScore, EventThresholds, RareEvent};
 use super::splitting::{Advance, Trajectory};
-use crate::experiments::{ApproachRun, APPROACH_RECORD_INTERVAL_S};
+use crate::experiments::{ApproachRun, APPROACH_COLUMNS, APPROACH_RECORD_INTERVAL_S};
 use crate::monte_carlo::dispersed_run_scenario;
 use crate::recording::TimeSeriesRecorder;
 use crate::scenario::Scenario;
@@ -17,7 +17,8 @@ pub enum FlightError {
     /// The scenario cannot be flown.
     #[error(transparent)]
     Setup(#[from] SetupError),
-    /// `off_centre` asked of the longitudinal approach.
+    /// An event whose score reads a signal the loop does not compute
+    /// ([`RareEvent::signals_read`]): `off_centre` asked of the longitudinal approach.
     #[error(
         "the event `off_centre` needs the 3-D approach ([aircraft] model = \"6dof\"); \
          this scenario flies the longitudinal one"
@@ -52,7 +53,11 @@ impl ApproachFlight {
     ) -> Result<Self, FlightError> {
         let scenario = Arc::new(*scenario);
         let simulation = Simulation::new(&dispersed_run_scenario(&scenario, scenario.seed).0)?;
-        if event == RareEvent::OffCentre && simulation.signals().lateral.cross_track_m.is_none() {
+        let computes = |signal| {
+            let mut columns = APPROACH_COLUMNS.iter().chain(simulation.lateral_columns());
+            columns.any(|column| column.signal == signal)
+        };
+        if !event.signals_read().iter().all(|&signal| computes(signal)) {
             return Err(FlightError::NeedsThreeDimensions);
         }
         let score = EventScore::new(event, thresholds, &scenario, &simulation);

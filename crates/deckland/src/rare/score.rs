@@ -51,7 +51,7 @@ use crate::environment::{
     DeckGeometry, ShipMotion, ShipMotionEstimate, ShipMotionPropagator, ShipMotionState, ShipPose,
 };
 use crate::scenario::Scenario;
-use crate::simulation::{Event, Outcome, Recorder, RunSummary, Signals, Simulation};
+use crate::simulation::{Event, Outcome, Recorder, RunSummary, SignalId, Signals, Simulation};
 use serde::Serialize;
 
 /// A catastrophic event whose probability `deckland rare` estimates.
@@ -88,6 +88,16 @@ impl RareEvent {
             Self::OffCentre => "off_centre",
             Self::Divergence => "divergence",
             Self::Lost => "lost",
+        }
+    }
+
+    /// The signals of the loop the event's score reads beyond every approach's own
+    /// ([`crate::experiments::APPROACH_COLUMNS`]): the off-centre score reads the
+    /// cross-track offset, which only the 3-D approach's lateral part computes.
+    pub fn signals_read(self) -> &'static [SignalId] {
+        match self {
+            Self::OffCentre => &[SignalId::CrossTrack],
+            Self::RampStrike | Self::HardLanding | Self::Divergence | Self::Lost => &[],
         }
     }
 
