@@ -73,22 +73,15 @@ pub(crate) struct ActionRanges {
 }
 
 impl ActionRanges {
-    /// The ranges of the aircraft `simulation` flies (set up from `scenario`).
-    fn of(simulation: &Simulation, scenario: &RustScenario) -> Self {
+    /// The ranges of the aircraft `simulation` flies, from its built loop.
+    fn of(simulation: &Simulation) -> Self {
         let aircraft = simulation.system().aircraft();
         let actuator = aircraft.actuator();
-        let three_dimensional = simulation.signals().lateral.cross_track_m.is_some();
-        let lateral = &scenario.aircraft;
         Self {
             pitch_command_rad: PITCH_COMMAND_RANGE_RAD,
             elevator_rad: (actuator.min_rad(), actuator.max_rad()),
             thrust_n: (0.0, aircraft.engines().max_total_thrust_n()),
-            lateral_travel_rad: three_dimensional.then(|| {
-                (
-                    lateral.aileron_actuator.travel_deg.to_radians(),
-                    lateral.rudder_actuator.travel_deg.to_radians(),
-                )
-            }),
+            lateral_travel_rad: simulation.lateral_surface_travel_rad(),
         }
     }
 
@@ -280,7 +273,7 @@ impl Stepper {
         let simulation = Simulation::new(scenario)
             .map_err(|error| value_error(format!("cannot set up the approach: {error}")))?;
         Ok(Self {
-            ranges: ActionRanges::of(&simulation, scenario),
+            ranges: ActionRanges::of(&simulation),
             simulation,
             steps_per_interval,
             steps: 0,

@@ -14,8 +14,8 @@ use super::commit::CommitPoint;
 use super::deck_predictor::{BuiltDeckPredictor, SensedRoll};
 use super::flight_computer::FlightComputer;
 pub use super::held::{HeldInputs, StepStreams};
-use super::lateral::part::{LateralHold, LateralPart, ShipParts};
-use super::lateral::LateralLoop;
+use super::lateral::build::BuiltLateral;
+use super::lateral::part::{LateralPart, ShipParts, WithLateralPart};
 pub use super::layout::LoopLayout;
 use super::outer_loop_signals::{OuterLoopInputs, OuterLoopOutputs};
 use super::outer_loops::OuterLoops;
@@ -72,8 +72,9 @@ pub struct ClosedLoop {
     pub(crate) ramp_strike_lift: Option<crate::control::LiftLoop>,
     /// Users' blocks, each at its position in the list.
     pub(crate) user_blocks: Vec<PlacedBlock>,
-    /// The 3-D approach's parts (docs/model.md §10.1); `None` outside it.
-    pub(crate) lateral: Option<LateralLoop>,
+    /// The loop's lateral part: the 3-D approach's (docs/model.md §10.1) or the
+    /// lateral hold.
+    pub(crate) lateral: BuiltLateral,
     /// The arrival-timing block, when on (docs/landing-design.md).
     pub(crate) arrival_timing: Option<ArrivalTimingBlock>,
     /// The approach's commit point and what the forecast gave there (`commit`).
@@ -120,13 +121,6 @@ impl<T: Taps, P: Plant> WithLateralPart for EvaluationWith<'_, T, P> {
             system.evaluate_blocks::<T, P, L, true>(plant, lateral, self.work)
         }
     }
-}
-
-/// Work done with the loop's lateral part, instantiated for each
-/// ([`ClosedLoop::with_lateral_part`]).
-pub(crate) trait WithLateralPart {
-    type Output;
-    fn with<L: LateralPart>(self, lateral: &L) -> Self::Output;
 }
 
 impl Reseed for ClosedLoop {
@@ -248,14 +242,23 @@ impl ClosedLoop {
         self.with_lateral_part(Columns)
     }
 
-    /// `work` done with the loop's lateral part: the 3-D approach's, or the lateral hold
-    /// of a loop without it. The one place the loop chooses by it.
+    /// The aileron's and the rudder's travel either side of neutral (rad), where the
+    /// loop's lateral part commands them (the 3-D approach); none otherwise.
+    pub(crate) fn lateral_surface_travel_rad(&self) -> Option<(f64, f64)> {
+        struct Travel;
+        impl WithLateralPart for Travel {
+            type Output = Option<(f64, f64)>;
+            fn with<L: LateralPart>(self, lateral: &L) -> Self::Output {
+                lateral.surface_travel_rad()
+            }
+        }
+        self.with_lateral_part(Travel)
+    }
+
+    /// `work` done with the loop's lateral part ([`BuiltLateral::with`]).
     #[inline(always)]
     fn with_lateral_part<W: WithLateralPart>(&self, work: W) -> W::Output {
-        match &self.lateral {
-            Some(lateral) => work.with(lateral),
-            None => work.with(&LateralHold),
-        }
+        self.lateral.with(work)
     }
 
     /// What the lateral part reads of the loop ([`ShipParts`]).

@@ -5,7 +5,7 @@
 use super::blocks::plant::BuiltPlant;
 use super::closed_loop::{ClosedLoop, StepStreams};
 use super::lateral::pose::ShipStatesAt;
-use super::lateral::{HeldLateral, LateralStep, LineupAtFrame};
+use super::lateral::{HeldLateral, LateralLoop, LateralStep, LineupAtFrame};
 use super::outer_loops::OuterLoops;
 use crate::aircraft::six_dof::SixDofAircraft;
 use crate::aircraft::Plant;
@@ -29,28 +29,28 @@ impl ClosedLoop {
         decided: bool,
         wind: &Wind,
     ) -> (HeldLateral, Option<WaveOffDecision>) {
-        let step = self.lateral_step(t, x, streams, dt, decided, wind);
-        let Some((lateral, step)) = self.lateral.as_mut().zip(step) else {
-            return (HeldLateral::default(), None);
-        };
-        (lateral.held_with_read(&step, frame_starts), step.decision)
+        self.lateral_step(t, x, streams, (dt, frame_starts), decided, wind)
+            .unwrap_or_default()
     }
 
-    /// The lateral loop's step at `t`: its sensing, noise and guidance frame
-    /// ([`ClosedLoop::hold_lateral`]); `None` outside the 3-D approach.
+    /// The lateral loop's step at `t`: its sensing, noise and guidance frame, and what
+    /// it holds over the step with the wave-off it decides ([`ClosedLoop::hold_lateral`]);
+    /// `None` outside the 3-D approach.
     #[inline]
     fn lateral_step(
         &mut self,
         t: f64,
         x: &[f64],
         streams: &mut StepStreams,
-        dt: f64,
+        (dt, frame_starts): (f64, Option<bool>),
         decided: bool,
         wind: &Wind,
-    ) -> Option<LateralStep> {
-        let (Some(lateral), Some(lateral_streams), BuiltPlant::SixDof(aircraft)) =
-            (&mut self.lateral, &mut streams.lateral, &self.plant)
-        else {
+    ) -> Option<(HeldLateral, Option<WaveOffDecision>)> {
+        let (Some(lateral), Some(lateral_streams), BuiltPlant::SixDof(aircraft)) = (
+            self.lateral.three_dimensional_mut(),
+            &mut streams.lateral,
+            &self.plant,
+        ) else {
             return None;
         };
         let ship_state = LateralShipMotionState::from_array(&self.layout.ship_lateral.array(x));
@@ -61,7 +61,7 @@ impl ClosedLoop {
         lateral.sense_ship(t, &ship_state);
         let ship_noise = lateral.ship.draw_noise(&mut lateral_streams.ship, dt);
         if let Some(step) = lateral.held_in_frame(t, ship_noise) {
-            return Some(step);
+            return Some(held_over_step(lateral, &step, frame_starts));
         }
         let state = SixDofAircraft::state_at(x, self.layout.aircraft.offset);
         let (kinematic, kinematics) = aircraft.kinematics(&self.hook, state);
@@ -110,8 +110,19 @@ impl ClosedLoop {
             decision,
         };
         lateral.keep_for_frame(&step);
-        Some(step)
+        Some(held_over_step(lateral, &step, frame_starts))
     }
+}
+
+/// What `lateral` holds over the step of `step` (with the measurement it reads when a
+/// flight computer's frame starts, `frame_starts`) and the wave-off `step` decides.
+#[inline]
+fn held_over_step(
+    lateral: &mut LateralLoop,
+    step: &LateralStep,
+    frame_starts: Option<bool>,
+) -> (HeldLateral, Option<WaveOffDecision>) {
+    (lateral.held_with_read(step, frame_starts), step.decision)
 }
 
 #[cfg(test)]
@@ -135,7 +146,11 @@ mod tests {
             };
             let mut simulation = Simulation::new(&scenario).unwrap();
             if let Some(limit) = limit {
-                let lateral = simulation.system_mut().lateral.as_mut().expect("3-D");
+                let lateral = simulation
+                    .system_mut()
+                    .lateral
+                    .three_dimensional_mut()
+                    .expect("3-D");
                 lateral.wave_off.max_off_centre_probability = limit;
             }
             while !matches!(simulation.step(&mut Nothing), Stop::Ended(_)) {}

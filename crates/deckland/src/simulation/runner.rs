@@ -230,6 +230,13 @@ impl Simulation {
         self.system.recorded_lateral_columns()
     }
 
+    /// The aileron's and the rudder's travel either side of neutral (rad) where the loop
+    /// commands them (the 3-D approach's lateral part), what a step's lateral keys may
+    /// ask; none otherwise.
+    pub fn lateral_surface_travel_rad(&self) -> Option<(f64, f64)> {
+        self.system.lateral_surface_travel_rad()
+    }
+
     /// The signals at the current time and state, with the inputs held now: those of
     /// the last step, or those drawn for the next by [`Simulation::next_step_inputs`]
     /// (for an observation between steps; the run loop computes its own). Before the

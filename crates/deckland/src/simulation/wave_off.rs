@@ -85,8 +85,10 @@ impl ClosedLoop {
             .filter(|i| !self.commit.reached() && i.time_to_go_s <= wave_off.decision_time_to_go_s)
         {
             // The commit point: what the forecast gives now (`simulation/commit.rs`).
-            self.commit
-                .record(wave_off.commit_forecast(&inputs), self.lateral.is_some());
+            self.commit.record(
+                wave_off.commit_forecast(&inputs),
+                self.lateral.three_dimensional().is_some(),
+            );
         }
         if decision.is_none() && wave_off.late_abort_enabled() {
             let ramp_x_m = reference.mean_aim.x_m - self.deck.ramp_aft_of_aim_point_m;

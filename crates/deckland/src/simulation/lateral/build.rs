@@ -2,6 +2,7 @@
 
 use std::sync::Arc;
 
+use super::part::{LateralHold, WithLateralPart};
 use super::{forecast, LateralLoop, LateralStreams, SurfaceTrim};
 use crate::aircraft::six_dof::{
     linearize_six_dof, trim_six_dof, SixDofAircraft, SixDofTrimPoint, SixDofTrimRequest,
@@ -19,7 +20,7 @@ use crate::environment::{
     LateralShipStreams, ShipPose, Wind,
 };
 use crate::parameters::ParameterError;
-use crate::random::{stream_names, RandomStreams};
+use crate::random::{stream_names, RandomStreams, Reseed};
 use crate::scenario::{Mission, Scenario};
 use crate::sensors::LateralShipMotionSensor;
 
@@ -28,6 +29,56 @@ use crate::sensors::LateralShipMotionSensor;
 /// docs/lateral-control.md). The one place the laws are chosen.
 pub fn lateral_laws(scenario: &Scenario) -> (LateralLawParameters, LateralLawParameters) {
     scenario.lateral_laws()
+}
+
+/// The loop's lateral part as built for a configuration: the 3-D approach's lateral
+/// loop, or the lateral hold of a loop without it ([`LateralHold`]).
+// One per loop, held inline as the plant is (`BuiltPlant`): a box would add a pointer
+// chase to every evaluation.
+#[allow(clippy::large_enum_variant)]
+#[derive(Debug, Clone)]
+pub(crate) enum BuiltLateral {
+    /// The 3-D approach's parts (docs/model.md §10.1).
+    ThreeDimensional(LateralLoop),
+    /// The plant's lateral commands held at trim.
+    Hold,
+}
+
+impl BuiltLateral {
+    /// Does `work` with the lateral part, whichever it is: the one place the loop
+    /// chooses by it, as [`crate::aircraft::BuiltPlant::with`] by the plant (no dynamic
+    /// dispatch in the step).
+    #[inline(always)]
+    pub(crate) fn with<W: WithLateralPart>(&self, work: W) -> W::Output {
+        match self {
+            Self::ThreeDimensional(lateral) => work.with(lateral),
+            Self::Hold => work.with(&LateralHold),
+        }
+    }
+
+    /// The 3-D approach's lateral loop; `None` in a loop without it.
+    pub(crate) fn three_dimensional(&self) -> Option<&LateralLoop> {
+        match self {
+            Self::ThreeDimensional(lateral) => Some(lateral),
+            Self::Hold => None,
+        }
+    }
+
+    /// The 3-D approach's lateral loop, to change; `None` in a loop without it.
+    pub(crate) fn three_dimensional_mut(&mut self) -> Option<&mut LateralLoop> {
+        match self {
+            Self::ThreeDimensional(lateral) => Some(lateral),
+            Self::Hold => None,
+        }
+    }
+}
+
+impl Reseed for BuiltLateral {
+    fn reseed(&mut self, key: u64) {
+        if let Self::ThreeDimensional(lateral) = self {
+            lateral.reseed(key);
+        }
+    }
 }
 
 /// What the 3-D approach adds to a run at its start.
@@ -310,13 +361,13 @@ pub(crate) fn start(
     scenario: &Scenario,
     streams: &RandomStreams,
 ) -> (
-    Option<LateralLoop>,
+    BuiltLateral,
     Option<LateralStreams>,
     crate::environment::WindModel,
 ) {
     use crate::aircraft::Plant;
     let Some(built) = built else {
-        return (None, None, wind);
+        return (BuiltLateral::Hold, None, wind);
     };
     SixDofAircraft::write_state_at(
         &built.trim.state(x_m, 0.0, h_m),
@@ -348,7 +399,7 @@ pub(crate) fn start(
         .initial_state(&yaw, layout.yaw_law.of_mut(initial));
     let deck_angle = scenario.environment.deck.ship_mean_heading_rad();
     (
-        Some(lateral),
+        BuiltLateral::ThreeDimensional(lateral),
         Some(built.streams),
         wind.three_dimensional(deck_angle, streams),
     )

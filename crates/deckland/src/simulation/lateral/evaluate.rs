@@ -23,6 +23,10 @@ impl LateralPart for LateralLoop {
         &super::LATERAL_APPROACH_COLUMNS
     }
 
+    fn surface_travel_rad(&self) -> Option<(f64, f64)> {
+        Some((self.aileron.max_rad, self.rudder.max_rad))
+    }
+
     /// The equivalent longitudinal pose of the ship's 3-D view.
     #[inline(always)]
     fn ship_pose(&self, parts: ShipParts<'_>, x: &[f64], t: f64) -> (ShipPose, ShipPoseRate) {

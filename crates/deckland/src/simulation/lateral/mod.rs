@@ -23,7 +23,7 @@
 //!
 //! Otherwise the 6-DOF's aileron and rudder are held at their trim (`lateral_hold`).
 
-mod build;
+pub(crate) mod build;
 mod evaluate;
 pub mod floor;
 pub mod forecast;

@@ -42,6 +42,11 @@ pub(crate) trait LateralPart {
     /// none in a loop without it.
     fn recorded_columns(&self) -> &'static [RecordedColumn];
 
+    /// The travel either side of neutral (rad) of the surfaces this part commands, the
+    /// aileron's and the rudder's: the lateral keys a step may take; none where the part
+    /// commands none.
+    fn surface_travel_rad(&self) -> Option<(f64, f64)>;
+
     /// The ship's pose and its rate at `t` (s) as the longitudinal blocks see it, for the
     /// state `x`.
     fn ship_pose(&self, parts: ShipParts<'_>, x: &[f64], t: f64) -> (ShipPose, ShipPoseRate);
@@ -93,6 +98,13 @@ pub(crate) trait LateralPart {
     fn sensed_roll(&self) -> (Option<LateralShipMotionMeasurement>, (f64, f64));
 }
 
+/// Work done with the loop's lateral part, instantiated for each
+/// ([`super::build::BuiltLateral::with`]).
+pub(crate) trait WithLateralPart {
+    type Output;
+    fn with<L: LateralPart>(self, lateral: &L) -> Self::Output;
+}
+
 /// The lateral part of a loop without the 3-D approach: the ship's longitudinal pose and
 /// the plant's lateral commands held at trim (`lateral_hold`).
 #[derive(Debug, Clone, Copy)]
@@ -103,6 +115,10 @@ impl LateralPart for LateralHold {
 
     fn recorded_columns(&self) -> &'static [RecordedColumn] {
         &[]
+    }
+
+    fn surface_travel_rad(&self) -> Option<(f64, f64)> {
+        None
     }
 
     #[inline(always)]
