@@ -23,8 +23,10 @@ SETUP = {
     # the plant registry: the models by name, and the built plant of each
     "crates/deckland/src/aircraft/plant.rs",
     "crates/deckland/src/aircraft/built_plant.rs",
-    # the front end's registry: each model's `--model` value and trim/linearize commands
-    "crates/deckland-cli/src/commands/models.rs",
+    # the front end's registry: each model's trim/linearize commands, `--model` value and
+    # approach in words
+    "crates/deckland-cli/src/commands/models/mod.rs",
+    "crates/deckland-cli/src/commands/models/names.rs",
     # reading scenario files
     "crates/deckland/src/scenario/aircraft.rs",
 }

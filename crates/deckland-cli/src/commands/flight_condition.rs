@@ -35,7 +35,7 @@ pub struct TrimArgs {
     pub configuration: ConfigurationName,
     /// Aircraft model: the paper's longitudinal 3-DOF model, or the 6-DOF model with
     /// the lateral-directional axes (docs/six-dof.md).
-    #[arg(long, default_value = "3dof", value_parser = super::models::plant_model_parser())]
+    #[arg(long, default_value = "3dof", value_parser = super::models::names::plant_model_parser())]
     pub model: PlantModel,
     /// Sideslip β (deg), positive with the relative wind from the right; 6-DOF only.
     #[arg(

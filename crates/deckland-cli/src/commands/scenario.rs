@@ -49,7 +49,7 @@ pub fn run(args: &ScenarioArgs) -> Result<()> {
             Mission::Approach => {
                 approach = format!(
                     "an approach, {}, for `deckland run` and `deckland campaign`",
-                    super::models::approach_in_words(&scenario)
+                    super::models::names::approach_in_words(&scenario)
                 );
                 approach.as_str()
             }

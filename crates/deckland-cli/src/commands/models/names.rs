@@ -1,37 +1,10 @@
-//! The front end's registry of the library's plant models ([`PlantModel`]): each
-//! model's `--model` value, the `trim` and `linearize` commands that fly it, and the
-//! approach it flies in words. The commands choose by the model here and nowhere else
-//! (`lib.rs` dispatches through it).
+//! The plant models' names on the command line and the approach each flies, in words:
+//! the part of the model registry (`models/mod.rs`) that the commands' options read.
 
-use anyhow::Result;
 use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
 use deckland::aircraft::PlantModel;
 use deckland::monte_carlo::flies_three_dimensional_approach;
 use deckland::scenario::Scenario;
-
-use super::flight_condition::TrimArgs;
-
-/// A model's flight-condition commands.
-pub struct ModelCommands {
-    /// `deckland trim`.
-    pub trim: fn(&TrimArgs) -> Result<()>,
-    /// `deckland linearize`.
-    pub linearize: fn(&TrimArgs) -> Result<()>,
-}
-
-/// The commands that trim and linearise `model`.
-pub fn commands(model: PlantModel) -> ModelCommands {
-    match model {
-        PlantModel::ThreeDof => ModelCommands {
-            trim: super::trim::run_three_dof,
-            linearize: super::linearize::run_three_dof,
-        },
-        PlantModel::SixDof => ModelCommands {
-            trim: super::six_dof::run_trim,
-            linearize: super::six_dof::run_linearize,
-        },
-    }
-}
 
 /// The `--model` names of the library's plant models ([`PlantModel::name`]), each with
 /// its one-line summary in the help.
