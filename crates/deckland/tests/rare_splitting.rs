@@ -129,5 +129,8 @@ fn bad_requests_are_named() {
     });
     assert!(message.contains("no threshold"), "{message}");
     let message = error(RareRequest::new(RareEvent::OffCentre, 1));
-    assert!(message.contains("3-D approach"), "{message}");
+    assert!(
+        message.contains("3-D approach") && message.contains("`cross_track_m`"),
+        "{message}"
+    );
 }

@@ -9,7 +9,9 @@ use crate::experiments::{ApproachRun, APPROACH_COLUMNS, APPROACH_RECORD_INTERVAL
 use crate::monte_carlo::dispersed_run_scenario;
 use crate::recording::TimeSeriesRecorder;
 use crate::scenario::Scenario;
-use crate::simulation::{Event, Recorder, RunSummary, SetupError, Signals, Simulation};
+use crate::simulation::{
+    Event, Recorder, RunSummary, SetupError, SignalId, Signals, Simulation, SIGNALS,
+};
 
 /// Why an approach cannot be scored.
 #[derive(Debug, thiserror::Error)]
@@ -20,10 +22,15 @@ pub enum FlightError {
     /// An event whose score reads a signal the loop does not compute
     /// ([`RareEvent::signals_read`]): `off_centre` asked of the longitudinal approach.
     #[error(
-        "the event `off_centre` needs the 3-D approach ([aircraft] model = \"6dof\"); \
-         this scenario flies the longitudinal one"
+        "the event `{event}` reads `{signal}`, which only the 3-D approach computes \
+         ([aircraft] model = \"6dof\"); this scenario flies the longitudinal one"
     )]
-    NeedsThreeDimensions,
+    NeedsThreeDimensions {
+        /// The event's name.
+        event: &'static str,
+        /// The signal's name.
+        signal: &'static str,
+    },
 }
 
 /// One approach of a scenario, scored for one event.
@@ -53,12 +60,16 @@ impl ApproachFlight {
     ) -> Result<Self, FlightError> {
         let scenario = Arc::new(*scenario);
         let simulation = Simulation::new(&dispersed_run_scenario(&scenario, scenario.seed).0)?;
-        let computes = |signal| {
+        let computes = |signal: &SignalId| {
             let mut columns = APPROACH_COLUMNS.iter().chain(simulation.lateral_columns());
-            columns.any(|column| column.signal == signal)
+            columns.any(|column| column.signal == *signal)
         };
-        if !event.signals_read().iter().all(|&signal| computes(signal)) {
-            return Err(FlightError::NeedsThreeDimensions);
+        if let Some(missing) = event.signals_read().iter().find(|s| !computes(s)) {
+            let spec = SIGNALS.iter().find(|spec| spec.id == *missing);
+            return Err(FlightError::NeedsThreeDimensions {
+                event: event.name(),
+                signal: spec.map_or("?", |spec| spec.name),
+            });
         }
         let score = EventScore::new(event, thresholds, &scenario, &simulation);
         Ok(Self {
