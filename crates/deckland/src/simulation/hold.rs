@@ -67,8 +67,9 @@ impl ClosedLoop {
             .as_mut()
             .map(|computer| computer.starts_frame(t));
         let decided = waving_off || decision.is_some();
-        let (lateral, lateral_decision) =
-            self.hold_lateral(t, x, streams, (dt, frame_starts), decided, &held.wind);
+        let (lateral, lateral_decision) = self
+            .hold_lateral(t, x, streams, (dt, frame_starts), decided, &held.wind)
+            .unwrap_or_default();
         held.lateral = lateral;
         let decision = decision.or(lateral_decision);
         held.wave_off_decided = decision.map(|decision| (t, decision));

@@ -15,29 +15,12 @@ use crate::environment::{LateralShipMotionState, ShipMotionState, Wind};
 impl ClosedLoop {
     /// The 3-D approach's part of [`ClosedLoop::hold`] at `t` (state `x`, the step `dt`
     /// (s), whether a flight computer's frame starts, `frame_starts`, `None` without a
-    /// computer; the wind held over the step `wind`): what the lateral loop holds over
-    /// the step and a wave-off it decides; outside the 3-D approach, zeros and none.
-    /// `decided` says whether a wave-off is flown or decided already (then no lateral
-    /// decision is taken).
+    /// computer; the wind held over the step `wind`): the lateral loop's sensing, noise
+    /// and guidance frame, what it holds over the step and a wave-off it decides; `None`
+    /// outside the 3-D approach. `decided` says whether a wave-off is flown or decided
+    /// already (then no lateral decision is taken).
     #[inline]
     pub(crate) fn hold_lateral(
-        &mut self,
-        t: f64,
-        x: &[f64],
-        streams: &mut StepStreams,
-        (dt, frame_starts): (f64, Option<bool>),
-        decided: bool,
-        wind: &Wind,
-    ) -> (HeldLateral, Option<WaveOffDecision>) {
-        self.lateral_step(t, x, streams, (dt, frame_starts), decided, wind)
-            .unwrap_or_default()
-    }
-
-    /// The lateral loop's step at `t`: its sensing, noise and guidance frame, and what
-    /// it holds over the step with the wave-off it decides ([`ClosedLoop::hold_lateral`]);
-    /// `None` outside the 3-D approach.
-    #[inline]
-    fn lateral_step(
         &mut self,
         t: f64,
         x: &[f64],
