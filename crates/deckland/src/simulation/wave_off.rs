@@ -7,6 +7,7 @@
 
 use super::closed_loop::ClosedLoop;
 use super::deck_predictor::{DeckView, HookTrack};
+use super::lateral::build::BuiltLateral;
 use super::outer_loops::OuterLoops;
 use crate::aircraft::AircraftState;
 use crate::control::{
@@ -87,7 +88,7 @@ impl ClosedLoop {
             // The commit point: what the forecast gives now (`simulation/commit.rs`).
             self.commit.record(
                 wave_off.commit_forecast(&inputs),
-                self.lateral.three_dimensional().is_some(),
+                matches!(self.lateral, BuiltLateral::ThreeDimensional(_)),
             );
         }
         if decision.is_none() && wave_off.late_abort_enabled() {

@@ -56,14 +56,6 @@ impl BuiltLateral {
         }
     }
 
-    /// The 3-D approach's lateral loop; `None` in a loop without it.
-    pub(crate) fn three_dimensional(&self) -> Option<&LateralLoop> {
-        match self {
-            Self::ThreeDimensional(lateral) => Some(lateral),
-            Self::Hold => None,
-        }
-    }
-
     /// The 3-D approach's lateral loop, to change; `None` in a loop without it.
     pub(crate) fn three_dimensional_mut(&mut self) -> Option<&mut LateralLoop> {
         match self {
