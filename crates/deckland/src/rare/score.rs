@@ -101,6 +101,17 @@ impl RareEvent {
         }
     }
 
+    /// The parts of the score the event is made of: its own, or all four for `lost`.
+    fn parts_read(self) -> PartsRead {
+        let only = |event: Self| self == event || self == Self::Lost;
+        PartsRead {
+            ramp: only(Self::RampStrike),
+            hard: only(Self::HardLanding),
+            off_centre: only(Self::OffCentre),
+            divergence: only(Self::Divergence),
+        }
+    }
+
     /// The event called `name`; the error lists the names.
     pub fn from_name(name: &str) -> Result<Self, String> {
         Self::ALL
@@ -125,6 +136,15 @@ impl RareEvent {
             Self::Divergence | Self::Lost => None,
         }
     }
+}
+
+/// Which parts of the score an event is made of ([`RareEvent::parts_read`]).
+#[derive(Debug, Clone, Copy)]
+struct PartsRead {
+    ramp: bool,
+    hard: bool,
+    off_centre: bool,
+    divergence: bool,
 }
 
 /// The thresholds that define the events: the campaign's by default.
@@ -296,30 +316,46 @@ impl EventScore {
         }
     }
 
-    /// The forecasts of every part at one step.
+    /// The forecasts at one step of the parts the event is made of (a part the event
+    /// does not read is left open: its forecast would cost a ship forecast a step for
+    /// nothing).
     fn forecast(&mut self, s: &Signals) {
+        let reads = self.event.parts_read();
         let closing_mps = (s.hook_x_rate_mps - s.ship_rate.pitch_centre_x_rate_mps).max(1.0);
         let t = self.thresholds;
-        let (clearance_m, ramp_spread_m) = self.ramp_clearance(s, closing_mps);
-        self.ramp
-            .forecast((t.ramp_clearance_m - clearance_m) / ramp_spread_m);
-        // The time until the hook comes down to the aim point's height at its sink rate
-        // relative to it now (0.5 m/s at least): 0 at touchdown.
-        let aim_rate = self.deck.velocity_along_deck(&s.ship, &s.ship_rate, 0.0);
-        let above_aim_m = (s.hook_h_m - s.aim_point.h_m).max(0.0);
-        let to_touchdown_s = above_aim_m / (aim_rate.h_mps - s.hook_climb_rate_mps).max(0.5);
-        let (sink_rate_mps, sink_spread_mps) = self.sink_rate(s, closing_mps, to_touchdown_s);
-        self.hard
-            .forecast((sink_rate_mps - t.hard_landing_sink_rate_mps) / sink_spread_mps);
-        // The longitudinal approach is flown on the centreline: its cross-track is 0.
-        let cross_track_m = s.lateral.cross_track_m.unwrap_or(0.0);
-        self.off_centre
-            .forecast((cross_track_m.abs() - t.off_centre_m) / OFFSET_SPREAD.at(to_touchdown_s));
-        let alpha_mid = 0.5 * (ALPHA_MAX_RAD + ALPHA_MIN_RAD);
-        let alpha_half = 0.5 * (ALPHA_MAX_RAD - ALPHA_MIN_RAD);
-        let used = ((s.alpha_rad - alpha_mid).abs() / alpha_half)
-            .max(self.min_airspeed_mps / s.airspeed_mps.max(1e-9));
-        self.divergence.forecast(10.0 * (used - 1.0));
+        if reads.ramp {
+            let (clearance_m, ramp_spread_m) = self.ramp_clearance(s, closing_mps);
+            self.ramp
+                .forecast((t.ramp_clearance_m - clearance_m) / ramp_spread_m);
+        }
+        if reads.hard || reads.off_centre {
+            // The time until the hook comes down to the aim point's height at its sink
+            // rate relative to it now (0.5 m/s at least): 0 at touchdown.
+            let aim_rate = self.deck.velocity_along_deck(&s.ship, &s.ship_rate, 0.0);
+            let above_aim_m = (s.hook_h_m - s.aim_point.h_m).max(0.0);
+            let to_touchdown_s = above_aim_m / (aim_rate.h_mps - s.hook_climb_rate_mps).max(0.5);
+            if reads.hard {
+                let (sink_rate_mps, sink_spread_mps) =
+                    self.sink_rate(s, closing_mps, to_touchdown_s);
+                self.hard
+                    .forecast((sink_rate_mps - t.hard_landing_sink_rate_mps) / sink_spread_mps);
+            }
+            if reads.off_centre {
+                // The longitudinal approach is flown on the centreline: its cross-track
+                // is 0.
+                let cross_track_m = s.lateral.cross_track_m.unwrap_or(0.0);
+                self.off_centre.forecast(
+                    (cross_track_m.abs() - t.off_centre_m) / OFFSET_SPREAD.at(to_touchdown_s),
+                );
+            }
+        }
+        if reads.divergence {
+            let alpha_mid = 0.5 * (ALPHA_MAX_RAD + ALPHA_MIN_RAD);
+            let alpha_half = 0.5 * (ALPHA_MAX_RAD - ALPHA_MIN_RAD);
+            let used = ((s.alpha_rad - alpha_mid).abs() / alpha_half)
+                .max(self.min_airspeed_mps / s.airspeed_mps.max(1e-9));
+            self.divergence.forecast(10.0 * (used - 1.0));
+        }
     }
 
     /// The hook's clearance over the ramp when it gets there, forecast now, and how far
@@ -550,5 +586,62 @@ impl Recorder for EventScore {
             self.divergence.decide(0.0);
         }
         self.ended = true;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Records nothing.
+    struct Unrecorded;
+    impl Recorder for Unrecorded {}
+
+    /// A single event's score forecasts its own part exactly as `lost`, which forecasts
+    /// all four, does at every step, and leaves the others open: scoring one event costs
+    /// only its own forecast and changes nothing of it. Flown in the paper's sea, where
+    /// every forecast is non-trivial.
+    #[test]
+    fn a_single_event_forecasts_its_own_part_as_lost_does_and_no_other() {
+        let scenario = Scenario {
+            seed: 5,
+            ..Scenario::papers_sea()
+        };
+        let thresholds = EventThresholds::of(&scenario);
+        let mut simulation = Simulation::new(&scenario).expect("valid");
+        let mut lost = EventScore::new(RareEvent::Lost, thresholds, &scenario, &simulation);
+        let mut singles: Vec<EventScore> = [
+            RareEvent::RampStrike,
+            RareEvent::HardLanding,
+            RareEvent::OffCentre,
+            RareEvent::Divergence,
+        ]
+        .into_iter()
+        .map(|event| EventScore::new(event, thresholds, &scenario, &simulation))
+        .collect();
+        let mut steps = 0;
+        loop {
+            lost.observe(&simulation);
+            let signals = simulation.signals();
+            for single in &mut singles {
+                single.observe(&simulation);
+                single.sample(&signals);
+            }
+            lost.sample(&signals);
+            let parts =
+                |score: &EventScore| [score.ramp, score.hard, score.off_centre, score.divergence];
+            for (i, single) in singles.iter().enumerate() {
+                for (k, (own, all)) in parts(single).iter().zip(parts(&lost)).enumerate() {
+                    let expected = if k == i { all } else { Part::OPEN };
+                    assert_eq!(*own, expected, "event {i}, part {k}, step {steps}");
+                }
+            }
+            if simulation.advance(&mut Unrecorded).is_some() {
+                break;
+            }
+            steps += 1;
+        }
+        // The forecasts moved: the paper's sea's ramp and sink rate are not constant.
+        assert!(steps > 10_000 && lost.ramp.score.is_finite() && lost.hard.score.is_finite());
     }
 }
