@@ -15,9 +15,12 @@ use crate::recording::SummaryRecorder;
 use crate::scenario::Scenario;
 use crate::simulation::Simulation;
 
-/// Steps between two stored copies of a flight (1 s at the 1-ms step): a branch replays at
-/// most this many steps, and a flight of 30 s keeps about 30 copies.
-pub const CHECKPOINT_EVERY_STEPS: usize = 1000;
+/// Steps between two stored copies of a flight (0.1 s at the 1-ms step): a branch replays
+/// at most this many steps, and a flight of 30 s keeps about 300 copies. Against a copy a
+/// second, a tenth of the replay at ten times the copies: at 10⁻⁶ in the paper's set (a
+/// batch of 8 repetitions in flight) about a tenth more levels for the same steps, and a
+/// peak memory of 1.5 GB against 0.3 GB (docs/rare-events.md).
+pub const CHECKPOINT_EVERY_STEPS: usize = 100;
 
 /// At most this many flights that reached the event are kept for replay.
 pub const MAX_EVENT_FLIGHTS: usize = 20;
