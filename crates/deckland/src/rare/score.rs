@@ -304,16 +304,24 @@ impl EventScore {
         self.ended || parts[..count].iter().all(|part| part.decided)
     }
 
-    /// The parts the event is made of (the first `count` of the four).
+    /// The parts the event is made of ([`RareEvent::parts_read`]; the first `count` of
+    /// the four).
     fn parts(&self) -> ([Part; 4], usize) {
-        let all = [self.ramp, self.hard, self.off_centre, self.divergence];
-        match self.event {
-            RareEvent::RampStrike => ([self.ramp; 4], 1),
-            RareEvent::HardLanding => ([self.hard; 4], 1),
-            RareEvent::OffCentre => ([self.off_centre; 4], 1),
-            RareEvent::Divergence => ([self.divergence; 4], 1),
-            RareEvent::Lost => (all, 4),
+        let reads = self.event.parts_read();
+        let mut parts = [Part::OPEN; 4];
+        let mut count = 0;
+        for (read, part) in [
+            (reads.ramp, self.ramp),
+            (reads.hard, self.hard),
+            (reads.off_centre, self.off_centre),
+            (reads.divergence, self.divergence),
+        ] {
+            if read {
+                parts[count] = part;
+                count += 1;
+            }
         }
+        (parts, count)
     }
 
     /// The forecasts at one step of the parts the event is made of (a part the event
