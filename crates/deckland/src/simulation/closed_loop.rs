@@ -12,10 +12,12 @@ use super::blocks::plant::{BuiltPlant, PlantOutputs};
 use super::blocks::{direct_lift, plant, wake_feedforward, BlockPosition, PlacedBlock};
 use super::commit::CommitPoint;
 use super::deck_predictor::{BuiltDeckPredictor, SensedRoll};
+use super::events::Events;
 use super::flight_computer::FlightComputer;
 pub use super::held::{HeldInputs, StepStreams};
 use super::lateral::build::BuiltLateral;
-use super::lateral::part::{LateralPart, ShipParts, WithLateralPart};
+use super::lateral::observe::ApproachStep;
+use super::lateral::part::{LateralPart, ShipParts, WithLateralPart, WithLateralPartMut};
 pub use super::layout::LoopLayout;
 use super::outer_loop_signals::{OuterLoopInputs, OuterLoopOutputs};
 use super::outer_loops::OuterLoops;
@@ -30,6 +32,7 @@ use crate::environment::{
     DeckGeometry, ShipMotion, ShipMotionState, ShipPose, ShipPoseRate, WindModel,
 };
 use crate::integration::VectorSystem;
+use crate::metrics::TrapSheet;
 use crate::random::Reseed;
 use crate::sensors::{LateralShipMotionMeasurement, PitchSensor};
 
@@ -253,6 +256,41 @@ impl ClosedLoop {
             }
         }
         self.with_lateral_part(Travel)
+    }
+
+    /// One step of an approach seen by the loop's lateral part, after the hook's `events`
+    /// were found on `bus` (`waved_off` once the wave-off is flown): the 3-D approach's
+    /// trap sheet and its lateral touchdown (`LateralPart::observe_approach`).
+    #[inline]
+    pub(crate) fn observe_approach(&mut self, bus: &Signals, waved_off: bool, events: &mut Events) {
+        struct Observe<'a>(ApproachStep<'a>);
+        impl WithLateralPartMut for Observe<'_> {
+            type Output = ();
+            #[inline(always)]
+            fn with<L: LateralPart>(self, lateral: &mut L) {
+                lateral.observe_approach(self.0);
+            }
+        }
+        let deck = &self.deck;
+        self.lateral.with_mut(Observe(ApproachStep {
+            bus,
+            waved_off,
+            deck,
+            events,
+        }));
+    }
+
+    /// The landing signal officer's trap sheet the loop's lateral part kept of the
+    /// approach: the 3-D approach's; none otherwise.
+    pub(crate) fn trap_sheet(&self) -> Option<TrapSheet> {
+        struct Sheet;
+        impl WithLateralPart for Sheet {
+            type Output = Option<TrapSheet>;
+            fn with<L: LateralPart>(self, lateral: &L) -> Self::Output {
+                lateral.trap_sheet()
+            }
+        }
+        self.with_lateral_part(Sheet)
     }
 
     /// `work` done with the loop's lateral part ([`BuiltLateral::with`]).

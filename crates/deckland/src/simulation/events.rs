@@ -2,8 +2,6 @@
 //! sign change of one function of the hook's position between two samples, located by
 //! linear interpolation inside the step (docs/model.md §7).
 
-use super::lateral::touchdown::{ramp_lineup_error_deg, MAX_OFF_CENTRE_M};
-use super::lateral::LateralTouchdown;
 use super::outcome::{Event, Touchdown};
 use super::signals::Signals;
 use crate::environment::DeckGeometry;
@@ -30,9 +28,6 @@ pub(crate) struct HookProbe {
     sink_rate_mps: f64,
     theta_rad: f64,
     airspeed_mps: f64,
-    /// The 3-D approach's cross-track (m), its rate (m/s), bank (rad) and heading to
-    /// the centreline (rad).
-    lateral: Option<[f64; 4]>,
 }
 
 impl HookProbe {
@@ -49,7 +44,6 @@ impl HookProbe {
             sink_rate_mps: deck_velocity.h_mps - s.hook_climb_rate_mps,
             theta_rad: s.theta_rad,
             airspeed_mps: s.airspeed_mps,
-            lateral: lateral_probe(s),
         }
     }
 }
@@ -60,7 +54,8 @@ fn crossing(before: f64, now: f64) -> f64 {
     before / (before - now)
 }
 
-fn lerp(a: f64, b: f64, f: f64) -> f64 {
+/// The value a fraction `f` of the way from `a` to `b`.
+pub(crate) fn lerp(a: f64, b: f64, f: f64) -> f64 {
     a + (b - a) * f
 }
 
@@ -70,8 +65,6 @@ pub(crate) struct EventDetector {
     deck: DeckGeometry,
     last_wire_m: f64,
     previous: Option<HookProbe>,
-    /// The 3-D approach's cross-track at the ramp (m).
-    ramp_cross_track_m: Option<f64>,
 }
 
 impl EventDetector {
@@ -82,7 +75,6 @@ impl EventDetector {
             deck,
             last_wire_m,
             previous: None,
-            ramp_cross_track_m: None,
         }
     }
 
@@ -105,12 +97,11 @@ impl EventDetector {
             return events;
         }
         let now = HookProbe::new(&self.deck, s);
+        events.crossings.probed = true;
         if let Some(before) = self.previous.replace(now) {
             if before.past_ramp_m < 0.0 && now.past_ramp_m >= 0.0 {
                 let f = crossing(before.past_ramp_m, now.past_ramp_m);
-                if let (Some(a), Some(b)) = (before.lateral, now.lateral) {
-                    self.ramp_cross_track_m = Some(lerp(a[0], b[0], f));
-                }
+                events.crossings.ramp = Some(f);
                 events.push(Event::RampCrossing {
                     time_s: lerp(before.time_s, now.time_s, f),
                     clearance_m: lerp(before.above_ramp_m, now.above_ramp_m, f),
@@ -118,16 +109,15 @@ impl EventDetector {
             }
             if now.past_ramp_m >= 0.0 && before.above_deck_m > 0.0 && now.above_deck_m <= 0.0 {
                 let f = crossing(before.above_deck_m, now.above_deck_m);
+                events.crossings.touchdown = Some(f);
                 events.push(Event::Touchdown(Touchdown {
                     time_s: lerp(before.time_s, now.time_s, f),
                     distance_from_aim_m: lerp(before.along_deck_m, now.along_deck_m, f),
                     sink_rate_mps: lerp(before.sink_rate_mps, now.sink_rate_mps, f),
                     pitch_deg: lerp(before.theta_rad, now.theta_rad, f).to_degrees(),
                     airspeed_mps: lerp(before.airspeed_mps, now.airspeed_mps, f),
-                    lateral: before.lateral.zip(now.lateral).map(|(a, b)| {
-                        let at: [f64; 4] = std::array::from_fn(|i| lerp(a[i], b[i], f));
-                        lateral_touchdown(at, self.ramp_cross_track_m, &self.deck)
-                    }),
+                    // The loop's lateral part adds its own (`observe_approach`).
+                    lateral: None,
                 }));
             } else if before.along_deck_m <= self.last_wire_m
                 && now.along_deck_m > self.last_wire_m
@@ -143,15 +133,40 @@ impl EventDetector {
     }
 }
 
+/// Where inside a step the hook's events fell, for the parts that add their own
+/// quantities to them, interpolated as the events' are.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct Crossings {
+    /// Whether the hook was probed at this step (it is near the ship): the step whose
+    /// values the next step's events interpolate from.
+    pub probed: bool,
+    /// The fraction of the step (from its start) at which the hook crossed the ramp.
+    pub ramp: Option<f64>,
+    /// The fraction of the step at which the hook touched down.
+    pub touchdown: Option<f64>,
+}
+
 /// The events of one step (at most a ramp crossing and a touchdown or a wire pass).
 #[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct Events {
     items: [Option<Event>; 2],
     len: usize,
+    /// Where in the step they fell.
+    pub crossings: Crossings,
 }
 
 impl Events {
-    fn push(&mut self, event: Event) {
+    /// The step's touchdown, to add to.
+    pub fn touchdown_mut(&mut self) -> Option<&mut Touchdown> {
+        self.items[..self.len]
+            .iter_mut()
+            .find_map(|event| match event {
+                Some(Event::Touchdown(touchdown)) => Some(touchdown),
+                _ => None,
+            })
+    }
+
+    pub(crate) fn push(&mut self, event: Event) {
         self.items[self.len] = Some(event);
         self.len += 1;
     }
@@ -159,35 +174,5 @@ impl Events {
     /// The events in the order found.
     pub fn iter(&self) -> impl Iterator<Item = &Event> {
         self.items[..self.len].iter().flatten()
-    }
-}
-
-/// The 3-D approach's lateral probe of `s`: cross-track, its rate, bank, heading to the
-/// centreline.
-fn lateral_probe(s: &Signals) -> Option<[f64; 4]> {
-    let lateral = &s.lateral;
-    Some([
-        lateral.cross_track_m?,
-        lateral.cross_track_rate_mps?,
-        s.phi_rad?,
-        s.psi_rad? - lateral.centreline_heading_rad?,
-    ])
-}
-
-/// The lateral outcome at touchdown (docs/model.md §10.4) from the probe interpolated
-/// at touchdown and the cross-track at the ramp.
-fn lateral_touchdown(
-    at: [f64; 4],
-    ramp_cross_track_m: Option<f64>,
-    deck: &DeckGeometry,
-) -> LateralTouchdown {
-    LateralTouchdown {
-        offset_m: at[0],
-        drift_rate_mps: at[1],
-        bank_deg: at[2].to_degrees(),
-        heading_to_centreline_deg: at[3].to_degrees(),
-        ramp_lineup_error_deg: ramp_cross_track_m
-            .map(|offset| ramp_lineup_error_deg(offset, deck.ramp_aft_of_aim_point_m)),
-        off_centre: at[0].abs() > MAX_OFF_CENTRE_M,
     }
 }

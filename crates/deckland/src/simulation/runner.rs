@@ -24,7 +24,6 @@ use super::taps::{NoTaps, Taps};
 use crate::aircraft::{ALPHA_MAX_RAD, ALPHA_MIN_RAD};
 use crate::control::WaveOffDecision;
 use crate::integration::Rk4Workspace;
-use crate::metrics::TrapSheetRecorder;
 use crate::random::Reseed;
 use crate::scenario::Scenario;
 
@@ -103,12 +102,6 @@ pub struct Simulation {
     rules: LandingRules,
     detector: EventDetector,
     statistics: GlidePathStatistics,
-    /// The landing signal officer's trap sheet of a 3-D approach.
-    trap_sheet: TrapSheetRecorder,
-    /// The ramp's distance aft of the aim point along the landing centreline (m).
-    ramp_aft_of_aim_point_m: f64,
-    /// Whether the run flies the 3-D approach (its signals carry a cross track).
-    three_dimensional: bool,
     activity: ActivityStatistics,
     /// The share of the run with the true deck within the recovery limits.
     deck_limits: DeckLimitStatistics,
@@ -168,7 +161,6 @@ impl Simulation {
             deck.deck_height_m,
             scenario.time_step_s,
         );
-        let on_speed_alpha_rad = setup.system.trim.alpha_rad;
         Self {
             system: setup.system,
             state: setup.initial,
@@ -186,9 +178,6 @@ impl Simulation {
             rules: LandingRules::new(&scenario.outcome, deck.wire_positions_m),
             detector: EventDetector::new(deck),
             statistics: GlidePathStatistics::default(),
-            trap_sheet: TrapSheetRecorder::new(deck.ramp_aft_of_aim_point_m, on_speed_alpha_rad),
-            ramp_aft_of_aim_point_m: deck.ramp_aft_of_aim_point_m,
-            three_dimensional: false,
             activity,
             deck_limits,
             ramp_clearance_m: None,
@@ -427,29 +416,23 @@ impl Simulation {
     }
 
     /// An approach's step: its glide-path statistics (the approach's, not a wave-off's
-    /// climb) and its events, each recorded and judged by the landing rules; the end
-    /// the first judged event calls, if any.
+    /// climb) and its events, with what the loop's lateral part adds to them, each
+    /// recorded and judged by the landing rules; the end the first judged event calls,
+    /// if any.
     #[inline]
     fn judge_approach<R: Recorder + ?Sized>(
         &mut self,
         signals: &Signals,
         recorder: &mut R,
     ) -> Option<(EndReason, f64)> {
-        if self.wave_off.is_none() {
+        let waved_off = self.wave_off.is_some();
+        if !waved_off {
             self.statistics.sample(signals);
-            if let Some(cross_track_m) = signals.lateral.cross_track_m {
-                // Distance to the ramp along the final bearing; height above the
-                // glide slope (the glide-path error is positive below it).
-                self.three_dimensional = true;
-                self.trap_sheet.sample(
-                    signals.range_to_go_m - self.ramp_aft_of_aim_point_m,
-                    -signals.glide_path_error_m,
-                    cross_track_m,
-                    signals.alpha_rad,
-                );
-            }
         }
-        for event in self.detector.detect(signals).iter() {
+        let mut events = self.detector.detect(signals);
+        self.system
+            .observe_approach(signals, waved_off, &mut events);
+        for event in events.iter() {
             if let Event::RampCrossing { clearance_m, .. } = event {
                 self.ramp_clearance_m = Some(*clearance_m);
             }
@@ -493,7 +476,7 @@ impl Simulation {
             actuator: self.activity.activity(),
             deck_within_recovery_limits_pct: self.deck_limits.within_pct(),
             commit_forecast: self.system.commit.forecast(),
-            trap_sheet: self.three_dimensional.then(|| self.trap_sheet.sheet()),
+            trap_sheet: self.system.trap_sheet(),
             lso_grade: None,
         };
         let summary = RunSummary {

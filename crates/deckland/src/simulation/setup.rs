@@ -396,7 +396,13 @@ fn lay_out_blocks(
         controllers.deck_predictor.state_names(),
         direct_lift.is_some(),
     );
-    let three_d = super::lateral::attach(scenario, &plant, gamma, streams, &mut layout)?;
+    let three_d = super::lateral::attach(
+        scenario,
+        &plant,
+        (gamma, controllers.trim_point.alpha_rad),
+        streams,
+        &mut layout,
+    )?;
     let mut user_blocks: Vec<PlacedBlock> = Vec::with_capacity(blocks.len());
     for (position, block) in blocks {
         check_placement(block.as_ref(), *position, &user_blocks)?;

@@ -2,7 +2,7 @@
 
 use std::sync::Arc;
 
-use super::part::{LateralHold, WithLateralPart};
+use super::part::{LateralHold, WithLateralPart, WithLateralPartMut};
 use super::{forecast, LateralLoop, LateralStreams, SurfaceTrim};
 use crate::aircraft::six_dof::{
     linearize_six_dof, trim_six_dof, SixDofAircraft, SixDofTrimPoint, SixDofTrimRequest,
@@ -53,6 +53,15 @@ impl BuiltLateral {
         match self {
             Self::ThreeDimensional(lateral) => work.with(lateral),
             Self::Hold => work.with(&LateralHold),
+        }
+    }
+
+    /// Does `work` that changes the lateral part, whichever it is, as [`Self::with`].
+    #[inline(always)]
+    pub(crate) fn with_mut<W: WithLateralPartMut>(&mut self, work: W) -> W::Output {
+        match self {
+            Self::ThreeDimensional(lateral) => work.with(lateral),
+            Self::Hold => work.with(&mut LateralHold),
         }
     }
 
@@ -127,12 +136,12 @@ pub(crate) fn steady_wind(scenario: &Scenario) -> Wind {
 }
 
 /// The 3-D approach's parts for `aircraft` on the air-relative flight path
-/// `flight_path_angle_rad`; a crosswind the aircraft cannot crab into is refused,
-/// naming it.
+/// `flight_path_angle_rad` at the on-speed angle of attack `on_speed_alpha_rad` (the
+/// approach's trim); a crosswind the aircraft cannot crab into is refused, naming it.
 pub(crate) fn build(
     scenario: &Scenario,
     aircraft: &SixDofAircraft,
-    flight_path_angle_rad: f64,
+    (flight_path_angle_rad, on_speed_alpha_rad): (f64, f64),
     streams: &RandomStreams,
 ) -> Result<ThreeDimensional, ParameterError> {
     let env = &scenario.environment;
@@ -185,6 +194,7 @@ pub(crate) fn build(
             .control
             .flight_computer_rate_hz
             .map(|rate_hz| 1.0 / rate_hz),
+        observation: super::observe::ApproachObservation::new(deck, on_speed_alpha_rad),
     };
     Ok(ThreeDimensional {
         lateral,
@@ -307,7 +317,7 @@ pub(crate) fn test_loop(deck: &DeckGeometry, ship: &crate::environment::ShipMoti
     let built = build(
         &scenario,
         &aircraft,
-        -3.5_f64.to_radians(),
+        (-3.5_f64.to_radians(), 0.14),
         &RandomStreams::new(1),
     )
     .expect("the default 3-D approach builds");
@@ -318,12 +328,13 @@ pub(crate) fn test_loop(deck: &DeckGeometry, ship: &crate::environment::ShipMoti
     }
 }
 
-/// Builds the 3-D approach's parts when `scenario` flies it with `plant`, and lays out
-/// their states in `layout`.
+/// Builds the 3-D approach's parts when `scenario` flies it with `plant` (on the flight
+/// path and at the on-speed angle of attack of [`build`]), and lays out their states in
+/// `layout`.
 pub(crate) fn attach(
     scenario: &Scenario,
     plant: &crate::simulation::blocks::plant::BuiltPlant,
-    flight_path_angle_rad: f64,
+    flight_path_and_alpha_rad: (f64, f64),
     streams: &RandomStreams,
     layout: &mut crate::simulation::layout::LoopLayout,
 ) -> Result<Option<ThreeDimensional>, ParameterError> {
@@ -333,7 +344,7 @@ pub(crate) fn attach(
     if !flies_three_dimensional(scenario, true) {
         return Ok(None);
     }
-    let built = build(scenario, aircraft, flight_path_angle_rad, streams)?;
+    let built = build(scenario, aircraft, flight_path_and_alpha_rad, streams)?;
     layout.add_lateral(
         built.lateral.roll.state_names(),
         built.lateral.yaw.state_names(),

@@ -2,6 +2,7 @@
 //! ([`LateralPart`]): `ship` (the 3-D pose), `wind` (its y component onto the bus),
 //! `lineup` and `lateral_laws`, and their state rates (docs/model.md §10.1–10.3).
 
+use super::observe::ApproachStep;
 use super::part::{LateralPart, ShipParts};
 use super::pose::{DeckView3d, ShipStatesAt};
 use super::{HeldLateral, LateralLoop, LateralMeasurements};
@@ -10,6 +11,7 @@ use crate::environment::{
     DeckGeometry, EarthPoint, EarthVelocity, LateralShipMotionState, ShipMotionState, ShipPose,
     ShipPoseRate,
 };
+use crate::metrics::TrapSheet;
 use crate::sensors::LateralShipMotionMeasurement;
 use crate::simulation::flight_computer::HeldCommands;
 use crate::simulation::layout::LoopLayout;
@@ -18,6 +20,14 @@ use crate::simulation::taps::{LoopBreak, Taps};
 
 impl LateralPart for LateralLoop {
     type View = DeckView3d;
+
+    fn observe_approach(&mut self, step: ApproachStep<'_>) {
+        self.observation.observe(step);
+    }
+
+    fn trap_sheet(&self) -> Option<TrapSheet> {
+        self.observation.trap_sheet()
+    }
 
     fn recorded_columns(&self) -> &'static [RecordedColumn] {
         &super::LATERAL_APPROACH_COLUMNS

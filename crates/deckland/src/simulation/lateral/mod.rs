@@ -29,6 +29,7 @@ pub mod floor;
 pub mod forecast;
 mod free_response;
 mod hold;
+pub(crate) mod observe;
 pub(crate) mod part;
 pub(crate) mod pose;
 pub mod touchdown;
@@ -158,6 +159,9 @@ pub(crate) struct LateralLoop {
     /// With a flight computer, its frame period (s): the ship's view is computed at each
     /// frame's start and carried over the frame ([`LateralLoop::deck_view`]).
     pub view_frame_period_s: Option<f64>,
+    /// What the approach keeps of its flight for the outcome: the trap sheet and the
+    /// lateral touchdown.
+    pub observation: observe::ApproachObservation,
 }
 
 /// The random streams of the 3-D approach, drawn from step by step.

@@ -7,11 +7,13 @@
 //! once per evaluation as the plant is: the blocks' code has no branch on whether the
 //! approach is 3-D.
 
+use super::observe::ApproachStep;
 use super::HeldLateral;
 use crate::aircraft::Plant;
 use crate::environment::{
     DeckGeometry, EarthVelocity, ShipMotion, ShipMotionState, ShipPose, ShipPoseRate,
 };
+use crate::metrics::TrapSheet;
 use crate::sensors::LateralShipMotionMeasurement;
 use crate::simulation::blocks::plant;
 use crate::simulation::flight_computer::HeldCommands;
@@ -96,6 +98,15 @@ pub(crate) trait LateralPart {
     /// the landing point's and the ramp's rise per unit sin φ_s (m): what the deck
     /// predictor's `SensedRoll` is made of.
     fn sensed_roll(&self) -> (Option<LateralShipMotionMeasurement>, (f64, f64));
+
+    /// One step of an approach seen by the part, after the hook's events were found:
+    /// what it keeps for the outcome, and its own quantities added to the events. A loop
+    /// without lateral motion keeps nothing.
+    fn observe_approach(&mut self, step: ApproachStep<'_>);
+
+    /// The landing signal officer's trap sheet of the approach the part observed; none
+    /// where it keeps none.
+    fn trap_sheet(&self) -> Option<TrapSheet>;
 }
 
 /// Work done with the loop's lateral part, instantiated for each
@@ -103,6 +114,13 @@ pub(crate) trait LateralPart {
 pub(crate) trait WithLateralPart {
     type Output;
     fn with<L: LateralPart>(self, lateral: &L) -> Self::Output;
+}
+
+/// Work that changes the loop's lateral part, instantiated for each
+/// ([`super::build::BuiltLateral::with_mut`]).
+pub(crate) trait WithLateralPartMut {
+    type Output;
+    fn with<L: LateralPart>(self, lateral: &mut L) -> Self::Output;
 }
 
 /// The lateral part of a loop without the 3-D approach: the ship's longitudinal pose and
@@ -180,6 +198,13 @@ impl LateralPart for LateralHold {
     #[inline(always)]
     fn sensed_roll(&self) -> (Option<LateralShipMotionMeasurement>, (f64, f64)) {
         (None, (0.0, 0.0))
+    }
+
+    #[inline(always)]
+    fn observe_approach(&mut self, _: ApproachStep<'_>) {}
+
+    fn trap_sheet(&self) -> Option<TrapSheet> {
+        None
     }
 }
 

@@ -4,31 +4,12 @@
 //! in degrees as the landing signal officer grades it (the angle off the centreline seen
 //! from the aim point); and whether the touchdown is off centre.
 
-use serde::Serialize;
-
 pub use crate::control::wave_off_lateral::MAX_OFF_CENTRE_M;
+pub use crate::simulation::outcome::LateralTouchdown;
 /// Bank limit at touchdown reported as a safety statistic (deg): 5, an assumption.
 pub const MAX_TOUCHDOWN_BANK_DEG: f64 = 5.0;
 /// Drift limit at touchdown reported as a safety statistic (m/s): 1.5, an assumption.
 pub const MAX_TOUCHDOWN_DRIFT_MPS: f64 = 1.5;
-
-/// The lateral outcome of a 3-D approach.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct LateralTouchdown {
-    /// The hook's offset right of the centreline at touchdown (m).
-    pub offset_m: f64,
-    /// Its rate across the centreline relative to the deck (m/s, right).
-    pub drift_rate_mps: f64,
-    /// Bank angle at touchdown (deg, right wing down).
-    pub bank_deg: f64,
-    /// Heading relative to the centreline at touchdown (deg, nose right).
-    pub heading_to_centreline_deg: f64,
-    /// Lineup error at the ramp: the angle of the hook off the centreline seen from the
-    /// aim point (deg, right); `None` if the hook did not cross the ramp.
-    pub ramp_lineup_error_deg: Option<f64>,
-    /// Whether the touchdown is more than [`MAX_OFF_CENTRE_M`] off the centreline.
-    pub off_centre: bool,
-}
 
 /// The lineup error at the ramp (deg): the hook `offset_m` right of the centreline
 /// `ramp_aft_of_aim_point_m` aft of the aim point, seen from the aim point.

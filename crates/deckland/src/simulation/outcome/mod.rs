@@ -65,7 +65,30 @@ pub struct Touchdown {
     pub airspeed_mps: f64,
     /// The 3-D approach's lateral outcome; `None` (and not written) outside it.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub lateral: Option<super::lateral::LateralTouchdown>,
+    pub lateral: Option<LateralTouchdown>,
+}
+
+/// The lateral outcome of a 3-D approach (docs/model.md §10.4): at touchdown the hook's
+/// offset from the landing area's centreline, its drift across it relative to the deck,
+/// the bank and the heading to the centreline; at the ramp the lineup error as the
+/// landing signal officer grades it.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct LateralTouchdown {
+    /// The hook's offset right of the centreline at touchdown (m).
+    pub offset_m: f64,
+    /// Its rate across the centreline relative to the deck (m/s, right).
+    pub drift_rate_mps: f64,
+    /// Bank angle at touchdown (deg, right wing down).
+    pub bank_deg: f64,
+    /// Heading relative to the centreline at touchdown (deg, nose right).
+    pub heading_to_centreline_deg: f64,
+    /// Lineup error at the ramp: the angle of the hook off the centreline seen from the
+    /// aim point (deg, right); `None` if the hook did not cross the ramp.
+    pub ramp_lineup_error_deg: Option<f64>,
+    /// Whether the touchdown is more than
+    /// [`MAX_OFF_CENTRE_M`](crate::control::wave_off_lateral::MAX_OFF_CENTRE_M) off the
+    /// centreline.
+    pub off_centre: bool,
 }
 
 /// Something that happened during a run, found by a sign change between two steps and
@@ -507,7 +530,7 @@ pub struct RunSummary {
 impl RunSummary {
     /// The lateral outcome of the touchdown, if the run is a 3-D approach that touched
     /// down.
-    pub fn lateral_touchdown(&self) -> Option<&super::lateral::LateralTouchdown> {
+    pub fn lateral_touchdown(&self) -> Option<&LateralTouchdown> {
         self.touchdown.as_ref().and_then(|t| t.lateral.as_ref())
     }
 }
