@@ -222,3 +222,29 @@ fn a_wave_off_is_an_event_then_the_end() {
     );
     assert_eq!(simulation.wave_off_decision(), Some((time_s, decision)));
 }
+
+/// A copy of a flight made at any step flies on as the original does, to the bit (a
+/// rare-event branch is such a copy, docs/rare-events.md). The default's 80-Hz flight
+/// computer has frames of 12.5 steps, so a copy at step 10 006 is made inside one, where
+/// the 3-D approach carries the view of the deck it computed at the frame's start.
+#[test]
+fn a_copy_made_inside_a_frame_flies_on_as_the_original() {
+    let scenario = Scenario {
+        seed: 3,
+        ..Scenario::default()
+    };
+    let mut original = Simulation::new(&scenario).expect("valid");
+    for _ in 0..10_006 {
+        original.step(&mut SummaryRecorder);
+    }
+    let mut copy = original.clone();
+    for _ in 0..2_000 {
+        original.step(&mut SummaryRecorder);
+        copy.step(&mut SummaryRecorder);
+    }
+    let bits = |simulation: &Simulation| -> Vec<u64> {
+        simulation.state().iter().map(|x| x.to_bits()).collect()
+    };
+    assert_eq!(bits(&original), bits(&copy));
+    assert_eq!(original.signals(), copy.signals());
+}

@@ -42,15 +42,25 @@ pub(crate) struct DeckView3d {
 /// view at the step's start three times (the wind's sample, the guidance computer, the
 /// view held over the step), and it is computed once (the same result, to the bit). A
 /// mutex, uncontended (each loop is stepped by one thread at a time), keeps the loop
-/// `Sync`; a clone starts empty.
+/// `Sync`; a clone remembers the same view.
 #[derive(Debug, Default)]
 pub(crate) struct DeckViewMemo {
     last: Mutex<Option<(MemoKey, DeckView3d)>>,
 }
 
 impl Clone for DeckViewMemo {
+    /// With a flight computer the memo is not only a cache: a frame's view is the one
+    /// computed at the frame's first evaluation, carried to its later times. A copy made
+    /// inside a frame (a rare-event branch, a copied Python environment) must remember
+    /// it to fly on as the original does, to the bit.
     fn clone(&self) -> Self {
-        Self::default()
+        let last = match self.last.lock() {
+            Ok(last) => *last,
+            Err(poisoned) => *poisoned.into_inner(),
+        };
+        Self {
+            last: Mutex::new(last),
+        }
     }
 }
 
