@@ -265,3 +265,50 @@ fn only_an_approach_that_reaches_the_commit_point_with_a_forecast_has_one() {
     assert_eq!(summary.outcome.name(), "wave_off", "{:?}", summary.reason);
     assert_eq!(summary.commit_forecast, None);
 }
+
+/// The commit gate (`control.wave_off.max_commit_ramp_strike_probability`, docs/model.md
+/// §9) acts at the commit point on the probability recorded there, and only above its
+/// limit: in the paper's sea (4.20 m, beyond the gate's band, so the limit holds in
+/// full), an approach committed at probability p with the gate off flies the same to the
+/// bit with the gate at 1.001·p, and waves off on the ramp-strike probability at the
+/// commit point, with no commit forecast, with the gate at 0.999·p.
+#[test]
+fn the_commit_gate_waves_off_exactly_above_its_limit() {
+    let mut gated = 0;
+    for seed in 1..=6 {
+        let scenario = Scenario {
+            seed,
+            ..Scenario::papers_sea().longitudinal()
+        };
+        let free = Simulation::new(&scenario)
+            .unwrap()
+            .run(&mut SummaryRecorder);
+        let Some(committed) = free.commit_forecast else {
+            continue;
+        };
+        let p = committed.ramp_strike_probability;
+        let with_gate = |limit: f64| {
+            let mut gate = scenario;
+            gate.control.wave_off.max_commit_ramp_strike_probability = limit;
+            Simulation::new(&gate).unwrap().run(&mut SummaryRecorder)
+        };
+        let above = with_gate(1.001 * p);
+        assert_eq!(above.commit_forecast, free.commit_forecast, "seed {seed}");
+        assert_eq!(above.outcome.name(), free.outcome.name(), "seed {seed}");
+        assert_eq!(above.end_time_s, free.end_time_s, "seed {seed}");
+        assert_eq!(above.touchdown, free.touchdown, "seed {seed}");
+        let below = with_gate(0.999 * p);
+        assert_eq!(below.outcome.name(), "wave_off", "seed {seed}");
+        assert_eq!(below.commit_forecast, None, "seed {seed}");
+        let reason = below.reason.unwrap_or_default();
+        assert!(
+            reason.contains("ramp_strike_probability"),
+            "seed {seed}: {reason}"
+        );
+        gated += 1;
+    }
+    assert!(
+        gated >= 2,
+        "only {gated} of 6 runs reached the commit point"
+    );
+}

@@ -700,8 +700,8 @@ mod tests {
     /// An empty file is the default scenario, but for what came with the seaway and
     /// after, which a file must name (every file written before it flies as it did): the
     /// filter ship, the early check off, no airspeed limit in the wave-off, the
-    /// ramp-strike probability on the forecast's clearance. Naming them gives the
-    /// default itself.
+    /// ramp-strike probability on the forecast's clearance, no commit gate. Naming them
+    /// gives the default itself.
     #[test]
     fn an_empty_file_is_the_default_scenario_but_for_the_seaway_and_its_recovery_keys() {
         let mut expected = Scenario::default();
@@ -712,6 +712,7 @@ mod tests {
         expected.control.wave_off.ramp_strike_model = crate::control::RampStrikeModel::Forecast;
         expected.control.wave_off.hard_landing_model = crate::control::HardLandingModel::Forecast;
         expected.control.wave_off.touchdown_sink_rate_sigma_mps = 1.0;
+        expected.control.wave_off.max_commit_ramp_strike_probability = 0.0;
         assert_eq!(load_scenario("", "empty.toml"), Ok(expected));
         // A [control.wave_off] section that names other keys but not the model: the
         // probability as it first came.
@@ -729,6 +730,7 @@ mod tests {
                      ramp_strike_model = \"closed_loop_lift\"\n\
                      hard_landing_model = \"closed_loop\"\n\
                      touchdown_sink_rate_sigma_mps = 0.6\n\
+                     max_commit_ramp_strike_probability = 7e-4\n\
                      [control.wave_off.recovery]\nfoul_deck_time_to_go_s = 10.0\n\
                      foul_deck_model = \"stationary\"\n";
         assert_eq!(load_scenario(named, "named.toml"), Ok(Scenario::default()));

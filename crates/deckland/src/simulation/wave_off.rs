@@ -6,6 +6,7 @@
 //! loops fly the wave-off.
 
 use super::closed_loop::ClosedLoop;
+use super::commit::CommitPoint;
 use super::deck_predictor::{DeckView, HookTrack};
 use super::lateral::build::BuiltLateral;
 use super::outer_loops::OuterLoops;
@@ -75,21 +76,17 @@ impl ClosedLoop {
         let wave_off = &self.wave_off_in_sea;
         let supervisor = (wave_off, self.ramp_strike_lift);
         let inputs = wave_off_inputs(supervisor, &flight_path, &self.deck, &reference, &hook);
-        let decision = inputs.and_then(|inputs| {
+        let mut decision = inputs.and_then(|inputs| {
             wave_off
                 .decide_foul_deck(&inputs)
                 .or_else(|| wave_off.decide(&inputs))
         });
+        if decision.is_none() {
+            let (commit, lateral) = (&mut self.commit, &self.lateral);
+            decision = inputs.and_then(|inputs| commit_point(wave_off, commit, lateral, &inputs));
+        }
         if decision.is_some() {
             note_wave_off(&mut self.outer, t);
-        } else if let Some(inputs) = inputs
-            .filter(|i| !self.commit.reached() && i.time_to_go_s <= wave_off.decision_time_to_go_s)
-        {
-            // The commit point: what the forecast gives now (`simulation/commit.rs`).
-            self.commit.record(
-                wave_off.commit_forecast(&inputs),
-                matches!(self.lateral, BuiltLateral::ThreeDimensional(_)),
-            );
         }
         if decision.is_none() && wave_off.late_abort_enabled() {
             let ramp_x_m = reference.mean_aim.x_m - self.deck.ramp_aft_of_aim_point_m;
@@ -102,6 +99,29 @@ impl ClosedLoop {
         }
         (Some(reference), decision)
     }
+}
+
+/// At the commit point (the first step with the time to go at or below
+/// `decision_time_to_go_s`, no wave-off decided): the commit gate's decision on what the
+/// forecast gives now, or, to commit, that forecast recorded in `commit`
+/// (`simulation/commit.rs`; a 3-D approach's `lateral` part adds its off-centre
+/// probability later). `None` elsewhere.
+fn commit_point(
+    wave_off: &WaveOffParameters,
+    commit: &mut CommitPoint,
+    lateral: &BuiltLateral,
+    inputs: &WaveOffInputs,
+) -> Option<WaveOffDecision> {
+    if commit.reached() || inputs.time_to_go_s > wave_off.decision_time_to_go_s {
+        return None;
+    }
+    let forecast = wave_off.commit_forecast(inputs);
+    let decision = wave_off.decide_commit(&forecast);
+    if decision.is_none() {
+        let three_d = matches!(lateral, BuiltLateral::ThreeDimensional(_));
+        commit.record(forecast, three_d);
+    }
+    decision
 }
 
 /// Notes in the wave-off's flight that it was decided at `t` (s), unless noted

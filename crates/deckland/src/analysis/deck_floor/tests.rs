@@ -192,56 +192,88 @@ fn a_deck_points_stationary_sigma_is_that_of_heave_and_pitch() {
     }
 }
 
-/// The heavy-sea band of the wave-off's ramp-strike limits (`control.wave_off.
-/// heavy_sea_ramp_sigma_start_m`, `…_full_m`, docs/landing-design.md) starts in the sea
-/// where the guidance's capped clearance stops holding its own ramp-strike bound, and is
-/// in full where the capped path's strike probability is twice the bound. For the
-/// paper's sea scaled by k (heave and pitch RMS alike, so its stationary ramp σ is
-/// 4.20·k m), the ramp's floor σ_c over the 1.4 s from the commit point to the crossing
-/// gives the capped path P(strike) = Φ(−(m_max + r)/σ_c) (docs/model.md §5.7; m_max =
-/// 4 m, r = 1.16 m): 10⁻⁴ at σ_R∞ ≈ 4.29 m and 2·10⁻⁴ at ≈ 4.50 m.
+/// The two bands of the wave-off's ramp-strike decisions start in the sea where the
+/// guidance's capped clearance stops holding its own ramp-strike bound, and are in full
+/// where the capped path's strike probability is twice the bound. For the paper's sea
+/// scaled by k (heave and pitch RMS alike, so its stationary ramp σ is 4.20·k m), the
+/// ramp's floor σ_F over the 1.4 s from the commit point to the crossing gives the capped
+/// path's probability (docs/model.md §5.7; m_max = 4 m, r = 1.16 m, σ_h = 0.3 m):
+///
+/// - the heavy-sea limits (`control.wave_off.heavy_sea_ramp_sigma_start_m`, `…_full_m`)
+///   credit the recovery r, as the heavy sea's late abort at 0.5 % flies it:
+///   Φ(−(m_max + r)/σ_F), 10⁻⁴ at σ_R∞ ≈ 4.27 m and 2·10⁻⁴ at ≈ 4.49 m;
+/// - the commit gate (`commit_gate_ramp_sigma_start_m`, `…_full_m`) credits none, as the
+///   ordinary late abort at 20 % does not fly it, and adds the hook's own scatter:
+///   Φ(−m_max/√(σ_F² + σ_h²)), 10⁻⁴ at ≈ 3.18 m and 2·10⁻⁴ at ≈ 3.35 m. The paper's sea
+///   (4.20 m) holds the bound only with r credited (7.7·10⁻⁵): 2.1·10⁻³ without.
 #[test]
-fn the_heavy_sea_band_starts_where_the_capped_path_stops_holding_its_bound() {
+fn the_wave_off_bands_start_where_the_capped_path_stops_holding_its_bound() {
     use crate::control::{FlightPathParameters, WaveOffParameters};
     let path = FlightPathParameters::default();
     let wave_off = WaveOffParameters::default();
-    // (σ_R∞, the capped path's P(strike)) in the paper's sea scaled by k.
-    let capped = |k: f64| {
+    // (σ_R∞, the capped path's P(strike)) in the paper's sea scaled by k, with the miss
+    // distance `miss` and the hook's scatter `sigma_h`.
+    let capped = |k: f64, miss: f64, sigma_h: f64| {
         let ship = ShipMotion::new(ShipMotionParameters {
             heave_rms_m: 2.0 * k,
             pitch_rms_deg: 1.5 * k,
             ..ShipMotionParameters::default()
         })
         .expect("a valid sea");
-        let sigma_c = deck_point_floor(&ship, RAMP_M, 1.4).height_sigma_m;
+        let floor = deck_point_floor(&ship, RAMP_M, 1.4).height_sigma_m;
         let sigma_ramp = deck_point_stationary_sigma(&ship, RAMP_M).0;
-        let miss = path.max_ramp_clearance_m + path.ramp_recovery_m;
-        (sigma_ramp, normal_cdf(-miss / sigma_c))
+        (sigma_ramp, normal_cdf(-miss / floor.hypot(sigma_h)))
     };
     // The sea (its σ_R∞) where the capped path's probability reaches `p`, by bisection on
     // k (the probability grows with k).
-    let sea_at = |p: f64| {
+    let sea_at = |p: f64, miss: f64, sigma_h: f64| {
         let (mut low, mut high) = (0.5_f64, 2.0_f64);
         for _ in 0..60 {
             let k = 0.5 * (low + high);
-            if capped(k).1 > p {
+            if capped(k, miss, sigma_h).1 > p {
                 high = k;
             } else {
                 low = k;
             }
         }
-        capped(0.5 * (low + high)).0
+        capped(0.5 * (low + high), miss, sigma_h).0
     };
     let bound = path.ramp_strike_probability_limit;
-    let (start, full) = (sea_at(bound), sea_at(2.0 * bound));
-    assert!(
-        (start - wave_off.heavy_sea_ramp_sigma_start_m).abs() < 0.05,
-        "the capped path stops holding 10⁻⁴ at σ_R∞ = {start:.3} m"
-    );
-    assert!(
-        (full - wave_off.heavy_sea_ramp_sigma_full_m).abs() < 0.05,
-        "the capped path reaches 2·10⁻⁴ at σ_R∞ = {full:.3} m"
-    );
-    // The paper's sea itself (k = 1, 4.20 m) holds the bound.
-    assert!(capped(1.0).1 < bound);
+    let (cap, sigma_h) = (path.max_ramp_clearance_m, path.hook_height_sigma_m);
+    let credited = cap + path.ramp_recovery_m;
+    for (band, miss, sigma_h) in [
+        (
+            (
+                wave_off.heavy_sea_ramp_sigma_start_m,
+                wave_off.heavy_sea_ramp_sigma_full_m,
+            ),
+            credited,
+            0.0,
+        ),
+        (
+            (
+                wave_off.commit_gate_ramp_sigma_start_m,
+                wave_off.commit_gate_ramp_sigma_full_m,
+            ),
+            cap,
+            sigma_h,
+        ),
+    ] {
+        let (start, full) = (
+            sea_at(bound, miss, sigma_h),
+            sea_at(2.0 * bound, miss, sigma_h),
+        );
+        assert!(
+            (start - band.0).abs() < 0.05,
+            "the capped path stops holding 10⁻⁴ at σ_R∞ = {start:.3} m"
+        );
+        assert!(
+            (full - band.1).abs() < 0.05,
+            "the capped path reaches 2·10⁻⁴ at σ_R∞ = {full:.3} m"
+        );
+    }
+    // The paper's sea itself (k = 1, 4.20 m) holds the bound only with r credited.
+    assert!(capped(1.0, credited, 0.0).1 < bound);
+    let uncredited = capped(1.0, cap, sigma_h).1;
+    assert!((1e-3..4e-3).contains(&uncredited), "{uncredited}");
 }

@@ -145,6 +145,23 @@ pub struct WaveOffParameters {
     pub heavy_sea_ramp_sigma_start_m: f64,
     /// The σ (m) from which the heavy-sea limits hold in full; 4.5 m; start to 50.
     pub heavy_sea_ramp_sigma_full_m: f64,
+    /// The commit gate (`wave_off/heavy_sea.rs`): at the commit point an approach whose
+    /// ramp-strike probability (the first criterion's) is above this waves off, where
+    /// the sea is at least `commit_gate_ramp_sigma_full_m` (–). 7·10⁻⁴: in the paper's
+    /// sea the committed approaches then carry less than the guidance's bound of 10⁻⁴
+    /// per approach flown (docs/landing-design.md); [0, 1); 0 off (the paper's set and
+    /// a file that names none).
+    #[serde(default)]
+    pub max_commit_ramp_strike_probability: f64,
+    /// The sea's stationary ramp σ (m) up to which there is no commit gate: 3.2 m, where
+    /// the capped path stops holding its bound with no recovery credited; [0, 50].
+    #[serde(default = "WaveOffParameters::commit_gate_start_m")]
+    pub commit_gate_ramp_sigma_start_m: f64,
+    /// The σ (m) from which the gate's limit holds in full; 3.35 m, where that path's
+    /// probability is twice the bound; start to 50. Between, the limit is
+    /// p_gate^w (w from 0 to 1 linearly in σ: 1, no gate, to p_gate).
+    #[serde(default = "WaveOffParameters::commit_gate_full_m")]
+    pub commit_gate_ramp_sigma_full_m: f64,
     /// The lead τ of the wave-off's α floor (s): it holds α + τ·q, the angle of attack
     /// predicted τ ahead, as the approach's α protection does; 0.3 s, the pitch loop's
     /// lag (docs/landing-design.md); 0 holds α itself (the paper's set); [0, 2].
@@ -198,6 +215,9 @@ impl Default for WaveOffParameters {
             heavy_sea_late_abort_ramp_strike_probability: 0.005,
             heavy_sea_ramp_sigma_start_m: 4.3,
             heavy_sea_ramp_sigma_full_m: 4.5,
+            max_commit_ramp_strike_probability: 7e-4,
+            commit_gate_ramp_sigma_start_m: Self::commit_gate_start_m(),
+            commit_gate_ramp_sigma_full_m: Self::commit_gate_full_m(),
             alpha_lead_s: 0.3,
             climb_out_airspeed_margin_mps: 10.0,
             recovery: RecoveryLimits::default(),
@@ -215,6 +235,7 @@ impl WaveOffParameters {
             late_abort_full_thrust: false,
             heavy_sea_ramp_strike_probability: 0.0,
             heavy_sea_late_abort_ramp_strike_probability: 0.0,
+            max_commit_ramp_strike_probability: 0.0,
             alpha_lead_s: 0.0,
             min_alpha_deg: 2.0,
             // No airspeed limit, no early check, the probabilities as they first came.
@@ -232,8 +253,19 @@ impl WaveOffParameters {
             ramp_strike_model: RampStrikeModel::named_by_none(),
             hard_landing_model: HardLandingModel::named_by_none(),
             touchdown_sink_rate_sigma_mps: Self::touchdown_sink_rate_sigma_named_by_none(),
+            max_commit_ramp_strike_probability: 0.0,
             ..Self::default()
         }
+    }
+
+    /// The commit gate's start (m): 3.2 m (`commit_gate_ramp_sigma_start_m`).
+    pub fn commit_gate_start_m() -> f64 {
+        3.2
+    }
+
+    /// The commit gate's full σ (m): 3.35 m (`commit_gate_ramp_sigma_full_m`).
+    pub fn commit_gate_full_m() -> f64 {
+        3.35
     }
 
     /// σ_sink of a file that names none (m/s): the assumption the hard-landing
@@ -530,6 +562,21 @@ impl WaveOffParameters {
             (LandingPointDisplacement, moved, self.max_landing_point_displacement_m, moved.abs() > self.max_landing_point_displacement_m),
         ];
         first_out_of_limits(checks, m.clearance)
+    }
+
+    /// The commit gate's decision at the commit point on what the forecast gives there:
+    /// a wave-off on the ramp-strike probability if it is above
+    /// `max_commit_ramp_strike_probability` (the limit in this sea,
+    /// [`Self::in_sea`]); `None` to commit, and always with the gate off (0).
+    pub fn decide_commit(&self, forecast: &CommitForecast) -> Option<WaveOffDecision> {
+        let (p, limit) = (
+            forecast.ramp_strike_probability,
+            self.max_commit_ramp_strike_probability,
+        );
+        let out = self.enabled && limit > 0.0 && p > limit;
+        #[rustfmt::skip]
+        let checks = [(WaveOffCriterion::RampStrikeProbability, 100.0 * p, 100.0 * limit, out)];
+        first_out_of_limits(checks, forecast.ramp_clearance_m)
     }
 
     /// What the criteria of [`Self::decide`] compare with their limits, on `inputs`.

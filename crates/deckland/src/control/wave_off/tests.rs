@@ -385,6 +385,30 @@ fn the_heavy_sea_keys_outside_their_range_are_refused_by_name() {
         ),
         (
             WaveOffParameters {
+                max_commit_ramp_strike_probability: 1.5,
+                ..p
+            },
+            "control.wave_off.max_commit_ramp_strike_probability",
+            "1.5",
+        ),
+        (
+            WaveOffParameters {
+                commit_gate_ramp_sigma_start_m: -1.0,
+                ..p
+            },
+            "control.wave_off.commit_gate_ramp_sigma_start_m",
+            "-1.0",
+        ),
+        (
+            WaveOffParameters {
+                commit_gate_ramp_sigma_full_m: 3.0,
+                ..p
+            },
+            "control.wave_off.commit_gate_ramp_sigma_full_m",
+            "3.0",
+        ),
+        (
+            WaveOffParameters {
                 alpha_lead_s: 2.5,
                 ..p
             },
@@ -492,4 +516,62 @@ fn the_stationary_model_reads_beta_and_roll_and_the_linear_neither() {
     let decision = stationary.decide_foul_deck(&rolled).expect("foul deck");
     assert!((decision.value - 100.0 * 9.0 / 8.19).abs() < 1e-9);
     assert_eq!(linear.decide_foul_deck(&rolled), None);
+}
+
+/// The commit gate's limit in a sea (`commit_gate_in_sea`): none at and below the start
+/// (3.2 m; the moderate sea at 2.10 m), the limit in full from 3.35 m (the paper's sea at
+/// 4.20 m, the heavy sea at 6.84 m), p^w between (half way, 3.275 m: √(7·10⁻⁴) =
+/// 0.026458), and none in any sea with the gate off. `in_sea` carries it with the
+/// heavy-sea limits.
+#[test]
+fn the_commit_gate_moves_in_with_the_sea_state() {
+    let p = WaveOffParameters::default();
+    assert_eq!(p.max_commit_ramp_strike_probability, 7e-4);
+    assert_eq!(p.commit_gate_in_sea(2.10), 0.0);
+    assert_eq!(p.commit_gate_in_sea(3.2), 0.0);
+    for sigma_m in [3.35, 4.20, 6.84] {
+        assert!((p.commit_gate_in_sea(sigma_m) - 7e-4).abs() < 1e-15);
+    }
+    let half = p.commit_gate_in_sea(3.275);
+    assert!((half - 0.026_457_513).abs() < 1e-8, "{half}");
+    let off = WaveOffParameters::named_by_none();
+    assert_eq!(off.commit_gate_in_sea(6.84), 0.0);
+    assert_eq!(p.in_sea(2.10).max_commit_ramp_strike_probability, 0.0);
+    let papers = p.in_sea(4.20);
+    assert!((papers.max_commit_ramp_strike_probability - 7e-4).abs() < 1e-15);
+    assert_eq!(
+        papers.max_ramp_strike_probability,
+        p.for_sea(4.20).max_ramp_strike_probability
+    );
+}
+
+/// The gate's decision at the commit point: Φ(−3.2) = 6.871·10⁻⁴ (normal table) commits
+/// under 7·10⁻⁴; Φ(−3.1) = 9.676·10⁻⁴ waves off on the ramp-strike probability, its
+/// value and limit in percent; with the gate off, or the wave-off off, it commits.
+#[test]
+fn the_commit_gate_waves_off_above_its_limit() {
+    let p = WaveOffParameters::default();
+    let forecast = |clearance_m: f64| CommitForecast {
+        ramp_strike_probability: ramp_strike_probability(clearance_m, 1.0),
+        hard_landing_probability: 0.0,
+        off_centre_probability: None,
+        ramp_clearance_m: clearance_m,
+        ramp_clearance_sigma_m: 1.0,
+    };
+    assert_eq!(p.decide_commit(&forecast(3.2)), None);
+    let d = p.decide_commit(&forecast(3.1)).expect("wave-off");
+    assert_eq!(d.criterion, WaveOffCriterion::RampStrikeProbability);
+    assert!((d.value - 0.09676).abs() < 2e-5, "{}", d.value);
+    assert!((d.limit - 0.07).abs() < 1e-12);
+    assert_eq!(d.predicted_ramp_clearance_m, 3.1);
+    let off = WaveOffParameters {
+        max_commit_ramp_strike_probability: 0.0,
+        ..p
+    };
+    assert_eq!(off.decide_commit(&forecast(0.0)), None);
+    let disabled = WaveOffParameters {
+        enabled: false,
+        ..p
+    };
+    assert_eq!(disabled.decide_commit(&forecast(0.0)), None);
 }

@@ -386,10 +386,16 @@ fn wave_off_words(decided_at_s: f64, decision: &WaveOffDecision) -> String {
 
 /// A decision on a wave-off criterion in words, `action` first: "late abort at t = 23.10 s
 /// on ramp_strike_probability: probability of a ramp strike (%) 7.52 against the limit
-/// 5.00".
+/// 5.00". A limit below 0.1 (the commit gate's 0.07 % of a ramp strike) is written with
+/// four decimals, the value with it: "0.0968 against the limit 0.0700".
 pub(crate) fn decision_words(action: &str, time_s: f64, decision: &WaveOffDecision) -> String {
+    let decimals = if decision.limit > 0.0 && decision.limit < 0.1 {
+        4
+    } else {
+        2
+    };
     format!(
-        "{action} at t = {time_s:.2} s on {}: {} {:.2} against the limit {:.2}",
+        "{action} at t = {time_s:.2} s on {}: {} {:.decimals$} against the limit {:.decimals$}",
         decision.criterion.name(),
         decision.criterion.quantity(),
         decision.value,

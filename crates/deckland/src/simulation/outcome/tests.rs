@@ -124,3 +124,31 @@ fn regression_an_infinite_time_to_go_ends_as_the_range_opening() {
         Divergence::SignalOutOfRange { .. }
     ));
 }
+
+/// A decision's words keep two decimals for the limits in use before the commit gate
+/// (20 % and 0.5 % of a ramp strike, 7 m/s), and four for a limit below 0.1, where two
+/// would print the commit gate's 0.07 % against a probability of 0.0968 % as "0.10
+/// against the limit 0.07".
+#[test]
+fn small_limits_are_written_with_four_decimals() {
+    use crate::control::{WaveOffCriterion, WaveOffDecision};
+    let words = |value: f64, limit: f64| {
+        super::decision_words(
+            "wave-off",
+            22.714,
+            &WaveOffDecision {
+                criterion: WaveOffCriterion::RampStrikeProbability,
+                value,
+                limit,
+                predicted_ramp_clearance_m: 3.0,
+            },
+        )
+    };
+    assert_eq!(
+        words(0.09676, 0.07),
+        "wave-off at t = 22.71 s on ramp_strike_probability: probability of a ramp strike \
+         (%) 0.0968 against the limit 0.0700"
+    );
+    assert!(words(0.62, 0.5).ends_with("(%) 0.62 against the limit 0.50"));
+    assert!(words(25.0, 20.0).ends_with("(%) 25.00 against the limit 20.00"));
+}
