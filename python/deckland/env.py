@@ -112,9 +112,10 @@ LATERAL_SPANS: Dict[str, float] = {
 #: The wave-off as the environments flew it before the seaway's recovery limits and the
 #: closed-loop probabilities: no early "foul deck: motion" check, no airspeed limit in
 #: the wave-off (the paper's sea, which the environments fly, is beyond those limits),
-#: the ramp-strike probability on the forecast's clearance and the hard-landing
-#: probability on the hook's sink now with a 1.0-m/s scatter (what a scenario file that
-#: names none of these keys flies, ``scenarios/crosswind.toml`` among them).
+#: the ramp-strike probability on the forecast's clearance, the hard-landing
+#: probability on the hook's sink now with a 1.0-m/s scatter, and no commit gate (what a
+#: scenario file that names none of these keys flies, ``scenarios/crosswind.toml`` among
+#: them).
 WAVE_OFF_BEFORE_RECOVERY: Dict[str, Any] = {
     "control.wave_off.climb_out_airspeed_margin_mps": 0.0,
     "control.wave_off.recovery.foul_deck_time_to_go_s": 0.0,
@@ -122,6 +123,7 @@ WAVE_OFF_BEFORE_RECOVERY: Dict[str, Any] = {
     "control.wave_off.ramp_strike_model": "forecast",
     "control.wave_off.hard_landing_model": "forecast",
     "control.wave_off.touchdown_sink_rate_sigma_mps": 1.0,
+    "control.wave_off.max_commit_ramp_strike_probability": 0.0,
 }
 
 LONGITUDINAL_SETTINGS: Dict[str, Any] = {
