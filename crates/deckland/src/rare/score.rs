@@ -10,7 +10,7 @@
 //! |---|---|---|
 //! | `ramp_strike` | the hook crosses the ramp | c − clearance (c = 0 m: the campaign's ramp strike) |
 //! | `hard_landing` | touchdown | sink rate relative to the deck − the hard-landing limit |
-//! | `off_centre` | touchdown (3-D approach) | \|offset from the centreline\| − 3.05 m |
+//! | `off_centre` | touchdown (3-D approach) | \|offset from the centreline\| − 6.1 m (the campaign's `off_centre`, `MAX_OFF_CENTRE_M`) |
 //! | `divergence` | the run ends diverged | 0 (the event), else never |
 //!
 //! At its moment the score is m/σ₀; before, it is a forecast of the margin over how far
