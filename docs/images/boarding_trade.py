@@ -3,9 +3,10 @@
 as the path's clearance over the forecast ramp grows, with the 95 % upper bound of each
 catastrophic rate.
 
-Each point is `deckland campaign FILE --runs 3000 --seed 2026 --threads 2`, FILE the
-printed default with the `[control.flight_path]` keys named
-(docs/no-oracle-results.md, "The trade", gives the rows). Standard library only:
+Each point is `deckland campaign FILE --runs 3000 --seed 2026 --threads 2`, FILE
+papers-sea.toml (the printed default with the filter ship) with the
+`[control.flight_path]` keys named (docs/no-oracle-results.md, "The trade", gives the
+rows). Standard library only:
 python3 docs/images/boarding_trade.py > docs/images/boarding_trade.svg
 """
 import math
@@ -13,13 +14,13 @@ import math
 RUNS = 3000
 # (label, boardings, ramp strikes, hard landings) in 3000 approaches, seed 2026.
 POINTS = [
-    ("p_R 2 %", 1921, 7, 16),
-    ("p_R 2 %, m_R 3.5 m", 1839, 2, 18),
-    ("p_R 0.1 %, r 1.16 m", 1808, 2, 17),
-    ("p_R 2 %, m_R 3.9 m", 1699, 1, 16),
-    ("p_R 0.01 %, r 1.16 m (default)", 1660, 0, 14),
-    ("the default, cap m_max 4.5 m", 1458, 0, 13),
-    ("the default, cap m_max 5 m", 1409, 0, 15),
+    ("p_R 2 %", 241, 0, 2),
+    ("p_R 2 %, m_R 3.5 m", 282, 0, 2),
+    ("p_R 0.1 %, r 1.16 m", 342, 0, 4),
+    ("p_R 2 %, m_R 3.9 m", 448, 0, 4),
+    ("p_R 0.01 %, r 1.16 m (default)", 501, 0, 5),
+    ("the default, cap m_max 4.5 m", 651, 0, 9),
+    ("the default, cap m_max 5 m", 653, 0, 10),
 ]
 W, H, LEFT, BOTTOM, TOP, RIGHT = 760, 420, 70, 50, 30, 210
 
@@ -49,7 +50,7 @@ def upper_bound(events, n, confidence=0.95):
 
 
 def x_of(boarding_pct):
-    return LEFT + (boarding_pct - 45.0) / 25.0 * (W - LEFT - RIGHT)
+    return LEFT + boarding_pct / 70.0 * (W - LEFT - RIGHT)
 
 
 def y_of(rate_pct):
@@ -63,7 +64,7 @@ def main():
     x0, x1, y0, y1 = LEFT, W - RIGHT, H - BOTTOM, TOP
     out.append(f'<line x1="{x0}" y1="{y0}" x2="{x1}" y2="{y0}" stroke="black"/>')
     out.append(f'<line x1="{x0}" y1="{y0}" x2="{x0}" y2="{y1}" stroke="black"/>')
-    for boarding in range(45, 71, 5):
+    for boarding in range(0, 71, 10):
         x = x_of(boarding)
         out.append(f'<line x1="{x:.1f}" y1="{y0}" x2="{x:.1f}" y2="{y0 + 4}" stroke="black"/>')
         out.append(f'<text x="{x:.1f}" y="{y0 + 16}" text-anchor="middle">{boarding}</text>')
