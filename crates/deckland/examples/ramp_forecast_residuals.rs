@@ -7,94 +7,19 @@
 //! SD.
 //!
 //! `cargo run --release -p deckland --example ramp_forecast_residuals -- [RUNS] FILE...`
-//! (default 60 runs). The forecast is read back from two scores of the same flight whose
-//! thresholds differ by 40 m, as the test `the_ramp_forecast_misses_by_about_its_own_spread`
-//! does: far below the event each score is x = (c − ĉ)/σ.
+//! (default 60 runs). The forecast is read back from two scores of the same flight
+//! (`deckland::rare::ramp_forecast`), as the test
+//! `the_ramp_forecast_misses_by_about_its_own_spread` does.
 
-use deckland::rare::score::{EventScore, EventThresholds, RareEvent};
+use deckland::rare::ramp_forecast::RampForecastTrace;
 use deckland::scenario::{load_scenario, Scenario};
-use deckland::simulation::{Event, Recorder, RunSummary, Signals, Simulation};
 
 /// Horizons before the crossing (s).
 const HORIZONS_S: [f64; 10] = [0.25, 0.5, 1.0, 2.0, 3.0, 4.0, 6.0, 8.0, 12.0, 20.0];
 
-/// Two scores of one flight, and the ramp crossing's time and clearance (s, m).
-struct Pair {
-    one: EventScore,
-    two: EventScore,
-    crossing: Option<(f64, f64)>,
-}
-
-impl Recorder for Pair {
-    fn sample_interval_s(&self) -> Option<f64> {
-        Some(0.0)
-    }
-    fn sample(&mut self, signals: &Signals) {
-        self.one.sample(signals);
-        self.two.sample(signals);
-    }
-    fn event(&mut self, event: &Event) {
-        if let Event::RampCrossing {
-            time_s,
-            clearance_m,
-        } = event
-        {
-            self.crossing = Some((*time_s, *clearance_m));
-        }
-        self.one.event(event);
-        self.two.event(event);
-    }
-    fn finish(&mut self, summary: &RunSummary) {
-        self.one.finish(summary);
-        self.two.finish(summary);
-    }
-}
-
-/// One flight's forecasts (time, ĉ, σ) at every step before the crossing, and the
-/// crossing's time and clearance, if the hook crossed the ramp.
-type Forecasts = (Vec<(f64, f64, f64)>, Option<(f64, f64)>);
-
-fn fly(scenario: &Scenario) -> Forecasts {
-    let (c1, c2) = (-60.0, -100.0);
-    let mut simulation = Simulation::new(scenario).expect("a valid scenario");
-    let score = |c, simulation: &Simulation| {
-        let thresholds = EventThresholds::of(scenario).with(RareEvent::RampStrike, c);
-        EventScore::new(RareEvent::RampStrike, thresholds, scenario, simulation)
-    };
-    let mut pair = Pair {
-        one: score(c1, &simulation),
-        two: score(c2, &simulation),
-        crossing: None,
-    };
-    let mut forecasts = Vec::new();
-    loop {
-        pair.one.observe(&simulation);
-        pair.two.observe(&simulation);
-        let time_s = simulation.time_s();
-        let ended = simulation.advance(&mut pair).is_some();
-        if ended || pair.crossing.is_some() {
-            break;
-        }
-        let (x1, x2) = (pair.one.score(), pair.two.score());
-        let sigma_m = (c1 - c2) / (x1 - x2);
-        forecasts.push((time_s, c1 - x1 * sigma_m, sigma_m));
-    }
-    (forecasts, pair.crossing)
-}
-
 /// Mean and SD of flown − ĉ, and the mean σ, τ before the crossing; and how many flights.
-fn residuals(flights: &[Forecasts], ahead_s: f64) -> (f64, f64, f64, usize) {
-    let rows: Vec<(f64, f64)> = flights
-        .iter()
-        .filter_map(|(forecasts, crossing)| {
-            let (crossing_s, clearance_m) = (*crossing)?;
-            let &(_, forecast, sigma) = forecasts
-                .iter()
-                .rev()
-                .find(|(t, _, _)| crossing_s - t >= ahead_s)?;
-            Some((clearance_m - forecast, sigma))
-        })
-        .collect();
+fn residuals(flights: &[RampForecastTrace], ahead_s: f64) -> (f64, f64, f64, usize) {
+    let rows: Vec<(f64, f64)> = flights.iter().filter_map(|f| f.miss(ahead_s)).collect();
     let n = rows.len() as f64;
     let mean = rows.iter().map(|r| r.0).sum::<f64>() / n;
     let sd = (rows.iter().map(|r| (r.0 - mean).powi(2)).sum::<f64>() / (n - 1.0)).sqrt();
@@ -118,8 +43,10 @@ fn main() {
     for file in &args {
         let text = std::fs::read_to_string(file).expect("a readable scenario file");
         let base = load_scenario(&text, file).expect("a valid scenario file");
-        let flights: Vec<Forecasts> = (0..runs)
-            .map(|seed| fly(&Scenario { seed, ..base }))
+        let flights: Vec<RampForecastTrace> = (0..runs)
+            .map(|seed| {
+                RampForecastTrace::fly(&Scenario { seed, ..base }).expect("a valid scenario")
+            })
             .collect();
         for ahead_s in HORIZONS_S {
             let (mean, sd, sigma, n) = residuals(&flights, ahead_s);

@@ -4,9 +4,10 @@
 //! score's forecasts. Thresholds are moved so that each event happens in some of the
 //! flights and not in others.
 
+use deckland::rare::ramp_forecast::RampForecastTrace;
 use deckland::rare::score::{EventScore, EventThresholds, RareEvent};
 use deckland::scenario::Scenario;
-use deckland::simulation::{Event, Outcome, Recorder, RunSummary, Signals, Simulation};
+use deckland::simulation::{Outcome, RunSummary, Simulation};
 
 /// Flies `scenario` with the score of `event`, returning the running maximum of the score
 /// and the run's summary.
@@ -112,77 +113,6 @@ fn event_names_round_trip_and_an_unknown_one_is_named() {
     );
 }
 
-/// (time, ĉ, σ) at every step before the ramp crossing (s, m, m), and the crossing's
-/// time and clearance (s, m).
-type RampForecasts = (Vec<(f64, f64, f64)>, Option<(f64, f64)>);
-
-/// Two scores of one flight, and the ramp crossing.
-struct Pair {
-    one: EventScore,
-    two: EventScore,
-    /// The crossing's time and clearance (s, m).
-    crossing: Option<(f64, f64)>,
-}
-
-impl Recorder for Pair {
-    fn sample_interval_s(&self) -> Option<f64> {
-        Some(0.0)
-    }
-    fn sample(&mut self, signals: &Signals) {
-        self.one.sample(signals);
-        self.two.sample(signals);
-    }
-    fn event(&mut self, event: &Event) {
-        if let Event::RampCrossing {
-            time_s,
-            clearance_m,
-        } = event
-        {
-            self.crossing = Some((*time_s, *clearance_m));
-        }
-        self.one.event(event);
-        self.two.event(event);
-    }
-    fn finish(&mut self, summary: &RunSummary) {
-        self.one.finish(summary);
-        self.two.finish(summary);
-    }
-}
-
-/// The ramp score's forecast of the clearance ĉ and its spread σ, read back from two
-/// scores of the same flight whose thresholds differ by 40 m: far below the event each
-/// score is x = (c − ĉ)/σ (g is the identity there), so σ = 40 m/(x₁ − x₂) and
-/// ĉ = c₁ − x₁σ. Returns (time, ĉ, σ) at every step before the crossing, and the
-/// crossing's time and the clearance flown, if the hook crossed the ramp.
-fn ramp_forecasts(scenario: &Scenario) -> RampForecasts {
-    let (c1, c2) = (-60.0, -100.0);
-    let simulation = Simulation::new(scenario).expect("valid");
-    let score = |c| {
-        let thresholds = EventThresholds::of(scenario).with(RareEvent::RampStrike, c);
-        EventScore::new(RareEvent::RampStrike, thresholds, scenario, &simulation)
-    };
-    let mut pair = Pair {
-        one: score(c1),
-        two: score(c2),
-        crossing: None,
-    };
-    let mut simulation = simulation;
-    let mut forecasts = Vec::new();
-    loop {
-        pair.one.observe(&simulation);
-        pair.two.observe(&simulation);
-        let time_s = simulation.time_s();
-        let ended = simulation.advance(&mut pair).is_some();
-        if ended || pair.crossing.is_some() {
-            break;
-        }
-        let (x1, x2) = (pair.one.score(), pair.two.score());
-        let sigma_m = (c1 - c2) / (x1 - x2);
-        forecasts.push((time_s, c1 - x1 * sigma_m, sigma_m));
-    }
-    (forecasts, pair.crossing)
-}
-
 /// The ramp score is a forecast of the clearance in units of how far it may miss, so
 /// that splitting can rank flights by it (docs/rare-events.md): over 100 approaches in
 /// the paper's adverse conditions, the clearance flown, against the forecast made 0.5,
@@ -195,19 +125,13 @@ fn ramp_forecasts(scenario: &Scenario) -> RampForecasts {
 fn the_ramp_forecast_misses_by_about_its_own_spread() {
     let base = Scenario::paper();
     let flights: Vec<_> = (0..100)
-        .map(|seed| ramp_forecasts(&Scenario { seed, ..base }))
+        .map(|seed| RampForecastTrace::fly(&Scenario { seed, ..base }).expect("valid"))
         .collect();
     for ahead_s in [0.5, 2.0, 5.0] {
         let z: Vec<f64> = flights
             .iter()
-            .filter_map(|(forecasts, crossing)| {
-                let (crossing_s, clearance_m) = (*crossing)?;
-                let &(_, forecast, sigma) = forecasts
-                    .iter()
-                    .rev()
-                    .find(|(t, _, _)| crossing_s - t >= ahead_s)?;
-                Some((clearance_m - forecast) / sigma)
-            })
+            .filter_map(|flight| flight.miss(ahead_s))
+            .map(|(miss_m, sigma_m)| miss_m / sigma_m)
             .collect();
         let n = z.len() as f64;
         let mean = z.iter().sum::<f64>() / n;

@@ -12,9 +12,12 @@
 //!   it validates the estimator.
 //! - [`score`]: each catastrophic event's score along an approach.
 //! - [`flight`]: an approach as a trajectory splitting can branch.
+//! - [`ramp_forecast`]: the ramp score's forecast along a flight, beside the clearance
+//!   flown (how well the score ranks flights).
 
 pub mod flight;
 pub mod ornstein_uhlenbeck;
+pub mod ramp_forecast;
 pub mod rate;
 pub mod score;
 pub mod splitting;
