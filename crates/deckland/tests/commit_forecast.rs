@@ -155,6 +155,18 @@ fn assert_close(what: &str, got: f64, want: f64) {
     );
 }
 
+/// The paper's sea on the 3-DOF approach at `seed`, and its flight's summary.
+fn papers_sea_3dof(seed: u64) -> (Scenario, RunSummary) {
+    let scenario = Scenario {
+        seed,
+        ..Scenario::papers_sea().longitudinal()
+    };
+    let summary = Simulation::new(&scenario)
+        .unwrap()
+        .run(&mut SummaryRecorder);
+    (scenario, summary)
+}
+
 fn in_unit_interval(p: f64) -> bool {
     (0.0..=1.0).contains(&p)
 }
@@ -227,16 +239,7 @@ fn in_the_papers_sea_the_commit_forecast_is_the_recomputed_one() {
 #[test]
 fn only_an_approach_that_reaches_the_commit_point_with_a_forecast_has_one() {
     let longitudinal: Vec<CommitForecast> = (1..=6)
-        .filter_map(|seed| {
-            let scenario = Scenario {
-                seed,
-                ..Scenario::papers_sea().longitudinal()
-            };
-            let summary = Simulation::new(&scenario)
-                .unwrap()
-                .run(&mut SummaryRecorder);
-            summary.commit_forecast
-        })
+        .filter_map(|seed| papers_sea_3dof(seed).1.commit_forecast)
         .collect();
     assert!(
         !longitudinal.is_empty(),
@@ -276,13 +279,7 @@ fn only_an_approach_that_reaches_the_commit_point_with_a_forecast_has_one() {
 fn the_commit_gate_waves_off_exactly_above_its_limit() {
     let mut gated = 0;
     for seed in 1..=6 {
-        let scenario = Scenario {
-            seed,
-            ..Scenario::papers_sea().longitudinal()
-        };
-        let free = Simulation::new(&scenario)
-            .unwrap()
-            .run(&mut SummaryRecorder);
+        let (scenario, free) = papers_sea_3dof(seed);
         let Some(committed) = free.commit_forecast else {
             continue;
         };
