@@ -168,6 +168,24 @@ impl fmt::Display for Bounds {
     }
 }
 
+/// Checks fields of a parameter struct against their ranges, in the order written; the
+/// first field out of range returns its [`ParameterError`], named `section.field` with the
+/// field's own name (`stringify!`), so that a key in an error can never drift from the
+/// field it checks. Expands to one [`Bounds::check`] call a field, each followed by `?`.
+///
+/// ```ignore
+/// check_ranges!(SECTION, self, {
+///     natural_frequency_rad_s: Bounds::closed(1.0, 300.0),
+///     damping_ratio: Bounds::closed(0.05, 5.0),
+/// });
+/// ```
+macro_rules! check_ranges {
+    ($section:expr, $parameters:expr, { $($field:ident: $bounds:expr),+ $(,)? }) => {
+        $($bounds.check($section, stringify!($field), $parameters.$field)?;)+
+    };
+}
+pub(crate) use check_ranges;
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -222,5 +240,40 @@ mod tests {
         assert!(!b.contains(0.0));
         assert!(b.contains(2.0));
         assert!(!b.exclusive_max().contains(2.0));
+    }
+
+    #[derive(Debug)]
+    struct Two {
+        low_m: f64,
+        high_s: f64,
+    }
+
+    fn check_two(two: &Two) -> Result<(), ParameterError> {
+        check_ranges!("a.b", two, {
+            low_m: Bounds::closed(0.0, 1.0),
+            high_s: Bounds::positive_up_to(5.0).exclusive_max(),
+        });
+        Ok(())
+    }
+
+    #[test]
+    fn check_ranges_names_the_first_field_out_of_range_by_its_own_name() {
+        assert!(check_two(&Two {
+            low_m: 1.0,
+            high_s: 4.9
+        })
+        .is_ok());
+        let both_bad = Two {
+            low_m: -1.0,
+            high_s: 5.0,
+        };
+        assert_eq!(check_two(&both_bad).expect_err("low").path, "a.b.low_m");
+        let high_bad = Two {
+            low_m: 0.5,
+            high_s: 5.0,
+        };
+        let error = check_two(&high_bad).expect_err("high");
+        assert_eq!(error.path, "a.b.high_s");
+        assert_eq!(error.allowed, "a value in (0, 5)");
     }
 }

@@ -12,7 +12,7 @@
 //!    out is stopped (rate and acceleration outward set to zero), and after each step
 //!    the position is clamped ([`ElevatorActuator::constrain`]).
 
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
 
 /// Elevator actuator parameters, in the units a user reads from a data sheet.
@@ -51,22 +51,12 @@ impl ElevatorActuatorParameters {
     /// (0°, 60°], rate limit in (0, 500] °/s.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "aircraft.elevator_actuator";
-        Bounds::closed(1.0, 300.0).check(
-            SECTION,
-            "natural_frequency_rad_s",
-            self.natural_frequency_rad_s,
-        )?;
-        Bounds::closed(0.05, 5.0).check(SECTION, "damping_ratio", self.damping_ratio)?;
-        Bounds::closed(-60.0, 0.0).exclusive_max().check(
-            SECTION,
-            "min_deflection_deg",
-            self.min_deflection_deg,
-        )?;
-        Bounds::positive_up_to(60.0).check(
-            SECTION,
-            "max_deflection_deg",
-            self.max_deflection_deg,
-        )?;
+        check_ranges!(SECTION, self, {
+            natural_frequency_rad_s: Bounds::closed(1.0, 300.0),
+            damping_ratio: Bounds::closed(0.05, 5.0),
+            min_deflection_deg: Bounds::closed(-60.0, 0.0).exclusive_max(),
+            max_deflection_deg: Bounds::positive_up_to(60.0),
+        });
         if let Some(rate) = self.rate_limit_degps {
             Bounds::positive_up_to(500.0).check(SECTION, "rate_limit_degps", rate)?;
         }

@@ -1,7 +1,7 @@
 //! Aerodynamic configurations: `landing` (flaps and gear down, default) and `clean`
 //! (docs/model.md §2.3).
 
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
 use std::fmt;
 use std::str::FromStr;
@@ -110,11 +110,10 @@ impl AerodynamicConfiguration {
             "moment_coefficient_increment",
             self.moment_coefficient_increment,
         )?;
-        Bounds::closed(-0.5, 0.5).check(
-            section,
-            "cg_ahead_of_reference_chords",
-            self.cg_ahead_of_reference_chords,
-        )
+        check_ranges!(section, self, {
+            cg_ahead_of_reference_chords: Bounds::closed(-0.5, 0.5),
+        });
+        Ok(())
     }
 }
 

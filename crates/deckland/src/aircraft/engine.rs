@@ -1,6 +1,6 @@
 //! Twin F404-GE-400 engines with first-order thrust lag (docs/model.md §2.5, paper §3.6).
 
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
 
 /// Engine parameters; thrust acts along body x through the CG.
@@ -28,12 +28,11 @@ impl EngineParameters {
     /// Checks that the thrust and the time constant are finite and positive.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "aircraft.engines";
-        Bounds::positive_up_to(1e6).check(
-            SECTION,
-            "max_thrust_per_engine_n",
-            self.max_thrust_per_engine_n,
-        )?;
-        Bounds::closed(0.05, 30.0).check(SECTION, "time_constant_s", self.time_constant_s)
+        check_ranges!(SECTION, self, {
+            max_thrust_per_engine_n: Bounds::positive_up_to(1e6),
+            time_constant_s: Bounds::closed(0.05, 30.0),
+        });
+        Ok(())
     }
 }
 

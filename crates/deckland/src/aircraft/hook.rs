@@ -1,7 +1,7 @@
 //! The arresting hook's position (docs/model.md §2.7).
 
 use super::state::AircraftState;
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
 
 /// Where the hook point sits relative to the CG, in body axes.
@@ -27,8 +27,11 @@ impl HookGeometry {
     /// Checks that both offsets are finite.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "aircraft.hook";
-        Bounds::closed(-20.0, 20.0).check(SECTION, "aft_of_cg_m", self.aft_of_cg_m)?;
-        Bounds::closed(-5.0, 5.0).check(SECTION, "below_cg_m", self.below_cg_m)
+        check_ranges!(SECTION, self, {
+            aft_of_cg_m: Bounds::closed(-20.0, 20.0),
+            below_cg_m: Bounds::closed(-5.0, 5.0),
+        });
+        Ok(())
     }
 
     /// Earth position (x, h) of the hook point (m): body offset (−aft, +below) rotated by θ.

@@ -30,7 +30,7 @@
 //! less the speed loop's lag (its ω = 0.25 rad/s, ζ = 1: a ramp of V_ref is followed
 //! 2ζ/ω = 8 s late).
 
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
 
 /// The spacing of the candidate arrival shifts τ (s).
@@ -86,21 +86,14 @@ impl ArrivalTimingParameters {
     /// Checks every value against its range (the freeze before the start).
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "control.arrival_timing";
-        Bounds::closed(0.0, 3.0).check(
-            SECTION,
-            "max_speed_change_mps",
-            self.max_speed_change_mps,
-        )?;
-        Bounds::positive_up_to(5.0).check(SECTION, "window_s", self.window_s)?;
-        Bounds::positive_up_to(5.0).check(SECTION, "rate_mps_per_s", self.rate_mps_per_s)?;
-        Bounds::positive_up_to(120.0).check(
-            SECTION,
-            "start_time_to_go_s",
-            self.start_time_to_go_s,
-        )?;
-        Bounds::closed(0.0, self.start_time_to_go_s)
-            .exclusive_max()
-            .check(SECTION, "freeze_time_to_go_s", self.freeze_time_to_go_s)
+        check_ranges!(SECTION, self, {
+            max_speed_change_mps: Bounds::closed(0.0, 3.0),
+            window_s: Bounds::positive_up_to(5.0),
+            rate_mps_per_s: Bounds::positive_up_to(5.0),
+            start_time_to_go_s: Bounds::positive_up_to(120.0),
+            freeze_time_to_go_s: Bounds::closed(0.0, self.start_time_to_go_s) .exclusive_max(),
+        });
+        Ok(())
     }
 }
 

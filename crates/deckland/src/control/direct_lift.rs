@@ -26,7 +26,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 
 /// Direct lift control's law and surfaces (docs/model.md §5.9).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -125,54 +125,23 @@ impl DirectLiftParameters {
     /// the acceleration feed-forward 0–2.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "control.direct_lift";
-        Bounds::closed(0.0, 10.0).check(SECTION, "height_gain_per_m", self.height_gain_per_m)?;
-        Bounds::closed(0.0, 10.0).check(
-            SECTION,
-            "height_rate_gain_s_per_m",
-            self.height_rate_gain_s_per_m,
-        )?;
-        Bounds::positive_up_to(0.5).check(
-            SECTION,
-            "max_lift_coefficient_increment",
-            self.max_lift_coefficient_increment,
-        )?;
-        Bounds::closed(0.01, 2.0).check(SECTION, "time_constant_s", self.time_constant_s)?;
-        Bounds::positive_up_to(20.0).check(SECTION, "rate_limit_per_s", self.rate_limit_per_s)?;
-        Bounds::closed(0.0, 10.0).check(SECTION, "flare_time_to_go_s", self.flare_time_to_go_s)?;
-        Bounds::positive_up_to(20.0).check(
-            SECTION,
-            "flare_sink_rate_mps",
-            self.flare_sink_rate_mps,
-        )?;
-        Bounds::closed(0.0, 10.0).check(SECTION, "flare_gain_s_per_m", self.flare_gain_s_per_m)?;
-        Bounds::closed(0.0, 2.0).check(
-            SECTION,
-            "acceleration_feedforward",
-            self.acceleration_feedforward,
-        )?;
-        Bounds::closed(0.0, 10.0).check(
-            SECTION,
-            "close_in_height_gain_per_m",
-            self.close_in_height_gain_per_m,
-        )?;
-        Bounds::closed(0.0, 10.0).check(
-            SECTION,
-            "close_in_time_to_go_s",
-            self.close_in_time_to_go_s,
-        )?;
-        Bounds::positive_up_to(10.0).check(SECTION, "close_in_blend_s", self.close_in_blend_s)?;
-        Bounds::closed(0.0, 20.0).check(
-            SECTION,
-            "close_in_full_sea_sigma_m",
-            self.close_in_full_sea_sigma_m,
-        )?;
-        Bounds::closed(self.close_in_full_sea_sigma_m.max(0.0), 20.0)
-            .exclusive_min()
-            .check(
-                SECTION,
-                "close_in_no_sea_sigma_m",
-                self.close_in_no_sea_sigma_m,
-            )
+        check_ranges!(SECTION, self, {
+            height_gain_per_m: Bounds::closed(0.0, 10.0),
+            height_rate_gain_s_per_m: Bounds::closed(0.0, 10.0),
+            max_lift_coefficient_increment: Bounds::positive_up_to(0.5),
+            time_constant_s: Bounds::closed(0.01, 2.0),
+            rate_limit_per_s: Bounds::positive_up_to(20.0),
+            flare_time_to_go_s: Bounds::closed(0.0, 10.0),
+            flare_sink_rate_mps: Bounds::positive_up_to(20.0),
+            flare_gain_s_per_m: Bounds::closed(0.0, 10.0),
+            acceleration_feedforward: Bounds::closed(0.0, 2.0),
+            close_in_height_gain_per_m: Bounds::closed(0.0, 10.0),
+            close_in_time_to_go_s: Bounds::closed(0.0, 10.0),
+            close_in_blend_s: Bounds::positive_up_to(10.0),
+            close_in_full_sea_sigma_m: Bounds::closed(0.0, 20.0),
+            close_in_no_sea_sigma_m: Bounds::closed(self.close_in_full_sea_sigma_m.max(0.0), 20.0) .exclusive_min(),
+        });
+        Ok(())
     }
 
     /// The law for a sea whose landing point's height has the stationary σ

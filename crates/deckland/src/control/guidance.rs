@@ -6,7 +6,7 @@
 //! ±`climb_rate_authority_mps` with conditional-integration anti-windup.
 
 use super::loop_controller::{LoopController, LoopGains};
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
 
 /// Gains and limits of the guidance loop.
@@ -54,11 +54,10 @@ impl GuidanceParameters {
         gain.check(SECTION, "proportional_per_s", self.proportional_per_s)?;
         gain.check(SECTION, "integral_per_s2", self.integral_per_s2)?;
         gain.check(SECTION, "derivative", self.derivative)?;
-        Bounds::positive_up_to(30.0).check(
-            SECTION,
-            "climb_rate_authority_mps",
-            self.climb_rate_authority_mps,
-        )
+        check_ranges!(SECTION, self, {
+            climb_rate_authority_mps: Bounds::positive_up_to(30.0),
+        });
+        Ok(())
     }
 
     /// The loop as a limited PID controller (output: climb-rate correction in m/s).

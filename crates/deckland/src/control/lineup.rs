@@ -19,7 +19,7 @@
 //! lateral motion forecast in the last seconds. The weight is smooth, so the gains
 //! change without a step.
 
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 
 /// Where the lineup guidance's parameters are named in errors.
 pub const LINEUP_SECTION: &str = "control.lineup";
@@ -73,39 +73,17 @@ impl LineupParameters {
     /// Checks every field against its range, naming `control.lineup.<key>`.
     pub fn validate(&self) -> Result<(), ParameterError> {
         let s = LINEUP_SECTION;
-        Bounds::closed(0.0, 2.0).exclusive_min().check(
-            s,
-            "natural_frequency_radps",
-            self.natural_frequency_radps,
-        )?;
-        Bounds::closed(0.3, 3.0).check(s, "damping_ratio", self.damping_ratio)?;
-        Bounds::closed(0.0, 2.0).exclusive_min().check(
-            s,
-            "close_natural_frequency_radps",
-            self.close_natural_frequency_radps,
-        )?;
-        Bounds::closed(0.0, 200.0).check(
-            s,
-            "compensation_station_aft_m",
-            self.compensation_station_aft_m,
-        )?;
-        Bounds::closed(0.0, 45.0).exclusive_min().check(
-            s,
-            "max_bank_far_deg",
-            self.max_bank_far_deg,
-        )?;
-        Bounds::closed(0.0, 45.0).exclusive_min().check(
-            s,
-            "max_bank_close_deg",
-            self.max_bank_close_deg,
-        )?;
-        Bounds::closed(0.0, 60.0).check(s, "close_time_to_go_s", self.close_time_to_go_s)?;
-        Bounds::closed(0.0, 30.0)
-            .exclusive_min()
-            .check(s, "limit_blend_s", self.limit_blend_s)?;
-        Bounds::closed(0.0, 30.0)
-            .exclusive_min()
-            .check(s, "gravity_mps2", self.gravity_mps2)?;
+        check_ranges!(s, self, {
+            natural_frequency_radps: Bounds::closed(0.0, 2.0).exclusive_min(),
+            damping_ratio: Bounds::closed(0.3, 3.0),
+            close_natural_frequency_radps: Bounds::closed(0.0, 2.0).exclusive_min(),
+            compensation_station_aft_m: Bounds::closed(0.0, 200.0),
+            max_bank_far_deg: Bounds::closed(0.0, 45.0).exclusive_min(),
+            max_bank_close_deg: Bounds::closed(0.0, 45.0).exclusive_min(),
+            close_time_to_go_s: Bounds::closed(0.0, 60.0),
+            limit_blend_s: Bounds::closed(0.0, 30.0) .exclusive_min(),
+            gravity_mps2: Bounds::closed(0.0, 30.0) .exclusive_min(),
+        });
         Ok(())
     }
 

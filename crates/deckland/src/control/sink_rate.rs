@@ -6,7 +6,7 @@
 //! anti-windup.
 
 use super::loop_controller::{LoopController, LoopGains};
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
 
 /// Gains and limits of the sink-rate loop.
@@ -97,13 +97,12 @@ impl SinkRateControllerParameters {
             self.proportional_rad_per_mps,
         )?;
         gain.check(SECTION, "integral_rad_per_m", self.integral_rad_per_m)?;
-        Bounds::positive_up_to(30.0).check(
-            SECTION,
-            "pitch_authority_deg",
-            self.pitch_authority_deg,
-        )?;
-        Bounds::closed(-5.0, 15.0).check(SECTION, "min_alpha_deg", self.min_alpha_deg)?;
-        Bounds::closed(0.0, 2.0).check(SECTION, "alpha_lead_s", self.alpha_lead_s)
+        check_ranges!(SECTION, self, {
+            pitch_authority_deg: Bounds::positive_up_to(30.0),
+            min_alpha_deg: Bounds::closed(-5.0, 15.0),
+            alpha_lead_s: Bounds::closed(0.0, 2.0),
+        });
+        Ok(())
     }
 
     /// The loop as a limited PI controller (output: pitch correction in rad).

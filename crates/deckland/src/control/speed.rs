@@ -16,7 +16,7 @@
 //! the loop's crossover near 0.46 rad/s (phase margin 49°; 41° at 2 rad/s).
 
 use super::loop_controller::{LoopController, LoopGains};
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
 
 /// What a user chooses for the speed loop.
@@ -46,12 +46,10 @@ impl SpeedControllerParameters {
     /// Checks both design values are finite and positive.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "control.speed";
-        Bounds::positive_up_to(10.0).check(
-            SECTION,
-            "natural_frequency_radps",
-            self.natural_frequency_radps,
-        )?;
-        Bounds::closed(0.1, 5.0).check(SECTION, "damping_ratio", self.damping_ratio)?;
+        check_ranges!(SECTION, self, {
+            natural_frequency_radps: Bounds::positive_up_to(10.0),
+            damping_ratio: Bounds::closed(0.1, 5.0),
+        });
         if let Some(frequency) = self.airspeed_filter_frequency_radps {
             Bounds::closed(0.1, 100.0).check(
                 SECTION,

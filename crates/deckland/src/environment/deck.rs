@@ -15,7 +15,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 
 /// Where the ship is, in earth axes, at one instant: the inputs of Eq. 17–18 (x_G, z_G,
 /// θ_s) and the lateral components of docs/model.md §10.5 (sway, roll, yaw). The 3-DOF
@@ -147,29 +147,21 @@ impl DeckGeometry {
     /// [0, 40] m.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "environment.deck";
-        Bounds::closed(0.0, 400.0).check(
-            SECTION,
-            "landing_point_aft_of_pitch_centre_m",
-            self.landing_point_aft_of_pitch_centre_m,
-        )?;
+        check_ranges!(SECTION, self, {
+            landing_point_aft_of_pitch_centre_m: Bounds::closed(0.0, 400.0),
+        });
         let ramp_bounds = Bounds::positive_up_to(400.0);
         ramp_bounds.check(
             SECTION,
             "ramp_aft_of_aim_point_m",
             self.ramp_aft_of_aim_point_m,
         )?;
-        Bounds::closed(0.0, 100.0).check(SECTION, "deck_height_m", self.deck_height_m)?;
-        Bounds::closed(0.0, 15.0).check(SECTION, "deck_angle_deg", self.deck_angle_deg)?;
-        Bounds::closed(-30.0, 30.0).check(
-            SECTION,
-            "aim_point_port_of_centreline_m",
-            self.aim_point_port_of_centreline_m,
-        )?;
-        Bounds::closed(0.0, 40.0).check(
-            SECTION,
-            "deck_height_above_roll_axis_m",
-            self.deck_height_above_roll_axis_m,
-        )?;
+        check_ranges!(SECTION, self, {
+            deck_height_m: Bounds::closed(0.0, 100.0),
+            deck_angle_deg: Bounds::closed(0.0, 15.0),
+            aim_point_port_of_centreline_m: Bounds::closed(-30.0, 30.0),
+            deck_height_above_roll_axis_m: Bounds::closed(0.0, 40.0),
+        });
         for &position in &self.wire_positions_m {
             Bounds::closed(-400.0, 400.0).check(SECTION, "wire_positions_m", position)?;
         }

@@ -18,7 +18,7 @@ use serde::{Deserialize, Serialize};
 
 use super::deck::{ShipPose, ShipPoseRate};
 use super::lyapunov::stationary_covariance;
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 use crate::random::NoiseStream;
 
 /// Coefficients (d₀, d₁, d₂, d₃) of D(s) = s⁴ + d₃s³ + d₂s² + d₁s + d₀ (paper Eq. 15–16).
@@ -172,12 +172,14 @@ impl ShipMotionParameters {
     /// [0, 30] m/s, roll RMS in [0, 30]°, yaw RMS in [0, 10]°, sway RMS in [0, 20] m.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "environment.ship";
-        Bounds::closed(0.0, 50.0).check(SECTION, "heave_rms_m", self.heave_rms_m)?;
-        Bounds::closed(0.0, 30.0).check(SECTION, "pitch_rms_deg", self.pitch_rms_deg)?;
-        Bounds::closed(0.0, 30.0).check(SECTION, "forward_speed_mps", self.forward_speed_mps)?;
-        Bounds::closed(0.0, 30.0).check(SECTION, "roll_rms_deg", self.roll_rms_deg)?;
-        Bounds::closed(0.0, 10.0).check(SECTION, "yaw_rms_deg", self.yaw_rms_deg)?;
-        Bounds::closed(0.0, 20.0).check(SECTION, "sway_rms_m", self.sway_rms_m)?;
+        check_ranges!(SECTION, self, {
+            heave_rms_m: Bounds::closed(0.0, 50.0),
+            pitch_rms_deg: Bounds::closed(0.0, 30.0),
+            forward_speed_mps: Bounds::closed(0.0, 30.0),
+            roll_rms_deg: Bounds::closed(0.0, 30.0),
+            yaw_rms_deg: Bounds::closed(0.0, 10.0),
+            sway_rms_m: Bounds::closed(0.0, 20.0),
+        });
         Ok(())
     }
 }

@@ -13,7 +13,7 @@ use std::ops::Add;
 
 use serde::{Deserialize, Serialize};
 
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 
 /// Distance aft of the pitch centre beyond which the steady wake vanishes (m); paper
 /// Eq. 21–22 (3000 ft).
@@ -158,7 +158,9 @@ impl WindParameters {
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "environment.wind";
         let sigma = Bounds::closed(0.0, 10.0);
-        Bounds::closed(0.0, 40.0).check(SECTION, "wind_over_deck_mps", self.wind_over_deck_mps)?;
+        check_ranges!(SECTION, self, {
+            wind_over_deck_mps: Bounds::closed(0.0, 40.0),
+        });
         if self.wind_over_deck_mps > 0.0 && self.wind_over_deck_mps < MIN_WIND_OVER_DECK_MPS {
             return Err(ParameterError::new(
                 SECTION,
@@ -183,21 +185,17 @@ impl WindParameters {
         )?;
         let scale = Bounds::positive_up_to(3000.0);
         scale.check(SECTION, "turbulence_scale_m", self.turbulence_scale_m)?;
-        Bounds::closed(0.0, 0.5).check(
-            SECTION,
-            "periodic_wake_ship_pitch_rad",
-            self.periodic_wake_ship_pitch_rad,
-        )?;
-        Bounds::closed(0.0, 20.0).check(
-            SECTION,
-            "periodic_wake_frequency_radps",
-            self.periodic_wake_frequency_radps,
-        )?;
+        check_ranges!(SECTION, self, {
+            periodic_wake_ship_pitch_rad: Bounds::closed(0.0, 0.5),
+            periodic_wake_frequency_radps: Bounds::closed(0.0, 20.0),
+        });
         if let Some(extent) = self.wake_extent_m {
             Bounds::closed(2.0 * WAKE_TAPER_M, 5000.0).check(SECTION, "wake_extent_m", extent)?;
         }
-        Bounds::closed(-10.0, 10.0).check(SECTION, "crosswind_mps", self.crosswind_mps)?;
-        Bounds::positive_up_to(30.0).check(SECTION, "max_crab_deg", self.max_crab_deg)?;
+        check_ranges!(SECTION, self, {
+            crosswind_mps: Bounds::closed(-10.0, 10.0),
+            max_crab_deg: Bounds::positive_up_to(30.0),
+        });
         Ok(())
     }
 

@@ -19,7 +19,7 @@
 //! so x1, x2, x3 estimate w1, w2, w3. The paper's Eq. 12 omits h and its Eq. 13 prints
 //! α3 for α1; docs/model.md §4 corrects both.
 
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
 
 /// Tuning of the augmented observer (docs/model.md §4; paper §2.3).
@@ -78,13 +78,11 @@ impl ObserverParameters {
                 format_args!("a value above (4/π)·k1/k3 = {bound:.4} for stability"),
             ));
         }
-        Bounds::closed(0.0, 1.0)
-            .exclusive_min()
-            .exclusive_max()
-            .check(section, "alpha1", self.alpha1)?;
-        Bounds::closed(0.001, 1.0)
-            .exclusive_max()
-            .check(section, "epsilon", self.epsilon)
+        check_ranges!(section, self, {
+            alpha1: Bounds::closed(0.0, 1.0) .exclusive_min() .exclusive_max(),
+            epsilon: Bounds::closed(0.001, 1.0) .exclusive_max(),
+        });
+        Ok(())
     }
 
     /// [`ObserverParameters::validate_in`] at the O-PD's [`ObserverParameters::SECTION`].

@@ -10,7 +10,7 @@ use super::splitting::{
     estimate_batched, repetition_seed, run, AmsError, Budget, Estimate, EventParticle, Run,
     Settings,
 };
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 use crate::recording::SummaryRecorder;
 use crate::scenario::Scenario;
 use crate::simulation::Simulation;
@@ -61,7 +61,9 @@ impl RareRequest {
     /// Checks the numbers; the error names the option and its value.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "rare";
-        Bounds::positive_up_to(1.0).check(SECTION, "target_rel_error", self.target_rel_error)?;
+        check_ranges!(SECTION, self, {
+            target_rel_error: Bounds::positive_up_to(1.0),
+        });
         Bounds::closed(1.0, 1e9).check(SECTION, "max_runs", self.max_runs as f64)?;
         Bounds::closed(4.0, 100_000.0).check(SECTION, "particles", self.particles as f64)?;
         if let Some(threshold) = self.threshold {

@@ -1,7 +1,7 @@
 //! The `[approach]` section: where and how fast an approach starts, and whether a 6-DOF
 //! aircraft flies it in three dimensions.
 
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
 
 /// The start of an approach (docs/model.md §6).
@@ -49,33 +49,16 @@ impl ApproachParameters {
     /// (±50 m) and the 3-D approach's lineup and heading-hold keys (their ranges above).
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "approach";
-        Bounds::closed(200.0, 10_000.0).check(SECTION, "start_range_m", self.start_range_m)?;
-        Bounds::closed(40.0, 150.0).check(SECTION, "airspeed_mps", self.airspeed_mps)?;
-        Bounds::closed(-50.0, 50.0).check(
-            SECTION,
-            "start_height_offset_m",
-            self.start_height_offset_m,
-        )?;
-        Bounds::closed(0.0, 2.0).exclusive_min().check(
-            SECTION,
-            "lineup_close_frequency_radps",
-            self.lineup_close_frequency_radps,
-        )?;
-        Bounds::closed(0.0, 200.0).check(
-            SECTION,
-            "lineup_station_aft_m",
-            self.lineup_station_aft_m,
-        )?;
-        Bounds::closed(0.0, 60.0).check(
-            SECTION,
-            "heading_hold_time_to_go_s",
-            self.heading_hold_time_to_go_s,
-        )?;
-        Bounds::closed(0.0, 30.0).exclusive_min().check(
-            SECTION,
-            "heading_hold_blend_s",
-            self.heading_hold_blend_s,
-        )
+        check_ranges!(SECTION, self, {
+            start_range_m: Bounds::closed(200.0, 10_000.0),
+            airspeed_mps: Bounds::closed(40.0, 150.0),
+            start_height_offset_m: Bounds::closed(-50.0, 50.0),
+            lineup_close_frequency_radps: Bounds::closed(0.0, 2.0).exclusive_min(),
+            lineup_station_aft_m: Bounds::closed(0.0, 200.0),
+            heading_hold_time_to_go_s: Bounds::closed(0.0, 60.0),
+            heading_hold_blend_s: Bounds::closed(0.0, 30.0).exclusive_min(),
+        });
+        Ok(())
     }
 }
 

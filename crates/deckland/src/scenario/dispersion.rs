@@ -11,7 +11,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::Scenario;
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 use crate::random::RandomStreams;
 
 /// Name of the random stream the dispersions are drawn from.
@@ -70,22 +70,13 @@ impl DispersionParameters {
     /// Checks every standard deviation is finite, non-negative and below a sane limit.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "dispersion";
-        Bounds::closed(0.0, 20.0).check(
-            SECTION,
-            "start_height_offset_sd_m",
-            self.start_height_offset_sd_m,
-        )?;
-        Bounds::closed(0.0, 10.0).check(
-            SECTION,
-            "airspeed_error_sd_mps",
-            self.airspeed_error_sd_mps,
-        )?;
-        Bounds::closed(0.0, 1.0).check(SECTION, "sea_state_log_sd", self.sea_state_log_sd)?;
-        Bounds::closed(0.0, 10.0).check(
-            SECTION,
-            "wind_over_deck_sd_mps",
-            self.wind_over_deck_sd_mps,
-        )
+        check_ranges!(SECTION, self, {
+            start_height_offset_sd_m: Bounds::closed(0.0, 20.0),
+            airspeed_error_sd_mps: Bounds::closed(0.0, 10.0),
+            sea_state_log_sd: Bounds::closed(0.0, 1.0),
+            wind_over_deck_sd_mps: Bounds::closed(0.0, 10.0),
+        });
+        Ok(())
     }
 
     /// The draw of the run whose random streams are `streams`: four standard normal

@@ -17,7 +17,7 @@ use crate::environment::seaway::SeawayParameters;
 use crate::environment::{
     resolved_ship_parameters, DeckGeometry, ShipMotion, ShipMotionParameters, WindParameters,
 };
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 use crate::sensors::{PitchNoiseParameters, ShipMotionSensingParameters};
 use serde::{Deserialize, Serialize};
 
@@ -223,12 +223,11 @@ impl OutcomeLimits {
     /// Checks the hard-landing limit ((0, 50] m/s) and the airspeed limit ([0, 100] m/s).
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "outcome";
-        Bounds::positive_up_to(50.0).check(
-            SECTION,
-            "hard_landing_sink_rate_mps",
-            self.hard_landing_sink_rate_mps,
-        )?;
-        Bounds::closed(0.0, 100.0).check(SECTION, "min_airspeed_mps", self.min_airspeed_mps)
+        check_ranges!(SECTION, self, {
+            hard_landing_sink_rate_mps: Bounds::positive_up_to(50.0),
+            min_airspeed_mps: Bounds::closed(0.0, 100.0),
+        });
+        Ok(())
     }
 }
 

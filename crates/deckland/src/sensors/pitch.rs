@@ -6,7 +6,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 use crate::random::{stream_names, NoiseStream, RandomStreams, Reseed};
 
 /// Configuration of the pitch-attitude measurement noise (docs/model.md §3.3).
@@ -38,21 +38,11 @@ impl PitchNoiseParameters {
     /// Checks every field: amplitude and σ in [0, 0.1] rad, frequency in [0, 1000] rad/s.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "environment.pitch_noise";
-        Bounds::closed(0.0, 0.1).check(
-            SECTION,
-            "sinusoid_amplitude_rad",
-            self.sinusoid_amplitude_rad,
-        )?;
-        Bounds::closed(0.0, 1000.0).check(
-            SECTION,
-            "sinusoid_frequency_radps",
-            self.sinusoid_frequency_radps,
-        )?;
-        Bounds::closed(0.0, 0.1).check(
-            SECTION,
-            "white_noise_sigma_rad",
-            self.white_noise_sigma_rad,
-        )?;
+        check_ranges!(SECTION, self, {
+            sinusoid_amplitude_rad: Bounds::closed(0.0, 0.1),
+            sinusoid_frequency_radps: Bounds::closed(0.0, 1000.0),
+            white_noise_sigma_rad: Bounds::closed(0.0, 0.1),
+        });
         Ok(())
     }
 }

@@ -21,7 +21,7 @@ use super::data_link::{DataLink, Stamped};
 use serde::{Deserialize, Serialize};
 
 use crate::environment::ShipMotionOutputs;
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 use crate::random::{stream_names, NoiseStream, RandomStreams, Reseed};
 
 /// Noise, rate and latency of the ship-motion measurements (docs/model.md §3.5).
@@ -109,8 +109,10 @@ impl ShipMotionSensingParameters {
             "pitch_rate_sigma_degps",
             self.pitch_rate_sigma_degps,
         )?;
-        Bounds::closed(1.0, 1000.0).check(section, "sample_rate_hz", self.sample_rate_hz)?;
-        Bounds::closed(0.0, 5.0).check(section, "latency_s", self.latency_s)?;
+        check_ranges!(section, self, {
+            sample_rate_hz: Bounds::closed(1.0, 1000.0),
+            latency_s: Bounds::closed(0.0, 5.0),
+        });
         for (key, value) in [
             ("roll_sigma_deg", self.roll_sigma_deg),
             ("roll_rate_sigma_degps", self.roll_rate_sigma_degps),

@@ -38,7 +38,7 @@
 
 use crate::control::smooth_step;
 use crate::environment::{EarthPoint, EarthVelocity};
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 use serde::{Deserialize, Serialize};
 
 /// How the landing point is predicted for deck-motion compensation (docs/model.md §5.7).
@@ -235,71 +235,26 @@ impl FlightPathParameters {
     /// Checks every value against its range (each field's doc), naming the key.
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "control.flight_path";
-        Bounds::positive_up_to(10.0).check(SECTION, "glide_slope_deg", self.glide_slope_deg)?;
-        Bounds::closed(0.0, 60.0).check(
-            SECTION,
-            "compensation_window_s",
-            self.compensation_window_s,
-        )?;
-        Bounds::positive_up_to(30.0).check(
-            SECTION,
-            "compensation_blend_s",
-            self.compensation_blend_s,
-        )?;
-        Bounds::closed(0.0, 10.0).check(SECTION, "deck_motion_lead_s", self.deck_motion_lead_s)?;
-        Bounds::positive_up_to(100.0).check(
-            SECTION,
-            "deck_filter_frequency_radps",
-            self.deck_filter_frequency_radps,
-        )?;
-        Bounds::positive_up_to(100.0).check(
-            SECTION,
-            "anchor_filter_frequency_radps",
-            self.anchor_filter_frequency_radps,
-        )?;
-        Bounds::closed(0.0, 20.0).check(
-            SECTION,
-            "ramp_clearance_margin_m",
-            self.ramp_clearance_margin_m,
-        )?;
-        Bounds::closed(0.0, 2.0).check(SECTION, "descent_blend_s", self.descent_blend_s)?;
-        Bounds::positive_up_to(20.0).check(
-            SECTION,
-            "max_descent_after_ramp_sink_mps",
-            self.max_descent_after_ramp_sink_mps,
-        )?;
-        Bounds::closed(0.0, 0.5).exclusive_max().check(
-            SECTION,
-            "ramp_strike_probability_limit",
-            self.ramp_strike_probability_limit,
-        )?;
-        Bounds::closed(self.ramp_clearance_margin_m.max(0.0), 20.0).check(
-            SECTION,
-            "max_ramp_clearance_m",
-            self.max_ramp_clearance_m,
-        )?;
-        Bounds::closed(0.0, 5.0).check(SECTION, "hook_height_sigma_m", self.hook_height_sigma_m)?;
-        Bounds::closed(0.0, 10.0).check(
-            SECTION,
-            "ramp_sigma_min_horizon_s",
-            self.ramp_sigma_min_horizon_s,
-        )?;
-        Bounds::closed(0.0, 2.0).check(
-            SECTION,
-            "ramp_crossing_time_sigma_s",
-            self.ramp_crossing_time_sigma_s,
-        )?;
-        Bounds::closed(-50.0, 50.0).check(
-            SECTION,
-            "touchdown_correction_m",
-            self.touchdown_correction_m,
-        )?;
-        Bounds::closed(0.0, 10.0).check(
-            SECTION,
-            "wake_feedforward_lead_s",
-            self.wake_feedforward_lead_s,
-        )?;
-        Bounds::closed(0.0, 5.0).check(SECTION, "ramp_recovery_m", self.ramp_recovery_m)
+        check_ranges!(SECTION, self, {
+            glide_slope_deg: Bounds::positive_up_to(10.0),
+            compensation_window_s: Bounds::closed(0.0, 60.0),
+            compensation_blend_s: Bounds::positive_up_to(30.0),
+            deck_motion_lead_s: Bounds::closed(0.0, 10.0),
+            deck_filter_frequency_radps: Bounds::positive_up_to(100.0),
+            anchor_filter_frequency_radps: Bounds::positive_up_to(100.0),
+            ramp_clearance_margin_m: Bounds::closed(0.0, 20.0),
+            descent_blend_s: Bounds::closed(0.0, 2.0),
+            max_descent_after_ramp_sink_mps: Bounds::positive_up_to(20.0),
+            ramp_strike_probability_limit: Bounds::closed(0.0, 0.5).exclusive_max(),
+            max_ramp_clearance_m: Bounds::closed(self.ramp_clearance_margin_m.max(0.0), 20.0),
+            hook_height_sigma_m: Bounds::closed(0.0, 5.0),
+            ramp_sigma_min_horizon_s: Bounds::closed(0.0, 10.0),
+            ramp_crossing_time_sigma_s: Bounds::closed(0.0, 2.0),
+            touchdown_correction_m: Bounds::closed(-50.0, 50.0),
+            wake_feedforward_lead_s: Bounds::closed(0.0, 10.0),
+            ramp_recovery_m: Bounds::closed(0.0, 5.0),
+        });
+        Ok(())
     }
 }
 

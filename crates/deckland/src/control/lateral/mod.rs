@@ -38,7 +38,7 @@ use crate::control::pitch::{
 };
 use crate::control::{AxisLaw, LinearLaw};
 use crate::estimation::ObserverParameters;
-use crate::parameters::{join, Bounds, ParameterError};
+use crate::parameters::{check_ranges, join, Bounds, ParameterError};
 
 pub mod design;
 mod fractional_power;
@@ -225,8 +225,10 @@ pub struct LateralObserverPdParameters {
 impl LateralObserverPdParameters {
     /// Checks each parameter, naming `section.key`.
     pub fn validate(&self, section: &str) -> Result<(), ParameterError> {
-        Bounds::closed(0.05, 30.0).check(section, "settling_time_s", self.settling_time_s)?;
-        Bounds::closed(0.1, 5.0).check(section, "damping_ratio", self.damping_ratio)?;
+        check_ranges!(section, self, {
+            settling_time_s: Bounds::closed(0.05, 30.0),
+            damping_ratio: Bounds::closed(0.1, 5.0),
+        });
         self.observer.validate_in(&join(section, "observer"))
     }
 
@@ -257,13 +259,12 @@ pub struct LateralPidParameters {
 impl LateralPidParameters {
     /// Checks each gain, naming `section.key`.
     pub fn validate(&self, section: &str) -> Result<(), ParameterError> {
-        Bounds::closed(0.0, 10_000.0).check(
-            section,
-            "proportional_per_s2",
-            self.proportional_per_s2,
-        )?;
-        Bounds::closed(0.0, 10_000.0).check(section, "integral_per_s3", self.integral_per_s3)?;
-        Bounds::closed(0.0, 1000.0).check(section, "derivative_per_s", self.derivative_per_s)
+        check_ranges!(section, self, {
+            proportional_per_s2: Bounds::closed(0.0, 10_000.0),
+            integral_per_s3: Bounds::closed(0.0, 10_000.0),
+            derivative_per_s: Bounds::closed(0.0, 1000.0),
+        });
+        Ok(())
     }
 
     fn pitch(&self) -> PidParameters {

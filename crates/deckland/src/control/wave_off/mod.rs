@@ -28,7 +28,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::control::DeckForecast;
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 
 /// The wave-off decision's limits and how it is flown (docs/model.md §9).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -288,43 +288,31 @@ impl WaveOffParameters {
     /// the stall's side of the approach).
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "control.wave_off";
-        Bounds::closed(0.0, 30.0).check(
-            SECTION,
-            "window_start_time_to_go_s",
-            self.window_start_time_to_go_s,
-        )?;
-        Bounds::closed(0.0, self.window_start_time_to_go_s).check(
-            SECTION,
-            "decision_time_to_go_s",
-            self.decision_time_to_go_s,
-        )?;
+        check_ranges!(SECTION, self, {
+            window_start_time_to_go_s: Bounds::closed(0.0, 30.0),
+            decision_time_to_go_s: Bounds::closed(0.0, self.window_start_time_to_go_s),
+        });
         let probability = Bounds::closed(0.0, 1.0).exclusive_max();
         self.validate_criteria(SECTION, probability)?;
-        Bounds::positive_up_to(30.0).check(SECTION, "climb_rate_mps", self.climb_rate_mps)?;
-        Bounds::closed(0.0, 2.0).check(SECTION, "climb_blend_s", self.climb_blend_s)?;
+        check_ranges!(SECTION, self, {
+            climb_rate_mps: Bounds::positive_up_to(30.0),
+            climb_blend_s: Bounds::closed(0.0, 2.0),
+        });
         probability.check(
             SECTION,
             "late_abort_ramp_strike_probability",
             self.late_abort_ramp_strike_probability,
         )?;
-        Bounds::closed(0.0, 20.0).check(
-            SECTION,
-            "late_abort_touchdown_sink_rate_mps",
-            self.late_abort_touchdown_sink_rate_mps,
-        )?;
-        Bounds::positive_up_to(100.0).check(
-            SECTION,
-            "late_abort_rate_per_s",
-            self.late_abort_rate_per_s,
-        )?;
-        Bounds::closed(-5.0, 15.0).check(SECTION, "min_alpha_deg", self.min_alpha_deg)?;
+        check_ranges!(SECTION, self, {
+            late_abort_touchdown_sink_rate_mps: Bounds::closed(0.0, 20.0),
+            late_abort_rate_per_s: Bounds::positive_up_to(100.0),
+            min_alpha_deg: Bounds::closed(-5.0, 15.0),
+        });
         self.validate_heavy_sea(SECTION, probability)?;
-        Bounds::closed(0.0, 2.0).check(SECTION, "alpha_lead_s", self.alpha_lead_s)?;
-        Bounds::closed(0.0, 50.0).check(
-            SECTION,
-            "climb_out_airspeed_margin_mps",
-            self.climb_out_airspeed_margin_mps,
-        )?;
+        check_ranges!(SECTION, self, {
+            alpha_lead_s: Bounds::closed(0.0, 2.0),
+            climb_out_airspeed_margin_mps: Bounds::closed(0.0, 50.0),
+        });
         self.recovery.validate()
     }
 

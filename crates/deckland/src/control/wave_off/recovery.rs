@@ -7,7 +7,7 @@ use serde::{Deserialize, Serialize};
 
 use super::{WaveOffCriterion, WaveOffDecision, WaveOffInputs, WaveOffParameters};
 use crate::environment::{DeckGeometry, ShipMotion};
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 
 /// How the early check reads the deck forecast against the limits
 /// (`foul_deck_model`).
@@ -126,36 +126,15 @@ impl RecoveryLimits {
     /// window (0, 50] m over (0, 30] s).
     pub fn validate(&self) -> Result<(), ParameterError> {
         const SECTION: &str = "control.wave_off.recovery";
-        Bounds::closed(0.0, 60.0).check(
-            SECTION,
-            "foul_deck_time_to_go_s",
-            self.foul_deck_time_to_go_s,
-        )?;
-        Bounds::positive_up_to(100.0).check(
-            SECTION,
-            "total_deck_motion_m",
-            self.total_deck_motion_m,
-        )?;
-        Bounds::positive_up_to(30.0).check(
-            SECTION,
-            "lens_pitch_limit_deg",
-            self.lens_pitch_limit_deg,
-        )?;
-        Bounds::positive_up_to(45.0).check(
-            SECTION,
-            "lens_roll_limit_deg",
-            self.lens_roll_limit_deg,
-        )?;
-        Bounds::positive_up_to(50.0).check(
-            SECTION,
-            "deck_motion_in_window_m",
-            self.deck_motion_in_window_m,
-        )?;
-        Bounds::positive_up_to(30.0).check(
-            SECTION,
-            "deck_motion_window_s",
-            self.deck_motion_window_s,
-        )
+        check_ranges!(SECTION, self, {
+            foul_deck_time_to_go_s: Bounds::closed(0.0, 60.0),
+            total_deck_motion_m: Bounds::positive_up_to(100.0),
+            lens_pitch_limit_deg: Bounds::positive_up_to(30.0),
+            lens_roll_limit_deg: Bounds::positive_up_to(45.0),
+            deck_motion_in_window_m: Bounds::positive_up_to(50.0),
+            deck_motion_window_s: Bounds::positive_up_to(30.0),
+        });
+        Ok(())
     }
 
     /// The largest share (%) of a limit that the deck forecast for touchdown reaches:

@@ -36,7 +36,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::{SeawayError, STANDARD_GRAVITY_MPS2};
-use crate::parameters::Bounds;
+use crate::parameters::{check_ranges, Bounds};
 
 /// Density of sea water (kg/m³), the ITTC standard value at 15 °C (1025.9, rounded as usual).
 pub const SEAWATER_DENSITY_KGPM3: f64 = 1025.0;
@@ -98,21 +98,15 @@ impl HullParameters {
     /// [0.01, 0.5], and the block coefficient in [0.35, 1].
     pub fn validate(&self) -> Result<(), SeawayError> {
         const SECTION: &str = "environment.seaway.hull";
-        Bounds::closed(50.0, 500.0).check(
-            SECTION,
-            "waterline_length_m",
-            self.waterline_length_m,
-        )?;
-        Bounds::closed(5.0, 80.0).check(SECTION, "waterline_beam_m", self.waterline_beam_m)?;
-        Bounds::closed(1.0, 30.0).check(SECTION, "draught_m", self.draught_m)?;
-        Bounds::closed(1000.0, 300_000.0).check(SECTION, "displacement_t", self.displacement_t)?;
-        Bounds::closed(0.0, 20.0).check(SECTION, "speed_mps", self.speed_mps)?;
-        Bounds::closed(5.0, 40.0).check(
-            SECTION,
-            "roll_natural_period_s",
-            self.roll_natural_period_s,
-        )?;
-        Bounds::closed(0.01, 0.5).check(SECTION, "roll_damping_ratio", self.roll_damping_ratio)?;
+        check_ranges!(SECTION, self, {
+            waterline_length_m: Bounds::closed(50.0, 500.0),
+            waterline_beam_m: Bounds::closed(5.0, 80.0),
+            draught_m: Bounds::closed(1.0, 30.0),
+            displacement_t: Bounds::closed(1000.0, 300_000.0),
+            speed_mps: Bounds::closed(0.0, 20.0),
+            roll_natural_period_s: Bounds::closed(5.0, 40.0),
+            roll_damping_ratio: Bounds::closed(0.01, 0.5),
+        });
         Bounds::closed(0.35, 1.0).check(
             SECTION,
             "displacement_t (block coefficient)",

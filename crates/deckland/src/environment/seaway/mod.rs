@@ -56,7 +56,7 @@ pub use spectrum::{
 
 use serde::{Deserialize, Serialize};
 
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{check_ranges, Bounds, ParameterError};
 
 /// Standard gravity g (m/s²), CGPM 1901.
 pub const STANDARD_GRAVITY_MPS2: f64 = 9.80665;
@@ -227,8 +227,10 @@ impl SeawayParameters {
         }
         self.wave_spectrum()?;
         self.hull.validate()?;
-        Bounds::closed(0.0, 360.0).check(SECTION, "wave_heading_deg", self.wave_heading_deg)?;
-        Bounds::closed(0.5, 20.0).check(SECTION, "spreading_exponent", self.spreading_exponent)?;
+        check_ranges!(SECTION, self, {
+            wave_heading_deg: Bounds::closed(0.0, 360.0),
+            spreading_exponent: Bounds::closed(0.5, 20.0),
+        });
         let heading = self.wave_heading_deg.to_radians();
         if self.hull.speed_mps * heading.cos() > 1e-9 {
             return Err(SeawayError::FollowingSeas {

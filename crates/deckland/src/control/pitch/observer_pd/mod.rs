@@ -17,7 +17,7 @@ use crate::control::design::{LinearisedLaw, AxisPlantDerivatives};
 use super::law::{PitchDesignContext, PitchLawDesign, PitchLawInputs, SECTION};
 use crate::control::{AxisLaw, LinearLaw};
 use crate::estimation::{AugmentedObserver, FractionalPower, ObserverParameters, ObserverState};
-use crate::parameters::{Bounds, ParameterError};
+use crate::parameters::{Bounds, ParameterError, check_ranges};
 
 mod design;
 mod tabulated;
@@ -99,8 +99,10 @@ impl ObserverPdParameters {
     /// Checks the design parameters (T_2% in [0.05, 30] s, ζ in [0.1, 5]) and the
     /// observer, naming `section.key`.
     pub fn validate(&self, section: &str) -> Result<(), ParameterError> {
-        Bounds::closed(0.05, 30.0).check(section, "settling_time_s", self.settling_time_s)?;
-        Bounds::closed(0.1, 5.0).check(section, "damping_ratio", self.damping_ratio)?;
+        check_ranges!(section, self, {
+            settling_time_s: Bounds::closed(0.05, 30.0),
+            damping_ratio: Bounds::closed(0.1, 5.0),
+        });
         self.observer
             .validate_in(&crate::parameters::join(section, "observer"))
     }
