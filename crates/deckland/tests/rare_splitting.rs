@@ -170,4 +170,18 @@ fn bad_requests_are_named() {
         message.contains("3-D approach") && message.contains("`cross_track_m`"),
         "{message}"
     );
+    // Only the ramp's score has a calibration.
+    let message = error(RareRequest {
+        calibration_runs: 10,
+        ..RareRequest::new(RareEvent::HardLanding, 1)
+    });
+    assert!(
+        message.contains("rare.calibration_runs") && message.contains("hard_landing"),
+        "{message}"
+    );
+    let message = error(RareRequest {
+        calibration_runs: 1_000_000,
+        ..base
+    });
+    assert!(message.contains("rare.calibration_runs"), "{message}");
 }

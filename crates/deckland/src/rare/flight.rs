@@ -3,6 +3,7 @@
 
 use std::sync::Arc;
 
+use super::ramp_calibration::RampCalibration;
 use super::score::{EventScore, EventThresholds, RareEvent};
 use super::splitting::{Advance, Trajectory};
 use crate::experiments::{ApproachRun, APPROACH_COLUMNS, APPROACH_RECORD_INTERVAL_S};
@@ -47,6 +48,8 @@ pub struct ApproachFlight {
     /// Every step's signals and the events, when the flight is recorded
     /// ([`ApproachFlight::recorded`]).
     recording: Option<TimeSeriesRecorder>,
+    /// The ramp score's calibration, if calibrated ([`ApproachFlight::with_ramp_calibration`]).
+    ramp_calibration: Option<Arc<RampCalibration>>,
 }
 
 impl ApproachFlight {
@@ -80,7 +83,15 @@ impl ApproachFlight {
             score,
             setup_error: None,
             recording: None,
+            ramp_calibration: None,
         })
+    }
+
+    /// This flight scored with the ramp's forecast calibrated (every fresh start too).
+    pub fn with_ramp_calibration(mut self, calibration: Option<Arc<RampCalibration>>) -> Self {
+        self.score = self.score.with_ramp_calibration(calibration.clone());
+        self.ramp_calibration = calibration;
+        self
     }
 
     /// This flight, recording every step from here (to save a flight that reached the
@@ -153,7 +164,8 @@ impl ApproachFlight {
             self.thresholds,
             &self.scenario,
             &self.simulation,
-        );
+        )
+        .with_ramp_calibration(self.ramp_calibration.clone());
     }
 }
 

@@ -13,16 +13,20 @@
 //! - [`score`]: each catastrophic event's score along an approach.
 //! - [`flight`]: an approach as a trajectory splitting can branch.
 //! - [`ramp_forecast`]: the ramp score's forecast along a flight, beside the clearance
-//!   flown (how well the score ranks flights).
+//!   flown (how well the score ranks flights), and the calibration flown from it.
+//! - [`ramp_calibration`]: the ramp score's calibration, the forecast's mean miss and
+//!   spread by the time before the crossing.
 
 pub mod flight;
 pub mod ornstein_uhlenbeck;
+pub mod ramp_calibration;
 pub mod ramp_forecast;
 pub mod rate;
 pub mod score;
 pub mod splitting;
 
 pub use flight::{ApproachFlight, FlightError};
+pub use ramp_calibration::RampCalibration;
 pub use rate::{
     estimate_rate, estimate_rate_batched, fly_repetition, replay_event_flight, RareError,
     RareRequest, RareResult,

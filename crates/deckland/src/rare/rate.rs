@@ -4,7 +4,10 @@
 
 use serde::Serialize;
 
+use std::sync::Arc;
+
 use super::flight::{ApproachFlight, FlightError};
+use super::ramp_calibration::RampCalibration;
 use super::score::{EventThresholds, RareEvent};
 use super::splitting::{
     estimate_batched, repetition_seed, run, AmsError, Budget, Estimate, EventParticle, Run,
@@ -42,6 +45,9 @@ pub struct RareRequest {
     pub max_runs: u64,
     /// Particles per repetition.
     pub particles: usize,
+    /// Flights that calibrate the ramp's score before splitting ([`RampCalibration`]:
+    /// the first of the campaign with `seed`); 0, the plain score.
+    pub calibration_runs: u64,
 }
 
 impl RareRequest {
@@ -55,6 +61,7 @@ impl RareRequest {
             target_rel_error: 0.1,
             max_runs: 100_000,
             particles: 100,
+            calibration_runs: 0,
         }
     }
 
@@ -66,6 +73,22 @@ impl RareRequest {
         });
         Bounds::closed(1.0, 1e9).check(SECTION, "max_runs", self.max_runs as f64)?;
         Bounds::closed(4.0, 100_000.0).check(SECTION, "particles", self.particles as f64)?;
+        Bounds::closed(0.0, 100_000.0).check(
+            SECTION,
+            "calibration_runs",
+            self.calibration_runs as f64,
+        )?;
+        if self.calibration_runs > 0 && !self.event.reads_ramp() {
+            return Err(ParameterError::new(
+                SECTION,
+                "calibration_runs",
+                self.calibration_runs,
+                format!(
+                    "0: only the ramp's score is calibrated (`ramp_strike`, `lost`), not `{}`",
+                    self.event.name()
+                ),
+            ));
+        }
         if let Some(threshold) = self.threshold {
             let bounds = match self.event {
                 RareEvent::RampStrike => Bounds::closed(-30.0, 30.0),
@@ -100,7 +123,19 @@ impl RareRequest {
     /// Checks the request and sets up the approach it starts from, with the thresholds
     /// it flies (the scenario's, `threshold` moving the event's): everything that can be
     /// refused before any flying.
+    /// With `calibration_runs`, the calibration's flights are flown here.
     pub fn start(
+        &self,
+        scenario: &Scenario,
+    ) -> Result<(ApproachFlight, EventThresholds), RareError> {
+        let (flight, thresholds) = self.start_plain(scenario)?;
+        let calibration = self.ramp_calibration(scenario)?;
+        Ok((flight.with_ramp_calibration(calibration), thresholds))
+    }
+
+    /// As [`RareRequest::start`], with the plain score (nothing flown): every check
+    /// that can refuse the request before any flying.
+    pub fn start_plain(
         &self,
         scenario: &Scenario,
     ) -> Result<(ApproachFlight, EventThresholds), RareError> {
@@ -114,6 +149,22 @@ impl RareRequest {
             thresholds,
         ))
     }
+
+    /// The ramp score's calibration, flown from the first `calibration_runs` runs of the
+    /// campaign with `seed`; `None` when 0.
+    pub fn ramp_calibration(
+        &self,
+        scenario: &Scenario,
+    ) -> Result<Option<Arc<RampCalibration>>, RareError> {
+        if self.calibration_runs == 0 {
+            return Ok(None);
+        }
+        RampCalibration::fly(scenario, self.seed, self.calibration_runs)
+            .map(|calibration| Some(Arc::new(calibration)))
+            .ok_or(RareError::Calibration {
+                runs: self.calibration_runs,
+            })
+    }
 }
 
 /// Why no rate could be estimated.
@@ -125,6 +176,15 @@ pub enum RareError {
     /// The scenario cannot be flown or scored.
     #[error(transparent)]
     Flight(#[from] FlightError),
+    /// Fewer than two of the calibration's flights crossed the ramp.
+    #[error(
+        "fewer than 2 of the {runs} calibration flights (`calibration_runs`) crossed the \
+         ramp: the ramp's score cannot be calibrated"
+    )]
+    Calibration {
+        /// The flights flown.
+        runs: u64,
+    },
     /// Splitting could not give an estimate.
     #[error(transparent)]
     Splitting(#[from] AmsError),
@@ -203,7 +263,7 @@ pub fn estimate_rate_batched(
     run_batch: impl FnMut(std::ops::Range<u64>, u64) -> Vec<Result<Run, AmsError>>,
     mut progress: impl FnMut(u64, &Run),
 ) -> Result<RareResult, RareError> {
-    let (_, thresholds) = request.start(scenario)?;
+    let (_, thresholds) = request.start_plain(scenario)?;
     request.settings().validate()?;
     let approach_steps = Simulation::new(scenario)
         .map_err(FlightError::from)?

@@ -44,15 +44,25 @@
 //!   times 10.
 //!
 //! `lost` is any of them: its score is the largest of theirs (all without units).
+//!
+//! **The calibrated ramp score** (`deckland rare --calibrate-score RUNS`,
+//! [`EventScore::with_ramp_calibration`]): the forecast above plus the mean miss m(τ) of
+//! the scenario's own first flights τ ahead, over their spread s(τ) of the miss
+//! ([`RampCalibration`]), passed through a first-order lag of
+//! [`RampCalibration::LAG_S`]; at the crossing the margin over s(0). It carries the
+//! path's raise and shed, which the plain forecast misses by about 1 m in every sea, and
+//! the sea's own spread where the plain σ carries one fitted in the paper's sea.
 
 use crate::aircraft::{ALPHA_MAX_RAD, ALPHA_MIN_RAD};
 use crate::control::wave_off_lateral::MAX_OFF_CENTRE_M;
 use crate::environment::{
     DeckGeometry, ShipMotion, ShipMotionEstimate, ShipMotionPropagator, ShipMotionState, ShipPose,
 };
+use crate::rare::ramp_calibration::RampCalibration;
 use crate::scenario::Scenario;
 use crate::simulation::{Event, Outcome, Recorder, RunSummary, SignalId, Signals, Simulation};
 use serde::Serialize;
+use std::sync::Arc;
 
 /// A catastrophic event whose probability `deckland rare` estimates.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -99,6 +109,11 @@ impl RareEvent {
             Self::OffCentre => &[SignalId::CrossTrack],
             Self::RampStrike | Self::HardLanding | Self::Divergence | Self::Lost => &[],
         }
+    }
+
+    /// Whether the event's score reads the ramp's forecast (`ramp_strike`, `lost`).
+    pub fn reads_ramp(self) -> bool {
+        self.parts_read().ramp
     }
 
     /// The parts of the score the event is made of: its own, or all four for `lost`.
@@ -247,6 +262,14 @@ pub struct EventScore {
     off_centre: Part,
     divergence: Part,
     ended: bool,
+    /// The ramp forecast's calibration, if the score is calibrated
+    /// ([`EventScore::with_ramp_calibration`]).
+    ramp_calibration: Option<Arc<RampCalibration>>,
+    /// The time to the ramp of the last forecast of the ramp (s).
+    ramp_ahead_s: f64,
+    /// The calibrated score's lagged forecast margin and the time it was taken at (s):
+    /// NaN before the first forecast.
+    ramp_lagged: (f64, f64),
 }
 
 impl EventScore {
@@ -278,7 +301,31 @@ impl EventScore {
             off_centre: Part::OPEN,
             divergence: Part::OPEN,
             ended: false,
+            ramp_calibration: None,
+            ramp_ahead_s: f64::NAN,
+            ramp_lagged: (f64::NAN, f64::NAN),
         }
+    }
+
+    /// The time to the ramp that the last forecast of the ramp's clearance was made for
+    /// (s; NaN before the first).
+    pub fn ramp_ahead_s(&self) -> f64 {
+        self.ramp_ahead_s
+    }
+
+    /// This score with the ramp's forecast calibrated ([`RampCalibration`]): ĉ plus the
+    /// mean miss τ ahead, over the miss's own spread there, and at the crossing the
+    /// margin over the spread at τ = 0. `None` leaves the plain forecast.
+    pub fn with_ramp_calibration(mut self, calibration: Option<Arc<RampCalibration>>) -> Self {
+        self.ramp_calibration = calibration;
+        self
+    }
+
+    /// The ramp clearance's spread at the crossing (m).
+    fn ramp_spread_now_m(&self) -> f64 {
+        self.ramp_calibration
+            .as_ref()
+            .map_or(RAMP_SPREAD_NOW_M, |c| c.spread_now_m())
     }
 
     /// Takes the ship's state (its shaping filters') now, which the next step's forecast
@@ -332,9 +379,14 @@ impl EventScore {
         let closing_mps = (s.hook_x_rate_mps - s.ship_rate.pitch_centre_x_rate_mps).max(1.0);
         let t = self.thresholds;
         if reads.ramp {
+            self.ramp_ahead_s = self.to_ramp_s(s, closing_mps);
             let (clearance_m, ramp_spread_m) = self.ramp_clearance(s, closing_mps);
-            self.ramp
-                .forecast((t.ramp_clearance_m - clearance_m) / ramp_spread_m);
+            let margin = (t.ramp_clearance_m - clearance_m) / ramp_spread_m;
+            let margin = match self.ramp_calibration {
+                Some(_) => self.lag_ramp_margin(s.time_s, margin),
+                None => margin,
+            };
+            self.ramp.forecast(margin);
         }
         if reads.hard || reads.off_centre {
             // The time until the hook comes down to the aim point's height at its sink
@@ -369,7 +421,7 @@ impl EventScore {
     /// The hook's clearance over the ramp when it gets there, forecast now, and how far
     /// that forecast may miss (m).
     fn ramp_clearance(&self, s: &Signals, closing_mps: f64) -> (f64, f64) {
-        let to_ramp_s = ((self.deck.ramp(&s.ship).x_m - s.hook_x_m) / closing_mps).max(0.0);
+        let to_ramp_s = self.to_ramp_s(s, closing_mps);
         // The ramp's and the aim point's heights then: the ship's own forecast.
         let deck_then = self.ship.deck_then(&self.deck, &s.ship, to_ramp_s);
         // The hook then: close in, where it is now carried at its climb rate (for at most
@@ -382,10 +434,34 @@ impl EventScore {
         let hook_far_m = deck_then.aim_m + self.path_over_ramp_m;
         let hook_then_m = near * hook_near_m + (1.0 - near) * hook_far_m;
         let hook_sigma_m = HOOK_SPREAD_FAR_M * (1.0 - near);
+        let forecast_m = hook_then_m - deck_then.ramp_m;
+        if let Some(calibration) = &self.ramp_calibration {
+            let (mean_miss_m, spread_m) = calibration.at(to_ramp_s);
+            return (forecast_m + mean_miss_m, spread_m);
+        }
         let spread_m =
             (RAMP_SPREAD_NOW_M.powi(2) + deck_then.ramp_sigma_m.powi(2) + hook_sigma_m.powi(2))
                 .sqrt();
-        (hook_then_m - deck_then.ramp_m, spread_m)
+        (forecast_m, spread_m)
+    }
+
+    /// The calibrated ramp margin `margin` at `time_s` passed through the first-order lag
+    /// of [`RampCalibration::LAG_S`] (the first forecast starts it).
+    fn lag_ramp_margin(&mut self, time_s: f64, margin: f64) -> f64 {
+        let (last_s, lagged) = self.ramp_lagged;
+        let lagged = if last_s.is_finite() {
+            let share = ((time_s - last_s) / RampCalibration::LAG_S).clamp(0.0, 1.0);
+            lagged + share * (margin - lagged)
+        } else {
+            margin
+        };
+        self.ramp_lagged = (time_s, lagged);
+        lagged
+    }
+
+    /// The time the hook takes to reach the ramp at the closing speed (s).
+    fn to_ramp_s(&self, s: &Signals, closing_mps: f64) -> f64 {
+        ((self.deck.ramp(&s.ship).x_m - s.hook_x_m) / closing_mps).max(0.0)
     }
 
     /// The sink rate relative to the deck at touchdown, `to_touchdown_s` ahead, forecast
@@ -575,9 +651,11 @@ impl Recorder for EventScore {
 
     fn event(&mut self, event: &Event) {
         match event {
-            Event::RampCrossing { clearance_m, .. } => self
-                .ramp
-                .decide((self.thresholds.ramp_clearance_m - clearance_m) / RAMP_SPREAD_NOW_M),
+            Event::RampCrossing { clearance_m, .. } => {
+                let spread_m = self.ramp_spread_now_m();
+                self.ramp
+                    .decide((self.thresholds.ramp_clearance_m - clearance_m) / spread_m);
+            }
             Event::Touchdown(touchdown) => {
                 self.ramp.decide(f64::NEG_INFINITY);
                 self.hard.decide(
