@@ -29,10 +29,11 @@
 //!    a timing prefix `/usr/bin/time ` is dropped (not every machine has it).
 //! 3. The placeholders of [`PLACEHOLDERS`] are replaced (whole words).
 //! 4. Runs are shrunk by a fixed rule, never by editing a document: the value of
-//!    `--runs N` and of `--max-runs N` becomes min(N, [`RUNS_CAP`]); a `rare` line also
-//!    gets `--particles` min(P, [`RUNS_CAP`]) (P is 100 when the line gives none), and may
-//!    end on the budget so shrunk ("cannot estimate the rate within --max-runs"): the
-//!    arguments, the scenario and the event were accepted and the splitting started.
+//!    `--runs N`, `--max-runs N` and `--calibrate-score N` becomes min(N, [`RUNS_CAP`]);
+//!    a `rare` line also gets `--particles` min(P, [`RUNS_CAP`]) (P is 100 when the line
+//!    gives none), and may end on the budget so shrunk ("cannot estimate the rate within
+//!    --max-runs"): the arguments, the scenario and the event were accepted and the
+//!    splitting started.
 //! 5. It runs with `sh -c` (pipes and redirections as written) in a scratch folder of its
 //!    document, in which `scenarios/` is the repository's and earlier lines' files are,
 //!    with the binary's folder first on `PATH`; it must succeed.
@@ -345,7 +346,7 @@ fn prepared(command: &str) -> (String, bool) {
     for (word, value) in PLACEHOLDERS {
         text = replace_word(&text, word, value);
     }
-    for option in ["--runs", "--max-runs"] {
+    for option in ["--runs", "--max-runs", "--calibrate-score"] {
         text = shrink_option(&text, option, RUNS_CAP).0;
     }
     let rare = text.split_whitespace().nth(1) == Some("rare");
@@ -841,6 +842,10 @@ fn the_rules_rewrite_lines_as_documented() {
     assert_eq!(
         prepared("deckland campaign a.toml --runs 3 --out DIR --force").0,
         "deckland campaign a.toml --runs 3 --out doc-out --force"
+    );
+    assert_eq!(
+        prepared("deckland rare a.toml --event EVENT --max-runs 20000 --calibrate-score 100").0,
+        "deckland rare --particles 8 a.toml --event ramp_strike --max-runs 8 --calibrate-score 8"
     );
     assert_eq!(
         prepared("deckland rare a.toml --event EVENT --threshold X --max-runs 20000"),

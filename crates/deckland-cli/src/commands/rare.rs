@@ -46,6 +46,11 @@ pub struct RareArgs {
     /// Particles per splitting repetition.
     #[arg(long, default_value_t = 100)]
     pub particles: usize,
+    /// Flights that calibrate the ramp's score first (`ramp_strike` and `lost`; 0, the
+    /// plain score): the first runs of the campaign with the seed, whose forecasts' misses
+    /// give the score its mean and spread at each time before the ramp (docs/rare-events.md).
+    #[arg(long, default_value_t = 0)]
+    pub calibrate_score: u64,
     /// Seed of the splitting, 0 to 2⁶³ − 1 (default: the file's `seed`).
     #[arg(long, value_parser = seed_parser(), allow_negative_numbers = true)]
     pub seed: Option<u64>,
@@ -83,10 +88,11 @@ pub fn run(args: &RareArgs) -> Result<()> {
         target_rel_error: args.target_rel_error,
         max_runs: args.max_runs,
         particles: args.particles,
+        calibration_runs: args.calibrate_score,
         ..RareRequest::new(args.event, args.seed.unwrap_or(scenario.seed))
     };
     // The scenario must fly and be scored before the output folder is made.
-    request.start(&scenario)?;
+    request.start_plain(&scenario)?;
     let threads = threads_or_cpus(args.threads);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
