@@ -208,6 +208,7 @@ def rare(
     seed: Optional[int] = None,
     threads: Optional[int] = None,
     *,
+    calibrate_score: Optional[int] = None,
     out: Optional[Union[str, PathLike[str]]] = None,
     force: bool = False,
     save_flights: Optional[int] = None,
@@ -222,6 +223,7 @@ def rare_repetition(
     particles: Optional[int] = None,
     seed: Optional[int] = None,
     threads: Optional[int] = None,
+    calibrate_score: Optional[int] = None,
 ) -> Any: ...
 def rare_batched(
     scenario: Scenario,
@@ -232,6 +234,7 @@ def rare_batched(
     max_runs: Optional[int] = None,
     particles: Optional[int] = None,
     seed: Optional[int] = None,
+    calibrate_score: Optional[int] = None,
 ) -> Dict[str, Any]: ...
 def campaign_shard(
     scenario: Scenario,

@@ -132,10 +132,11 @@ def _fly_repetition(
     particles: Optional[int],
     seed: Optional[int],
     threads: int,
+    calibrate_score: Optional[int] = None,
 ) -> Any:
     """One task: repetition ``repetition`` of the estimate, on a worker."""
     return _deckland.rare_repetition(
-        scenario, event, repetition, share, threshold, particles, seed, threads
+        scenario, event, repetition, share, threshold, particles, seed, threads, calibrate_score
     )
 
 
@@ -149,6 +150,7 @@ def rare(
     particles: Optional[int] = None,
     seed: Optional[int] = None,
     *,
+    calibrate_score: Optional[int] = None,
     threads_per_task: int = 1,
     progress: Union[bool, Callable[[int, int], Any], None] = None,
 ) -> Dict[str, Any]:
@@ -156,7 +158,9 @@ def rare(
     ``event`` by splitting, each repetition a Dask task.
 
     The arguments are :func:`deckland.rare`'s; each task flies one repetition on
-    ``threads_per_task`` threads of its worker. Returns the dict that
+    ``threads_per_task`` threads of its worker (with ``calibrate_score``, each task flies
+    the calibration's flights again: the calibration is a function of the scenario and the
+    request, so every task's is the same). Returns the dict that
     :func:`deckland.rare` returns for the same arguments, bit for bit. Splitting decides
     after each batch of 8 repetitions whether the target is met, so the cluster keeps at
     most 8 tasks busy; larger clusters pay off through ``threads_per_task``.
@@ -186,6 +190,7 @@ def rare(
             particles=particles,
             seed=seed,
             threads=threads_per_task,
+            calibrate_score=calibrate_score,
             pure=False,
         )
         runs = client.gather(futures)
@@ -195,7 +200,7 @@ def rare(
         return runs
 
     return _deckland.rare_batched(
-        scenario, event, run_batch, threshold, target_rel_error, max_runs, particles, seed
+        scenario, event, run_batch, threshold, target_rel_error, max_runs, particles, seed, calibrate_score
     )
 
 

@@ -47,6 +47,7 @@ fn request_of(
     particles: Option<&Bound<'_, PyAny>>,
     seed: Option<&Bound<'_, PyAny>>,
     threads: Option<&Bound<'_, PyAny>>,
+    calibrate_score: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<(RareRequest, usize)> {
     let event = RareEvent::from_name(event).map_err(value_error)?;
     let defaults = RareRequest::new(event, scenario.scenario.seed);
@@ -69,6 +70,7 @@ fn request_of(
             defaults.particles as u64,
         )? as usize,
         seed: integer("seed", seed, 0, MAX_CAMPAIGN_SEED, defaults.seed)?,
+        calibration_runs: integer("calibrate_score", calibrate_score, 0, 100_000, 0)?,
         ..defaults
     };
     let default_threads =
@@ -94,8 +96,11 @@ fn request_of(
 /// ``levels.csv``, the levels' plot, ``save_flights`` flights that reached the event
 /// with their plots, default 3, at most 20, and ``report.html``), and the dict's
 /// ``folder`` names it; ``force`` and ``figures`` as for :func:`fly`.
+///
+/// ``calibrate_score`` (``ramp_strike`` and ``lost`` only; default 0, the plain score):
+/// flights that calibrate the ramp's score first, as ``--calibrate-score``.
 #[pyfunction]
-#[pyo3(signature = (scenario, event, threshold = None, target_rel_error = None, max_runs = None, particles = None, seed = None, threads = None, *, out = None, force = false, save_flights = None, figures = None))]
+#[pyo3(signature = (scenario, event, threshold = None, target_rel_error = None, max_runs = None, particles = None, seed = None, threads = None, *, calibrate_score = None, out = None, force = false, save_flights = None, figures = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn rare(
     py: Python<'_>,
@@ -107,6 +112,7 @@ pub fn rare(
     particles: Option<&Bound<'_, PyAny>>,
     seed: Option<&Bound<'_, PyAny>>,
     threads: Option<&Bound<'_, PyAny>>,
+    calibrate_score: Option<&Bound<'_, PyAny>>,
     out: Option<std::path::PathBuf>,
     force: bool,
     save_flights: Option<&Bound<'_, PyAny>>,
@@ -131,6 +137,7 @@ pub fn rare(
         particles,
         seed,
         threads,
+        calibrate_score,
     )?;
     let flown = scenario.scenario;
     let started = std::time::Instant::now();
@@ -166,7 +173,7 @@ const MAX_SAVED_FLIGHTS: u64 = 20;
 /// `share` steps and `threads` threads: a Dask task. Returns the run as plain Python
 /// values (`run_from_python` reads it back, every number exact).
 #[pyfunction]
-#[pyo3(signature = (scenario, event, repetition, share, threshold = None, particles = None, seed = None, threads = None))]
+#[pyo3(signature = (scenario, event, repetition, share, threshold = None, particles = None, seed = None, threads = None, calibrate_score = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn rare_repetition(
     py: Python<'_>,
@@ -178,9 +185,18 @@ pub fn rare_repetition(
     particles: Option<&Bound<'_, PyAny>>,
     seed: Option<&Bound<'_, PyAny>>,
     threads: Option<&Bound<'_, PyAny>>,
+    calibrate_score: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Py<PyAny>> {
     let (request, threads) = request_of(
-        &scenario, event, threshold, None, None, particles, seed, threads,
+        &scenario,
+        event,
+        threshold,
+        None,
+        None,
+        particles,
+        seed,
+        threads,
+        calibrate_score,
     )?;
     let flown = scenario.scenario;
     let run = py.detach(|| {
@@ -200,7 +216,7 @@ pub fn rare_repetition(
 /// `first + size − 1` as `rare_repetition` gives them, in order: the same result to the
 /// bit. An exception of `run_batch` ends the estimate with it.
 #[pyfunction]
-#[pyo3(signature = (scenario, event, run_batch, threshold = None, target_rel_error = None, max_runs = None, particles = None, seed = None))]
+#[pyo3(signature = (scenario, event, run_batch, threshold = None, target_rel_error = None, max_runs = None, particles = None, seed = None, calibrate_score = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn rare_batched(
     py: Python<'_>,
@@ -212,6 +228,7 @@ pub fn rare_batched(
     max_runs: Option<&Bound<'_, PyAny>>,
     particles: Option<&Bound<'_, PyAny>>,
     seed: Option<&Bound<'_, PyAny>>,
+    calibrate_score: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<Py<PyAny>> {
     if !run_batch.is_callable() {
         return Err(PyTypeError::new_err(format!(
@@ -227,6 +244,7 @@ pub fn rare_batched(
         particles,
         seed,
         None,
+        calibrate_score,
     )?;
     let mut failure: Option<PyErr> = None;
     let batch = |repetitions: std::ops::Range<u64>, share: u64| {

@@ -200,19 +200,30 @@ def test_the_default_scenario_is_the_cli_default(cli):
     assert deckland.Scenario.from_toml(text) == deckland.Scenario.default()
 
 
-def test_rare_is_deckland_rare(cli, tmp_path):
-    # The same splitting, bit for bit: the estimate, its interval and every level.
+@pytest.mark.parametrize("calibrate_score", [0, 6])
+def test_rare_is_deckland_rare(cli, tmp_path, calibrate_score):
+    # The same splitting, bit for bit: the estimate, its interval and every level; with
+    # the ramp's score plain and calibrated (`--calibrate-score`).
     shutil.copy(SCENARIOS / "paper-adverse.toml", tmp_path / "paper-adverse.toml")
     out = tmp_path / "rare"
     args = ["--event", "ramp_strike", "--threshold", "1.0", "--particles", "8", "--max-runs", "150", "--seed", "4"]
+    args += ["--calibrate-score", str(calibrate_score)]
     expected = cli.json(
         ["rare", "paper-adverse.toml", *args, "--save-flights", "0", "--json", "--out", str(out)],
         cwd=tmp_path,
     )
     scenario = deckland.Scenario.from_file(tmp_path / "paper-adverse.toml")
     actual = deckland.rare(
-        scenario, "ramp_strike", threshold=1.0, particles=8, max_runs=150, seed=4, threads=1
+        scenario,
+        "ramp_strike",
+        threshold=1.0,
+        particles=8,
+        max_runs=150,
+        seed=4,
+        threads=1,
+        calibrate_score=calibrate_score,
     )
+    assert actual["request"]["calibration_runs"] == calibrate_score
     for key in ("estimate", "levels", "request", "thresholds", "approach_steps"):
         assert actual[key] == expected[key], key
     assert 0.0 < actual["estimate"]["probability"] < 1.0
@@ -226,6 +237,8 @@ def test_rare_is_deckland_rare(cli, tmp_path):
         ({"event": "ramp_strike", "threshold": 99.0}, ValueError, "threshold"),
         ({"event": "ramp_strike", "particles": 1.5}, TypeError, "particles"),
         ({"event": "off_centre"}, ValueError, "3-D approach"),
+        ({"event": "hard_landing", "calibrate_score": 5}, ValueError, "rare.calibration_runs"),
+        ({"event": "ramp_strike", "calibrate_score": -1}, ValueError, "calibrate_score"),
     ],
 )
 def test_rare_refuses_bad_arguments_by_name(kwargs, error, message):

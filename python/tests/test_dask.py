@@ -166,11 +166,13 @@ def test_a_dask_campaign_reports_its_shards_as_they_come_back(client, capsys):
     assert "dask campaign: 5/5 runs (100 %)" in capsys.readouterr().err
 
 
-def test_a_dask_rare_estimate_is_the_single_machine_one(client):
+@pytest.mark.parametrize("calibrate_score", [0, 4])
+def test_a_dask_rare_estimate_is_the_single_machine_one(client, calibrate_score):
     # Splitting's repetitions flown as tasks on two worker processes: the same estimate,
-    # interval, levels and flights that reached the event, to the bit, as on one machine.
+    # interval, levels and flights that reached the event, to the bit, as on one machine;
+    # with the ramp's score plain and calibrated (each task calibrates it again).
     scenario = deckland.Scenario.from_file(SCENARIOS / "paper-adverse.toml")
-    request = dict(threshold=1.0, particles=8, max_runs=150, seed=4)
+    request = dict(threshold=1.0, particles=8, max_runs=150, seed=4, calibrate_score=calibrate_score)
     expected = deckland.rare(scenario, "ramp_strike", threads=1, **request)
     seen = []
     actual = deckland.dask.rare(
