@@ -5,8 +5,11 @@
 //! evaluation, then the step's own evaluation with the commands held. Both paths must fly
 //! the same run, bit for bit.
 
+mod common;
+
+use common::crosswind;
 use deckland::recording::SummaryRecorder;
-use deckland::scenario::{load_scenario, Scenario};
+use deckland::scenario::Scenario;
 use deckland::simulation::{LoopBreak, NoTaps, Overrides, Simulation, Stop, Taps};
 
 /// The taps `T`, not declared idempotent: the general path, two evaluations per frame.
@@ -82,8 +85,7 @@ fn a_frame_evaluated_once_flies_the_run_of_two_evaluations_with_overrides() {
 fn a_frame_evaluated_once_flies_the_run_of_two_evaluations_in_the_3d_approach() {
     // The crosswind approach: the lateral laws' aileron and rudder commands are held by
     // the frames too, and the lineup guidance runs at them.
-    let text = include_str!("../../../scenarios/crosswind.toml");
-    let scenario = load_scenario(text, "crosswind.toml").expect("valid");
+    let scenario = crosswind();
     assert!(scenario.control.flight_computer_rate_hz.is_some());
     assert_same_run(&scenario, &NoTaps, 30_000);
     let overrides = Overrides {

@@ -4,15 +4,13 @@
 
 #![allow(clippy::unwrap_used)] // tests fail loudly by design
 
+mod common;
+
+use common::crosswind;
 use deckland::aircraft::PlantModel;
 use deckland::recording::{SummaryRecorder, TimeSeriesRecorder};
-use deckland::scenario::{load_scenario, Scenario};
+use deckland::scenario::Scenario;
 use deckland::simulation::{Outcome, Simulation};
-
-fn crosswind() -> Scenario {
-    let text = include_str!("../../../scenarios/crosswind.toml");
-    load_scenario(text, "crosswind.toml").unwrap()
-}
 
 #[test]
 fn a_crosswind_approach_lines_up_and_traps_near_the_centreline() {

@@ -4,15 +4,13 @@
 
 #![allow(clippy::unwrap_used)] // tests fail loudly by design
 
+mod common;
+
+use common::crosswind;
 use deckland::metrics::TrapSheetPosition;
 use deckland::recording::SummaryRecorder;
-use deckland::scenario::{load_scenario, Scenario};
+use deckland::scenario::Scenario;
 use deckland::simulation::Simulation;
-
-fn crosswind() -> Scenario {
-    let text = include_str!("../../../scenarios/crosswind.toml");
-    load_scenario(text, "crosswind.toml").unwrap()
-}
 
 #[test]
 fn each_position_lasts_its_window_over_the_closing_speed() {

@@ -6,7 +6,7 @@
 #![allow(dead_code)]
 
 use deckland::recording::SummaryRecorder;
-use deckland::scenario::{DispersionParameters, Scenario};
+use deckland::scenario::{load_scenario, DispersionParameters, Scenario};
 use deckland::simulation::Simulation;
 
 /// The default (realistic) scenario with `seed` in the moderate sea of docs/model.md §3.6:
@@ -19,6 +19,12 @@ pub fn moderate_sea(seed: u64) -> Scenario {
     scenario.environment.ship.heave_rms_m = 1.0;
     scenario.environment.ship.pitch_rms_deg = 0.75;
     scenario
+}
+
+/// The 3-D approach of `scenarios/crosswind.toml` (6-DOF, angled deck, crosswind).
+pub fn crosswind() -> Scenario {
+    let text = include_str!("../../../../scenarios/crosswind.toml");
+    load_scenario(text, "crosswind.toml").unwrap()
 }
 
 /// Every dispersion of a campaign on, as the campaign and shard tests disperse their
