@@ -43,6 +43,15 @@ fn load_with(name: &str, scenario: &str, definition: &str) -> Result<Scenario, S
     load_scenario_in(scenario, "scenario.toml", &folder)
 }
 
+/// Loads the scenario that only names `aircraft.toml` = `definition` as its aircraft.
+fn load_definition(name: &str, definition: &str) -> Result<Scenario, ScenarioError> {
+    load_with(
+        name,
+        "[aircraft]\ndefinition = \"aircraft.toml\"\n",
+        definition,
+    )
+}
+
 #[test]
 fn the_shipped_fa18_file_is_the_built_in_aircraft_to_the_bit() {
     let definition = load_aircraft_definition(FA18_DEFINITION_TOML, "fa18.toml").unwrap();
@@ -63,12 +72,7 @@ fn the_shipped_fa18_file_is_the_built_in_aircraft_to_the_bit() {
 
 #[test]
 fn flying_the_fa18_file_is_the_built_in_approach_bit_for_bit() {
-    let scenario = load_with(
-        "same",
-        "[aircraft]\ndefinition = \"aircraft.toml\"\n",
-        FA18_DEFINITION_TOML,
-    )
-    .unwrap();
+    let scenario = load_definition("same", FA18_DEFINITION_TOML).unwrap();
     // The same file without the definition: the default but for the keys a file must
     // name (the wave-off's recovery keys, `WaveOffParameters::named_by_none`).
     let plain = deckland::scenario::load_scenario("", "plain.toml").unwrap();
@@ -144,12 +148,7 @@ fn an_edited_aircraft_file_flies_the_three_d_approach_with_no_code_change() {
 #[test]
 fn a_scenario_written_out_keeps_another_aircraft_whole() {
     let definition = edited(&[("rudder = [0.2054, 0.4082", "rudder = [0.2154, 0.4082")]);
-    let scenario = load_with(
-        "written",
-        "[aircraft]\ndefinition = \"aircraft.toml\"\n",
-        &definition,
-    )
-    .unwrap();
+    let scenario = load_definition("written", &definition).unwrap();
     let written = toml::to_string(&scenario).unwrap();
     assert!(
         written.contains("[aircraft.aerodynamics.side_force]"),
@@ -166,12 +165,7 @@ fn a_scenario_written_out_keeps_another_aircraft_whole() {
 #[test]
 fn a_bad_definition_is_named_by_its_file_line_and_key() {
     let definition = edited(&[("mass_kg = 15000.0", "mass_kg = 15000.0\nwingspan_ft = 37.4")]);
-    let error = load_with(
-        "unknown",
-        "[aircraft]\ndefinition = \"aircraft.toml\"\n",
-        &definition,
-    )
-    .unwrap_err();
+    let error = load_definition("unknown", &definition).unwrap_err();
     let message = error.to_string();
     assert!(message.contains("aircraft.toml"), "{message}");
     assert_eq!(error.field(), "parameters.wingspan_ft", "{message}");
@@ -183,12 +177,7 @@ fn a_bad_definition_is_named_by_its_file_line_and_key() {
     assert_eq!(error.line(), Some(line), "{message}");
 
     let definition = edited(&[("mass_kg = 15000.0", "mass_kg = -1.0")]);
-    let error = load_with(
-        "range",
-        "[aircraft]\ndefinition = \"aircraft.toml\"\n",
-        &definition,
-    )
-    .unwrap_err();
+    let error = load_definition("range", &definition).unwrap_err();
     assert_eq!(error.field(), "parameters.mass_kg", "{error}");
     assert_eq!(error.line(), Some(line - 1), "{error}");
     assert!(error.to_string().contains("aircraft.toml"), "{error}");
@@ -197,22 +186,12 @@ fn a_bad_definition_is_named_by_its_file_line_and_key() {
         "alpha = [-0.0204, 5.677, -5.4246, 1.1645]",
         "alpha = [-0.0204, 5.677, -5.4246, 1.1645, 0, 0]",
     )]);
-    let error = load_with(
-        "terms",
-        "[aircraft]\ndefinition = \"aircraft.toml\"\n",
-        &definition,
-    )
-    .unwrap_err();
+    let error = load_definition("terms", &definition).unwrap_err();
     assert!(error.to_string().contains("at most 5"), "{error}");
     assert_eq!(error.field(), "aerodynamics.lift.alpha", "{error}");
 
     let definition = edited(&[("[hook]", "[hooks]")]);
-    let error = load_with(
-        "section",
-        "[aircraft]\ndefinition = \"aircraft.toml\"\n",
-        &definition,
-    )
-    .unwrap_err();
+    let error = load_definition("section", &definition).unwrap_err();
     assert!(error.to_string().contains("hook"), "{error}");
 }
 
