@@ -24,6 +24,12 @@ fn short_dispersed_scenario() -> Scenario {
     scenario
 }
 
+/// Asserts that a merge of `shards` is refused with an error that says `expected`.
+fn assert_refused(shards: Vec<ShardRows>, expected: &str) {
+    let error = merge_shards(shards).unwrap_err().to_string();
+    assert!(error.contains(expected), "{error}");
+}
+
 fn fly(spec: &CampaignSpec) -> CampaignResult {
     run_campaign(spec, 2, &|_: &RunRecord| {}, &AtomicBool::new(false)).unwrap()
 }
@@ -132,8 +138,7 @@ fn a_merge_refuses_shards_that_do_not_belong_together() {
         shard.identity.scenario_toml = toml::to_string(&three_d).unwrap();
     }
     lateral[2].table.lateral_rows.pop();
-    let error = merge_shards(lateral).unwrap_err().to_string();
-    assert!(error.contains("one per row"), "{error}");
+    assert_refused(lateral, "one per row");
 
     let error = merge_shards(vec![one.clone(), three.clone()]).unwrap_err();
     assert_eq!(
@@ -157,11 +162,7 @@ fn a_merge_refuses_shards_that_do_not_belong_together() {
     let mut partial = all();
     partial[1].identity.partial = true;
     partial[1].table.rows.pop();
-    let error = merge_shards(partial).unwrap_err();
-    assert!(
-        error.to_string().contains("s1 is shard 1/3 stopped"),
-        "{error}"
-    );
+    assert_refused(partial, "s1 is shard 1/3 stopped");
 
     let mut other_seed = all();
     other_seed[2].identity.campaign_seed = 10;
@@ -173,17 +174,11 @@ fn a_merge_refuses_shards_that_do_not_belong_together() {
 
     let mut other_runs = all();
     other_runs[1].identity.requested_runs = 7;
-    assert!(merge_shards(other_runs)
-        .unwrap_err()
-        .to_string()
-        .contains("`requested_runs` is 7"));
+    assert_refused(other_runs, "`requested_runs` is 7");
 
     let mut other_count = all();
     other_count[1].identity.shard = Shard::new(1, 4).unwrap();
-    assert!(merge_shards(other_count)
-        .unwrap_err()
-        .to_string()
-        .contains("`shard count M` is 1/4"));
+    assert_refused(other_count, "`shard count M` is 1/4");
 
     let mut other_scenario = all();
     other_scenario[1].identity.scenario_toml =
@@ -191,46 +186,28 @@ fn a_merge_refuses_shards_that_do_not_belong_together() {
     other_scenario[0].identity.scenario_toml =
         "seed = 1\n[aircraft]\nmodel = \"3dof\"\n[approach]\nstart_range_m = 500.0\n".to_owned();
     other_scenario[2].identity.scenario_toml = other_scenario[0].identity.scenario_toml.clone();
-    let error = merge_shards(other_scenario).unwrap_err();
-    assert!(
-        error
-            .to_string()
-            .contains("s1 flew another scenario than s0"),
-        "{error}"
-    );
+    assert_refused(other_scenario, "s1 flew another scenario than s0");
 
     // A truncated shard: its last row lost.
     let mut truncated = all();
     truncated[2].table.rows.pop();
-    let error = merge_shards(truncated).unwrap_err();
-    assert!(
-        error
-            .to_string()
-            .contains("s2 (shard 2/3) holds 1 of its 2 rows; the first missing is run 5"),
-        "{error}"
+    assert_refused(
+        truncated,
+        "s2 (shard 2/3) holds 1 of its 2 rows; the first missing is run 5",
     );
 
     // A row of another shard, a row twice, a row with another campaign's seed.
     let mut foreign = all();
     let stray = foreign[0].table.rows[0].clone();
     foreign[1].table.rows.push(stray);
-    assert!(merge_shards(foreign)
-        .unwrap_err()
-        .to_string()
-        .contains("run 0 (O-PD) belongs to shard 0/3"));
+    assert_refused(foreign, "run 0 (O-PD) belongs to shard 0/3");
     let mut twice = all();
     let copy = twice[0].table.rows[0].clone();
     twice[0].table.rows.push(copy);
-    assert!(merge_shards(twice)
-        .unwrap_err()
-        .to_string()
-        .contains("appears twice"));
+    assert_refused(twice, "appears twice");
     let mut reseeded = all();
     reseeded[0].table.rows[1].seed += 1;
-    assert!(merge_shards(reseeded)
-        .unwrap_err()
-        .to_string()
-        .contains("where campaign seed 9 gives"));
+    assert_refused(reseeded, "where campaign seed 9 gives");
 }
 
 #[test]
