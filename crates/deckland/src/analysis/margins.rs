@@ -280,19 +280,21 @@ mod tests {
             .collect()
     }
 
+    /// The margins of the loop gain `loop_gain(ω)` over [`log_grid`].
+    fn margins_of(loop_gain: impl Fn(f64) -> Complex<f64>) -> LoopMargins {
+        let omegas = log_grid();
+        let gains: Vec<Complex<f64>> = omegas.iter().map(|&w| loop_gain(w)).collect();
+        margins_from_response(LoopBreak::PitchCommand, &omegas, &gains)
+    }
+
     /// L(s) = K/(s(s + 1)) with K = 2: |L(jω)| = 1 at ω² = (−1 + √17)/2, ω = 1.2496;
     /// phase −90° − atan ω = −141.3°, so PM = 38.7°; the phase never reaches −180°.
     #[test]
     fn margins_of_a_textbook_loop() {
-        let omegas = log_grid();
-        let gains: Vec<Complex<f64>> = omegas
-            .iter()
-            .map(|&w| {
-                let s = Complex::new(0.0, w);
-                Complex::new(2.0, 0.0) / (s * (s + 1.0))
-            })
-            .collect();
-        let m = margins_from_response(LoopBreak::PitchCommand, &omegas, &gains);
+        let m = margins_of(|w| {
+            let s = Complex::new(0.0, w);
+            Complex::new(2.0, 0.0) / (s * (s + 1.0))
+        });
         assert!((m.crossover_radps.unwrap() - 1.2496).abs() < 1e-3);
         assert!((m.phase_margin_deg.unwrap() - 38.67).abs() < 0.1);
         assert!(m.gain_margin_db.is_none());
@@ -307,15 +309,10 @@ mod tests {
     /// L(s) = 4/(s + 1)³: phase −180° at ω = √3 where |L| = 4/8, GM = 6.02 dB.
     #[test]
     fn gain_margin_of_a_third_order_loop() {
-        let omegas = log_grid();
-        let gains: Vec<Complex<f64>> = omegas
-            .iter()
-            .map(|&w| {
-                let p = Complex::new(1.0, w);
-                Complex::new(4.0, 0.0) / (p * p * p)
-            })
-            .collect();
-        let m = margins_from_response(LoopBreak::PitchCommand, &omegas, &gains);
+        let m = margins_of(|w| {
+            let p = Complex::new(1.0, w);
+            Complex::new(4.0, 0.0) / (p * p * p)
+        });
         assert!((m.phase_crossover_radps.unwrap() - 3f64.sqrt()).abs() < 1e-3);
         assert!((m.gain_margin_db.unwrap() - 20.0 * 2f64.log10()).abs() < 0.01);
     }
