@@ -566,6 +566,16 @@ mod tests {
         grade_pass(windows, None, PassEnd::Trap, &GradeThresholds::AIRBOSS)
     }
 
+    /// A trap with a deviation in each of the four windows: `(LUL)X _H_IM LOIC (H)(LUR)AR`.
+    fn four_window_trap() -> LsoGrade {
+        trap(&[
+            window(Window::Start, 0.0, -0.6),
+            window(Window::Middle, 1.6, 0.0),
+            window(Window::InClose, -0.7, 0.0),
+            window(Window::AtRamp, 0.45, 0.6),
+        ])
+    }
+
     /// Every threshold edge of docs/model.md §11, on each side: exactly at a level is
     /// not beyond it; just past it is. (value, expected comment at X, expected grade).
     #[test]
@@ -640,12 +650,7 @@ mod tests {
 
     #[test]
     fn a_comment_parses_back_to_its_deviations() {
-        let graded = trap(&[
-            window(Window::Start, 0.0, -0.6),
-            window(Window::Middle, 1.6, 0.0),
-            window(Window::InClose, -0.7, 0.0),
-            window(Window::AtRamp, 0.45, 0.6),
-        ]);
+        let graded = four_window_trap();
         let parsed = parse_comment(&graded.comment).expect("a comment");
         assert_eq!(parsed, graded.deviations);
         assert_eq!(comment(&parsed), graded.comment);
@@ -671,12 +676,7 @@ mod tests {
 
     #[test]
     fn the_comment_lists_windows_in_flight_order() {
-        let graded = trap(&[
-            window(Window::Start, 0.0, -0.6),
-            window(Window::Middle, 1.6, 0.0),
-            window(Window::InClose, -0.7, 0.0),
-            window(Window::AtRamp, 0.45, 0.6),
-        ]);
+        let graded = four_window_trap();
         assert_eq!(graded.comment, "(LUL)X _H_IM LOIC (H)(LUR)AR");
         assert_eq!(graded.grade, Grade::NoGrade);
         assert_eq!(graded.points, 2.0);
