@@ -5,12 +5,24 @@
 
 #![allow(missing_docs)] // criterion_group! generates undocumented items
 
-use criterion::{criterion_group, criterion_main, Criterion};
+use criterion::measurement::WallTime;
+use criterion::{criterion_group, criterion_main, BenchmarkGroup, Criterion};
 use deckland::aircraft::PlantModel;
 use deckland::recording::SummaryRecorder;
 use deckland::scenario::{load_scenario, Scenario};
 use deckland::simulation::Simulation;
 use std::hint::black_box;
+
+/// Benchmarks, as `name`, one flight of `scenario` recording its summary only.
+fn bench_summary_run(group: &mut BenchmarkGroup<'_, WallTime>, name: &str, scenario: &Scenario) {
+    group.bench_function(name, |b| {
+        b.iter(|| {
+            Simulation::new(black_box(scenario))
+                .expect("valid")
+                .run(&mut SummaryRecorder)
+        })
+    });
+}
 
 fn approach(c: &mut Criterion) {
     let scenario = Scenario::default();
@@ -21,22 +33,14 @@ fn approach(c: &mut Criterion) {
     println!("simulated approach length: {simulated_s:.2} s");
     let mut group = c.benchmark_group("approach");
     group.sample_size(30);
-    group.bench_function("adverse O-PD, summary only", |b| {
-        b.iter(|| {
-            Simulation::new(black_box(&scenario))
-                .expect("valid")
-                .run(&mut SummaryRecorder)
-        })
-    });
+    bench_summary_run(&mut group, "adverse O-PD, summary only", &scenario);
     let mut six_dof = scenario;
     six_dof.aircraft.model = PlantModel::SixDof;
-    group.bench_function("adverse O-PD, summary only, 6-DOF aircraft", |b| {
-        b.iter(|| {
-            Simulation::new(black_box(&six_dof))
-                .expect("valid")
-                .run(&mut SummaryRecorder)
-        })
-    });
+    bench_summary_run(
+        &mut group,
+        "adverse O-PD, summary only, 6-DOF aircraft",
+        &six_dof,
+    );
     let crosswind = load_scenario(
         include_str!("../../../scenarios/crosswind.toml"),
         "crosswind.toml",
@@ -47,26 +51,19 @@ fn approach(c: &mut Criterion) {
         .run(&mut SummaryRecorder)
         .end_time_s;
     println!("simulated 3-D approach length: {simulated_3d_s:.2} s");
-    group.bench_function("3-D approach (crosswind.toml), summary only", |b| {
-        b.iter(|| {
-            Simulation::new(black_box(&crosswind))
-                .expect("valid")
-                .run(&mut SummaryRecorder)
-        })
-    });
+    bench_summary_run(
+        &mut group,
+        "3-D approach (crosswind.toml), summary only",
+        &crosswind,
+    );
     // The same approach without a flight computer: the lateral guidance and the ship's
     // view at every step rather than at the 80 Hz frames (issue 27's speed).
     let mut every_step = crosswind;
     every_step.control.flight_computer_rate_hz = None;
-    group.bench_function(
+    bench_summary_run(
+        &mut group,
         "3-D approach (crosswind.toml), no flight computer, summary only",
-        |b| {
-            b.iter(|| {
-                Simulation::new(black_box(&every_step))
-                    .expect("valid")
-                    .run(&mut SummaryRecorder)
-            })
-        },
+        &every_step,
     );
     group.bench_function("setup only (trim, linearise, build)", |b| {
         b.iter(|| Simulation::new(black_box(&scenario)).expect("valid"))
