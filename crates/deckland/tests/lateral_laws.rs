@@ -104,25 +104,18 @@ fn the_design_codes_roll_margin_matches_a_direct_sweep_of_the_pd_loop() {
     assert!((gm - gm_direct).abs() < 0.1, "{gm} vs {gm_direct}");
 }
 
-fn fly(
-    setup: &LateralSetup,
-    name: &str,
-    step: &LateralStep,
-) -> deckland::experiments::LateralStepRun {
-    let (roll, yaw) = setup.registered_laws(name).expect("registered");
-    fly_lateral_step(setup, step, roll.as_ref(), yaw.as_ref()).expect("flies")
+/// Flies `step` with the registered O-PD roll and yaw laws on the approach setup.
+fn fly_opd(step: &LateralStep) -> deckland::experiments::LateralStepRun {
+    let (setup, _) = setup();
+    let (roll, yaw) = setup.registered_laws("observer_pd").expect("registered");
+    fly_lateral_step(&setup, step, roll.as_ref(), yaw.as_ref()).expect("flies")
 }
 
 /// Issue 26's ideal bank step: 10° settles to ±5 % in at most 2 s with the O-PD, the
 /// sideslip stays within ±1°, and the aileron's rate stays off its limit.
 #[test]
 fn the_opd_settles_an_ideal_10_degree_bank_step_within_2_s_coordinated() {
-    let (setup, _) = setup();
-    let run = fly(
-        &setup,
-        "observer_pd",
-        &LateralStep::new(LateralAxis::Roll, 10.0, 8.0),
-    );
+    let run = fly_opd(&LateralStep::new(LateralAxis::Roll, 10.0, 8.0));
     let r = &run.response;
     eprintln!("{r:#?}");
     assert!(r.settled, "{r:?}");
@@ -139,7 +132,6 @@ fn the_opd_settles_an_ideal_10_degree_bank_step_within_2_s_coordinated() {
 /// ±1° (the gust's duration, 4 s, is an assumption).
 #[test]
 fn the_yaw_law_holds_sideslip_through_a_5_m_s_crosswind_gust() {
-    let (setup, _) = setup();
     let step = LateralStep {
         gust: Some(CrosswindGust {
             peak_mps: 5.0,
@@ -148,7 +140,7 @@ fn the_yaw_law_holds_sideslip_through_a_5_m_s_crosswind_gust() {
         }),
         ..LateralStep::new(LateralAxis::Roll, 0.0, 8.0)
     };
-    let run = fly(&setup, "observer_pd", &step);
+    let run = fly_opd(&step);
     eprintln!("{:#?}", run.response);
     assert_eq!(run.response.outcome, "completed");
     assert!(
@@ -199,12 +191,7 @@ fn a_users_own_roll_law_flies_the_bank_step() {
 /// A sideslip step: the yaw law reaches the commanded β and the bank stays near level.
 #[test]
 fn the_opd_flies_a_sideslip_step() {
-    let (setup, _) = setup();
-    let run = fly(
-        &setup,
-        "observer_pd",
-        &LateralStep::new(LateralAxis::Yaw, 2.0, 10.0),
-    );
+    let run = fly_opd(&LateralStep::new(LateralAxis::Yaw, 2.0, 10.0));
     eprintln!("{:#?}", run.response);
     assert!(run.response.settled, "{:?}", run.response);
     let last = run.samples.last().unwrap();
