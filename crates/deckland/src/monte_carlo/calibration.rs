@@ -29,7 +29,7 @@
 
 use serde::Serialize;
 
-use super::rare_events::{binomial_cdf, upper_bound, CONFIDENCE_Z_95};
+use super::rare_events::{binomial_cdf_crossing, upper_bound, CONFIDENCE_Z_95};
 use super::record::RunRecord;
 use super::row::RunRow;
 use crate::simulation::Outcome;
@@ -174,18 +174,7 @@ pub fn clopper_pearson_interval(events: u64, runs: u64) -> (f64, f64) {
     }
     // The low end: the p at which `events` or more events have probability 2.5 %,
     // P(X ≤ events − 1 | p) = 97.5 %; the CDF falls with p (bisection, as `upper_bound`).
-    let (mut low, mut top) = (0.0_f64, 1.0_f64);
-    for _ in 0..200 {
-        let middle = 0.5 * (low + top);
-        if middle <= low || middle >= top {
-            break;
-        }
-        if binomial_cdf(events - 1, runs, middle) > 0.975 {
-            low = middle;
-        } else {
-            top = middle;
-        }
-    }
+    let (low, _) = binomial_cdf_crossing(events - 1, runs, 0.975);
     (low, high)
 }
 
@@ -431,6 +420,7 @@ impl Calibration {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::monte_carlo::rare_events::binomial_cdf;
 
     /// P(X = k) of a binomial count from its CDF (`rare_events::binomial_cdf`).
     fn binomial_pmf(k: u64, n: u64, p: f64) -> f64 {

@@ -145,20 +145,26 @@ pub fn upper_bound(events: u64, runs: u64, confidence: f64) -> f64 {
         // Closed form: (1 − p)^n = α.
         return -(alpha.ln() / runs as f64).exp_m1();
     }
-    // Bisection: the CDF falls with p; 200 halvings reach the resolution of a double.
+    binomial_cdf_crossing(events, runs, alpha).1
+}
+
+/// The bracket (low, high) of the p at which P(X ≤ `events` | `runs`, p) falls through
+/// `level`, by bisection on [0, 1]: the CDF falls with p; 200 halvings reach the
+/// resolution of a double.
+pub(crate) fn binomial_cdf_crossing(events: u64, runs: u64, level: f64) -> (f64, f64) {
     let (mut low, mut high) = (0.0_f64, 1.0_f64);
     for _ in 0..200 {
         let middle = 0.5 * (low + high);
         if middle <= low || middle >= high {
             break;
         }
-        if binomial_cdf(events, runs, middle) > alpha {
+        if binomial_cdf(events, runs, middle) > level {
             low = middle;
         } else {
             high = middle;
         }
     }
-    high
+    (low, high)
 }
 
 /// The fewest runs in which `events` events (or fewer) show, at `confidence`, that the
