@@ -67,115 +67,52 @@ fn regression_rows_no_campaign_writes_are_refused_by_row_and_column() {
         .position(|r| r.commit_ramp_strike_probability.is_some())
         .expect("a run of the fixture that reached the commit point")
         + 1;
-    // (row, column, new value, the column the error names)
-    let cases: &[(usize, &str, &str, &str)] = &[
-        (trap, "outcome", "crash", "outcome"),
-        (trap, "outcome", "completed", "outcome"),
-        (trap, "outcome", "", "outcome"),
-        (trap, "wire", "9", "wire"),
-        (trap, "wire", "0", "wire"),
-        (trap, "wire", "", "wire"),
-        (not_trap, "wire", "2", "wire"),
-        (trap, "touchdown_distance_m", "", "touchdown_distance_m"),
-        (
-            trap,
-            "touchdown_distance_m",
-            "1.7976931348623157e308",
-            "touchdown_distance_m",
-        ),
-        (
-            trap,
-            "touchdown_sink_rate_mps",
-            "NaN",
-            "touchdown_sink_rate_mps",
-        ),
-        (
-            trap,
-            "touchdown_airspeed_mps",
-            "-1",
-            "touchdown_airspeed_mps",
-        ),
-        (trap, "end_time_s", "inf", "end_time_s"),
-        (trap, "end_time_s", "", "end_time_s"),
-        (trap, "time_on_stops_pct", "100.5", "time_on_stops_pct"),
-        (
-            trap,
-            "deck_within_limits_pct",
-            "100.5",
-            "deck_within_limits_pct",
-        ),
-        (
-            trap,
-            "deck_within_limits_pct",
-            "-0.1",
-            "deck_within_limits_pct",
-        ),
-        (
-            trap,
-            "deck_within_limits_pct",
-            "NaN",
-            "deck_within_limits_pct",
-        ),
-        (trap, "deck_within_limits_pct", "", "deck_within_limits_pct"),
+    // (row, column, new value): the error names the column edited.
+    let cases: &[(usize, &str, &str)] = &[
+        (trap, "outcome", "crash"),
+        (trap, "outcome", "completed"),
+        (trap, "outcome", ""),
+        (trap, "wire", "9"),
+        (trap, "wire", "0"),
+        (trap, "wire", ""),
+        (not_trap, "wire", "2"),
+        (trap, "touchdown_distance_m", ""),
+        (trap, "touchdown_distance_m", "1.7976931348623157e308"),
+        (trap, "touchdown_sink_rate_mps", "NaN"),
+        (trap, "touchdown_airspeed_mps", "-1"),
+        (trap, "end_time_s", "inf"),
+        (trap, "end_time_s", ""),
+        (trap, "time_on_stops_pct", "100.5"),
+        (trap, "deck_within_limits_pct", "100.5"),
+        (trap, "deck_within_limits_pct", "-0.1"),
+        (trap, "deck_within_limits_pct", "NaN"),
+        (trap, "deck_within_limits_pct", ""),
         // The commit point's probabilities (issue 45, item 1): within [0, 1], finite,
         // the ramp strike's and the hard landing's both or neither.
-        (
-            committed,
-            "commit_ramp_strike_probability",
-            "1.5",
-            "commit_ramp_strike_probability",
-        ),
-        (
-            committed,
-            "commit_hard_landing_probability",
-            "-1e-3",
-            "commit_hard_landing_probability",
-        ),
-        (
-            committed,
-            "commit_ramp_strike_probability",
-            "NaN",
-            "commit_ramp_strike_probability",
-        ),
-        (
-            committed,
-            "commit_hard_landing_probability",
-            "",
-            "commit_hard_landing_probability",
-        ),
-        (
-            committed,
-            "commit_off_centre_probability",
-            "inf",
-            "commit_off_centre_probability",
-        ),
+        (committed, "commit_ramp_strike_probability", "1.5"),
+        (committed, "commit_hard_landing_probability", "-1e-3"),
+        (committed, "commit_ramp_strike_probability", "NaN"),
+        (committed, "commit_hard_landing_probability", ""),
+        (committed, "commit_off_centre_probability", "inf"),
         // The clearance the ramp strike's probability is taken on and its σ: finite,
         // the σ not negative, both with the probabilities.
-        (
-            committed,
-            "commit_ramp_clearance_m",
-            "NaN",
-            "commit_ramp_clearance_m",
-        ),
-        (
-            committed,
-            "commit_ramp_clearance_sigma_m",
-            "-0.1",
-            "commit_ramp_clearance_sigma_m",
-        ),
-        (
-            committed,
-            "commit_ramp_clearance_sigma_m",
-            "",
-            "commit_ramp_clearance_sigma_m",
-        ),
-        (trap, "sea_state_scale", "0", "sea_state_scale"),
-        (trap, "reason", "edited", "reason"),
-        (not_trap, "reason", "", "reason"),
+        (committed, "commit_ramp_clearance_m", "NaN"),
+        (committed, "commit_ramp_clearance_sigma_m", "-0.1"),
+        (committed, "commit_ramp_clearance_sigma_m", ""),
+        (trap, "sea_state_scale", "0"),
+        (trap, "reason", "edited"),
+        (not_trap, "reason", ""),
+    ];
+    // (row, column, new value, the column the error names): an outcome without a wire on
+    // a row that has one is refused at the wire.
+    let named_otherwise: &[(usize, &str, &str, &str)] = &[
         (trap, "outcome", "invalid", "wire"),
         (trap, "outcome", "ramp_strike", "wire"),
     ];
-    for &(row, column, value, named) in cases {
+    let same_column = cases
+        .iter()
+        .map(|&(row, column, value)| (row, column, value, column));
+    for (row, column, value, named) in same_column.chain(named_otherwise.iter().copied()) {
         let edited = edit_csv(&text, row, column, value);
         let error = parse_runs_csv("s0/runs.csv", &edited).unwrap_err();
         let message = error.to_string();
