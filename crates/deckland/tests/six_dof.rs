@@ -11,7 +11,7 @@ use deckland::aircraft::{
     aerodynamic_coefficients, linearize, trim, Aircraft, AircraftCommands, AircraftState,
     OpenLoopAircraft, TrimRequest, Wind,
 };
-use deckland::integration::rk4_step;
+use deckland::integration::{rk4_step, OdeSystem};
 use nalgebra::SMatrix;
 use proptest::prelude::*;
 
@@ -113,47 +113,33 @@ proptest! {
     }
 }
 
-struct GustyLongitudinal {
-    aircraft: Aircraft,
-    commands: AircraftCommands,
+/// An open-loop plant whose held wind can be replaced.
+trait HeldWind: Copy {
+    /// The same plant and commands in `wind`.
+    fn in_wind(self, wind: Wind) -> Self;
 }
 
-impl deckland::integration::OdeSystem<{ AircraftState::DIMENSION }> for GustyLongitudinal {
-    fn derivative(&self, t: f64, x: &[f64; AircraftState::DIMENSION]) -> [f64; 10] {
-        let state = AircraftState::from_array(x);
-        self.aircraft
-            .derivative(&state, &self.commands, &gusty_wind(t))
-            .to_array()
-    }
-    fn constrain(&self, x: &mut [f64; AircraftState::DIMENSION]) {
-        OpenLoopAircraft {
-            aircraft: self.aircraft,
-            commands: self.commands,
-            wind: Wind::default(),
-        }
-        .constrain(x);
+impl HeldWind for OpenLoopAircraft {
+    fn in_wind(self, wind: Wind) -> Self {
+        Self { wind, ..self }
     }
 }
 
-struct GustySixDof {
-    aircraft: SixDofAircraft,
-    commands: SixDofCommands,
+impl HeldWind for OpenLoopSixDof {
+    fn in_wind(self, wind: Wind) -> Self {
+        Self { wind, ..self }
+    }
 }
 
-impl deckland::integration::OdeSystem<{ SixDofState::DIMENSION }> for GustySixDof {
-    fn derivative(&self, t: f64, x: &[f64; SixDofState::DIMENSION]) -> [f64; 20] {
-        let state = SixDofState::from_array(x);
-        self.aircraft
-            .derivative(&state, &self.commands, &gusty_wind(t))
-            .to_array()
+/// The open-loop plant `P` flown through [`gusty_wind`] instead of its held wind.
+struct Gusty<P>(P);
+
+impl<const N: usize, P: OdeSystem<N> + HeldWind> OdeSystem<N> for Gusty<P> {
+    fn derivative(&self, t: f64, x: &[f64; N]) -> [f64; N] {
+        self.0.in_wind(gusty_wind(t)).derivative(t, x)
     }
-    fn constrain(&self, x: &mut [f64; SixDofState::DIMENSION]) {
-        OpenLoopSixDof {
-            aircraft: self.aircraft,
-            commands: self.commands,
-            wind: Wind::default(),
-        }
-        .constrain(x);
+    fn constrain(&self, x: &mut [f64; N]) {
+        self.0.constrain(x);
     }
 }
 
@@ -163,21 +149,23 @@ impl deckland::integration::OdeSystem<{ SixDofState::DIMENSION }> for GustySixDo
 fn rk4_trajectories_agree_in_a_longitudinal_wind_history() {
     let point = approach_trim();
     let start = point.state(-1500.0, 100.0, &gusty_wind(0.0));
-    let longitudinal = GustyLongitudinal {
+    let longitudinal = Gusty(OpenLoopAircraft {
         aircraft: Aircraft::default(),
         commands: AircraftCommands {
             elevator_rad: point.elevator_rad - 2f64.to_radians(),
             thrust_n: point.thrust_n * 1.3,
         },
-    };
-    let six = GustySixDof {
+        wind: Wind::default(),
+    });
+    let six = Gusty(OpenLoopSixDof {
         aircraft: SixDofAircraft::default(),
         commands: SixDofCommands {
-            elevator_rad: longitudinal.commands.elevator_rad,
-            thrust_n: longitudinal.commands.thrust_n,
+            elevator_rad: longitudinal.0.commands.elevator_rad,
+            thrust_n: longitudinal.0.commands.thrust_n,
             ..SixDofCommands::default()
         },
-    };
+        wind: Wind::default(),
+    });
     let dt = 0.01;
     let mut x3 = start.to_array();
     let mut x6 = SixDofState::from_longitudinal(&start).to_array();
