@@ -442,22 +442,33 @@ fn lateral_modes_agree_with_the_textbook_matrix() {
         let got = model.lateral_modes().expect("Dutch roll, roll and spiral");
         let want = deckland::aircraft::six_dof::LateralModes::of(&a).unwrap();
         let close = |x: f64, y: f64| (x - y).abs() <= 1e-6 * y.abs();
-        assert!(close(
-            got.dutch_roll.natural_frequency_radps,
-            want.dutch_roll.natural_frequency_radps
-        ));
-        assert!(close(
-            got.dutch_roll.damping_ratio,
-            want.dutch_roll.damping_ratio
-        ));
-        assert!(close(
-            got.roll_subsidence.time_constant_s,
-            want.roll_subsidence.time_constant_s
-        ));
-        assert!(close(
-            got.spiral.time_constant_s,
-            want.spiral.time_constant_s
-        ));
+        for (figure, linearised, textbook) in [
+            (
+                "Dutch roll frequency",
+                got.dutch_roll.natural_frequency_radps,
+                want.dutch_roll.natural_frequency_radps,
+            ),
+            (
+                "Dutch roll damping",
+                got.dutch_roll.damping_ratio,
+                want.dutch_roll.damping_ratio,
+            ),
+            (
+                "roll subsidence",
+                got.roll_subsidence.time_constant_s,
+                want.roll_subsidence.time_constant_s,
+            ),
+            (
+                "spiral",
+                got.spiral.time_constant_s,
+                want.spiral.time_constant_s,
+            ),
+        ] {
+            assert!(
+                close(linearised, textbook),
+                "{figure}: {linearised} vs {textbook}"
+            );
+        }
         // Plausible approach figures for a fighter: a lightly damped Dutch roll near
         // 1 rad/s and a roll subsidence near 1 s.
         assert!((0.5..2.0).contains(&got.dutch_roll.natural_frequency_radps));
