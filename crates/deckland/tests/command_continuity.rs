@@ -65,6 +65,22 @@ fn over_the_ramp(seed: u64, fixed_margin: bool) -> (f64, f64) {
     (largest_step, on_limit)
 }
 
+/// [`over_the_ramp`] at seeds 1, 3 and 6, each climb-rate command step asserted under
+/// `bound_mps`: each seed with its share of the steps on the rate limit.
+fn command_steps_below(fixed_margin: bool, bound_mps: f64) -> Vec<(u64, f64)> {
+    [1, 3, 6]
+        .into_iter()
+        .map(|seed| {
+            let (largest_step, on_limit) = over_the_ramp(seed, fixed_margin);
+            assert!(
+                largest_step < bound_mps,
+                "seed {seed}: command step {largest_step} m/s"
+            );
+            (seed, on_limit)
+        })
+        .collect()
+}
+
 /// Seed 1 is the approach (the fixed 2.5-m margin); 3 and 6 are the other
 /// approaches `land` is checked on. Bound: 0.02 m/s per 1-ms step (20 m/s²), against the
 /// 1.5-m/s step of the linear shed; the stabilator never on its rate limit within 5 m
@@ -72,12 +88,7 @@ fn over_the_ramp(seed: u64, fixed_margin: bool) -> (f64, f64) {
 /// crossing, at seed 1).
 #[test]
 fn the_climb_rate_command_has_no_step_over_the_ramp() {
-    for seed in [1, 3, 6] {
-        let (largest_step, on_limit) = over_the_ramp(seed, true);
-        assert!(
-            largest_step < 0.02,
-            "seed {seed}: command step {largest_step} m/s"
-        );
+    for (seed, on_limit) in command_steps_below(true, 0.02) {
         assert!(
             on_limit == 0.0,
             "seed {seed}: {on_limit} of the steps on the rate limit over the ramp"
@@ -92,13 +103,7 @@ fn the_climb_rate_command_has_no_step_over_the_ramp() {
 /// seed 1), which this test does not bound.
 #[test]
 fn with_the_risk_aware_clearance_the_command_has_no_step_either() {
-    for seed in [1, 3, 6] {
-        let (largest_step, _) = over_the_ramp(seed, false);
-        assert!(
-            largest_step < 0.05,
-            "seed {seed}: command step {largest_step} m/s"
-        );
-    }
+    command_steps_below(false, 0.05);
 }
 
 /// The largest change of the late abort's share from one 1-ms step to the next, and its
