@@ -35,6 +35,15 @@ pub struct AnchorShaping {
     pub(crate) lift: Option<crate::control::LiftLoop>,
 }
 
+/// Which of the shaping's two filtered quantities a filter step moves.
+#[derive(Debug, Clone, Copy)]
+enum Smoothed {
+    /// The ramp-aware anchor.
+    Anchor,
+    /// The anchor's ramp-aware raise, which the path sheds after the ramp.
+    Raise,
+}
+
 /// The shaped anchor of one step.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct ShapedAnchor {
@@ -100,24 +109,18 @@ impl AnchorShaping {
         self.decay.1
     }
 
-    /// Moves the smoothed anchor over `dt` towards `target_m`, held over the step: the
-    /// exact solution of ä = ω²(target − a) − 2ω·ȧ (critically damped), so stable at
-    /// any step.
+    /// Moves the smoothed anchor or the smoothed ramp-aware raise (`smoothed`) over `dt`
+    /// towards `target_m`, held over the step: the exact solution of
+    /// ä = ω²(target − a) − 2ω·ȧ (critically damped), so stable at any step.
     #[inline]
-    fn smooth_anchor(&mut self, target_m: f64, dt: f64) -> (f64, f64) {
+    fn smooth(&mut self, smoothed: Smoothed, target_m: f64, dt: f64) -> (f64, f64) {
         let decay = self.decay_over(dt);
-        let next = critically_damped_step(self.anchor, target_m, self.frequency_radps, dt, decay);
-        self.anchor = Some(next);
-        next
-    }
-
-    /// Moves the smoothed ramp-aware raise over `dt` towards `target_m`, through the
-    /// anchor's filter.
-    #[inline]
-    fn smooth_raise(&mut self, target_m: f64, dt: f64) -> (f64, f64) {
-        let decay = self.decay_over(dt);
-        let next = critically_damped_step(self.raise, target_m, self.frequency_radps, dt, decay);
-        self.raise = Some(next);
+        let state = match smoothed {
+            Smoothed::Anchor => &mut self.anchor,
+            Smoothed::Raise => &mut self.raise,
+        };
+        let next = critically_damped_step(*state, target_m, self.frequency_radps, dt, decay);
+        *state = Some(next);
         next
     }
 
@@ -133,7 +136,7 @@ impl AnchorShaping {
         dt: f64,
     ) -> ShapedAnchor {
         let omega = self.frequency_radps;
-        let (mut height_m, mut rate_mps) = self.smooth_anchor(target_m, dt);
+        let (mut height_m, mut rate_mps) = self.smooth(Smoothed::Anchor, target_m, dt);
         let mut acceleration_mps2 =
             critically_damped_acceleration((height_m, rate_mps), target_m, omega);
         let mut unfiltered_m = target_m;
@@ -142,7 +145,7 @@ impl AnchorShaping {
             // filter carries the landing point's and the raise's parts) and shed between
             // the ramp and the aim point.
             let raise_m = target_m - landing_point_m;
-            let (raise_f, raise_rate) = self.smooth_raise(raise_m, dt);
+            let (raise_f, raise_rate) = self.smooth(Smoothed::Raise, raise_m, dt);
             height_m -= (1.0 - share) * raise_f;
             rate_mps += share_rate * raise_f - (1.0 - share) * raise_rate;
             let raise_acceleration =
@@ -202,11 +205,11 @@ mod tests {
         let expected = 1.0 - 3.0 * (-2.0_f64).exp();
         for steps in [1_u32, 500] {
             let mut shaping = AnchorShaping::new(4.0);
-            shaping.smooth_anchor(0.0, 0.001); // starts at rest on 0
+            shaping.smooth(Smoothed::Anchor, 0.0, 0.001); // starts at rest on 0
             let dt = 0.5 / f64::from(steps);
             let mut last = (0.0, 0.0);
             for _ in 0..steps {
-                last = shaping.smooth_anchor(1.0, dt);
+                last = shaping.smooth(Smoothed::Anchor, 1.0, dt);
             }
             assert!((last.0 - expected).abs() < 1e-12, "{steps}: {last:?}");
             // Rate: u·ω²·t·e^(−ωt) = 16·0.5·e⁻² = 1.082682 m/s.
