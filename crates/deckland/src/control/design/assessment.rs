@@ -81,25 +81,17 @@ pub fn assess_loop(
     let to_surface = model
         .closed_loop(LoopInput::SensorNoise, LoopOutput::Surface, omega)
         .norm();
-    let white_rate = if noise.white_sigma_rad > 0.0 {
-        model.white_noise_rms(
-            LoopOutput::SurfaceRate,
-            noise.white_sigma_rad,
-            noise.sample_interval_s,
-        )
-    } else {
-        0.0
+    // The RMS of `output` under the sensor's white noise (0 without it).
+    let white_rms = |output| {
+        if noise.white_sigma_rad > 0.0 {
+            model.white_noise_rms(output, noise.white_sigma_rad, noise.sample_interval_s)
+        } else {
+            0.0
+        }
     };
+    let white_rate = white_rms(LoopOutput::SurfaceRate);
     let sinusoid_rate = noise.sinusoid_amplitude_rad * to_surface * omega / 2f64.sqrt();
-    let white_angle = if noise.white_sigma_rad > 0.0 {
-        model.white_noise_rms(
-            LoopOutput::Angle,
-            noise.white_sigma_rad,
-            noise.sample_interval_s,
-        )
-    } else {
-        0.0
-    };
+    let white_angle = white_rms(LoopOutput::Angle);
     let angle_sinusoid = noise.sinusoid_amplitude_rad
         * model
             .closed_loop(LoopInput::SensorNoise, LoopOutput::Angle, omega)
@@ -136,48 +128,45 @@ pub fn shortfalls(
         .unwrap_or(f64::NEG_INFINITY);
     let gm = candidate.margins.gain_margin_db.unwrap_or(f64::INFINITY);
     let noise_fraction = candidate.noise.surface_rate_rms_radps / rate_limit_radps;
-    let short = |achieved: f64, required: f64, larger_is_better: bool| {
-        let gap = if larger_is_better {
-            required - achieved
-        } else {
-            achieved - required
-        };
-        (gap / required.abs().max(1e-9)).max(0.0)
-    };
+    // (field, achieved, required, whether larger is better)
     [
         (
             "min_phase_margin_deg",
             pm,
             request.min_phase_margin_deg,
-            short(pm, request.min_phase_margin_deg, true),
+            true,
         ),
-        (
-            "min_gain_margin_db",
-            gm,
-            request.min_gain_margin_db,
-            short(gm, request.min_gain_margin_db, true),
-        ),
+        ("min_gain_margin_db", gm, request.min_gain_margin_db, true),
         (
             "max_outer_loop_lag_deg",
             candidate.outer_loop_lag_deg,
             request.max_outer_loop_lag_deg,
-            short(
-                candidate.outer_loop_lag_deg,
-                request.max_outer_loop_lag_deg,
-                false,
-            ),
+            false,
         ),
         (
             "max_noise_rate_fraction",
             noise_fraction,
             request.max_noise_rate_fraction,
-            short(noise_fraction, request.max_noise_rate_fraction, false),
+            false,
         ),
         (
             "min_limit_cycle_travel_ratio",
             cycle_ratio,
             request.min_limit_cycle_travel_ratio,
-            short(cycle_ratio, request.min_limit_cycle_travel_ratio, true),
+            true,
         ),
     ]
+    .map(|(field, achieved, required, larger_is_better)| {
+        let gap = if larger_is_better {
+            required - achieved
+        } else {
+            achieved - required
+        };
+        (
+            field,
+            achieved,
+            required,
+            (gap / required.abs().max(1e-9)).max(0.0),
+        )
+    })
 }
