@@ -16,11 +16,7 @@ use crate::control::design::tests::{hardware, noise, ACTUATOR, PLANT};
 /// hand-computed L = (16 + 78.1j)·A(10j)/(10j·(10j + 0.1891)).
 #[test]
 fn fast_observer_gives_the_ideal_pd_loop() {
-    let gains = ObserverPdGains::design(1.0, 1.0, PLANT.rate_damping_per_s).expect("valid");
-    let observer = ObserverParameters {
-        epsilon: 0.0005,
-        ..ObserverParameters::default()
-    };
+    let (gains, observer) = opd_design(1.0, 1.0, 0.0005);
     let law = linear_observer_pd(&gains, &observer, PitchFeedback::Measured, PLANT);
     let model = AxisLoopModel::new(PLANT, None, ACTUATOR, &law);
     let s = Complex::new(0.0, 10.0);
@@ -39,13 +35,8 @@ fn fast_observer_gives_the_ideal_pd_loop() {
 /// closed loop is stable.
 #[test]
 fn both_laws_track_slow_commands() {
-    let gains = ObserverPdGains::design(1.0, 1.0, PLANT.rate_damping_per_s).expect("valid");
-    let observer = ObserverParameters {
-        epsilon: 0.1,
-        ..ObserverParameters::default()
-    };
     let laws = [
-        linear_observer_pd(&gains, &observer, PitchFeedback::ObserverEstimate, PLANT),
+        opd_law(1.0, 1.0, 0.1, PitchFeedback::ObserverEstimate),
         linear_pid(&PidParameters::default(), PLANT),
     ];
     for law in laws {
@@ -118,20 +109,50 @@ fn invalid_requests_are_named() {
     assert!(error.to_string().contains("design_step_deg"), "{error}");
 }
 
+/// The O-PD's gains for a settling time (s) and damping ratio on the test plant, with
+/// an observer of ε `epsilon`.
+fn opd_design(
+    settling_time_s: f64,
+    damping_ratio: f64,
+    epsilon: f64,
+) -> (ObserverPdGains, ObserverParameters) {
+    let gains = ObserverPdGains::design(settling_time_s, damping_ratio, PLANT.rate_damping_per_s)
+        .expect("valid");
+    let observer = ObserverParameters {
+        epsilon,
+        ..ObserverParameters::default()
+    };
+    (gains, observer)
+}
+
+/// The linearised O-PD of [`opd_design`] on the test plant, feeding back `feedback`.
 fn opd_law(
     settling_time_s: f64,
     damping_ratio: f64,
     epsilon: f64,
     feedback: PitchFeedback,
 ) -> LinearLaw {
-    let plant = hardware(None).plant;
-    let gains = ObserverPdGains::design(settling_time_s, damping_ratio, plant.rate_damping_per_s)
-        .expect("valid");
-    let observer = ObserverParameters {
-        epsilon,
-        ..ObserverParameters::default()
+    let (gains, observer) = opd_design(settling_time_s, damping_ratio, epsilon);
+    linear_observer_pd(&gains, &observer, feedback, hardware(None).plant)
+}
+
+/// The limit cycle's amplitude and the travel (rad) for which [`check_tuning`] refuses
+/// `law` on `hardware` with `travel_ratio`; panics with `granted` if it does not.
+#[track_caller]
+fn refused_limit_cycle(
+    hardware: &AxisHardware,
+    law: &LinearLaw,
+    travel_ratio: f64,
+    granted: &str,
+) -> (f64, f64) {
+    let Err(TuningProblem::RateLimitOscillation {
+        amplitude_rad,
+        travel_rad,
+    }) = check_tuning(hardware, law, travel_ratio)
+    else {
+        panic!("{granted}");
     };
-    linear_observer_pd(&gains, &observer, feedback, plant)
+    (amplitude_rad, travel_rad)
 }
 
 /// The paper's O-PD (T_2% = 0.3 s, ζ = √2, ε = 0.03, measured attitude) at 40 °/s: its
@@ -146,13 +167,12 @@ fn opd_law(
 fn the_check_refuses_the_paper_gains_on_the_real_stabilator_and_passes_the_design() {
     let paper = opd_law(0.3, 2f64.sqrt(), 0.03, PitchFeedback::Measured);
     let continuous = hardware(Some(40.0));
-    let Err(TuningProblem::RateLimitOscillation {
-        amplitude_rad,
-        travel_rad,
-    }) = check_tuning(&continuous, &paper, 3.0)
-    else {
-        panic!("the paper's gains pass at 40 °/s");
-    };
+    let (amplitude_rad, travel_rad) = refused_limit_cycle(
+        &continuous,
+        &paper,
+        3.0,
+        "the paper's gains pass at 40 °/s",
+    );
     assert!(amplitude_rad < 0.2 * travel_rad, "{amplitude_rad} rad");
     let sampled = AxisHardware {
         control_delay_s: 1.5 / 80.0,
@@ -188,13 +208,8 @@ fn the_check_applies_the_requested_travel_ratio() {
         ..hardware(Some(40.0))
     };
     assert_eq!(check_tuning(&sampled, &design, 3.0), Ok(()));
-    let Err(TuningProblem::RateLimitOscillation {
-        amplitude_rad,
-        travel_rad,
-    }) = check_tuning(&sampled, &design, 4.0)
-    else {
-        panic!("4 travels granted");
-    };
+    let (amplitude_rad, travel_rad) =
+        refused_limit_cycle(&sampled, &design, 4.0, "4 travels granted");
     let ratio = amplitude_rad / travel_rad;
     assert!((3.0..4.0).contains(&ratio), "{ratio}");
     assert_eq!(check_tuning(&sampled, &design, 3.0), Ok(()));
