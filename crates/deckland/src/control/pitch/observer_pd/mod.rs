@@ -382,6 +382,11 @@ mod tests {
 
     use crate::control::design::PAPER_PITCH_PLANT as PAPER_PLANT;
 
+    /// The default O-PD on the paper's pitch plant.
+    pub(super) fn paper_controller() -> ObserverPdController {
+        ObserverPdController::new(&ObserverPdParameters::default(), PAPER_PLANT).expect("ok")
+    }
+
     /// Reference: paper §4.2.2 prints K_Pθ = 88.89 and K_Dθ = 26.5186 for T_2% = 0.3 s,
     /// ζ = √2, ∂q̇/∂q = −0.15 (Eq. 14). The rule gives 26.5167; the paper's last digits
     /// imply an unrounded ∂q̇/∂q ≈ −0.148, so K_D is checked to the two decimals
@@ -418,8 +423,7 @@ mod tests {
 
     #[test]
     fn at_trim_with_no_error_the_command_is_the_trim_elevator() {
-        let controller =
-            ObserverPdController::new(&ObserverPdParameters::default(), PAPER_PLANT).expect("ok");
+        let controller = paper_controller();
         let inputs = PitchLawInputs {
             theta_ref_rad: 0.124,
             theta_measured_rad: 0.124,
@@ -435,8 +439,7 @@ mod tests {
 
     #[test]
     fn nose_up_command_and_disturbance_estimate_move_the_elevator_trailing_edge_up() {
-        let controller =
-            ObserverPdController::new(&ObserverPdParameters::default(), PAPER_PLANT).expect("ok");
+        let controller = paper_controller();
         let inputs = PitchLawInputs {
             theta_ref_rad: 0.01,
             ..PitchLawInputs::default()

@@ -20,19 +20,16 @@ impl ObserverPdController {
 
 #[cfg(test)]
 mod tests {
-    use super::super::{ObserverPdParameters, PitchLawInputs};
-    use super::*;
+    use super::super::tests::paper_controller;
+    use super::super::PitchLawInputs;
     use crate::control::AxisLaw;
-
-    use crate::control::design::PAPER_PITCH_PLANT as PAPER_PLANT;
 
     /// The tabulated power (the 3-D approach's) gives the library's derivative to within a
     /// few rounding errors: |e|^s within 2 ulp (`FractionalPower`'s own test) moves the
     /// observer's rates by as little, over innovations from 10⁻⁹ to 1 rad.
     #[test]
     fn the_tabulated_power_gives_the_librarys_derivative_within_rounding() {
-        let library =
-            ObserverPdController::new(&ObserverPdParameters::default(), PAPER_PLANT).expect("ok");
+        let library = paper_controller();
         let tabulated = library.with_tabulated_power();
         assert!(library.power.is_none() && tabulated.power.is_some());
         let (mut differ, mut cases) = (0, 0);
