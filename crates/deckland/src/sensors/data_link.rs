@@ -8,7 +8,7 @@ use super::ShipMotionSensingParameters;
 use crate::parameters::ParameterError;
 
 /// A measurement as the data link carries it: stamped with the time it was taken.
-pub(super) trait Stamped {
+pub trait Stamped {
     /// The time the sample was taken (s).
     fn time_s(&self) -> f64;
 }

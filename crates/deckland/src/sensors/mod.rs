@@ -1,5 +1,6 @@
 //! Sensors and their noise (paper §3.5; docs/model.md §3.3, §3.5).
 
+mod channel_sensor;
 mod data_link;
 mod pitch;
 mod ship_lateral_motion;

@@ -12,11 +12,11 @@
 //! first step at or after each multiple of the sample period and delivered at the first
 //! step at or after its time plus the latency.
 
-use super::data_link::{DataLink, Stamped};
+use super::channel_sensor::{channel_noise, ChannelMeasurement, ChannelSensor};
+use super::data_link::Stamped;
 use super::ShipMotionSensingParameters;
 use crate::environment::LateralShipMotionOutputs;
-use crate::parameters::ParameterError;
-use crate::random::{stream_names, NoiseStream, RandomStreams, Reseed};
+use crate::random::{stream_names, NoiseStream, RandomStreams};
 
 /// One measurement of the ship's roll, yaw and sway, as sent over the data link.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -36,18 +36,7 @@ pub fn measure_lateral_ship_motion(
     sigmas: &[f64; 6],
     streams: &mut [NoiseStream; 6],
 ) -> LateralShipMotionMeasurement {
-    let noise: [f64; 6] = std::array::from_fn(|i| sigmas[i] * streams[i].standard_normal());
-    LateralShipMotionMeasurement {
-        time_s,
-        motion: LateralShipMotionOutputs {
-            roll_rad: truth.roll_rad + noise[0],
-            roll_rate_radps: truth.roll_rate_radps + noise[1],
-            yaw_rad: truth.yaw_rad + noise[2],
-            yaw_rate_radps: truth.yaw_rate_radps + noise[3],
-            sway_m: truth.sway_m + noise[4],
-            sway_rate_mps: truth.sway_rate_mps + noise[5],
-        },
-    }
+    LateralShipMotionMeasurement::with_noise(time_s, truth, channel_noise(sigmas, streams))
 }
 
 /// The six lateral noise streams of the scenario, from their start.
@@ -64,13 +53,8 @@ pub fn lateral_ship_sensor_streams(streams: &RandomStreams) -> [NoiseStream; 6] 
 }
 
 /// The lateral channels of the ship's inertial navigation and the data link: samples,
-/// noise and latency.
-#[derive(Debug, Clone)]
-pub struct LateralShipMotionSensor {
-    sigmas: [f64; 6],
-    streams: [NoiseStream; 6],
-    link: DataLink<LateralShipMotionMeasurement>,
-}
+/// noise and latency (as [`super::ShipMotionSensor`]'s, on the same link).
+pub type LateralShipMotionSensor = ChannelSensor<LateralShipMotionMeasurement, 6>;
 
 impl Stamped for LateralShipMotionMeasurement {
     fn time_s(&self) -> f64 {
@@ -78,39 +62,29 @@ impl Stamped for LateralShipMotionMeasurement {
     }
 }
 
-impl LateralShipMotionSensor {
-    /// A sensor with these parameters, its noise from the six lateral `ship_sensor_*`
-    /// streams of `streams`.
-    pub fn new(
-        parameters: ShipMotionSensingParameters,
-        streams: &RandomStreams,
-    ) -> Result<Self, ParameterError> {
-        Ok(Self {
-            sigmas: parameters.lateral_sigmas_si(),
-            streams: lateral_ship_sensor_streams(streams),
-            link: DataLink::new(parameters)?,
-        })
+impl ChannelMeasurement<6> for LateralShipMotionMeasurement {
+    type Truth = LateralShipMotionOutputs;
+
+    fn sigmas(parameters: &ShipMotionSensingParameters) -> [f64; 6] {
+        parameters.lateral_sigmas_si()
     }
 
-    /// Takes a sample of `truth` at `time_s` if one is due (as
-    /// [`super::ShipMotionSensor::sample_due`]), drawing one number from each channel's
-    /// stream, and puts it on the data link.
-    pub fn sample(&mut self, time_s: f64, truth: &LateralShipMotionOutputs) {
-        let (sigmas, streams) = (&self.sigmas, &mut self.streams);
-        self.link.sample(time_s, || {
-            measure_lateral_ship_motion(time_s, truth, sigmas, streams)
-        });
+    fn streams(streams: &RandomStreams) -> [NoiseStream; 6] {
+        lateral_ship_sensor_streams(streams)
     }
 
-    /// The oldest measurement that has arrived by `time_s`, if any; call until `None`.
-    pub fn receive(&mut self, time_s: f64) -> Option<LateralShipMotionMeasurement> {
-        self.link.receive(time_s)
-    }
-}
-
-impl Reseed for LateralShipMotionSensor {
-    fn reseed(&mut self, key: u64) {
-        self.streams.reseed(key);
+    fn with_noise(time_s: f64, truth: &LateralShipMotionOutputs, noise: [f64; 6]) -> Self {
+        LateralShipMotionMeasurement {
+            time_s,
+            motion: LateralShipMotionOutputs {
+                roll_rad: truth.roll_rad + noise[0],
+                roll_rate_radps: truth.roll_rate_radps + noise[1],
+                yaw_rad: truth.yaw_rad + noise[2],
+                yaw_rate_radps: truth.yaw_rate_radps + noise[3],
+                sway_m: truth.sway_m + noise[4],
+                sway_rate_mps: truth.sway_rate_mps + noise[5],
+            },
+        }
     }
 }
 

@@ -16,13 +16,14 @@
 //! at the first step at or after its time plus the latency. Each channel's noise comes
 //! from its own stream (`ship_sensor_heave`, …; docs/model.md §3.4).
 
-use super::data_link::{DataLink, Stamped};
+use super::channel_sensor::{ChannelMeasurement, ChannelSensor};
+use super::data_link::Stamped;
 
 use serde::{Deserialize, Serialize};
 
 use crate::environment::ShipMotionOutputs;
 use crate::parameters::{check_ranges, Bounds, ParameterError};
-use crate::random::{stream_names, NoiseStream, RandomStreams, Reseed};
+use crate::random::{stream_names, NoiseStream, RandomStreams};
 
 /// Noise, rate and latency of the ship-motion measurements (docs/model.md §3.5).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -167,12 +168,7 @@ pub struct ShipMotionMeasurement {
 }
 
 /// The ship's inertial navigation and the data link: samples, noise and latency.
-#[derive(Debug, Clone)]
-pub struct ShipMotionSensor {
-    sigmas: [f64; 4],
-    streams: [NoiseStream; 4],
-    link: DataLink<ShipMotionMeasurement>,
-}
+pub type ShipMotionSensor = ChannelSensor<ShipMotionMeasurement, 4>;
 
 impl Stamped for ShipMotionMeasurement {
     fn time_s(&self) -> f64 {
@@ -180,66 +176,32 @@ impl Stamped for ShipMotionMeasurement {
     }
 }
 
-impl ShipMotionSensor {
-    /// A sensor with these parameters, its noise from the four `ship_sensor_*` streams of
-    /// `streams`.
-    pub fn new(
-        parameters: ShipMotionSensingParameters,
-        streams: &RandomStreams,
-    ) -> Result<Self, ParameterError> {
-        Ok(Self {
-            sigmas: parameters.sigmas_si(),
-            streams: [
-                stream_names::SHIP_SENSOR_HEAVE,
-                stream_names::SHIP_SENSOR_HEAVE_RATE,
-                stream_names::SHIP_SENSOR_PITCH,
-                stream_names::SHIP_SENSOR_PITCH_RATE,
-            ]
-            .map(|name| streams.stream(name)),
-            link: DataLink::new(parameters)?,
-        })
+impl ChannelMeasurement<4> for ShipMotionMeasurement {
+    type Truth = ShipMotionOutputs;
+
+    fn sigmas(parameters: &ShipMotionSensingParameters) -> [f64; 4] {
+        parameters.sigmas_si()
     }
 
-    /// The parameters.
-    pub fn parameters(&self) -> &ShipMotionSensingParameters {
-        self.link.parameters()
+    /// The four `ship_sensor_*` streams: heave, heave rate, pitch, pitch rate.
+    fn streams(streams: &RandomStreams) -> [NoiseStream; 4] {
+        [
+            stream_names::SHIP_SENSOR_HEAVE,
+            stream_names::SHIP_SENSOR_HEAVE_RATE,
+            stream_names::SHIP_SENSOR_PITCH,
+            stream_names::SHIP_SENSOR_PITCH_RATE,
+        ]
+        .map(|name| streams.stream(name))
     }
 
-    /// Whether a sample is due at the step from `time_s` (the first step at or after a
-    /// multiple of the sample period).
-    pub fn sample_due(&self, time_s: f64) -> bool {
-        self.link.sample_due(time_s)
-    }
-
-    /// Takes a sample of the true motion `truth` at `time_s` if one is due, drawing one
-    /// number from each channel's stream, and puts it on the data link.
-    pub fn sample(&mut self, time_s: f64, truth: &ShipMotionOutputs) {
-        let (sigmas, streams) = (self.sigmas, &mut self.streams);
-        self.link.sample(time_s, || {
-            let mut noise = [0.0; 4];
-            for ((n, stream), sigma) in noise.iter_mut().zip(streams).zip(sigmas) {
-                *n = sigma * stream.standard_normal();
-            }
-            ShipMotionMeasurement {
-                time_s,
-                heave_m: truth.heave_m + noise[0],
-                heave_rate_mps: truth.heave_rate_mps + noise[1],
-                pitch_rad: truth.pitch_rad + noise[2],
-                pitch_rate_radps: truth.pitch_rate_radps + noise[3],
-            }
-        });
-    }
-
-    /// The oldest measurement that has arrived by `time_s` (sent at or before
-    /// `time_s` − latency), if any; call until `None` to take every arrival.
-    pub fn receive(&mut self, time_s: f64) -> Option<ShipMotionMeasurement> {
-        self.link.receive(time_s)
-    }
-}
-
-impl Reseed for ShipMotionSensor {
-    fn reseed(&mut self, key: u64) {
-        self.streams.reseed(key);
+    fn with_noise(time_s: f64, truth: &ShipMotionOutputs, noise: [f64; 4]) -> Self {
+        ShipMotionMeasurement {
+            time_s,
+            heave_m: truth.heave_m + noise[0],
+            heave_rate_mps: truth.heave_rate_mps + noise[1],
+            pitch_rad: truth.pitch_rad + noise[2],
+            pitch_rate_radps: truth.pitch_rate_radps + noise[3],
+        }
     }
 }
 
