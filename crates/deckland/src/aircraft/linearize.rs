@@ -5,6 +5,7 @@
 //! is linearised alone (actuator and engine dynamics excluded, as in the paper), in still
 //! air, by central differences of the nonlinear equations of motion.
 
+use super::central_difference::jacobian;
 use super::trim::TrimPoint;
 use super::{Aircraft, AirframeInputs, Wind};
 use nalgebra::{Complex, SMatrix, SVector};
@@ -75,27 +76,7 @@ pub fn linearize(aircraft: &Aircraft, trim: &TrimPoint) -> LinearModel {
     let u0 = SVector::<f64, 2>::new(trim.elevator_rad, trim.throttle);
     const STATE_STEPS: [f64; 4] = [1e-4, 1e-6, 1e-6, 1e-6];
     const INPUT_STEPS: [f64; 2] = [1e-6, 1e-6];
-    let mut a = SMatrix::<f64, 4, 4>::zeros();
-    for (j, h) in STATE_STEPS.iter().enumerate() {
-        let mut plus = x0;
-        let mut minus = x0;
-        plus[j] += h;
-        minus[j] -= h;
-        a.set_column(
-            j,
-            &((rates(aircraft, &plus, &u0) - rates(aircraft, &minus, &u0)) / (2.0 * h)),
-        );
-    }
-    let mut b = SMatrix::<f64, 4, 2>::zeros();
-    for (j, h) in INPUT_STEPS.iter().enumerate() {
-        let mut plus = u0;
-        let mut minus = u0;
-        plus[j] += h;
-        minus[j] -= h;
-        b.set_column(
-            j,
-            &((rates(aircraft, &x0, &plus) - rates(aircraft, &x0, &minus)) / (2.0 * h)),
-        );
-    }
+    let a = jacobian(&x0, &STATE_STEPS, |x| rates(aircraft, x, &u0));
+    let b = jacobian(&u0, &INPUT_STEPS, |u| rates(aircraft, &x0, u));
     LinearModel { a, b, trim: *trim }
 }

@@ -12,6 +12,7 @@ mod actuator;
 mod aerodynamic_data;
 mod aerodynamics;
 mod built_plant;
+mod central_difference;
 mod configuration;
 mod dynamics;
 mod engine;

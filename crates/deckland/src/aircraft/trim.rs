@@ -6,8 +6,9 @@
 //! a backtracking line search. The result is then checked against the model's limits:
 //! α inside the polynomials' range, δe within the actuator's limits, T within [0, 2·T_max].
 
+use super::central_difference::{newton_with_backtracking, NotConverged};
 use super::{Aircraft, AircraftState, AirframeInputs, Wind, ALPHA_MAX_RAD, ALPHA_MIN_RAD};
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::Vector3;
 use serde::Serialize;
 
 /// What to trim for.
@@ -208,7 +209,6 @@ pub enum TrimError {
     },
 }
 
-const MAX_ITERATIONS: usize = 60;
 const TOLERANCE: f64 = 1e-12;
 
 /// Residuals (V̇, α̇, q̇) for unknowns (α, δe, T) at speed `v` and path angle `gamma`.
@@ -226,22 +226,6 @@ fn residual(aircraft: &Aircraft, v: f64, gamma: f64, unknowns: &Vector3<f64>) ->
         (u * w_dot - w * u_dot) / (v * v),
         q_dot,
     )
-}
-
-/// Central-difference Jacobian of [`residual`] with respect to (α, δe, T).
-fn jacobian(aircraft: &Aircraft, v: f64, gamma: f64, unknowns: &Vector3<f64>) -> Matrix3<f64> {
-    const STEPS: [f64; 3] = [1e-6, 1e-6, 1e-2];
-    let mut jac = Matrix3::zeros();
-    for (j, step) in STEPS.iter().enumerate() {
-        let mut plus = *unknowns;
-        let mut minus = *unknowns;
-        plus[j] += step;
-        minus[j] -= step;
-        let column = (residual(aircraft, v, gamma, &plus) - residual(aircraft, v, gamma, &minus))
-            / (2.0 * step);
-        jac.set_column(j, &column);
-    }
-    jac
 }
 
 fn validate_request(request: &TrimRequest) -> Result<(), TrimError> {
@@ -270,39 +254,20 @@ pub fn trim(aircraft: &Aircraft, request: &TrimRequest) -> Result<TrimPoint, Tri
     let v = request.speed_mps;
     let gamma = request.flight_path_angle_rad;
     let weight = aircraft.parameters().mass_kg * aircraft.parameters().gravity_mps2;
-    let mut unknowns = Vector3::new(0.1, -0.1, 0.2 * weight);
-    let mut r = residual(aircraft, v, gamma, &unknowns);
-    let mut iterations = 0;
-    while r.amax() > TOLERANCE {
-        if iterations == MAX_ITERATIONS || !r.amax().is_finite() {
-            return Err(TrimError::NoConvergence {
-                iterations,
-                residual: r.amax(),
-            });
-        }
-        iterations += 1;
-        let jac = jacobian(aircraft, v, gamma, &unknowns);
-        let Some(step) = jac.lu().solve(&(-r)) else {
-            return Err(TrimError::NoConvergence {
-                iterations,
-                residual: r.amax(),
-            });
-        };
-        // Backtracking: halve the step until the residual norm falls. Keeps α within a
-        // plausible band so the polynomials are not evaluated far from their data.
-        let mut scale = 1.0;
-        loop {
-            let mut candidate = unknowns + step * scale;
-            candidate[0] = candidate[0].clamp(-0.5, 1.2);
-            let r_candidate = residual(aircraft, v, gamma, &candidate);
-            if r_candidate.norm() < r.norm() || scale < 1e-4 {
-                unknowns = candidate;
-                r = r_candidate;
-                break;
-            }
-            scale *= 0.5;
-        }
-    }
+    let start = Vector3::new(0.1, -0.1, 0.2 * weight);
+    // Backtracking keeps α within a plausible band so the polynomials are not evaluated
+    // far from their data.
+    let (unknowns, r, iterations) = newton_with_backtracking(
+        start,
+        &[1e-6, 1e-6, 1e-2],
+        TOLERANCE,
+        |unknowns| residual(aircraft, v, gamma, unknowns),
+        |candidate| candidate[0] = candidate[0].clamp(-0.5, 1.2),
+    )
+    .map_err(|failure: NotConverged| TrimError::NoConvergence {
+        iterations: failure.iterations,
+        residual: failure.residual,
+    })?;
     let point = TrimPoint {
         speed_mps: v,
         flight_path_angle_rad: gamma,

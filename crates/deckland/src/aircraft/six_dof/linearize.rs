@@ -11,6 +11,7 @@
 use super::dynamics::{SixDofAircraft, SixDofInputs};
 use super::kinematics::euler_rates;
 use super::trim::SixDofTrimPoint;
+use crate::aircraft::central_difference::jacobian;
 use crate::environment::Wind;
 use nalgebra::{Complex, SMatrix, SVector};
 
@@ -209,25 +210,7 @@ pub fn linearize_six_dof(aircraft: &SixDofAircraft, trim: &SixDofTrimPoint) -> S
     ]);
     const STATE_STEPS: [f64; FULL_STATES] = [1e-4, 1e-6, 1e-6, 1e-6, 1e-6, 1e-6, 1e-6, 1e-6];
     const INPUT_STEP: f64 = 1e-6;
-    let mut a = SMatrix::<f64, FULL_STATES, FULL_STATES>::zeros();
-    for (j, h) in STATE_STEPS.iter().enumerate() {
-        let (mut plus, mut minus) = (x0, x0);
-        plus[j] += h;
-        minus[j] -= h;
-        a.set_column(
-            j,
-            &((rates(aircraft, &plus, &u0) - rates(aircraft, &minus, &u0)) / (2.0 * h)),
-        );
-    }
-    let mut b = SMatrix::<f64, FULL_STATES, FULL_INPUTS>::zeros();
-    for j in 0..FULL_INPUTS {
-        let (mut plus, mut minus) = (u0, u0);
-        plus[j] += INPUT_STEP;
-        minus[j] -= INPUT_STEP;
-        b.set_column(
-            j,
-            &((rates(aircraft, &x0, &plus) - rates(aircraft, &x0, &minus)) / (2.0 * INPUT_STEP)),
-        );
-    }
+    let a = jacobian(&x0, &STATE_STEPS, |x| rates(aircraft, x, &u0));
+    let b = jacobian(&u0, &[INPUT_STEP; FULL_INPUTS], |u| rates(aircraft, &x0, u));
     SixDofLinearModel { a, b, trim: *trim }
 }

@@ -14,9 +14,10 @@
 use super::dynamics::{SixDofAircraft, SixDofInputs};
 use super::kinematics::body_to_earth;
 use super::state::SixDofState;
+use crate::aircraft::central_difference::{newton_with_backtracking, NotConverged};
 use crate::aircraft::{trim, TrimError, TrimRequest, ALPHA_MAX_RAD, ALPHA_MIN_RAD};
 use crate::environment::Wind;
-use nalgebra::{SMatrix, SVector};
+use nalgebra::SVector;
 
 /// What to trim for.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -171,7 +172,6 @@ pub enum SixDofTrimError {
     },
 }
 
-const MAX_ITERATIONS: usize = 60;
 const TOLERANCE: f64 = 1e-11;
 
 fn air_velocity_body(speed: f64, alpha: f64, beta: f64) -> [f64; 3] {
@@ -217,7 +217,7 @@ pub fn trim_six_dof(
     }
     // The longitudinal trim validates speed and flight path and gives the start.
     let start = trim(aircraft.longitudinal(), &request.longitudinal)?;
-    let mut x = Unknowns::from([
+    let initial = Unknowns::from([
         start.alpha_rad,
         start.theta_rad,
         start.elevator_rad,
@@ -226,46 +226,20 @@ pub fn trim_six_dof(
         0.0,
         0.0,
     ]);
-    const STEPS: [f64; 7] = [1e-6, 1e-6, 1e-6, 1e-2, 1e-6, 1e-6, 1e-6];
-    let mut r = residual(aircraft, request, &x);
-    let mut iterations = 0;
-    while r.amax() > TOLERANCE {
-        if iterations == MAX_ITERATIONS || !r.amax().is_finite() {
-            return Err(SixDofTrimError::NoConvergence {
-                iterations,
-                residual: r.amax(),
-            });
-        }
-        iterations += 1;
-        let mut jacobian = SMatrix::<f64, 7, 7>::zeros();
-        for (j, step) in STEPS.iter().enumerate() {
-            let (mut plus, mut minus) = (x, x);
-            plus[j] += step;
-            minus[j] -= step;
-            let column = (residual(aircraft, request, &plus) - residual(aircraft, request, &minus))
-                / (2.0 * step);
-            jacobian.set_column(j, &column);
-        }
-        let Some(step) = jacobian.lu().solve(&(-r)) else {
-            return Err(SixDofTrimError::NoConvergence {
-                iterations,
-                residual: r.amax(),
-            });
-        };
-        let mut scale = 1.0;
-        loop {
-            let mut candidate = x + step * scale;
+    let (x, r, iterations) = newton_with_backtracking(
+        initial,
+        &[1e-6, 1e-6, 1e-6, 1e-2, 1e-6, 1e-6, 1e-6],
+        TOLERANCE,
+        |x| residual(aircraft, request, x),
+        |candidate| {
             candidate[0] = candidate[0].clamp(-0.5, 1.2);
             candidate[6] = candidate[6].clamp(-1.4, 1.4);
-            let r_candidate = residual(aircraft, request, &candidate);
-            if r_candidate.norm() < r.norm() || scale < 1e-4 {
-                x = candidate;
-                r = r_candidate;
-                break;
-            }
-            scale *= 0.5;
-        }
-    }
+        },
+    )
+    .map_err(|failure: NotConverged| SixDofTrimError::NoConvergence {
+        iterations: failure.iterations,
+        residual: failure.residual,
+    })?;
     let mut point = SixDofTrimPoint {
         speed_mps: request.longitudinal.speed_mps,
         flight_path_angle_rad: request.longitudinal.flight_path_angle_rad,
