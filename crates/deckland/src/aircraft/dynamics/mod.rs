@@ -21,7 +21,7 @@ use super::aerodynamics::aerodynamic_coefficients;
 #[cfg(doc)]
 use super::aerodynamics::aerodynamic_coefficients_trig;
 use super::aerodynamics::{
-    coefficients_of, fa18_polynomials_at, polynomials_at, AerodynamicCoefficients,
+    angle_of_attack, coefficients_of, fa18_polynomials_at, polynomials_at, AerodynamicCoefficients,
 };
 use super::configuration::AerodynamicConfiguration;
 use super::engine::{EngineParameters, Engines};
@@ -212,12 +212,7 @@ impl Aircraft {
         };
         AirData {
             airspeed_mps: airspeed,
-            // atan(w/u) equals atan2(w, u) for u > 0 (always so in flight) and is cheaper.
-            alpha_rad: if ua > 0.0 {
-                (wa / ua).atan()
-            } else {
-                wa.atan2(ua)
-            },
+            alpha_rad: angle_of_attack(ua, wa),
             dynamic_pressure_pa: 0.5 * self.parameters.air_density_kg_m3 * airspeed * airspeed,
             sin_alpha,
             cos_alpha,

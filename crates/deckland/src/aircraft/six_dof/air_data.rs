@@ -2,6 +2,7 @@
 //! airspeed, angle of attack, sideslip and dynamic pressure it gives.
 
 use super::kinematics::EulerTrig;
+use crate::aircraft::aerodynamics::angle_of_attack;
 use crate::aircraft::Wind;
 
 /// Air data from the air-relative body velocity (u_a, v_a, w_a).
@@ -29,11 +30,7 @@ impl SixDofAirData {
         let in_symmetry_plane = (ua * ua + wa * wa).sqrt();
         Self {
             airspeed_mps: airspeed,
-            alpha_rad: if ua > 0.0 {
-                (wa / ua).atan()
-            } else {
-                wa.atan2(ua)
-            },
+            alpha_rad: angle_of_attack(ua, wa),
             beta_rad: if series_trig && in_symmetry_plane > 0.0 {
                 (va / in_symmetry_plane).atan()
             } else {
