@@ -45,6 +45,21 @@ fn filter_rates_are_derivatives_of_the_outputs() {
     );
 }
 
+/// Asserts the wake's (x, z) components are `expected` (m/s) within 10⁻¹², naming the
+/// point `at` on failure.
+fn assert_wake_is(wake: Wind, expected: (f64, f64), at: &str) {
+    assert!(
+        (wake.x_mps - expected.0).abs() < 1e-12,
+        "wake x at {at}: {}",
+        wake.x_mps
+    );
+    assert!(
+        (wake.z_mps - expected.1).abs() < 1e-12,
+        "wake z at {at}: {}",
+        wake.z_mps
+    );
+}
+
 #[test]
 fn steady_wake_matches_eq_21_22_by_hand() {
     // u2 = 0.002·X (0 < X < 914), w2 = −1 + 0.0013·X (X < 914), else 0.
@@ -58,17 +73,7 @@ fn steady_wake_matches_eq_21_22_by_hand() {
         (1000.0, 0.0, 0.0),
     ];
     for (x, u2, w2) in cases {
-        let wake = steady_wake(x);
-        assert!(
-            (wake.x_mps - u2).abs() < 1e-12,
-            "u2 at X = {x}: {}",
-            wake.x_mps
-        );
-        assert!(
-            (wake.z_mps - w2).abs() < 1e-12,
-            "w2 at X = {x}: {}",
-            wake.z_mps
-        );
+        assert_wake_is(steady_wake(x), (u2, w2), &format!("X = {x}"));
     }
     assert!((steady_wake(400.0).x_mps - 0.8).abs() < 1e-12);
 }
@@ -91,16 +96,10 @@ fn periodic_wake_matches_eq_23_25_by_hand() {
         let u3 = 0.05 * 10.0 * (2.22 + 0.000_091 * x) * c;
         let w3 = 0.05 * 10.0 * (4.98 + 0.0018 * x) * c;
         assert!((u3 - u3_python).abs() < 1e-9 && (w3 - w3_python).abs() < 1e-9);
-        let wake = periodic_wake(t, x, &parameters);
-        assert!(
-            (wake.x_mps - u3).abs() < 1e-12,
-            "u3 at t = {t}, X = {x}: {}",
-            wake.x_mps
-        );
-        assert!(
-            (wake.z_mps - w3).abs() < 1e-12,
-            "w3 at t = {t}, X = {x}: {}",
-            wake.z_mps
+        assert_wake_is(
+            periodic_wake(t, x, &parameters),
+            (u3, w3),
+            &format!("t = {t}, X = {x}"),
         );
     }
 }

@@ -293,17 +293,27 @@ mod tests {
         WaveSpectrum::sea_state(SpectrumShape::PiersonMoskowitz, 5).expect("in the table")
     }
 
+    /// The spectral moment m_n = ∫ ωⁿ S(ω) dω of `spectrum` from 0.05 ω_p to
+    /// `upper_over_peak`·ω_p, by Simpson's rule on `panels` panels.
+    fn spectral_moment(
+        spectrum: &WaveSpectrum,
+        n: i32,
+        upper_over_peak: f64,
+        panels: usize,
+    ) -> f64 {
+        let omega_p = spectrum.peak_frequency_radps();
+        simpson(
+            |w| w.powi(n) * spectrum.density(w),
+            0.05 * omega_p,
+            upper_over_peak * omega_p,
+            panels,
+        )
+    }
+
     #[test]
     fn pierson_moskowitz_zeroth_moment_matches_closed_form() {
         // Closed form: ∫ A ω⁻⁵ exp(−B ω⁻⁴) dω = A/(4B) = H_s²/16 (module docs).
-        let spectrum = sea_state_5();
-        let omega_p = spectrum.peak_frequency_radps();
-        let numerical = simpson(
-            |w| spectrum.density(w),
-            0.05 * omega_p,
-            60.0 * omega_p,
-            20_000,
-        );
+        let numerical = spectral_moment(&sea_state_5(), 0, 60.0, 20_000);
         let closed = 3.25_f64.powi(2) / 16.0;
         assert!(
             (numerical / closed - 1.0).abs() < 1e-3,
@@ -317,19 +327,8 @@ mod tests {
         // Closed form T_z = T_p/(5π/4)^{1/4} = 0.7104 T_p (e.g. DNV-RP-C205 Table 3-1's
         // T_p = 1.4049 T_z for γ = 1).
         let spectrum = sea_state_5();
-        let omega_p = spectrum.peak_frequency_radps();
-        let m0 = simpson(
-            |w| spectrum.density(w),
-            0.05 * omega_p,
-            400.0 * omega_p,
-            200_000,
-        );
-        let m2 = simpson(
-            |w| w * w * spectrum.density(w),
-            0.05 * omega_p,
-            400.0 * omega_p,
-            200_000,
-        );
+        let m0 = spectral_moment(&spectrum, 0, 400.0, 200_000);
+        let m2 = spectral_moment(&spectrum, 2, 400.0, 200_000);
         let t_z = std::f64::consts::TAU * (m0 / m2).sqrt();
         let expected = 9.7 / (1.25 * std::f64::consts::PI).powf(0.25);
         // The ω⁻³ tail of m₂ beyond 400 ω_p is left out: about 3·10⁻⁶ of m₂.
