@@ -179,20 +179,22 @@ mod tests {
         assert!((c.moment - moment).abs() < 1e-6);
     }
 
-    #[test]
-    fn positive_elevator_gives_nose_down_moment() {
+    /// The change of the landing configuration's pitching moment at α = 0.12 rad from
+    /// δe = q̂ = 0 to `elevator` (rad) and `q_hat` (–).
+    fn landing_moment_change(elevator: f64, q_hat: f64) -> f64 {
         let config = AerodynamicConfiguration::LANDING;
         let neutral = aerodynamic_coefficients(0.12, 0.0, 0.0, &config);
-        let trailing_edge_down = aerodynamic_coefficients(0.12, 0.05, 0.0, &config);
-        assert!(trailing_edge_down.moment < neutral.moment);
+        aerodynamic_coefficients(0.12, elevator, q_hat, &config).moment - neutral.moment
+    }
+
+    #[test]
+    fn positive_elevator_gives_nose_down_moment() {
+        assert!(landing_moment_change(0.05, 0.0) < 0.0);
     }
 
     #[test]
     fn pitch_rate_damps() {
-        let config = AerodynamicConfiguration::LANDING;
-        let still = aerodynamic_coefficients(0.12, 0.0, 0.0, &config);
-        let pitching_up = aerodynamic_coefficients(0.12, 0.0, 0.01, &config);
-        assert!(pitching_up.moment < still.moment);
+        assert!(landing_moment_change(0.0, 0.01) < 0.0);
     }
 
     #[test]

@@ -277,22 +277,16 @@ mod tests {
             pitch_centre_x_m: 1000.0,
             ..ShipPose::default()
         };
-        assert_eq!(
-            deck.aim_point(&level),
-            EarthPoint {
-                x_m: 919.0,
-                h_m: 20.0,
-                ..Default::default()
-            }
-        );
-        assert_eq!(
-            deck.ramp(&level),
-            EarthPoint {
-                x_m: 859.0,
-                h_m: 20.0,
-                ..Default::default()
-            }
-        );
+        for (point, x_m) in [(deck.aim_point(&level), 919.0), (deck.ramp(&level), 859.0)] {
+            assert_eq!(
+                point,
+                EarthPoint {
+                    x_m,
+                    h_m: 20.0,
+                    ..Default::default()
+                }
+            );
+        }
         let wires = deck.wires(&level);
         assert_eq!(wires.map(|p| p.x_m), [901.0, 913.0, 925.0, 937.0]);
     }
