@@ -218,6 +218,13 @@ impl ShipMotionPropagator {
         (index, position - index as f64)
     }
 
+    /// [`ShipMotionPropagator::grid`] of `horizon_s`, or `None` when the ship motion of
+    /// `ship` is disabled (every prediction then zero).
+    #[inline(always)]
+    fn grid_if_enabled(&self, ship: &ShipMotion, horizon_s: f64) -> Option<(usize, f64)> {
+        ship.parameters().enabled.then(|| self.grid(horizon_s))
+    }
+
     /// The expected heave and pitch `horizon_s` seconds after `state` (zero when the ship
     /// motion of `ship` is disabled).
     #[inline]
@@ -227,10 +234,9 @@ impl ShipMotionPropagator {
         state: &ShipMotionState,
         horizon_s: f64,
     ) -> PredictedShipMotion {
-        if !ship.parameters().enabled {
+        let Some(grid) = self.grid_if_enabled(ship, horizon_s) else {
             return PredictedShipMotion::default();
-        }
-        let grid = self.grid(horizon_s);
+        };
         PredictedShipMotion {
             heave_m: self.heave.output(grid, &state.heave_filter),
             pitch_rad: self.pitch.output(grid, &state.pitch_filter),
@@ -246,10 +252,9 @@ impl ShipMotionPropagator {
         estimate: &ShipMotionEstimate,
         lead_s: f64,
     ) -> ShipMotionForecast {
-        if !ship.parameters().enabled {
+        let Some(grid) = self.grid_if_enabled(ship, lead_s) else {
             return ShipMotionForecast::default();
-        }
-        let grid = self.grid(lead_s);
+        };
         let dot = |r: &[f64; 4], z: &[f64; 4]| (0..4).map(|j| r[j] * z[j]).sum::<f64>();
         let value = |table: &FilterTable, z: &[f64; 4], derivative: usize| {
             table.filter.gain * dot(&table.row(grid, table.filter.output_state + derivative), z)
@@ -274,10 +279,9 @@ impl ShipMotionPropagator {
         lead_s: f64,
     ) -> ShipMotionForecast {
         let mean = self.forecast_mean(ship, estimate, lead_s);
-        if !ship.parameters().enabled {
+        let Some(grid) = self.grid_if_enabled(ship, lead_s) else {
             return mean;
-        }
-        let grid = self.grid(lead_s);
+        };
         // Each motion's error variance, from the output row of e^{AT}.
         let variance = |table: &FilterTable, covariance, intensity: f64| {
             let k = table.filter.output_state;
@@ -333,10 +337,9 @@ impl ShipMotionPropagator {
         (lever_arm_m, pitch_rad): (f64, f64),
         derivative: usize,
     ) -> f64 {
-        if !ship.parameters().enabled {
+        let Some(grid) = self.grid_if_enabled(ship, lead_s) else {
             return 0.0;
-        }
-        let grid = self.grid(lead_s);
+        };
         // Row k + derivative of e^{AT}: the motion (k) or its rate (k + 1); per unit gain.
         let variance = |table: &FilterTable, covariance: &Matrix4Array, intensity: f64| {
             let i = table.filter.output_state + derivative;
