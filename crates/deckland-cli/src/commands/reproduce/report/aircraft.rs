@@ -5,7 +5,7 @@ use deckland::aircraft::AerodynamicConfiguration;
 use deckland::analysis::ModeKind;
 use deckland::experiments::reproduction::paper::{self, PAPER_A, PAPER_B};
 
-use super::{complex, given, row, stated, Findings, Section};
+use super::{complex, given_row, row, stated, Findings, Section};
 
 /// Paper Table 2.
 pub(super) fn constants(f: &Findings) -> Section {
@@ -15,24 +15,9 @@ pub(super) fn constants(f: &Findings) -> Section {
     Section {
         title: "Constants (paper Table 2)",
         rows: vec![
-            row(
-                "mass m (kg)",
-                stated("mass"),
-                format!("{}", p.mass_kg),
-                given("mass", p.mass_kg),
-            ),
-            row(
-                "air density ρ (kg/m³)",
-                stated("air_density"),
-                format!("{}", p.air_density_kg_m3),
-                given("air_density", p.air_density_kg_m3),
-            ),
-            row(
-                "gravity g (m/s²)",
-                stated("gravity"),
-                format!("{}", p.gravity_mps2),
-                given("gravity", p.gravity_mps2),
-            ),
+            given_row("mass m (kg)", "mass", p.mass_kg),
+            given_row("air density ρ (kg/m³)", "air_density", p.air_density_kg_m3),
+            given_row("gravity g (m/s²)", "gravity", p.gravity_mps2),
             row(
                 "maximum thrust T_max (N)",
                 stated("max_thrust"),
@@ -43,24 +28,13 @@ pub(super) fn constants(f: &Findings) -> Section {
                     2.0 * per_engine
                 ),
             ),
-            row(
-                "wing area S (m²)",
-                stated("wing_area"),
-                format!("{}", p.wing_area_m2),
-                given("wing_area", p.wing_area_m2),
-            ),
-            row(
+            given_row("wing area S (m²)", "wing_area", p.wing_area_m2),
+            given_row(
                 "pitch inertia J_y (kg·m²)",
-                stated("pitch_inertia"),
-                format!("{}", p.pitch_inertia_kg_m2),
-                given("pitch_inertia", p.pitch_inertia_kg_m2),
+                "pitch_inertia",
+                p.pitch_inertia_kg_m2,
             ),
-            row(
-                "mean chord c̄ (m)",
-                stated("mean_chord"),
-                format!("{}", p.mean_chord_m),
-                given("mean_chord", p.mean_chord_m),
-            ),
+            given_row("mean chord c̄ (m)", "mean_chord", p.mean_chord_m),
         ],
     }
 }

@@ -3,7 +3,7 @@
 use deckland::experiments::reproduction::SEED;
 use deckland::scenario::Scenario;
 
-use super::{given, row, seeds_text, stated, Findings, Section};
+use super::{given_row, row, seeds_text, stated, Findings, Section};
 
 /// Paper §3.3–3.7: actuators, simulation and environment.
 pub(super) fn environment(f: &Findings) -> Section {
@@ -19,11 +19,10 @@ pub(super) fn environment(f: &Findings) -> Section {
     Section {
         title: "Actuators, simulation and environment (paper §3.3–3.7)",
         rows: vec![
-            row(
+            given_row(
                 "engine time constant (s)",
-                stated("engine_time_constant"),
-                format!("{}", engines.time_constant_s),
-                given("engine_time_constant", engines.time_constant_s),
+                "engine_time_constant",
+                engines.time_constant_s,
             ),
             row(
                 "elevator actuator ω_n (rad/s), ζ",
@@ -49,14 +48,10 @@ pub(super) fn environment(f: &Findings) -> Section {
                 format!("{}, RK4", scenario.time_step_s),
                 "",
             ),
-            row(
+            given_row(
                 "landing point aft of the ship's pitch centre (m)",
-                stated("landing_point_aft"),
-                format!("{}", environment.deck.landing_point_aft_of_pitch_centre_m),
-                given(
-                    "landing_point_aft",
-                    environment.deck.landing_point_aft_of_pitch_centre_m,
-                ),
+                "landing_point_aft",
+                environment.deck.landing_point_aft_of_pitch_centre_m,
             ),
             row(
                 "ship heave: maximum (m)",
@@ -102,11 +97,10 @@ pub(super) fn environment(f: &Findings) -> Section {
                 ),
                 "",
             ),
-            row(
+            given_row(
                 "wind over deck V_w/d (m/s)",
-                stated("wind_over_deck"),
-                format!("{}", wind.wind_over_deck_mps),
-                given("wind_over_deck", wind.wind_over_deck_mps),
+                "wind_over_deck",
+                wind.wind_over_deck_mps,
             ),
             row(
                 "periodic wake θ_s (rad), ω_p (rad/s)",

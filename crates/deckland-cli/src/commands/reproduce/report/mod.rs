@@ -81,6 +81,11 @@ fn given(key: &str, ours: f64) -> String {
     }
 }
 
+/// The row of a constant the paper gives and we use: its claim, our value, and [`given`].
+fn given_row(quantity: &str, key: &str, ours: f64) -> Row {
+    row(quantity, stated(key), format!("{ours}"), given(key, ours))
+}
+
 fn complex(mode: Option<&Mode>) -> String {
     mode.map_or_else(
         || "—".to_string(),
