@@ -4,7 +4,7 @@
 #![allow(clippy::unwrap_used)] // tests fail loudly by design
 
 mod common;
-use common::{assert_no_panic, assert_refused, deckland, scratch};
+use common::{assert_no_panic, assert_refused, assert_success, deckland, scratch};
 
 #[test]
 fn the_printed_fa18_is_a_commented_definition_with_its_mass() {
@@ -49,11 +49,7 @@ fn a_scenario_flies_a_definition_beside_it_and_a_bad_one_is_named() {
         folder.join("light-scenario.toml").to_str().unwrap(),
     ]);
     assert_no_panic(&output);
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    assert_success(&output);
     let output = deckland([
         "aircraft",
         "--check",

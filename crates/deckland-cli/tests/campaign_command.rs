@@ -7,6 +7,7 @@ mod common;
 
 use common::{
     assert_success, deckland, endless_campaign, scratch, short_dispersed_scenario, signal_after,
+    succeeded_json,
 };
 use deckland::monte_carlo::{LSO_RUN_COLUMNS, RUN_COLUMNS};
 use serde_json::Value;
@@ -257,8 +258,7 @@ fn run_flies_a_scenario_file_like_land() {
         dir.to_str().unwrap(),
         "--json",
     ]);
-    assert_success(&output);
-    let v: Value = serde_json::from_slice(&output.stdout).unwrap();
+    let v = succeeded_json(&output);
     assert_eq!(v["outcome"], "trap");
     assert_eq!(v["conditions"], "calm.toml");
     for file in [
@@ -367,8 +367,7 @@ fn run_with_a_campaign_seed_and_disperse_reproduces_the_campaign_row() {
         single.to_str().unwrap(),
         "--json",
     ]);
-    assert_success(&output);
-    let v: Value = serde_json::from_slice(&output.stdout).unwrap();
+    let v = succeeded_json(&output);
     assert_eq!(v["outcome"], row[column("outcome")]);
     let expected: f64 = row[column("glide_path_error_rms_m")].parse().unwrap();
     assert_eq!(v["glide_path_error_rms_m"].as_f64(), Some(expected));

@@ -2,7 +2,7 @@
 
 mod common;
 
-use common::{deckland, scratch};
+use common::{assert_success, deckland, scratch};
 use std::ffi::OsStr;
 use std::fs;
 use std::path::Path;
@@ -12,11 +12,7 @@ use std::process::{Command, Output};
 fn environment_command_writes_csv_and_plots() {
     let out = scratch("environment");
     let result = run_environment(&out, &[]);
-    assert!(
-        result.status.success(),
-        "stderr: {}",
-        String::from_utf8_lossy(&result.stderr)
-    );
+    assert_success(&result);
     let stdout = String::from_utf8_lossy(&result.stdout);
     assert!(
         stdout.contains("heave") && stdout.contains("RMS"),

@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{assert_success, deckland, file_size, scratch};
+use common::{assert_success, deckland, file_size, scratch, succeeded_json};
 use serde_json::Value;
 
 #[test]
@@ -12,8 +12,7 @@ fn land_writes_every_result_and_prints_the_json_summary() {
     let dir = scratch("land");
     let out = dir.to_str().unwrap();
     let output = deckland(["land", "--conditions", "ideal", "--out", out, "--json"]);
-    assert_success(&output);
-    let v: Value = serde_json::from_slice(&output.stdout).unwrap();
+    let v = succeeded_json(&output);
     assert_eq!(v["outcome"], "trap");
     assert_eq!(v["wire"], 3);
     for field in [
@@ -133,8 +132,7 @@ fn land_adverse_pid_runs_and_reports_an_outcome() {
         dir.to_str().unwrap(),
         "--json",
     ]);
-    assert_success(&output);
-    let v: Value = serde_json::from_slice(&output.stdout).unwrap();
+    let v = succeeded_json(&output);
     assert_eq!(v["controller"], "PID");
     assert_eq!(v["seed"], 3);
     assert!(v["outcome"].is_string());
@@ -155,16 +153,14 @@ fn sink_tracks_a_ramped_command_and_reports_the_paper_step_as_diverged() {
         out,
         "--json",
     ]);
-    assert_success(&output);
-    let v: Value = serde_json::from_slice(&output.stdout).unwrap();
+    let v = succeeded_json(&output);
     assert_eq!(v["outcome"], "completed");
     assert_eq!(v["metrics"]["settled"], true);
     assert!(v["metrics"]["steady_state_error"].as_f64().unwrap().abs() < 0.1);
     assert!(file_size(&dir.join("sink_rate.png")) > 10_000);
     // The paper's 10 m/s step without shaping drives α out of the model's range.
     let step = deckland(["sink", "--ramp-s", "0", "--out", out, "--force", "--json"]);
-    assert!(step.status.success());
-    let v: Value = serde_json::from_slice(&step.stdout).unwrap();
+    let v = succeeded_json(&step);
     assert_eq!(v["outcome"], "diverged");
     assert!(v["reason"].as_str().unwrap().contains("angle of attack"));
     std::fs::remove_dir_all(&dir).unwrap();

@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{deckland, scratch, ROLL_STEP};
+use common::{deckland, scratch, succeeded_json, ROLL_STEP};
 
 #[test]
 fn a_roll_step_writes_json_csv_and_plots() {
@@ -17,12 +17,7 @@ fn a_roll_step_writes_json_csv_and_plots() {
         ]
         .concat(),
     );
-    assert!(
-        result.status.success(),
-        "stderr: {}",
-        String::from_utf8_lossy(&result.stderr)
-    );
-    let report: serde_json::Value = serde_json::from_slice(&result.stdout).unwrap();
+    let report = succeeded_json(&result);
     assert_eq!(report["axis"], "roll");
     assert_eq!(report["step_deg"], 10.0);
     assert_eq!(report["settling_band_pct"], 5.0);
@@ -102,12 +97,7 @@ fn pid_bank_step(extra: &[&str]) -> (f64, serde_json::Value) {
     ];
     arguments.extend_from_slice(extra);
     let result = deckland(arguments);
-    assert!(
-        result.status.success(),
-        "stderr: {}",
-        String::from_utf8_lossy(&result.stderr)
-    );
-    let report: serde_json::Value = serde_json::from_slice(&result.stdout).unwrap();
+    let report = succeeded_json(&result);
     let _ = std::fs::remove_dir_all(&out);
     let settling = report["controllers"][0]["settling_time_s"]
         .as_f64()

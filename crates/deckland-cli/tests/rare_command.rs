@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{deckland, scratch};
+use common::{deckland, scratch, succeeded_json};
 use std::fs;
 use std::path::Path;
 use std::process::Output;
@@ -38,12 +38,7 @@ fn rare_ramp(threshold: &str, max_runs: &str, out: &Path, more: &[&str]) -> Outp
 fn rare_writes_the_estimate_the_levels_and_the_flights_that_reached_the_event() {
     let out = scratch("rare");
     let result = rare_ramp("1.0", "150", &out, &["--save-flights", "1", "--json"]);
-    assert!(
-        result.status.success(),
-        "{}",
-        String::from_utf8_lossy(&result.stderr)
-    );
-    let printed: serde_json::Value = serde_json::from_slice(&result.stdout).expect("JSON");
+    let printed = succeeded_json(&result);
     let written: serde_json::Value =
         serde_json::from_str(&fs::read_to_string(out.join("summary.json")).expect("summary"))
             .expect("JSON");

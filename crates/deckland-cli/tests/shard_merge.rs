@@ -7,12 +7,23 @@
 
 mod common;
 
-use common::{assert_success, deckland, scratch, short_dispersed_scenario, signal_after};
+use common::{
+    assert_success, deckland, scratch, short_dispersed_scenario, signal_after, succeeded_json,
+};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 
 fn stderr(output: &Output) -> String {
     String::from_utf8_lossy(&output.stderr).into_owned()
+}
+
+/// Fails the test unless the command's standard error contains `expected`.
+fn assert_in_stderr(output: &Output, expected: &str) {
+    assert!(
+        stderr(output).contains(expected),
+        "expected {expected:?} in: {}",
+        stderr(output)
+    );
 }
 
 /// Flies `deckland campaign FILE --runs RUNS --seed SEED --compare [--shard S] --out OUT`.
@@ -62,8 +73,7 @@ fn three_shards_merged_are_the_campaign_flown_whole_byte_for_byte() {
     let shards: Vec<PathBuf> = (0..3).map(|k| dir.join(format!("shard-{k}"))).collect();
     for (k, folder) in shards.iter().enumerate() {
         let output = campaign(&file, "23", "7", Some(&format!("{k}/3")), folder);
-        assert_success(&output);
-        let summary: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+        let summary = succeeded_json(&output);
         assert_eq!(summary["shard"], format!("{k}/3"));
         assert_eq!(summary["requested_runs"], 23);
         // Round robin: shard k holds the runs i with i mod 3 = k, under both controllers.
@@ -143,11 +153,7 @@ fn three_d_shards_merged_are_the_campaign_flown_whole() {
     assert_success(&campaign(&dispersed, "5", "11", Some("1/2"), &flat));
     let output = merge(&[&shards[0], &flat], &dir.join("mixed"));
     assert!(!output.status.success());
-    assert!(
-        stderr(&output).contains("aircraft.model"),
-        "{}",
-        stderr(&output)
-    );
+    assert_in_stderr(&output, "aircraft.model");
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -168,11 +174,7 @@ fn a_merge_refuses_shards_of_other_campaigns_missing_overlapping_or_unfinished()
     let refused = |folders: &[&PathBuf], expected: &str| {
         let output = merge(folders, &out);
         assert_eq!(output.status.code(), Some(1), "{}", stderr(&output));
-        assert!(
-            stderr(&output).contains(expected),
-            "expected {expected:?} in: {}",
-            stderr(&output)
-        );
+        assert_in_stderr(&output, expected);
     };
     refused(&[&zero], "missing shard 1/2: a merge needs every shard");
     refused(&[&zero, &one, &one], "are both shard 1/2");
@@ -304,11 +306,7 @@ fn an_interrupted_shard_is_partial_and_refused() {
     std::fs::write(interrupted.join("summary.json"), text).unwrap();
     let output = merge(&[&complete, &interrupted], &dir.join("out"));
     assert_eq!(output.status.code(), Some(1));
-    assert!(
-        stderr(&output).contains("is shard 1/2 stopped before every run finished"),
-        "{}",
-        stderr(&output)
-    );
+    assert_in_stderr(&output, "is shard 1/2 stopped before every run finished");
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -339,13 +337,10 @@ fn malformed_shards_are_refused_by_name() {
     // folder (issue 45, R7: merge refuses such a set, so campaign does too).
     let output = campaign(&file, "2", "1", Some("2/3"), &dir.join("empty"));
     assert_eq!(output.status.code(), Some(1));
-    assert!(
-        stderr(&output).contains(
-            "the number of shards M must be at most the number of runs (2), so that every \
-             shard flies a run"
-        ),
-        "{}",
-        stderr(&output)
+    assert_in_stderr(
+        &output,
+        "the number of shards M must be at most the number of runs (2), so that every \
+         shard flies a run",
     );
     assert!(!dir.join("empty").exists());
     let _ = std::fs::remove_dir_all(&dir);

@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{deckland, scratch};
+use common::{deckland, scratch, succeeded_json};
 use std::ffi::OsStr;
 use std::fs;
 use std::path::Path;
@@ -23,12 +23,7 @@ fn controller<'a>(report: &'a serde_json::Value, name: &str) -> &'a serde_json::
 fn step_command_writes_json_csv_and_plots() {
     let out = scratch("json");
     let result = run_step(&out, &["--seconds", "4", "--json"]);
-    assert!(
-        result.status.success(),
-        "stderr: {}",
-        String::from_utf8_lossy(&result.stderr)
-    );
-    let report: serde_json::Value = serde_json::from_slice(&result.stdout).unwrap();
+    let report = succeeded_json(&result);
     assert_eq!(report["conditions"], "ideal");
     assert_eq!(report["step_deg"], 2.0);
     assert_eq!(report["seed"], 1);
@@ -111,12 +106,7 @@ fn step_command_writes_json_csv_and_plots() {
 fn opd_settles_within_two_seconds_in_ideal_conditions() {
     let out = scratch("settles");
     let result = run_step(&out, &["--controller", "both", "--json"]);
-    assert!(
-        result.status.success(),
-        "stderr: {}",
-        String::from_utf8_lossy(&result.stderr)
-    );
-    let report: serde_json::Value = serde_json::from_slice(&result.stdout).unwrap();
+    let report = succeeded_json(&result);
     let opd = controller(&report, "O-PD");
     assert_eq!(opd["settled"], true, "{opd}");
     let settling = opd["settling_time_s"].as_f64().unwrap();

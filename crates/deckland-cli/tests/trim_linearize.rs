@@ -4,17 +4,11 @@
 
 mod common;
 
-use common::deckland;
+use common::{deckland, succeeded_json};
 use serde_json::Value;
 
 fn json(args: &[&str]) -> Value {
-    let output = deckland(args);
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
-    serde_json::from_slice(&output.stdout).expect("stdout is one JSON document")
+    succeeded_json(&deckland(args))
 }
 
 #[test]

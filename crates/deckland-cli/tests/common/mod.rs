@@ -302,6 +302,13 @@ pub fn assert_success(output: &Output) {
     );
 }
 
+/// The JSON document a command printed on standard output; fails the test with the
+/// command's standard error unless it succeeded.
+pub fn succeeded_json(output: &Output) -> serde_json::Value {
+    assert_success(output);
+    serde_json::from_slice(&output.stdout).expect("stdout is one JSON document")
+}
+
 /// A campaign too long to finish (100 000 runs of `scenario` on two threads, into
 /// `out`), as a command to spawn and stop with a signal.
 pub fn endless_campaign(scenario: &str, out: &Path) -> Command {
