@@ -4,7 +4,7 @@
 #![allow(clippy::unwrap_used)] // tests fail loudly by design
 
 mod common;
-use common::{deckland, scratch};
+use common::{assert_success, deckland, scratch};
 use std::collections::BTreeSet;
 
 /// What the strict parser found.
@@ -161,11 +161,7 @@ fn land_writes_a_replay_the_strict_parser_accepts() {
         "--out",
         out.to_str().unwrap(),
     ]);
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    assert_success(&output);
     let text = std::fs::read_to_string(out.join("approach.acmi")).unwrap();
     let replay = parse(&text).unwrap();
     // Every frame holds both objects; frames every 0.1 s of a ~25-s approach.
@@ -173,22 +169,13 @@ fn land_writes_a_replay_the_strict_parser_accepts() {
     assert!(replay.objects_per_frame.iter().all(|f| *f == both));
     assert!(replay.frames.len() > 200, "{}", replay.frames.len());
     // The ramp crossing, the touchdown and the outcome are events.
-    assert!(
-        replay
-            .events
-            .iter()
-            .any(|e| e.starts_with("Message|101|ramp crossed")),
-        "{:?}",
-        replay.events
-    );
-    assert!(
-        replay
-            .events
-            .iter()
-            .any(|e| e.starts_with("Landed|101|201|")),
-        "{:?}",
-        replay.events
-    );
+    for event in ["Message|101|ramp crossed", "Landed|101|201|"] {
+        assert!(
+            replay.events.iter().any(|e| e.starts_with(event)),
+            "{:?}",
+            replay.events
+        );
+    }
     assert_eq!(
         replay.events.len(),
         3 + usize::from(

@@ -9,7 +9,9 @@
 
 mod common;
 
-use common::{chromium, deckland, has_non_finite, headless_chromium, page_text, scratch};
+use common::{
+    assert_success, chromium, deckland, has_non_finite, headless_chromium, page_text, scratch,
+};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 
@@ -47,6 +49,17 @@ fn assert_self_contained(html: &str, plots: usize) {
         let name = family.split('"').next().unwrap();
         assert_eq!(name, "sans-serif", "an SVG names the font `{name}`");
     }
+}
+
+/// A row of a statistics table as the page shows it: `label`, then the count, mean and
+/// standard deviation of `statistics` (a `summary.json` entry).
+fn statistics_row(label: &str, statistics: &Value) -> String {
+    format!(
+        "{label} {} {:.2} {:.2}",
+        statistics["count"],
+        statistics["mean"].as_f64().unwrap(),
+        statistics["standard_deviation"].as_f64().unwrap()
+    )
 }
 
 /// Renders `page` in headless Chromium: its text after rendering, and a screenshot that
@@ -97,11 +110,7 @@ fn land_report_html_renders_the_summary_numbers_in_a_browser() {
     let dir = scratch("html-land");
     // Seed 3 touches down (seed 1 flies over the last wire, with no touchdown to show).
     let output = deckland(["land", "--seed", "3", "--out", dir.to_str().unwrap()]);
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    assert_success(&output);
     let page = dir.join("report.html");
     let html = std::fs::read_to_string(&page).unwrap();
     assert_self_contained(&html, 7);
@@ -170,11 +179,7 @@ fn campaign_report(dir: &Path, toml: &str, options: &[&str]) -> (PathBuf, String
     arguments.extend_from_slice(options);
     arguments.extend_from_slice(&["--out", out.to_str().unwrap()]);
     let output = deckland(arguments);
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    assert_success(&output);
     let page = out.join("report.html");
     let html = std::fs::read_to_string(&page).unwrap();
     (page, html)
@@ -223,23 +228,14 @@ fn campaign_report_html_shows_the_outcomes_with_their_intervals() {
         let row = format!("{name} {}", cells.join(" "));
         assert!(text.contains(&row), "the page does not show `{row}`");
     }
-    let sink = &controllers[0]["touchdown_sink_rate_mps"];
-    let row = format!(
-        "O-PD {} {:.2} {:.2}",
-        sink["count"],
-        sink["mean"].as_f64().unwrap(),
-        sink["standard_deviation"].as_f64().unwrap()
-    );
+    let row = statistics_row("O-PD", &controllers[0]["touchdown_sink_rate_mps"]);
     assert!(text.contains(&row), "the page does not show `{row}`");
     assert!(text.contains("12 runs per controller"), "title: {text}");
     // The actuator statistics, the paired differences and the rare failures as tables;
     // the safe outcomes totalled, and no wave-off among the failures.
-    let rate = &controllers[1]["elevator_rate_rms_degps"];
-    let row = format!(
-        "elevator rate RMS (deg/s) PID {} {:.2} {:.2}",
-        rate["count"],
-        rate["mean"].as_f64().unwrap(),
-        rate["standard_deviation"].as_f64().unwrap()
+    let row = statistics_row(
+        "elevator rate RMS (deg/s) PID",
+        &controllers[1]["elevator_rate_rms_degps"],
     );
     assert!(text.contains(&row), "the page does not show `{row}`");
     for part in [

@@ -9,7 +9,7 @@
 
 mod common;
 
-use common::{deckland, scratch};
+use common::{deckland, scratch, succeeded_json};
 use serde_json::Value;
 
 fn readme() -> String {
@@ -87,12 +87,7 @@ fn the_hero_captions_are_what_land_flies() {
         "--out",
         out.to_str().unwrap(),
     ]);
-    assert!(
-        run.status.success(),
-        "{}",
-        String::from_utf8_lossy(&run.stderr)
-    );
-    let summary: Value = serde_json::from_slice(&run.stdout).unwrap();
+    let summary = succeeded_json(&run);
     let touchdown = &summary["touchdown"];
     let number = |v: &Value| v.as_f64().unwrap();
 
@@ -151,27 +146,24 @@ fn the_compare_paragraph_says_what_the_table_above_it_shows() {
             .to_owned()
     };
 
+    // The paragraph says `expected` between `before` and `after`.
+    let says = |before: &str, after: &str, expected: &str| {
+        assert_eq!(
+            number_between(paragraph, before, after),
+            expected,
+            "{paragraph}"
+        );
+    };
+
     let differs = table_line("paired differences");
     let pairs = number_between(&differs, "on the same seed: ", " pairs");
     let differ_in = differs.rsplit(' ').next().unwrap().to_owned();
-    assert_eq!(
-        number_between(paragraph, "differs in ", " of the "),
-        differ_in,
-        "{paragraph}"
-    );
-    assert_eq!(
-        number_between(paragraph, " of the ", " runs"),
-        pairs,
-        "{paragraph}"
-    );
+    says("differs in ", " of the ", &differ_in);
+    says(" of the ", " runs", &pairs);
 
     let touchdown = table_line("touchdown from the aim point (m)");
     let max_apart = touchdown.split_whitespace().last().unwrap();
-    assert_eq!(
-        number_between(paragraph, "lie up to ", " m apart"),
-        max_apart,
-        "{paragraph}"
-    );
+    says("lie up to ", " m apart", max_apart);
 
     let rms = table_line("elevator rate RMS (deg/s): mean");
     let means: Vec<&str> = rms
@@ -182,16 +174,8 @@ fn the_compare_paragraph_says_what_the_table_above_it_shows() {
         .filter(|w| w.parse::<f64>().is_ok())
         .collect();
     let (opd, pid) = (means[0], means[2]);
-    assert_eq!(
-        number_between(paragraph, "half as fast (", " against"),
-        pid,
-        "{paragraph}"
-    );
-    assert_eq!(
-        number_between(paragraph, " against ", " deg/s"),
-        opd,
-        "{paragraph}"
-    );
+    says("half as fast (", " against", pid);
+    says(" against ", " deg/s", opd);
     let ratio = pid.parse::<f64>().unwrap() / opd.parse::<f64>().unwrap();
     assert!((0.4..0.6).contains(&ratio), "half as fast: {ratio}");
 }

@@ -6,7 +6,8 @@ mod common;
 
 use common::{chromium, has_non_finite, headless_chromium, page_text, scratch};
 use std::fs;
-use std::process::Command;
+use std::path::Path;
+use std::process::{Command, Output};
 
 /// The figures the report must produce (paper Fig. 4, 6, 7, 8, 10–15 and the approach).
 const FIGURES: [&str; 12] = [
@@ -24,6 +25,15 @@ const FIGURES: [&str; 12] = [
     "approach_altitude",
 ];
 
+/// Runs `deckland reproduce --quick --out OUT`.
+fn quick_reproduction(out: &Path) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_deckland"))
+        .args(["reproduce", "--quick", "--out"])
+        .arg(out)
+        .output()
+        .unwrap()
+}
+
 /// Table rows of a Markdown document: lines starting with `|` that are neither a header
 /// (`| quantity |`) nor a separator (`|---`).
 fn table_rows(markdown: &str) -> Vec<&str> {
@@ -36,11 +46,7 @@ fn table_rows(markdown: &str) -> Vec<&str> {
 #[test]
 fn quick_reproduction_writes_every_figure_and_the_report() {
     let out = scratch("quick");
-    let result = Command::new(env!("CARGO_BIN_EXE_deckland"))
-        .args(["reproduce", "--quick", "--out"])
-        .arg(&out)
-        .output()
-        .unwrap();
+    let result = quick_reproduction(&out);
     let stderr = String::from_utf8_lossy(&result.stderr);
     assert!(result.status.success(), "stderr: {stderr}");
     // Progress: one line per step when stderr is not a terminal.
@@ -105,11 +111,7 @@ fn quick_reproduction_writes_every_figure_and_the_report() {
     }
     // The same inputs give the same report, byte for byte: no timing in the file.
     let again = scratch("quick-again");
-    let second = Command::new(env!("CARGO_BIN_EXE_deckland"))
-        .args(["reproduce", "--quick", "--out"])
-        .arg(&again)
-        .output()
-        .unwrap();
+    let second = quick_reproduction(&again);
     assert!(second.status.success());
     assert_eq!(
         report,
@@ -152,11 +154,7 @@ fn reproduce_refuses_an_output_folder_with_results() {
     let out = scratch("refused");
     fs::create_dir_all(&out).unwrap();
     fs::write(out.join("REPORT.md"), "old").unwrap();
-    let result = Command::new(env!("CARGO_BIN_EXE_deckland"))
-        .args(["reproduce", "--quick", "--out"])
-        .arg(&out)
-        .output()
-        .unwrap();
+    let result = quick_reproduction(&out);
     assert!(!result.status.success());
     assert!(String::from_utf8_lossy(&result.stderr).contains("--force"));
     assert_eq!(fs::read_to_string(out.join("REPORT.md")).unwrap(), "old");
