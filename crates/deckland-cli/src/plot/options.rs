@@ -115,40 +115,28 @@ impl FigureArgs {
     }
 }
 
-/// A finite number within `(low, high)`, or `expected` in words.
-fn parse_in(text: &str, (low, high): (f64, f64), expected: &str) -> Result<f64, String> {
+/// A number within `(low, high)`, or "expected {what} from {low} to {high}".
+fn parse_in<T>(text: &str, (low, high): (T, T), what: &str) -> Result<T, String>
+where
+    T: std::str::FromStr + PartialOrd + std::fmt::Display,
+{
     text.trim()
-        .parse::<f64>()
+        .parse::<T>()
         .ok()
-        .filter(|v| v.is_finite() && *v >= low && *v <= high)
-        .ok_or_else(|| format!("expected {expected}"))
+        .filter(|v| *v >= low && *v <= high)
+        .ok_or_else(|| format!("expected {what} from {low} to {high}"))
 }
 
 fn parse_width_mm(text: &str) -> Result<f64, String> {
-    let (low, high) = WIDTH_MM_RANGE;
-    parse_in(
-        text,
-        WIDTH_MM_RANGE,
-        &format!("a width in mm from {low} to {high}"),
-    )
+    parse_in(text, WIDTH_MM_RANGE, "a width in mm")
 }
 
 fn parse_font_pt(text: &str) -> Result<f64, String> {
-    let (low, high) = FONT_PT_RANGE;
-    parse_in(
-        text,
-        FONT_PT_RANGE,
-        &format!("a size in points from {low} to {high}"),
-    )
+    parse_in(text, FONT_PT_RANGE, "a size in points")
 }
 
 fn parse_dpi(text: &str) -> Result<u32, String> {
-    let (low, high) = DPI_RANGE;
-    text.trim()
-        .parse::<u32>()
-        .ok()
-        .filter(|v| (low..=high).contains(v))
-        .ok_or_else(|| format!("expected a whole number of pixels per inch from {low} to {high}"))
+    parse_in(text, DPI_RANGE, "a whole number of pixels per inch")
 }
 
 /// The options of the command being run; the defaults until [`set`] is called.
