@@ -31,24 +31,37 @@ struct LinearizeReport {
     modes: Vec<Mode>,
 }
 
-fn print_matrix<const R: usize, const C: usize>(
+/// Prints the matrix `m` as a table: `columns` across, `row_names` down (as `d<name>`),
+/// each cell `width` characters wide.
+pub(super) fn print_matrix<const R: usize, const C: usize>(
     name: &str,
     m: &nalgebra::SMatrix<f64, R, C>,
-    columns: &[&str],
+    row_names: &[&str; R],
+    columns: &[String],
+    width: usize,
 ) -> Result<()> {
     out!("  {name:<16}")?;
     for column in columns {
-        out!("{column:>23}")?;
+        out!("{column:>width$}")?;
     }
     outln!()?;
-    for (i, state) in STATE_NAMES.iter().enumerate() {
-        out!("  d{state:<15}")?;
+    for (i, row) in row_names.iter().enumerate() {
+        out!("  d{row:<15}")?;
         for j in 0..C {
-            out!("{:>23}", fixed(m[(i, j)], 6))?;
+            out!("{:>width$}", fixed(m[(i, j)], 6))?;
         }
         outln!()?;
     }
     Ok(())
+}
+
+/// Each name with its unit: "name [unit]".
+pub(super) fn labelled(names: &[&str], units: &[&str]) -> Vec<String> {
+    names
+        .iter()
+        .zip(units)
+        .map(|(n, u)| format!("{n} [{u}]"))
+        .collect()
 }
 
 fn print_table(
@@ -60,20 +73,10 @@ fn print_table(
     print_trim_table(args.configuration, &model.trim, max_thrust_n)?;
     outln!()?;
     outln!("Linear model ẋ = A x + B u (paper Eq. 14 form)")?;
-    let states: Vec<String> = STATE_NAMES
-        .iter()
-        .zip(STATE_UNITS)
-        .map(|(n, u)| format!("{n} [{u}]"))
-        .collect();
-    let inputs: Vec<String> = INPUT_NAMES
-        .iter()
-        .zip(INPUT_UNITS)
-        .map(|(n, u)| format!("{n} [{u}]"))
-        .collect();
-    let states: Vec<&str> = states.iter().map(String::as_str).collect();
-    let inputs: Vec<&str> = inputs.iter().map(String::as_str).collect();
-    print_matrix("A", &model.a, &states)?;
-    print_matrix("B", &model.b, &inputs)?;
+    let states = labelled(&STATE_NAMES, &STATE_UNITS);
+    let inputs = labelled(&INPUT_NAMES, &INPUT_UNITS);
+    print_matrix("A", &model.a, &STATE_NAMES, &states, 23)?;
+    print_matrix("B", &model.b, &STATE_NAMES, &inputs, 23)?;
     outln!(
         "  (throttle is a fraction of the total maximum thrust of both engines; ∂q̇/∂q = {:.4} 1/s, ∂q̇/∂δe = {:.4} 1/s²)",
         model.pitch_damping_per_s(),

@@ -15,6 +15,7 @@ use deckland::environment::Wind;
 use serde::Serialize;
 
 use super::flight_condition::TrimArgs;
+use super::linearize::{labelled, print_matrix};
 use crate::output::{fixed, rows};
 
 /// `linearize --model 6dof --json`: the trim, both blocks with names and units, the modes.
@@ -162,35 +163,6 @@ pub fn run_trim(args: &TrimArgs) -> Result<()> {
     )
 }
 
-fn print_matrix<const R: usize, const C: usize>(
-    name: &str,
-    m: &nalgebra::SMatrix<f64, R, C>,
-    row_names: &[&str; R],
-    columns: &[String],
-) -> Result<()> {
-    out!("  {name:<16}")?;
-    for column in columns {
-        out!("{column:>24}")?;
-    }
-    outln!()?;
-    for (i, row) in row_names.iter().enumerate() {
-        out!("  d{row:<15}")?;
-        for j in 0..C {
-            out!("{:>24}", fixed(m[(i, j)], 6))?;
-        }
-        outln!()?;
-    }
-    Ok(())
-}
-
-fn labelled(names: &[&str], units: &[&str]) -> Vec<String> {
-    names
-        .iter()
-        .zip(units)
-        .map(|(n, u)| format!("{n} [{u}]"))
-        .collect()
-}
-
 fn print_real_mode(name: &str, mode: &RealMode) -> Result<()> {
     outln!(
         "  {name:<16}{:>12} 1/s   τ = {:>8} s   {} {:.2} s",
@@ -212,8 +184,8 @@ fn print_linear(args: &TrimArgs, model: &SixDofLinearModel) -> Result<()> {
     outln!("Lateral-directional linear model ẋ = A x + B u (airframe, still air)")?;
     let states = labelled(&LATERAL_STATE_NAMES, &LATERAL_STATE_UNITS);
     let inputs = labelled(&LATERAL_INPUT_NAMES, &LATERAL_INPUT_UNITS);
-    print_matrix("A", &model.lateral_a(), &LATERAL_STATE_NAMES, &states)?;
-    print_matrix("B", &model.lateral_b(), &LATERAL_STATE_NAMES, &inputs)?;
+    print_matrix("A", &model.lateral_a(), &LATERAL_STATE_NAMES, &states, 24)?;
+    print_matrix("B", &model.lateral_b(), &LATERAL_STATE_NAMES, &inputs, 24)?;
     outln!()?;
     outln!("Lateral modes")?;
     match model.lateral_modes() {
@@ -239,8 +211,8 @@ fn print_linear(args: &TrimArgs, model: &SixDofLinearModel) -> Result<()> {
     outln!("Longitudinal block (as `deckland linearize --model 3dof`)")?;
     let states = labelled(&STATE_NAMES, &STATE_UNITS);
     let inputs = labelled(&INPUT_NAMES, &INPUT_UNITS);
-    print_matrix("A", &model.longitudinal_a(), &STATE_NAMES, &states)?;
-    print_matrix("B", &model.longitudinal_b(), &STATE_NAMES, &inputs)?;
+    print_matrix("A", &model.longitudinal_a(), &STATE_NAMES, &states, 24)?;
+    print_matrix("B", &model.longitudinal_b(), &STATE_NAMES, &inputs, 24)?;
     Ok(())
 }
 
