@@ -139,60 +139,52 @@ impl Panel {
     }
 
     /// Adds a solid line series.
-    pub fn series(mut self, name: impl Into<String>, points: Vec<(f64, f64)>) -> Self {
-        self.lines.push(Line {
-            name: name.into(),
-            points,
-            dashed: false,
-            colour: None,
-            pattern: None,
-        });
-        self
+    pub fn series(self, name: impl Into<String>, points: Vec<(f64, f64)>) -> Self {
+        self.line(name, points, false, None, None)
     }
 
     /// Adds a dashed line series (for references that vary, such as a command).
-    pub fn dashed_series(mut self, name: impl Into<String>, points: Vec<(f64, f64)>) -> Self {
-        self.lines.push(Line {
-            name: name.into(),
-            points,
-            dashed: true,
-            colour: None,
-            pattern: None,
-        });
-        self
+    pub fn dashed_series(self, name: impl Into<String>, points: Vec<(f64, f64)>) -> Self {
+        self.line(name, points, true, None, None)
     }
 
     /// Adds a solid line series in a colour of its own (for a physical object, such as
     /// the deck, rather than one series among others).
     pub fn coloured_series(
-        mut self,
+        self,
         name: impl Into<String>,
         points: Vec<(f64, f64)>,
         colour: RGBColor,
     ) -> Self {
-        self.lines.push(Line {
-            name: name.into(),
-            points,
-            dashed: false,
-            colour: Some(colour),
-            pattern: None,
-        });
-        self
+        self.line(name, points, false, Some(colour), None)
     }
 
     /// Adds a line series with its own colour (else the palette's) and dash pattern
     /// (dash, gap in px; else solid): to tell apart lines that may lie on each other.
     pub fn styled_series(
+        self,
+        name: impl Into<String>,
+        points: Vec<(f64, f64)>,
+        colour: Option<RGBColor>,
+        pattern: Option<(u32, u32)>,
+    ) -> Self {
+        self.line(name, points, pattern.is_some(), colour, pattern)
+    }
+
+    /// Adds a line series: dashed or solid, in `colour` (else the palette's), with a dash
+    /// `pattern` (else the default dash).
+    fn line(
         mut self,
         name: impl Into<String>,
         points: Vec<(f64, f64)>,
+        dashed: bool,
         colour: Option<RGBColor>,
         pattern: Option<(u32, u32)>,
     ) -> Self {
         self.lines.push(Line {
             name: name.into(),
             points,
-            dashed: pattern.is_some(),
+            dashed,
             colour,
             pattern,
         });
@@ -201,11 +193,16 @@ impl Panel {
 
     /// Adds a dashed horizontal reference line at `y`; lines given the same name share a
     /// style and one legend entry (the two edges of a band).
-    pub fn reference_line(mut self, name: impl Into<String>, y: f64) -> Self {
+    pub fn reference_line(self, name: impl Into<String>, y: f64) -> Self {
+        self.horizontal_line(name, y, false)
+    }
+
+    /// Adds a horizontal line at `y`: a limit ([`Panel::limit_line`]) or a reference.
+    fn horizontal_line(mut self, name: impl Into<String>, y: f64, limit: bool) -> Self {
         self.reference_lines.push(ReferenceLine {
             name: name.into(),
             y,
-            limit: false,
+            limit,
         });
         self
     }
@@ -220,37 +217,37 @@ impl Panel {
     /// Adds a limit: a reference line at `y` drawn when it lies within [`LIMIT_REACH`] of
     /// the data's span beyond the data, so that the axis spans the data; a limit farther
     /// away is named in a note instead ("… above the axis"). Say its value in `name`.
-    pub fn limit_line(mut self, name: impl Into<String>, y: f64) -> Self {
-        self.reference_lines.push(ReferenceLine {
-            name: name.into(),
-            y,
-            limit: true,
-        });
-        self
+    pub fn limit_line(self, name: impl Into<String>, y: f64) -> Self {
+        self.horizontal_line(name, y, true)
     }
 
     /// Adds a series drawn as points (no line).
-    pub fn scatter(mut self, name: impl Into<String>, points: Vec<(f64, f64)>) -> Self {
-        self.scatter.push(Scatter {
-            name: name.into(),
-            points,
-            style: None,
-        });
-        self
+    pub fn scatter(self, name: impl Into<String>, points: Vec<(f64, f64)>) -> Self {
+        self.markers(name, points, None)
     }
 
     /// Adds a series drawn as markers of `style`, in the order added (the last on top);
     /// an empty `name` gives no legend entry (see [`Panel::legend_entry`]).
     pub fn styled_scatter(
-        mut self,
+        self,
         name: impl Into<String>,
         points: Vec<(f64, f64)>,
         style: MarkerStyle,
     ) -> Self {
+        self.markers(name, points, Some(style))
+    }
+
+    /// Adds a series drawn as markers of `style` (else the palette's default marker).
+    fn markers(
+        mut self,
+        name: impl Into<String>,
+        points: Vec<(f64, f64)>,
+        style: Option<MarkerStyle>,
+    ) -> Self {
         self.scatter.push(Scatter {
             name: name.into(),
             points,
-            style: Some(style),
+            style,
         });
         self
     }
