@@ -384,22 +384,7 @@ impl Legend {
                     _ => words.push(word.to_string()),
                 }
             }
-            let mut line = String::new();
-            for word in words {
-                let candidate = if line.is_empty() {
-                    word.clone()
-                } else {
-                    format!("{line} {word}")
-                };
-                if line.is_empty() || fits(&candidate) {
-                    line = candidate;
-                } else {
-                    lines.push(std::mem::replace(&mut line, word));
-                }
-            }
-            if !line.is_empty() {
-                lines.push(line);
-            }
+            lines.extend(super::style::fill_lines(words, fits));
             // No lone word on a note's last line.
             super::style::no_lone_last_word(&mut lines[note_start..], fits);
         }

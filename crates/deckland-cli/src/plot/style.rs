@@ -197,9 +197,24 @@ pub(super) fn text_height<DB: DrawingBackend>(
 /// `text` wrapped at word boundaries into lines that `fits` (a word longer than a line
 /// stands alone); a last line of one word takes the word before it along when both fit.
 pub(super) fn wrap(text: &str, fits: impl Fn(&str) -> bool) -> Vec<String> {
+    let mut lines = fill_lines(text.split_whitespace(), &fits);
+    if lines.is_empty() {
+        lines.push(String::new());
+    }
+    no_lone_last_word(&mut lines, &fits);
+    lines
+}
+
+/// `words` filled in order into lines that `fits`, one space apart (a word longer than a
+/// line stands alone); no line for no words.
+pub(super) fn fill_lines<S: AsRef<str>>(
+    words: impl IntoIterator<Item = S>,
+    fits: impl Fn(&str) -> bool,
+) -> Vec<String> {
     let mut lines: Vec<String> = Vec::new();
     let mut line = String::new();
-    for word in text.split_whitespace() {
+    for word in words {
+        let word = word.as_ref();
         let candidate = if line.is_empty() {
             word.to_owned()
         } else {
@@ -211,10 +226,9 @@ pub(super) fn wrap(text: &str, fits: impl Fn(&str) -> bool) -> Vec<String> {
             lines.push(std::mem::replace(&mut line, word.to_owned()));
         }
     }
-    if !line.is_empty() || lines.is_empty() {
+    if !line.is_empty() {
         lines.push(line);
     }
-    no_lone_last_word(&mut lines, &fits);
     lines
 }
 
