@@ -106,6 +106,15 @@ fn settling(result: Option<&ControllerResult>) -> String {
     }
 }
 
+/// A median settling time, "1.23 s", or "—" when it is not finite (no run settled).
+fn median_seconds(median_s: f64) -> String {
+    if median_s.is_finite() {
+        format!("{median_s:.2} s")
+    } else {
+        "—".to_string()
+    }
+}
+
 fn settled_time(result: Option<&ControllerResult>) -> Option<f64> {
     result.filter(|r| r.settled).and_then(|r| r.settling_time_s)
 }

@@ -7,7 +7,8 @@ use deckland::experiments::reproduction::{
 };
 
 use super::{
-    number, row, seeds_text, settled_time, settling, stated, ControllerResult, Findings, Section,
+    median_seconds, number, row, seeds_text, settled_time, settling, stated, ControllerResult,
+    Findings, Section,
 };
 
 /// Paper §5: the results.
@@ -122,11 +123,7 @@ pub(super) fn results(f: &Findings) -> Section {
             r.adverse_pitch_step.observer_pd_tracking_rms_deg,
             noiseless.len(),
             seeds_text(noiseless.len()),
-            if noiseless_median.is_finite() {
-                format!("{noiseless_median:.2} s")
-            } else {
-                "—".to_string()
-            }
+            median_seconds(*noiseless_median)
         ),
     ));
     rows.push(row(
@@ -157,11 +154,7 @@ pub(super) fn results(f: &Findings) -> Section {
             },
             pid_seeds.len(),
             seeds_text(pid_seeds.len()),
-            if pid_median.is_finite() {
-                format!("{pid_median:.2} s")
-            } else {
-                "—".to_string()
-            }
+            median_seconds(*pid_median)
         ),
     ));
     let lag_s = r.linear_model.flight_path_lag_s();
