@@ -98,15 +98,23 @@ impl Occupancy {
 
     /// Marks the pixels of `rect` (clipped to the area).
     pub(crate) fn mark_rect(&mut self, rect: PixelRect) {
-        let column = |x: i32| ((x - self.area.left).div_euclid(CELL)).clamp(0, self.columns as i32);
-        let row = |y: i32| ((y - self.area.top).div_euclid(CELL)).clamp(0, self.rows as i32);
-        let (c0, c1) = (column(rect.left), column(rect.right + CELL - 1));
-        let (r0, r1) = (row(rect.top), row(rect.bottom + CELL - 1));
+        let ((c0, c1), (r0, r1)) = self.cells_of(rect);
         for r in r0..r1 {
             for c in c0..c1 {
                 self.cells[r as usize * self.columns + c as usize] = true;
             }
         }
+    }
+
+    /// The cells `rect` covers, clipped to the area: (first column, column past the
+    /// last), (first row, row past the last).
+    fn cells_of(&self, rect: PixelRect) -> ((i32, i32), (i32, i32)) {
+        let column = |x: i32| ((x - self.area.left).div_euclid(CELL)).clamp(0, self.columns as i32);
+        let row = |y: i32| ((y - self.area.top).div_euclid(CELL)).clamp(0, self.rows as i32);
+        (
+            (column(rect.left), column(rect.right + CELL - 1)),
+            (row(rect.top), row(rect.bottom + CELL - 1)),
+        )
     }
 
     /// Marks a disc of `radius` px about `centre` (as its bounding square).
@@ -148,13 +156,8 @@ impl Occupancy {
 
     /// Whether any cell of `rect` is marked.
     fn is_free(&self, rect: PixelRect, table: &[u32]) -> bool {
-        let column = |x: i32| ((x - self.area.left).div_euclid(CELL)).clamp(0, self.columns as i32);
-        let row = |y: i32| ((y - self.area.top).div_euclid(CELL)).clamp(0, self.rows as i32);
-        let (c0, c1) = (
-            column(rect.left) as usize,
-            column(rect.right + CELL - 1) as usize,
-        );
-        let (r0, r1) = (row(rect.top) as usize, row(rect.bottom + CELL - 1) as usize);
+        let ((c0, c1), (r0, r1)) = self.cells_of(rect);
+        let (c0, c1, r0, r1) = (c0 as usize, c1 as usize, r0 as usize, r1 as usize);
         let stride = self.columns + 1;
         let at = |r: usize, c: usize| table[r * stride + c];
         at(r1, c1) + at(r0, c0) - at(r0, c1) - at(r1, c0) == 0
