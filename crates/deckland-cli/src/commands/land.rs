@@ -188,9 +188,6 @@ fn position_name(position: TrapSheetPosition) -> &'static str {
 
 pub(crate) fn summary_rows(report: &LandingReport) -> Vec<Vec<String>> {
     let s = report.summary;
-    let row = |quantity: &str, value: String, unit: &str| {
-        vec![quantity.to_string(), value, unit.to_string()]
-    };
     let mut rows = vec![
         row("controller", report.controller.to_string(), ""),
         row("conditions", report.conditions.to_string(), ""),
@@ -325,7 +322,6 @@ fn commit_forecast_text(s: &deckland::simulation::RunSummary) -> Option<String> 
 /// The actuator block of `report.html`, as the terminal prints it.
 fn actuator_rows(report: &LandingReport) -> Vec<Vec<String>> {
     let a = &report.summary.actuator;
-    let row = |name: &str, value: String, unit: &str| vec![name.to_owned(), value, unit.to_owned()];
     vec![
         row(
             "elevator rate, RMS",
@@ -361,6 +357,11 @@ fn actuator_rows(report: &LandingReport) -> Vec<Vec<String>> {
             "kN/s",
         ),
     ]
+}
+
+/// A row of the summary and actuator tables: quantity, value, unit.
+fn row(quantity: &str, value: String, unit: &str) -> Vec<String> {
+    vec![quantity.to_owned(), value, unit.to_owned()]
 }
 
 /// `report.html` of an approach: the summary, every plot, the scenario flown and
