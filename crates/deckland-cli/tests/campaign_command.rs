@@ -7,7 +7,7 @@ mod common;
 
 use common::{
     assert_success, deckland, endless_campaign, scratch, short_dispersed_scenario, signal_after,
-    succeeded_json,
+    succeeded_json, summary_json,
 };
 use deckland::monte_carlo::{LSO_RUN_COLUMNS, RUN_COLUMNS};
 use serde_json::Value;
@@ -118,8 +118,7 @@ fn compare_flies_both_controllers_on_the_same_seeds() {
         table.contains("O-PD (3 runs)") && table.contains("PID (3 runs)"),
         "{table}"
     );
-    let summary: Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let summary = summary_json(&out);
     assert_eq!(summary["controllers"][1]["controller"], "PID");
     let csv = std::fs::read_to_string(out.join("runs.csv")).unwrap();
     let rows: Vec<Vec<&str>> = csv
@@ -315,8 +314,7 @@ fn an_interrupted_campaign_keeps_a_consistent_partial_result() {
         "{}",
         String::from_utf8_lossy(&output.stderr)
     );
-    let summary: Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let summary = summary_json(&out);
     assert_eq!(summary["partial"], true);
     let finished = summary["finished_runs"].as_u64().unwrap();
     assert!(finished < 100_000);
@@ -540,8 +538,7 @@ fn a_default_campaign_grades_every_pass_and_prints_the_greenie_board() {
         records.push(record);
     }
     assert_eq!(rows, 6);
-    let summary: Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let summary = summary_json(&out);
     let board = &summary["controllers"][0]["greenie_board"];
     assert_eq!(board["graded"], 6, "{board}");
     assert_eq!(board["target_wire"], 3, "{board}");

@@ -10,7 +10,7 @@ mod common;
 
 use common::{
     assert_finite_csv, assert_no_panic, assert_refused, assert_unique_keys, deckland, deckland_in,
-    endless_campaign, scratch, signal_after, temporary_files,
+    endless_campaign, scratch, signal_after, summary_json, temporary_files,
 };
 use serde_json::Value;
 use std::fs;
@@ -437,8 +437,7 @@ fn regression_kills_leave_no_temporary_files() {
         .unwrap();
     let output = signal_after(child, "TERM", 1500);
     assert_eq!(output.status.code(), Some(130), "{output:?}");
-    let summary: Value =
-        serde_json::from_str(&fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let summary = summary_json(&out);
     assert_eq!(summary["partial"], true);
     assert!(temporary_files(&out).is_empty());
 

@@ -11,6 +11,7 @@ mod common;
 
 use common::{
     assert_success, chromium, deckland, has_non_finite, headless_chromium, page_text, scratch,
+    summary_json,
 };
 use serde_json::Value;
 use std::path::{Path, PathBuf};
@@ -116,8 +117,7 @@ fn land_report_html_renders_the_summary_numbers_in_a_browser() {
     assert_self_contained(&html, 7);
     let text = render(&chromium, &page);
 
-    let summary: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let summary = summary_json(&dir);
     let number = |v: &Value| v.as_f64().unwrap();
     let mut expected = vec![
         format!("outcome {}", summary["outcome"].as_str().unwrap()),

@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{assert_success, deckland, file_size, scratch, succeeded_json};
+use common::{assert_success, deckland, file_size, scratch, succeeded_json, summary_json};
 use serde_json::Value;
 
 #[test]
@@ -31,8 +31,7 @@ fn land_writes_every_result_and_prints_the_json_summary() {
     ] {
         assert!(v[field].is_number(), "{field}");
     }
-    let summary: Value =
-        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let summary = summary_json(&dir);
     assert_eq!(summary, v);
     let csv = std::fs::read_to_string(dir.join("approach.csv")).unwrap();
     let header = csv.lines().next().unwrap();

@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{deckland, scratch};
+use common::{deckland, scratch, summary_json};
 
 #[test]
 fn a_piped_json_campaign_reports_each_tenth_and_names_its_folder() {
@@ -37,8 +37,7 @@ fn a_piped_json_campaign_reports_each_tenth_and_names_its_folder() {
     let json: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
     assert_eq!(json["output_folder"], out.display().to_string());
     assert_eq!(json["finished_runs"], 20);
-    let summary: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("summary.json")).unwrap()).unwrap();
+    let summary = summary_json(&out);
     assert!(summary.get("output_folder").is_none(), "{summary}");
     assert_eq!(summary["finished_runs"], 20);
     let _ = std::fs::remove_dir_all(&out);

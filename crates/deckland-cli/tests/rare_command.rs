@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{deckland, scratch, succeeded_json};
+use common::{deckland, scratch, succeeded_json, summary_json};
 use std::fs;
 use std::path::Path;
 use std::process::Output;
@@ -39,9 +39,7 @@ fn rare_writes_the_estimate_the_levels_and_the_flights_that_reached_the_event() 
     let out = scratch("rare");
     let result = rare_ramp("1.0", "150", &out, &["--save-flights", "1", "--json"]);
     let printed = succeeded_json(&result);
-    let written: serde_json::Value =
-        serde_json::from_str(&fs::read_to_string(out.join("summary.json")).expect("summary"))
-            .expect("JSON");
+    let written = summary_json(&out);
     for summary in [&printed, &written] {
         let p = summary["estimate"]["probability"]
             .as_f64()
@@ -60,9 +58,7 @@ fn rare_writes_the_estimate_the_levels_and_the_flights_that_reached_the_event() 
     }
     // The saved flight reached the event: its hook crossed less than 1 m above the ramp.
     let flight = out.join("event_flights/01");
-    let summary: serde_json::Value =
-        serde_json::from_str(&fs::read_to_string(flight.join("summary.json")).expect("summary"))
-            .expect("JSON");
+    let summary = summary_json(&flight);
     let clearance = summary["summary"]["ramp_clearance_m"]
         .as_f64()
         .expect("crossed");

@@ -9,6 +9,7 @@ mod common;
 
 use common::{
     assert_success, deckland, scratch, short_dispersed_scenario, signal_after, succeeded_json,
+    summary_json,
 };
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
@@ -294,9 +295,7 @@ fn an_interrupted_shard_is_partial_and_refused() {
         .unwrap();
     let status = signal_after(child, "TERM", 1500).status;
     assert_eq!(status.code(), Some(130));
-    let summary: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(interrupted.join("summary.json")).unwrap())
-            .unwrap();
+    let summary = summary_json(&interrupted);
     assert_eq!(summary["partial"], true);
     assert_eq!(summary["shard"], "1/2");
     // The shard of a 100 000-run campaign does not match the 4-run one: make it match

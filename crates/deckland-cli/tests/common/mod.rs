@@ -309,6 +309,12 @@ pub fn succeeded_json(output: &Output) -> serde_json::Value {
     serde_json::from_slice(&output.stdout).expect("stdout is one JSON document")
 }
 
+/// The `summary.json` a command wrote into `folder`.
+pub fn summary_json(folder: &Path) -> serde_json::Value {
+    let text = std::fs::read_to_string(folder.join("summary.json")).expect("summary.json");
+    serde_json::from_str(&text).expect("summary.json is JSON")
+}
+
 /// A campaign too long to finish (100 000 runs of `scenario` on two threads, into
 /// `out`), as a command to spawn and stop with a signal.
 pub fn endless_campaign(scenario: &str, out: &Path) -> Command {
