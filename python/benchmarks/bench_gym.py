@@ -87,30 +87,27 @@ def physics(deadline):
 
 
 def single(env, action):
-    def run(deadline):
-        env.reset(seed=1)
-        steps = 0
-        while time.perf_counter() < deadline:
-            for _ in range(100):
-                _, _, terminated, truncated, _ = env.step(action)
-                if terminated or truncated:
-                    env.reset()
-            steps += 100
-        return steps
-
-    return run
+    """One environment, the same ``action`` each step."""
+    return stepping(env, lambda: action)
 
 
 def sampled(env):
     """One environment with a fresh ``action_space.sample()`` each step."""
+    return stepping(env, env.action_space.sample, seed_actions=True)
+
+
+def stepping(env, next_action, seed_actions=False):
+    """Steps of one environment, each with the action ``next_action()`` returns (from the
+    action space seeded with 1 at each round's start if ``seed_actions``)."""
 
     def run(deadline):
         env.reset(seed=1)
-        env.action_space.seed(1)
+        if seed_actions:
+            env.action_space.seed(1)
         steps = 0
         while time.perf_counter() < deadline:
             for _ in range(100):
-                _, _, terminated, truncated, _ = env.step(env.action_space.sample())
+                _, _, terminated, truncated, _ = env.step(next_action())
                 if terminated or truncated:
                     env.reset()
             steps += 100
