@@ -4,7 +4,7 @@
 //! controllers to the falling-leaf mode*, JGCD 2011 (the NASA HARV model), the paper's
 //! references [8], [9].
 
-use super::aerodynamic_data::{powers_of, AerodynamicData, Polynomial, MAX_POLYNOMIAL_TERMS};
+use super::aerodynamic_data::{powers_of, AerodynamicData};
 use super::configuration::AerodynamicConfiguration;
 
 /// Lowest angle of attack (rad) at which the polynomials are trusted: −5°.
@@ -84,7 +84,17 @@ pub fn aerodynamic_coefficients_trig(
 /// ones included, so that any aircraft's data take the same unrolled path.
 #[inline(always)]
 pub(crate) fn polynomials_at(data: &AerodynamicData, alpha: f64) -> [f64; 7] {
-    each_polynomial_at(data, alpha, Polynomial::in_ascending_powers)
+    let powers = powers_of(alpha);
+    let m = &data.pitching_moment;
+    [
+        data.lift.alpha.in_ascending_powers(&powers),
+        data.lift.elevator.in_ascending_powers(&powers),
+        data.drag.alpha.in_ascending_powers(&powers),
+        data.drag.elevator.in_ascending_powers(&powers),
+        m.alpha.in_ascending_powers(&powers),
+        m.elevator.in_ascending_powers(&powers),
+        m.pitch_rate.in_ascending_powers(&powers),
+    ]
 }
 
 /// [`polynomials_at`] for the F/A-18's data ([`AerodynamicData::FA18`]), the same to
@@ -94,27 +104,16 @@ pub(crate) fn polynomials_at(data: &AerodynamicData, alpha: f64) -> [f64; 7] {
 #[inline(always)]
 pub(crate) fn fa18_polynomials_at(alpha: f64) -> [f64; 7] {
     const FA18: &AerodynamicData = &AerodynamicData::FA18;
-    each_polynomial_at(FA18, alpha, Polynomial::in_given_terms)
-}
-
-/// The seven longitudinal polynomials of `data` at `alpha` (rad), in the order of
-/// [`coefficients_of`], each summed by `sum` over the powers [1, α, α², α³, α⁴].
-#[inline(always)]
-fn each_polynomial_at(
-    data: &AerodynamicData,
-    alpha: f64,
-    sum: impl Fn(&Polynomial, &[f64; MAX_POLYNOMIAL_TERMS]) -> f64,
-) -> [f64; 7] {
     let powers = powers_of(alpha);
-    let m = &data.pitching_moment;
+    let m = &FA18.pitching_moment;
     [
-        sum(&data.lift.alpha, &powers),
-        sum(&data.lift.elevator, &powers),
-        sum(&data.drag.alpha, &powers),
-        sum(&data.drag.elevator, &powers),
-        sum(&m.alpha, &powers),
-        sum(&m.elevator, &powers),
-        sum(&m.pitch_rate, &powers),
+        FA18.lift.alpha.in_given_terms(&powers),
+        FA18.lift.elevator.in_given_terms(&powers),
+        FA18.drag.alpha.in_given_terms(&powers),
+        FA18.drag.elevator.in_given_terms(&powers),
+        m.alpha.in_given_terms(&powers),
+        m.elevator.in_given_terms(&powers),
+        m.pitch_rate.in_given_terms(&powers),
     ]
 }
 
