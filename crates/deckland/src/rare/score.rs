@@ -380,7 +380,7 @@ impl EventScore {
         let t = self.thresholds;
         if reads.ramp {
             self.ramp_ahead_s = self.to_ramp_s(s, closing_mps);
-            let (clearance_m, ramp_spread_m) = self.ramp_clearance(s, closing_mps);
+            let (clearance_m, ramp_spread_m) = self.ramp_clearance(s, self.ramp_ahead_s);
             let margin = (t.ramp_clearance_m - clearance_m) / ramp_spread_m;
             let margin = match self.ramp_calibration {
                 Some(_) => self.lag_ramp_margin(s.time_s, margin),
@@ -418,10 +418,9 @@ impl EventScore {
         }
     }
 
-    /// The hook's clearance over the ramp when it gets there, forecast now, and how far
-    /// that forecast may miss (m).
-    fn ramp_clearance(&self, s: &Signals, closing_mps: f64) -> (f64, f64) {
-        let to_ramp_s = self.to_ramp_s(s, closing_mps);
+    /// The hook's clearance over the ramp when it gets there, `to_ramp_s` ahead
+    /// ([`Self::to_ramp_s`]), forecast now, and how far that forecast may miss (m).
+    fn ramp_clearance(&self, s: &Signals, to_ramp_s: f64) -> (f64, f64) {
         // The ramp's and the aim point's heights then: the ship's own forecast.
         let deck_then = self.ship.deck_then(&self.deck, &s.ship, to_ramp_s);
         // The hook then: close in, where it is now carried at its climb rate (for at most
