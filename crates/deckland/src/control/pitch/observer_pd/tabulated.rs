@@ -20,7 +20,7 @@ impl ObserverPdController {
 
 #[cfg(test)]
 mod tests {
-    use super::super::tests::paper_controller;
+    use crate::control::pitch::observer_pd::tests::paper_controller;
     use super::super::PitchLawInputs;
     use crate::control::AxisLaw;
 
